@@ -1,0 +1,305 @@
+//! Result codes, diagnostics and the load error.
+#![forbid(unsafe_code)]
+
+use std::ffi::CStr;
+use std::fmt;
+
+use crate::scene::Str;
+
+/// Every result, error and warning code. 0 is success. The numbers are part of the ABI:
+/// codes are only ever appended, never renumbered. `b2s_code_name` gives the spec's
+/// kebab-case name.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Code {
+    Ok = 0,
+
+    // Misuse of the API and the environment.
+    /// A required pointer argument was NULL.
+    NullArgument = 1,
+    /// An argument was out of its range (an unknown enum value, a bad option).
+    InvalidArgument = 2,
+    /// The file could not be read.
+    Io = 3,
+    /// A bug in box2scene: a panic was caught at the C boundary.
+    Internal = 4,
+
+    // The bytes and the XML.
+    InvalidUtf8 = 10,
+    NulByte = 11,
+    UnsupportedEncoding = 12,
+    DoctypeForbidden = 13,
+    MalformedXml = 14,
+    DuplicateAttribute = 15,
+    /// One of the load limits (spec section 9) was exceeded; the message names it.
+    LimitExceeded = 16,
+    /// Non-blank text where only elements belong.
+    UnexpectedText = 17,
+
+    // The structure of the scene.
+    /// The root element is not `World`.
+    NotAScene = 20,
+    UnsupportedVersion = 21,
+    /// A container (`Shapes`, `Vertices`, ...) appears twice in one object.
+    DuplicateContainer = 22,
+    /// A child a container cannot hold (a `Body` inside `Shapes`).
+    UnexpectedElement = 23,
+    MissingAttribute = 24,
+    MissingElement = 25,
+    /// An unknown shape or body `Type`.
+    UnknownType = 26,
+    UnsupportedJointType = 27,
+
+    // Values.
+    InvalidInt = 30,
+    InvalidFloat = 31,
+    FloatDecimalComma = 32,
+    NonFiniteFloat = 33,
+    InvalidBool = 34,
+    InvalidVector2 = 35,
+    InvalidId = 36,
+    InvalidBits = 37,
+    /// An integer outside its type's range (a 32-bit int, a 16-bit group index).
+    OutOfRange = 38,
+
+    // Meaning.
+    /// An ID that names an object its container does not have.
+    IdOutOfRange = 40,
+    BadRadius = 41,
+    BadVertexCount = 42,
+    DegeneratePolygon = 43,
+    DegenerateEdge = 44,
+    DegenerateChain = 45,
+    NegativeValue = 46,
+    JointSelfReference = 47,
+    /// A gear joint that does not name two revolute or prismatic joints other than itself.
+    BadGearJoint = 48,
+    /// A lower limit above its upper limit, with the limit enabled.
+    BadLimit = 49,
+    /// A zero-length joint axis.
+    ZeroAxis = 50,
+    /// A pulley ratio that is not positive.
+    BadRatio = 51,
+
+    // Warnings.
+    LegacyUnversioned = 100,
+    ConstructNewerThanVersion = 101,
+    DuplicateElement = 102,
+    UnknownElement = 103,
+    MissingContainer = 104,
+    FilterBitsTruncated = 105,
+    PolygonNotConvexCcw = 106,
+    DynamicBodyZeroDensity = 107,
+    FarseerOnlyJoint = 108,
+    LineJointIsWheel = 109,
+
+    // What the Box2D adapter reports.
+    /// A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
+    LossyLineMotor = 200,
+    /// A joint Box2D cannot represent (Farseer-only kinds); it was skipped.
+    SkippedJoint = 201,
+    /// An object that names another that could not be created; it was skipped.
+    SkippedDependent = 202,
+}
+
+impl Code {
+    /// Every code, in numeric order.
+    pub const ALL: &[Code] = &[
+        Code::Ok,
+        Code::NullArgument,
+        Code::InvalidArgument,
+        Code::Io,
+        Code::Internal,
+        Code::InvalidUtf8,
+        Code::NulByte,
+        Code::UnsupportedEncoding,
+        Code::DoctypeForbidden,
+        Code::MalformedXml,
+        Code::DuplicateAttribute,
+        Code::LimitExceeded,
+        Code::UnexpectedText,
+        Code::NotAScene,
+        Code::UnsupportedVersion,
+        Code::DuplicateContainer,
+        Code::UnexpectedElement,
+        Code::MissingAttribute,
+        Code::MissingElement,
+        Code::UnknownType,
+        Code::UnsupportedJointType,
+        Code::InvalidInt,
+        Code::InvalidFloat,
+        Code::FloatDecimalComma,
+        Code::NonFiniteFloat,
+        Code::InvalidBool,
+        Code::InvalidVector2,
+        Code::InvalidId,
+        Code::InvalidBits,
+        Code::OutOfRange,
+        Code::IdOutOfRange,
+        Code::BadRadius,
+        Code::BadVertexCount,
+        Code::DegeneratePolygon,
+        Code::DegenerateEdge,
+        Code::DegenerateChain,
+        Code::NegativeValue,
+        Code::JointSelfReference,
+        Code::BadGearJoint,
+        Code::BadLimit,
+        Code::ZeroAxis,
+        Code::BadRatio,
+        Code::LegacyUnversioned,
+        Code::ConstructNewerThanVersion,
+        Code::DuplicateElement,
+        Code::UnknownElement,
+        Code::MissingContainer,
+        Code::FilterBitsTruncated,
+        Code::PolygonNotConvexCcw,
+        Code::DynamicBodyZeroDensity,
+        Code::FarseerOnlyJoint,
+        Code::LineJointIsWheel,
+        Code::LossyLineMotor,
+        Code::SkippedJoint,
+        Code::SkippedDependent,
+    ];
+
+    /// The spec's kebab-case name of the code.
+    pub fn name(self) -> &'static str {
+        self.c_name().to_str().expect("code names are ASCII")
+    }
+
+    /// [`Code::name`] NUL-terminated, for C.
+    pub const fn c_name(self) -> &'static CStr {
+        match self {
+            Code::Ok => c"ok",
+            Code::NullArgument => c"null-argument",
+            Code::InvalidArgument => c"invalid-argument",
+            Code::Io => c"io-error",
+            Code::Internal => c"internal-error",
+            Code::InvalidUtf8 => c"invalid-utf8",
+            Code::NulByte => c"nul-byte",
+            Code::UnsupportedEncoding => c"unsupported-encoding",
+            Code::DoctypeForbidden => c"doctype-forbidden",
+            Code::MalformedXml => c"malformed-xml",
+            Code::DuplicateAttribute => c"duplicate-attribute",
+            Code::LimitExceeded => c"limit-exceeded",
+            Code::UnexpectedText => c"unexpected-text",
+            Code::NotAScene => c"not-a-scene",
+            Code::UnsupportedVersion => c"unsupported-version",
+            Code::DuplicateContainer => c"duplicate-container",
+            Code::UnexpectedElement => c"unexpected-element",
+            Code::MissingAttribute => c"missing-attribute",
+            Code::MissingElement => c"missing-element",
+            Code::UnknownType => c"unknown-type",
+            Code::UnsupportedJointType => c"unsupported-joint-type",
+            Code::InvalidInt => c"invalid-int",
+            Code::InvalidFloat => c"invalid-float",
+            Code::FloatDecimalComma => c"float-decimal-comma",
+            Code::NonFiniteFloat => c"non-finite-float",
+            Code::InvalidBool => c"invalid-bool",
+            Code::InvalidVector2 => c"invalid-vector2",
+            Code::InvalidId => c"invalid-id",
+            Code::InvalidBits => c"invalid-bits",
+            Code::OutOfRange => c"out-of-range",
+            Code::IdOutOfRange => c"id-out-of-range",
+            Code::BadRadius => c"bad-radius",
+            Code::BadVertexCount => c"bad-vertex-count",
+            Code::DegeneratePolygon => c"degenerate-polygon",
+            Code::DegenerateEdge => c"degenerate-edge",
+            Code::DegenerateChain => c"degenerate-chain",
+            Code::NegativeValue => c"negative-value",
+            Code::JointSelfReference => c"joint-self-reference",
+            Code::BadGearJoint => c"bad-gear-joint",
+            Code::BadLimit => c"bad-limit",
+            Code::ZeroAxis => c"zero-axis",
+            Code::BadRatio => c"bad-ratio",
+            Code::LegacyUnversioned => c"legacy-unversioned",
+            Code::ConstructNewerThanVersion => c"construct-newer-than-version",
+            Code::DuplicateElement => c"duplicate-element",
+            Code::UnknownElement => c"unknown-element",
+            Code::MissingContainer => c"missing-container",
+            Code::FilterBitsTruncated => c"filter-bits-truncated",
+            Code::PolygonNotConvexCcw => c"polygon-not-convex-ccw",
+            Code::DynamicBodyZeroDensity => c"dynamic-body-zero-density",
+            Code::FarseerOnlyJoint => c"farseer-only-joint",
+            Code::LineJointIsWheel => c"line-joint-is-wheel",
+            Code::LossyLineMotor => c"lossy-line-motor",
+            Code::SkippedJoint => c"skipped-joint",
+            Code::SkippedDependent => c"skipped-dependent",
+        }
+    }
+
+    /// The code with this number, if there is one.
+    pub fn from_u32(value: u32) -> Option<Code> {
+        Code::ALL.iter().copied().find(|&c| c as u32 == value)
+    }
+}
+
+impl fmt::Display for Code {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// How bad a diagnostic is.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Severity {
+    /// The load succeeded; the scene may not be what the author meant.
+    Warning = 1,
+    /// The load failed.
+    Error = 2,
+}
+
+impl Severity {
+    pub const fn name(self) -> &'static str {
+        match self {
+            Severity::Warning => "warning",
+            Severity::Error => "error",
+        }
+    }
+}
+
+/// A warning attached to a loaded scene.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Diagnostic {
+    /// What is wrong, for a level designer. Owned by the scene.
+    pub message: Str,
+    /// Byte offset in the file of the offending element or value.
+    pub byte_offset: u64,
+    /// A `b2s_code` value.
+    pub code: u32,
+    /// A `b2s_severity` value.
+    pub severity: u32,
+    /// 1-based line; 0 when unknown.
+    pub line: u32,
+    /// 1-based column, in characters; 0 when unknown.
+    pub column: u32,
+}
+
+/// Where something is in the input.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Position {
+    /// 1-based; 0 when unknown.
+    pub line: u32,
+    /// 1-based, in characters; 0 when unknown.
+    pub column: u32,
+    pub byte_offset: u64,
+}
+
+/// Why a load failed: the code, where, and a message a level designer understands.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    pub code: Code,
+    pub position: Position,
+    pub message: String,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let p = self.position;
+        write!(f, "{}:{}: error[{}]: {}", p.line, p.column, self.code, self.message)
+    }
+}
+
+impl std::error::Error for Error {}

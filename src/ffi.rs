@@ -1,0 +1,450 @@
+//! The C API. Every export is here, in header order, each inside one panic boundary
+//! ([`guard`]); this is the only module with `unsafe`.
+//!
+//! Conventions (also in the README): fallible functions return a `b2s_code` (0 = OK) and
+//! fill an optional caller-owned `b2s_error`; pointers are checked for NULL; enum values
+//! arrive as integers and are converted; a scene is immutable, owned by the library, and
+//! freed by `b2s_scene_free`.
+
+use std::ffi::{CStr, c_char};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::Path;
+
+use crate::error::{Code, Diagnostic, Error, Position};
+use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
+use crate::scene::{NONE, UserData, Vec2};
+use crate::{LoadOptions, load, load_path};
+
+// SAFETY: a `Str` points into the string pool of the scene that holds it, which is never
+// mutated after the scene is frozen; sharing or sending it is sharing immutable bytes.
+unsafe impl Send for Str {}
+// SAFETY: as above.
+unsafe impl Sync for Str {}
+
+/// Bytes in `b2s_error::message`, the terminating NUL included.
+pub const ERROR_MESSAGE_SIZE: usize = 256;
+
+/// Why a call failed. Owned by the caller; filled by the library when a call fails.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct ErrorInfo {
+    /// A `b2s_code` value; `B2S_CODE_OK` after a successful call.
+    pub code: u32,
+    /// 1-based line of the offending element or value; 0 when unknown.
+    pub line: u32,
+    /// 1-based column, in characters; 0 when unknown.
+    pub column: u32,
+    /// Byte offset in the input; 0 when unknown.
+    pub byte_offset: u64,
+    /// NUL-terminated UTF-8, cut at a character boundary to fit.
+    pub message: [c_char; ERROR_MESSAGE_SIZE],
+}
+
+/// A read-only view of a loaded scene: a pointer and a count per array. Valid until the
+/// scene is freed.
+#[repr(C)]
+pub struct SceneView {
+    pub shapes: *const Shape,
+    pub fixtures: *const Fixture,
+    pub bodies: *const Body,
+    pub joints: *const Joint,
+    /// The vertex pool that `b2s_shape::vertices` ranges index.
+    pub vertices: *const Vec2,
+    /// The fixture ID pool that `b2s_body::fixtures` ranges index.
+    pub fixture_ids: *const u32,
+    /// The user data that `user_data` indices name.
+    pub user_data: *const UserData,
+    /// The load's warnings (`B2S_SEVERITY_WARNING`).
+    pub diagnostics: *const Diagnostic,
+    pub shape_count: u32,
+    pub fixture_count: u32,
+    pub body_count: u32,
+    pub joint_count: u32,
+    pub vertex_count: u32,
+    pub fixture_id_count: u32,
+    pub user_data_count: u32,
+    pub diagnostic_count: u32,
+    /// The file's `Version`; 0 for an unversioned (legacy) file.
+    pub version: u32,
+    /// The file's `Gravity` (m/s²), meaningful only when `gravity_given`: there is no
+    /// default gravity, the host decides.
+    pub gravity: Vec2,
+    pub gravity_given: bool,
+}
+
+/// A loaded scene (opaque). Immutable; free it with `b2s_scene_free`.
+pub struct SceneHandle {
+    scene: Scene,
+    view: SceneView,
+}
+
+impl SceneHandle {
+    fn new(scene: Scene) -> Box<SceneHandle> {
+        let count = |n: usize| u32::try_from(n).expect("the loader caps counts below 2^32");
+        let view = SceneView {
+            shapes: scene.shapes().as_ptr(),
+            fixtures: scene.fixtures().as_ptr(),
+            bodies: scene.bodies().as_ptr(),
+            joints: scene.joints().as_ptr(),
+            vertices: scene.vertex_pool().as_ptr(),
+            fixture_ids: scene.fixture_id_pool().as_ptr(),
+            user_data: scene.user_data().as_ptr(),
+            diagnostics: scene.diagnostics().as_ptr(),
+            shape_count: count(scene.shapes().len()),
+            fixture_count: count(scene.fixtures().len()),
+            body_count: count(scene.bodies().len()),
+            joint_count: count(scene.joints().len()),
+            vertex_count: count(scene.vertex_pool().len()),
+            fixture_id_count: count(scene.fixture_id_pool().len()),
+            user_data_count: count(scene.user_data().len()),
+            diagnostic_count: count(scene.diagnostics().len()),
+            version: scene.version(),
+            gravity: scene.gravity().unwrap_or_default(),
+            gravity_given: scene.gravity().is_some(),
+        };
+        Box::new(SceneHandle { scene, view })
+    }
+}
+
+// SAFETY: the view's pointers point into the handle's own immutable scene.
+unsafe impl Send for SceneHandle {}
+// SAFETY: as above; nothing in a handle is ever mutated after it is made.
+unsafe impl Sync for SceneHandle {}
+
+/// Runs `f`, turning a panic into `on_panic()`: no panic crosses the C boundary.
+fn guard<R>(on_panic: impl FnOnce() -> R, f: impl FnOnce() -> R) -> R {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| on_panic())
+}
+
+/// Runs a fallible export: fills `error` (when not NULL) with the outcome, including a
+/// caught panic, and returns its code.
+fn fallible(error: *mut ErrorInfo, f: impl FnOnce() -> Result<(), Error>) -> Code {
+    let outcome = guard(
+        || Err(simple_error(Code::Internal, "internal error (a bug in box2scene): please report it")),
+        f,
+    );
+    let code = outcome.as_ref().err().map_or(Code::Ok, |e| e.code);
+    // SAFETY: the caller passes NULL or a pointer to a writable b2s_error.
+    if let Some(out) = unsafe { error.as_mut() } {
+        *out = error_info(outcome.err().as_ref());
+    }
+    code
+}
+
+fn simple_error(code: Code, message: &str) -> Error {
+    Error { code, position: Position::default(), message: message.to_owned() }
+}
+
+fn error_info(error: Option<&Error>) -> ErrorInfo {
+    let mut info = ErrorInfo {
+        code: Code::Ok as u32,
+        line: 0,
+        column: 0,
+        byte_offset: 0,
+        message: [0; ERROR_MESSAGE_SIZE],
+    };
+    if let Some(e) = error {
+        info.code = e.code as u32;
+        info.line = e.position.line;
+        info.column = e.position.column;
+        info.byte_offset = e.position.byte_offset;
+        let mut end = e.message.len().min(ERROR_MESSAGE_SIZE - 1);
+        while !e.message.is_char_boundary(end) {
+            end -= 1;
+        }
+        for (dst, &src) in info.message.iter_mut().zip(&e.message.as_bytes()[..end]) {
+            *dst = src as c_char;
+        }
+    }
+    info
+}
+
+/// Reads a NUL-terminated argument; NULL and invalid UTF-8 are errors.
+///
+/// # Safety
+/// `s` is NULL or points to a NUL-terminated string.
+unsafe fn arg_str<'a>(s: *const c_char, what: &str) -> Result<&'a str, Error> {
+    if s.is_null() {
+        return Err(simple_error(Code::NullArgument, &format!("{what} is NULL")));
+    }
+    // SAFETY: not NULL, and NUL-terminated by the caller's contract.
+    let s = unsafe { CStr::from_ptr(s) };
+    s.to_str()
+        .map_err(|_| simple_error(Code::InvalidArgument, &format!("{what} is not valid UTF-8")))
+}
+
+/// # Safety
+/// `options` is NULL or points to a `b2s_load_options`.
+unsafe fn arg_options(options: *const LoadOptions) -> LoadOptions {
+    // SAFETY: by the caller's contract.
+    unsafe { options.as_ref() }.copied().unwrap_or_default()
+}
+
+/// # Safety
+/// `out` is NULL or points to a writable `b2s_scene *`.
+unsafe fn store_scene(out: *mut *mut SceneHandle, scene: Scene) -> Result<(), Error> {
+    let handle = Box::into_raw(SceneHandle::new(scene));
+    // SAFETY: by the caller's contract; checked for NULL before loading.
+    unsafe { *out = handle };
+    Ok(())
+}
+
+fn null_out() -> Error {
+    simple_error(Code::NullArgument, "out_scene is NULL")
+}
+
+/// The load options with every field at its default (the limits of spec section 9,
+/// strict off). Start from this and change what you need.
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_load_options_default() -> LoadOptions {
+    LoadOptions::default()
+}
+
+/// Loads the scene file at `path` (UTF-8). `options` may be NULL (defaults). On success
+/// returns `B2S_CODE_OK` and stores a new scene in `*out_scene`; free it with
+/// `b2s_scene_free`. On failure stores NULL there, returns the error's code and, when
+/// `error` is not NULL, fills it. Thread-safe.
+///
+/// # Safety
+/// `path` is NULL or NUL-terminated; `options` NULL or valid; `out_scene` NULL or
+/// writable; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_load_file(
+    path: *const c_char,
+    options: *const LoadOptions,
+    out_scene: *mut *mut SceneHandle,
+    error: *mut ErrorInfo,
+) -> Code {
+    fallible(error, || {
+        if out_scene.is_null() {
+            return Err(null_out());
+        }
+        // SAFETY: checked above.
+        unsafe { *out_scene = std::ptr::null_mut() };
+        // SAFETY: by the caller's contract.
+        let (path, options) = unsafe { (arg_str(path, "path")?, arg_options(options)) };
+        let scene = load_path(Path::new(path), &options)?;
+        // SAFETY: checked above.
+        unsafe { store_scene(out_scene, scene) }
+    })
+}
+
+/// Loads a scene from `size` bytes at `data` (a whole file's content). The scene keeps
+/// no reference to `data`. Otherwise as `b2s_load_file`.
+///
+/// # Safety
+/// `data` is NULL (only with `size` 0) or points to `size` readable bytes; the other
+/// pointers as for `b2s_load_file`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_load_memory(
+    data: *const u8,
+    size: usize,
+    options: *const LoadOptions,
+    out_scene: *mut *mut SceneHandle,
+    error: *mut ErrorInfo,
+) -> Code {
+    fallible(error, || {
+        if out_scene.is_null() {
+            return Err(null_out());
+        }
+        // SAFETY: checked above.
+        unsafe { *out_scene = std::ptr::null_mut() };
+        let bytes: &[u8] = match (data.is_null(), size) {
+            (true, 0) => &[],
+            (true, _) => return Err(simple_error(Code::NullArgument, "data is NULL")),
+            // SAFETY: `size` readable bytes by the caller's contract.
+            (false, _) => unsafe { std::slice::from_raw_parts(data, size) },
+        };
+        // SAFETY: by the caller's contract.
+        let options = unsafe { arg_options(options) };
+        let scene = load(bytes, &options)?;
+        // SAFETY: checked above.
+        unsafe { store_scene(out_scene, scene) }
+    })
+}
+
+/// Frees a scene and everything it owns. NULL is ignored.
+///
+/// # Safety
+/// `scene` is NULL or a scene from this library that was not freed yet.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_free(scene: *mut SceneHandle) {
+    guard(
+        || (),
+        || {
+            if !scene.is_null() {
+                // SAFETY: made by Box::into_raw in store_scene, freed once by contract.
+                drop(unsafe { Box::from_raw(scene) });
+            }
+        },
+    )
+}
+
+/// The scene's arrays. NULL for a NULL scene. Valid until the scene is freed.
+///
+/// # Safety
+/// `scene` is NULL or a live scene.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_view(scene: *const SceneHandle) -> *const SceneView {
+    guard(std::ptr::null, || {
+        // SAFETY: by the caller's contract.
+        unsafe { scene.as_ref() }.map_or(std::ptr::null(), |h| &h.view)
+    })
+}
+
+/// # Safety
+/// As for the `b2s_scene_find_*` functions.
+unsafe fn find(
+    scene: *const SceneHandle,
+    name: *const c_char,
+    by_name: fn(&Scene, &str) -> Option<u32>,
+) -> u32 {
+    guard(
+        || NONE,
+        || {
+            // SAFETY: by the caller's contract.
+            let (Some(h), Ok(name)) = (unsafe { scene.as_ref() }, unsafe { arg_str(name, "") })
+            else {
+                return NONE;
+            };
+            by_name(&h.scene, name).unwrap_or(NONE)
+        },
+    )
+}
+
+/// The index of the first shape whose `Name` is `name`, or `B2S_NONE` (also for NULL
+/// arguments).
+///
+/// # Safety
+/// `scene` is NULL or a live scene; `name` NULL or NUL-terminated.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_find_shape(
+    scene: *const SceneHandle,
+    name: *const c_char,
+) -> u32 {
+    // SAFETY: same contract.
+    unsafe { find(scene, name, Scene::find_shape) }
+}
+
+/// The index of the first fixture whose `Name` is `name`, or `B2S_NONE`.
+///
+/// # Safety
+/// As for `b2s_scene_find_shape`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_find_fixture(
+    scene: *const SceneHandle,
+    name: *const c_char,
+) -> u32 {
+    // SAFETY: same contract.
+    unsafe { find(scene, name, Scene::find_fixture) }
+}
+
+/// The index of the first body whose `Name` is `name`, or `B2S_NONE`.
+///
+/// # Safety
+/// As for `b2s_scene_find_shape`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_find_body(
+    scene: *const SceneHandle,
+    name: *const c_char,
+) -> u32 {
+    // SAFETY: same contract.
+    unsafe { find(scene, name, Scene::find_body) }
+}
+
+/// The index of the first joint whose `Name` is `name`, or `B2S_NONE`.
+///
+/// # Safety
+/// As for `b2s_scene_find_shape`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_find_joint(
+    scene: *const SceneHandle,
+    name: *const c_char,
+) -> u32 {
+    // SAFETY: same contract.
+    unsafe { find(scene, name, Scene::find_joint) }
+}
+
+/// Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its
+/// default. Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT`
+/// for a NULL `out`.
+///
+/// # Safety
+/// `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_shape_default(kind: u32, out: *mut Shape) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { write_default(out, ShapeKind::try_from(kind).ok().map(Shape::new)) }
+}
+
+/// Writes into `*out` a fixture with every field at its default.
+///
+/// # Safety
+/// `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_fixture_default(out: *mut Fixture) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { write_default(out, Some(Fixture::default())) }
+}
+
+/// Writes into `*out` a body of `kind` (a `b2s_body_kind`) with every field at its default.
+///
+/// # Safety
+/// `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_body_default(kind: u32, out: *mut Body) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { write_default(out, BodyKind::try_from(kind).ok().map(Body::new)) }
+}
+
+/// Writes into `*out` a joint of `kind` (a `b2s_joint_kind`) with every field at the
+/// spec's default for that kind.
+///
+/// # Safety
+/// `out` is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_joint_default(kind: u32, out: *mut Joint) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { write_default(out, JointKind::try_from(kind).ok().map(Joint::new)) }
+}
+
+/// # Safety
+/// `out` is NULL or writable.
+unsafe fn write_default<T>(out: *mut T, value: Option<T>) -> Code {
+    guard(
+        || Code::Internal,
+        || match (out.is_null(), value) {
+            (true, _) => Code::NullArgument,
+            (false, None) => Code::InvalidArgument,
+            (false, Some(value)) => {
+                // SAFETY: not NULL, writable by the caller's contract.
+                unsafe { out.write(value) };
+                Code::Ok
+            }
+        },
+    )
+}
+
+const VERSION: &CStr = match CStr::from_bytes_with_nul(
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
+) {
+    Ok(version) => version,
+    Err(_) => panic!("the package version holds a NUL"),
+};
+
+/// The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the
+/// header it was built with). Static storage.
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_version() -> *const c_char {
+    VERSION.as_ptr()
+}
+
+/// The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"`. Static
+/// storage.
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_code_name(code: u32) -> *const c_char {
+    guard(
+        || c"unknown-code".as_ptr(),
+        || Code::from_u32(code).map_or(c"unknown-code", Code::c_name).as_ptr(),
+    )
+}

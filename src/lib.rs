@@ -1,0 +1,96 @@
+//! box2scene: load Box2Scene XML files (whole Box2D worlds) into flat arrays of plain
+//! records, from Rust or, through `include/box2scene.h`, from C and C++.
+//!
+//! ```no_run
+//! let scene = box2scene::load_path("level.xml", &box2scene::LoadOptions::default())?;
+//! for body in scene.bodies() {
+//!     println!("{:?} at {:?}", scene.text(body.name), body.position);
+//! }
+//! # Ok::<(), box2scene::Error>(())
+//! ```
+//!
+//! The format is specified in the project's `spec/box2scene-format.md`; the C API
+//! conventions are in the README.
+
+mod dump;
+pub mod error;
+pub mod ffi;
+mod input;
+mod parse;
+pub mod scene;
+mod text;
+mod validate;
+
+use std::path::Path;
+
+pub use error::{Code, Diagnostic, Error, Position, Severity};
+pub use scene::{
+    Body, BodyKind, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene, Shape,
+    ShapeKind, Str, UserData, Vec2,
+};
+
+/// How to load: strictness and the limits of spec section 9. Exceeding a limit is error
+/// `limit-exceeded`, whose message names the limit.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LoadOptions {
+    /// Largest input accepted, in bytes. Default 1 GiB.
+    pub max_input_bytes: u64,
+    /// Most elements in one file. Default 10 000 000.
+    pub max_elements: u64,
+    /// Longest text node or name, in bytes. Default 1 MiB.
+    pub max_text_bytes: u64,
+    /// Deepest element nesting. Default 64.
+    pub max_depth: u32,
+    /// Most vertices in one chain shape. Default 100 000.
+    pub max_chain_vertices: u32,
+    /// Every warning becomes an error. Default false.
+    pub strict: bool,
+}
+
+impl Default for LoadOptions {
+    fn default() -> LoadOptions {
+        LoadOptions {
+            max_input_bytes: 1 << 30,
+            max_elements: 10_000_000,
+            max_text_bytes: 1 << 20,
+            max_depth: 64,
+            max_chain_vertices: 100_000,
+            strict: false,
+        }
+    }
+}
+
+/// Loads a scene from the bytes of a file. The result keeps no reference to `bytes`.
+pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
+    parse::load(bytes, options)
+}
+
+/// Loads a scene from a file.
+pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, Error> {
+    let path = path.as_ref();
+    let too_big = |size: u64| size > options.max_input_bytes;
+    match std::fs::metadata(path) {
+        Ok(meta) if too_big(meta.len()) => return Err(input::too_big(options.max_input_bytes)),
+        Ok(_) => {}
+        Err(e) => return Err(io_error(path, &e)),
+    }
+    let bytes = std::fs::read(path).map_err(|e| io_error(path, &e))?;
+    load(&bytes, options)
+}
+
+fn io_error(path: &Path, e: &std::io::Error) -> Error {
+    Error {
+        code: Code::Io,
+        position: Position::default(),
+        message: format!("cannot read {}: {e}", path.display()),
+    }
+}
+
+impl Scene {
+    /// The scene as JSON: every field of every record, floats in shortest round-trip form,
+    /// diagnostics included.
+    pub fn to_json(&self) -> String {
+        dump::to_json(self)
+    }
+}

@@ -1,0 +1,680 @@
+//! The arena: the flat `#[repr(C)]` records a scene is made of, their defaults, and the
+//! frozen [`Scene`] that owns them.
+//!
+//! Every record here is part of the C ABI (`include/box2scene.h` is generated from this file).
+//! Cross references are `u32` indices into sibling arrays, [`NONE`] when absent; variable
+//! length data are [`Range`]s into the scene's pools; strings are [`Str`] pointers into the
+//! scene's string pool. Enumerations are stored as `u32` so that a value written by C is
+//! never an invalid Rust enum; the typed enums below name the values.
+#![forbid(unsafe_code)]
+
+use std::ffi::c_char;
+
+use crate::error::Diagnostic;
+
+/// The "no object" index: an absent cross reference (no user data, no gear joint, ...).
+pub const NONE: u32 = u32::MAX;
+
+/// A 2D vector. Units depend on the field (metres, m/s, ...).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Vec2 {
+    pub x: f32,
+    pub y: f32,
+}
+
+impl Vec2 {
+    pub const ZERO: Vec2 = Vec2 { x: 0.0, y: 0.0 };
+
+    pub const fn new(x: f32, y: f32) -> Vec2 {
+        Vec2 { x, y }
+    }
+}
+
+/// A run of `count` consecutive items of a pool, starting at index `first`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Range {
+    pub first: u32,
+    pub count: u32,
+}
+
+impl Range {
+    /// The pool indices this range covers.
+    pub fn indices(self) -> std::ops::Range<usize> {
+        self.first as usize..self.first as usize + self.count as usize
+    }
+}
+
+/// A NUL-terminated UTF-8 string owned by the scene, or NULL when the file had none.
+/// It stays valid until the scene is freed.
+#[repr(transparent)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Str(pub(crate) *const c_char);
+
+impl Str {
+    pub const NULL: Str = Str(std::ptr::null());
+
+    pub fn is_null(self) -> bool {
+        self.0.is_null()
+    }
+
+    /// While a scene is being built a string is its pool offset plus one, carried in the
+    /// pointer's address; [`Str::rebase`] turns it into a real pointer once the pool is final.
+    pub(crate) fn pending(offset: usize) -> Str {
+        Str(std::ptr::without_provenance(offset + 1))
+    }
+
+    fn rebase(&mut self, pool: *const c_char) {
+        if !self.is_null() {
+            self.0 = pool.wrapping_add(self.0.addr() - 1);
+        }
+    }
+}
+
+/// What a shape is. Stored as `u32` in [`Shape::kind`].
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ShapeKind {
+    /// `radius` and `position`.
+    Circle = 0,
+    /// 2 to 8 `vertices` (2 = a line segment), optional `centroid`.
+    Polygon = 1,
+    /// Version 2: two `vertices` (Vertex1, Vertex2), optional ghost vertices.
+    Edge = 2,
+    /// Version 2: a chain of `vertices`, open or a loop, optional ghost vertices.
+    Chain = 3,
+}
+
+/// What a body is. Stored as `u32` in [`Body::kind`]; the values equal Box2D's `b2BodyType`.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BodyKind {
+    Static = 0,
+    Kinematic = 1,
+    Dynamic = 2,
+}
+
+/// What a joint is. Stored as `u32` in [`Joint::kind`]. The values are box2scene's own
+/// (not Box2D's `b2JointType`).
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum JointKind {
+    Revolute = 0,
+    Prismatic = 1,
+    Distance = 2,
+    Pulley = 3,
+    /// Box2D 2.1's line joint: a wheel joint without a spring.
+    Line = 4,
+    Weld = 5,
+    Friction = 6,
+    Gear = 7,
+    /// Version 2.
+    Wheel = 8,
+    /// Version 2.
+    Rope = 9,
+    /// Version 2 (Box2D 2.3).
+    Motor = 10,
+    /// A Farseer-only joint (Angle, Slider) with no Box2D equivalent, kept so that joint
+    /// indices stay stable. Only the common fields are meaningful.
+    Unsupported = 11,
+}
+
+macro_rules! u32_enum_conversions {
+    ($ty:ident { $($variant:ident),* $(,)? }) => {
+        impl TryFrom<u32> for $ty {
+            type Error = u32;
+            fn try_from(value: u32) -> Result<Self, u32> {
+                $(if value == $ty::$variant as u32 { return Ok($ty::$variant); })*
+                Err(value)
+            }
+        }
+    };
+}
+u32_enum_conversions!(ShapeKind { Circle, Polygon, Edge, Chain });
+u32_enum_conversions!(BodyKind { Static, Kinematic, Dynamic });
+u32_enum_conversions!(JointKind {
+    Revolute, Prismatic, Distance, Pulley, Line, Weld, Friction, Gear, Wheel, Rope, Motor,
+    Unsupported,
+});
+
+/// A collision shape, in body coordinates. Shapes may be shared by many fixtures.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shape {
+    /// The `Name` element; NULL when absent.
+    pub name: Str,
+    /// A `b2s_shape_kind` value.
+    pub kind: u32,
+    /// Circle: radius in metres (> 0). 0 for other kinds.
+    pub radius: f32,
+    /// Circle: centre in metres. (0, 0) for other kinds.
+    pub position: Vec2,
+    /// Polygon, Edge, Chain: the vertices, in metres, in the scene's vertex pool.
+    /// Edge: exactly two (Vertex1, Vertex2).
+    pub vertices: Range,
+    /// Polygon: the `Centroid` element, meaningful only when `centroid_given`.
+    pub centroid: Vec2,
+    /// Edge: `Vertex0`; Chain: `PrevVertex`. Meaningful only when `has_prev_vertex`.
+    pub prev_vertex: Vec2,
+    /// Edge: `Vertex3`; Chain: `NextVertex`. Meaningful only when `has_next_vertex`.
+    pub next_vertex: Vec2,
+    /// Polygon: the file gave a `Centroid` (absent is not (0, 0)).
+    pub centroid_given: bool,
+    /// Edge: `HasVertex0`; Chain: `HasPrevVertex`. Default false.
+    pub has_prev_vertex: bool,
+    /// Edge: `HasVertex3`; Chain: `HasNextVertex`. Default false.
+    pub has_next_vertex: bool,
+    /// Chain: a closed loop (`Loop` true or `Type="Loop"`). Default false.
+    pub is_loop: bool,
+}
+
+impl Shape {
+    /// A shape of `kind` with every field at its default.
+    pub const fn new(kind: ShapeKind) -> Shape {
+        Shape {
+            name: Str::NULL,
+            kind: kind as u32,
+            radius: 0.0,
+            position: Vec2::ZERO,
+            vertices: Range { first: 0, count: 0 },
+            centroid: Vec2::ZERO,
+            prev_vertex: Vec2::ZERO,
+            next_vertex: Vec2::ZERO,
+            centroid_given: false,
+            has_prev_vertex: false,
+            has_next_vertex: false,
+            is_loop: false,
+        }
+    }
+
+    pub fn kind(&self) -> Option<ShapeKind> {
+        ShapeKind::try_from(self.kind).ok()
+    }
+}
+
+/// Collision filtering, as Box2D's `b2Filter`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Filter {
+    /// Default 0x0001.
+    pub category_bits: u16,
+    /// Default 0xFFFF.
+    pub mask_bits: u16,
+    /// Default 0. Groups always win over category and mask bits.
+    pub group_index: i16,
+}
+
+impl Default for Filter {
+    fn default() -> Filter {
+        Filter { category_bits: 0x0001, mask_bits: 0xFFFF, group_index: 0 }
+    }
+}
+
+/// A fixture: material and filtering for one shape. Fixtures may be shared by many bodies.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fixture {
+    /// The `Name` element; NULL when absent.
+    pub name: Str,
+    /// Index into the scene's shapes.
+    pub shape: u32,
+    /// kg/m². Default 0; never negative.
+    pub density: f32,
+    /// Coulomb friction coefficient. Default 0.2; never negative.
+    pub friction: f32,
+    /// Default 0; never negative.
+    pub restitution: f32,
+    pub filter: Filter,
+    /// Default false.
+    pub is_sensor: bool,
+    /// Index into the scene's user data, [`NONE`] when absent.
+    pub user_data: u32,
+}
+
+impl Default for Fixture {
+    fn default() -> Fixture {
+        Fixture {
+            name: Str::NULL,
+            shape: NONE,
+            density: 0.0,
+            friction: 0.2,
+            restitution: 0.0,
+            filter: Filter::default(),
+            is_sensor: false,
+            user_data: NONE,
+        }
+    }
+}
+
+/// A body's `MassData` override, applied after its fixtures. A datum that was not given
+/// keeps the value Box2D computes from the fixtures.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MassData {
+    /// kg, meaningful when `mass_given`; never negative.
+    pub mass: f32,
+    /// Centre of mass in body coordinates (m), meaningful when `center_given`.
+    pub center: Vec2,
+    /// Rotational inertia about the body origin (kg m²), meaningful when `inertia_given`;
+    /// never negative.
+    pub inertia: f32,
+    pub mass_given: bool,
+    pub center_given: bool,
+    pub inertia_given: bool,
+}
+
+/// A rigid body.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    /// The `Name` element; NULL when absent.
+    pub name: Str,
+    /// A `b2s_body_kind` value (equal to Box2D's `b2BodyType`).
+    pub kind: u32,
+    /// World position of the body origin, m. Default (0, 0).
+    pub position: Vec2,
+    /// Radians. Default 0.
+    pub angle: f32,
+    /// m/s. Default (0, 0).
+    pub linear_velocity: Vec2,
+    /// rad/s. Default 0.
+    pub angular_velocity: f32,
+    /// Default 0.
+    pub linear_damping: f32,
+    /// Default 0.
+    pub angular_damping: f32,
+    /// Version 2. Default 1.
+    pub gravity_scale: f32,
+    /// Box2D 2.1 only; kept, but no Box2D 2.4 field takes it. Default 1.
+    pub inertia_scale: f32,
+    pub mass_data: MassData,
+    /// The body's fixtures: a range of the scene's fixture ID pool, each an index into the
+    /// scene's fixtures.
+    pub fixtures: Range,
+    /// Index into the scene's user data, [`NONE`] when absent.
+    pub user_data: u32,
+    /// `Active` (Box2D 2.4's `enabled`). Default true.
+    pub active: bool,
+    /// Default true.
+    pub allow_sleep: bool,
+    /// Default true.
+    pub awake: bool,
+    /// Default false.
+    pub bullet: bool,
+    /// Default false.
+    pub fixed_rotation: bool,
+}
+
+impl Body {
+    /// A body of `kind` with every field at its default.
+    pub const fn new(kind: BodyKind) -> Body {
+        Body {
+            name: Str::NULL,
+            kind: kind as u32,
+            position: Vec2::ZERO,
+            angle: 0.0,
+            linear_velocity: Vec2::ZERO,
+            angular_velocity: 0.0,
+            linear_damping: 0.0,
+            angular_damping: 0.0,
+            gravity_scale: 1.0,
+            inertia_scale: 1.0,
+            mass_data: MassData {
+                mass: 0.0,
+                center: Vec2::ZERO,
+                inertia: 0.0,
+                mass_given: false,
+                center_given: false,
+                inertia_given: false,
+            },
+            fixtures: Range { first: 0, count: 0 },
+            user_data: NONE,
+            active: true,
+            allow_sleep: true,
+            awake: true,
+            bullet: false,
+            fixed_rotation: false,
+        }
+    }
+
+    pub fn kind(&self) -> Option<BodyKind> {
+        BodyKind::try_from(self.kind).ok()
+    }
+}
+
+/// A joint. One flat record serves every kind; each field says which kinds use it, and
+/// holds its default (or zero) for the others. Vectors named `..._a`/`..._b` are in the
+/// local frame of body A/B.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Joint {
+    /// The `Name` element; NULL when absent.
+    pub name: Str,
+    /// A `b2s_joint_kind` value.
+    pub kind: u32,
+    /// Index into the scene's bodies.
+    pub body_a: u32,
+    /// Index into the scene's bodies.
+    pub body_b: u32,
+    /// Index into the scene's user data, [`NONE`] when absent.
+    pub user_data: u32,
+    /// Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+    pub joint_a: u32,
+    /// Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+    pub joint_b: u32,
+    /// All kinds except Gear and Motor (m). Default (0, 0); Pulley (-1, 0); Rope (-1, 0).
+    pub local_anchor_a: Vec2,
+    /// All kinds except Gear and Motor (m). Default (0, 0); Pulley (1, 0); Rope (1, 0).
+    pub local_anchor_b: Vec2,
+    /// Prismatic, Line, Wheel: the axis in body A's frame. Default (1, 0); never zero length.
+    pub local_axis_a: Vec2,
+    /// Pulley: world anchor of side A (m). Default (-1, 1).
+    pub ground_anchor_a: Vec2,
+    /// Pulley: world anchor of side B (m). Default (1, 1).
+    pub ground_anchor_b: Vec2,
+    /// Motor: target position of body B in body A's frame (m). Default (0, 0).
+    pub linear_offset: Vec2,
+    /// Revolute, Prismatic, Weld: radians. Default 0.
+    pub reference_angle: f32,
+    /// Revolute: `LowerAngle` (rad); Prismatic, Line: `LowerTranslation` (m). Default 0.
+    pub lower_limit: f32,
+    /// Revolute: `UpperAngle` (rad); Prismatic, Line: `UpperTranslation` (m). Default 0.
+    pub upper_limit: f32,
+    /// Revolute, Wheel: rad/s; Prismatic, Line: m/s. Default 0.
+    pub motor_speed: f32,
+    /// Revolute, Wheel: N m. Default 0; never negative.
+    pub max_motor_torque: f32,
+    /// Prismatic, Line: N. Default 0; never negative.
+    pub max_motor_force: f32,
+    /// Distance: rest length (m). Default 1; never negative.
+    pub length: f32,
+    /// Distance, Weld (Version 2), Wheel: spring frequency (Hz), 0 = rigid. Default 0;
+    /// Wheel 2. Never negative.
+    pub frequency_hz: f32,
+    /// Distance, Weld (Version 2), Wheel: damping ratio. Default 0; Wheel 0.7. Never negative.
+    pub damping_ratio: f32,
+    /// Pulley: length of side A (m). Default 0.
+    pub length_a: f32,
+    /// Pulley: length of side B (m). Default 0.
+    pub length_b: f32,
+    /// Pulley, Box2D 2.1 only (no 2.4 equivalent). Default 0.
+    pub max_length_a: f32,
+    /// Pulley, Box2D 2.1 only (no 2.4 equivalent). Default 0.
+    pub max_length_b: f32,
+    /// Pulley (> 0), Gear. Default 1.
+    pub ratio: f32,
+    /// Friction, Motor: N. Default 0; Motor 1. Never negative.
+    pub max_force: f32,
+    /// Friction, Motor: N m. Default 0; Motor 1. Never negative.
+    pub max_torque: f32,
+    /// Rope: m. Default 0; never negative.
+    pub max_length: f32,
+    /// Motor: target angle of body B relative to body A (rad). Default 0.
+    pub angular_offset: f32,
+    /// Motor: position correction factor in [0, 1]. Default 0.3.
+    pub correction_factor: f32,
+    /// Default false for every kind (even Pulley).
+    pub collide_connected: bool,
+    /// Revolute, Prismatic, Line. Default false.
+    pub enable_limit: bool,
+    /// Revolute, Prismatic, Line, Wheel. Default false.
+    pub enable_motor: bool,
+}
+
+impl Joint {
+    /// A joint of `kind` with every field at the spec's default for that kind.
+    pub const fn new(kind: JointKind) -> Joint {
+        let mut joint = Joint {
+            name: Str::NULL,
+            kind: kind as u32,
+            body_a: NONE,
+            body_b: NONE,
+            user_data: NONE,
+            joint_a: NONE,
+            joint_b: NONE,
+            local_anchor_a: Vec2::ZERO,
+            local_anchor_b: Vec2::ZERO,
+            local_axis_a: Vec2::ZERO,
+            ground_anchor_a: Vec2::ZERO,
+            ground_anchor_b: Vec2::ZERO,
+            linear_offset: Vec2::ZERO,
+            reference_angle: 0.0,
+            lower_limit: 0.0,
+            upper_limit: 0.0,
+            motor_speed: 0.0,
+            max_motor_torque: 0.0,
+            max_motor_force: 0.0,
+            length: 0.0,
+            frequency_hz: 0.0,
+            damping_ratio: 0.0,
+            length_a: 0.0,
+            length_b: 0.0,
+            max_length_a: 0.0,
+            max_length_b: 0.0,
+            ratio: 0.0,
+            max_force: 0.0,
+            max_torque: 0.0,
+            max_length: 0.0,
+            angular_offset: 0.0,
+            correction_factor: 0.0,
+            collide_connected: false,
+            enable_limit: false,
+            enable_motor: false,
+        };
+        match kind {
+            JointKind::Prismatic | JointKind::Line => joint.local_axis_a = Vec2::new(1.0, 0.0),
+            JointKind::Distance => joint.length = 1.0,
+            JointKind::Pulley => {
+                joint.ground_anchor_a = Vec2::new(-1.0, 1.0);
+                joint.ground_anchor_b = Vec2::new(1.0, 1.0);
+                joint.local_anchor_a = Vec2::new(-1.0, 0.0);
+                joint.local_anchor_b = Vec2::new(1.0, 0.0);
+                joint.ratio = 1.0;
+            }
+            JointKind::Gear => joint.ratio = 1.0,
+            JointKind::Wheel => {
+                joint.local_axis_a = Vec2::new(1.0, 0.0);
+                joint.frequency_hz = 2.0;
+                joint.damping_ratio = 0.7;
+            }
+            JointKind::Rope => {
+                joint.local_anchor_a = Vec2::new(-1.0, 0.0);
+                joint.local_anchor_b = Vec2::new(1.0, 0.0);
+            }
+            JointKind::Motor => {
+                joint.max_force = 1.0;
+                joint.max_torque = 1.0;
+                joint.correction_factor = 0.3;
+            }
+            JointKind::Revolute
+            | JointKind::Weld
+            | JointKind::Friction
+            | JointKind::Unsupported => {}
+        }
+        joint
+    }
+
+    pub fn kind(&self) -> Option<JointKind> {
+        JointKind::try_from(self.kind).ok()
+    }
+}
+
+/// Application data attached to a fixture, body or joint, never interpreted.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UserData {
+    /// The exact XML between `<UserData>` and `</UserData>`, entities not decoded.
+    pub raw: Str,
+    /// The `Type` text when the content has the editor's form (`System.String`), else NULL.
+    pub type_name: Str,
+    /// The text of the `Value` element's single child in the editor's form, else NULL.
+    pub value: Str,
+}
+
+/// A loaded scene: immutable once built. All arrays are flat; see the field docs of each
+/// record for its cross references.
+#[derive(Debug)]
+pub struct Scene {
+    pub(crate) version: u32,
+    pub(crate) gravity: Option<Vec2>,
+    pub(crate) shapes: Vec<Shape>,
+    pub(crate) fixtures: Vec<Fixture>,
+    pub(crate) bodies: Vec<Body>,
+    pub(crate) joints: Vec<Joint>,
+    pub(crate) vertices: Vec<Vec2>,
+    pub(crate) fixture_ids: Vec<u32>,
+    pub(crate) user_data: Vec<UserData>,
+    pub(crate) diagnostics: Vec<Diagnostic>,
+    pub(crate) strings: Box<[u8]>,
+}
+
+/// A scene under construction: the same arrays, with strings still as pool offsets.
+#[derive(Debug, Default)]
+pub(crate) struct SceneBuilder {
+    pub version: u32,
+    pub gravity: Option<Vec2>,
+    pub shapes: Vec<Shape>,
+    pub fixtures: Vec<Fixture>,
+    pub bodies: Vec<Body>,
+    pub joints: Vec<Joint>,
+    pub vertices: Vec<Vec2>,
+    pub fixture_ids: Vec<u32>,
+    pub user_data: Vec<UserData>,
+    pub diagnostics: Vec<Diagnostic>,
+    strings: Vec<u8>,
+}
+
+impl SceneBuilder {
+    /// Stores `text` NUL-terminated in the string pool. Text holding a NUL is cut there
+    /// (the loader rejects NUL bytes before this point).
+    pub fn add_str(&mut self, text: &str) -> Str {
+        let offset = self.strings.len();
+        let text = text.split('\0').next().unwrap_or_default();
+        self.strings.extend_from_slice(text.as_bytes());
+        self.strings.push(0);
+        Str::pending(offset)
+    }
+
+    /// Rebases every string into the final pool and returns the immutable scene.
+    pub fn freeze(self) -> Scene {
+        let mut scene = Scene {
+            version: self.version,
+            gravity: self.gravity,
+            shapes: self.shapes,
+            fixtures: self.fixtures,
+            bodies: self.bodies,
+            joints: self.joints,
+            vertices: self.vertices,
+            fixture_ids: self.fixture_ids,
+            user_data: self.user_data,
+            diagnostics: self.diagnostics,
+            strings: self.strings.into_boxed_slice(),
+        };
+        let pool = scene.strings.as_ptr().cast::<c_char>();
+        let names = (scene.shapes.iter_mut().map(|s| &mut s.name))
+            .chain(scene.fixtures.iter_mut().map(|f| &mut f.name))
+            .chain(scene.bodies.iter_mut().map(|b| &mut b.name))
+            .chain(scene.joints.iter_mut().map(|j| &mut j.name))
+            .chain(scene.diagnostics.iter_mut().map(|d| &mut d.message));
+        let user_data =
+            scene.user_data.iter_mut().flat_map(|u| [&mut u.raw, &mut u.type_name, &mut u.value]);
+        for s in names.chain(user_data) {
+            s.rebase(pool);
+        }
+        scene
+    }
+}
+
+impl Scene {
+    /// The file's `Version` attribute; 0 for an unversioned (legacy) file.
+    pub fn version(&self) -> u32 {
+        self.version
+    }
+    /// The file's `Gravity`, if it gave one (there is no default gravity).
+    pub fn gravity(&self) -> Option<Vec2> {
+        self.gravity
+    }
+    pub fn shapes(&self) -> &[Shape] {
+        &self.shapes
+    }
+    pub fn fixtures(&self) -> &[Fixture] {
+        &self.fixtures
+    }
+    pub fn bodies(&self) -> &[Body] {
+        &self.bodies
+    }
+    pub fn joints(&self) -> &[Joint] {
+        &self.joints
+    }
+    /// The vertex pool that shapes' `vertices` ranges index.
+    pub fn vertex_pool(&self) -> &[Vec2] {
+        &self.vertices
+    }
+    /// The fixture ID pool that bodies' `fixtures` ranges index.
+    pub fn fixture_id_pool(&self) -> &[u32] {
+        &self.fixture_ids
+    }
+    pub fn user_data(&self) -> &[UserData] {
+        &self.user_data
+    }
+    /// The warnings of the load (a failed load returns an error instead of a scene).
+    pub fn diagnostics(&self) -> &[Diagnostic] {
+        &self.diagnostics
+    }
+    /// The vertices of `shape`.
+    pub fn vertices(&self, shape: &Shape) -> &[Vec2] {
+        &self.vertices[shape.vertices.indices()]
+    }
+    /// The fixture indices of `body`.
+    pub fn body_fixtures(&self, body: &Body) -> &[u32] {
+        &self.fixture_ids[body.fixtures.indices()]
+    }
+    /// The user data at `index`, or None for [`NONE`].
+    pub fn user_data_at(&self, index: u32) -> Option<&UserData> {
+        self.user_data.get(index as usize)
+    }
+
+    /// The text of a string of this scene; None for NULL (or a string of another scene).
+    pub fn text(&self, s: Str) -> Option<&str> {
+        let offset = s.0.addr().checked_sub(self.strings.as_ptr().addr())?;
+        let rest = self.strings.get(offset..)?;
+        let end = rest.iter().position(|&b| b == 0)?;
+        std::str::from_utf8(&rest[..end]).ok()
+    }
+
+    /// The index of the first shape named `name`.
+    pub fn find_shape(&self, name: &str) -> Option<u32> {
+        self.find(self.shapes.iter().map(|s| s.name), name)
+    }
+    /// The index of the first fixture named `name`.
+    pub fn find_fixture(&self, name: &str) -> Option<u32> {
+        self.find(self.fixtures.iter().map(|f| f.name), name)
+    }
+    /// The index of the first body named `name`.
+    pub fn find_body(&self, name: &str) -> Option<u32> {
+        self.find(self.bodies.iter().map(|b| b.name), name)
+    }
+    /// The index of the first joint named `name`.
+    pub fn find_joint(&self, name: &str) -> Option<u32> {
+        self.find(self.joints.iter().map(|j| j.name), name)
+    }
+
+    fn find(&self, mut names: impl Iterator<Item = Str>, name: &str) -> Option<u32> {
+        let index = names.position(|s| self.text(s) == Some(name))?;
+        u32::try_from(index).ok()
+    }
+}
+
+/// The ABI is pinned: these sizes and offsets are also asserted on the C++ side.
+const _: () = {
+    use std::mem::{offset_of, size_of};
+    assert!(size_of::<Vec2>() == 8);
+    assert!(size_of::<Range>() == 8);
+    assert!(size_of::<Str>() == size_of::<usize>());
+    assert!(size_of::<Filter>() == 6);
+    assert!(size_of::<MassData>() == 20);
+    assert!(offset_of!(Shape, kind) == size_of::<usize>());
+    assert!(offset_of!(Body, mass_data) == size_of::<usize>() + 44);
+    assert!(offset_of!(Joint, correction_factor) == size_of::<usize>() + 144);
+};
