@@ -1,1 +1,188 @@
-fn main() {}
+//! `box2scene`: check and dump Box2Scene files in a level pipeline.
+//!
+//! `check` prints one compiler-style line per diagnostic (`FILE:LINE:COLUMN: warning[CODE]:
+//! message`) so that editors and CI logs can jump to it; `dump` prints the scene as JSON.
+//! The exit status tells a build script what happened without parsing the output.
+
+use std::ffi::OsString;
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use box2scene::{Code, Diagnostic, Error, LoadOptions, Position, Scene, Severity};
+
+const USAGE: &str = "\
+Usage:
+  box2scene check [--strict] FILE...   print every warning and error of each file
+  box2scene dump [--strict] FILE       print the scene as JSON
+  box2scene --help | -h                print this help
+  box2scene --version                  print the version
+
+Options:
+  --strict   treat every warning as an error
+
+Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
+";
+
+/// The exit status, ordered so that a run over many files ends with the worst one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Status {
+    Clean = 0,
+    LoadError = 1,
+    UsageOrIo = 2,
+}
+
+enum Command {
+    Help,
+    Version,
+    Check { files: Vec<PathBuf>, options: LoadOptions },
+    Dump { file: PathBuf, options: LoadOptions },
+}
+
+fn main() -> ExitCode {
+    let args: Vec<OsString> = std::env::args_os().skip(1).collect();
+    let status = match parse_command(&args) {
+        Ok(command) => run(command),
+        Err(problem) => {
+            eprint!("box2scene: {problem}\n\n{USAGE}");
+            Status::UsageOrIo
+        }
+    };
+    ExitCode::from(status as u8)
+}
+
+fn run(command: Command) -> Status {
+    match command {
+        Command::Help => emit(USAGE),
+        Command::Version => emit(&format!("box2scene {}\n", env!("CARGO_PKG_VERSION"))),
+        Command::Check { files, options } => check(&files, &options),
+        Command::Dump { file, options } => dump(&file, &options),
+    }
+}
+
+/// Reads the command line; the error is what was wrong with it, for the usage message.
+fn parse_command(args: &[OsString]) -> Result<Command, String> {
+    let Some((command, rest)) = args.split_first() else {
+        return Err("no command given".to_owned());
+    };
+    match command.to_str() {
+        Some("--help" | "-h") => Ok(Command::Help),
+        Some("--version") => Ok(Command::Version),
+        Some("check") => {
+            let (files, options) = parse_load_args(rest)?;
+            if files.is_empty() {
+                return Err("check needs at least one FILE".to_owned());
+            }
+            Ok(Command::Check { files, options })
+        }
+        Some("dump") => {
+            let (files, options) = parse_load_args(rest)?;
+            match <[PathBuf; 1]>::try_from(files) {
+                Ok([file]) => Ok(Command::Dump { file, options }),
+                Err(_) => Err("dump needs exactly one FILE".to_owned()),
+            }
+        }
+        _ => Err(format!("unknown command '{}'", command.to_string_lossy())),
+    }
+}
+
+/// The files and load options of `check` and `dump`; options may come anywhere.
+fn parse_load_args(args: &[OsString]) -> Result<(Vec<PathBuf>, LoadOptions), String> {
+    let mut options = LoadOptions::default();
+    let mut files = Vec::new();
+    for arg in args {
+        if arg == "--strict" {
+            options.strict = true;
+        } else if arg.as_encoded_bytes().starts_with(b"-") {
+            return Err(format!("unknown option '{}'", arg.to_string_lossy()));
+        } else {
+            files.push(PathBuf::from(arg));
+        }
+    }
+    Ok((files, options))
+}
+
+/// Checks every file, even after one fails, so that one run reports everything.
+fn check(files: &[PathBuf], options: &LoadOptions) -> Status {
+    let mut worst = Status::Clean;
+    for file in files {
+        let (status, lines) = check_file(file, options);
+        worst = worst.max(status).max(emit(&lines));
+    }
+    worst
+}
+
+/// The file's status and its report, one line per diagnostic or the load error.
+fn check_file(file: &Path, options: &LoadOptions) -> (Status, String) {
+    match box2scene::load_path(file, options) {
+        Ok(scene) => {
+            let lines: String = scene
+                .diagnostics()
+                .iter()
+                .map(|d| diagnostic_line(file, &scene, d) + "\n")
+                .collect();
+            (Status::Clean, lines)
+        }
+        Err(error) => (status_of(&error), error_line(file, &error) + "\n"),
+    }
+}
+
+fn dump(file: &Path, options: &LoadOptions) -> Status {
+    match box2scene::load_path(file, options) {
+        Ok(scene) => emit(&scene.to_json()),
+        Err(error) => {
+            eprintln!("{}", error_line(file, &error));
+            status_of(&error)
+        }
+    }
+}
+
+/// A file that cannot be read is the environment's problem, not the file's: status 2.
+fn status_of(error: &Error) -> Status {
+    if error.code == Code::Io { Status::UsageOrIo } else { Status::LoadError }
+}
+
+fn error_line(file: &Path, error: &Error) -> String {
+    report_line(file, error.position, Severity::Error.name(), error.code.name(), &error.message)
+}
+
+fn diagnostic_line(file: &Path, scene: &Scene, d: &Diagnostic) -> String {
+    let position = Position { line: d.line, column: d.column, byte_offset: d.byte_offset };
+    let code = Code::from_u32(d.code).map_or_else(|| d.code.to_string(), |c| c.name().to_owned());
+    let message = scene.text(d.message).unwrap_or_default();
+    report_line(file, position, &severity_name(d.severity), &code, message)
+}
+
+/// Severities are stored as `u32` for C; a loaded scene's diagnostics are warnings (an
+/// error fails the load), so anything else is named by its number rather than guessed.
+fn severity_name(value: u32) -> String {
+    [Severity::Warning, Severity::Error]
+        .into_iter()
+        .find(|&s| s as u32 == value)
+        .map_or_else(|| value.to_string(), |s| s.name().to_owned())
+}
+
+/// `FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE`, leaving out the parts of the position that
+/// are unknown (0), as compilers do.
+fn report_line(file: &Path, at: Position, severity: &str, code: &str, message: &str) -> String {
+    let file = file.display();
+    let place = match (at.line, at.column) {
+        (0, _) => format!("{file}"),
+        (line, 0) => format!("{file}:{line}"),
+        (line, column) => format!("{file}:{line}:{column}"),
+    };
+    format!("{place}: {severity}[{code}]: {message}")
+}
+
+/// Writes to standard output. A closed or failing output is reported instead of panicking
+/// as `print!` would, so a pipeline gets status 2 and a message.
+fn emit(text: &str) -> Status {
+    let mut stdout = io::stdout().lock();
+    match stdout.write_all(text.as_bytes()).and_then(|()| stdout.flush()) {
+        Ok(()) => Status::Clean,
+        Err(e) => {
+            eprintln!("box2scene: cannot write to standard output: {e}");
+            Status::UsageOrIo
+        }
+    }
+}
