@@ -1,1 +1,230 @@
-#![allow(dead_code)]
+//! The semantic rules of the spec that need more than one value: shape geometry (checked
+//! when a shape is complete) and cross references (checked when the whole file is read,
+//! because containers come in any order).
+#![forbid(unsafe_code)]
+
+use crate::error::Code;
+use crate::parse::{Parsed, Parser, Problem, problem};
+use crate::scene::{BodyKind, JointKind, NONE, Vec2};
+
+/// Box2D's `b2_maxPolygonVertices`.
+pub const MAX_POLYGON_VERTICES: usize = 8;
+/// Box2D's `b2_linearSlop` (m).
+pub const LINEAR_SLOP: f32 = 0.005;
+
+/// The outcome of a geometry check that did not fail.
+pub enum Geometry {
+    Fine,
+    Warn(Code, String),
+}
+
+type Checked = Result<Geometry, (Code, String)>;
+
+fn sub(a: Vec2, b: Vec2) -> Vec2 {
+    Vec2::new(a.x - b.x, a.y - b.y)
+}
+
+fn cross(a: Vec2, b: Vec2) -> f32 {
+    a.x * b.y - a.y * b.x
+}
+
+fn length_squared(a: Vec2) -> f32 {
+    a.x * a.x + a.y * a.y
+}
+
+/// A polygon of 2 (a segment) to 8 vertices, judged the way Box2D 2.4.1's
+/// `b2PolygonShape::Set` will treat it: points closer than half the linear slop are merged,
+/// the convex hull is taken, and a hull of fewer than 3 points or (near) zero area would be
+/// silently replaced by a 1x1 box, so it is an error here.
+pub fn polygon(vertices: &[Vec2]) -> Checked {
+    match vertices.len() {
+        2 => {
+            if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
+                return Err((Code::DegeneratePolygon, format!(
+                    "the two points of this segment polygon are closer than Box2D's linear slop ({LINEAR_SLOP} m)"
+                )));
+            }
+            return Ok(Geometry::Fine);
+        }
+        0 | 1 => {
+            return Err((Code::BadVertexCount, format!(
+                "a polygon needs 2 to {MAX_POLYGON_VERTICES} vertices, this one has {}", vertices.len()
+            )));
+        }
+        _ => {}
+    }
+    let merged = merge_close_points(vertices);
+    let hull = convex_hull(&merged);
+    if hull.len() < 3 || hull_area(&merged, &hull) <= f32::EPSILON {
+        return Err((Code::DegeneratePolygon, "the polygon's points are collinear or (nearly) coincide: it has no area, and Box2D would replace it with a 1x1 box".into()));
+    }
+    let kept_in_order = merged.len() == vertices.len() && hull.len() == vertices.len()
+        && is_rotation_of_identity(&hull);
+    if kept_in_order {
+        Ok(Geometry::Fine)
+    } else {
+        Ok(Geometry::Warn(Code::PolygonNotConvexCcw, "the polygon's vertices are not convex in counter-clockwise order; Box2D will use their convex hull".into()))
+    }
+}
+
+/// The vertices without those closer than half the linear slop to an earlier one.
+fn merge_close_points(vertices: &[Vec2]) -> Vec<Vec2> {
+    let weld = 0.5 * LINEAR_SLOP;
+    let mut kept: Vec<Vec2> = Vec::with_capacity(vertices.len());
+    for &v in vertices {
+        if kept.iter().all(|&k| length_squared(sub(v, k)) >= weld * weld) {
+            kept.push(v);
+        }
+    }
+    kept
+}
+
+/// Indices of the convex hull, counter-clockwise from the rightmost (then lowest) point:
+/// the gift wrapping of Box2D 2.4.1, collinear points dropped.
+fn convex_hull(points: &[Vec2]) -> Vec<usize> {
+    let rightmost = (0..points.len()).fold(0, |best, i| {
+        let (p, b) = (points[i], points[best]);
+        if p.x > b.x || (p.x == b.x && p.y < b.y) { i } else { best }
+    });
+    let mut hull = Vec::new();
+    let mut current = rightmost;
+    loop {
+        hull.push(current);
+        let mut next = 0;
+        for j in 1..points.len() {
+            if next == current {
+                next = j;
+                continue;
+            }
+            let r = sub(points[next], points[current]);
+            let v = sub(points[j], points[current]);
+            let c = cross(r, v);
+            if c < 0.0 || (c == 0.0 && length_squared(v) > length_squared(r)) {
+                next = j;
+            }
+        }
+        current = next;
+        if current == rightmost || hull.len() > points.len() {
+            return hull;
+        }
+    }
+}
+
+fn hull_area(points: &[Vec2], hull: &[usize]) -> f32 {
+    let origin = points[hull[0]];
+    let twice: f32 = hull.windows(2).skip(1).map(|w| {
+        cross(sub(points[w[0]], origin), sub(points[w[1]], origin))
+    }).sum();
+    0.5 * twice
+}
+
+/// Whether `hull` is 0, 1, ..., n-1 up to a rotation: the input was already its own hull.
+fn is_rotation_of_identity(hull: &[usize]) -> bool {
+    let n = hull.len();
+    hull.iter().enumerate().all(|(i, &h)| h == (hull[0] + i) % n)
+}
+
+/// An edge must have length (at least the linear slop).
+pub fn edge(vertices: &[Vec2]) -> Checked {
+    if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
+        return Err((Code::DegenerateEdge, format!("the edge is shorter than Box2D's linear slop ({LINEAR_SLOP} m)")));
+    }
+    Ok(Geometry::Fine)
+}
+
+/// A chain needs 2 vertices (a loop 3), no two consecutive ones closer than the linear slop.
+pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
+    let least = if is_loop { 3 } else { 2 };
+    if vertices.len() < least {
+        let what = if is_loop { "loop" } else { "chain" };
+        return Err((Code::BadVertexCount, format!("a {what} needs at least {least} vertices, this one has {}", vertices.len())));
+    }
+    let closing = is_loop.then(|| [vertices[vertices.len() - 1], vertices[0]]);
+    let pairs = vertices.windows(2).map(|w| [w[0], w[1]]).chain(closing);
+    for (i, [a, b]) in pairs.enumerate() {
+        if length_squared(sub(b, a)) < LINEAR_SLOP * LINEAR_SLOP {
+            return Err((Code::DegenerateChain, format!(
+                "chain vertices {i} and {} are closer than Box2D's linear slop ({LINEAR_SLOP} m)",
+                (i + 1) % vertices.len()
+            )));
+        }
+    }
+    Ok(Geometry::Fine)
+}
+
+/// Checks every ID against its container, and the gear joints' targets; reports the error
+/// earliest in the file. Also warns about dynamic bodies with a zero-density fixture.
+pub(crate) fn cross_references(p: &mut Parser) -> Parsed<()> {
+    let mut errors: Vec<Problem> = Vec::new();
+    let s = &p.scene;
+    let count = |n: usize, what: &str| format!("the file has {n} {what}{}", if n == 1 { "" } else { "s" });
+    for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
+        if f.shape as usize >= s.shapes.len() {
+            errors.push(problem(Code::IdOutOfRange, at, format!(
+                "fixture {i} names shape {}, but {}", f.shape, count(s.shapes.len(), "shape")
+            )));
+        }
+    }
+    for (i, b) in s.bodies.iter().enumerate() {
+        for k in b.fixtures.indices() {
+            let id = s.fixture_ids[k];
+            if id as usize >= s.fixtures.len() {
+                errors.push(problem(Code::IdOutOfRange, p.origins.fixture_ids[k], format!(
+                    "body {i} names fixture {id}, but {}", count(s.fixtures.len(), "fixture")
+                )));
+            }
+        }
+    }
+    for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
+        for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
+            if body as usize >= s.bodies.len() {
+                errors.push(problem(Code::IdOutOfRange, at, format!(
+                    "joint {i} names body {body} as {side}, but {}", count(s.bodies.len(), "body").replace("bodys", "bodies")
+                )));
+            }
+        }
+        if j.kind() != Some(JointKind::Gear) {
+            continue;
+        }
+        for (target, side, at) in [(j.joint_a, "JointA", at.joint_a), (j.joint_b, "JointB", at.joint_b)] {
+            let kind = s.joints.get(target as usize).and_then(|t| t.kind());
+            let why = match kind {
+                _ if target as usize == i => Some("itself".to_string()),
+                None if target != NONE => Some(format!("joint {target}, but {}", count(s.joints.len(), "joint"))),
+                Some(JointKind::Revolute | JointKind::Prismatic) | None => None,
+                Some(other) => Some(format!("joint {target}, a {other:?} joint")),
+            };
+            if let Some(why) = why {
+                errors.push(problem(Code::BadGearJoint, at, format!(
+                    "gear joint {i} names {why} as {side}; a gear couples two revolute or prismatic joints"
+                )));
+            }
+        }
+    }
+    if let Some(first) = errors.into_iter().min_by_key(|e| e.at) {
+        return Err(first);
+    }
+    dynamic_bodies_without_mass(p)
+}
+
+/// "A dynamic body that contains a fixture whose density is zero is malformed", unless its
+/// MassData gives a mass: Box2D would give it mass 1.
+fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
+    let s = &p.scene;
+    let mut found = Vec::new();
+    for (i, b) in s.bodies.iter().enumerate() {
+        if b.kind() != Some(BodyKind::Dynamic) || b.mass_data.mass_given {
+            continue;
+        }
+        let zero = s.fixture_ids[b.fixtures.indices()].iter().find(|&&f| s.fixtures[f as usize].density == 0.0);
+        if let Some(f) = zero {
+            found.push((p.origins.bodies[i], format!(
+                "dynamic body {i} has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"
+            )));
+        }
+    }
+    for (at, message) in found {
+        p.warn(Code::DynamicBodyZeroDensity, at, message)?;
+    }
+    Ok(())
+}

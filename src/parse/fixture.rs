@@ -1,0 +1,74 @@
+//! `<Fixture>`: a shape ID, material and filtering.
+
+use super::{Parsed, Parser, Seen, Tag};
+use crate::error::Code;
+use crate::scene::{Filter, Fixture};
+use crate::text;
+
+const FIXTURE: &[&str] = &[
+    "shape", "name", "density", "friction", "restitution", "issensor", "filterdata", "userdata",
+];
+const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex"];
+
+impl<'a> Parser<'a> {
+    pub(super) fn fixture(&mut self, tag: Tag<'a>) -> Parsed<()> {
+        let mut fixture = Fixture::default();
+        let mut shape_at = tag.at;
+        let mut seen = Seen::default();
+        while let Some(child) = self.child(&tag)? {
+            let Some((name, repeated)) = self.known(&tag, &child, FIXTURE, &mut seen)? else {
+                continue;
+            };
+            if repeated {
+                self.duplicate(&tag, &child)?;
+            }
+            match name {
+                "shape" => (fixture.shape, shape_at) = self.id(&child)?,
+                "name" => fixture.name = self.string(&child)?,
+                "density" => fixture.density = self.non_negative(&child)?,
+                "friction" => fixture.friction = self.non_negative(&child)?,
+                "restitution" => fixture.restitution = self.non_negative(&child)?,
+                "issensor" => fixture.is_sensor = self.boolean(&child)?,
+                "filterdata" => self.filter(&child, &mut fixture.filter)?,
+                _ => fixture.user_data = self.user_data(&child)?,
+            }
+        }
+        if !seen.contains(FIXTURE, "shape") {
+            return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
+        }
+        self.origins.fixture_shapes.push(shape_at);
+        self.scene.fixtures.push(fixture);
+        Ok(())
+    }
+
+    fn filter(&mut self, tag: &Tag<'a>, filter: &mut Filter) -> Parsed<()> {
+        let mut seen = Seen::default();
+        while let Some(child) = self.child(tag)? {
+            let Some((name, repeated)) = self.known(tag, &child, FILTER, &mut seen)? else {
+                continue;
+            };
+            if repeated {
+                self.duplicate(tag, &child)?;
+            }
+            match name {
+                "categorybits" => filter.category_bits = self.bits(&child)?,
+                "maskbits" => filter.mask_bits = self.bits(&child)?,
+                _ => filter.group_index = self.parsed(&child, text::int16)?.0,
+            }
+        }
+        Ok(())
+    }
+
+    /// Collision bits; above 16 bits only the low 16 are kept, with a warning.
+    fn bits(&mut self, tag: &Tag<'a>) -> Parsed<u16> {
+        let ((bits, truncated), at) = self.parsed(tag, text::bits)?;
+        if truncated {
+            let message = format!(
+                "<{}> has more than 16 bits; Box2D keeps the low 16 (0x{bits:04X})",
+                tag.name()
+            );
+            self.warn(Code::FilterBitsTruncated, at, message)?;
+        }
+        Ok(bits)
+    }
+}

@@ -1,0 +1,184 @@
+//! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
+
+use super::{Parsed, Parser, Seen, Tag, problem};
+use crate::error::Code;
+use crate::scene::{Range, Shape, ShapeKind, Vec2};
+use crate::validate;
+
+const SHAPE: &[&str] = &[
+    "name", "radius", "position", "vertices", "centroid", "vertex0", "vertex1", "vertex2",
+    "vertex3", "hasvertex0", "hasvertex3", "prevvertex", "nextvertex", "hasprevvertex",
+    "hasnextvertex", "loop",
+];
+
+/// Whether a shape of `kind` has the element `name` (from [`SHAPE`]).
+fn belongs(kind: ShapeKind, name: &str) -> bool {
+    match name {
+        "name" => true,
+        "radius" | "position" => kind == ShapeKind::Circle,
+        "vertices" => matches!(kind, ShapeKind::Polygon | ShapeKind::Chain),
+        "centroid" => kind == ShapeKind::Polygon,
+        "vertex0" | "vertex1" | "vertex2" | "vertex3" | "hasvertex0" | "hasvertex3" => {
+            kind == ShapeKind::Edge
+        }
+        _ => kind == ShapeKind::Chain,
+    }
+}
+
+impl<'a> Parser<'a> {
+    pub(super) fn shape(&mut self, tag: Tag<'a>) -> Parsed<()> {
+        let mut shape = self.shape_type(&tag)?;
+        let kind = shape.kind().expect("shape_type sets a known kind");
+        let mut seen = Seen::default();
+        let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
+        while let Some(child) = self.child(&tag)? {
+            let Some((name, repeated)) = self.known(&tag, &child, SHAPE, &mut seen)? else {
+                continue;
+            };
+            if !belongs(kind, name) {
+                let message = format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
+                self.warn(Code::UnknownElement, child.at, message)?;
+                self.skip(&child)?;
+                continue;
+            }
+            if repeated && name == "vertices" {
+                return Err(self.duplicate_container(&tag, &child));
+            }
+            if repeated {
+                self.duplicate(&tag, &child)?;
+            }
+            match name {
+                "name" => shape.name = self.string(&child)?,
+                "radius" => (shape.radius, radius_at) = self.parsed(&child, crate::text::float)?,
+                "position" => shape.position = self.vector(&child)?,
+                "vertices" => shape.vertices = self.vertices(&child, kind)?,
+                "centroid" => shape.centroid = self.vector(&child)?,
+                "vertex0" | "prevvertex" => shape.prev_vertex = self.vector(&child)?,
+                "vertex1" => edge[0] = self.vector(&child)?,
+                "vertex2" => edge[1] = self.vector(&child)?,
+                "vertex3" | "nextvertex" => shape.next_vertex = self.vector(&child)?,
+                "hasvertex0" | "hasprevvertex" => shape.has_prev_vertex = self.boolean(&child)?,
+                "hasvertex3" | "hasnextvertex" => shape.has_next_vertex = self.boolean(&child)?,
+                _ => shape.is_loop |= self.boolean(&child)?,
+            }
+        }
+        shape.centroid_given = seen.contains(SHAPE, "centroid");
+        match kind {
+            ShapeKind::Circle => {
+                for needed in ["radius", "position"] {
+                    if !seen.contains(SHAPE, needed) {
+                        return Err(self.missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
+                    }
+                }
+                if !(shape.radius > 0.0) {
+                    return Err(problem(
+                        Code::BadRadius,
+                        radius_at,
+                        format!("a circle's <Radius> must be greater than 0, not {}", shape.radius),
+                    ));
+                }
+            }
+            ShapeKind::Edge => {
+                for needed in ["vertex1", "vertex2"] {
+                    if !seen.contains(SHAPE, needed) {
+                        return Err(self.missing(&tag, &format!("<{}> (an Edge needs one)", title(needed))));
+                    }
+                }
+                let first = self.scene.vertices.len() as u32;
+                self.scene.vertices.extend(edge);
+                shape.vertices = Range { first, count: 2 };
+            }
+            ShapeKind::Polygon | ShapeKind::Chain => {
+                if !seen.contains(SHAPE, "vertices") {
+                    return Err(self.missing(&tag, "<Vertices>"));
+                }
+            }
+        }
+        self.check_geometry(&tag, &shape)?;
+        self.scene.shapes.push(shape);
+        Ok(())
+    }
+
+    /// The shape's `Type` (and `Name` attribute, which some writers use).
+    fn shape_type(&mut self, tag: &Tag<'a>) -> Parsed<Shape> {
+        let attrs = self.attributes(tag)?;
+        self.unknown_attributes(tag, &attrs, &["type", "name"])?;
+        let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
+            return Err(problem(
+                Code::MissingAttribute,
+                tag.at,
+                "<Shape> has no Type attribute (Circle, Polygon, Edge or Chain)",
+            ));
+        };
+        let value = super::trim_xml(&ty.value);
+        let (kind, is_loop) = match value.to_ascii_lowercase().as_str() {
+            "circle" => (ShapeKind::Circle, false),
+            "polygon" => (ShapeKind::Polygon, false),
+            "edge" => (ShapeKind::Edge, false),
+            "chain" => (ShapeKind::Chain, false),
+            "loop" => (ShapeKind::Chain, true),
+            _ => {
+                return Err(problem(
+                    Code::UnknownType,
+                    ty.at,
+                    format!("unknown shape Type \"{}\": expected Circle, Polygon, Edge or Chain", super::shorten(value)),
+                ));
+            }
+        };
+        if matches!(kind, ShapeKind::Edge | ShapeKind::Chain) {
+            self.newer_construct(ty.at, &format!("a {value} shape"))?;
+        }
+        let mut shape = Shape::new(kind);
+        shape.is_loop = is_loop;
+        if let Some(name) = attrs.iter().find(|a| a.is("name")) {
+            shape.name = self.scene.add_str(super::trim_xml(&name.value));
+        }
+        Ok(shape)
+    }
+
+    /// `<Vertices>` of a polygon (at most 8) or a chain (at most the chain limit).
+    fn vertices(&mut self, tag: &Tag<'a>, kind: ShapeKind) -> Parsed<Range> {
+        let first = self.scene.vertices.len();
+        let most = match kind {
+            ShapeKind::Polygon => validate::MAX_POLYGON_VERTICES,
+            _ => self.options().max_chain_vertices as usize,
+        };
+        self.items(tag, "Vertex", |p, vertex| {
+            if p.scene.vertices.len() - first == most {
+                return Err(match kind {
+                    ShapeKind::Polygon => problem(
+                        Code::BadVertexCount,
+                        vertex.at,
+                        format!("a polygon has at most {most} vertices (Box2D's b2_maxPolygonVertices); this is the {}th", most + 1),
+                    ),
+                    _ => p.limit(vertex.at, "max_chain_vertices", most as u64),
+                });
+            }
+            let v = p.vector(&vertex)?;
+            p.scene.vertices.push(v);
+            Ok(())
+        })?;
+        Ok(Range { first: first as u32, count: (self.scene.vertices.len() - first) as u32 })
+    }
+
+    fn check_geometry(&mut self, tag: &Tag<'a>, shape: &Shape) -> Parsed<()> {
+        let vertices = &self.scene.vertices[shape.vertices.indices()];
+        let checked = match shape.kind() {
+            Some(ShapeKind::Polygon) => validate::polygon(vertices),
+            Some(ShapeKind::Edge) => validate::edge(vertices),
+            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop),
+            _ => Ok(validate::Geometry::Fine),
+        };
+        match checked {
+            Ok(validate::Geometry::Fine) => Ok(()),
+            Ok(validate::Geometry::Warn(code, message)) => self.warn(code, tag.at, message),
+            Err((code, message)) => Err(problem(code, tag.at, message)),
+        }
+    }
+}
+
+/// `vertex1` -> `Vertex1`, for messages.
+fn title(name: &str) -> String {
+    let mut chars = name.chars();
+    chars.next().map_or_else(String::new, |c| c.to_ascii_uppercase().to_string() + chars.as_str())
+}

@@ -1,0 +1,95 @@
+//! `<UserData>`: kept verbatim, never interpreted, plus the type name and value text when
+//! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (spec section 7).
+
+use super::{Node, Parsed, Parser, Tag, trim_xml};
+use crate::scene::{Str, UserData};
+
+/// What a walk over a UserData subtree saw of the editor's form.
+#[derive(Default)]
+struct EditorForm {
+    type_name: Option<String>,
+    value: Option<String>,
+    types: u32,
+    values: u32,
+    value_children: u32,
+    /// Anything else: other elements, deeper nesting, loose text.
+    other: bool,
+}
+
+impl EditorForm {
+    fn complete(&self) -> bool {
+        !self.other && self.types == 1 && self.values == 1 && self.value_children == 1
+    }
+}
+
+/// Where the walk is.
+#[derive(Clone, Copy, PartialEq)]
+enum Inside {
+    Type,
+    Value,
+    ValueChild,
+    Other,
+}
+
+impl<'a> Parser<'a> {
+    /// Stores the user data of `tag` and returns its index.
+    pub(super) fn user_data(&mut self, tag: &Tag<'a>) -> Parsed<u32> {
+        let (raw, form) = if tag.empty { ("", EditorForm::default()) } else { self.walk_user_data(tag)? };
+        let complete = form.complete();
+        let mut text = |s: Option<String>| match (complete, s) {
+            (true, Some(s)) => self.scene.add_str(trim_xml(&s)),
+            _ => Str::NULL,
+        };
+        let (type_name, value) = (text(form.type_name), text(form.value));
+        let raw = self.scene.add_str(raw);
+        self.scene.user_data.push(UserData { raw, type_name, value });
+        Ok((self.scene.user_data.len() - 1) as u32)
+    }
+
+    /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
+    fn walk_user_data(&mut self, tag: &Tag<'a>) -> Parsed<(&'a str, EditorForm)> {
+        let start = self.position();
+        let mut form = EditorForm::default();
+        let mut path: Vec<Inside> = Vec::new();
+        loop {
+            match self.next_node()? {
+                Node::Open(child) => {
+                    let inside = match path.as_slice() {
+                        [] if child.is("type") => {
+                            form.types += 1;
+                            form.type_name.get_or_insert_with(String::new);
+                            Inside::Type
+                        }
+                        [] if child.is("value") => {
+                            form.values += 1;
+                            Inside::Value
+                        }
+                        [Inside::Value] => {
+                            form.value_children += 1;
+                            form.value.get_or_insert_with(String::new);
+                            Inside::ValueChild
+                        }
+                        _ => {
+                            form.other = true;
+                            Inside::Other
+                        }
+                    };
+                    if !child.empty {
+                        path.push(inside);
+                    }
+                }
+                Node::Text(t, _) => match path.last() {
+                    Some(Inside::Type) => form.type_name.get_or_insert_with(String::new).push_str(&t),
+                    Some(Inside::ValueChild) => form.value.get_or_insert_with(String::new).push_str(&t),
+                    _ => form.other |= !trim_xml(&t).is_empty(),
+                },
+                Node::Close(at) => {
+                    if path.pop().is_none() {
+                        return Ok((self.slice(start, at), form));
+                    }
+                }
+                Node::Eof => return Err(self.unclosed(tag)),
+            }
+        }
+    }
+}
