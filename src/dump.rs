@@ -178,8 +178,8 @@ fn user_data(scene: &Scene, at: u32) -> String {
 fn diagnostics(scene: &Scene) -> String {
     let one = |d: &Diagnostic| {
         inline_object(&[
-            ("severity", enum_text(severity_name(d.severity), d.severity)),
-            ("code", enum_text(Code::from_u32(d.code).map(Code::name), d.code)),
+            ("severity", enum_text(d.severity().map(Severity::name), d.severity)),
+            ("code", enum_text(d.code().map(Code::name), d.code)),
             ("line", d.line.to_string()),
             ("column", d.column.to_string()),
             ("byte_offset", d.byte_offset.to_string()),
@@ -222,14 +222,6 @@ fn joint_kind_name(kind: JointKind) -> &'static str {
         JointKind::Motor => "motor",
         JointKind::Unsupported => "unsupported",
     }
-}
-
-/// Severities are stored as `u32` for C; this names the stored value.
-fn severity_name(value: u32) -> Option<&'static str> {
-    [Severity::Warning, Severity::Error]
-        .into_iter()
-        .find(|&s| s as u32 == value)
-        .map(Severity::name)
 }
 
 /// An enumeration by its name; a value with no name (which a loaded scene never holds)
@@ -323,6 +315,9 @@ fn string(s: &str) -> String {
         match c {
             '"' => out.push_str("\\\""),
             '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
             c if c.is_control() => out.push_str(&format!("\\u{:04x}", u32::from(c))),
             c => out.push(c),
         }
@@ -340,7 +335,7 @@ mod tests {
     #[test]
     fn string_escapes_quotes_backslashes_and_control_characters() {
         assert_eq!(string(r#"say "hi" \o/"#), r#""say \"hi\" \\o/""#);
-        assert_eq!(string("a\tb\nc\r\u{0}\u{1f}"), r#""a\u0009b\u000ac\u000d\u0000\u001f""#);
+        assert_eq!(string("a\tb\nc\r\u{0}\u{1f}"), r#""a\tb\nc\r\u0000\u001f""#);
         assert_eq!(string("del\u{7f} c1\u{85}"), r#""del\u007f c1\u0085""#);
     }
 
@@ -485,7 +480,7 @@ mod tests {
   ],
   "bodies": [
     {
-      "kind": "dynamic", "name": "crate\u00091",
+      "kind": "dynamic", "name": "crate\t1",
       "active": true, "allow_sleep": true, "awake": true, "bullet": false, "fixed_rotation": false,
       "position": [0.0, 0.0], "angle": 0.0, "linear_velocity": [0.0, 0.0], "angular_velocity": 0.0,
       "linear_damping": 0.0, "angular_damping": 0.0, "gravity_scale": 1.0, "inertia_scale": 1.0,

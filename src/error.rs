@@ -277,6 +277,20 @@ pub struct Diagnostic {
     pub column: u32,
 }
 
+impl Diagnostic {
+    pub fn code(&self) -> Option<Code> {
+        Code::from_u32(self.code)
+    }
+
+    pub fn severity(&self) -> Option<Severity> {
+        [Severity::Warning, Severity::Error].into_iter().find(|&s| s as u32 == self.severity)
+    }
+
+    pub fn position(&self) -> Position {
+        Position { line: self.line, column: self.column, byte_offset: self.byte_offset }
+    }
+}
+
 /// Where something is in the input.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Position {

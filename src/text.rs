@@ -177,6 +177,8 @@ pub fn bits(s: &str) -> Result<(u16, bool), BadValue> {
 mod tests {
     use super::*;
 
+    // The editor's own text of pi and -pi/4.
+    #[allow(clippy::approx_constant)]
     #[test]
     fn floats_in_every_spelling() {
         for (text, value) in [

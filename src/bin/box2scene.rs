@@ -147,19 +147,12 @@ fn error_line(file: &Path, error: &Error) -> String {
 }
 
 fn diagnostic_line(file: &Path, scene: &Scene, d: &Diagnostic) -> String {
-    let position = Position { line: d.line, column: d.column, byte_offset: d.byte_offset };
-    let code = Code::from_u32(d.code).map_or_else(|| d.code.to_string(), |c| c.name().to_owned());
+    // A loaded scene's diagnostics carry known codes and severities; a value without a
+    // name is shown as its number rather than guessed.
+    let code = d.code().map_or_else(|| d.code.to_string(), |c| c.name().to_owned());
+    let severity = d.severity().map_or_else(|| d.severity.to_string(), |s| s.name().to_owned());
     let message = scene.text(d.message).unwrap_or_default();
-    report_line(file, position, &severity_name(d.severity), &code, message)
-}
-
-/// Severities are stored as `u32` for C; a loaded scene's diagnostics are warnings (an
-/// error fails the load), so anything else is named by its number rather than guessed.
-fn severity_name(value: u32) -> String {
-    [Severity::Warning, Severity::Error]
-        .into_iter()
-        .find(|&s| s as u32 == value)
-        .map_or_else(|| value.to_string(), |s| s.name().to_owned())
+    report_line(file, d.position(), &severity, &code, message)
 }
 
 /// `FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE`, leaving out the parts of the position that

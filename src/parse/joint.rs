@@ -196,7 +196,7 @@ impl<'a> Parser<'a> {
         if has_axis && joint.local_axis_a == Vec2::ZERO {
             return Err(problem(Code::ZeroAxis, tag.at, "<LocalAxisA> is (0, 0): a joint axis needs a direction"));
         }
-        if kind == Some(JointKind::Pulley) && !(joint.ratio > 0.0) {
+        if kind == Some(JointKind::Pulley) && joint.ratio <= 0.0 {
             return Err(problem(Code::BadRatio, tag.at, format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio)));
         }
         Ok(())

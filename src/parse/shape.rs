@@ -70,7 +70,7 @@ impl<'a> Parser<'a> {
                         return Err(self.missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
                     }
                 }
-                if !(shape.radius > 0.0) {
+                if shape.radius <= 0.0 {
                     return Err(problem(
                         Code::BadRadius,
                         radius_at,

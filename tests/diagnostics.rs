@@ -1,0 +1,449 @@
+//! One case per error and warning code. Each case marks with `⌖` the exact place the
+//! diagnostic must point at; the marker is removed before loading, and its line and column
+//! (1-based, in characters) are the expected position.
+
+use box2scene::{Code, LoadOptions, load};
+
+const MARK: char = '⌖';
+
+/// The input without its marker, and the marker's line and column.
+fn unmark(marked: &str) -> (String, u32, u32) {
+    let at = marked.find(MARK).expect("every case marks its position");
+    let before = &marked[..at];
+    let line = before.matches('\n').count() as u32 + 1;
+    let column = before.rsplit('\n').next().unwrap().chars().count() as u32 + 1;
+    (marked.replacen(MARK, "", 1), line, column)
+}
+
+fn expect_error_with(marked: &str, code: Code, options: &LoadOptions) -> String {
+    let (xml, line, column) = unmark(marked);
+    let error = load(xml.as_bytes(), options).expect_err("the load must fail");
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (code, line, column),
+        "{}\nin:\n{xml}",
+        error.message
+    );
+    error.message
+}
+
+fn expect_error(marked: &str, code: Code) -> String {
+    expect_error_with(marked, code, &LoadOptions::default())
+}
+
+fn expect_warning(marked: &str, code: Code) {
+    let (xml, line, column) = unmark(marked);
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).expect("a warning is no failure");
+    let found: Vec<_> = scene
+        .diagnostics()
+        .iter()
+        .map(|d| (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap()))
+        .collect();
+    assert!(
+        found.iter().any(|&(c, l, col, _)| (c, l, col) == (code, line, column)),
+        "expected {code} at {line}:{column}, found {found:?}"
+    );
+    let strict = LoadOptions { strict: true, ..LoadOptions::default() };
+    expect_error_with(marked, code, &strict);
+}
+
+/// A Version 1 world whose containers hold the given XML.
+fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
+    format!(
+        "<World Version=\"1\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n\
+         <Bodies>{bodies}</Bodies>\n<Joints>{joints}</Joints>\n</World>"
+    )
+}
+
+const CIRCLE: &str = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape>";
+const FIXTURE: &str = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
+const TWO_BODIES: &str = "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
+
+fn joint(kind: &str, fields: &str) -> String {
+    world(
+        CIRCLE,
+        FIXTURE,
+        TWO_BODIES,
+        &format!("<Joint Type=\"{kind}\"><BodyA>0</BodyA><BodyB>1</BodyB>{fields}</Joint>"),
+    )
+}
+
+fn polygon(vertices: &[&str]) -> String {
+    let vertices: String = vertices.iter().map(|v| format!("<Vertex>{v}</Vertex>")).collect();
+    world(&format!("<Shape Type=\"Polygon\"><Vertices>{vertices}</Vertices></Shape>"), "", "", "")
+}
+
+#[test]
+fn invalid_utf8_points_at_the_first_bad_byte() {
+    let error = load(b"<World Version=\"1\">\n<Shapes>\xC3\x28</Shapes></World>", &LoadOptions::default()).unwrap_err();
+    assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidUtf8, 2, 9));
+    assert_eq!(error.position.byte_offset, 28);
+}
+
+#[test]
+fn nul_byte() {
+    let error = load(b"<World>\n  \0</World>", &LoadOptions::default()).unwrap_err();
+    assert_eq!((error.code, error.position.line, error.position.column), (Code::NulByte, 2, 3));
+}
+
+#[test]
+fn unsupported_encoding_declared() {
+    expect_error("⌖<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><World Version=\"1\"/>", Code::UnsupportedEncoding);
+}
+
+#[test]
+fn utf16_without_bom_is_named() {
+    let bytes: Vec<u8> = "<World/>".encode_utf16().flat_map(u16::to_le_bytes).collect();
+    assert_eq!(load(&bytes, &LoadOptions::default()).unwrap_err().code, Code::UnsupportedEncoding);
+}
+
+#[test]
+fn doctype_forbidden() {
+    expect_error(
+        "<?xml version=\"1.0\"?>\n⌖<!DOCTYPE World [<!ENTITY a \"aaaa\">]>\n<World Version=\"1\">&a;</World>",
+        Code::DoctypeForbidden,
+    );
+}
+
+#[test]
+fn malformed_xml_mismatched_tag() {
+    expect_error("<World Version=\"1\">\n<Shapes>⌖</Bodies>\n</World>", Code::MalformedXml);
+}
+
+#[test]
+fn malformed_xml_unknown_entity() {
+    let xml = world(&CIRCLE.replace("<Shape ", "<Shape Name=\"a\" ").replace("<Radius>1", "<Radius>⌖&nbsp;1"), "", "", "");
+    expect_error(&xml, Code::MalformedXml);
+}
+
+#[test]
+fn malformed_xml_truncated() {
+    expect_error("<World Version=\"1\">\n<Shapes>⌖", Code::MalformedXml);
+}
+
+#[test]
+fn malformed_xml_second_root() {
+    expect_error("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>\n⌖<World/>", Code::MalformedXml);
+}
+
+#[test]
+fn malformed_xml_empty_file() {
+    expect_error("⌖", Code::MalformedXml);
+}
+
+#[test]
+fn duplicate_attribute() {
+    expect_error(&world("", "", "<Body Type=\"Static\" ⌖Type=\"Dynamic\"/>", ""), Code::DuplicateAttribute);
+}
+
+#[test]
+fn limit_exceeded_depth() {
+    let options = LoadOptions { max_depth: 3, ..LoadOptions::default() };
+    let xml = "<World Version=\"1\"><Bodies><Body Type=\"Static\">⌖<UserData><a/></UserData></Body></Bodies></World>";
+    let message = expect_error_with(xml, Code::LimitExceeded, &options);
+    assert!(message.contains("max_depth"), "{message}");
+}
+
+#[test]
+fn limit_exceeded_elements() {
+    let options = LoadOptions { max_elements: 3, ..LoadOptions::default() };
+    let message = expect_error_with("<World Version=\"1\"><Shapes/><Fixtures/>⌖<Bodies/></World>", Code::LimitExceeded, &options);
+    assert!(message.contains("max_elements"), "{message}");
+}
+
+#[test]
+fn limit_exceeded_text() {
+    let options = LoadOptions { max_text_bytes: 8, ..LoadOptions::default() };
+    let xml = world("", "", "<Body Type=\"Static\"><Name>⌖a name that is too long</Name></Body>", "");
+    expect_error_with(&xml, Code::LimitExceeded, &options);
+}
+
+#[test]
+fn limit_exceeded_input_size() {
+    let options = LoadOptions { max_input_bytes: 10, ..LoadOptions::default() };
+    let error = load(world("", "", "", "").as_bytes(), &options).unwrap_err();
+    assert_eq!((error.code, error.position.line), (Code::LimitExceeded, 0));
+    assert!(error.message.contains("max_input_bytes"));
+}
+
+#[test]
+fn unexpected_text() {
+    expect_error(&world("\n  ⌖junk", "", "", ""), Code::UnexpectedText);
+}
+
+#[test]
+fn not_a_scene() {
+    expect_error("<?xml version=\"1.0\"?>\n⌖<Scene/>", Code::NotAScene);
+}
+
+#[test]
+fn unsupported_version() {
+    let message = expect_error("<World Version=\"⌖7\"/>", Code::UnsupportedVersion);
+    assert!(message.contains("1, 2 and 3"), "{message}");
+}
+
+#[test]
+fn duplicate_container() {
+    expect_error("<World Version=\"1\">\n<Shapes/>\n⌖<Shapes/>\n</World>", Code::DuplicateContainer);
+    expect_error(&polygon(&["0 0", "1 0", "1 1"]).replace("</Vertices>", "</Vertices>⌖<Vertices/>"), Code::DuplicateContainer);
+}
+
+#[test]
+fn unexpected_element_in_container() {
+    expect_error(&world("⌖<Body Type=\"Static\"/>", "", "", ""), Code::UnexpectedElement);
+}
+
+#[test]
+fn missing_attribute() {
+    expect_error(&world("⌖<Shape><Radius>1</Radius></Shape>", "", "", ""), Code::MissingAttribute);
+}
+
+#[test]
+fn missing_element() {
+    let message = expect_error(&world(CIRCLE, "⌖<Fixture><Density>1</Density></Fixture>", "", ""), Code::MissingElement);
+    assert!(message.contains("Shape"), "{message}");
+    expect_error(&world("⌖<Shape Type=\"Circle\"><Radius>1</Radius></Shape>", "", "", ""), Code::MissingElement);
+    expect_error(&world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Weld\"><BodyA>0</BodyA></Joint>"), Code::MissingElement);
+}
+
+#[test]
+fn unknown_type() {
+    expect_error(&world("<Shape Type=\"⌖Hexagon\"/>", "", "", ""), Code::UnknownType);
+    expect_error(&world("", "", "<Body Type=\"⌖Floating\"/>", ""), Code::UnknownType);
+}
+
+#[test]
+fn unsupported_joint_type() {
+    let message = expect_error(&joint("⌖Mouse", ""), Code::UnsupportedJointType);
+    assert!(message.contains("mouse"), "{message}");
+}
+
+#[test]
+fn invalid_int() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖x</GroupIndex></FilterData></Fixture>", "", ""), Code::InvalidInt);
+}
+
+#[test]
+fn invalid_float() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Density>⌖abc</Density></Fixture>", "", ""), Code::InvalidFloat);
+}
+
+#[test]
+fn float_decimal_comma() {
+    let message = expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Density> 0⌖,5 </Density></Fixture>", "", ""), Code::FloatDecimalComma);
+    assert!(message.contains("locale"), "{message}");
+}
+
+#[test]
+fn non_finite_float() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖NaN</Friction></Fixture>", "", ""), Code::NonFiniteFloat);
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖1e39</Friction></Fixture>", "", ""), Code::NonFiniteFloat);
+    expect_error(&world("", "", "<Body Type=\"Static\"><Position>1 ⌖Infinity</Position></Body>", ""), Code::NonFiniteFloat);
+}
+
+#[test]
+fn invalid_bool() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><IsSensor>⌖yes</IsSensor></Fixture>", "", ""), Code::InvalidBool);
+}
+
+#[test]
+fn invalid_vector2() {
+    expect_error(&world("", "", "<Body Type=\"Static\"><Position>⌖1 2 3</Position></Body>", ""), Code::InvalidVector2);
+    expect_error(&world("", "", "<Body Type=\"Static\"><Position>⌖1,,2</Position></Body>", ""), Code::InvalidVector2);
+}
+
+#[test]
+fn invalid_id() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>⌖-1</Shape></Fixture>", "", ""), Code::InvalidId);
+}
+
+#[test]
+fn invalid_bits() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖-4</MaskBits></FilterData></Fixture>", "", ""), Code::InvalidBits);
+}
+
+#[test]
+fn out_of_range() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖40000</GroupIndex></FilterData></Fixture>", "", ""), Code::OutOfRange);
+}
+
+#[test]
+fn id_out_of_range_names_both_sides() {
+    let fixtures = FIXTURE.repeat(9);
+    let bodies = "<Body Type=\"Static\"/><Body Type=\"Static\"/><Body Type=\"Static\"/>\n<Body Type=\"Static\"><Fixtures><ID>1</ID><ID>⌖12</ID></Fixtures></Body>";
+    let message = expect_error(&world(CIRCLE, &fixtures, bodies, ""), Code::IdOutOfRange);
+    assert_eq!(message, "body 3 names fixture 12, but the file has 9 fixtures");
+}
+
+#[test]
+fn id_out_of_range_checked_whatever_the_container_order() {
+    let xml = "<World Version=\"1\">\n<Joints><Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>⌖5</BodyB></Joint></Joints>\n<Bodies><Body Type=\"Static\"/><Body Type=\"Static\"/></Bodies><Shapes/><Fixtures/></World>";
+    let message = expect_error(xml, Code::IdOutOfRange);
+    assert_eq!(message, "joint 0 names body 5 as BodyB, but the file has 2 bodies");
+    expect_error(&world("", "<Fixture><Shape>⌖0</Shape></Fixture>", "", ""), Code::IdOutOfRange);
+}
+
+#[test]
+fn bad_radius() {
+    expect_error(&world("<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>", "", "", ""), Code::BadRadius);
+}
+
+#[test]
+fn bad_vertex_count() {
+    let nine = ["0 0", "1 0", "2 1", "3 2", "3 3", "2 4", "1 4", "0 3", "9 9"];
+    let xml = polygon(&nine).replace("<Vertex>9 9", "⌖<Vertex>9 9");
+    expect_error(&xml, Code::BadVertexCount);
+    expect_error(&polygon(&["1 1"]).replace("<Shape ", "⌖<Shape "), Code::BadVertexCount);
+}
+
+#[test]
+fn degenerate_polygon() {
+    expect_error(&polygon(&["0 0", "1 1", "2 2"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_error(&polygon(&["0 0", "0.001 0"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_error(&polygon(&["0 0", "1 0", "0 0.001", "1 0.0001"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+}
+
+#[test]
+fn degenerate_edge() {
+    let xml = world("⌖<Shape Type=\"Edge\"><Vertex1>1 1</Vertex1><Vertex2>1 1</Vertex2></Shape>", "", "", "").replace("\"1\"", "\"2\"");
+    expect_error(&xml, Code::DegenerateEdge);
+}
+
+#[test]
+fn degenerate_chain() {
+    let xml = world("⌖<Shape Type=\"Chain\"><Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>1 0.001</Vertex></Vertices></Shape>", "", "", "").replace("\"1\"", "\"2\"");
+    expect_error(&xml, Code::DegenerateChain);
+}
+
+#[test]
+fn negative_value() {
+    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Restitution>⌖-0.5</Restitution></Fixture>", "", ""), Code::NegativeValue);
+    expect_error(&world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-1</Mass></MassData></Body>", ""), Code::NegativeValue);
+    expect_error(&joint("Distance", "<Length>⌖-2</Length>"), Code::NegativeValue);
+}
+
+#[test]
+fn joint_self_reference() {
+    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>⌖1</BodyB></Joint>");
+    expect_error(&xml, Code::JointSelfReference);
+}
+
+#[test]
+fn bad_gear_joint() {
+    let revolute = "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
+    let weld = "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
+    let gear = |a: &str, b: &str| format!("<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>");
+    let at_weld = world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{weld}{}", gear("0", "⌖1")));
+    assert!(expect_error(&at_weld, Code::BadGearJoint).contains("Weld"));
+    let at_itself = world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{}", gear("⌖1", "0")));
+    assert!(expect_error(&at_itself, Code::BadGearJoint).contains("itself"));
+    let at_missing = world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{}", gear("0", "⌖7")));
+    expect_error(&at_missing, Code::BadGearJoint);
+}
+
+#[test]
+fn bad_limit() {
+    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><EnableLimit>true</EnableLimit><LowerAngle>1</LowerAngle><UpperAngle>-1</UpperAngle></Joint>");
+    expect_error(&xml, Code::BadLimit);
+    // Without the limit enabled, the same values are fine.
+    load(unmark(&xml.replace("true", "false")).0.as_bytes(), &LoadOptions::default()).unwrap();
+}
+
+#[test]
+fn zero_axis() {
+    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0 0</LocalAxisA></Joint>");
+    expect_error(&xml, Code::ZeroAxis);
+}
+
+#[test]
+fn bad_ratio() {
+    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Pulley\"><BodyA>0</BodyA><BodyB>1</BodyB><Ratio>0</Ratio></Joint>");
+    expect_error(&xml, Code::BadRatio);
+}
+
+#[test]
+fn io_error() {
+    let error = box2scene::load_path("/nonexistent/level.xml", &LoadOptions::default()).unwrap_err();
+    assert_eq!(error.code, Code::Io);
+    assert!(error.message.contains("/nonexistent/level.xml"));
+}
+
+#[test]
+fn legacy_unversioned() {
+    expect_warning("⌖<World><Shapes/><Fixtures/><Bodies/><Joints/></World>", Code::LegacyUnversioned);
+}
+
+#[test]
+fn construct_newer_than_version() {
+    expect_warning(&world("", "", "<Body Type=\"Static\">⌖<GravityScale>2</GravityScale></Body>", ""), Code::ConstructNewerThanVersion);
+    expect_warning(&joint("⌖Rope", ""), Code::ConstructNewerThanVersion);
+    expect_warning(&joint("Weld", "⌖<FrequencyHz>4</FrequencyHz>"), Code::ConstructNewerThanVersion);
+}
+
+#[test]
+fn duplicate_element_last_wins() {
+    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape><Density>1</Density>\n ⌖<Density>2</Density></Fixture>", "", "");
+    expect_warning(&xml, Code::DuplicateElement);
+    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.fixtures()[0].density, 2.0);
+}
+
+#[test]
+fn unknown_element_and_attribute() {
+    expect_warning(&world("", "", "<Body Type=\"Static\">⌖<Colour>red<b/></Colour></Body>", ""), Code::UnknownElement);
+    expect_warning(&world("", "", "<Body Type=\"Static\" Colour=\"⌖red\"/>", ""), Code::UnknownElement);
+    expect_warning(&world(CIRCLE, "<Fixture><Shape>0</Shape></Fixture>", "<Body Type=\"Static\"/><Body Type=\"Static\"/>", "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB>⌖<LowerAngle>1</LowerAngle></Joint>"), Code::UnknownElement);
+}
+
+#[test]
+fn missing_container() {
+    expect_warning("⌖<World Version=\"1\"><Shapes/><Fixtures/><Bodies/></World>", Code::MissingContainer);
+}
+
+#[test]
+fn filter_bits_truncated() {
+    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖2147483647</MaskBits></FilterData></Fixture>", "", "");
+    expect_warning(&xml, Code::FilterBitsTruncated);
+    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.fixtures()[0].filter.mask_bits, 0xFFFF);
+}
+
+#[test]
+fn polygon_not_convex_ccw() {
+    expect_warning(&polygon(&["0 0", "0 1", "1 1", "1 0"]).replace("<Shape ", "⌖<Shape "), Code::PolygonNotConvexCcw);
+}
+
+#[test]
+fn dynamic_body_zero_density() {
+    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape></Fixture>", "⌖<Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>", "");
+    expect_warning(&xml, Code::DynamicBodyZeroDensity);
+    let with_mass = unmark(&xml.replace("\"Dynamic\">", "\"Dynamic\"><MassData><Mass>2</Mass></MassData>")).0;
+    assert!(load(with_mass.as_bytes(), &LoadOptions::default()).unwrap().diagnostics().is_empty());
+}
+
+#[test]
+fn positions_count_characters_after_a_bom_and_in_utf16() {
+    let xml = "<World Version=\"1\">\n<Bodies><Body Type=\"Static\"><Name>é</Name><Angle>x</Angle></Body></Bodies></World>";
+    let column = "<Bodies><Body Type=\"Static\"><Name>é</Name><Angle>".chars().count() as u32 + 1;
+    let mut bytes = b"\xEF\xBB\xBF".to_vec();
+    bytes.extend_from_slice(xml.as_bytes());
+    let error = load(&bytes, &LoadOptions::default()).unwrap_err();
+    assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidFloat, 2, column));
+    assert_eq!(error.position.byte_offset, 3 + xml.find(">x<").unwrap() as u64 + 1);
+
+    let mut utf16 = vec![0xFF, 0xFE];
+    utf16.extend(xml.encode_utf16().flat_map(u16::to_le_bytes));
+    let error = load(&utf16, &LoadOptions::default()).unwrap_err();
+    assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidFloat, 2, column));
+    assert_eq!(error.position.byte_offset, 2 + 2 * xml[..xml.find(">x<").unwrap() + 1].encode_utf16().count() as u64);
+}
+
+#[test]
+fn every_code_has_a_distinct_kebab_name() {
+    let names: std::collections::HashSet<_> = Code::ALL.iter().map(|c| c.name()).collect();
+    assert_eq!(names.len(), Code::ALL.len());
+    assert!(names.iter().all(|n| n.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'-')));
+    for &code in Code::ALL {
+        assert_eq!(Code::from_u32(code as u32), Some(code));
+    }
+}
