@@ -8,9 +8,9 @@ use crate::parse::{Parsed, Parser, Problem, problem};
 use crate::scene::{BodyKind, JointKind, NONE, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
-pub const MAX_POLYGON_VERTICES: usize = 8;
+pub(crate) const MAX_POLYGON_VERTICES: usize = 8;
 /// Box2D's `b2_linearSlop` (m).
-pub const LINEAR_SLOP: f32 = 0.005;
+pub(crate) const LINEAR_SLOP: f32 = 0.005;
 
 /// The outcome of a geometry check that did not fail.
 pub enum Geometry {
