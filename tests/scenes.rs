@@ -121,7 +121,7 @@ fn joint_defaults_follow_the_spec_per_kind() {
     assert_eq!(j[2].length, 1.0);
     assert_eq!((j[3].ground_anchor_a, j[3].ground_anchor_b), (v(-1.0, 1.0), v(1.0, 1.0)));
     assert_eq!((j[3].local_anchor_a, j[3].local_anchor_b, j[3].ratio), (v(-1.0, 0.0), v(1.0, 0.0), 1.0));
-    assert_eq!(j[3].collide_connected, false, "the editor reads an absent CollideConnected as false, even for pulleys");
+    assert!(!j[3].collide_connected, "the editor reads an absent CollideConnected as false, even for pulleys");
     assert_eq!((j[7].ratio, j[7].joint_a, j[7].joint_b), (1.0, 0, 1));
     assert_eq!((j[8].frequency_hz, j[8].damping_ratio), (2.0, 0.7));
     assert_eq!((j[9].local_anchor_a, j[9].local_anchor_b), (v(-1.0, 0.0), v(1.0, 0.0)));
