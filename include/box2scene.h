@@ -132,6 +132,10 @@ enum b2s_code
    * A pulley ratio that is not positive.
    */
   B2S_CODE_BAD_RATIO = 51,
+  /**
+   * Two fixtures of a Version 3 file share an `Id`.
+   */
+  B2S_CODE_DUPLICATE_ID = 52,
   B2S_CODE_LEGACY_UNVERSIONED = 100,
   B2S_CODE_CONSTRUCT_NEWER_THAN_VERSION = 101,
   B2S_CODE_DUPLICATE_ELEMENT = 102,

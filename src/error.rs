@@ -80,6 +80,8 @@ pub enum Code {
     ZeroAxis = 50,
     /// A pulley ratio that is not positive.
     BadRatio = 51,
+    /// Two fixtures of a Version 3 file share an `Id`.
+    DuplicateId = 52,
 
     // Warnings.
     LegacyUnversioned = 100,
@@ -147,6 +149,7 @@ impl Code {
         Code::BadLimit,
         Code::ZeroAxis,
         Code::BadRatio,
+        Code::DuplicateId,
         Code::LegacyUnversioned,
         Code::ConstructNewerThanVersion,
         Code::DuplicateElement,
@@ -212,6 +215,7 @@ impl Code {
             Code::BadLimit => c"bad-limit",
             Code::ZeroAxis => c"zero-axis",
             Code::BadRatio => c"bad-ratio",
+            Code::DuplicateId => c"duplicate-id",
             Code::LegacyUnversioned => c"legacy-unversioned",
             Code::ConstructNewerThanVersion => c"construct-newer-than-version",
             Code::DuplicateElement => c"duplicate-element",

@@ -17,6 +17,7 @@ pub mod error;
 pub mod ffi;
 mod input;
 mod parse;
+mod resolve;
 pub mod scene;
 mod text;
 mod validate;

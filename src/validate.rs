@@ -1,11 +1,11 @@
 //! The semantic rules of the spec that need more than one value: shape geometry (checked
-//! when a shape is complete) and cross references (checked when the whole file is read,
-//! because containers come in any order).
+//! when a shape is complete) and the rules about a body's fixtures (checked once the
+//! references are resolved).
 #![forbid(unsafe_code)]
 
 use crate::error::Code;
-use crate::parse::{Parsed, Parser, Problem, problem};
-use crate::scene::{BodyKind, JointKind, NONE, Vec2};
+use crate::parse::{Parsed, Parser};
+use crate::scene::{BodyKind, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
 pub(crate) const MAX_POLYGON_VERTICES: usize = 8;
@@ -152,64 +152,9 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
     Ok(Geometry::Fine)
 }
 
-/// Checks every ID against its container, and the gear joints' targets; reports the error
-/// earliest in the file. Also warns about dynamic bodies with a zero-density fixture.
-pub(crate) fn cross_references(p: &mut Parser) -> Parsed<()> {
-    let mut errors: Vec<Problem> = Vec::new();
-    let s = &p.scene;
-    let count = |n: usize, what: &str| format!("the file has {n} {what}{}", if n == 1 { "" } else { "s" });
-    for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
-        if f.shape as usize >= s.shapes.len() {
-            errors.push(problem(Code::IdOutOfRange, at, format!(
-                "fixture {i} names shape {}, but {}", f.shape, count(s.shapes.len(), "shape")
-            )));
-        }
-    }
-    for (i, b) in s.bodies.iter().enumerate() {
-        for k in b.fixtures.indices() {
-            let id = s.fixture_ids[k];
-            if id as usize >= s.fixtures.len() {
-                errors.push(problem(Code::IdOutOfRange, p.origins.fixture_ids[k], format!(
-                    "body {i} names fixture {id}, but {}", count(s.fixtures.len(), "fixture")
-                )));
-            }
-        }
-    }
-    for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
-        for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
-            if body as usize >= s.bodies.len() {
-                errors.push(problem(Code::IdOutOfRange, at, format!(
-                    "joint {i} names body {body} as {side}, but {}", count(s.bodies.len(), "body").replace("bodys", "bodies")
-                )));
-            }
-        }
-        if j.kind() != Some(JointKind::Gear) {
-            continue;
-        }
-        for (target, side, at) in [(j.joint_a, "JointA", at.joint_a), (j.joint_b, "JointB", at.joint_b)] {
-            let kind = s.joints.get(target as usize).and_then(|t| t.kind());
-            let why = match kind {
-                _ if target as usize == i => Some("itself".to_string()),
-                None if target != NONE => Some(format!("joint {target}, but {}", count(s.joints.len(), "joint"))),
-                Some(JointKind::Revolute | JointKind::Prismatic) | None => None,
-                Some(other) => Some(format!("joint {target}, a {other:?} joint")),
-            };
-            if let Some(why) = why {
-                errors.push(problem(Code::BadGearJoint, at, format!(
-                    "gear joint {i} names {why} as {side}; a gear couples two revolute or prismatic joints"
-                )));
-            }
-        }
-    }
-    if let Some(first) = errors.into_iter().min_by_key(|e| e.at) {
-        return Err(first);
-    }
-    dynamic_bodies_without_mass(p)
-}
-
 /// "A dynamic body that contains a fixture whose density is zero is malformed", unless its
 /// MassData gives a mass: Box2D would give it mass 1.
-fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
+pub(crate) fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
     let s = &p.scene;
     let mut found = Vec::new();
     for (i, b) in s.bodies.iter().enumerate() {

@@ -447,3 +447,72 @@ fn every_code_has_a_distinct_kebab_name() {
         assert_eq!(Code::from_u32(code as u32), Some(code));
     }
 }
+
+/// A Version 3 (Farseer layout) world.
+fn world_v3(shapes: &str, fixtures: &str, bodies: &str) -> String {
+    format!(
+        "<World Version=\"3\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n\
+         <Bodies>{bodies}</Bodies>\n<Joints/>\n</World>"
+    )
+}
+
+const V3_CIRCLE: &str = "<Shape Type=\"Circle\" Density=\"2\"><Radius>1</Radius><Position>0 0</Position></Shape>";
+
+#[test]
+fn farseer_only_joint() {
+    let message_of = |xml: &str| {
+        let scene = load(unmark(xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+        (scene.joints()[0].kind(), scene.text(scene.diagnostics()[0].message).unwrap().to_owned())
+    };
+    let xml = joint("⌖Angle", "<BiasFactor>0.2</BiasFactor><TargetAngle>1</TargetAngle>").replace("\"1\"", "\"2\"");
+    expect_warning(&xml, Code::FarseerOnlyJoint);
+    assert_eq!(message_of(&xml).0, Some(box2scene::JointKind::Unsupported));
+    let slider = joint("⌖Slider", "<MinLength>1</MinLength><MaxLength>2</MaxLength>").replace("\"1\"", "\"2\"");
+    expect_warning(&slider, Code::FarseerOnlyJoint);
+}
+
+#[test]
+fn line_joint_is_wheel() {
+    let xml = joint("Line", "<FrequencyHz>4</FrequencyHz><LocalXAxis>0 1</LocalXAxis>")
+        .replace("<Joint ", "⌖<Joint ")
+        .replace("\"1\"", "\"2\"");
+    expect_warning(&xml, Code::LineJointIsWheel);
+    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+    let wheel = &scene.joints()[0];
+    assert_eq!(wheel.kind(), Some(box2scene::JointKind::Wheel));
+    assert_eq!((wheel.frequency_hz, wheel.damping_ratio), (4.0, 0.7), "the wheel's default damping fills in");
+    assert_eq!(wheel.local_axis_a, box2scene::Vec2::new(0.0, 1.0));
+}
+
+#[test]
+fn duplicate_id() {
+    let xml = world_v3(V3_CIRCLE, "<Fixture Id=\"0\"/><Fixture Id=\"⌖0\"/>", "");
+    expect_error(&xml, Code::DuplicateId);
+}
+
+#[test]
+fn farseer_v3_fixture_needs_an_id() {
+    expect_error(&world_v3(V3_CIRCLE, "⌖<Fixture/>", ""), Code::MissingAttribute);
+}
+
+#[test]
+fn farseer_v3_pairs_are_checked() {
+    let unknown_fixture = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"⌖5\" ShapeId=\"0\"/></Bindings></Body>");
+    let message = expect_error(&unknown_fixture, Code::IdOutOfRange);
+    assert_eq!(message, "body 0 binds fixture Id 5, but no fixture has that Id");
+    let unknown_shape = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"4\" ShapeId=\"⌖1\"/></Bindings></Body>");
+    expect_error(&unknown_shape, Code::IdOutOfRange);
+    let no_shape = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings>⌖<Pair FixtureId=\"4\"/></Bindings></Body>");
+    expect_error(&no_shape, Code::MissingAttribute);
+    let negative = world_v3("<Shape Type=\"Circle\" Density=\"⌖-2\"><Radius>1</Radius><Position>0 0</Position></Shape>", "", "");
+    expect_error(&negative, Code::NegativeValue);
+}
+
+#[test]
+fn layouts_do_not_mix() {
+    let fixtures_in_v3 = world_v3(V3_CIRCLE, "<Fixture Id=\"0\"/>", "<Body Type=\"Static\">⌖<Fixtures><ID>0</ID></Fixtures></Body>");
+    expect_error(&fixtures_in_v3, Code::UnexpectedElement);
+    let bindings_in_v1 = world(CIRCLE, FIXTURE, "<Body Type=\"Static\">⌖<Bindings/></Body>", "");
+    expect_error(&bindings_in_v1, Code::UnexpectedElement);
+    expect_warning(&world(CIRCLE, "<Fixture Id=\"⌖0\"><Shape>0</Shape></Fixture>", "", ""), Code::UnknownElement);
+}

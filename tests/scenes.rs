@@ -234,3 +234,39 @@ fn every_v1_field_is_read() {
     assert_eq!(scene.find_fixture("crate"), Some(1));
     assert_eq!(scene.find_body("nobody"), None);
 }
+
+#[test]
+fn farseer_version_2_spellings_are_read() {
+    let scene = load_file(&root().join("tests/scenes/farseer-v2.xml"));
+    let j = scene.joints();
+    let kinds: Vec<_> = j.iter().map(|j| j.kind().unwrap()).collect();
+    use JointKind::*;
+    assert_eq!(kinds, [Revolute, Prismatic, Distance, Pulley, Wheel, Wheel, Weld, Friction, Gear, Rope, Unsupported, Unsupported, Motor]);
+    assert_eq!(j[1].local_axis_a, Vec2::new(0.0, 1.0), "LocalXAxis1");
+    assert_eq!((j[3].ground_anchor_a, j[3].ground_anchor_b), (Vec2::new(-1.0, 10.0), Vec2::new(1.0, 10.0)), "WorldAnchorA/B");
+    assert_eq!((j[4].frequency_hz, j[4].max_motor_torque, j[4].local_axis_a), (5.0, 20.0, Vec2::new(0.0, 1.0)), "Line read as Wheel");
+    assert_eq!(j[5].local_axis_a, Vec2::new(0.0, 1.0), "Axis");
+    assert_eq!((j[6].frequency_hz, j[6].damping_ratio), (2.0, 0.3), "soft weld");
+    assert_eq!((j[10].body_a, j[10].body_b), (0, 2), "an unsupported joint keeps its bodies");
+    assert_eq!((j[12].linear_offset, j[12].angular_offset, j[12].correction_factor), (Vec2::new(-1.0, 2.0), 0.5, 0.4));
+    let s = scene.shapes();
+    assert_eq!((s[0].kind(), s[0].has_prev_vertex, s[0].has_next_vertex), (Some(ShapeKind::Edge), false, false));
+    assert_eq!((s[1].has_prev_vertex, s[1].prev_vertex), (true, Vec2::new(-20.0, 0.0)), "a ghost counts only with its own flag");
+    assert!(!s[1].has_next_vertex);
+    assert_eq!((s[2].is_loop, s[2].has_prev_vertex, s[2].next_vertex), (false, true, Vec2::new(-15.0, 4.0)));
+    assert_eq!((s[3].kind(), s[3].is_loop, scene.vertices(&s[3]).len()), (Some(ShapeKind::Chain), true, 4));
+    assert_eq!(scene.bodies()[1].gravity_scale, 0.5);
+    let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code().unwrap()).collect();
+    assert_eq!(codes, [Code::FilterBitsTruncated, Code::FilterBitsTruncated, Code::LineJointIsWheel, Code::FarseerOnlyJoint, Code::FarseerOnlyJoint]);
+}
+
+#[test]
+fn farseer_version_3_pairs_become_fixtures() {
+    let scene = load_file(&root().join("tests/scenes/farseer-v3.xml"));
+    let f = scene.fixtures();
+    let made: Vec<_> = f.iter().map(|f| (f.shape, f.density, f.friction)).collect();
+    assert_eq!(made, [(0, 0.0, 0.2), (2, 1.0, 0.8), (1, 2.5, 0.8), (1, 2.5, 0.2)]);
+    let lists: Vec<_> = scene.bodies().iter().map(|b| scene.body_fixtures(b).to_vec()).collect();
+    assert_eq!(lists, [vec![0], vec![1, 2], vec![3]]);
+    assert_eq!(f[1].filter.group_index, -2);
+}

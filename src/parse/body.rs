@@ -7,7 +7,7 @@ use crate::scene::{Body, BodyKind, MassData, Range};
 const BODY: &[&str] = &[
     "name", "active", "allowsleep", "awake", "bullet", "fixedrotation", "angle",
     "angulardamping", "angularvelocity", "lineardamping", "linearvelocity", "position",
-    "inertiascale", "gravityscale", "massdata", "fixtures", "userdata",
+    "inertiascale", "gravityscale", "massdata", "fixtures", "userdata", "bindings",
 ];
 const MASS_DATA: &[&str] = &["mass", "center", "inertia"];
 
@@ -19,8 +19,11 @@ impl<'a> Parser<'a> {
             let Some((name, repeated)) = self.known(&tag, &child, BODY, &mut seen)? else {
                 continue;
             };
-            if repeated && name == "fixtures" {
+            if repeated && matches!(name, "fixtures" | "bindings") {
                 return Err(self.duplicate_container(&tag, &child));
+            }
+            if let Some(problem) = self.layout_mismatch(&child, name) {
+                return Err(problem);
             }
             if repeated {
                 self.duplicate(&tag, &child)?;
@@ -46,12 +49,41 @@ impl<'a> Parser<'a> {
                 }
                 "massdata" => self.mass_data(&child, &mut body.mass_data)?,
                 "fixtures" => body.fixtures = self.fixture_ids(&child)?,
+                "bindings" => self.bindings(&child)?,
                 _ => body.user_data = self.user_data(&child)?,
             }
         }
         self.origins.bodies.push(tag.at);
         self.scene.bodies.push(body);
         Ok(())
+    }
+
+    /// A body lists its fixtures as `<Fixtures>` IDs, or in Farseer's Version 3 layout as
+    /// `<Bindings>`; the other one is an error, since dropping it would lose fixtures.
+    fn layout_mismatch(&self, child: &Tag<'a>, name: &str) -> Option<super::Problem> {
+        let why = match (name, self.farseer_layout()) {
+            ("fixtures", true) => "a Version 3 body lists its fixtures in <Bindings>",
+            ("bindings", false) => "<Bindings> belongs to Version 3 files; this body lists its fixtures in <Fixtures>",
+            _ => return None,
+        };
+        Some(problem(Code::UnexpectedElement, child.at, format!("<{}> here: {why}", child.name())))
+    }
+
+    /// Version 3: `<Pair FixtureId="k" ShapeId="s"/>` children, made into fixtures once the
+    /// whole file is read.
+    fn bindings(&mut self, tag: &Tag<'a>) -> Parsed<()> {
+        let body = self.scene.bodies.len() as u32;
+        self.items(tag, "Pair", |p, pair| {
+            let attrs = p.attributes(&pair)?;
+            p.unknown_attributes(&pair, &attrs, &["fixtureid", "shapeid"])?;
+            let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
+                Some(attr) => p.attribute(&pair, attr, crate::text::id),
+                None => Err(problem(Code::MissingAttribute, pair.at, format!("<{}> has no {name} attribute", pair.name()))),
+            };
+            let (fixture_id, shape) = (id("fixtureid")?, id("shapeid")?);
+            p.origins.pairs.push(super::Pair { body, fixture_id, shape });
+            p.skip(&pair)
+        })
     }
 
     fn body_type(&mut self, tag: &Tag<'a>) -> Parsed<BodyKind> {

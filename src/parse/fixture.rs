@@ -1,6 +1,6 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Parsed, Parser, Seen, Tag};
+use super::{Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Filter, Fixture};
 use crate::text;
@@ -8,10 +8,11 @@ use crate::text;
 const FIXTURE: &[&str] = &[
     "shape", "name", "density", "friction", "restitution", "issensor", "filterdata", "userdata",
 ];
-const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex"];
+const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex", "collisionignores"];
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag<'a>) -> Parsed<()> {
+        self.fixture_template_id(&tag)?;
         let mut fixture = Fixture::default();
         let mut shape_at = tag.at;
         let mut seen = Seen::default();
@@ -33,11 +34,31 @@ impl<'a> Parser<'a> {
                 _ => fixture.user_data = self.user_data(&child)?,
             }
         }
-        if !seen.contains(FIXTURE, "shape") {
+        // In Farseer's layout a fixture is a template: bodies pair it with shapes.
+        if !seen.contains(FIXTURE, "shape") && !self.farseer_layout() {
             return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
         self.origins.fixture_shapes.push(shape_at);
         self.scene.fixtures.push(fixture);
+        Ok(())
+    }
+
+    /// Version 3: the `Id` that bodies' `Pair`s name the fixture by.
+    fn fixture_template_id(&mut self, tag: &Tag<'a>) -> Parsed<()> {
+        let attrs = self.attributes(tag)?;
+        if !self.farseer_layout() {
+            return self.unknown_attributes(tag, &attrs, &[]);
+        }
+        self.unknown_attributes(tag, &attrs, &["id"])?;
+        let Some(attr) = attrs.iter().find(|a| a.is("id")) else {
+            return Err(problem(
+                Code::MissingAttribute,
+                tag.at,
+                "a Version 3 <Fixture> has an Id attribute: bodies' <Pair>s name fixtures by it",
+            ));
+        };
+        let id = self.attribute(tag, attr, text::id)?;
+        self.origins.fixture_template_ids.push(id);
         Ok(())
     }
 
@@ -53,6 +74,8 @@ impl<'a> Parser<'a> {
             match name {
                 "categorybits" => filter.category_bits = self.bits(&child)?,
                 "maskbits" => filter.mask_bits = self.bits(&child)?,
+                // Farseer's per-body collision exceptions: Box2D has no such thing.
+                "collisionignores" => self.skip(&child)?,
                 _ => filter.group_index = self.parsed(&child, text::int16)?.0,
             }
         }

@@ -12,7 +12,13 @@ const JOINT: &[&str] = &[
     "motorspeed", "maxmotortorque", "maxmotorforce", "length", "frequencyhz", "dampingratio",
     "groundanchora", "groundanchorb", "lengtha", "lengthb", "maxlengtha", "maxlengthb", "ratio",
     "maxforce", "maxtorque", "maxlength", "linearoffset", "angularoffset", "correctionfactor",
+    // Farseer's spellings (spec section 8.1).
+    "breakpoint", "localxaxis1", "localxaxis", "axis", "worldanchora", "worldanchorb", "constant",
+    "biasfactor", "maximpulse", "softness", "targetangle", "minlength",
 ];
+
+/// The elements that make a Farseer `Line` joint (February 2011 on) a wheel joint.
+const WHEEL_ONLY: [&str; 4] = ["frequencyhz", "dampingratio", "maxmotortorque", "localxaxis"];
 
 /// Where a kind-specific element goes.
 enum Slot {
@@ -21,6 +27,8 @@ enum Slot {
     /// A float that must not be negative.
     NonNegative(fn(&mut Joint) -> &mut f32),
     Flag(fn(&mut Joint) -> &mut bool),
+    /// Accepted and dropped: Farseer data with no meaning in the scene.
+    Ignored,
 }
 
 /// The slot of element `name` (from [`JOINT`]) in a joint of `kind`, if it has one.
@@ -29,10 +37,20 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
     use Slot::*;
     let is = |kinds: &[JointKind]| kinds.contains(&kind);
     let anchored = !is(&[Gear, Motor, Unsupported]);
+    let farseer_only = matches!(
+        name,
+        "localanchora" | "localanchorb" | "biasfactor" | "maximpulse" | "softness" | "targetangle"
+            | "minlength" | "maxlength" | "frequencyhz" | "dampingratio"
+    );
     Some(match name {
+        "breakpoint" => Ignored,
+        _ if kind == Unsupported && farseer_only => Ignored,
         "localanchora" if anchored => Vector(|j| &mut j.local_anchor_a),
         "localanchorb" if anchored => Vector(|j| &mut j.local_anchor_b),
         "localaxisa" if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        "localxaxis1" if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
+        "localxaxis" if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        "axis" if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
         "referenceangle" if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
         "enablelimit" if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
         "lowerangle" if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
@@ -41,13 +59,14 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
         "uppertranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
         "enablemotor" if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
         "motorspeed" if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
-        "maxmotortorque" if is(&[Revolute, Wheel]) => NonNegative(|j| &mut j.max_motor_torque),
+        "maxmotortorque" if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
         "maxmotorforce" if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
         "length" if is(&[Distance]) => NonNegative(|j| &mut j.length),
-        "frequencyhz" if is(&[Distance, Weld, Wheel]) => NonNegative(|j| &mut j.frequency_hz),
-        "dampingratio" if is(&[Distance, Weld, Wheel]) => NonNegative(|j| &mut j.damping_ratio),
-        "groundanchora" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
-        "groundanchorb" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
+        "frequencyhz" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
+        "dampingratio" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
+        "groundanchora" | "worldanchora" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
+        "groundanchorb" | "worldanchorb" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
+        "constant" if is(&[Pulley]) => Ignored,
         "lengtha" if is(&[Pulley]) => Float(|j| &mut j.length_a),
         "lengthb" if is(&[Pulley]) => Float(|j| &mut j.length_b),
         "maxlengtha" if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
@@ -66,6 +85,7 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
 fn joint_kind(value: &str) -> Option<JointKind> {
     use JointKind::*;
     Some(match value.to_ascii_lowercase().as_str() {
+        "angle" | "slider" => Unsupported,
         "revolute" => Revolute,
         "prismatic" => Prismatic,
         "distance" => Distance,
@@ -123,13 +143,35 @@ impl<'a> Parser<'a> {
                     Slot::Float(field) => *field(&mut joint) = self.float(&child)?,
                     Slot::NonNegative(field) => *field(&mut joint) = self.non_negative(&child)?,
                     Slot::Flag(field) => *field(&mut joint) = self.boolean(&child)?,
+                    Slot::Ignored => self.skip(&child)?,
                 },
             }
+        }
+        if kind == JointKind::Line && WHEEL_ONLY.iter().any(|name| seen.contains(JOINT, name)) {
+            self.line_is_wheel(&tag, &mut joint, &seen)?;
         }
         self.check_joint(&tag, &joint, &at)?;
         self.origins.joints.push(at);
         self.scene.joints.push(joint);
         Ok(())
+    }
+
+    /// Farseer's `Line` joints from February 2011 on are wheel joints under the old name:
+    /// read them as Wheel, with the wheel's defaults for what they leave out.
+    fn line_is_wheel(&mut self, tag: &Tag<'a>, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
+        let wheel = Joint::new(JointKind::Wheel);
+        joint.kind = JointKind::Wheel as u32;
+        if !seen.contains(JOINT, "frequencyhz") {
+            joint.frequency_hz = wheel.frequency_hz;
+        }
+        if !seen.contains(JOINT, "dampingratio") {
+            joint.damping_ratio = wheel.damping_ratio;
+        }
+        self.warn(
+            Code::LineJointIsWheel,
+            tag.at,
+            "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
+        )
     }
 
     fn joint_type(&mut self, tag: &Tag<'a>) -> Parsed<JointKind> {
@@ -153,6 +195,13 @@ impl<'a> Parser<'a> {
         };
         if matches!(kind, JointKind::Wheel | JointKind::Rope | JointKind::Motor) {
             self.newer_construct(ty.at, &format!("a {value} joint"))?;
+        }
+        if kind == JointKind::Unsupported {
+            self.warn(
+                Code::FarseerOnlyJoint,
+                ty.at,
+                format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
+            )?;
         }
         Ok(kind)
     }

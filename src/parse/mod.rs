@@ -20,13 +20,16 @@ use crate::error::{Code, Diagnostic, Error, Severity};
 use crate::input::{self, Decoded, Encoding, Locator};
 use crate::scene::{Scene, SceneBuilder, Vec2};
 use crate::text::{self, BadValue, trim_xml};
-use crate::{LoadOptions, validate};
+use crate::{LoadOptions, resolve, validate};
 
 /// Loads a scene: decode, parse into the arena, check cross references, freeze.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
     let decoded = input::decode(bytes, options)?;
     let mut parser = Parser::new(&decoded, options);
-    let outcome = parser.document().and_then(|()| validate::cross_references(&mut parser));
+    let outcome = parser
+        .document()
+        .and_then(|()| resolve::resolve(&mut parser))
+        .and_then(|()| validate::dynamic_bodies_without_mass(&mut parser));
     let mut locator = Locator::new(&decoded);
     if let Err(problem) = outcome {
         return Err(Error {
@@ -135,6 +138,19 @@ pub(crate) struct Origins {
     /// Per entry of the fixture ID pool: its `ID` value.
     pub fixture_ids: Vec<usize>,
     pub joints: Vec<JointOrigin>,
+    /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
+    pub shape_densities: Vec<f32>,
+    /// Version 3: per fixture template, its `Id` attribute and where that is.
+    pub fixture_template_ids: Vec<(u32, usize)>,
+    /// Version 3: every body's `Bindings`, in body order.
+    pub pairs: Vec<Pair>,
+}
+
+/// A Version 3 `<Pair FixtureId="k" ShapeId="s"/>`: one fixture of a body.
+pub(crate) struct Pair {
+    pub body: u32,
+    pub fixture_id: (u32, usize),
+    pub shape: (u32, usize),
 }
 
 /// Where a joint's references are.
@@ -193,6 +209,11 @@ impl<'a> Parser<'a> {
         }
         self.warnings.push(w);
         Ok(())
+    }
+
+    /// Whether the file uses Farseer's Version 3 layout (spec section 8.2).
+    pub fn farseer_layout(&self) -> bool {
+        self.version >= 3
     }
 
     /// Warns that `what` needs Version 2 when the file says less.
@@ -395,14 +416,7 @@ impl<'a> Parser<'a> {
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.parsed(tag, text::float)?;
-        if v < 0.0 {
-            return Err(problem(
-                Code::NegativeValue,
-                at,
-                format!("<{}> is {v}, but it cannot be negative", tag.name()),
-            ));
-        }
-        Ok(v)
+        not_negative(&format!("<{}>", tag.name()), v, at)
     }
 
     pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
@@ -416,6 +430,15 @@ impl<'a> Parser<'a> {
     /// An ID value and its offset.
     pub fn id(&mut self, tag: &Tag) -> Parsed<(u32, usize)> {
         self.parsed(tag, text::id)
+    }
+
+    /// Converts an attribute's value with `convert`; errors point into the value.
+    pub fn attribute<T>(&self, tag: &Tag, attr: &Attr, convert: fn(&str) -> Result<T, BadValue>) -> Parsed<(T, usize)> {
+        let value = trim_xml(&attr.value);
+        let lead = attr.value.len() - attr.value.trim_start_matches(text::is_xml_space).len();
+        convert(value).map(|v| (v, attr.at + lead)).map_err(|e| {
+            problem(e.code, attr.at + lead + e.at, format!("<{} {}>: {}", tag.name(), attr.key, e.message))
+        })
     }
 
     /// A string value, stored in the scene's string pool.
@@ -576,6 +599,14 @@ fn unknown_entity(r: &quick_xml::events::BytesRef, at: usize) -> Problem {
         at,
         format!("malformed XML: unknown entity &{name}; (only &amp; &lt; &gt; &quot; &apos; and character references are allowed)"),
     )
+}
+
+/// `value`, unless it is negative (error `negative-value` naming `what`).
+pub(crate) fn not_negative(what: &str, value: f32, at: usize) -> Parsed<f32> {
+    if value < 0.0 {
+        return Err(problem(Code::NegativeValue, at, format!("{what} is {value}, but it cannot be negative")));
+    }
+    Ok(value)
 }
 
 /// At most 40 characters of `text`, for messages.

@@ -99,10 +99,17 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// The shape's `Type` (and `Name` attribute, which some writers use).
+    /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
+    /// the `Density` of the fixtures made with it).
     fn shape_type(&mut self, tag: &Tag<'a>) -> Parsed<Shape> {
         let attrs = self.attributes(tag)?;
-        self.unknown_attributes(tag, &attrs, &["type", "name"])?;
+        let known: &[&str] = if self.farseer_layout() { &["type", "name", "density"] } else { &["type", "name"] };
+        self.unknown_attributes(tag, &attrs, known)?;
+        let density = match attrs.iter().find(|a| a.is("density")).filter(|_| self.farseer_layout()) {
+            Some(attr) => self.attribute(tag, attr, crate::text::float).and_then(|(d, at)| super::not_negative("the shape's Density", d, at))?,
+            None => 0.0,
+        };
+        self.origins.shape_densities.push(density);
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(
                 Code::MissingAttribute,

@@ -1,0 +1,102 @@
+//! Once the whole file is read (containers come in any order): Farseer's Version 3 layout
+//! is normalised into the ordinary model, then every ID is checked against its container
+//! and gear joints against the joints they couple.
+#![forbid(unsafe_code)]
+
+use std::collections::HashMap;
+
+use crate::error::Code;
+use crate::parse::{Parsed, Parser, Problem, problem};
+use crate::scene::{JointKind, NONE, Range};
+
+pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
+    if p.farseer_layout() {
+        normalise_farseer_layout(p)?;
+    }
+    check_references(p)
+}
+
+/// Version 3: each body's `<Pair FixtureId="k" ShapeId="s"/>` becomes a fixture: template
+/// k on shape s, with the density of s (spec section 8.2).
+fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
+    let mut template_by_id = HashMap::new();
+    for (index, &(id, at)) in p.origins.fixture_template_ids.iter().enumerate() {
+        if let Some(first) = template_by_id.insert(id, index) {
+            return Err(problem(Code::DuplicateId, at, format!("fixtures {first} and {index} both have Id {id}")));
+        }
+    }
+    let templates = std::mem::take(&mut p.scene.fixtures);
+    // The templates' own (absent) shapes are replaced by the pairs'.
+    p.origins.fixture_shapes.clear();
+    for (k, pair) in p.origins.pairs.iter().enumerate() {
+        let (id, id_at) = pair.fixture_id;
+        let Some(&template) = template_by_id.get(&id) else {
+            return Err(problem(Code::IdOutOfRange, id_at, format!(
+                "body {} binds fixture Id {id}, but no fixture has that Id", pair.body
+            )));
+        };
+        let (shape, shape_at) = pair.shape;
+        let mut fixture = templates[template];
+        fixture.shape = shape;
+        fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
+        p.scene.fixtures.push(fixture);
+        p.scene.fixture_ids.push(k as u32);
+        p.origins.fixture_shapes.push(shape_at);
+        p.origins.fixture_ids.push(id_at);
+        let fixtures = &mut p.scene.bodies[pair.body as usize].fixtures;
+        if fixtures.count == 0 {
+            *fixtures = Range { first: k as u32, count: 0 };
+        }
+        fixtures.count += 1;
+    }
+    Ok(())
+}
+
+/// Checks every ID against its container, and the gear joints' targets; reports the error
+/// earliest in the file.
+fn check_references(p: &Parser) -> Parsed<()> {
+    let s = &p.scene;
+    let mut errors: Vec<Problem> = Vec::new();
+    let has = |n: usize, one: &str, many: &str| format!("the file has {n} {}", if n == 1 { one } else { many });
+    for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
+        if f.shape as usize >= s.shapes.len() {
+            let why = format!("fixture {i} names shape {}, but {}", f.shape, has(s.shapes.len(), "shape", "shapes"));
+            errors.push(problem(Code::IdOutOfRange, at, why));
+        }
+    }
+    for (i, b) in s.bodies.iter().enumerate() {
+        for k in b.fixtures.indices() {
+            let id = s.fixture_ids[k];
+            if id as usize >= s.fixtures.len() {
+                let why = format!("body {i} names fixture {id}, but {}", has(s.fixtures.len(), "fixture", "fixtures"));
+                errors.push(problem(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
+            }
+        }
+    }
+    for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
+        for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
+            if body as usize >= s.bodies.len() {
+                let why = format!("joint {i} names body {body} as {side}, but {}", has(s.bodies.len(), "body", "bodies"));
+                errors.push(problem(Code::IdOutOfRange, at, why));
+            }
+        }
+        if j.kind() != Some(JointKind::Gear) {
+            continue;
+        }
+        for (target, side, at) in [(j.joint_a, "JointA", at.joint_a), (j.joint_b, "JointB", at.joint_b)] {
+            let why = match s.joints.get(target as usize).and_then(|t| t.kind()) {
+                _ if target as usize == i => "itself".to_string(),
+                None if target != NONE => format!("joint {target}, but {}", has(s.joints.len(), "joint", "joints")),
+                Some(JointKind::Revolute | JointKind::Prismatic) | None => continue,
+                Some(other) => format!("joint {target}, a {other:?} joint"),
+            };
+            errors.push(problem(Code::BadGearJoint, at, format!(
+                "gear joint {i} names {why} as {side}; a gear couples two revolute or prismatic joints"
+            )));
+        }
+    }
+    match errors.into_iter().min_by_key(|e| e.at) {
+        Some(first) => Err(first),
+        None => Ok(()),
+    }
+}
