@@ -1,0 +1,350 @@
+// The adapter's mapping of what the bit-for-bit scene (Version 1) does not cover: Version 2
+// shapes and joints, spring stiffness computed after MassData, and what it reports instead
+// of creating.
+#include <box2d/box2d.h>
+#include <box2scene.h>
+#include <box2scene/box2d.hpp>
+
+#include <cfloat>
+
+#include "test_macros.h"
+#include "test_scenes.hpp"
+
+static int null_scene_builds_nothing() {
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(nullptr, world);
+    ENSURE(built.bodies.empty() && built.fixtures.empty() && built.joints.empty());
+    ENSURE(built.reports.empty());
+    ENSURE_EQ(world.GetBodyCount(), 0);
+    b2Vec2 gravity = box2scene::scene_gravity(nullptr, b2Vec2(1.0f, 2.0f));
+    ENSURE_FLOAT(gravity.x, 1.0f);
+    ENSURE_FLOAT(gravity.y, 2.0f);
+    return 0;
+}
+
+static int edges_are_one_sided_only_with_both_ghosts() {
+    ScenePtr scene = load_text(R"(<World Version="2">
+      <Shapes>
+        <Shape Type="Edge"><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>
+          <Vertex0>-1 0.5</Vertex0><HasVertex0>true</HasVertex0>
+          <Vertex3>2 0.5</Vertex3><HasVertex3>true</HasVertex3></Shape>
+        <Shape Type="Edge"><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>
+          <Vertex3>2 0.5</Vertex3><HasVertex3>true</HasVertex3></Shape>
+        <Shape Type="Edge"><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>
+          <Vertex0>-1 0.5</Vertex0><HasVertex0>false</HasVertex0>
+          <Vertex3>2 0.5</Vertex3><HasVertex3>true</HasVertex3></Shape>
+      </Shapes>
+      <Fixtures>
+        <Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture>
+        <Fixture><Shape>2</Shape></Fixture>
+      </Fixtures>
+      <Bodies><Body Type="Static"><Fixtures><ID>0</ID><ID>1</ID><ID>2</ID></Fixtures></Body></Bodies>
+      <Joints />
+    </World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    auto* smooth = static_cast<b2EdgeShape*>(built.fixtures[0]->GetShape());
+    ENSURE(smooth->m_oneSided);
+    ENSURE_FLOAT(smooth->m_vertex0.x, -1.0f);
+    ENSURE_FLOAT(smooth->m_vertex0.y, 0.5f);
+    ENSURE_FLOAT(smooth->m_vertex1.x, 0.0f);
+    ENSURE_FLOAT(smooth->m_vertex2.x, 1.0f);
+    ENSURE_FLOAT(smooth->m_vertex3.x, 2.0f);
+    for (int i = 1; i <= 2; ++i) {
+        auto* plain = static_cast<b2EdgeShape*>(built.fixtures[i]->GetShape());
+        ENSURE(!plain->m_oneSided);
+        ENSURE_FLOAT(plain->m_vertex2.x, 1.0f);
+    }
+    return 0;
+}
+
+static int chains_get_their_ghosts_or_extrapolated_ones() {
+    ScenePtr scene = load_text(R"(<World Version="2">
+      <Shapes>
+        <Shape Type="Chain"><Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>2 1</Vertex></Vertices>
+          <PrevVertex>-1 1</PrevVertex><HasPrevVertex>true</HasPrevVertex></Shape>
+        <Shape Type="Loop"><Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>1 1</Vertex></Vertices></Shape>
+        <Shape Type="Chain"><Loop>true</Loop>
+          <Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>1 1</Vertex><Vertex>0 1</Vertex></Vertices></Shape>
+      </Shapes>
+      <Fixtures>
+        <Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture>
+        <Fixture><Shape>2</Shape></Fixture>
+      </Fixtures>
+      <Bodies><Body Type="Static"><Fixtures><ID>0</ID><ID>1</ID><ID>2</ID></Fixtures></Body></Bodies>
+      <Joints />
+    </World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    auto* open = static_cast<b2ChainShape*>(built.fixtures[0]->GetShape());
+    ENSURE_EQ(open->m_count, 3);
+    ENSURE_FLOAT(open->m_prevVertex.x, -1.0f);
+    ENSURE_FLOAT(open->m_prevVertex.y, 1.0f);
+    // No NextVertex: the last segment (1,0)->(2,1) continued by its own length.
+    ENSURE_FLOAT(open->m_nextVertex.x, 3.0f);
+    ENSURE_FLOAT(open->m_nextVertex.y, 2.0f);
+    // A loop repeats its first vertex at the end.
+    auto* loop = static_cast<b2ChainShape*>(built.fixtures[1]->GetShape());
+    ENSURE_EQ(loop->m_count, 4);
+    auto* square = static_cast<b2ChainShape*>(built.fixtures[2]->GetShape());
+    ENSURE_EQ(square->m_count, 5);
+    ENSURE_FLOAT(square->m_vertices[4].x, 0.0f);
+    ENSURE_FLOAT(square->m_vertices[4].y, 0.0f);
+    return 0;
+}
+
+/// Two bodies with a joint of `joint` between them; body 1's mass is overridden to 4 kg,
+/// so stiffness computed before MassData would differ.
+static ScenePtr pair_with(const char* joint) {
+    std::string xml = R"(<World Version="2">
+      <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+      <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+      <Bodies>
+        <Body Type="Static" />
+        <Body Type="Dynamic"><Position>0 3</Position><GravityScale>0.5</GravityScale>
+          <MassData><Mass>4</Mass></MassData><Fixtures><ID>0</ID></Fixtures></Body>
+      </Bodies>
+      <Joints>)";
+    xml += joint;
+    xml += "</Joints></World>";
+    return load_text(xml.c_str());
+}
+
+static int springs_use_the_final_masses() {
+    ScenePtr scene = pair_with(R"(
+      <Joint Type="Distance"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorB>0 0.5</LocalAnchorB>
+        <Length>2.5</Length><FrequencyHz>3</FrequencyHz><DampingRatio>0.4</DampingRatio></Joint>
+      <Joint Type="Wheel"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0 1</LocalAxisA>
+        <EnableMotor>true</EnableMotor><MaxMotorTorque>7</MaxMotorTorque><MotorSpeed>-3</MotorSpeed>
+        <FrequencyHz>5</FrequencyHz><DampingRatio>0.9</DampingRatio></Joint>
+      <Joint Type="Weld"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0 3</LocalAnchorA>
+        <FrequencyHz>6</FrequencyHz><DampingRatio>0.2</DampingRatio></Joint>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    b2Body* ground = built.bodies[0];
+    b2Body* body = built.bodies[1];
+    ENSURE_FLOAT(body->GetMass(), 4.0f);
+    ENSURE_FLOAT(body->GetGravityScale(), 0.5f);
+
+    float stiffness, damping;
+    auto* spring = static_cast<b2DistanceJoint*>(built.joints[0]);
+    b2LinearStiffness(stiffness, damping, 3.0f, 0.4f, ground, body);
+    ENSURE_FLOAT(spring->GetStiffness(), stiffness);
+    ENSURE_FLOAT(spring->GetDamping(), damping);
+    ENSURE_FLOAT(spring->GetLength(), 2.5f);
+    ENSURE_FLOAT(spring->GetMaxLength(), FLT_MAX);
+    ENSURE(spring->GetMinLength() < 0.01f); // 0, raised to b2_linearSlop by Box2D
+
+    auto* wheel = static_cast<b2WheelJoint*>(built.joints[1]);
+    b2LinearStiffness(stiffness, damping, 5.0f, 0.9f, ground, body);
+    ENSURE_FLOAT(wheel->GetStiffness(), stiffness);
+    ENSURE_FLOAT(wheel->GetDamping(), damping);
+    ENSURE(wheel->IsMotorEnabled());
+    ENSURE_FLOAT(wheel->GetMaxMotorTorque(), 7.0f);
+    ENSURE_FLOAT(wheel->GetMotorSpeed(), -3.0f);
+    ENSURE_FLOAT(wheel->GetLocalAxisA().x, 0.0f);
+    ENSURE_FLOAT(wheel->GetLocalAxisA().y, 1.0f);
+
+    auto* weld = static_cast<b2WeldJoint*>(built.joints[2]);
+    b2AngularStiffness(stiffness, damping, 6.0f, 0.2f, ground, body);
+    ENSURE_FLOAT(weld->GetStiffness(), stiffness);
+    ENSURE_FLOAT(weld->GetDamping(), damping);
+    ENSURE(stiffness > 0.0f);
+    return 0;
+}
+
+static int rods_and_ropes_are_distance_joints() {
+    ScenePtr scene = pair_with(R"(
+      <Joint Type="Distance"><BodyA>0</BodyA><BodyB>1</BodyB><Length>3</Length></Joint>
+      <Joint Type="Rope"><BodyA>0</BodyA><BodyB>1</BodyB><MaxLength>4</MaxLength>
+        <CollideConnected>true</CollideConnected></Joint>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    auto* rod = static_cast<b2DistanceJoint*>(built.joints[0]);
+    ENSURE_FLOAT(rod->GetLength(), 3.0f);
+    ENSURE_FLOAT(rod->GetMinLength(), 3.0f);
+    ENSURE_FLOAT(rod->GetMaxLength(), 3.0f);
+    ENSURE_FLOAT(rod->GetStiffness(), 0.0f);
+    ENSURE(!rod->GetCollideConnected());
+
+    ENSURE_EQ(built.joints[1]->GetType(), e_distanceJoint);
+    auto* rope = static_cast<b2DistanceJoint*>(built.joints[1]);
+    ENSURE_FLOAT(rope->GetLength(), 4.0f);
+    ENSURE_FLOAT(rope->GetMaxLength(), 4.0f);
+    ENSURE(rope->GetMinLength() < 0.01f);
+    ENSURE_FLOAT(rope->GetStiffness(), 0.0f);
+    ENSURE_FLOAT(rope->GetLocalAnchorA().x, -1.0f); // the Rope defaults
+    ENSURE_FLOAT(rope->GetLocalAnchorB().x, 1.0f);
+    ENSURE(rope->GetCollideConnected());
+    return 0;
+}
+
+static int line_joint_is_a_springless_wheel_whose_motor_is_reported() {
+    ScenePtr scene = pair_with(R"(
+      <Joint Type="Line"><Name>slide</Name><BodyA>0</BodyA><BodyB>1</BodyB>
+        <LocalAxisA>0 1</LocalAxisA><EnableLimit>true</EnableLimit>
+        <LowerTranslation>-1</LowerTranslation><UpperTranslation>2</UpperTranslation>
+        <EnableMotor>true</EnableMotor><MaxMotorForce>30</MaxMotorForce><MotorSpeed>2</MotorSpeed></Joint>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE_EQ(built.joints[0]->GetType(), e_wheelJoint);
+    auto* line = static_cast<b2WheelJoint*>(built.joints[0]);
+    ENSURE_FLOAT(line->GetStiffness(), 0.0f);
+    ENSURE_FLOAT(line->GetDamping(), 0.0f);
+    ENSURE(line->IsLimitEnabled());
+    ENSURE_FLOAT(line->GetLowerLimit(), -1.0f);
+    ENSURE_FLOAT(line->GetUpperLimit(), 2.0f);
+    ENSURE(!line->IsMotorEnabled());
+    ENSURE_EQ(built.reports.size(), 1);
+    const box2scene::Report& report = built.reports[0];
+    ENSURE_EQ(report.code, B2S_CODE_LOSSY_LINE_MOTOR);
+    ENSURE_STR(report.object, "joint");
+    ENSURE_EQ(report.index, 0);
+    ENSURE(report.name == "slide");
+    ENSURE(!report.message.empty());
+    return 0;
+}
+
+static int motor_and_friction_joints_keep_their_fields() {
+    ScenePtr scene = pair_with(R"(
+      <Joint Type="Motor"><BodyA>0</BodyA><BodyB>1</BodyB><LinearOffset>0.5 3</LinearOffset>
+        <AngularOffset>0.25</AngularOffset><MaxForce>40</MaxForce><MaxTorque>9</MaxTorque>
+        <CorrectionFactor>0.6</CorrectionFactor></Joint>
+      <Joint Type="Friction"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0 3</LocalAnchorA>
+        <MaxForce>5</MaxForce><MaxTorque>2</MaxTorque></Joint>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    auto* motor = static_cast<b2MotorJoint*>(built.joints[0]);
+    ENSURE_FLOAT(motor->GetLinearOffset().x, 0.5f);
+    ENSURE_FLOAT(motor->GetLinearOffset().y, 3.0f);
+    ENSURE_FLOAT(motor->GetAngularOffset(), 0.25f);
+    ENSURE_FLOAT(motor->GetMaxForce(), 40.0f);
+    ENSURE_FLOAT(motor->GetMaxTorque(), 9.0f);
+    ENSURE_FLOAT(motor->GetCorrectionFactor(), 0.6f);
+    auto* friction = static_cast<b2FrictionJoint*>(built.joints[1]);
+    ENSURE_FLOAT(friction->GetLocalAnchorA().y, 3.0f);
+    ENSURE_FLOAT(friction->GetMaxForce(), 5.0f);
+    ENSURE_FLOAT(friction->GetMaxTorque(), 2.0f);
+    return 0;
+}
+
+static int farseer_only_joints_are_skipped_and_reported() {
+    ScenePtr scene = pair_with(R"(
+      <Joint Type="Angle"><Name>angle</Name><BodyA>0</BodyA><BodyB>1</BodyB>
+        <TargetAngle>1</TargetAngle></Joint>
+      <Joint Type="Revolute"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>)");
+    ENSURE(scene != nullptr);
+    ENSURE_EQ(view_of(scene).joints[0].kind, B2S_JOINT_KIND_UNSUPPORTED);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE_EQ(built.joints.size(), 2);
+    ENSURE(built.joints[0] == nullptr);
+    ENSURE(built.joints[1] != nullptr);
+    ENSURE_EQ(world.GetJointCount(), 1);
+    ENSURE_EQ(built.reports.size(), 1);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_SKIPPED_JOINT);
+    ENSURE_EQ(built.reports[0].index, 0);
+    ENSURE(built.reports[0].name == "angle");
+    return 0;
+}
+
+static int mass_data_box2d_would_reject_is_reported() {
+    // Moving the centre 3 m away leaves the computed inertia about the origin smaller than
+    // mass * |centre|^2: Box2D 2.4 would assert on the negative central inertia.
+    ScenePtr scene = load_text(R"(<World Version="1">
+      <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+      <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+      <Bodies>
+        <Body Type="Dynamic"><Fixtures><ID>0</ID></Fixtures></Body>
+        <Body Type="Dynamic"><Name>off centre</Name><Fixtures><ID>0</ID></Fixtures>
+          <MassData><Center>3 0</Center></MassData></Body>
+      </Bodies>
+      <Joints />
+    </World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE_EQ(built.reports.size(), 1);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_NEGATIVE_VALUE);
+    ENSURE_STR(built.reports[0].object, "body");
+    ENSURE_EQ(built.reports[0].index, 1);
+    ENSURE(built.reports[0].name == "off centre");
+    ENSURE_FLOAT(built.bodies[1]->GetMass(), built.bodies[0]->GetMass());
+    ENSURE_FLOAT(built.bodies[1]->GetLocalCenter().x, 0.0f);
+    return 0;
+}
+
+static int negative_damping_never_reaches_box2d() {
+    // Box2D 2.4 asserts against it. The spec does not forbid it, this loader refuses it
+    // (src/parse/body.rs), and the adapter would report it and use 0.
+    b2s_error error{};
+    const char xml[] = R"(<World Version="1"><Shapes /><Fixtures /><Bodies>
+      <Body Type="Dynamic"><LinearDamping>-0.5</LinearDamping></Body></Bodies><Joints /></World>)";
+    b2s_scene* scene = nullptr;
+    ENSURE_EQ(b2s_load_memory(reinterpret_cast<const uint8_t*>(xml), sizeof xml - 1, nullptr,
+                              &scene, &error),
+              B2S_CODE_NEGATIVE_VALUE);
+    ENSURE(scene == nullptr);
+    return 0;
+}
+
+static int body_flags_reach_box2d() {
+    ScenePtr scene = load_text(R"(<World Version="1">
+      <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+      <Fixtures><Fixture><Shape>0</Shape><Density>1</Density><IsSensor>true</IsSensor>
+        <FilterData><CategoryBits>0x8</CategoryBits><MaskBits>6</MaskBits>
+          <GroupIndex>-7</GroupIndex></FilterData>
+      </Fixture></Fixtures>
+      <Bodies>
+        <Body Type="Dynamic"><Active>false</Active><AllowSleep>false</AllowSleep>
+          <Awake>false</Awake><Bullet>true</Bullet><FixedRotation>true</FixedRotation>
+          <Angle>0.5</Angle>
+          <Fixtures><ID>0</ID></Fixtures></Body>
+      </Bodies>
+      <Joints />
+    </World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    const b2Body* body = built.bodies[0];
+    ENSURE(!body->IsEnabled());
+    ENSURE(!body->IsSleepingAllowed());
+    ENSURE(!body->IsAwake());
+    ENSURE(body->IsBullet());
+    ENSURE(body->IsFixedRotation());
+    ENSURE_FLOAT(body->GetAngle(), 0.5f);
+    const b2Fixture* fixture = built.fixtures[0];
+    ENSURE(fixture->IsSensor());
+    ENSURE_EQ(fixture->GetFilterData().categoryBits, 8);
+    ENSURE_EQ(fixture->GetFilterData().maskBits, 6);
+    ENSURE_EQ(fixture->GetFilterData().groupIndex, -7);
+    return 0;
+}
+
+int main() {
+    int failed = 0;
+    failed += RUN_TEST(null_scene_builds_nothing);
+    failed += RUN_TEST(edges_are_one_sided_only_with_both_ghosts);
+    failed += RUN_TEST(chains_get_their_ghosts_or_extrapolated_ones);
+    failed += RUN_TEST(springs_use_the_final_masses);
+    failed += RUN_TEST(rods_and_ropes_are_distance_joints);
+    failed += RUN_TEST(line_joint_is_a_springless_wheel_whose_motor_is_reported);
+    failed += RUN_TEST(motor_and_friction_joints_keep_their_fields);
+    failed += RUN_TEST(farseer_only_joints_are_skipped_and_reported);
+    failed += RUN_TEST(mass_data_box2d_would_reject_is_reported);
+    failed += RUN_TEST(negative_damping_never_reaches_box2d);
+    failed += RUN_TEST(body_flags_reach_box2d);
+    return failed;
+}
