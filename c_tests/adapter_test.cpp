@@ -286,16 +286,20 @@ static int mass_data_box2d_would_reject_is_reported() {
 }
 
 static int negative_damping_never_reaches_box2d() {
-    // Box2D 2.4 asserts against it. The spec does not forbid it, this loader refuses it
-    // (src/parse/body.rs), and the adapter would report it and use 0.
-    b2s_error error{};
-    const char xml[] = R"(<World Version="1"><Shapes /><Fixtures /><Bodies>
-      <Body Type="Dynamic"><LinearDamping>-0.5</LinearDamping></Body></Bodies><Joints /></World>)";
-    b2s_scene* scene = nullptr;
-    ENSURE_EQ(b2s_load_memory(reinterpret_cast<const uint8_t*>(xml), sizeof xml - 1, nullptr,
-                              &scene, &error),
-              B2S_CODE_NEGATIVE_VALUE);
-    ENSURE(scene == nullptr);
+    // The spec does not forbid a negative damping, so the scene keeps it; Box2D 2.4 asserts
+    // against it, so the adapter reports it and uses 0.
+    ScenePtr scene = load_text(R"(<World Version="1"><Shapes /><Fixtures /><Bodies>
+      <Body Type="Dynamic"><LinearDamping>-0.5</LinearDamping><AngularDamping>0.25</AngularDamping>
+      </Body></Bodies><Joints /></World>)");
+    ENSURE(scene != nullptr);
+    ENSURE_FLOAT(view_of(scene).bodies[0].linear_damping, -0.5f);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE_EQ(built.reports.size(), 1u);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_NEGATIVE_VALUE);
+    ENSURE_STR(built.reports[0].object, "body");
+    ENSURE_FLOAT(built.bodies[0]->GetLinearDamping(), 0.0f);
+    ENSURE_FLOAT(built.bodies[0]->GetAngularDamping(), 0.25f);
     return 0;
 }
 

@@ -94,7 +94,7 @@ static int null_arguments_are_reported(void) {
     ENSURE_EQ(b2s_body_default(B2S_BODY_KIND_DYNAMIC, NULL), B2S_CODE_NULL_ARGUMENT);
     ENSURE_EQ(b2s_shape_default(B2S_SHAPE_KIND_CIRCLE, NULL), B2S_CODE_NULL_ARGUMENT);
     ENSURE_EQ(b2s_joint_default(B2S_JOINT_KIND_GEAR, NULL), B2S_CODE_NULL_ARGUMENT);
-    ENSURE(b2s_scene_view(NULL) == NULL);
+    ENSURE(b2s_scene_get_view(NULL) == NULL);
     ENSURE_EQ(b2s_scene_find_body(NULL, "ground"), B2S_NONE);
     b2s_scene_free(NULL);
     return 0;
@@ -126,7 +126,7 @@ static int a_scene_reads_from_c(void) {
     ENSURE_EQ(b2s_load_memory((const uint8_t*)xml, sizeof xml - 1, &options, &scene, &error),
               B2S_CODE_OK);
     ENSURE_EQ(error.code, B2S_CODE_OK);
-    const struct b2s_scene_view* view = b2s_scene_view(scene);
+    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     ENSURE(view != NULL);
     ENSURE_EQ(view->body_count, 1);
     ENSURE_EQ(view->bodies[0].kind, B2S_BODY_KIND_KINEMATIC);

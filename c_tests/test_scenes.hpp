@@ -45,7 +45,7 @@ inline ScenePtr load_project_file(const char* relative) {
 }
 
 inline const struct b2s_scene_view& view_of(const ScenePtr& scene) {
-    return *b2s_scene_view(scene.get());
+    return *b2s_scene_get_view(scene.get());
 }
 
 #endif // BOX2SCENE_TEST_SCENES_HPP

@@ -391,7 +391,7 @@ int main(int argc, char** argv) {
 
     const ScenePtr scene = load_scene(options->scene_path);
     if (!scene) return 1;
-    const struct b2s_scene_view& view = *b2s_scene_view(scene.get());
+    const struct b2s_scene_view& view = *b2s_scene_get_view(scene.get());
     print_warnings(options->scene_path, view);
 
     const b2Vec2 gravity = box2scene::scene_gravity(scene.get(), kDefaultGravity);

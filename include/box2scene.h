@@ -878,7 +878,7 @@ void b2s_scene_free(struct b2s_scene *scene);
  * # Safety
  * `scene` is NULL or a live scene.
  */
-const struct b2s_scene_view *b2s_scene_view(const struct b2s_scene *scene);
+const struct b2s_scene_view *b2s_scene_get_view(const struct b2s_scene *scene);
 
 /**
  * The index of the first shape whose `Name` is `name`, or `B2S_NONE` (also for NULL

@@ -180,17 +180,24 @@ unsafe fn arg_options(options: *const LoadOptions) -> LoadOptions {
     unsafe { options.as_ref() }.copied().unwrap_or_default()
 }
 
+/// Runs a load for an export: `*out_scene` is NULL unless the load succeeds, in which case
+/// it owns the new scene; `error` is filled as by [`fallible`].
+///
 /// # Safety
-/// `out` is NULL or points to a writable `b2s_scene *`.
-unsafe fn store_scene(out: *mut *mut SceneHandle, scene: Scene) -> Result<(), Error> {
-    let handle = Box::into_raw(SceneHandle::new(scene));
-    // SAFETY: by the caller's contract; checked for NULL before loading.
-    unsafe { *out = handle };
-    Ok(())
-}
-
-fn null_out() -> Error {
-    simple_error(Code::NullArgument, "out_scene is NULL")
+/// `out_scene` is NULL or points to a writable `b2s_scene *`; `error` is NULL or writable.
+unsafe fn load_into(
+    out_scene: *mut *mut SceneHandle,
+    error: *mut ErrorInfo,
+    load: impl FnOnce() -> Result<Scene, Error>,
+) -> Code {
+    fallible(error, || {
+        // SAFETY: by the caller's contract.
+        let out = unsafe { out_scene.as_mut() }
+            .ok_or_else(|| simple_error(Code::NullArgument, "out_scene is NULL"))?;
+        *out = std::ptr::null_mut();
+        *out = Box::into_raw(SceneHandle::new(load()?));
+        Ok(())
+    })
 }
 
 /// The load options with every field at its default (the limits of spec section 9,
@@ -215,18 +222,13 @@ pub unsafe extern "C" fn b2s_load_file(
     out_scene: *mut *mut SceneHandle,
     error: *mut ErrorInfo,
 ) -> Code {
-    fallible(error, || {
-        if out_scene.is_null() {
-            return Err(null_out());
-        }
-        // SAFETY: checked above.
-        unsafe { *out_scene = std::ptr::null_mut() };
-        // SAFETY: by the caller's contract.
-        let (path, options) = unsafe { (arg_str(path, "path")?, arg_options(options)) };
-        let scene = load_path(Path::new(path), &options)?;
-        // SAFETY: checked above.
-        unsafe { store_scene(out_scene, scene) }
-    })
+    // SAFETY: by the caller's contract.
+    unsafe {
+        load_into(out_scene, error, || {
+            let (path, options) = (arg_str(path, "path")?, arg_options(options));
+            load_path(Path::new(path), &options)
+        })
+    }
 }
 
 /// Loads a scene from `size` bytes at `data` (a whole file's content). The scene keeps
@@ -243,24 +245,18 @@ pub unsafe extern "C" fn b2s_load_memory(
     out_scene: *mut *mut SceneHandle,
     error: *mut ErrorInfo,
 ) -> Code {
-    fallible(error, || {
-        if out_scene.is_null() {
-            return Err(null_out());
-        }
-        // SAFETY: checked above.
-        unsafe { *out_scene = std::ptr::null_mut() };
-        let bytes: &[u8] = match (data.is_null(), size) {
-            (true, 0) => &[],
-            (true, _) => return Err(simple_error(Code::NullArgument, "data is NULL")),
-            // SAFETY: `size` readable bytes by the caller's contract.
-            (false, _) => unsafe { std::slice::from_raw_parts(data, size) },
-        };
-        // SAFETY: by the caller's contract.
-        let options = unsafe { arg_options(options) };
-        let scene = load(bytes, &options)?;
-        // SAFETY: checked above.
-        unsafe { store_scene(out_scene, scene) }
-    })
+    // SAFETY: by the caller's contract.
+    unsafe {
+        load_into(out_scene, error, || {
+            let bytes: &[u8] = match (data.is_null(), size) {
+                (true, 0) => &[],
+                (true, _) => return Err(simple_error(Code::NullArgument, "data is NULL")),
+                // SAFETY: `size` readable bytes by the caller's contract.
+                (false, _) => std::slice::from_raw_parts(data, size),
+            };
+            load(bytes, &arg_options(options))
+        })
+    }
 }
 
 /// Frees a scene and everything it owns. NULL is ignored.
@@ -273,7 +269,7 @@ pub unsafe extern "C" fn b2s_scene_free(scene: *mut SceneHandle) {
         || (),
         || {
             if !scene.is_null() {
-                // SAFETY: made by Box::into_raw in store_scene, freed once by contract.
+                // SAFETY: made by Box::into_raw in load_into, freed once by contract.
                 drop(unsafe { Box::from_raw(scene) });
             }
         },
@@ -285,7 +281,7 @@ pub unsafe extern "C" fn b2s_scene_free(scene: *mut SceneHandle) {
 /// # Safety
 /// `scene` is NULL or a live scene.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn b2s_scene_view(scene: *const SceneHandle) -> *const SceneView {
+pub unsafe extern "C" fn b2s_scene_get_view(scene: *const SceneHandle) -> *const SceneView {
     guard(std::ptr::null, || {
         // SAFETY: by the caller's contract.
         unsafe { scene.as_ref() }.map_or(std::ptr::null(), |h| &h.view)

@@ -597,7 +597,7 @@ private:
 } // namespace detail
 
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
-    const struct b2s_scene_view* view = b2s_scene_view(scene);
+    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     if (view == nullptr || !view->gravity_given) {
         return fallback;
     }
@@ -605,7 +605,7 @@ inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
 }
 
 inline Built build_world(const b2s_scene* scene, b2World& world) {
-    const struct b2s_scene_view* view = b2s_scene_view(scene);
+    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     if (view == nullptr) {
         return Built{};
     }

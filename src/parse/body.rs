@@ -36,10 +36,11 @@ impl<'a> Parser<'a> {
                 "bullet" => body.bullet = self.boolean(&child)?,
                 "fixedrotation" => body.fixed_rotation = self.boolean(&child)?,
                 "angle" => body.angle = self.float(&child)?,
-                // Box2D asserts that damping is not negative.
-                "angulardamping" => body.angular_damping = self.non_negative(&child)?,
+                // Negative damping is not an error of the format; the Box2D adapter, whose
+                // engine asserts against it, reports it and uses 0.
+                "angulardamping" => body.angular_damping = self.float(&child)?,
                 "angularvelocity" => body.angular_velocity = self.float(&child)?,
-                "lineardamping" => body.linear_damping = self.non_negative(&child)?,
+                "lineardamping" => body.linear_damping = self.float(&child)?,
                 "linearvelocity" => body.linear_velocity = self.vector(&child)?,
                 "position" => body.position = self.vector(&child)?,
                 "inertiascale" => body.inertia_scale = self.float(&child)?,
