@@ -303,6 +303,25 @@ static int negative_damping_never_reaches_box2d() {
     return 0;
 }
 
+static int wheel_and_line_axes_are_directions() {
+    ScenePtr scene = load_text(R"(<World Version="2"><Shapes /><Fixtures />
+      <Bodies><Body Type="Static" /><Body Type="Dynamic" /></Bodies>
+      <Joints>
+        <Joint Type="Wheel"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0 2</LocalAxisA></Joint>
+        <Joint Type="Line"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>-3 0</LocalAxisA></Joint>
+      </Joints></World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    const b2Vec2 wheel = static_cast<b2WheelJoint*>(built.joints[0])->GetLocalAxisA();
+    const b2Vec2 line = static_cast<b2WheelJoint*>(built.joints[1])->GetLocalAxisA();
+    ENSURE_FLOAT(wheel.x, 0.0f);
+    ENSURE_FLOAT(wheel.y, 1.0f);
+    ENSURE_FLOAT(line.x, -1.0f);
+    ENSURE_FLOAT(line.y, 0.0f);
+    return 0;
+}
+
 static int body_flags_reach_box2d() {
     ScenePtr scene = load_text(R"(<World Version="1">
       <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
@@ -349,6 +368,7 @@ int main() {
     failed += RUN_TEST(farseer_only_joints_are_skipped_and_reported);
     failed += RUN_TEST(mass_data_box2d_would_reject_is_reported);
     failed += RUN_TEST(negative_damping_never_reaches_box2d);
+    failed += RUN_TEST(wheel_and_line_axes_are_directions);
     failed += RUN_TEST(body_flags_reach_box2d);
     return failed;
 }

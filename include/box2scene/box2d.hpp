@@ -476,11 +476,15 @@ private:
         create(index, def);
     }
 
+    /// Box2D 2.4's wheel joint, unlike its prismatic joint, does not normalise its axis,
+    /// and a longer one would scale the translation; an axis is a direction. (The loader
+    /// rejects a zero axis.)
     template <class Def>
     static void set_anchors_and_axis(const b2s_joint& joint, Def& def) {
         def.localAnchorA = to_b2(joint.local_anchor_a);
         def.localAnchorB = to_b2(joint.local_anchor_b);
         def.localAxisA = to_b2(joint.local_axis_a);
+        def.localAxisA.Normalize();
     }
 
     /// Box2D 2.1's line joint is a wheel joint without a spring. Its motor drove the
