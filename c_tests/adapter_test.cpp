@@ -276,7 +276,7 @@ static int mass_data_box2d_would_reject_is_reported() {
     b2World world(b2Vec2(0.0f, -10.0f));
     box2scene::Built built = box2scene::build_world(scene.get(), world);
     ENSURE_EQ(built.reports.size(), 1);
-    ENSURE_EQ(built.reports[0].code, B2S_CODE_NEGATIVE_VALUE);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_INCONSISTENT_MASS_DATA);
     ENSURE_STR(built.reports[0].object, "body");
     ENSURE_EQ(built.reports[0].index, 1);
     ENSURE(built.reports[0].name == "off centre");

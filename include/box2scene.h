@@ -158,6 +158,12 @@ enum b2s_code
    * An object that names another that could not be created; it was skipped.
    */
   B2S_CODE_SKIPPED_DEPENDENT = 202,
+  /**
+   * A MassData whose inertia about the body origin is below mass * |center|^2 leaves no
+   * positive inertia about the centre of mass, which Box2D rejects; the mass computed
+   * from the fixtures was kept.
+   */
+  B2S_CODE_INCONSISTENT_MASS_DATA = 203,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

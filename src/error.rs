@@ -102,6 +102,10 @@ pub enum Code {
     SkippedJoint = 201,
     /// An object that names another that could not be created; it was skipped.
     SkippedDependent = 202,
+    /// A MassData whose inertia about the body origin is below mass * |center|^2 leaves no
+    /// positive inertia about the centre of mass, which Box2D rejects; the mass computed
+    /// from the fixtures was kept.
+    InconsistentMassData = 203,
 }
 
 impl Code {
@@ -163,6 +167,7 @@ impl Code {
         Code::LossyLineMotor,
         Code::SkippedJoint,
         Code::SkippedDependent,
+        Code::InconsistentMassData,
     ];
 
     /// The spec's kebab-case name of the code.
@@ -229,6 +234,7 @@ impl Code {
             Code::LossyLineMotor => c"lossy-line-motor",
             Code::SkippedJoint => c"skipped-joint",
             Code::SkippedDependent => c"skipped-dependent",
+            Code::InconsistentMassData => c"inconsistent-mass-data",
         }
     }
 

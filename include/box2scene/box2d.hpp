@@ -327,7 +327,7 @@ private:
             mass.I = given.inertia;
         }
         if (!central_inertia_positive(mass, body.fixed_rotation)) {
-            report(B2S_CODE_NEGATIVE_VALUE, "body", index, body.name,
+            report(B2S_CODE_INCONSISTENT_MASS_DATA, "body", index, body.name,
                    "its MassData leaves no positive inertia about the centre of mass "
                    "(Inertia < Mass * |Center|^2); the mass computed from the fixtures was kept");
             return;
