@@ -831,6 +831,17 @@ typedef struct b2s_scene_view {
   bool gravity_given;
 } b2s_scene_view;
 
+/**
+ * How to write.
+ */
+typedef struct b2s_write_options {
+  /**
+   * Write every field of the file's version, even those equal to their defaults.
+   * Default false: omit them, as the original editor did.
+   */
+  bool all_fields;
+} b2s_write_options;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -918,6 +929,49 @@ uint32_t b2s_scene_find_body(const struct b2s_scene *scene, const char *name);
  * As for `b2s_scene_find_shape`.
  */
 uint32_t b2s_scene_find_joint(const struct b2s_scene *scene, const char *name);
+
+/**
+ * The write options with every field at its default (defaults omitted, as the editor
+ * wrote).
+ */
+struct b2s_write_options b2s_write_options_default(void);
+
+/**
+ * Writes `scene` as Box2Scene XML into a new NUL-terminated UTF-8 text owned by the
+ * library: stores it in `*out_text` (free it with `b2s_text_free`) and, when `out_size`
+ * is not NULL, its length in bytes without the NUL. `options` may be NULL (defaults).
+ * Farseer-only joints are not written (gear references are renumbered to match).
+ *
+ * # Safety
+ * `scene` is NULL or a live scene; `options` NULL or valid; `out_text` NULL or writable;
+ * `out_size` NULL or writable; `error` NULL or writable.
+ */
+b2s_code b2s_write_memory(const struct b2s_scene *scene,
+                          const struct b2s_write_options *options,
+                          char **out_text,
+                          size_t *out_size,
+                          struct b2s_error *error);
+
+/**
+ * Frees a text from `b2s_write_memory`. NULL is ignored.
+ *
+ * # Safety
+ * `text` is NULL or a text from `b2s_write_memory` that was not freed yet.
+ */
+void b2s_text_free(char *text);
+
+/**
+ * Writes `scene` as Box2Scene XML to the file at `path` (UTF-8), replacing it.
+ * Otherwise as `b2s_write_memory`.
+ *
+ * # Safety
+ * `scene` is NULL or a live scene; `path` NULL or NUL-terminated; `options` NULL or
+ * valid; `error` NULL or writable.
+ */
+b2s_code b2s_write_file(const struct b2s_scene *scene,
+                        const char *path,
+                        const struct b2s_write_options *options,
+                        struct b2s_error *error);
 
 /**
  * Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its

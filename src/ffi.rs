@@ -6,14 +6,14 @@
 //! arrive as integers and are converted; a scene is immutable, owned by the library, and
 //! freed by `b2s_scene_free`.
 
-use std::ffi::{CStr, c_char};
+use std::ffi::{CStr, CString, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
 use crate::error::{Code, Diagnostic, Error, Position};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
 use crate::scene::{NONE, UserData, Vec2};
-use crate::{LoadOptions, load, load_path};
+use crate::{LoadOptions, WriteOptions, load, load_path, write, write_path};
 
 // SAFETY: a `Str` points into the string pool of the scene that holds it, which is never
 // mutated after the scene is frozen; sharing or sending it is sharing immutable bytes.
@@ -359,6 +359,98 @@ pub unsafe extern "C" fn b2s_scene_find_joint(
 ) -> u32 {
     // SAFETY: same contract.
     unsafe { find(scene, name, Scene::find_joint) }
+}
+
+/// The write options with every field at its default (defaults omitted, as the editor
+/// wrote).
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_write_options_default() -> WriteOptions {
+    WriteOptions::default()
+}
+
+/// # Safety
+/// `scene` is NULL or a live scene; `options` NULL or valid.
+unsafe fn scene_and_options<'a>(
+    scene: *const SceneHandle,
+    options: *const WriteOptions,
+) -> Result<(&'a Scene, WriteOptions), Error> {
+    // SAFETY: by the caller's contract.
+    let handle = unsafe { scene.as_ref() }.ok_or_else(|| simple_error(Code::NullArgument, "scene is NULL"))?;
+    // SAFETY: by the caller's contract.
+    Ok((&handle.scene, unsafe { options.as_ref() }.copied().unwrap_or_default()))
+}
+
+/// Writes `scene` as Box2Scene XML into a new NUL-terminated UTF-8 text owned by the
+/// library: stores it in `*out_text` (free it with `b2s_text_free`) and, when `out_size`
+/// is not NULL, its length in bytes without the NUL. `options` may be NULL (defaults).
+/// Farseer-only joints are not written (gear references are renumbered to match).
+///
+/// # Safety
+/// `scene` is NULL or a live scene; `options` NULL or valid; `out_text` NULL or writable;
+/// `out_size` NULL or writable; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_write_memory(
+    scene: *const SceneHandle,
+    options: *const WriteOptions,
+    out_text: *mut *mut c_char,
+    out_size: *mut usize,
+    error: *mut ErrorInfo,
+) -> Code {
+    fallible(error, || {
+        // SAFETY: by the caller's contract.
+        let out = unsafe { out_text.as_mut() }
+            .ok_or_else(|| simple_error(Code::NullArgument, "out_text is NULL"))?;
+        *out = std::ptr::null_mut();
+        // SAFETY: by the caller's contract.
+        let (scene, options) = unsafe { scene_and_options(scene, options)? };
+        let text = CString::new(write(scene, &options))
+            .map_err(|_| simple_error(Code::Internal, "the written text holds a NUL byte"))?;
+        // SAFETY: by the caller's contract.
+        if let Some(size) = unsafe { out_size.as_mut() } {
+            *size = text.as_bytes().len();
+        }
+        *out = text.into_raw();
+        Ok(())
+    })
+}
+
+/// Frees a text from `b2s_write_memory`. NULL is ignored.
+///
+/// # Safety
+/// `text` is NULL or a text from `b2s_write_memory` that was not freed yet.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_text_free(text: *mut c_char) {
+    guard(
+        || (),
+        || {
+            if !text.is_null() {
+                // SAFETY: made by CString::into_raw in b2s_write_memory, freed once.
+                drop(unsafe { CString::from_raw(text) });
+            }
+        },
+    )
+}
+
+/// Writes `scene` as Box2Scene XML to the file at `path` (UTF-8), replacing it.
+/// Otherwise as `b2s_write_memory`.
+///
+/// # Safety
+/// `scene` is NULL or a live scene; `path` NULL or NUL-terminated; `options` NULL or
+/// valid; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_write_file(
+    scene: *const SceneHandle,
+    path: *const c_char,
+    options: *const WriteOptions,
+    error: *mut ErrorInfo,
+) -> Code {
+    fallible(error, || {
+        // SAFETY: by the caller's contract.
+        let (scene, options) = unsafe { scene_and_options(scene, options)? };
+        // SAFETY: by the caller's contract.
+        let path = unsafe { arg_str(path, "path")? };
+        write_path(scene, Path::new(path), &options)
+    })
 }
 
 /// Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its

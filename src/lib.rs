@@ -21,10 +21,12 @@ mod resolve;
 pub mod scene;
 mod text;
 mod validate;
+mod write;
 
 use std::path::Path;
 
 pub use error::{Code, Diagnostic, Error, Position, Severity};
+pub use write::{WriteOptions, joints_not_written, write};
 pub use scene::{
     Body, BodyKind, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene, Shape,
     ShapeKind, Str, UserData, Vec2,
@@ -88,7 +90,22 @@ fn io_error(path: &Path, e: &std::io::Error) -> Error {
     }
 }
 
+/// Writes `scene` to a file (see [`write`]).
+pub fn write_path(scene: &Scene, path: impl AsRef<Path>, options: &WriteOptions) -> Result<(), Error> {
+    let path = path.as_ref();
+    std::fs::write(path, write(scene, options)).map_err(|e| Error {
+        code: Code::Io,
+        position: Position::default(),
+        message: format!("cannot write {}: {e}", path.display()),
+    })
+}
+
 impl Scene {
+    /// The scene as Box2Scene XML (see [`write`]).
+    pub fn to_xml(&self, options: &WriteOptions) -> String {
+        write(self, options)
+    }
+
     /// The scene as JSON: every field of every record, floats in shortest round-trip form,
     /// diagnostics included.
     pub fn to_json(&self) -> String {
