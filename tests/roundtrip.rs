@@ -114,15 +114,15 @@ impl Random {
         self.below(100) < percent
     }
 
-    fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
-        &items[self.below(items.len() as u64) as usize]
+    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+        items[self.below(items.len() as u64) as usize]
     }
 
     /// Any finite float, odd ones often.
     fn float(&mut self) -> f32 {
         let odd = [0.0, -0.0, 1.0, -1.0, f32::MAX, -f32::MAX, f32::MIN_POSITIVE, f32::from_bits(1), -f32::from_bits(0x007F_FFFF), 0.1, 1e-5, 9.999999e-6, 1e16, 8.369571e-36];
         if self.chance(40) {
-            return *self.pick(&odd);
+            return self.pick(&odd);
         }
         loop {
             let value = f32::from_bits(self.next() as u32);
@@ -172,10 +172,10 @@ fn element(out: &mut String, name: &str, text: &str) {
 
 fn named(out: &mut String, r: &mut Random) {
     if r.chance(50) {
-        element(out, "Name", &escape(*r.pick(NAMES)));
+        element(out, "Name", &escape(r.pick(NAMES)));
     }
     if r.chance(20) {
-        element(out, "UserData", *r.pick(USER_DATA));
+        element(out, "UserData", r.pick(USER_DATA));
     }
 }
 
@@ -207,10 +207,10 @@ fn generate(r: &mut Random) -> String {
 }
 
 fn shape(x: &mut String, r: &mut Random) {
-    let kind = *r.pick(&["Circle", "Polygon", "Edge", "Chain", "Loop"]);
+    let kind = r.pick(&["Circle", "Polygon", "Edge", "Chain", "Loop"]);
     let _ = write!(x, "<Shape Type=\"{kind}\">");
     named_shape(x, r);
-    let scale = *r.pick(&[0.01f32, 1.0, 1000.0]);
+    let scale = r.pick(&[0.01f32, 1.0, 1000.0]);
     match kind {
         "Circle" => {
             element(x, "Radius", &num(r.non_negative().max(f32::from_bits(1))));
@@ -250,7 +250,7 @@ fn shape(x: &mut String, r: &mut Random) {
 
 fn named_shape(x: &mut String, r: &mut Random) {
     if r.chance(50) {
-        element(x, "Name", &escape(*r.pick(NAMES)));
+        element(x, "Name", &escape(r.pick(NAMES)));
     }
 }
 
@@ -350,7 +350,7 @@ fn joints(x: &mut String, r: &mut Random, bodies: usize) {
     const KINDS: [&str; 11] = ["Revolute", "Prismatic", "Distance", "Pulley", "Line", "Weld", "Friction", "Gear", "Wheel", "Rope", "Motor"];
     let count = r.below(8) as usize;
     // Revolute and prismatic joints first, so that gears have something to couple.
-    let kinds: Vec<&str> = (0..count).map(|i| if i < 2 { KINDS[i] } else { *r.pick(&KINDS) }).collect();
+    let kinds: Vec<&str> = (0..count).map(|i| if i < 2 { KINDS[i] } else { r.pick(&KINDS) }).collect();
     for kind in kinds {
         let _ = write!(x, "<Joint Type=\"{kind}\">");
         named(x, r);
