@@ -1,7 +1,8 @@
-//! `box2scene`: check and dump Box2Scene files in a level pipeline.
+//! `box2scene`: check, dump and format Box2Scene files in a level pipeline.
 //!
 //! `check` prints one compiler-style line per diagnostic (`FILE:LINE:COLUMN: warning[CODE]:
-//! message`) so that editors and CI logs can jump to it; `dump` prints the scene as JSON.
+//! message`) so that editors and CI logs can jump to it; `dump` prints the scene as JSON;
+//! `fmt` rewrites a file in canonical form.
 //! The exit status tells a build script what happened without parsing the output.
 
 use std::ffi::OsString;
@@ -9,17 +10,22 @@ use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use box2scene::{Code, Diagnostic, Error, LoadOptions, Position, Scene, Severity};
+use box2scene::{Code, Diagnostic, Error, LoadOptions, Position, Scene, Severity, WriteOptions};
 
 const USAGE: &str = "\
 Usage:
   box2scene check [--strict] FILE...   print every warning and error of each file
   box2scene dump [--strict] FILE       print the scene as JSON
+  box2scene fmt [--strict] [--all-fields] [-o OUT] FILE
+                                       write FILE in canonical form to standard output,
+                                       or to OUT (which may be FILE itself)
   box2scene --help | -h                print this help
   box2scene --version                  print the version
 
 Options:
-  --strict   treat every warning as an error
+  --strict       treat every warning as an error
+  --all-fields   fmt: write every field, also those equal to their defaults
+  -o OUT         fmt: write to OUT instead of standard output
 
 Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
 ";
@@ -37,6 +43,7 @@ enum Command {
     Version,
     Check { files: Vec<PathBuf>, options: LoadOptions },
     Dump { file: PathBuf, options: LoadOptions },
+    Fmt { file: PathBuf, out: Option<PathBuf>, options: LoadOptions, write: WriteOptions },
 }
 
 fn main() -> ExitCode {
@@ -57,6 +64,7 @@ fn run(command: Command) -> Status {
         Command::Version => emit(&format!("box2scene {}\n", env!("CARGO_PKG_VERSION"))),
         Command::Check { files, options } => check(&files, &options),
         Command::Dump { file, options } => dump(&file, &options),
+        Command::Fmt { file, out, options, write } => fmt(&file, out.as_deref(), &options, &write),
     }
 }
 
@@ -82,6 +90,7 @@ fn parse_command(args: &[OsString]) -> Result<Command, String> {
                 Err(_) => Err("dump needs exactly one FILE".to_owned()),
             }
         }
+        Some("fmt") => parse_fmt_args(rest),
         _ => Err(format!("unknown command '{}'", command.to_string_lossy())),
     }
 }
@@ -100,6 +109,29 @@ fn parse_load_args(args: &[OsString]) -> Result<(Vec<PathBuf>, LoadOptions), Str
         }
     }
     Ok((files, options))
+}
+
+/// `fmt`'s arguments: its own options, then those of every loading command.
+fn parse_fmt_args(args: &[OsString]) -> Result<Command, String> {
+    let mut write = WriteOptions::default();
+    let mut out = None;
+    let mut rest = Vec::new();
+    let mut args = args.iter();
+    while let Some(arg) = args.next() {
+        if arg == "--all-fields" {
+            write.all_fields = true;
+        } else if arg == "-o" {
+            let path = args.next().ok_or("-o needs a file name")?;
+            out = Some(PathBuf::from(path));
+        } else {
+            rest.push(arg.clone());
+        }
+    }
+    let (files, options) = parse_load_args(&rest)?;
+    match <[PathBuf; 1]>::try_from(files) {
+        Ok([file]) => Ok(Command::Fmt { file, out, options, write }),
+        Err(_) => Err("fmt needs exactly one FILE".to_owned()),
+    }
 }
 
 /// Checks every file, even after one fails, so that one run reports everything.
@@ -133,6 +165,32 @@ fn dump(file: &Path, options: &LoadOptions) -> Status {
         Err(error) => {
             eprintln!("{}", error_line(file, &error));
             status_of(&error)
+        }
+    }
+}
+
+/// Loads `file` and writes it in canonical form, to `out` or standard output. The file is
+/// read whole before anything is written, so `out` may be `file` itself.
+fn fmt(file: &Path, out: Option<&Path>, options: &LoadOptions, write: &WriteOptions) -> Status {
+    let scene = match box2scene::load_path(file, options) {
+        Ok(scene) => scene,
+        Err(error) => {
+            eprintln!("{}", error_line(file, &error));
+            return status_of(&error);
+        }
+    };
+    for joint in box2scene::joints_not_written(&scene) {
+        let message = format!("joint {joint} is a Farseer-only joint with no Box2Scene form; it is not written");
+        eprintln!("{}", report_line(file, Position::default(), Severity::Warning.name(), Code::SkippedJoint.name(), &message));
+    }
+    let Some(out) = out else {
+        return emit(&scene.to_xml(write));
+    };
+    match box2scene::write_path(&scene, out, write) {
+        Ok(()) => Status::Clean,
+        Err(error) => {
+            eprintln!("{}", error_line(out, &error));
+            Status::UsageOrIo
         }
     }
 }
