@@ -30,7 +30,7 @@ int main(int argc, char **argv) {
     }
 
     /* Every pointer in the view stays valid until b2s_scene_free. */
-    const struct b2s_scene_view *view = b2s_scene_get_view(scene);
+    const b2s_scene_view *view = b2s_scene_get_view(scene);
     printf("%s: %u shapes, %u fixtures, %u bodies, %u joints\n", path, view->shape_count,
            view->fixture_count, view->body_count, view->joint_count);
     /* A scene has no default gravity: the host decides when the file gives none. */

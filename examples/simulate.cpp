@@ -102,7 +102,7 @@ ScenePtr load_scene(const std::string& path) {
     return ScenePtr(scene, b2s_scene_free);
 }
 
-void print_warnings(const std::string& path, const struct b2s_scene_view& view) {
+void print_warnings(const std::string& path, const b2s_scene_view& view) {
     for (uint32_t i = 0; i < view.diagnostic_count; ++i) {
         const b2s_diagnostic& warning = view.diagnostics[i];
         std::fprintf(stderr, "%s:%u:%u: warning[%s]: %s\n", path.c_str(), warning.line,
@@ -119,7 +119,7 @@ void print_reports(const std::vector<box2scene::Report>& reports) {
     }
 }
 
-void print_gravity(const struct b2s_scene_view& view, b2Vec2 gravity) {
+void print_gravity(const b2s_scene_view& view, b2Vec2 gravity) {
     std::printf("gravity (%g, %g) m/s^2, %s\n", gravity.x, gravity.y,
                 view.gravity_given ? "from the scene" : "the default: the scene gives none");
 }
@@ -174,8 +174,8 @@ const char* body_kind_name(uint32_t kind) {
 
 std::string body_name(const b2s_body& body) { return body.name ? body.name : "-"; }
 
-void print_table(const struct b2s_scene_view& view, const box2scene::Built& built,
-                 const Frame& start, const Frame& end) {
+void print_table(const b2s_scene_view& view, const box2scene::Built& built, const Frame& start,
+                 const Frame& end) {
     size_t name_width = 4;
     for (uint32_t i = 0; i < view.body_count; ++i) {
         name_width = std::max(name_width, body_name(view.bodies[i]).size());
@@ -324,7 +324,7 @@ void draw_shape(Svg& svg, const b2Shape& shape, const b2Transform& xf) {
     }
 }
 
-void draw_bodies(Svg& svg, const struct b2s_scene_view& view, const box2scene::Built& built,
+void draw_bodies(Svg& svg, const b2s_scene_view& view, const box2scene::Built& built,
                  const Frame& frame) {
     for (size_t i = 0; i < built.bodies.size(); ++i) {
         if (built.bodies[i] == nullptr) continue;
@@ -348,7 +348,7 @@ void draw_joints(Svg& svg, const Frame& frame) {
     svg.close_group();
 }
 
-void draw_trajectories(Svg& svg, const struct b2s_scene_view& view, const Trajectories& paths) {
+void draw_trajectories(Svg& svg, const b2s_scene_view& view, const Trajectories& paths) {
     svg.open_group("trajectories");
     for (size_t i = 0; i < paths.size(); ++i) {
         if (view.bodies[i].kind != B2S_BODY_KIND_STATIC && !paths[i].empty())
@@ -357,7 +357,7 @@ void draw_trajectories(Svg& svg, const struct b2s_scene_view& view, const Trajec
     svg.close_group();
 }
 
-std::string render_svg(const struct b2s_scene_view& view, const box2scene::Built& built,
+std::string render_svg(const b2s_scene_view& view, const box2scene::Built& built,
                        const Frame& start, const Frame& end, const Trajectories& paths) {
     Svg svg;
     svg.open_group("start");
@@ -391,7 +391,7 @@ int main(int argc, char** argv) {
 
     const ScenePtr scene = load_scene(options->scene_path);
     if (!scene) return 1;
-    const struct b2s_scene_view& view = *b2s_scene_get_view(scene.get());
+    const b2s_scene_view& view = *b2s_scene_get_view(scene.get());
     print_warnings(options->scene_path, view);
 
     const b2Vec2 gravity = box2scene::scene_gravity(scene.get(), kDefaultGravity);
