@@ -298,6 +298,13 @@ typedef uint32_t b2s_severity;
 #endif // __cplusplus
 
 /**
+ * A scene under construction (opaque): `b2s_builder_new`, then `b2s_builder_add_*`, then
+ * `b2s_builder_finish` (or `b2s_builder_free` to abandon it). Not for use from two
+ * threads at once.
+ */
+typedef struct b2s_builder b2s_builder;
+
+/**
  * A loaded scene (opaque). Immutable; free it with `b2s_scene_free`.
  */
 typedef struct b2s_scene b2s_scene;
@@ -972,6 +979,112 @@ b2s_code b2s_write_file(const struct b2s_scene *scene,
                         const char *path,
                         const struct b2s_write_options *options,
                         struct b2s_error *error);
+
+/**
+ * A new, empty scene builder. Never NULL.
+ */
+struct b2s_builder *b2s_builder_new(void);
+
+/**
+ * Abandons a builder and everything added to it. NULL is ignored.
+ *
+ * # Safety
+ * `builder` is NULL or a builder that was not finished or freed yet.
+ */
+void b2s_builder_free(struct b2s_builder *builder);
+
+/**
+ * Sets the scene's gravity; NULL means none (the host decides).
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `gravity` NULL or valid; `error` NULL or writable.
+ */
+b2s_code b2s_builder_set_gravity(struct b2s_builder *builder,
+                                 const struct b2s_vec2 *gravity,
+                                 struct b2s_error *error);
+
+/**
+ * Adds user data; stores its index in `*out_index` (when not NULL), for the `user_data`
+ * field of fixtures, bodies and joints added later. `raw` (XML content, kept verbatim)
+ * wins; without it, `type_name` and `value` are written in the editor's form. The
+ * stored `type_name` and `value` are those the loader would find in the raw XML.
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `user_data` NULL or valid, its strings NULL or
+ * NUL-terminated; `out_index` and `error` NULL or writable.
+ */
+b2s_code b2s_builder_add_user_data(struct b2s_builder *builder,
+                                   const struct b2s_user_data *user_data,
+                                   uint32_t *out_index,
+                                   struct b2s_error *error);
+
+/**
+ * Adds a shape (its `name` is copied; its `vertices` range is ignored: the `count`
+ * vertices at `vertices` are copied instead) and stores its index in `*out_index`.
+ * Refused with the loader's codes (`bad-radius`, `bad-vertex-count`,
+ * `degenerate-polygon`, ...); the message names the shape's index.
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `shape` NULL or valid, its name NULL or
+ * NUL-terminated; `vertices` NULL (with `count` 0) or `count` readable vectors;
+ * `out_index` and `error` NULL or writable.
+ */
+b2s_code b2s_builder_add_shape(struct b2s_builder *builder,
+                               const struct b2s_shape *shape,
+                               const struct b2s_vec2 *vertices,
+                               uint32_t count,
+                               uint32_t *out_index,
+                               struct b2s_error *error);
+
+/**
+ * Adds a fixture on a shape added before; stores its index in `*out_index`.
+ *
+ * # Safety
+ * As for `b2s_builder_add_shape`, without vertices.
+ */
+b2s_code b2s_builder_add_fixture(struct b2s_builder *builder,
+                                 const struct b2s_fixture *fixture,
+                                 uint32_t *out_index,
+                                 struct b2s_error *error);
+
+/**
+ * Adds a body (its `fixtures` range is ignored: the `count` fixture indices at
+ * `fixtures` are copied instead, each of a fixture added before); stores its index.
+ *
+ * # Safety
+ * As for `b2s_builder_add_shape`, with `fixtures` NULL (with `count` 0) or `count`
+ * readable indices.
+ */
+b2s_code b2s_builder_add_body(struct b2s_builder *builder,
+                              const struct b2s_body *body,
+                              const uint32_t *fixtures,
+                              uint32_t count,
+                              uint32_t *out_index,
+                              struct b2s_error *error);
+
+/**
+ * Adds a joint between bodies added before (a gear: after the two joints it couples);
+ * stores its index. Fields its kind does not have take that kind's defaults.
+ *
+ * # Safety
+ * As for `b2s_builder_add_fixture`.
+ */
+b2s_code b2s_builder_add_joint(struct b2s_builder *builder,
+                               const struct b2s_joint *joint,
+                               uint32_t *out_index,
+                               struct b2s_error *error);
+
+/**
+ * Finishes the builder into an ordinary immutable scene, stored in `*out_scene` (free it
+ * with `b2s_scene_free`). The builder is freed in every case.
+ *
+ * # Safety
+ * `builder` is NULL or a builder that was not finished or freed yet; `out_scene` NULL or
+ * writable; `error` NULL or writable.
+ */
+b2s_code b2s_builder_finish(struct b2s_builder *builder,
+                            struct b2s_scene **out_scene,
+                            struct b2s_error *error);
 
 /**
  * Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its

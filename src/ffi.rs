@@ -13,7 +13,7 @@ use std::path::Path;
 use crate::error::{Code, Diagnostic, Error, Position};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
 use crate::scene::{NONE, UserData, Vec2};
-use crate::{LoadOptions, WriteOptions, load, load_path, write, write_path};
+use crate::{Builder, LoadOptions, WriteOptions, load, load_path, write, write_path};
 
 // SAFETY: a `Str` points into the string pool of the scene that holds it, which is never
 // mutated after the scene is frozen; sharing or sending it is sharing immutable bytes.
@@ -180,22 +180,22 @@ unsafe fn arg_options(options: *const LoadOptions) -> LoadOptions {
     unsafe { options.as_ref() }.copied().unwrap_or_default()
 }
 
-/// Runs a load for an export: `*out_scene` is NULL unless the load succeeds, in which case
+/// Makes a scene for an export: `*out_scene` is NULL unless `make` succeeds, in which case
 /// it owns the new scene; `error` is filled as by [`fallible`].
 ///
 /// # Safety
 /// `out_scene` is NULL or points to a writable `b2s_scene *`; `error` is NULL or writable.
-unsafe fn load_into(
+unsafe fn scene_into(
     out_scene: *mut *mut SceneHandle,
     error: *mut ErrorInfo,
-    load: impl FnOnce() -> Result<Scene, Error>,
+    make: impl FnOnce() -> Result<Scene, Error>,
 ) -> Code {
     fallible(error, || {
         // SAFETY: by the caller's contract.
         let out = unsafe { out_scene.as_mut() }
             .ok_or_else(|| simple_error(Code::NullArgument, "out_scene is NULL"))?;
         *out = std::ptr::null_mut();
-        *out = Box::into_raw(SceneHandle::new(load()?));
+        *out = Box::into_raw(SceneHandle::new(make()?));
         Ok(())
     })
 }
@@ -224,7 +224,7 @@ pub unsafe extern "C" fn b2s_load_file(
 ) -> Code {
     // SAFETY: by the caller's contract.
     unsafe {
-        load_into(out_scene, error, || {
+        scene_into(out_scene, error, || {
             let (path, options) = (arg_str(path, "path")?, arg_options(options));
             load_path(Path::new(path), &options)
         })
@@ -247,7 +247,7 @@ pub unsafe extern "C" fn b2s_load_memory(
 ) -> Code {
     // SAFETY: by the caller's contract.
     unsafe {
-        load_into(out_scene, error, || {
+        scene_into(out_scene, error, || {
             let bytes: &[u8] = match (data.is_null(), size) {
                 (true, 0) => &[],
                 (true, _) => return Err(simple_error(Code::NullArgument, "data is NULL")),
@@ -269,7 +269,7 @@ pub unsafe extern "C" fn b2s_scene_free(scene: *mut SceneHandle) {
         || (),
         || {
             if !scene.is_null() {
-                // SAFETY: made by Box::into_raw in load_into, freed once by contract.
+                // SAFETY: made by Box::into_raw in scene_into, freed once by contract.
                 drop(unsafe { Box::from_raw(scene) });
             }
         },
@@ -451,6 +451,233 @@ pub unsafe extern "C" fn b2s_write_file(
         let path = unsafe { arg_str(path, "path")? };
         write_path(scene, Path::new(path), &options)
     })
+}
+
+/// A scene under construction (opaque): `b2s_builder_new`, then `b2s_builder_add_*`, then
+/// `b2s_builder_finish` (or `b2s_builder_free` to abandon it). Not for use from two
+/// threads at once.
+pub struct BuilderHandle {
+    builder: Builder,
+}
+
+/// A new, empty scene builder. Never NULL.
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_builder_new() -> *mut BuilderHandle {
+    Box::into_raw(Box::new(BuilderHandle { builder: Builder::new() }))
+}
+
+/// Abandons a builder and everything added to it. NULL is ignored.
+///
+/// # Safety
+/// `builder` is NULL or a builder that was not finished or freed yet.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_free(builder: *mut BuilderHandle) {
+    guard(
+        || (),
+        || {
+            if !builder.is_null() {
+                // SAFETY: made by Box::into_raw in b2s_builder_new, freed once by contract.
+                drop(unsafe { Box::from_raw(builder) });
+            }
+        },
+    )
+}
+
+/// Reads an optional NUL-terminated string of a record.
+///
+/// # Safety
+/// `s` is NULL or NUL-terminated.
+unsafe fn optional_str<'a>(s: Str, what: &str) -> Result<Option<&'a str>, Error> {
+    match s.is_null() {
+        true => Ok(None),
+        // SAFETY: by the caller's contract.
+        false => unsafe { arg_str(s.0, what) }.map(Some),
+    }
+}
+
+/// Runs one addition to a builder: checks the pointers, stores the new index.
+///
+/// # Safety
+/// `builder` is NULL or a live builder; `record` NULL or valid; `out_index` NULL or
+/// writable; `error` NULL or writable.
+unsafe fn add<T>(
+    builder: *mut BuilderHandle,
+    record: *const T,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+    add: impl FnOnce(&mut Builder, &T) -> Result<u32, Error>,
+) -> Code {
+    fallible(error, || {
+        // SAFETY: by the caller's contract.
+        let (handle, record) = unsafe { (builder.as_mut(), record.as_ref()) };
+        let handle = handle.ok_or_else(|| simple_error(Code::NullArgument, "builder is NULL"))?;
+        let record = record.ok_or_else(|| simple_error(Code::NullArgument, "the record is NULL"))?;
+        let index = add(&mut handle.builder, record)?;
+        // SAFETY: by the caller's contract.
+        if let Some(out) = unsafe { out_index.as_mut() } {
+            *out = index;
+        }
+        Ok(())
+    })
+}
+
+/// # Safety
+/// `items` is NULL (only with `count` 0) or points to `count` readable items.
+unsafe fn arg_slice<'a, T>(items: *const T, count: u32, what: &str) -> Result<&'a [T], Error> {
+    match (items.is_null(), count) {
+        (true, 0) => Ok(&[]),
+        (true, _) => Err(simple_error(Code::NullArgument, &format!("{what} is NULL"))),
+        // SAFETY: `count` readable items by the caller's contract.
+        (false, _) => Ok(unsafe { std::slice::from_raw_parts(items, count as usize) }),
+    }
+}
+
+/// Sets the scene's gravity; NULL means none (the host decides).
+///
+/// # Safety
+/// `builder` is NULL or a live builder; `gravity` NULL or valid; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_set_gravity(
+    builder: *mut BuilderHandle,
+    gravity: *const Vec2,
+    error: *mut ErrorInfo,
+) -> Code {
+    fallible(error, || {
+        // SAFETY: by the caller's contract.
+        let handle = unsafe { builder.as_mut() }.ok_or_else(|| simple_error(Code::NullArgument, "builder is NULL"))?;
+        // SAFETY: by the caller's contract.
+        handle.builder.set_gravity(unsafe { gravity.as_ref() }.copied())
+    })
+}
+
+/// Adds user data; stores its index in `*out_index` (when not NULL), for the `user_data`
+/// field of fixtures, bodies and joints added later. `raw` (XML content, kept verbatim)
+/// wins; without it, `type_name` and `value` are written in the editor's form. The
+/// stored `type_name` and `value` are those the loader would find in the raw XML.
+///
+/// # Safety
+/// `builder` is NULL or a live builder; `user_data` NULL or valid, its strings NULL or
+/// NUL-terminated; `out_index` and `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_add_user_data(
+    builder: *mut BuilderHandle,
+    user_data: *const UserData,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        add(builder, user_data, out_index, error, |b, u| {
+            let raw = optional_str(u.raw, "raw")?;
+            let (type_name, value) = (optional_str(u.type_name, "type_name")?, optional_str(u.value, "value")?);
+            b.add_user_data(raw, type_name, value)
+        })
+    }
+}
+
+/// Adds a shape (its `name` is copied; its `vertices` range is ignored: the `count`
+/// vertices at `vertices` are copied instead) and stores its index in `*out_index`.
+/// Refused with the loader's codes (`bad-radius`, `bad-vertex-count`,
+/// `degenerate-polygon`, ...); the message names the shape's index.
+///
+/// # Safety
+/// `builder` is NULL or a live builder; `shape` NULL or valid, its name NULL or
+/// NUL-terminated; `vertices` NULL (with `count` 0) or `count` readable vectors;
+/// `out_index` and `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_add_shape(
+    builder: *mut BuilderHandle,
+    shape: *const Shape,
+    vertices: *const Vec2,
+    count: u32,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        add(builder, shape, out_index, error, |b, s| {
+            let vertices = arg_slice(vertices, count, "vertices")?;
+            b.add_shape(s, optional_str(s.name, "name")?, vertices)
+        })
+    }
+}
+
+/// Adds a fixture on a shape added before; stores its index in `*out_index`.
+///
+/// # Safety
+/// As for `b2s_builder_add_shape`, without vertices.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_add_fixture(
+    builder: *mut BuilderHandle,
+    fixture: *const Fixture,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { add(builder, fixture, out_index, error, |b, f| b.add_fixture(f, optional_str(f.name, "name")?)) }
+}
+
+/// Adds a body (its `fixtures` range is ignored: the `count` fixture indices at
+/// `fixtures` are copied instead, each of a fixture added before); stores its index.
+///
+/// # Safety
+/// As for `b2s_builder_add_shape`, with `fixtures` NULL (with `count` 0) or `count`
+/// readable indices.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_add_body(
+    builder: *mut BuilderHandle,
+    body: *const Body,
+    fixtures: *const u32,
+    count: u32,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        add(builder, body, out_index, error, |b, body| {
+            let fixtures = arg_slice(fixtures, count, "fixtures")?;
+            b.add_body(body, optional_str(body.name, "name")?, fixtures)
+        })
+    }
+}
+
+/// Adds a joint between bodies added before (a gear: after the two joints it couples);
+/// stores its index. Fields its kind does not have take that kind's defaults.
+///
+/// # Safety
+/// As for `b2s_builder_add_fixture`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_add_joint(
+    builder: *mut BuilderHandle,
+    joint: *const Joint,
+    out_index: *mut u32,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    unsafe { add(builder, joint, out_index, error, |b, j| b.add_joint(j, optional_str(j.name, "name")?)) }
+}
+
+/// Finishes the builder into an ordinary immutable scene, stored in `*out_scene` (free it
+/// with `b2s_scene_free`). The builder is freed in every case.
+///
+/// # Safety
+/// `builder` is NULL or a builder that was not finished or freed yet; `out_scene` NULL or
+/// writable; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_builder_finish(
+    builder: *mut BuilderHandle,
+    out_scene: *mut *mut SceneHandle,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: made by Box::into_raw in b2s_builder_new; taken once by contract.
+    let handle = (!builder.is_null()).then(|| unsafe { Box::from_raw(builder) });
+    // SAFETY: by the caller's contract.
+    unsafe {
+        scene_into(out_scene, error, || match handle {
+            Some(handle) => Ok(handle.builder.finish()),
+            None => Err(simple_error(Code::NullArgument, "builder is NULL")),
+        })
+    }
 }
 
 /// Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its

@@ -12,6 +12,7 @@
 //! The format is specified in the project's `spec/box2scene-format.md`; the C API
 //! conventions are in the README.
 
+mod builder;
 mod dump;
 pub mod error;
 pub mod ffi;
@@ -25,6 +26,7 @@ mod write;
 
 use std::path::Path;
 
+pub use builder::Builder;
 pub use error::{Code, Diagnostic, Error, Position, Severity};
 pub use write::{WriteOptions, joints_not_written, write};
 pub use scene::{

@@ -5,7 +5,7 @@
 
 use crate::error::Code;
 use crate::parse::{Parsed, Parser};
-use crate::scene::{BodyKind, Vec2};
+use crate::scene::{BodyKind, Joint, JointKind, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
 pub(crate) const MAX_POLYGON_VERTICES: usize = 8;
@@ -32,6 +32,14 @@ fn length_squared(a: Vec2) -> f32 {
     a.x * a.x + a.y * a.y
 }
 
+/// A circle's radius must be positive.
+pub fn circle(radius: f32) -> Checked {
+    if radius <= 0.0 {
+        return Err((Code::BadRadius, format!("a circle's <Radius> must be greater than 0, not {radius}")));
+    }
+    Ok(Geometry::Fine)
+}
+
 /// A polygon of 2 (a segment) to 8 vertices, judged the way Box2D 2.4.1's
 /// `b2PolygonShape::Set` will treat it: points closer than half the linear slop are merged,
 /// the convex hull is taken, and a hull of fewer than 3 points or (near) zero area would be
@@ -46,7 +54,7 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
             }
             return Ok(Geometry::Fine);
         }
-        0 | 1 => {
+        n if !(2..=MAX_POLYGON_VERTICES).contains(&n) => {
             return Err((Code::BadVertexCount, format!(
                 "a polygon needs 2 to {MAX_POLYGON_VERTICES} vertices, this one has {}", vertices.len()
             )));
@@ -150,6 +158,31 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
         }
     }
     Ok(Geometry::Fine)
+}
+
+/// The rules one joint can break on its own (its references are checked elsewhere).
+pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
+    if joint.body_a == joint.body_b {
+        return Err((Code::JointSelfReference, format!("the joint connects body {} to itself", joint.body_a)));
+    }
+    let kind = joint.kind();
+    if joint.enable_limit && joint.lower_limit > joint.upper_limit {
+        let (lower, upper) = match kind {
+            Some(JointKind::Revolute) => ("LowerAngle", "UpperAngle"),
+            _ => ("LowerTranslation", "UpperTranslation"),
+        };
+        return Err((Code::BadLimit, format!(
+            "{lower} {} is above {upper} {} with the limit enabled", joint.lower_limit, joint.upper_limit
+        )));
+    }
+    let has_axis = matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel));
+    if has_axis && joint.local_axis_a == Vec2::ZERO {
+        return Err((Code::ZeroAxis, "<LocalAxisA> is (0, 0): a joint axis needs a direction".into()));
+    }
+    if kind == Some(JointKind::Pulley) && joint.ratio <= 0.0 {
+        return Err((Code::BadRatio, format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio)));
+    }
+    Ok(())
 }
 
 /// "A dynamic body that contains a fixture whose density is zero is malformed", unless its

@@ -67,7 +67,7 @@ fn renumber(renumbered: &[u32], index: u32) -> u32 {
     renumbered.get(index as usize).copied().unwrap_or(index)
 }
 
-fn needs_version_2(scene: &Scene) -> bool {
+pub(crate) fn needs_version_2(scene: &Scene) -> bool {
     let shape = |s: &Shape| matches!(s.kind(), Some(ShapeKind::Edge | ShapeKind::Chain));
     let body = |b: &Body| b.gravity_scale.to_bits() != 1f32.to_bits();
     let joint = |j: &Joint| match j.kind() {
@@ -91,7 +91,7 @@ pub(crate) fn float_text(value: f32) -> String {
 
 /// Text content and attribute values: markup characters as entities, characters XML
 /// would change on reading (carriage returns) as character references.
-fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {

@@ -4,21 +4,22 @@
 use super::{JointOrigin, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Joint, JointKind, NONE, Vec2};
+use crate::validate;
 
 const JOINT: &[&str] = &[
-    "name", "userdata", "bodya", "bodyb", "jointa", "jointb", "collideconnected",
-    "localanchora", "localanchorb", "localaxisa", "referenceangle", "enablelimit",
-    "lowerangle", "upperangle", "lowertranslation", "uppertranslation", "enablemotor",
-    "motorspeed", "maxmotortorque", "maxmotorforce", "length", "frequencyhz", "dampingratio",
-    "groundanchora", "groundanchorb", "lengtha", "lengthb", "maxlengtha", "maxlengthb", "ratio",
-    "maxforce", "maxtorque", "maxlength", "linearoffset", "angularoffset", "correctionfactor",
+    "Name", "UserData", "BodyA", "BodyB", "JointA", "JointB", "CollideConnected",
+    "LocalAnchorA", "LocalAnchorB", "LocalAxisA", "ReferenceAngle", "EnableLimit",
+    "LowerAngle", "UpperAngle", "LowerTranslation", "UpperTranslation", "EnableMotor",
+    "MotorSpeed", "MaxMotorTorque", "MaxMotorForce", "Length", "FrequencyHz", "DampingRatio",
+    "GroundAnchorA", "GroundAnchorB", "LengthA", "LengthB", "MaxLengthA", "MaxLengthB", "Ratio",
+    "MaxForce", "MaxTorque", "MaxLength", "LinearOffset", "AngularOffset", "CorrectionFactor",
     // Farseer's spellings (spec section 8.1).
-    "breakpoint", "localxaxis1", "localxaxis", "axis", "worldanchora", "worldanchorb", "constant",
-    "biasfactor", "maximpulse", "softness", "targetangle", "minlength",
+    "Breakpoint", "LocalXAxis1", "LocalXAxis", "Axis", "WorldAnchorA", "WorldAnchorB", "Constant",
+    "BiasFactor", "MaxImpulse", "Softness", "TargetAngle", "MinLength",
 ];
 
 /// The elements that make a Farseer `Line` joint (February 2011 on) a wheel joint.
-const WHEEL_ONLY: [&str; 4] = ["frequencyhz", "dampingratio", "maxmotortorque", "localxaxis"];
+const WHEEL_ONLY: [&str; 4] = ["FrequencyHz", "DampingRatio", "MaxMotorTorque", "LocalXAxis"];
 
 /// Where a kind-specific element goes.
 enum Slot {
@@ -39,47 +40,87 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
     let anchored = !is(&[Gear, Motor, Unsupported]);
     let farseer_only = matches!(
         name,
-        "localanchora" | "localanchorb" | "biasfactor" | "maximpulse" | "softness" | "targetangle"
-            | "minlength" | "maxlength" | "frequencyhz" | "dampingratio"
+        "LocalAnchorA" | "LocalAnchorB" | "BiasFactor" | "MaxImpulse" | "Softness" | "TargetAngle"
+            | "MinLength" | "MaxLength" | "FrequencyHz" | "DampingRatio"
     );
     Some(match name {
-        "breakpoint" => Ignored,
+        "Breakpoint" => Ignored,
         _ if kind == Unsupported && farseer_only => Ignored,
-        "localanchora" if anchored => Vector(|j| &mut j.local_anchor_a),
-        "localanchorb" if anchored => Vector(|j| &mut j.local_anchor_b),
-        "localaxisa" if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "localxaxis1" if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
-        "localxaxis" if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "axis" if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "referenceangle" if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
-        "enablelimit" if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
-        "lowerangle" if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
-        "upperangle" if is(&[Revolute]) => Float(|j| &mut j.upper_limit),
-        "lowertranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.lower_limit),
-        "uppertranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
-        "enablemotor" if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
-        "motorspeed" if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
-        "maxmotortorque" if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
-        "maxmotorforce" if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
-        "length" if is(&[Distance]) => NonNegative(|j| &mut j.length),
-        "frequencyhz" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
-        "dampingratio" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
-        "groundanchora" | "worldanchora" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
-        "groundanchorb" | "worldanchorb" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
-        "constant" if is(&[Pulley]) => Ignored,
-        "lengtha" if is(&[Pulley]) => Float(|j| &mut j.length_a),
-        "lengthb" if is(&[Pulley]) => Float(|j| &mut j.length_b),
-        "maxlengtha" if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
-        "maxlengthb" if is(&[Pulley]) => Float(|j| &mut j.max_length_b),
-        "ratio" if is(&[Pulley, Gear]) => Float(|j| &mut j.ratio),
-        "maxforce" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_force),
-        "maxtorque" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_torque),
-        "maxlength" if is(&[Rope]) => NonNegative(|j| &mut j.max_length),
-        "linearoffset" if is(&[Motor]) => Vector(|j| &mut j.linear_offset),
-        "angularoffset" if is(&[Motor]) => Float(|j| &mut j.angular_offset),
-        "correctionfactor" if is(&[Motor]) => Float(|j| &mut j.correction_factor),
+        "LocalAnchorA" if anchored => Vector(|j| &mut j.local_anchor_a),
+        "LocalAnchorB" if anchored => Vector(|j| &mut j.local_anchor_b),
+        "LocalAxisA" if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        "LocalXAxis1" if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
+        "LocalXAxis" if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        "Axis" if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        "ReferenceAngle" if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
+        "EnableLimit" if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
+        "LowerAngle" if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
+        "UpperAngle" if is(&[Revolute]) => Float(|j| &mut j.upper_limit),
+        "LowerTranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.lower_limit),
+        "UpperTranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
+        "EnableMotor" if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
+        "MotorSpeed" if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
+        "MaxMotorTorque" if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
+        "MaxMotorForce" if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
+        "Length" if is(&[Distance]) => NonNegative(|j| &mut j.length),
+        "FrequencyHz" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
+        "DampingRatio" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
+        "GroundAnchorA" | "WorldAnchorA" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
+        "GroundAnchorB" | "WorldAnchorB" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
+        "Constant" if is(&[Pulley]) => Ignored,
+        "LengthA" if is(&[Pulley]) => Float(|j| &mut j.length_a),
+        "LengthB" if is(&[Pulley]) => Float(|j| &mut j.length_b),
+        "MaxLengthA" if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
+        "MaxLengthB" if is(&[Pulley]) => Float(|j| &mut j.max_length_b),
+        "Ratio" if is(&[Pulley, Gear]) => Float(|j| &mut j.ratio),
+        "MaxForce" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_force),
+        "MaxTorque" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_torque),
+        "MaxLength" if is(&[Rope]) => NonNegative(|j| &mut j.max_length),
+        "LinearOffset" if is(&[Motor]) => Vector(|j| &mut j.linear_offset),
+        "AngularOffset" if is(&[Motor]) => Float(|j| &mut j.angular_offset),
+        "CorrectionFactor" if is(&[Motor]) => Float(|j| &mut j.correction_factor),
         _ => return None,
     })
+}
+
+/// The joint as the format can hold it: the defaults of its kind, then every field the
+/// format has for that kind taken from `given` (the common fields included). Fails on a
+/// non-finite value or a negative one where the format forbids it, naming the element.
+pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
+    let kind = given.kind().ok_or((Code::InvalidArgument, format!("unknown joint kind {}", given.kind)))?;
+    let mut joint = Joint {
+        name: given.name,
+        user_data: given.user_data,
+        body_a: given.body_a,
+        body_b: given.body_b,
+        collide_connected: given.collide_connected,
+        ..Joint::new(kind)
+    };
+    if kind == JointKind::Gear {
+        (joint.joint_a, joint.joint_b) = (given.joint_a, given.joint_b);
+    }
+    let mut source = *given;
+    let finite = |name: &str, v: f32| match v.is_finite() {
+        true => Ok(v),
+        false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
+    };
+    for &name in JOINT {
+        match slot(kind, name) {
+            Some(Slot::Vector(field)) => {
+                let v = *field(&mut source);
+                *field(&mut joint) = Vec2::new(finite(name, v.x)?, finite(name, v.y)?);
+            }
+            Some(Slot::Float(field)) => *field(&mut joint) = finite(name, *field(&mut source))?,
+            Some(Slot::NonNegative(field)) => {
+                let v = finite(name, *field(&mut source))?;
+                *field(&mut joint) = super::not_negative(&format!("<{name}>"), v, 0)
+                    .map_err(|p| (p.code, p.message))?;
+            }
+            Some(Slot::Flag(field)) => *field(&mut joint) = *field(&mut source),
+            Some(Slot::Ignored) | None => {}
+        }
+    }
+    Ok(joint)
 }
 
 fn joint_kind(value: &str) -> Option<JointKind> {
@@ -112,8 +153,8 @@ impl<'a> Parser<'a> {
                 continue;
             };
             let legacy = self.version == 0;
-            let common = matches!(name, "name" | "userdata" | "bodya" | "bodyb" | "collideconnected");
-            let named_joint = matches!(name, "jointa" | "jointb") && (legacy || kind == JointKind::Gear);
+            let common = matches!(name, "Name" | "UserData" | "BodyA" | "BodyB" | "CollideConnected");
+            let named_joint = matches!(name, "JointA" | "JointB") && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
             if !common && !named_joint && slot.is_none() {
                 let message = format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
@@ -124,20 +165,20 @@ impl<'a> Parser<'a> {
             if repeated {
                 self.duplicate(&tag, &child)?;
             }
-            if kind == JointKind::Weld && matches!(name, "frequencyhz" | "dampingratio") {
+            if kind == JointKind::Weld && matches!(name, "FrequencyHz" | "DampingRatio") {
                 self.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
-                "name" => joint.name = self.string(&child)?,
-                "userdata" => joint.user_data = self.user_data(&child)?,
-                "collideconnected" => joint.collide_connected = self.boolean(&child)?,
-                "bodya" => (joint.body_a, at.body_a) = self.id(&child)?,
-                "bodyb" => (joint.body_b, at.body_b) = self.id(&child)?,
+                "Name" => joint.name = self.string(&child)?,
+                "UserData" => joint.user_data = self.user_data(&child)?,
+                "CollideConnected" => joint.collide_connected = self.boolean(&child)?,
+                "BodyA" => (joint.body_a, at.body_a) = self.id(&child)?,
+                "BodyB" => (joint.body_b, at.body_b) = self.id(&child)?,
                 // Legacy files name the bodies JointA and JointB.
-                "jointa" if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
-                "jointb" if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
-                "jointa" => (joint.joint_a, at.joint_a) = self.id(&child)?,
-                "jointb" => (joint.joint_b, at.joint_b) = self.id(&child)?,
+                "JointA" if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
+                "JointB" if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
+                "JointA" => (joint.joint_a, at.joint_a) = self.id(&child)?,
+                "JointB" => (joint.joint_b, at.joint_b) = self.id(&child)?,
                 _ => match slot.expect("elements without a slot were skipped above") {
                     Slot::Vector(field) => *field(&mut joint) = self.vector(&child)?,
                     Slot::Float(field) => *field(&mut joint) = self.float(&child)?,
@@ -161,10 +202,10 @@ impl<'a> Parser<'a> {
     fn line_is_wheel(&mut self, tag: &Tag<'a>, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
         let wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
-        if !seen.contains(JOINT, "frequencyhz") {
+        if !seen.contains(JOINT, "FrequencyHz") {
             joint.frequency_hz = wheel.frequency_hz;
         }
-        if !seen.contains(JOINT, "dampingratio") {
+        if !seen.contains(JOINT, "DampingRatio") {
             joint.damping_ratio = wheel.damping_ratio;
         }
         self.warn(
@@ -215,13 +256,6 @@ impl<'a> Parser<'a> {
                 return Err(self.missing(tag, &format!("<{name}>: a joint names both of its bodies")));
             }
         }
-        if joint.body_a == joint.body_b {
-            return Err(problem(
-                Code::JointSelfReference,
-                at.body_b,
-                format!("the joint connects body {} to itself", joint.body_a),
-            ));
-        }
         let kind = joint.kind();
         if kind == Some(JointKind::Gear) {
             for (index, name) in [(joint.joint_a, "JointA"), (joint.joint_b, "JointB")] {
@@ -230,24 +264,9 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        if joint.enable_limit && joint.lower_limit > joint.upper_limit {
-            let (lower, upper) = match kind {
-                Some(JointKind::Revolute) => ("LowerAngle", "UpperAngle"),
-                _ => ("LowerTranslation", "UpperTranslation"),
-            };
-            return Err(problem(
-                Code::BadLimit,
-                tag.at,
-                format!("{lower} {} is above {upper} {} with the limit enabled", joint.lower_limit, joint.upper_limit),
-            ));
-        }
-        let has_axis = matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel));
-        if has_axis && joint.local_axis_a == Vec2::ZERO {
-            return Err(problem(Code::ZeroAxis, tag.at, "<LocalAxisA> is (0, 0): a joint axis needs a direction"));
-        }
-        if kind == Some(JointKind::Pulley) && joint.ratio <= 0.0 {
-            return Err(problem(Code::BadRatio, tag.at, format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio)));
-        }
-        Ok(())
+        validate::joint(joint).map_err(|(code, message)| {
+            let at = if code == Code::JointSelfReference { at.body_b } else { tag.at };
+            problem(code, at, message)
+        })
     }
 }

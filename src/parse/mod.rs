@@ -10,6 +10,9 @@ mod shape;
 mod user_data;
 mod world;
 
+pub(crate) use joint::canonical_joint;
+pub(crate) use user_data::user_data_fragment;
+
 use std::borrow::Cow;
 
 use quick_xml::events::attributes::AttrError;

@@ -70,12 +70,8 @@ impl<'a> Parser<'a> {
                         return Err(self.missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
                     }
                 }
-                if shape.radius <= 0.0 {
-                    return Err(problem(
-                        Code::BadRadius,
-                        radius_at,
-                        format!("a circle's <Radius> must be greater than 0, not {}", shape.radius),
-                    ));
+                if let Err((code, message)) = validate::circle(shape.radius) {
+                    return Err(problem(code, radius_at, message));
                 }
             }
             ShapeKind::Edge => {

@@ -2,7 +2,33 @@
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (spec section 7).
 
 use super::{Node, Parsed, Parser, Tag, trim_xml};
+use crate::error::Code;
+use crate::input::Decoded;
 use crate::scene::{Str, UserData};
+use crate::LoadOptions;
+
+/// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would: the
+/// type name and value text when it has the editor's form. Fails when `raw` is not
+/// well-formed XML content.
+pub(crate) fn user_data_fragment(raw: &str) -> Result<(Option<String>, Option<String>), (Code, String)> {
+    let document = format!("<UserData>{raw}</UserData>");
+    let decoded = Decoded { text: document.as_str().into(), encoding: crate::input::Encoding::Utf8 { bom: false } };
+    let options = LoadOptions::default();
+    let mut parser = Parser::new(&decoded, &options);
+    let read = |p: &mut Parser| -> Parsed<EditorForm> {
+        let Node::Open(tag) = p.next_node()? else { unreachable!("the document starts with <UserData>") };
+        let (_, form) = p.walk_user_data(&tag)?;
+        match p.next_node()? {
+            Node::Eof => Ok(form),
+            _ => Err(super::problem(Code::MalformedXml, 0, "closes <UserData> early")),
+        }
+    };
+    let form = read(&mut parser).map_err(|p| (p.code, format!("the UserData is not well-formed XML content: {}", p.message)))?;
+    Ok(match form.complete() {
+        true => (form.type_name.map(|t| trim_xml(&t).to_owned()), form.value.map(|v| trim_xml(&v).to_owned())),
+        false => (None, None),
+    })
+}
 
 /// What a walk over a UserData subtree saw of the editor's form.
 #[derive(Default)]

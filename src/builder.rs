@@ -1,0 +1,297 @@
+//! Building a scene from records, as a host does to save its level: the records the loader
+//! produces, checked with the loader's rules (same codes and messages, the object's index
+//! instead of a line), finished into an ordinary immutable scene.
+//!
+//! What is added is made canonical, so that the writer writes it and the loader reads it
+//! back unchanged: names are trimmed of XML white space (as the loader trims them), fields
+//! that the format does not have for an object's kind take that kind's defaults, and
+//! UserData gets the raw XML and the type name and value the loader would find in it.
+#![forbid(unsafe_code)]
+
+use crate::error::{Code, Diagnostic, Error, Position, Severity};
+use crate::parse::{canonical_joint, user_data_fragment};
+use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
+use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
+use crate::text::trim_xml;
+use crate::validate::{self, Geometry};
+use crate::write::{escape, needs_version_2};
+use crate::LoadOptions;
+
+/// A scene under construction. Objects refer to objects added before them.
+#[derive(Default)]
+pub struct Builder {
+    scene: SceneBuilder,
+}
+
+/// The error for object `index` of `what` ("shape", "fixture", ...).
+fn refused(what: &str, index: usize, (code, message): (Code, String)) -> Error {
+    Error { code, position: Position::default(), message: format!("{what} {index}: {message}") }
+}
+
+fn finite(name: &str, values: &[f32]) -> Result<(), (Code, String)> {
+    match values.iter().all(|v| v.is_finite()) {
+        true => Ok(()),
+        false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
+    }
+}
+
+fn not_negative(name: &str, value: f32) -> Result<(), (Code, String)> {
+    match value < 0.0 {
+        true => Err((Code::NegativeValue, format!("<{name}> is {value}, but it cannot be negative"))),
+        false => Ok(()),
+    }
+}
+
+/// An index of a container of `count` objects, or the loader's `id-out-of-range` error.
+fn reference(index: u32, count: usize, names: &str, what: &str) -> Result<(), (Code, String)> {
+    match (index as usize) < count {
+        true => Ok(()),
+        false => Err((Code::IdOutOfRange, format!("names {what} {index}, but the scene has {count} {names}"))),
+    }
+}
+
+impl Builder {
+    pub fn new() -> Builder {
+        Builder::default()
+    }
+
+    /// The gravity, or none (the host decides).
+    pub fn set_gravity(&mut self, gravity: Option<Vec2>) -> Result<(), Error> {
+        if let Some(g) = gravity {
+            finite("Gravity", &[g.x, g.y]).map_err(|e| refused("world", 0, e))?;
+        }
+        self.scene.gravity = gravity;
+        Ok(())
+    }
+
+    fn name(&mut self, name: Option<&str>) -> Str {
+        name.map_or(Str::NULL, |n| self.scene.add_str(trim_xml(n)))
+    }
+
+    fn user_data_reference(&self, index: u32) -> Result<(), (Code, String)> {
+        match index {
+            NONE => Ok(()),
+            _ => reference(index, self.scene.user_data.len(), "user data", "user data"),
+        }
+    }
+
+    fn warn(&mut self, what: &str, index: usize, code: Code, message: &str) {
+        let message = self.scene.add_str(&format!("{what} {index}: {message}"));
+        self.scene.diagnostics.push(Diagnostic {
+            message,
+            byte_offset: 0,
+            code: code as u32,
+            severity: Severity::Warning as u32,
+            line: 0,
+            column: 0,
+        });
+    }
+
+    /// Adds user data and returns its index. `raw` is XML content, kept verbatim; without
+    /// it, a type name and value are written in the editor's form.
+    pub fn add_user_data(&mut self, raw: Option<&str>, type_name: Option<&str>, value: Option<&str>) -> Result<u32, Error> {
+        let index = self.scene.user_data.len();
+        let raw = match (raw, type_name) {
+            (Some(raw), _) => raw.to_owned(),
+            (None, Some(type_name)) => format!(
+                "<Type>{}</Type><Value><string>{}</string></Value>",
+                escape(trim_xml(type_name)),
+                escape(trim_xml(value.unwrap_or_default()))
+            ),
+            (None, None) if value.is_some() => {
+                let why = "a UserData value needs a type name (or raw XML)".to_owned();
+                return Err(refused("user data", index, (Code::InvalidArgument, why)));
+            }
+            (None, None) => String::new(),
+        };
+        let (type_name, value) = user_data_fragment(&raw).map_err(|e| refused("user data", index, e))?;
+        let user_data = UserData {
+            raw: self.scene.add_str(&raw),
+            type_name: type_name.map_or(Str::NULL, |t| self.scene.add_str(&t)),
+            value: value.map_or(Str::NULL, |v| self.scene.add_str(&v)),
+        };
+        self.scene.user_data.push(user_data);
+        Ok(index as u32)
+    }
+
+    /// Adds a shape with `vertices` (polygons, edges, chains) and returns its index.
+    pub fn add_shape(&mut self, shape: &Shape, name: Option<&str>, vertices: &[Vec2]) -> Result<u32, Error> {
+        let index = self.scene.shapes.len();
+        let canonical = self.check_shape(shape, vertices).map_err(|e| refused("shape", index, e))?;
+        let first = self.scene.vertices.len() as u32;
+        self.scene.vertices.extend_from_slice(vertices);
+        let name = self.name(name);
+        self.scene.shapes.push(Shape { name, vertices: Range { first, count: vertices.len() as u32 }, ..canonical });
+        Ok(index as u32)
+    }
+
+    fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Result<Shape, (Code, String)> {
+        let kind = shape.kind().ok_or((Code::InvalidArgument, format!("unknown shape kind {}", shape.kind)))?;
+        let points: Vec<f32> = vertices.iter().flat_map(|v| [v.x, v.y]).collect();
+        finite("Vertex", &points)?;
+        let mut canonical = Shape::new(kind);
+        let geometry = match kind {
+            ShapeKind::Circle => {
+                finite("Radius", &[shape.radius])?;
+                finite("Position", &[shape.position.x, shape.position.y])?;
+                (canonical.radius, canonical.position) = (shape.radius, shape.position);
+                if !vertices.is_empty() {
+                    return Err((Code::BadVertexCount, "a circle has no vertices".into()));
+                }
+                validate::circle(shape.radius)?
+            }
+            ShapeKind::Polygon => {
+                if shape.centroid_given {
+                    finite("Centroid", &[shape.centroid.x, shape.centroid.y])?;
+                    (canonical.centroid, canonical.centroid_given) = (shape.centroid, true);
+                }
+                validate::polygon(vertices)?
+            }
+            ShapeKind::Edge | ShapeKind::Chain => {
+                let ghosts = [shape.prev_vertex.x, shape.prev_vertex.y, shape.next_vertex.x, shape.next_vertex.y];
+                finite("Vertex0", &ghosts)?;
+                canonical.prev_vertex = shape.prev_vertex;
+                canonical.next_vertex = shape.next_vertex;
+                canonical.has_prev_vertex = shape.has_prev_vertex;
+                canonical.has_next_vertex = shape.has_next_vertex;
+                match kind {
+                    ShapeKind::Edge if vertices.len() != 2 => {
+                        return Err((Code::BadVertexCount, format!("an edge has 2 vertices, not {}", vertices.len())));
+                    }
+                    ShapeKind::Edge => validate::edge(vertices)?,
+                    _ => {
+                        let most = LoadOptions::default().max_chain_vertices as usize;
+                        if vertices.len() > most {
+                            return Err((Code::LimitExceeded, format!("a chain has at most {most} vertices (max_chain_vertices)")));
+                        }
+                        canonical.is_loop = shape.is_loop;
+                        validate::chain(vertices, shape.is_loop)?
+                    }
+                }
+            }
+        };
+        if let Geometry::Warn(code, message) = geometry {
+            let index = self.scene.shapes.len();
+            self.warn("shape", index, code, &message);
+        }
+        Ok(canonical)
+    }
+
+    /// Adds a fixture on an already added shape and returns its index.
+    pub fn add_fixture(&mut self, fixture: &Fixture, name: Option<&str>) -> Result<u32, Error> {
+        let index = self.scene.fixtures.len();
+        self.check_fixture(fixture).map_err(|e| refused("fixture", index, e))?;
+        let name = self.name(name);
+        self.scene.fixtures.push(Fixture { name, ..*fixture });
+        Ok(index as u32)
+    }
+
+    fn check_fixture(&self, f: &Fixture) -> Result<(), (Code, String)> {
+        reference(f.shape, self.scene.shapes.len(), "shapes", "shape")?;
+        for (name, value) in [("Density", f.density), ("Friction", f.friction), ("Restitution", f.restitution)] {
+            finite(name, &[value])?;
+            not_negative(name, value)?;
+        }
+        self.user_data_reference(f.user_data)
+    }
+
+    /// Adds a body with already added `fixtures` and returns its index.
+    pub fn add_body(&mut self, body: &Body, name: Option<&str>, fixtures: &[u32]) -> Result<u32, Error> {
+        let index = self.scene.bodies.len();
+        let canonical = self.check_body(body, fixtures).map_err(|e| refused("body", index, e))?;
+        let first = self.scene.fixture_ids.len() as u32;
+        self.scene.fixture_ids.extend_from_slice(fixtures);
+        let name = self.name(name);
+        let canonical = Body { name, fixtures: Range { first, count: fixtures.len() as u32 }, ..canonical };
+        self.scene.bodies.push(canonical);
+        if let Some(message) = self.zero_density(&canonical) {
+            self.warn("body", index, Code::DynamicBodyZeroDensity, &message);
+        }
+        Ok(index as u32)
+    }
+
+    fn check_body(&self, b: &Body, fixtures: &[u32]) -> Result<Body, (Code, String)> {
+        let kind = b.kind().ok_or((Code::InvalidArgument, format!("unknown body kind {}", b.kind)))?;
+        let floats = [
+            ("Position", b.position.x), ("Position", b.position.y), ("Angle", b.angle),
+            ("LinearVelocity", b.linear_velocity.x), ("LinearVelocity", b.linear_velocity.y),
+            ("AngularVelocity", b.angular_velocity), ("LinearDamping", b.linear_damping),
+            ("AngularDamping", b.angular_damping), ("GravityScale", b.gravity_scale),
+            ("InertiaScale", b.inertia_scale),
+        ];
+        for (name, value) in floats {
+            finite(name, &[value])?;
+        }
+        let mut mass = Body::new(kind).mass_data;
+        let m = b.mass_data;
+        if m.mass_given {
+            finite("Mass", &[m.mass])?;
+            not_negative("Mass", m.mass)?;
+            (mass.mass, mass.mass_given) = (m.mass, true);
+        }
+        if m.center_given {
+            finite("Center", &[m.center.x, m.center.y])?;
+            (mass.center, mass.center_given) = (m.center, true);
+        }
+        if m.inertia_given {
+            finite("Inertia", &[m.inertia])?;
+            not_negative("Inertia", m.inertia)?;
+            (mass.inertia, mass.inertia_given) = (m.inertia, true);
+        }
+        for &id in fixtures {
+            reference(id, self.scene.fixtures.len(), "fixtures", "fixture")?;
+        }
+        self.user_data_reference(b.user_data)?;
+        Ok(Body { mass_data: mass, ..*b })
+    }
+
+    /// The loader's `dynamic-body-zero-density` rule for one body.
+    fn zero_density(&self, body: &Body) -> Option<String> {
+        if body.kind() != Some(BodyKind::Dynamic) || body.mass_data.mass_given {
+            return None;
+        }
+        let ids = &self.scene.fixture_ids[body.fixtures.indices()];
+        let f = ids.iter().find(|&&f| self.scene.fixtures[f as usize].density == 0.0)?;
+        Some(format!("has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"))
+    }
+
+    /// Adds a joint between already added bodies (a gear: after its two joints) and
+    /// returns its index. Farseer-only (unsupported) joints cannot be built.
+    pub fn add_joint(&mut self, joint: &Joint, name: Option<&str>) -> Result<u32, Error> {
+        let index = self.scene.joints.len();
+        let canonical = self.check_joint(joint).map_err(|e| refused("joint", index, e))?;
+        let name = self.name(name);
+        self.scene.joints.push(Joint { name, ..canonical });
+        Ok(index as u32)
+    }
+
+    fn check_joint(&self, joint: &Joint) -> Result<Joint, (Code, String)> {
+        if joint.kind() == Some(JointKind::Unsupported) {
+            return Err((Code::InvalidArgument, "Farseer-only joints have no Box2Scene form and cannot be built".into()));
+        }
+        let canonical = canonical_joint(joint)?;
+        reference(canonical.body_a, self.scene.bodies.len(), "bodies", "body")?;
+        reference(canonical.body_b, self.scene.bodies.len(), "bodies", "body")?;
+        validate::joint(&canonical)?;
+        if canonical.kind() == Some(JointKind::Gear) {
+            for target in [canonical.joint_a, canonical.joint_b] {
+                let kind = self.scene.joints.get(target as usize).and_then(Joint::kind);
+                if !matches!(kind, Some(JointKind::Revolute | JointKind::Prismatic)) {
+                    let count = self.scene.joints.len();
+                    return Err((Code::BadGearJoint, format!(
+                        "the gear names joint {target} (the scene has {count} joints); a gear couples two revolute or prismatic joints added before it"
+                    )));
+                }
+            }
+        }
+        self.user_data_reference(canonical.user_data)?;
+        Ok(canonical)
+    }
+
+    /// The finished, immutable scene, with the version the writer would give it.
+    pub fn finish(self) -> Scene {
+        let mut scene = self.scene.freeze();
+        scene.version = if needs_version_2(&scene) { 2 } else { 1 };
+        scene
+    }
+}
