@@ -6,37 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include "test_macros.h"
-#include "test_scenes.hpp"
-
-/// A scene loaded and built into its own world (gravity (0, -10) unless the file says).
-struct World {
-    ScenePtr scene;
-    b2World world{b2Vec2(0.0f, -10.0f)};
-    box2scene::Built built;
-
-    explicit World(const char* xml) : scene(load_text(xml)) {
-        world.SetGravity(box2scene::scene_gravity(scene.get(), world.GetGravity()));
-        built = box2scene::build_world(scene.get(), world);
-    }
-    bool ok() const { return scene != nullptr && built.reports.empty(); }
-    b2Body* body(size_t i) const { return built.bodies.at(i); }
-    b2Joint* joint(size_t i) const { return built.joints.at(i); }
-};
-
-/// Steps 120 times at 60 Hz; false as soon as `holds` is false after a step.
-static bool holds_for_two_seconds(b2World& world, const std::function<bool()>& holds) {
-    for (int i = 0; i < 120; ++i) {
-        world.Step(1.0f / 60.0f, 8, 3);
-        if (!holds()) {
-            std::fprintf(stderr, "broken after step %d\n", i + 1);
-            return false;
-        }
-    }
-    return true;
-}
+#include "test_worlds.hpp"
 
 static int revolute_pendulum_keeps_its_radius() {
     World w(R"(<World Version="1">
@@ -54,7 +26,7 @@ static int revolute_pendulum_keeps_its_radius() {
     b2Vec2 pivot(0.0f, 10.0f);
     b2Body* bob = w.body(1);
     float lowest = bob->GetPosition().y;
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         lowest = std::min(lowest, bob->GetPosition().y);
         return std::fabs(b2Distance(pivot, bob->GetPosition()) - 5.0f) < 0.05f;
     }));
@@ -80,7 +52,7 @@ static int rigid_distance_joint_keeps_its_length() {
     ENSURE(w.ok());
     b2Body* end = w.body(1);
     float lowest = end->GetPosition().y;
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         lowest = std::min(lowest, end->GetPosition().y);
         return std::fabs(b2Distance(b2Vec2(0.0f, 10.0f), end->GetPosition()) - 3.0f) < 0.03f;
     }));
@@ -107,7 +79,7 @@ static int prismatic_body_stays_on_its_axis() {
     b2Vec2 origin(2.0f, 5.0f);
     b2Vec2 axis(1.0f, 1.0f);
     axis.Normalize();
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         b2Vec2 moved = slider->GetPosition() - origin;
         return std::fabs(b2Cross(moved, axis)) < 0.01f && std::fabs(slider->GetAngle()) < 0.01f;
     }));
@@ -137,7 +109,7 @@ static int pulley_keeps_its_total_length() {
     auto* pulley = static_cast<b2PulleyJoint*>(w.joint(0));
     ENSURE_FLOAT(pulley->GetRatio(), 2.0f);
     ENSURE(!pulley->GetCollideConnected());
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         float total = pulley->GetCurrentLengthA() + 2.0f * pulley->GetCurrentLengthB();
         return std::fabs(total - 13.0f) < 0.13f;
     }));
@@ -167,7 +139,7 @@ static int weld_keeps_its_relative_angle() {
     ENSURE(w.ok());
     b2Body* a = w.body(0);
     b2Body* b = w.body(1);
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         return std::fabs(b->GetAngle() - a->GetAngle() - 0.3f) < 0.01f;
     }));
     ENSURE(std::fabs(a->GetAngle()) > 0.5f); // the pair turned
@@ -207,7 +179,7 @@ static int gear_keeps_its_ratio() {
     ENSURE_EQ(gear->GetType(), e_gearJoint);
     ENSURE(gear->GetJoint1() == first && gear->GetJoint2() == second);
     ENSURE_FLOAT(gear->GetRatio(), 2.0f);
-    ENSURE(holds_for_two_seconds(w.world, [&] {
+    ENSURE(holds_for_steps(w.world, 120, [&] {
         return std::fabs(first->GetJointAngle() + 2.0f * second->GetJointAngle()) < 1e-3f;
     }));
     ENSURE(std::fabs(first->GetJointAngle()) > 0.2f); // they turned
