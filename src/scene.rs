@@ -59,6 +59,11 @@ impl Str {
         self.0.is_null()
     }
 
+    /// The pointer a C host reads (NULL when absent).
+    pub fn as_ptr(self) -> *const c_char {
+        self.0
+    }
+
     /// While a scene is being built a string is its pool offset plus one, carried in the
     /// pointer's address; [`Str::rebase`] turns it into a real pointer once the pool is final.
     pub(crate) fn pending(offset: usize) -> Str {
