@@ -23,6 +23,12 @@
 #define B2S_VERSION_STRING "0.1.0"
 
 /**
+ * The most warnings a scene keeps; a hostile file could otherwise hold one per element.
+ * Past it, one last `warnings-truncated` warning counts the rest.
+ */
+#define B2S_MAX_WARNINGS (1 << 40)
+
+/**
  * Bytes in `b2s_error::message`, the terminating NUL included.
  */
 #define B2S_ERROR_MESSAGE_SIZE 256
@@ -146,6 +152,10 @@ enum b2s_code
   B2S_CODE_DYNAMIC_BODY_ZERO_DENSITY = 107,
   B2S_CODE_FARSEER_ONLY_JOINT = 108,
   B2S_CODE_LINE_JOINT_IS_WHEEL = 109,
+  /**
+   * The file had more warnings than a scene keeps; this last one counts the rest.
+   */
+  B2S_CODE_WARNINGS_TRUNCATED = 110,
   /**
    * A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
    */

@@ -94,6 +94,8 @@ pub enum Code {
     DynamicBodyZeroDensity = 107,
     FarseerOnlyJoint = 108,
     LineJointIsWheel = 109,
+    /// The file had more warnings than a scene keeps; this last one counts the rest.
+    WarningsTruncated = 110,
 
     // What the Box2D adapter reports.
     /// A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
@@ -164,6 +166,7 @@ impl Code {
         Code::DynamicBodyZeroDensity,
         Code::FarseerOnlyJoint,
         Code::LineJointIsWheel,
+        Code::WarningsTruncated,
         Code::LossyLineMotor,
         Code::SkippedJoint,
         Code::SkippedDependent,
@@ -231,6 +234,7 @@ impl Code {
             Code::DynamicBodyZeroDensity => c"dynamic-body-zero-density",
             Code::FarseerOnlyJoint => c"farseer-only-joint",
             Code::LineJointIsWheel => c"line-joint-is-wheel",
+            Code::WarningsTruncated => c"warnings-truncated",
             Code::LossyLineMotor => c"lossy-line-motor",
             Code::SkippedJoint => c"skipped-joint",
             Code::SkippedDependent => c"skipped-dependent",
@@ -249,6 +253,10 @@ impl fmt::Display for Code {
         f.write_str(self.name())
     }
 }
+
+/// The most warnings a scene keeps; a hostile file could otherwise hold one per element.
+/// Past it, one last `warnings-truncated` warning counts the rest.
+pub const MAX_WARNINGS: usize = 1000;
 
 /// How bad a diagnostic is.
 #[repr(u32)]

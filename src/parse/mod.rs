@@ -19,7 +19,7 @@ use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
-use crate::error::{Code, Diagnostic, Error, Severity};
+use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
 use crate::input::{self, Decoded, Encoding, Locator};
 use crate::scene::{Scene, SceneBuilder, Vec2};
 use crate::text::{self, BadValue, trim_xml};
@@ -41,8 +41,12 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
             message: problem.message,
         });
     }
-    let Parser { mut scene, mut warnings, .. } = parser;
+    let Parser { mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), .. } = parser;
     warnings.sort_by_key(|w| w.at);
+    if dropped > 0 {
+        let message = format!("{dropped} more warnings from here on were not kept (a scene keeps {MAX_WARNINGS})");
+        warnings.push(problem(Code::WarningsTruncated, first_dropped, message));
+    }
     for w in warnings {
         let position = locator.locate(w.at);
         let message = scene.add_str(&w.message);
@@ -177,6 +181,8 @@ pub struct Parser<'a> {
     pub scene: SceneBuilder,
     pub origins: Origins,
     warnings: Vec<Problem>,
+    /// Warnings past [`MAX_WARNINGS`]: how many, and where the first was.
+    dropped_warnings: (u64, usize),
 }
 
 impl<'a> Parser<'a> {
@@ -197,6 +203,7 @@ impl<'a> Parser<'a> {
             scene: SceneBuilder::default(),
             origins: Origins::default(),
             warnings: Vec::new(),
+            dropped_warnings: (0, 0),
         }
     }
 
@@ -210,7 +217,15 @@ impl<'a> Parser<'a> {
         if self.options.strict {
             return Err(Problem { message: format!("{} (strict mode)", w.message), ..w });
         }
-        self.warnings.push(w);
+        if self.warnings.len() < MAX_WARNINGS {
+            self.warnings.push(w);
+        } else {
+            let (count, first) = &mut self.dropped_warnings;
+            if *count == 0 {
+                *first = w.at;
+            }
+            *count += 1;
+        }
         Ok(())
     }
 

@@ -1,0 +1,374 @@
+//! Hostile input: every case gets a clear error with its code and position (or loads), never
+//! a crash, a hang, runaway memory or a partial scene.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use box2scene::{Code, Error, LoadOptions, Scene, load};
+
+fn load_bytes(bytes: &[u8]) -> Result<Scene, Error> {
+    load(bytes, &LoadOptions::default())
+}
+
+fn expect(bytes: &[u8], code: Code, line: u32, column: u32) -> Error {
+    let error = load_bytes(bytes).expect_err("hostile input must not load");
+    assert_eq!((error.code, error.position.line, error.position.column), (code, line, column), "{}", error.message);
+    error
+}
+
+const MARK: char = '⌖';
+
+/// Loads `marked` without its `⌖` and expects `code` at the marker's line and column.
+fn expect_at(marked: &str, code: Code) -> Error {
+    let at = marked.find(MARK).expect("the case marks its position");
+    let before = &marked[..at];
+    let line = before.matches('\n').count() as u32 + 1;
+    let column = before.rsplit('\n').next().unwrap().chars().count() as u32 + 1;
+    expect(marked.replacen(MARK, "", 1).as_bytes(), code, line, column)
+}
+
+/// Counts the bytes this test binary holds, so that a test can see what a load allocates.
+struct Counting;
+
+static HELD: AtomicUsize = AtomicUsize::new(0);
+static PEAK: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: every call is forwarded to the system allocator unchanged; only counted.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let held = HELD.fetch_add(layout.size(), Ordering::Relaxed) + layout.size();
+        PEAK.fetch_max(held, Ordering::Relaxed);
+        // SAFETY: the caller's layout, as GlobalAlloc requires.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        HELD.fetch_sub(layout.size(), Ordering::Relaxed);
+        // SAFETY: allocated above with this layout.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// Held by the tests that measure memory, which tests on other threads would disturb.
+static MEASURING: Mutex<()> = Mutex::new(());
+
+/// The most bytes held at once while `run` ran, beyond those held when it started.
+fn extra_bytes_while(run: impl FnOnce()) -> usize {
+    let _measuring = MEASURING.lock().unwrap();
+    let base = HELD.load(Ordering::Relaxed);
+    PEAK.store(base, Ordering::Relaxed);
+    run();
+    PEAK.load(Ordering::Relaxed) - base
+}
+
+const SCENE: &str = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>";
+
+#[test]
+fn empty_file() {
+    expect(b"", Code::MalformedXml, 1, 1);
+}
+
+#[test]
+fn byte_order_mark_only() {
+    let error = expect(b"\xEF\xBB\xBF", Code::MalformedXml, 1, 1);
+    assert_eq!(error.position.byte_offset, 3);
+}
+
+#[test]
+fn utf16_text_without_a_byte_order_mark() {
+    let bytes: Vec<u8> = SCENE.encode_utf16().flat_map(u16::to_be_bytes).collect();
+    expect(&bytes, Code::UnsupportedEncoding, 1, 1);
+}
+
+#[test]
+fn utf16_text_with_a_byte_order_mark_loads() {
+    for big_endian in [false, true] {
+        let mut bytes = if big_endian { vec![0xFE, 0xFF] } else { vec![0xFF, 0xFE] };
+        let units = SCENE.encode_utf16();
+        bytes.extend(units.flat_map(|u| if big_endian { u.to_be_bytes() } else { u.to_le_bytes() }));
+        assert_eq!(load_bytes(&bytes).unwrap().version(), 1);
+    }
+}
+
+#[test]
+fn odd_utf16() {
+    let mut bytes = vec![0xFF, 0xFE];
+    bytes.extend("<World/>".encode_utf16().flat_map(u16::to_le_bytes));
+    bytes.push(b'x');
+    assert_eq!(load_bytes(&bytes).unwrap_err().code, Code::InvalidUtf8);
+    let lone_surrogate = [0xFF, 0xFE, b'<', 0, 0x00, 0xD8, b'>', 0];
+    expect(&lone_surrogate, Code::InvalidUtf8, 1, 2);
+}
+
+#[test]
+fn invalid_utf8() {
+    expect(b"<World Version=\"1\">\xFF</World>", Code::InvalidUtf8, 1, 20);
+    expect(b"<World Version=\"1\"><Name>\xE2\x82</Name></World>", Code::InvalidUtf8, 1, 26);
+}
+
+#[test]
+fn nul_bytes() {
+    expect(b"<World Version=\"1\"><Shapes/>\0</World>", Code::NulByte, 1, 29);
+}
+
+#[test]
+fn truncation() {
+    expect(b"<World Version=\"1\"><Shapes><Shape Type=\"Circ", Code::MalformedXml, 1, 28);
+    expect(b"<World Version=\"1\"><Shapes>", Code::MalformedXml, 1, 28);
+}
+
+#[test]
+fn mismatched_tags() {
+    expect(b"<World Version=\"1\"><Shapes></Bodies></World>", Code::MalformedXml, 1, 28);
+}
+
+#[test]
+fn duplicate_attributes() {
+    expect(b"<World Version=\"1\" Version=\"2\"/>", Code::DuplicateAttribute, 1, 20);
+}
+
+#[test]
+fn two_roots() {
+    expect(format!("{SCENE}\n<World/>").as_bytes(), Code::MalformedXml, 2, 1);
+}
+
+#[test]
+fn billion_laughs_is_rejected_at_once() {
+    let mut xml = String::from("<?xml version=\"1.0\"?>\n<!DOCTYPE lolz [\n <!ENTITY lol \"lol\">\n");
+    for i in 1..10 {
+        let previous = if i == 1 { "lol".to_string() } else { format!("lol{}", i - 1) };
+        xml += &format!(" <!ENTITY lol{i} \"{}\">\n", format!("&{previous};").repeat(10));
+    }
+    xml += "]>\n<World>&lol9;</World>";
+    let started = std::time::Instant::now();
+    expect(xml.as_bytes(), Code::DoctypeForbidden, 2, 1);
+    assert!(started.elapsed().as_secs() < 2, "nothing was expanded");
+}
+
+#[test]
+fn external_entities_are_never_fetched() {
+    let xml = "<!DOCTYPE World [<!ENTITY secret SYSTEM \"file:///etc/passwd\">]><World>&secret;</World>";
+    expect(xml.as_bytes(), Code::DoctypeForbidden, 1, 1);
+    let undeclared = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"><Name>⌖&secret;</Name></Body></Bodies><Joints/></World>";
+    expect_at(undeclared, Code::MalformedXml);
+}
+
+#[test]
+fn deep_nesting_is_stopped_by_the_depth_limit() {
+    let depth = 100_000;
+    let xml = format!("<World Version=\"1\">{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
+    let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, 20 + 3 * 63);
+    assert!(error.message.contains("max_depth"));
+}
+
+#[test]
+fn deep_nesting_without_the_limit_does_not_overflow_the_stack() {
+    let depth = 100_000;
+    let xml = format!("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
+    let options = LoadOptions { max_depth: u32::MAX, ..LoadOptions::default() };
+    let scene = load(xml.as_bytes(), &options).unwrap();
+    assert_eq!(scene.diagnostics()[0].code(), Some(Code::UnknownElement));
+}
+
+#[test]
+fn a_100_mb_text_node_is_stopped_by_the_text_limit() {
+    let mut xml = String::from("<World Version=\"1\"><Bodies><Body Type=\"Static\"><Name>");
+    xml.push_str(&"x".repeat(100 << 20));
+    xml.push_str("</Name></Body></Bodies></World>");
+    let text_starts = xml.find("<Name>").unwrap() + "<Name>".len();
+    let extra = extra_bytes_while(|| {
+        let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, text_starts as u32 + 1);
+        assert!(error.message.contains("max_text_bytes"));
+    });
+    assert!(extra < 1 << 20, "the load held {extra} bytes more: the text must not be copied");
+}
+
+#[test]
+fn twenty_million_elements_are_stopped_by_the_element_limit() {
+    let xml = format!("<World Version=\"1\">{}</World>", "<a/>".repeat(20_000_000));
+    let extra = extra_bytes_while(|| {
+        let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, 20 + 4 * 9_999_999);
+        assert!(error.message.contains("max_elements"));
+    });
+    assert!(extra < 1 << 20, "the load held {extra} bytes more: its warnings must be capped");
+}
+
+#[test]
+fn warnings_are_capped() {
+    let xml = format!("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}</World>", "<a/>".repeat(5000));
+    let scene = load_bytes(xml.as_bytes()).unwrap();
+    let d = scene.diagnostics();
+    assert_eq!(d.len(), box2scene::error::MAX_WARNINGS + 1);
+    let last = d.last().unwrap();
+    assert_eq!(last.code(), Some(Code::WarningsTruncated));
+    assert_eq!(scene.text(last.message).unwrap(), "4000 more warnings from here on were not kept (a scene keeps 1000)");
+}
+
+fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
+    format!("<World Version=\"1\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n<Bodies>{bodies}</Bodies>\n<Joints>{joints}</Joints>\n</World>")
+}
+
+const CIRCLE: &str = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape>";
+const FIXTURE: &str = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
+
+/// A fixture whose `element` holds `value`, the value marked.
+fn with_value(element: &str, value: &str) -> String {
+    world(CIRCLE, &format!("<Fixture><Shape>0</Shape><{element}>⌖{value}</{element}></Fixture>"), "", "")
+}
+
+#[test]
+fn nan() {
+    expect_at(&with_value("Density", "NaN"), Code::NonFiniteFloat);
+}
+
+#[test]
+fn infinities() {
+    for text in ["Infinity", "-inf", "∞"] {
+        expect_at(&with_value("Friction", text), Code::NonFiniteFloat);
+    }
+}
+
+#[test]
+fn a_literal_that_overflows_f32() {
+    expect_at(&with_value("Density", "1e39"), Code::NonFiniteFloat);
+}
+
+#[test]
+fn decimal_commas() {
+    // The position is the comma's.
+    expect_at(&with_value("Density", "0,5").replace("⌖0,5", "0⌖,5"), Code::FloatDecimalComma);
+}
+
+#[test]
+fn huge_and_negative_ids() {
+    let body = |id: &str| world(CIRCLE, FIXTURE, &format!("<Body Type=\"Static\"><Fixtures><ID>⌖{id}</ID></Fixtures></Body>"), "");
+    expect_at(&body("99999999999999999999"), Code::IdOutOfRange);
+    expect_at(&body("4294967294"), Code::IdOutOfRange);
+    expect_at(&body("-1"), Code::InvalidId);
+}
+
+#[test]
+fn ids_into_the_wrong_container() {
+    // Three shapes but one fixture: a shape index used as a fixture ID.
+    let shapes = CIRCLE.repeat(3);
+    let xml = world(&shapes, FIXTURE, "<Body Type=\"Static\"><Fixtures><ID>⌖2</ID></Fixtures></Body>", "");
+    let error = expect_at(&xml, Code::IdOutOfRange);
+    assert_eq!(error.message, "body 0 names fixture 2, but the file has 1 fixture");
+}
+
+fn gear_world(joints: &str) -> String {
+    let bodies = "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
+    world(CIRCLE, FIXTURE, bodies, joints)
+}
+
+const REVOLUTE: &str = "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
+
+fn gear(a: u32, b: u32) -> String {
+    format!("<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>")
+}
+
+#[test]
+fn a_gear_pointing_at_itself() {
+    let xml = gear_world(&format!("{REVOLUTE}{}", gear(1, 0)).replace("<JointA>1", "<JointA>⌖1"));
+    assert!(expect_at(&xml, Code::BadGearJoint).message.contains("itself"));
+}
+
+#[test]
+fn a_gear_pointing_at_a_gear() {
+    let xml = gear_world(&format!("{REVOLUTE}{}{}", gear(0, 0), gear(1, 0).replace("<JointA>1", "<JointA>⌖1")));
+    expect_at(&xml, Code::BadGearJoint);
+}
+
+#[test]
+fn a_gear_pointing_at_a_missing_joint() {
+    let xml = gear_world(&format!("{REVOLUTE}{}", gear(0, 7)).replace("<JointB>7", "<JointB>⌖7"));
+    expect_at(&xml, Code::BadGearJoint);
+}
+
+fn polygon(vertices: &[&str]) -> String {
+    let vertices: String = vertices.iter().map(|v| format!("<Vertex>{v}</Vertex>")).collect();
+    world(&format!("<Shape Type=\"Polygon\"><Vertices>{vertices}</Vertices></Shape>"), "", "", "")
+}
+
+#[test]
+fn a_polygon_with_9_vertices() {
+    let nine = ["0 0", "1 0", "2 1", "3 2", "3 3", "2 4", "1 4", "0 3", "-1 1"];
+    expect_at(&polygon(&nine).replace("<Vertex>-1 1", "⌖<Vertex>-1 1"), Code::BadVertexCount);
+}
+
+#[test]
+fn collinear_points() {
+    expect_at(&polygon(&["0 0", "1 1", "2 2", "3 3"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+}
+
+#[test]
+fn duplicate_points() {
+    expect_at(&polygon(&["1 1", "1 1", "1 1"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_at(&polygon(&["0 0", "0 0"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+}
+
+#[test]
+fn zero_radius() {
+    let xml = world("<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>", "", "", "");
+    expect_at(&xml, Code::BadRadius);
+}
+
+#[test]
+fn negative_mass() {
+    let xml = world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-3</Mass></MassData></Body>", "");
+    expect_at(&xml, Code::NegativeValue);
+}
+
+fn corpus() -> Vec<(String, Vec<u8>)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/corpus");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "xml"))
+        .map(|p| (p.display().to_string(), std::fs::read(&p).unwrap()))
+        .collect();
+    files.sort();
+    files
+}
+
+/// A failed load points inside the file; a load never panics.
+fn loads_or_fails_cleanly(bytes: &[u8], what: &str) {
+    if let Err(error) = load_bytes(bytes) {
+        assert!(error.position.byte_offset <= bytes.len() as u64, "{what}: {error}");
+        assert!(!error.message.is_empty(), "{what}");
+    }
+}
+
+#[test]
+fn every_corpus_file_truncated_at_every_byte_loads_or_fails_cleanly() {
+    for (name, bytes) in corpus() {
+        for end in 0..bytes.len() {
+            loads_or_fails_cleanly(&bytes[..end], &format!("{name} cut at {end}"));
+        }
+        // Only the whole file ends after </World>.
+        assert!(load_bytes(&bytes[..bytes.len() - 1]).is_err(), "{name}");
+    }
+}
+
+#[test]
+fn every_corpus_file_with_random_single_byte_changes_loads_or_fails_cleanly() {
+    let mut state = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    for (name, bytes) in corpus() {
+        for _ in 0..2_000 {
+            let mut changed = bytes.clone();
+            let at = (next() % bytes.len() as u64) as usize;
+            changed[at] = next() as u8;
+            loads_or_fails_cleanly(&changed, &format!("{name} with byte {at} changed"));
+        }
+    }
+}
