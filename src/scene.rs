@@ -59,6 +59,12 @@ impl Str {
         self.0.is_null()
     }
 
+    /// A string as a C host sets it in a record it hands the builder: a pointer to
+    /// NUL-terminated UTF-8, or NULL. Nothing is read here.
+    pub const fn from_ptr(s: *const c_char) -> Str {
+        Str(s)
+    }
+
     /// The pointer a C host reads (NULL when absent).
     pub fn as_ptr(self) -> *const c_char {
         self.0
@@ -531,7 +537,9 @@ pub struct Scene {
     pub(crate) fixture_ids: Vec<u32>,
     pub(crate) user_data: Vec<UserData>,
     pub(crate) diagnostics: Vec<Diagnostic>,
-    pub(crate) strings: Box<[u8]>,
+    /// A Vec, not a Box: moving a Box would invalidate (for Rust's aliasing rules) the
+    /// string pointers taken from it when the scene was frozen.
+    pub(crate) strings: Vec<u8>,
 }
 
 /// A scene under construction: the same arrays, with strings still as pool offsets.
@@ -574,7 +582,11 @@ impl SceneBuilder {
             fixture_ids: self.fixture_ids,
             user_data: self.user_data,
             diagnostics: self.diagnostics,
-            strings: self.strings.into_boxed_slice(),
+            strings: {
+                let mut strings = self.strings;
+                strings.shrink_to_fit();
+                strings
+            },
         };
         let pool = scene.strings.as_ptr().cast::<c_char>();
         let names = (scene.shapes.iter_mut().map(|s| &mut s.name))
