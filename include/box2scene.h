@@ -26,7 +26,7 @@
  * The most warnings a scene keeps; a hostile file could otherwise hold one per element.
  * Past it, one last `warnings-truncated` warning counts the rest.
  */
-#define B2S_MAX_WARNINGS (1 << 40)
+#define B2S_MAX_WARNINGS 1000
 
 /**
  * Bytes in `b2s_error::message`, the terminating NUL included.
@@ -174,6 +174,11 @@ enum b2s_code
    * from the fixtures was kept.
    */
   B2S_CODE_INCONSISTENT_MASS_DATA = 203,
+  /**
+   * A value beyond the range in which Box2D 2.4 stays finite (the README gives the
+   * bounds); the object, and what depends on it, was skipped.
+   */
+  B2S_CODE_BEYOND_BOX2D_RANGE = 204,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

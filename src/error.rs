@@ -108,6 +108,9 @@ pub enum Code {
     /// positive inertia about the centre of mass, which Box2D rejects; the mass computed
     /// from the fixtures was kept.
     InconsistentMassData = 203,
+    /// A value beyond the range in which Box2D 2.4 stays finite (the README gives the
+    /// bounds); the object, and what depends on it, was skipped.
+    BeyondBox2dRange = 204,
 }
 
 impl Code {
@@ -171,6 +174,7 @@ impl Code {
         Code::SkippedJoint,
         Code::SkippedDependent,
         Code::InconsistentMassData,
+        Code::BeyondBox2dRange,
     ];
 
     /// The spec's kebab-case name of the code.
@@ -239,6 +243,7 @@ impl Code {
             Code::SkippedJoint => c"skipped-joint",
             Code::SkippedDependent => c"skipped-dependent",
             Code::InconsistentMassData => c"inconsistent-mass-data",
+            Code::BeyondBox2dRange => c"beyond-box2d-range",
         }
     }
 
