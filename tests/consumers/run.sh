@@ -1,0 +1,182 @@
+#!/usr/bin/env bash
+# The consumers of an installed box2scene: `run.sh CHECK`, one CTest test per CHECK (see
+# CMakeLists.txt, which sets the environment below). `install` installs the build into
+# PREFIX; every other check but `subdirectory` builds a host against PREFIX alone, from a
+# copy of this folder in a temporary directory, runs it and checks what it prints.
+set -euo pipefail
+
+: "${CMAKE:?}" "${RUSTC:?}" "${BOX2SCENE_SOURCE_DIR:?}" "${BOX2SCENE_BUILD_DIR:?}"
+: "${BOX2SCENE_CARGO_TARGET_DIR:?}" "${PREFIX:?}" "${LIBDIR:?}" "${VERSION:?}" "${ABI_VERSION:?}"
+
+here=$(cd "$(dirname "$0")" && pwd)
+libdir=$PREFIX/$LIBDIR
+soname=libbox2scene.so.$ABI_VERSION
+work=$(mktemp -d "${TMPDIR:-/tmp}/box2scene-consumer.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cp -R "$here" "$work/src"
+
+fail() {
+  printf 'FAIL: %s\n' "$@" >&2
+  exit 1
+}
+
+# What the C consumers print for scene.xml.
+c_output="box2scene $VERSION (header $VERSION)
+2 shapes, 2 fixtures, 2 bodies, 0 joints, 0 diagnostics
+body 0: Ground
+body 1: Ball"
+
+# Configures and builds the consumer in folder $1 against PREFIX alone, into $work/build.
+build_consumer() {
+  local name=$1
+  shift
+  if ! "$CMAKE" -S "$work/src/$name" -B "$work/build" -G "Unix Makefiles" \
+      -DCMAKE_PREFIX_PATH="$PREFIX" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "$@" \
+      >"$work/log" 2>&1 ||
+    ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
+    cat "$work/log" >&2
+    fail "the $name consumer did not build"
+  fi
+}
+
+# Runs a program and compares what it prints with $1.
+expect_output() {
+  local expected=$1 actual
+  shift
+  actual=$("$@") || fail "$* exited with status $?"
+  [ "$actual" = "$expected" ] || fail "$* printed" "$actual" "instead of" "$expected"
+  printf '%s\n' "$actual"
+}
+
+needed() {
+  readelf -d "$1" | sed -n 's/.*(NEEDED).*\[\(.*\)\]$/\1/p'
+}
+
+expect_shared() {
+  needed "$1" | grep -qx "$soname" || fail "$1 does not load $soname"
+}
+
+expect_static() {
+  if needed "$1" | grep -q libbox2scene; then fail "$1 loads libbox2scene"; fi
+}
+
+# `rustc --print native-static-libs` for a static library of the crate as built, its
+# dependencies included: "-lgcc_s -lutil ...".
+rust_native_libs() {
+  local release=$BOX2SCENE_CARGO_TARGET_DIR/release
+  echo 'extern crate box2scene;' >"$work/probe.rs"
+  "$RUSTC" --edition 2021 --crate-type staticlib --crate-name probe \
+    --extern box2scene="$release/libbox2scene.rlib" -L dependency="$release/deps" \
+    --print native-static-libs -o "$work/libprobe.a" "$work/probe.rs" 2>&1 |
+    sed -n 's/.*native-static-libs: //p'
+}
+
+check_install() {
+  rm -rf "$PREFIX"
+  "$CMAKE" --install "$BOX2SCENE_BUILD_DIR" --prefix "$PREFIX"
+}
+
+check_layout() {
+  local file
+  for file in include/box2scene.h include/box2scene/box2d.hpp \
+    "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
+    "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
+    "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \
+    "$LIBDIR/pkgconfig/box2scene.pc" share/doc/box2scene/LICENSE; do
+    [ -f "$PREFIX/$file" ] && [ ! -L "$PREFIX/$file" ] || fail "no file $PREFIX/$file"
+  done
+  [ "$(readlink "$libdir/$soname")" = "libbox2scene.so.$VERSION" ] ||
+    fail "$soname does not link to libbox2scene.so.$VERSION"
+  [ "$(readlink "$libdir/libbox2scene.so")" = "$soname" ] ||
+    fail "libbox2scene.so does not link to $soname"
+  readelf -d "$libdir/libbox2scene.so.$VERSION" | grep -q "(SONAME).*\[$soname\]" ||
+    fail "the SONAME of libbox2scene.so.$VERSION is not $soname"
+  cmp "$BOX2SCENE_SOURCE_DIR/include/box2scene.h" "$PREFIX/include/box2scene.h"
+  echo "installed with SONAME $soname"
+}
+
+# The shared library exports exactly the functions box2scene.h declares.
+check_symbols() {
+  local exported declared
+  exported=$(nm -D --defined-only "$libdir/libbox2scene.so.$VERSION" | awk '{print $3}' | sort)
+  declared=$(grep -E '^[a-z].*\bb2s_[a-z0-9_]+\(' "$PREFIX/include/box2scene.h" |
+    grep -oE '\bb2s_[a-z0-9_]+\(' | tr -d '(' | sort)
+  [ -n "$declared" ] || fail "box2scene.h declares no function"
+  [ "$exported" = "$declared" ] ||
+    fail "exported (<) and declared (>) differ:" "$(diff <(echo "$exported") <(echo "$declared"))"
+  echo "exports the $(echo "$exported" | wc -l) functions of box2scene.h and nothing else"
+}
+
+check_c_shared() {
+  build_consumer c
+  expect_shared "$work/build/scene_info"
+  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+}
+
+check_c_static() {
+  local libs
+  build_consumer static
+  expect_static "$work/build/scene_info_static"
+  libs=$(rust_native_libs)
+  [ -n "$libs" ] || fail "rustc printed no native-static-libs"
+  grep -qF "libbox2scene.a $libs" "$work/build/CMakeFiles/scene_info_static.dir/link.txt" ||
+    fail "box2scene::static does not link rustc's native-static-libs: $libs" \
+      "$(cat "$work/build/CMakeFiles/scene_info_static.dir/link.txt")"
+  echo "links libbox2scene.a $libs"
+  expect_output "$c_output" "$work/build/scene_info_static" "$work/src/scene.xml"
+}
+
+check_c_build_shared_libs_off() {
+  build_consumer c -DBUILD_SHARED_LIBS=OFF
+  expect_static "$work/build/scene_info"
+  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+}
+
+check_cpp_adapter() {
+  build_consumer cpp
+  expect_shared "$work/build/fall"
+  needed "$work/build/fall" | grep -q '^libbox2d\.so' || fail "fall does not load Box2D"
+  expect_output "2 bodies; after 1 s the ball is at (0.000, 4.917)" \
+    "$work/build/fall" "$work/src/scene.xml"
+}
+
+check_pkg_config() {
+  local libs
+  export PKG_CONFIG_LIBDIR=$libdir/pkgconfig PKG_CONFIG_PATH=
+  [ "$(pkg-config --modversion box2scene)" = "$VERSION" ] || fail "pkg-config: wrong version"
+  libs=$(rust_native_libs)
+  pkg-config --libs --static box2scene | grep -qF -- "-lbox2scene $libs" ||
+    fail "box2scene.pc's Libs.private are not rustc's native-static-libs: $libs"
+  cd "$work/src/c"
+  cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)
+  expect_shared scene_info
+  LD_LIBRARY_PATH=$libdir expect_output "$c_output" ./scene_info ../scene.xml
+}
+
+check_subdirectory() {
+  if ! "$CMAKE" -S "$work/src/subdirectory" -B "$work/build" \
+      -DBOX2SCENE_SOURCE_DIR="$BOX2SCENE_SOURCE_DIR" \
+      -DBOX2SCENE_CARGO_TARGET_DIR="$BOX2SCENE_CARGO_TARGET_DIR" >"$work/log" 2>&1 ||
+    ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
+    cat "$work/log" >&2
+    fail "the subdirectory consumer did not build"
+  fi
+  [ ! -e "$work/build/box2scene/c_tests" ] || fail "box2scene's tests were built"
+  expect_shared "$work/build/scene_info"
+  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+}
+
+# The README shows these files as they are.
+check_readme() {
+  local readme file
+  readme=$(cat "$BOX2SCENE_SOURCE_DIR/README.md")
+  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt; do
+    [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
+  done
+  [[ $readme == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)'* ]] ||
+    fail "README.md does not show the pkg-config command line"
+  echo "README.md shows the consumers as they are"
+}
+
+[ $# -eq 1 ] && declare -F "check_$1" >/dev/null || fail "usage: $0 CHECK"
+"check_$1"
