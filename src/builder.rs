@@ -8,6 +8,7 @@
 //! UserData gets the raw XML and the type name and value the loader would find in it.
 #![forbid(unsafe_code)]
 
+use crate::LoadOptions;
 use crate::error::{Code, Diagnostic, Error, Position, Severity};
 use crate::parse::{canonical_joint, user_data_fragment};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
@@ -15,7 +16,6 @@ use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
 use crate::validate::{self, Geometry};
 use crate::write::{escape, needs_version_2};
-use crate::LoadOptions;
 
 /// A scene under construction. Objects refer to objects added before them.
 #[derive(Default)]
@@ -37,7 +37,9 @@ fn finite(name: &str, values: &[f32]) -> Result<(), (Code, String)> {
 
 fn not_negative(name: &str, value: f32) -> Result<(), (Code, String)> {
     match value < 0.0 {
-        true => Err((Code::NegativeValue, format!("<{name}> is {value}, but it cannot be negative"))),
+        true => {
+            Err((Code::NegativeValue, format!("<{name}> is {value}, but it cannot be negative")))
+        }
         false => Ok(()),
     }
 }
@@ -46,7 +48,10 @@ fn not_negative(name: &str, value: f32) -> Result<(), (Code, String)> {
 fn reference(index: u32, count: usize, names: &str, what: &str) -> Result<(), (Code, String)> {
     match (index as usize) < count {
         true => Ok(()),
-        false => Err((Code::IdOutOfRange, format!("names {what} {index}, but the scene has {count} {names}"))),
+        false => Err((
+            Code::IdOutOfRange,
+            format!("names {what} {index}, but the scene has {count} {names}"),
+        )),
     }
 }
 
@@ -89,7 +94,12 @@ impl Builder {
 
     /// Adds user data and returns its index. `raw` is XML content, kept verbatim; without
     /// it, a type name and value are written in the editor's form.
-    pub fn add_user_data(&mut self, raw: Option<&str>, type_name: Option<&str>, value: Option<&str>) -> Result<u32, Error> {
+    pub fn add_user_data(
+        &mut self,
+        raw: Option<&str>,
+        type_name: Option<&str>,
+        value: Option<&str>,
+    ) -> Result<u32, Error> {
         let index = self.scene.user_data.len();
         let raw = match (raw, type_name) {
             (Some(raw), _) => raw.to_owned(),
@@ -104,7 +114,8 @@ impl Builder {
             }
             (None, None) => String::new(),
         };
-        let (type_name, value) = user_data_fragment(&raw).map_err(|e| refused("user data", index, e))?;
+        let (type_name, value) =
+            user_data_fragment(&raw).map_err(|e| refused("user data", index, e))?;
         let user_data = UserData {
             raw: self.scene.add_str(&raw),
             type_name: type_name.map_or(Str::NULL, |t| self.scene.add_str(&t)),
@@ -115,18 +126,30 @@ impl Builder {
     }
 
     /// Adds a shape with `vertices` (polygons, edges, chains) and returns its index.
-    pub fn add_shape(&mut self, shape: &Shape, name: Option<&str>, vertices: &[Vec2]) -> Result<u32, Error> {
+    pub fn add_shape(
+        &mut self,
+        shape: &Shape,
+        name: Option<&str>,
+        vertices: &[Vec2],
+    ) -> Result<u32, Error> {
         let index = self.scene.shapes.len();
-        let canonical = self.check_shape(shape, vertices).map_err(|e| refused("shape", index, e))?;
+        let canonical =
+            self.check_shape(shape, vertices).map_err(|e| refused("shape", index, e))?;
         let first = self.scene.vertices.len() as u32;
         self.scene.vertices.extend_from_slice(vertices);
         let name = self.name(name);
-        self.scene.shapes.push(Shape { name, vertices: Range { first, count: vertices.len() as u32 }, ..canonical });
+        self.scene.shapes.push(Shape {
+            name,
+            vertices: Range { first, count: vertices.len() as u32 },
+            ..canonical
+        });
         Ok(index as u32)
     }
 
     fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Result<Shape, (Code, String)> {
-        let kind = shape.kind().ok_or((Code::InvalidArgument, format!("unknown shape kind {}", shape.kind)))?;
+        let kind = shape
+            .kind()
+            .ok_or((Code::InvalidArgument, format!("unknown shape kind {}", shape.kind)))?;
         let points: Vec<f32> = vertices.iter().flat_map(|v| [v.x, v.y]).collect();
         finite("Vertex", &points)?;
         let mut canonical = Shape::new(kind);
@@ -148,7 +171,12 @@ impl Builder {
                 validate::polygon(vertices)?
             }
             ShapeKind::Edge | ShapeKind::Chain => {
-                let ghosts = [shape.prev_vertex.x, shape.prev_vertex.y, shape.next_vertex.x, shape.next_vertex.y];
+                let ghosts = [
+                    shape.prev_vertex.x,
+                    shape.prev_vertex.y,
+                    shape.next_vertex.x,
+                    shape.next_vertex.y,
+                ];
                 finite("Vertex0", &ghosts)?;
                 canonical.prev_vertex = shape.prev_vertex;
                 canonical.next_vertex = shape.next_vertex;
@@ -156,13 +184,19 @@ impl Builder {
                 canonical.has_next_vertex = shape.has_next_vertex;
                 match kind {
                     ShapeKind::Edge if vertices.len() != 2 => {
-                        return Err((Code::BadVertexCount, format!("an edge has 2 vertices, not {}", vertices.len())));
+                        return Err((
+                            Code::BadVertexCount,
+                            format!("an edge has 2 vertices, not {}", vertices.len()),
+                        ));
                     }
                     ShapeKind::Edge => validate::edge(vertices)?,
                     _ => {
                         let most = LoadOptions::default().max_chain_vertices as usize;
                         if vertices.len() > most {
-                            return Err((Code::LimitExceeded, format!("a chain has at most {most} vertices (max_chain_vertices)")));
+                            return Err((
+                                Code::LimitExceeded,
+                                format!("a chain has at most {most} vertices (max_chain_vertices)"),
+                            ));
                         }
                         canonical.is_loop = shape.is_loop;
                         validate::chain(vertices, shape.is_loop)?
@@ -188,7 +222,9 @@ impl Builder {
 
     fn check_fixture(&self, f: &Fixture) -> Result<(), (Code, String)> {
         reference(f.shape, self.scene.shapes.len(), "shapes", "shape")?;
-        for (name, value) in [("Density", f.density), ("Friction", f.friction), ("Restitution", f.restitution)] {
+        for (name, value) in
+            [("Density", f.density), ("Friction", f.friction), ("Restitution", f.restitution)]
+        {
             finite(name, &[value])?;
             not_negative(name, value)?;
         }
@@ -196,13 +232,19 @@ impl Builder {
     }
 
     /// Adds a body with already added `fixtures` and returns its index.
-    pub fn add_body(&mut self, body: &Body, name: Option<&str>, fixtures: &[u32]) -> Result<u32, Error> {
+    pub fn add_body(
+        &mut self,
+        body: &Body,
+        name: Option<&str>,
+        fixtures: &[u32],
+    ) -> Result<u32, Error> {
         let index = self.scene.bodies.len();
         let canonical = self.check_body(body, fixtures).map_err(|e| refused("body", index, e))?;
         let first = self.scene.fixture_ids.len() as u32;
         self.scene.fixture_ids.extend_from_slice(fixtures);
         let name = self.name(name);
-        let canonical = Body { name, fixtures: Range { first, count: fixtures.len() as u32 }, ..canonical };
+        let canonical =
+            Body { name, fixtures: Range { first, count: fixtures.len() as u32 }, ..canonical };
         self.scene.bodies.push(canonical);
         if let Some(message) = self.zero_density(&canonical) {
             self.warn("body", index, Code::DynamicBodyZeroDensity, &message);
@@ -211,12 +253,18 @@ impl Builder {
     }
 
     fn check_body(&self, b: &Body, fixtures: &[u32]) -> Result<Body, (Code, String)> {
-        let kind = b.kind().ok_or((Code::InvalidArgument, format!("unknown body kind {}", b.kind)))?;
+        let kind =
+            b.kind().ok_or((Code::InvalidArgument, format!("unknown body kind {}", b.kind)))?;
         let floats = [
-            ("Position", b.position.x), ("Position", b.position.y), ("Angle", b.angle),
-            ("LinearVelocity", b.linear_velocity.x), ("LinearVelocity", b.linear_velocity.y),
-            ("AngularVelocity", b.angular_velocity), ("LinearDamping", b.linear_damping),
-            ("AngularDamping", b.angular_damping), ("GravityScale", b.gravity_scale),
+            ("Position", b.position.x),
+            ("Position", b.position.y),
+            ("Angle", b.angle),
+            ("LinearVelocity", b.linear_velocity.x),
+            ("LinearVelocity", b.linear_velocity.y),
+            ("AngularVelocity", b.angular_velocity),
+            ("LinearDamping", b.linear_damping),
+            ("AngularDamping", b.angular_damping),
+            ("GravityScale", b.gravity_scale),
             ("InertiaScale", b.inertia_scale),
         ];
         for (name, value) in floats {
@@ -252,7 +300,9 @@ impl Builder {
         }
         let ids = &self.scene.fixture_ids[body.fixtures.indices()];
         let f = ids.iter().find(|&&f| self.scene.fixtures[f as usize].density == 0.0)?;
-        Some(format!("has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"))
+        Some(format!(
+            "has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"
+        ))
     }
 
     /// Adds a joint between already added bodies (a gear: after its two joints) and
@@ -267,7 +317,10 @@ impl Builder {
 
     fn check_joint(&self, joint: &Joint) -> Result<Joint, (Code, String)> {
         if joint.kind() == Some(JointKind::Unsupported) {
-            return Err((Code::InvalidArgument, "Farseer-only joints have no Box2Scene form and cannot be built".into()));
+            return Err((
+                Code::InvalidArgument,
+                "Farseer-only joints have no Box2Scene form and cannot be built".into(),
+            ));
         }
         let canonical = canonical_joint(joint)?;
         reference(canonical.body_a, self.scene.bodies.len(), "bodies", "body")?;
@@ -278,9 +331,12 @@ impl Builder {
                 let kind = self.scene.joints.get(target as usize).and_then(Joint::kind);
                 if !matches!(kind, Some(JointKind::Revolute | JointKind::Prismatic)) {
                     let count = self.scene.joints.len();
-                    return Err((Code::BadGearJoint, format!(
-                        "the gear names joint {target} (the scene has {count} joints); a gear couples two revolute or prismatic joints added before it"
-                    )));
+                    return Err((
+                        Code::BadGearJoint,
+                        format!(
+                            "the gear names joint {target} (the scene has {count} joints); a gear couples two revolute or prismatic joints added before it"
+                        ),
+                    ));
                 }
             }
         }

@@ -120,7 +120,12 @@ fn guard<R>(on_panic: impl FnOnce() -> R, f: impl FnOnce() -> R) -> R {
 /// caught panic, and returns its code.
 fn fallible(error: *mut ErrorInfo, f: impl FnOnce() -> Result<(), Error>) -> Code {
     let outcome = guard(
-        || Err(simple_error(Code::Internal, "internal error (a bug in box2scene): please report it")),
+        || {
+            Err(simple_error(
+                Code::Internal,
+                "internal error (a bug in box2scene): please report it",
+            ))
+        },
         f,
     );
     let code = outcome.as_ref().err().map_or(Code::Ok, |e| e.code);
@@ -375,7 +380,8 @@ unsafe fn scene_and_options<'a>(
     options: *const WriteOptions,
 ) -> Result<(&'a Scene, WriteOptions), Error> {
     // SAFETY: by the caller's contract.
-    let handle = unsafe { scene.as_ref() }.ok_or_else(|| simple_error(Code::NullArgument, "scene is NULL"))?;
+    let handle = unsafe { scene.as_ref() }
+        .ok_or_else(|| simple_error(Code::NullArgument, "scene is NULL"))?;
     // SAFETY: by the caller's contract.
     Ok((&handle.scene, unsafe { options.as_ref() }.copied().unwrap_or_default()))
 }
@@ -511,7 +517,8 @@ unsafe fn add<T>(
         // SAFETY: by the caller's contract.
         let (handle, record) = unsafe { (builder.as_mut(), record.as_ref()) };
         let handle = handle.ok_or_else(|| simple_error(Code::NullArgument, "builder is NULL"))?;
-        let record = record.ok_or_else(|| simple_error(Code::NullArgument, "the record is NULL"))?;
+        let record =
+            record.ok_or_else(|| simple_error(Code::NullArgument, "the record is NULL"))?;
         let index = add(&mut handle.builder, record)?;
         // SAFETY: by the caller's contract.
         if let Some(out) = unsafe { out_index.as_mut() } {
@@ -544,7 +551,8 @@ pub unsafe extern "C" fn b2s_builder_set_gravity(
 ) -> Code {
     fallible(error, || {
         // SAFETY: by the caller's contract.
-        let handle = unsafe { builder.as_mut() }.ok_or_else(|| simple_error(Code::NullArgument, "builder is NULL"))?;
+        let handle = unsafe { builder.as_mut() }
+            .ok_or_else(|| simple_error(Code::NullArgument, "builder is NULL"))?;
         // SAFETY: by the caller's contract.
         handle.builder.set_gravity(unsafe { gravity.as_ref() }.copied())
     })
@@ -569,7 +577,8 @@ pub unsafe extern "C" fn b2s_builder_add_user_data(
     unsafe {
         add(builder, user_data, out_index, error, |b, u| {
             let raw = optional_str(u.raw, "raw")?;
-            let (type_name, value) = (optional_str(u.type_name, "type_name")?, optional_str(u.value, "value")?);
+            let (type_name, value) =
+                (optional_str(u.type_name, "type_name")?, optional_str(u.value, "value")?);
             b.add_user_data(raw, type_name, value)
         })
     }
@@ -614,7 +623,11 @@ pub unsafe extern "C" fn b2s_builder_add_fixture(
     error: *mut ErrorInfo,
 ) -> Code {
     // SAFETY: by the caller's contract.
-    unsafe { add(builder, fixture, out_index, error, |b, f| b.add_fixture(f, optional_str(f.name, "name")?)) }
+    unsafe {
+        add(builder, fixture, out_index, error, |b, f| {
+            b.add_fixture(f, optional_str(f.name, "name")?)
+        })
+    }
 }
 
 /// Adds a body (its `fixtures` range is ignored: the `count` fixture indices at
@@ -654,7 +667,9 @@ pub unsafe extern "C" fn b2s_builder_add_joint(
     error: *mut ErrorInfo,
 ) -> Code {
     // SAFETY: by the caller's contract.
-    unsafe { add(builder, joint, out_index, error, |b, j| b.add_joint(j, optional_str(j.name, "name")?)) }
+    unsafe {
+        add(builder, joint, out_index, error, |b, j| b.add_joint(j, optional_str(j.name, "name")?))
+    }
 }
 
 /// Finishes the builder into an ordinary immutable scene, stored in `*out_scene` (free it
@@ -740,12 +755,11 @@ unsafe fn write_default<T>(out: *mut T, value: Option<T>) -> Code {
     )
 }
 
-const VERSION: &CStr = match CStr::from_bytes_with_nul(
-    concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
-) {
-    Ok(version) => version,
-    Err(_) => panic!("the package version holds a NUL"),
-};
+const VERSION: &CStr =
+    match CStr::from_bytes_with_nul(concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes()) {
+        Ok(version) => version,
+        Err(_) => panic!("the package version holds a NUL"),
+    };
 
 /// The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the
 /// header it was built with). Static storage.

@@ -62,8 +62,7 @@ fn decode_utf8(bytes: &[u8]) -> Result<Decoded<'_>, Error> {
         Ok(text) => Ok(Decoded { text: Cow::Borrowed(text), encoding: Encoding::Utf8 { bom } }),
         Err(e) => {
             let valid = std::str::from_utf8(&body[..e.valid_up_to()]).unwrap_or_default();
-            let decoded =
-                Decoded { text: Cow::Borrowed(valid), encoding: Encoding::Utf8 { bom } };
+            let decoded = Decoded { text: Cow::Borrowed(valid), encoding: Encoding::Utf8 { bom } };
             Err(Error {
                 code: Code::InvalidUtf8,
                 position: Locator::new(&decoded).locate(valid.len()),
@@ -130,7 +129,13 @@ pub struct Locator<'t> {
 
 impl<'t> Locator<'t> {
     pub fn new(decoded: &'t Decoded<'_>) -> Locator<'t> {
-        Locator { text: &decoded.text, encoding: decoded.encoding, offset: 0, line: 1, line_start: 0 }
+        Locator {
+            text: &decoded.text,
+            encoding: decoded.encoding,
+            offset: 0,
+            line: 1,
+            line_start: 0,
+        }
     }
 
     pub fn locate(&mut self, offset: usize) -> Position {

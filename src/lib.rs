@@ -28,11 +28,11 @@ use std::path::Path;
 
 pub use builder::Builder;
 pub use error::{Code, Diagnostic, Error, Position, Severity};
-pub use write::{WriteOptions, joints_not_written, write};
 pub use scene::{
     Body, BodyKind, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene, Shape,
     ShapeKind, Str, UserData, Vec2,
 };
+pub use write::{WriteOptions, joints_not_written, write};
 
 /// How to load: strictness and the limits of spec section 9. Exceeding a limit is error
 /// `limit-exceeded`, whose message names the limit.
@@ -93,7 +93,11 @@ fn io_error(path: &Path, e: &std::io::Error) -> Error {
 }
 
 /// Writes `scene` to a file (see [`write`]).
-pub fn write_path(scene: &Scene, path: impl AsRef<Path>, options: &WriteOptions) -> Result<(), Error> {
+pub fn write_path(
+    scene: &Scene,
+    path: impl AsRef<Path>,
+    options: &WriteOptions,
+) -> Result<(), Error> {
     let path = path.as_ref();
     std::fs::write(path, write(scene, options)).map_err(|e| Error {
         code: Code::Io,

@@ -22,7 +22,11 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
     let mut template_by_id = HashMap::new();
     for (index, &(id, at)) in p.origins.fixture_template_ids.iter().enumerate() {
         if let Some(first) = template_by_id.insert(id, index) {
-            return Err(problem(Code::DuplicateId, at, format!("fixtures {first} and {index} both have Id {id}")));
+            return Err(problem(
+                Code::DuplicateId,
+                at,
+                format!("fixtures {first} and {index} both have Id {id}"),
+            ));
         }
     }
     let templates = std::mem::take(&mut p.scene.fixtures);
@@ -31,9 +35,11 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
     for (k, pair) in p.origins.pairs.iter().enumerate() {
         let (id, id_at) = pair.fixture_id;
         let Some(&template) = template_by_id.get(&id) else {
-            return Err(problem(Code::IdOutOfRange, id_at, format!(
-                "body {} binds fixture Id {id}, but no fixture has that Id", pair.body
-            )));
+            return Err(problem(
+                Code::IdOutOfRange,
+                id_at,
+                format!("body {} binds fixture Id {id}, but no fixture has that Id", pair.body),
+            ));
         };
         let (shape, shape_at) = pair.shape;
         let mut fixture = templates[template];
@@ -57,10 +63,16 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
 fn check_references(p: &Parser) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
-    let has = |n: usize, one: &str, many: &str| format!("the file has {n} {}", if n == 1 { one } else { many });
+    let has = |n: usize, one: &str, many: &str| {
+        format!("the file has {n} {}", if n == 1 { one } else { many })
+    };
     for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
         if f.shape as usize >= s.shapes.len() {
-            let why = format!("fixture {i} names shape {}, but {}", f.shape, has(s.shapes.len(), "shape", "shapes"));
+            let why = format!(
+                "fixture {i} names shape {}, but {}",
+                f.shape,
+                has(s.shapes.len(), "shape", "shapes")
+            );
             errors.push(problem(Code::IdOutOfRange, at, why));
         }
     }
@@ -68,7 +80,10 @@ fn check_references(p: &Parser) -> Parsed<()> {
         for k in b.fixtures.indices() {
             let id = s.fixture_ids[k];
             if id as usize >= s.fixtures.len() {
-                let why = format!("body {i} names fixture {id}, but {}", has(s.fixtures.len(), "fixture", "fixtures"));
+                let why = format!(
+                    "body {i} names fixture {id}, but {}",
+                    has(s.fixtures.len(), "fixture", "fixtures")
+                );
                 errors.push(problem(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
             }
         }
@@ -76,17 +91,24 @@ fn check_references(p: &Parser) -> Parsed<()> {
     for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
         for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
             if body as usize >= s.bodies.len() {
-                let why = format!("joint {i} names body {body} as {side}, but {}", has(s.bodies.len(), "body", "bodies"));
+                let why = format!(
+                    "joint {i} names body {body} as {side}, but {}",
+                    has(s.bodies.len(), "body", "bodies")
+                );
                 errors.push(problem(Code::IdOutOfRange, at, why));
             }
         }
         if j.kind() != Some(JointKind::Gear) {
             continue;
         }
-        for (target, side, at) in [(j.joint_a, "JointA", at.joint_a), (j.joint_b, "JointB", at.joint_b)] {
+        for (target, side, at) in
+            [(j.joint_a, "JointA", at.joint_a), (j.joint_b, "JointB", at.joint_b)]
+        {
             let why = match s.joints.get(target as usize).and_then(|t| t.kind()) {
                 _ if target as usize == i => "itself".to_string(),
-                None if target != NONE => format!("joint {target}, but {}", has(s.joints.len(), "joint", "joints")),
+                None if target != NONE => {
+                    format!("joint {target}, but {}", has(s.joints.len(), "joint", "joints"))
+                }
                 Some(JointKind::Revolute | JointKind::Prismatic) | None => continue,
                 Some(other) => format!("joint {target}, a {other:?} joint"),
             };

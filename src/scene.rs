@@ -145,7 +145,17 @@ macro_rules! u32_enum_conversions {
 u32_enum_conversions!(ShapeKind { Circle, Polygon, Edge, Chain });
 u32_enum_conversions!(BodyKind { Static, Kinematic, Dynamic });
 u32_enum_conversions!(JointKind {
-    Revolute, Prismatic, Distance, Pulley, Line, Weld, Friction, Gear, Wheel, Rope, Motor,
+    Revolute,
+    Prismatic,
+    Distance,
+    Pulley,
+    Line,
+    Weld,
+    Friction,
+    Gear,
+    Wheel,
+    Rope,
+    Motor,
     Unsupported,
 });
 

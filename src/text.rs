@@ -54,7 +54,8 @@ pub fn float(s: &str) -> Result<f32, BadValue> {
             ));
         }
     }
-    let well_formed = s.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-'));
+    let well_formed =
+        s.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-'));
     let value: f32 = match s.parse() {
         Ok(v) if well_formed => v,
         _ => return Err(bad(Code::InvalidFloat, 0, format!("'{s}' is not a number"))),
@@ -137,9 +138,8 @@ pub fn int(s: &str) -> Result<i32, BadValue> {
 /// A 16-bit signed int (a group index).
 pub fn int16(s: &str) -> Result<i16, BadValue> {
     let value = int(s)?;
-    i16::try_from(value).map_err(|_| {
-        bad(Code::OutOfRange, 0, format!("{s} is outside -32768..32767"))
-    })
+    i16::try_from(value)
+        .map_err(|_| bad(Code::OutOfRange, 0, format!("{s} is outside -32768..32767")))
 }
 
 /// A non-negative index into a container.
@@ -149,7 +149,11 @@ pub fn id(s: &str) -> Result<u32, BadValue> {
         return Err(bad(Code::InvalidId, 0, format!("ID {s} is negative: IDs count from 0")));
     }
     if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
-        return Err(bad(Code::InvalidId, 0, format!("'{s}' is not an ID: expected an index such as 0")));
+        return Err(bad(
+            Code::InvalidId,
+            0,
+            format!("'{s}' is not an ID: expected an index such as 0"),
+        ));
     }
     match digits.parse::<u32>() {
         Ok(v) if v != u32::MAX => Ok(v),

@@ -35,7 +35,10 @@ fn length_squared(a: Vec2) -> f32 {
 /// A circle's radius must be positive.
 pub fn circle(radius: f32) -> Checked {
     if radius <= 0.0 {
-        return Err((Code::BadRadius, format!("a circle's <Radius> must be greater than 0, not {radius}")));
+        return Err((
+            Code::BadRadius,
+            format!("a circle's <Radius> must be greater than 0, not {radius}"),
+        ));
     }
     Ok(Geometry::Fine)
 }
@@ -48,16 +51,23 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
     match vertices.len() {
         2 => {
             if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
-                return Err((Code::DegeneratePolygon, format!(
-                    "the two points of this segment polygon are closer than Box2D's linear slop ({LINEAR_SLOP} m)"
-                )));
+                return Err((
+                    Code::DegeneratePolygon,
+                    format!(
+                        "the two points of this segment polygon are closer than Box2D's linear slop ({LINEAR_SLOP} m)"
+                    ),
+                ));
             }
             return Ok(Geometry::Fine);
         }
         n if !(2..=MAX_POLYGON_VERTICES).contains(&n) => {
-            return Err((Code::BadVertexCount, format!(
-                "a polygon needs 2 to {MAX_POLYGON_VERTICES} vertices, this one has {}", vertices.len()
-            )));
+            return Err((
+                Code::BadVertexCount,
+                format!(
+                    "a polygon needs 2 to {MAX_POLYGON_VERTICES} vertices, this one has {}",
+                    vertices.len()
+                ),
+            ));
         }
         _ => {}
     }
@@ -66,7 +76,8 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
     if hull.len() < 3 || hull_area(&merged, &hull) <= f32::EPSILON {
         return Err((Code::DegeneratePolygon, "the polygon's points are collinear or (nearly) coincide: it has no area, and Box2D would replace it with a 1x1 box".into()));
     }
-    let kept_in_order = merged.len() == vertices.len() && hull.len() == vertices.len()
+    let kept_in_order = merged.len() == vertices.len()
+        && hull.len() == vertices.len()
         && is_rotation_of_identity(&hull);
     if kept_in_order {
         Ok(Geometry::Fine)
@@ -120,9 +131,11 @@ fn convex_hull(points: &[Vec2]) -> Vec<usize> {
 
 fn hull_area(points: &[Vec2], hull: &[usize]) -> f32 {
     let origin = points[hull[0]];
-    let twice: f32 = hull.windows(2).skip(1).map(|w| {
-        cross(sub(points[w[0]], origin), sub(points[w[1]], origin))
-    }).sum();
+    let twice: f32 = hull
+        .windows(2)
+        .skip(1)
+        .map(|w| cross(sub(points[w[0]], origin), sub(points[w[1]], origin)))
+        .sum();
     0.5 * twice
 }
 
@@ -135,7 +148,10 @@ fn is_rotation_of_identity(hull: &[usize]) -> bool {
 /// An edge must have length (at least the linear slop).
 pub fn edge(vertices: &[Vec2]) -> Checked {
     if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
-        return Err((Code::DegenerateEdge, format!("the edge is shorter than Box2D's linear slop ({LINEAR_SLOP} m)")));
+        return Err((
+            Code::DegenerateEdge,
+            format!("the edge is shorter than Box2D's linear slop ({LINEAR_SLOP} m)"),
+        ));
     }
     Ok(Geometry::Fine)
 }
@@ -145,16 +161,22 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
     let least = if is_loop { 3 } else { 2 };
     if vertices.len() < least {
         let what = if is_loop { "loop" } else { "chain" };
-        return Err((Code::BadVertexCount, format!("a {what} needs at least {least} vertices, this one has {}", vertices.len())));
+        return Err((
+            Code::BadVertexCount,
+            format!("a {what} needs at least {least} vertices, this one has {}", vertices.len()),
+        ));
     }
     let closing = is_loop.then(|| [vertices[vertices.len() - 1], vertices[0]]);
     let pairs = vertices.windows(2).map(|w| [w[0], w[1]]).chain(closing);
     for (i, [a, b]) in pairs.enumerate() {
         if length_squared(sub(b, a)) < LINEAR_SLOP * LINEAR_SLOP {
-            return Err((Code::DegenerateChain, format!(
-                "chain vertices {i} and {} are closer than Box2D's linear slop ({LINEAR_SLOP} m)",
-                (i + 1) % vertices.len()
-            )));
+            return Err((
+                Code::DegenerateChain,
+                format!(
+                    "chain vertices {i} and {} are closer than Box2D's linear slop ({LINEAR_SLOP} m)",
+                    (i + 1) % vertices.len()
+                ),
+            ));
         }
     }
     Ok(Geometry::Fine)
@@ -163,7 +185,10 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
 /// The rules one joint can break on its own (its references are checked elsewhere).
 pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
     if joint.body_a == joint.body_b {
-        return Err((Code::JointSelfReference, format!("the joint connects body {} to itself", joint.body_a)));
+        return Err((
+            Code::JointSelfReference,
+            format!("the joint connects body {} to itself", joint.body_a),
+        ));
     }
     let kind = joint.kind();
     if joint.enable_limit && joint.lower_limit > joint.upper_limit {
@@ -171,16 +196,26 @@ pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
             Some(JointKind::Revolute) => ("LowerAngle", "UpperAngle"),
             _ => ("LowerTranslation", "UpperTranslation"),
         };
-        return Err((Code::BadLimit, format!(
-            "{lower} {} is above {upper} {} with the limit enabled", joint.lower_limit, joint.upper_limit
-        )));
+        return Err((
+            Code::BadLimit,
+            format!(
+                "{lower} {} is above {upper} {} with the limit enabled",
+                joint.lower_limit, joint.upper_limit
+            ),
+        ));
     }
     let has_axis = matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel));
     if has_axis && joint.local_axis_a == Vec2::ZERO {
-        return Err((Code::ZeroAxis, "<LocalAxisA> is (0, 0): a joint axis needs a direction".into()));
+        return Err((
+            Code::ZeroAxis,
+            "<LocalAxisA> is (0, 0): a joint axis needs a direction".into(),
+        ));
     }
     if kind == Some(JointKind::Pulley) && joint.ratio <= 0.0 {
-        return Err((Code::BadRatio, format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio)));
+        return Err((
+            Code::BadRatio,
+            format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio),
+        ));
     }
     Ok(())
 }
@@ -194,7 +229,9 @@ pub(crate) fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
         if b.kind() != Some(BodyKind::Dynamic) || b.mass_data.mass_given {
             continue;
         }
-        let zero = s.fixture_ids[b.fixtures.indices()].iter().find(|&&f| s.fixtures[f as usize].density == 0.0);
+        let zero = s.fixture_ids[b.fixtures.indices()]
+            .iter()
+            .find(|&&f| s.fixtures[f as usize].density == 0.0);
         if let Some(f) = zero {
             found.push((p.origins.bodies[i], format!(
                 "dynamic body {i} has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"

@@ -42,7 +42,11 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> String {
         .joints()
         .iter()
         .filter(|j| j.kind() != Some(JointKind::Unsupported))
-        .map(|&j| Joint { joint_a: renumber(&renumbered, j.joint_a), joint_b: renumber(&renumbered, j.joint_b), ..j })
+        .map(|&j| Joint {
+            joint_a: renumber(&renumbered, j.joint_a),
+            joint_b: renumber(&renumbered, j.joint_b),
+            ..j
+        })
         .collect();
     w.container("Joints", &joints, Writer::joint);
     w.close("World");
@@ -75,7 +79,9 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
         Some(JointKind::Weld) => j.frequency_hz.to_bits() != 0 || j.damping_ratio.to_bits() != 0,
         _ => false,
     };
-    scene.shapes().iter().any(shape) || scene.bodies().iter().any(body) || scene.joints().iter().any(joint)
+    scene.shapes().iter().any(shape)
+        || scene.bodies().iter().any(body)
+        || scene.joints().iter().any(joint)
 }
 
 /// The shortest text that reads back to the same f32: plain decimals for ordinary
@@ -173,7 +179,10 @@ impl Writer<'_> {
     }
 
     fn vector_or_default(&mut self, name: &str, value: Vec2, default: Vec2) {
-        if self.all || value.x.to_bits() != default.x.to_bits() || value.y.to_bits() != default.y.to_bits() {
+        if self.all
+            || value.x.to_bits() != default.x.to_bits()
+            || value.y.to_bits() != default.y.to_bits()
+        {
             self.vector(name, value);
         }
     }

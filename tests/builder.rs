@@ -42,7 +42,11 @@ fn rebuild(scene: &Scene) -> Scene {
 #[test]
 fn a_loaded_scene_rebuilt_is_the_same_scene() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    for file in ["tests/scenes/every-v1-field.xml", "tests/data/corpus/renderer-scene-v1.xml", "examples/scenes/showcase.xml"] {
+    for file in [
+        "tests/scenes/every-v1-field.xml",
+        "tests/data/corpus/renderer-scene-v1.xml",
+        "examples/scenes/showcase.xml",
+    ] {
         let scene = load_path(root.join(file), &LoadOptions::default()).unwrap();
         let built = rebuild(&scene);
         assert_eq!(content(&built), content(&scene), "{file}");
@@ -82,10 +86,18 @@ fn joint(kind: JointKind) -> Joint {
 }
 
 /// Asserts the refusal's code and that its message starts by naming the object.
-fn assert_refused<T: std::fmt::Debug>(result: Result<T, box2scene::Error>, code: Code, object: &str) -> String {
+fn assert_refused<T: std::fmt::Debug>(
+    result: Result<T, box2scene::Error>,
+    code: Code,
+    object: &str,
+) -> String {
     let error = result.expect_err("the addition is refused");
     assert_eq!(error.code, code, "{}", error.message);
-    assert!(error.message.starts_with(object), "{:?} does not start with {object:?}", error.message);
+    assert!(
+        error.message.starts_with(object),
+        "{:?} does not start with {object:?}",
+        error.message
+    );
     assert_eq!((error.position.line, error.position.column), (0, 0));
     error.message
 }
@@ -102,10 +114,18 @@ fn shapes_are_refused_with_the_loaders_codes() {
     assert_refused(b.add_shape(&polygon, None, &collinear), Code::DegeneratePolygon, "shape 1: ");
     let edge = Shape::new(ShapeKind::Edge);
     assert_refused(b.add_shape(&edge, None, &collinear), Code::BadVertexCount, "shape 1: ");
-    assert_refused(b.add_shape(&edge, None, &[Vec2::ZERO, Vec2::ZERO]), Code::DegenerateEdge, "shape 1: ");
+    assert_refused(
+        b.add_shape(&edge, None, &[Vec2::ZERO, Vec2::ZERO]),
+        Code::DegenerateEdge,
+        "shape 1: ",
+    );
     let lonely = Shape { is_loop: true, ..Shape::new(ShapeKind::Chain) };
     assert_refused(b.add_shape(&lonely, None, &collinear[..2]), Code::BadVertexCount, "shape 1: ");
-    assert_refused(b.add_shape(&Shape { kind: 9, ..circle(1.0) }, None, &[]), Code::InvalidArgument, "shape 1: ");
+    assert_refused(
+        b.add_shape(&Shape { kind: 9, ..circle(1.0) }, None, &[]),
+        Code::InvalidArgument,
+        "shape 1: ",
+    );
     // Nothing refused was added: the next shape is still number 1.
     assert_eq!(b.add_shape(&circle(2.0), None, &[]).unwrap(), 1);
 }
@@ -113,67 +133,147 @@ fn shapes_are_refused_with_the_loaders_codes() {
 #[test]
 fn fixtures_and_bodies_are_refused_with_the_loaders_codes() {
     let mut b = started();
-    let message = assert_refused(b.add_fixture(&Fixture { shape: 5, ..Fixture::default() }, None), Code::IdOutOfRange, "fixture 1: ");
+    let message = assert_refused(
+        b.add_fixture(&Fixture { shape: 5, ..Fixture::default() }, None),
+        Code::IdOutOfRange,
+        "fixture 1: ",
+    );
     assert_eq!(message, "fixture 1: names shape 5, but the scene has 1 shapes");
-    assert_refused(b.add_fixture(&Fixture { shape: 0, density: -1.0, ..Fixture::default() }, None), Code::NegativeValue, "fixture 1: ");
-    assert_refused(b.add_fixture(&Fixture { shape: 0, user_data: 3, ..Fixture::default() }, None), Code::IdOutOfRange, "fixture 1: ");
-    let message = assert_refused(b.add_body(&Body::new(BodyKind::Static), None, &[0, 4]), Code::IdOutOfRange, "body 2: ");
+    assert_refused(
+        b.add_fixture(&Fixture { shape: 0, density: -1.0, ..Fixture::default() }, None),
+        Code::NegativeValue,
+        "fixture 1: ",
+    );
+    assert_refused(
+        b.add_fixture(&Fixture { shape: 0, user_data: 3, ..Fixture::default() }, None),
+        Code::IdOutOfRange,
+        "fixture 1: ",
+    );
+    let message = assert_refused(
+        b.add_body(&Body::new(BodyKind::Static), None, &[0, 4]),
+        Code::IdOutOfRange,
+        "body 2: ",
+    );
     assert_eq!(message, "body 2: names fixture 4, but the scene has 1 fixtures");
     let mut heavy = Body::new(BodyKind::Dynamic);
     (heavy.mass_data.mass, heavy.mass_data.mass_given) = (-2.0, true);
     assert_refused(b.add_body(&heavy, None, &[]), Code::NegativeValue, "body 2: ");
     let lost = Body { position: Vec2::new(f32::INFINITY, 0.0), ..Body::new(BodyKind::Static) };
     assert_refused(b.add_body(&lost, None, &[]), Code::NonFiniteFloat, "body 2: ");
-    assert_refused(b.add_body(&Body { kind: 7, ..Body::new(BodyKind::Static) }, None, &[]), Code::InvalidArgument, "body 2: ");
+    assert_refused(
+        b.add_body(&Body { kind: 7, ..Body::new(BodyKind::Static) }, None, &[]),
+        Code::InvalidArgument,
+        "body 2: ",
+    );
 }
 
 #[test]
 fn joints_are_refused_with_the_loaders_codes() {
     let mut b = started();
-    assert_refused(b.add_joint(&Joint { body_b: 0, ..joint(JointKind::Weld) }, None), Code::JointSelfReference, "joint 0: ");
-    assert_refused(b.add_joint(&Joint { body_b: 9, ..joint(JointKind::Weld) }, None), Code::IdOutOfRange, "joint 0: ");
-    let limited = Joint { enable_limit: true, lower_limit: 1.0, upper_limit: -1.0, ..joint(JointKind::Revolute) };
+    assert_refused(
+        b.add_joint(&Joint { body_b: 0, ..joint(JointKind::Weld) }, None),
+        Code::JointSelfReference,
+        "joint 0: ",
+    );
+    assert_refused(
+        b.add_joint(&Joint { body_b: 9, ..joint(JointKind::Weld) }, None),
+        Code::IdOutOfRange,
+        "joint 0: ",
+    );
+    let limited = Joint {
+        enable_limit: true,
+        lower_limit: 1.0,
+        upper_limit: -1.0,
+        ..joint(JointKind::Revolute)
+    };
     assert_refused(b.add_joint(&limited, None), Code::BadLimit, "joint 0: ");
-    assert_refused(b.add_joint(&Joint { local_axis_a: Vec2::ZERO, ..joint(JointKind::Prismatic) }, None), Code::ZeroAxis, "joint 0: ");
-    assert_refused(b.add_joint(&Joint { ratio: 0.0, ..joint(JointKind::Pulley) }, None), Code::BadRatio, "joint 0: ");
-    let message = assert_refused(b.add_joint(&Joint { max_motor_torque: -5.0, ..joint(JointKind::Revolute) }, None), Code::NegativeValue, "joint 0: ");
+    assert_refused(
+        b.add_joint(&Joint { local_axis_a: Vec2::ZERO, ..joint(JointKind::Prismatic) }, None),
+        Code::ZeroAxis,
+        "joint 0: ",
+    );
+    assert_refused(
+        b.add_joint(&Joint { ratio: 0.0, ..joint(JointKind::Pulley) }, None),
+        Code::BadRatio,
+        "joint 0: ",
+    );
+    let message = assert_refused(
+        b.add_joint(&Joint { max_motor_torque: -5.0, ..joint(JointKind::Revolute) }, None),
+        Code::NegativeValue,
+        "joint 0: ",
+    );
     assert_eq!(message, "joint 0: <MaxMotorTorque> is -5, but it cannot be negative");
-    assert_refused(b.add_joint(&joint(JointKind::Unsupported), None), Code::InvalidArgument, "joint 0: ");
+    assert_refused(
+        b.add_joint(&joint(JointKind::Unsupported), None),
+        Code::InvalidArgument,
+        "joint 0: ",
+    );
     assert_eq!(b.add_joint(&joint(JointKind::Weld), None).unwrap(), 0);
     let gear = Joint { joint_a: 0, joint_b: 0, ..joint(JointKind::Gear) };
     assert_refused(b.add_joint(&gear, None), Code::BadGearJoint, "joint 1: ");
     assert_eq!(b.add_joint(&joint(JointKind::Revolute), None).unwrap(), 1);
-    assert_eq!(b.add_joint(&Joint { joint_a: 1, joint_b: 1, ..joint(JointKind::Gear) }, None).unwrap(), 2);
+    assert_eq!(
+        b.add_joint(&Joint { joint_a: 1, joint_b: 1, ..joint(JointKind::Gear) }, None).unwrap(),
+        2
+    );
 }
 
 #[test]
 fn additions_are_made_canonical() {
     let mut b = started();
-    let stray = Joint { local_axis_a: Vec2::new(3.0, 4.0), length: 9.0, max_force: 2.0, ..joint(JointKind::Revolute) };
+    let stray = Joint {
+        local_axis_a: Vec2::new(3.0, 4.0),
+        length: 9.0,
+        max_force: 2.0,
+        ..joint(JointKind::Revolute)
+    };
     b.add_joint(&stray, Some("  hinge\n")).unwrap();
     let data = b.add_user_data(None, Some("System.String"), Some("a < b")).unwrap();
-    assert_refused(b.add_user_data(Some("<Type>unclosed"), None, None), Code::MalformedXml, "user data 1: ");
-    assert_refused(b.add_user_data(None, None, Some("orphan")), Code::InvalidArgument, "user data 1: ");
+    assert_refused(
+        b.add_user_data(Some("<Type>unclosed"), None, None),
+        Code::MalformedXml,
+        "user data 1: ",
+    );
+    assert_refused(
+        b.add_user_data(None, None, Some("orphan")),
+        Code::InvalidArgument,
+        "user data 1: ",
+    );
     b.add_body(&Body { user_data: data, ..Body::new(BodyKind::Kinematic) }, None, &[]).unwrap();
     let scene = b.finish();
     let hinge = &scene.joints()[0];
-    assert_eq!((hinge.local_axis_a, hinge.length, hinge.max_force), (Vec2::ZERO, 0.0, 0.0), "fields a revolute joint does not have");
+    assert_eq!(
+        (hinge.local_axis_a, hinge.length, hinge.max_force),
+        (Vec2::ZERO, 0.0, 0.0),
+        "fields a revolute joint does not have"
+    );
     assert_eq!(scene.text(hinge.name), Some("hinge"));
     let u = scene.user_data_at(scene.bodies()[2].user_data).unwrap();
-    assert_eq!(scene.text(u.raw), Some("<Type>System.String</Type><Value><string>a &lt; b</string></Value>"));
-    assert_eq!((scene.text(u.type_name), scene.text(u.value)), (Some("System.String"), Some("a < b")));
+    assert_eq!(
+        scene.text(u.raw),
+        Some("<Type>System.String</Type><Value><string>a &lt; b</string></Value>")
+    );
+    assert_eq!(
+        (scene.text(u.type_name), scene.text(u.value)),
+        (Some("System.String"), Some("a < b"))
+    );
     assert_eq!(scene.joints()[0].user_data, NONE);
 }
 
 #[test]
 fn the_loaders_warnings_are_attached() {
     let mut b = Builder::new();
-    let square = [Vec2::new(0.0, 0.0), Vec2::new(0.0, 1.0), Vec2::new(1.0, 1.0), Vec2::new(1.0, 0.0)];
+    let square =
+        [Vec2::new(0.0, 0.0), Vec2::new(0.0, 1.0), Vec2::new(1.0, 1.0), Vec2::new(1.0, 0.0)];
     b.add_shape(&Shape::new(ShapeKind::Polygon), None, &square).unwrap();
     b.add_fixture(&Fixture { shape: 0, ..Fixture::default() }, None).unwrap();
     b.add_body(&Body::new(BodyKind::Dynamic), None, &[0]).unwrap();
     let scene = b.finish();
-    let found: Vec<_> = scene.diagnostics().iter().map(|d| (d.code().unwrap(), d.line, scene.text(d.message).unwrap())).collect();
+    let found: Vec<_> = scene
+        .diagnostics()
+        .iter()
+        .map(|d| (d.code().unwrap(), d.line, scene.text(d.message).unwrap()))
+        .collect();
     assert_eq!(found.len(), 2, "{found:?}");
     assert_eq!((found[0].0, found[0].1), (Code::PolygonNotConvexCcw, 0));
     assert!(found[0].2.starts_with("shape 0: "));

@@ -659,14 +659,27 @@ mod json {
 #[test]
 fn fmt_prints_the_canonical_form_that_reads_back_the_same() {
     let sandbox = Sandbox::new("fmt-stdout");
-    sandbox.write("level.xml", &CLEAN.replace("<World Version=\"1\">", "<world version=\"1\">").replace("</World>", "</world>"));
+    sandbox.write(
+        "level.xml",
+        &CLEAN
+            .replace("<World Version=\"1\">", "<world version=\"1\">")
+            .replace("</World>", "</world>"),
+    );
     let run = sandbox.run(&["fmt", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
-    assert!(run.stdout.starts_with("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<World Version=\"1\">\n"), "{}", run.stdout);
+    assert!(
+        run.stdout
+            .starts_with("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<World Version=\"1\">\n"),
+        "{}",
+        run.stdout
+    );
     sandbox.write("formatted.xml", &run.stdout);
     let again = sandbox.run(&["fmt", "formatted.xml"]);
     assert_eq!(again.stdout, run.stdout, "formatting is idempotent");
-    assert_eq!(sandbox.run(&["dump", "formatted.xml"]).stdout, sandbox.run(&["dump", "level.xml"]).stdout);
+    assert_eq!(
+        sandbox.run(&["dump", "formatted.xml"]).stdout,
+        sandbox.run(&["dump", "level.xml"]).stdout
+    );
 }
 
 #[test]
@@ -674,7 +687,11 @@ fn fmt_writes_in_place_only_when_asked() {
     let sandbox = Sandbox::new("fmt-in-place");
     sandbox.write("level.xml", CLEAN);
     let printed = sandbox.run(&["fmt", "--all-fields", "level.xml"]).stdout;
-    assert_eq!(fs::read_to_string(sandbox.dir.join("level.xml")).unwrap(), CLEAN, "untouched without -o");
+    assert_eq!(
+        fs::read_to_string(sandbox.dir.join("level.xml")).unwrap(),
+        CLEAN,
+        "untouched without -o"
+    );
     let run = sandbox.run(&["fmt", "--all-fields", "-o", "level.xml", "level.xml"]);
     assert_eq!((run.status, run.stdout.as_str(), run.stderr.as_str()), (0, "", ""));
     assert_eq!(fs::read_to_string(sandbox.dir.join("level.xml")).unwrap(), printed);
@@ -687,6 +704,10 @@ fn fmt_of_a_bad_file_writes_nothing_and_exits_1() {
     sandbox.write("bad.xml", &with_bad_density());
     let run = sandbox.run(&["fmt", "-o", "out.xml", "bad.xml"]);
     assert_eq!((run.status, run.stdout.as_str()), (1, ""));
-    assert!(run.stderr.starts_with("bad.xml:") && run.stderr.contains("error[invalid-float]"), "{}", run.stderr);
+    assert!(
+        run.stderr.starts_with("bad.xml:") && run.stderr.contains("error[invalid-float]"),
+        "{}",
+        run.stderr
+    );
     assert!(!sandbox.dir.join("out.xml").exists());
 }

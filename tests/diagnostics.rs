@@ -37,7 +37,9 @@ fn expect_warning(marked: &str, code: Code) {
     let found: Vec<_> = scene
         .diagnostics()
         .iter()
-        .map(|d| (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap()))
+        .map(|d| {
+            (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap())
+        })
         .collect();
     assert!(
         found.iter().any(|&(c, l, col, _)| (c, l, col) == (code, line, column)),
@@ -57,7 +59,8 @@ fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
 
 const CIRCLE: &str = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape>";
 const FIXTURE: &str = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
-const TWO_BODIES: &str = "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
+const TWO_BODIES: &str =
+    "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
 
 fn joint(kind: &str, fields: &str) -> String {
     world(
@@ -75,7 +78,9 @@ fn polygon(vertices: &[&str]) -> String {
 
 #[test]
 fn invalid_utf8_points_at_the_first_bad_byte() {
-    let error = load(b"<World Version=\"1\">\n<Shapes>\xC3\x28</Shapes></World>", &LoadOptions::default()).unwrap_err();
+    let error =
+        load(b"<World Version=\"1\">\n<Shapes>\xC3\x28</Shapes></World>", &LoadOptions::default())
+            .unwrap_err();
     assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidUtf8, 2, 9));
     assert_eq!(error.position.byte_offset, 28);
 }
@@ -88,7 +93,10 @@ fn nul_byte() {
 
 #[test]
 fn unsupported_encoding_declared() {
-    expect_error("⌖<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><World Version=\"1\"/>", Code::UnsupportedEncoding);
+    expect_error(
+        "⌖<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><World Version=\"1\"/>",
+        Code::UnsupportedEncoding,
+    );
 }
 
 #[test]
@@ -112,7 +120,12 @@ fn malformed_xml_mismatched_tag() {
 
 #[test]
 fn malformed_xml_unknown_entity() {
-    let xml = world(&CIRCLE.replace("<Shape ", "<Shape Name=\"a\" ").replace("<Radius>1", "<Radius>⌖&nbsp;1"), "", "", "");
+    let xml = world(
+        &CIRCLE.replace("<Shape ", "<Shape Name=\"a\" ").replace("<Radius>1", "<Radius>⌖&nbsp;1"),
+        "",
+        "",
+        "",
+    );
     expect_error(&xml, Code::MalformedXml);
 }
 
@@ -123,7 +136,10 @@ fn malformed_xml_truncated() {
 
 #[test]
 fn malformed_xml_second_root() {
-    expect_error("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>\n⌖<World/>", Code::MalformedXml);
+    expect_error(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>\n⌖<World/>",
+        Code::MalformedXml,
+    );
 }
 
 #[test]
@@ -133,7 +149,10 @@ fn malformed_xml_empty_file() {
 
 #[test]
 fn duplicate_attribute() {
-    expect_error(&world("", "", "<Body Type=\"Static\" ⌖Type=\"Dynamic\"/>", ""), Code::DuplicateAttribute);
+    expect_error(
+        &world("", "", "<Body Type=\"Static\" ⌖Type=\"Dynamic\"/>", ""),
+        Code::DuplicateAttribute,
+    );
 }
 
 #[test]
@@ -147,14 +166,19 @@ fn limit_exceeded_depth() {
 #[test]
 fn limit_exceeded_elements() {
     let options = LoadOptions { max_elements: 3, ..LoadOptions::default() };
-    let message = expect_error_with("<World Version=\"1\"><Shapes/><Fixtures/>⌖<Bodies/></World>", Code::LimitExceeded, &options);
+    let message = expect_error_with(
+        "<World Version=\"1\"><Shapes/><Fixtures/>⌖<Bodies/></World>",
+        Code::LimitExceeded,
+        &options,
+    );
     assert!(message.contains("max_elements"), "{message}");
 }
 
 #[test]
 fn limit_exceeded_text() {
     let options = LoadOptions { max_text_bytes: 8, ..LoadOptions::default() };
-    let xml = world("", "", "<Body Type=\"Static\"><Name>⌖a name that is too long</Name></Body>", "");
+    let xml =
+        world("", "", "<Body Type=\"Static\"><Name>⌖a name that is too long</Name></Body>", "");
     expect_error_with(&xml, Code::LimitExceeded, &options);
 }
 
@@ -184,8 +208,14 @@ fn unsupported_version() {
 
 #[test]
 fn duplicate_container() {
-    expect_error("<World Version=\"1\">\n<Shapes/>\n⌖<Shapes/>\n</World>", Code::DuplicateContainer);
-    expect_error(&polygon(&["0 0", "1 0", "1 1"]).replace("</Vertices>", "</Vertices>⌖<Vertices/>"), Code::DuplicateContainer);
+    expect_error(
+        "<World Version=\"1\">\n<Shapes/>\n⌖<Shapes/>\n</World>",
+        Code::DuplicateContainer,
+    );
+    expect_error(
+        &polygon(&["0 0", "1 0", "1 1"]).replace("</Vertices>", "</Vertices>⌖<Vertices/>"),
+        Code::DuplicateContainer,
+    );
 }
 
 #[test]
@@ -200,10 +230,19 @@ fn missing_attribute() {
 
 #[test]
 fn missing_element() {
-    let message = expect_error(&world(CIRCLE, "⌖<Fixture><Density>1</Density></Fixture>", "", ""), Code::MissingElement);
+    let message = expect_error(
+        &world(CIRCLE, "⌖<Fixture><Density>1</Density></Fixture>", "", ""),
+        Code::MissingElement,
+    );
     assert!(message.contains("Shape"), "{message}");
-    expect_error(&world("⌖<Shape Type=\"Circle\"><Radius>1</Radius></Shape>", "", "", ""), Code::MissingElement);
-    expect_error(&world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Weld\"><BodyA>0</BodyA></Joint>"), Code::MissingElement);
+    expect_error(
+        &world("⌖<Shape Type=\"Circle\"><Radius>1</Radius></Shape>", "", "", ""),
+        Code::MissingElement,
+    );
+    expect_error(
+        &world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Weld\"><BodyA>0</BodyA></Joint>"),
+        Code::MissingElement,
+    );
 }
 
 #[test]
@@ -220,36 +259,68 @@ fn unsupported_joint_type() {
 
 #[test]
 fn invalid_int() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖x</GroupIndex></FilterData></Fixture>", "", ""), Code::InvalidInt);
+    expect_error(
+        &world(
+            CIRCLE,
+            "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖x</GroupIndex></FilterData></Fixture>",
+            "",
+            "",
+        ),
+        Code::InvalidInt,
+    );
 }
 
 #[test]
 fn invalid_float() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Density>⌖abc</Density></Fixture>", "", ""), Code::InvalidFloat);
+    expect_error(
+        &world(CIRCLE, "<Fixture><Shape>0</Shape><Density>⌖abc</Density></Fixture>", "", ""),
+        Code::InvalidFloat,
+    );
 }
 
 #[test]
 fn float_decimal_comma() {
-    let message = expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Density> 0⌖,5 </Density></Fixture>", "", ""), Code::FloatDecimalComma);
+    let message = expect_error(
+        &world(CIRCLE, "<Fixture><Shape>0</Shape><Density> 0⌖,5 </Density></Fixture>", "", ""),
+        Code::FloatDecimalComma,
+    );
     assert!(message.contains("locale"), "{message}");
 }
 
 #[test]
 fn non_finite_float() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖NaN</Friction></Fixture>", "", ""), Code::NonFiniteFloat);
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖1e39</Friction></Fixture>", "", ""), Code::NonFiniteFloat);
-    expect_error(&world("", "", "<Body Type=\"Static\"><Position>1 ⌖Infinity</Position></Body>", ""), Code::NonFiniteFloat);
+    expect_error(
+        &world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖NaN</Friction></Fixture>", "", ""),
+        Code::NonFiniteFloat,
+    );
+    expect_error(
+        &world(CIRCLE, "<Fixture><Shape>0</Shape><Friction>⌖1e39</Friction></Fixture>", "", ""),
+        Code::NonFiniteFloat,
+    );
+    expect_error(
+        &world("", "", "<Body Type=\"Static\"><Position>1 ⌖Infinity</Position></Body>", ""),
+        Code::NonFiniteFloat,
+    );
 }
 
 #[test]
 fn invalid_bool() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><IsSensor>⌖yes</IsSensor></Fixture>", "", ""), Code::InvalidBool);
+    expect_error(
+        &world(CIRCLE, "<Fixture><Shape>0</Shape><IsSensor>⌖yes</IsSensor></Fixture>", "", ""),
+        Code::InvalidBool,
+    );
 }
 
 #[test]
 fn invalid_vector2() {
-    expect_error(&world("", "", "<Body Type=\"Static\"><Position>⌖1 2 3</Position></Body>", ""), Code::InvalidVector2);
-    expect_error(&world("", "", "<Body Type=\"Static\"><Position>⌖1,,2</Position></Body>", ""), Code::InvalidVector2);
+    expect_error(
+        &world("", "", "<Body Type=\"Static\"><Position>⌖1 2 3</Position></Body>", ""),
+        Code::InvalidVector2,
+    );
+    expect_error(
+        &world("", "", "<Body Type=\"Static\"><Position>⌖1,,2</Position></Body>", ""),
+        Code::InvalidVector2,
+    );
 }
 
 #[test]
@@ -259,12 +330,28 @@ fn invalid_id() {
 
 #[test]
 fn invalid_bits() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖-4</MaskBits></FilterData></Fixture>", "", ""), Code::InvalidBits);
+    expect_error(
+        &world(
+            CIRCLE,
+            "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖-4</MaskBits></FilterData></Fixture>",
+            "",
+            "",
+        ),
+        Code::InvalidBits,
+    );
 }
 
 #[test]
 fn out_of_range() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖40000</GroupIndex></FilterData></Fixture>", "", ""), Code::OutOfRange);
+    expect_error(
+        &world(
+            CIRCLE,
+            "<Fixture><Shape>0</Shape><FilterData><GroupIndex>⌖40000</GroupIndex></FilterData></Fixture>",
+            "",
+            "",
+        ),
+        Code::OutOfRange,
+    );
 }
 
 #[test]
@@ -285,7 +372,15 @@ fn id_out_of_range_checked_whatever_the_container_order() {
 
 #[test]
 fn bad_radius() {
-    expect_error(&world("<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>", "", "", ""), Code::BadRadius);
+    expect_error(
+        &world(
+            "<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>",
+            "",
+            "",
+            "",
+        ),
+        Code::BadRadius,
+    );
 }
 
 #[test]
@@ -298,14 +393,29 @@ fn bad_vertex_count() {
 
 #[test]
 fn degenerate_polygon() {
-    expect_error(&polygon(&["0 0", "1 1", "2 2"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
-    expect_error(&polygon(&["0 0", "0.001 0"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
-    expect_error(&polygon(&["0 0", "1 0", "0 0.001", "1 0.0001"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_error(
+        &polygon(&["0 0", "1 1", "2 2"]).replace("<Shape ", "⌖<Shape "),
+        Code::DegeneratePolygon,
+    );
+    expect_error(
+        &polygon(&["0 0", "0.001 0"]).replace("<Shape ", "⌖<Shape "),
+        Code::DegeneratePolygon,
+    );
+    expect_error(
+        &polygon(&["0 0", "1 0", "0 0.001", "1 0.0001"]).replace("<Shape ", "⌖<Shape "),
+        Code::DegeneratePolygon,
+    );
 }
 
 #[test]
 fn degenerate_edge() {
-    let xml = world("⌖<Shape Type=\"Edge\"><Vertex1>1 1</Vertex1><Vertex2>1 1</Vertex2></Shape>", "", "", "").replace("\"1\"", "\"2\"");
+    let xml = world(
+        "⌖<Shape Type=\"Edge\"><Vertex1>1 1</Vertex1><Vertex2>1 1</Vertex2></Shape>",
+        "",
+        "",
+        "",
+    )
+    .replace("\"1\"", "\"2\"");
     expect_error(&xml, Code::DegenerateEdge);
 }
 
@@ -317,14 +427,30 @@ fn degenerate_chain() {
 
 #[test]
 fn negative_value() {
-    expect_error(&world(CIRCLE, "<Fixture><Shape>0</Shape><Restitution>⌖-0.5</Restitution></Fixture>", "", ""), Code::NegativeValue);
-    expect_error(&world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-1</Mass></MassData></Body>", ""), Code::NegativeValue);
+    expect_error(
+        &world(
+            CIRCLE,
+            "<Fixture><Shape>0</Shape><Restitution>⌖-0.5</Restitution></Fixture>",
+            "",
+            "",
+        ),
+        Code::NegativeValue,
+    );
+    expect_error(
+        &world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-1</Mass></MassData></Body>", ""),
+        Code::NegativeValue,
+    );
     expect_error(&joint("Distance", "<Length>⌖-2</Length>"), Code::NegativeValue);
 }
 
 #[test]
 fn joint_self_reference() {
-    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>⌖1</BodyB></Joint>");
+    let xml = world(
+        CIRCLE,
+        FIXTURE,
+        TWO_BODIES,
+        "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>⌖1</BodyB></Joint>",
+    );
     expect_error(&xml, Code::JointSelfReference);
 }
 
@@ -332,8 +458,13 @@ fn joint_self_reference() {
 fn bad_gear_joint() {
     let revolute = "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
     let weld = "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
-    let gear = |a: &str, b: &str| format!("<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>");
-    let at_weld = world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{weld}{}", gear("0", "⌖1")));
+    let gear = |a: &str, b: &str| {
+        format!(
+            "<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>"
+        )
+    };
+    let at_weld =
+        world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{weld}{}", gear("0", "⌖1")));
     assert!(expect_error(&at_weld, Code::BadGearJoint).contains("Weld"));
     let at_itself = world(CIRCLE, FIXTURE, TWO_BODIES, &format!("{revolute}{}", gear("⌖1", "0")));
     assert!(expect_error(&at_itself, Code::BadGearJoint).contains("itself"));
@@ -343,7 +474,12 @@ fn bad_gear_joint() {
 
 #[test]
 fn bad_limit() {
-    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><EnableLimit>true</EnableLimit><LowerAngle>1</LowerAngle><UpperAngle>-1</UpperAngle></Joint>");
+    let xml = world(
+        CIRCLE,
+        FIXTURE,
+        TWO_BODIES,
+        "⌖<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><EnableLimit>true</EnableLimit><LowerAngle>1</LowerAngle><UpperAngle>-1</UpperAngle></Joint>",
+    );
     expect_error(&xml, Code::BadLimit);
     // Without the limit enabled, the same values are fine.
     load(unmark(&xml.replace("true", "false")).0.as_bytes(), &LoadOptions::default()).unwrap();
@@ -351,38 +487,63 @@ fn bad_limit() {
 
 #[test]
 fn zero_axis() {
-    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0 0</LocalAxisA></Joint>");
+    let xml = world(
+        CIRCLE,
+        FIXTURE,
+        TWO_BODIES,
+        "⌖<Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0 0</LocalAxisA></Joint>",
+    );
     expect_error(&xml, Code::ZeroAxis);
 }
 
 #[test]
 fn bad_ratio() {
-    let xml = world(CIRCLE, FIXTURE, TWO_BODIES, "⌖<Joint Type=\"Pulley\"><BodyA>0</BodyA><BodyB>1</BodyB><Ratio>0</Ratio></Joint>");
+    let xml = world(
+        CIRCLE,
+        FIXTURE,
+        TWO_BODIES,
+        "⌖<Joint Type=\"Pulley\"><BodyA>0</BodyA><BodyB>1</BodyB><Ratio>0</Ratio></Joint>",
+    );
     expect_error(&xml, Code::BadRatio);
 }
 
 #[test]
 fn io_error() {
-    let error = box2scene::load_path("/nonexistent/level.xml", &LoadOptions::default()).unwrap_err();
+    let error =
+        box2scene::load_path("/nonexistent/level.xml", &LoadOptions::default()).unwrap_err();
     assert_eq!(error.code, Code::Io);
     assert!(error.message.contains("/nonexistent/level.xml"));
 }
 
 #[test]
 fn legacy_unversioned() {
-    expect_warning("⌖<World><Shapes/><Fixtures/><Bodies/><Joints/></World>", Code::LegacyUnversioned);
+    expect_warning(
+        "⌖<World><Shapes/><Fixtures/><Bodies/><Joints/></World>",
+        Code::LegacyUnversioned,
+    );
 }
 
 #[test]
 fn construct_newer_than_version() {
-    expect_warning(&world("", "", "<Body Type=\"Static\">⌖<GravityScale>2</GravityScale></Body>", ""), Code::ConstructNewerThanVersion);
+    expect_warning(
+        &world("", "", "<Body Type=\"Static\">⌖<GravityScale>2</GravityScale></Body>", ""),
+        Code::ConstructNewerThanVersion,
+    );
     expect_warning(&joint("⌖Rope", ""), Code::ConstructNewerThanVersion);
-    expect_warning(&joint("Weld", "⌖<FrequencyHz>4</FrequencyHz>"), Code::ConstructNewerThanVersion);
+    expect_warning(
+        &joint("Weld", "⌖<FrequencyHz>4</FrequencyHz>"),
+        Code::ConstructNewerThanVersion,
+    );
 }
 
 #[test]
 fn duplicate_element_last_wins() {
-    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape><Density>1</Density>\n ⌖<Density>2</Density></Fixture>", "", "");
+    let xml = world(
+        CIRCLE,
+        "<Fixture><Shape>0</Shape><Density>1</Density>\n ⌖<Density>2</Density></Fixture>",
+        "",
+        "",
+    );
     expect_warning(&xml, Code::DuplicateElement);
     let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
     assert_eq!(scene.fixtures()[0].density, 2.0);
@@ -390,19 +551,41 @@ fn duplicate_element_last_wins() {
 
 #[test]
 fn unknown_element_and_attribute() {
-    expect_warning(&world("", "", "<Body Type=\"Static\">⌖<Colour>red<b/></Colour></Body>", ""), Code::UnknownElement);
-    expect_warning(&world("", "", "<Body Type=\"Static\" Colour=\"⌖red\"/>", ""), Code::UnknownElement);
-    expect_warning(&world(CIRCLE, "<Fixture><Shape>0</Shape></Fixture>", "<Body Type=\"Static\"/><Body Type=\"Static\"/>", "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB>⌖<LowerAngle>1</LowerAngle></Joint>"), Code::UnknownElement);
+    expect_warning(
+        &world("", "", "<Body Type=\"Static\">⌖<Colour>red<b/></Colour></Body>", ""),
+        Code::UnknownElement,
+    );
+    expect_warning(
+        &world("", "", "<Body Type=\"Static\" Colour=\"⌖red\"/>", ""),
+        Code::UnknownElement,
+    );
+    expect_warning(
+        &world(
+            CIRCLE,
+            "<Fixture><Shape>0</Shape></Fixture>",
+            "<Body Type=\"Static\"/><Body Type=\"Static\"/>",
+            "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB>⌖<LowerAngle>1</LowerAngle></Joint>",
+        ),
+        Code::UnknownElement,
+    );
 }
 
 #[test]
 fn missing_container() {
-    expect_warning("⌖<World Version=\"1\"><Shapes/><Fixtures/><Bodies/></World>", Code::MissingContainer);
+    expect_warning(
+        "⌖<World Version=\"1\"><Shapes/><Fixtures/><Bodies/></World>",
+        Code::MissingContainer,
+    );
 }
 
 #[test]
 fn filter_bits_truncated() {
-    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖2147483647</MaskBits></FilterData></Fixture>", "", "");
+    let xml = world(
+        CIRCLE,
+        "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖2147483647</MaskBits></FilterData></Fixture>",
+        "",
+        "",
+    );
     expect_warning(&xml, Code::FilterBitsTruncated);
     let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
     assert_eq!(scene.fixtures()[0].filter.mask_bits, 0xFFFF);
@@ -410,14 +593,23 @@ fn filter_bits_truncated() {
 
 #[test]
 fn polygon_not_convex_ccw() {
-    expect_warning(&polygon(&["0 0", "0 1", "1 1", "1 0"]).replace("<Shape ", "⌖<Shape "), Code::PolygonNotConvexCcw);
+    expect_warning(
+        &polygon(&["0 0", "0 1", "1 1", "1 0"]).replace("<Shape ", "⌖<Shape "),
+        Code::PolygonNotConvexCcw,
+    );
 }
 
 #[test]
 fn dynamic_body_zero_density() {
-    let xml = world(CIRCLE, "<Fixture><Shape>0</Shape></Fixture>", "⌖<Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>", "");
+    let xml = world(
+        CIRCLE,
+        "<Fixture><Shape>0</Shape></Fixture>",
+        "⌖<Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>",
+        "",
+    );
     expect_warning(&xml, Code::DynamicBodyZeroDensity);
-    let with_mass = unmark(&xml.replace("\"Dynamic\">", "\"Dynamic\"><MassData><Mass>2</Mass></MassData>")).0;
+    let with_mass =
+        unmark(&xml.replace("\"Dynamic\">", "\"Dynamic\"><MassData><Mass>2</Mass></MassData>")).0;
     assert!(load(with_mass.as_bytes(), &LoadOptions::default()).unwrap().diagnostics().is_empty());
 }
 
@@ -428,21 +620,34 @@ fn positions_count_characters_after_a_bom_and_in_utf16() {
     let mut bytes = b"\xEF\xBB\xBF".to_vec();
     bytes.extend_from_slice(xml.as_bytes());
     let error = load(&bytes, &LoadOptions::default()).unwrap_err();
-    assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidFloat, 2, column));
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (Code::InvalidFloat, 2, column)
+    );
     assert_eq!(error.position.byte_offset, 3 + xml.find(">x<").unwrap() as u64 + 1);
 
     let mut utf16 = vec![0xFF, 0xFE];
     utf16.extend(xml.encode_utf16().flat_map(u16::to_le_bytes));
     let error = load(&utf16, &LoadOptions::default()).unwrap_err();
-    assert_eq!((error.code, error.position.line, error.position.column), (Code::InvalidFloat, 2, column));
-    assert_eq!(error.position.byte_offset, 2 + 2 * xml[..xml.find(">x<").unwrap() + 1].encode_utf16().count() as u64);
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (Code::InvalidFloat, 2, column)
+    );
+    assert_eq!(
+        error.position.byte_offset,
+        2 + 2 * xml[..xml.find(">x<").unwrap() + 1].encode_utf16().count() as u64
+    );
 }
 
 #[test]
 fn every_code_has_a_distinct_kebab_name() {
     let names: std::collections::HashSet<_> = Code::ALL.iter().map(|c| c.name()).collect();
     assert_eq!(names.len(), Code::ALL.len());
-    assert!(names.iter().all(|n| n.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'-')));
+    assert!(
+        names
+            .iter()
+            .all(|n| n.bytes().all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'-'))
+    );
     for &code in Code::ALL {
         assert_eq!(Code::from_u32(code as u32), Some(code));
     }
@@ -456,7 +661,8 @@ fn world_v3(shapes: &str, fixtures: &str, bodies: &str) -> String {
     )
 }
 
-const V3_CIRCLE: &str = "<Shape Type=\"Circle\" Density=\"2\"><Radius>1</Radius><Position>0 0</Position></Shape>";
+const V3_CIRCLE: &str =
+    "<Shape Type=\"Circle\" Density=\"2\"><Radius>1</Radius><Position>0 0</Position></Shape>";
 
 #[test]
 fn farseer_only_joint() {
@@ -464,10 +670,12 @@ fn farseer_only_joint() {
         let scene = load(unmark(xml).0.as_bytes(), &LoadOptions::default()).unwrap();
         (scene.joints()[0].kind(), scene.text(scene.diagnostics()[0].message).unwrap().to_owned())
     };
-    let xml = joint("⌖Angle", "<BiasFactor>0.2</BiasFactor><TargetAngle>1</TargetAngle>").replace("\"1\"", "\"2\"");
+    let xml = joint("⌖Angle", "<BiasFactor>0.2</BiasFactor><TargetAngle>1</TargetAngle>")
+        .replace("\"1\"", "\"2\"");
     expect_warning(&xml, Code::FarseerOnlyJoint);
     assert_eq!(message_of(&xml).0, Some(box2scene::JointKind::Unsupported));
-    let slider = joint("⌖Slider", "<MinLength>1</MinLength><MaxLength>2</MaxLength>").replace("\"1\"", "\"2\"");
+    let slider = joint("⌖Slider", "<MinLength>1</MinLength><MaxLength>2</MaxLength>")
+        .replace("\"1\"", "\"2\"");
     expect_warning(&slider, Code::FarseerOnlyJoint);
 }
 
@@ -480,7 +688,11 @@ fn line_joint_is_wheel() {
     let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
     let wheel = &scene.joints()[0];
     assert_eq!(wheel.kind(), Some(box2scene::JointKind::Wheel));
-    assert_eq!((wheel.frequency_hz, wheel.damping_ratio), (4.0, 0.7), "the wheel's default damping fills in");
+    assert_eq!(
+        (wheel.frequency_hz, wheel.damping_ratio),
+        (4.0, 0.7),
+        "the wheel's default damping fills in"
+    );
     assert_eq!(wheel.local_axis_a, box2scene::Vec2::new(0.0, 1.0));
 }
 
@@ -497,22 +709,45 @@ fn farseer_v3_fixture_needs_an_id() {
 
 #[test]
 fn farseer_v3_pairs_are_checked() {
-    let unknown_fixture = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"⌖5\" ShapeId=\"0\"/></Bindings></Body>");
+    let unknown_fixture = world_v3(
+        V3_CIRCLE,
+        "<Fixture Id=\"4\"/>",
+        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"⌖5\" ShapeId=\"0\"/></Bindings></Body>",
+    );
     let message = expect_error(&unknown_fixture, Code::IdOutOfRange);
     assert_eq!(message, "body 0 binds fixture Id 5, but no fixture has that Id");
-    let unknown_shape = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"4\" ShapeId=\"⌖1\"/></Bindings></Body>");
+    let unknown_shape = world_v3(
+        V3_CIRCLE,
+        "<Fixture Id=\"4\"/>",
+        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"4\" ShapeId=\"⌖1\"/></Bindings></Body>",
+    );
     expect_error(&unknown_shape, Code::IdOutOfRange);
-    let no_shape = world_v3(V3_CIRCLE, "<Fixture Id=\"4\"/>", "<Body Type=\"Static\"><Bindings>⌖<Pair FixtureId=\"4\"/></Bindings></Body>");
+    let no_shape = world_v3(
+        V3_CIRCLE,
+        "<Fixture Id=\"4\"/>",
+        "<Body Type=\"Static\"><Bindings>⌖<Pair FixtureId=\"4\"/></Bindings></Body>",
+    );
     expect_error(&no_shape, Code::MissingAttribute);
-    let negative = world_v3("<Shape Type=\"Circle\" Density=\"⌖-2\"><Radius>1</Radius><Position>0 0</Position></Shape>", "", "");
+    let negative = world_v3(
+        "<Shape Type=\"Circle\" Density=\"⌖-2\"><Radius>1</Radius><Position>0 0</Position></Shape>",
+        "",
+        "",
+    );
     expect_error(&negative, Code::NegativeValue);
 }
 
 #[test]
 fn layouts_do_not_mix() {
-    let fixtures_in_v3 = world_v3(V3_CIRCLE, "<Fixture Id=\"0\"/>", "<Body Type=\"Static\">⌖<Fixtures><ID>0</ID></Fixtures></Body>");
+    let fixtures_in_v3 = world_v3(
+        V3_CIRCLE,
+        "<Fixture Id=\"0\"/>",
+        "<Body Type=\"Static\">⌖<Fixtures><ID>0</ID></Fixtures></Body>",
+    );
     expect_error(&fixtures_in_v3, Code::UnexpectedElement);
     let bindings_in_v1 = world(CIRCLE, FIXTURE, "<Body Type=\"Static\">⌖<Bindings/></Body>", "");
     expect_error(&bindings_in_v1, Code::UnexpectedElement);
-    expect_warning(&world(CIRCLE, "<Fixture Id=\"⌖0\"><Shape>0</Shape></Fixture>", "", ""), Code::UnknownElement);
+    expect_warning(
+        &world(CIRCLE, "<Fixture Id=\"⌖0\"><Shape>0</Shape></Fixture>", "", ""),
+        Code::UnknownElement,
+    );
 }

@@ -5,7 +5,9 @@ use std::ffi::{CStr, CString, c_char};
 use std::ptr::{null, null_mut};
 
 use box2scene::ffi::*;
-use box2scene::{Body, BodyKind, Code, Fixture, Joint, JointKind, NONE, Shape, ShapeKind, Str, UserData, Vec2};
+use box2scene::{
+    Body, BodyKind, Code, Fixture, Joint, JointKind, NONE, Shape, ShapeKind, Str, UserData, Vec2,
+};
 
 const SCENE: &str = r#"<World Version="1"><Gravity>0 -10</Gravity>
 <Shapes><Shape Type="Circle"><Name>ball</Name><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
@@ -39,14 +41,20 @@ fn a_scene_loads_and_is_read_through_its_view() {
     let (scene, code, error) = load_text(SCENE);
     assert_eq!((code, error.code), (Code::Ok, 0));
     let view = unsafe { &*b2s_scene_get_view(scene) };
-    assert_eq!((view.shape_count, view.fixture_count, view.body_count, view.joint_count), (1, 1, 2, 1));
+    assert_eq!(
+        (view.shape_count, view.fixture_count, view.body_count, view.joint_count),
+        (1, 1, 2, 1)
+    );
     assert!(view.gravity_given && view.gravity == Vec2::new(0.0, -10.0));
     let bodies = slice(view.bodies, view.body_count);
     assert_eq!(text(bodies[1].name.as_ptr()), "ball");
     let ids = slice(view.fixture_ids, view.fixture_id_count);
     assert_eq!(ids[bodies[1].fixtures.first as usize], 0);
     let user_data = &slice(view.user_data, view.user_data_count)[bodies[1].user_data as usize];
-    assert_eq!((text(user_data.type_name.as_ptr()), text(user_data.value.as_ptr())), ("System.String", "hi"));
+    assert_eq!(
+        (text(user_data.type_name.as_ptr()), text(user_data.value.as_ptr())),
+        ("System.String", "hi")
+    );
     let name = CString::new("pin").unwrap();
     unsafe {
         assert_eq!(b2s_scene_find_joint(scene, name.as_ptr()), 0);
@@ -63,10 +71,16 @@ fn a_scene_loads_and_is_read_through_its_view() {
 fn a_failed_load_fills_the_error_and_stores_no_scene() {
     let (scene, code, error) = load_text("<World Version=\"1\">\n<Shapes>x</Shapes></World>");
     assert!(scene.is_null());
-    assert_eq!((code, error.code, error.line, error.column), (Code::UnexpectedText, code as u32, 2, 9));
+    assert_eq!(
+        (code, error.code, error.line, error.column),
+        (Code::UnexpectedText, code as u32, 2, 9)
+    );
     assert!(text(error.message.as_ptr()).contains("'x'"));
     // A message longer than the buffer is cut at a character boundary and NUL-terminated.
-    let long = format!("<World Version=\"1\"><Shapes><Shape Type=\"{}\"/></Shapes></World>", "é".repeat(300));
+    let long = format!(
+        "<World Version=\"1\"><Shapes><Shape Type=\"{}\"/></Shapes></World>",
+        "é".repeat(300)
+    );
     let (_, code, error) = load_text(&long);
     assert_eq!(code, Code::UnknownType);
     assert!(text(error.message.as_ptr()).len() < ERROR_MESSAGE_SIZE);
@@ -78,15 +92,25 @@ fn null_arguments_are_refused_not_followed() {
     let mut error = no_error();
     unsafe {
         assert_eq!(b2s_load_memory(null(), 5, null(), &mut scene, &mut error), Code::NullArgument);
-        assert_eq!(b2s_load_memory(b"x".as_ptr(), 1, null(), null_mut(), null_mut()), Code::NullArgument);
+        assert_eq!(
+            b2s_load_memory(b"x".as_ptr(), 1, null(), null_mut(), null_mut()),
+            Code::NullArgument
+        );
         assert_eq!(b2s_load_file(null(), null(), &mut scene, &mut error), Code::NullArgument);
         assert_eq!(error.code, Code::NullArgument as u32);
-        assert_eq!(b2s_load_memory(null(), 0, null(), &mut scene, null_mut()), Code::MalformedXml, "no bytes: no root");
+        assert_eq!(
+            b2s_load_memory(null(), 0, null(), &mut scene, null_mut()),
+            Code::MalformedXml,
+            "no bytes: no root"
+        );
         assert!(b2s_scene_get_view(null()).is_null());
         b2s_scene_free(null_mut());
         b2s_text_free(null_mut());
         b2s_builder_free(null_mut());
-        assert_eq!(b2s_write_memory(null(), null(), null_mut(), null_mut(), null_mut()), Code::NullArgument);
+        assert_eq!(
+            b2s_write_memory(null(), null(), null_mut(), null_mut(), null_mut()),
+            Code::NullArgument
+        );
         assert_eq!(b2s_joint_default(0, null_mut()), Code::NullArgument);
     }
 }
@@ -102,7 +126,10 @@ fn defaults_names_and_version() {
         assert_eq!((joint.frequency_hz, joint.damping_ratio), (2.0, 0.7));
         assert_eq!(b2s_joint_default(99, &mut joint), Code::InvalidArgument);
         assert_eq!(b2s_body_default(BodyKind::Dynamic as u32, &mut body), Code::Ok);
-        assert_eq!((body.kind, body.gravity_scale, body.awake), (BodyKind::Dynamic as u32, 1.0, true));
+        assert_eq!(
+            (body.kind, body.gravity_scale, body.awake),
+            (BodyKind::Dynamic as u32, 1.0, true)
+        );
         assert_eq!(b2s_fixture_default(&mut fixture), Code::Ok);
         assert_eq!(fixture.friction, 0.2);
         assert_eq!(b2s_shape_default(ShapeKind::Chain as u32, &mut shape), Code::Ok);
@@ -121,7 +148,10 @@ fn a_scene_is_written_to_a_library_owned_text() {
     let mut size = 0usize;
     let options = box2scene::WriteOptions { all_fields: true };
     unsafe {
-        assert_eq!(b2s_write_memory(scene, &options, &mut written, &mut size, null_mut()), Code::Ok);
+        assert_eq!(
+            b2s_write_memory(scene, &options, &mut written, &mut size, null_mut()),
+            Code::Ok
+        );
         let xml = text(written);
         assert_eq!(xml.len(), size);
         assert!(xml.contains("<Name>pin</Name>") && xml.contains("<AllowSleep>true</AllowSleep>"));
@@ -147,7 +177,10 @@ fn files_are_loaded_and_written() {
         assert_eq!((*b2s_scene_get_view(again)).joint_count, 1);
         b2s_scene_free(again);
         b2s_scene_free(scene);
-        assert_eq!(b2s_load_file(c"/nonexistent/x.xml".as_ptr(), null(), &mut again, &mut error), Code::Io);
+        assert_eq!(
+            b2s_load_file(c"/nonexistent/x.xml".as_ptr(), null(), &mut again, &mut error),
+            Code::Io
+        );
         assert!(again.is_null());
     }
     std::fs::remove_file(path).unwrap();
@@ -160,20 +193,55 @@ fn a_scene_is_built_through_the_builder() {
     unsafe {
         let builder = b2s_builder_new();
         assert_eq!(b2s_builder_set_gravity(builder, &Vec2::new(0.0, -9.8), &mut error), Code::Ok);
-        let note = UserData { raw: Str::NULL, type_name: Str::from_ptr(c"System.String".as_ptr()), value: Str::from_ptr(c"crate".as_ptr()) };
+        let note = UserData {
+            raw: Str::NULL,
+            type_name: Str::from_ptr(c"System.String".as_ptr()),
+            value: Str::from_ptr(c"crate".as_ptr()),
+        };
         assert_eq!(b2s_builder_add_user_data(builder, &note, &mut index, &mut error), Code::Ok);
-        let square = [Vec2::new(-1.0, -1.0), Vec2::new(1.0, -1.0), Vec2::new(1.0, 1.0), Vec2::new(-1.0, 1.0)];
+        let square = [
+            Vec2::new(-1.0, -1.0),
+            Vec2::new(1.0, -1.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(-1.0, 1.0),
+        ];
         let shape = Shape::new(ShapeKind::Polygon);
-        assert_eq!(b2s_builder_add_shape(builder, &shape, square.as_ptr(), 4, &mut index, &mut error), Code::Ok);
-        assert_eq!(b2s_builder_add_shape(builder, &shape, square.as_ptr(), 1, &mut index, &mut error), Code::BadVertexCount);
+        assert_eq!(
+            b2s_builder_add_shape(builder, &shape, square.as_ptr(), 4, &mut index, &mut error),
+            Code::Ok
+        );
+        assert_eq!(
+            b2s_builder_add_shape(builder, &shape, square.as_ptr(), 1, &mut index, &mut error),
+            Code::BadVertexCount
+        );
         assert!(text(error.message.as_ptr()).starts_with("shape 1: "));
         let fixture = Fixture { shape: 0, density: 1.0, ..Fixture::default() };
         assert_eq!(b2s_builder_add_fixture(builder, &fixture, &mut index, &mut error), Code::Ok);
-        let body = Body { name: Str::from_ptr(c"box".as_ptr()), user_data: 0, ..Body::new(BodyKind::Dynamic) };
+        let body = Body {
+            name: Str::from_ptr(c"box".as_ptr()),
+            user_data: 0,
+            ..Body::new(BodyKind::Dynamic)
+        };
         let ids = [0u32];
-        assert_eq!(b2s_builder_add_body(builder, &body, ids.as_ptr(), 1, &mut index, &mut error), Code::Ok);
-        assert_eq!(b2s_builder_add_body(builder, &body, null(), 1, &mut index, &mut error), Code::NullArgument);
-        assert_eq!(b2s_builder_add_body(builder, &Body::new(BodyKind::Static), null(), 0, &mut index, &mut error), Code::Ok);
+        assert_eq!(
+            b2s_builder_add_body(builder, &body, ids.as_ptr(), 1, &mut index, &mut error),
+            Code::Ok
+        );
+        assert_eq!(
+            b2s_builder_add_body(builder, &body, null(), 1, &mut index, &mut error),
+            Code::NullArgument
+        );
+        assert_eq!(
+            b2s_builder_add_body(
+                builder,
+                &Body::new(BodyKind::Static),
+                null(),
+                0,
+                &mut index,
+                &mut error
+            ),
+            Code::Ok
+        );
         assert_eq!(index, 1);
         let joint = Joint { body_a: 1, body_b: 0, ..Joint::new(JointKind::Weld) };
         assert_eq!(b2s_builder_add_joint(builder, &joint, &mut index, &mut error), Code::Ok);
@@ -183,7 +251,10 @@ fn a_scene_is_built_through_the_builder() {
         assert_eq!((view.body_count, view.joint_count, view.user_data_count), (2, 1, 1));
         assert_eq!(text((*view.bodies).name.as_ptr()), "box");
         let stored = &*view.user_data;
-        assert_eq!(text(stored.raw.as_ptr()), "<Type>System.String</Type><Value><string>crate</string></Value>");
+        assert_eq!(
+            text(stored.raw.as_ptr()),
+            "<Type>System.String</Type><Value><string>crate</string></Value>"
+        );
         b2s_scene_free(scene);
 
         let abandoned = b2s_builder_new();

@@ -13,7 +13,12 @@ fn load_bytes(bytes: &[u8]) -> Result<Scene, Error> {
 
 fn expect(bytes: &[u8], code: Code, line: u32, column: u32) -> Error {
     let error = load_bytes(bytes).expect_err("hostile input must not load");
-    assert_eq!((error.code, error.position.line, error.position.column), (code, line, column), "{}", error.message);
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (code, line, column),
+        "{}",
+        error.message
+    );
     error
 }
 
@@ -89,7 +94,8 @@ fn utf16_text_with_a_byte_order_mark_loads() {
     for big_endian in [false, true] {
         let mut bytes = if big_endian { vec![0xFE, 0xFF] } else { vec![0xFF, 0xFE] };
         let units = SCENE.encode_utf16();
-        bytes.extend(units.flat_map(|u| if big_endian { u.to_be_bytes() } else { u.to_le_bytes() }));
+        bytes
+            .extend(units.flat_map(|u| if big_endian { u.to_be_bytes() } else { u.to_le_bytes() }));
         assert_eq!(load_bytes(&bytes).unwrap().version(), 1);
     }
 }
@@ -138,7 +144,8 @@ fn two_roots() {
 
 #[test]
 fn billion_laughs_is_rejected_at_once() {
-    let mut xml = String::from("<?xml version=\"1.0\"?>\n<!DOCTYPE lolz [\n <!ENTITY lol \"lol\">\n");
+    let mut xml =
+        String::from("<?xml version=\"1.0\"?>\n<!DOCTYPE lolz [\n <!ENTITY lol \"lol\">\n");
     for i in 1..10 {
         let previous = if i == 1 { "lol".to_string() } else { format!("lol{}", i - 1) };
         xml += &format!(" <!ENTITY lol{i} \"{}\">\n", format!("&{previous};").repeat(10));
@@ -151,7 +158,8 @@ fn billion_laughs_is_rejected_at_once() {
 
 #[test]
 fn external_entities_are_never_fetched() {
-    let xml = "<!DOCTYPE World [<!ENTITY secret SYSTEM \"file:///etc/passwd\">]><World>&secret;</World>";
+    let xml =
+        "<!DOCTYPE World [<!ENTITY secret SYSTEM \"file:///etc/passwd\">]><World>&secret;</World>";
     expect(xml.as_bytes(), Code::DoctypeForbidden, 1, 1);
     let undeclared = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"><Name>⌖&secret;</Name></Body></Bodies><Joints/></World>";
     expect_at(undeclared, Code::MalformedXml);
@@ -160,7 +168,8 @@ fn external_entities_are_never_fetched() {
 #[test]
 fn deep_nesting_is_stopped_by_the_depth_limit() {
     let depth = 100_000;
-    let xml = format!("<World Version=\"1\">{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
+    let xml =
+        format!("<World Version=\"1\">{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
     let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, 20 + 3 * 63);
     assert!(error.message.contains("max_depth"));
 }
@@ -168,7 +177,11 @@ fn deep_nesting_is_stopped_by_the_depth_limit() {
 #[test]
 fn deep_nesting_without_the_limit_does_not_overflow_the_stack() {
     let depth = 100_000;
-    let xml = format!("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}{}</World>",
+        "<a>".repeat(depth),
+        "</a>".repeat(depth)
+    );
     let options = LoadOptions { max_depth: u32::MAX, ..LoadOptions::default() };
     let scene = load(xml.as_bytes(), &options).unwrap();
     assert_eq!(scene.diagnostics()[0].code(), Some(Code::UnknownElement));
@@ -199,17 +212,25 @@ fn twenty_million_elements_are_stopped_by_the_element_limit() {
 
 #[test]
 fn warnings_are_capped() {
-    let xml = format!("<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}</World>", "<a/>".repeat(5000));
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}</World>",
+        "<a/>".repeat(5000)
+    );
     let scene = load_bytes(xml.as_bytes()).unwrap();
     let d = scene.diagnostics();
     assert_eq!(d.len(), box2scene::error::MAX_WARNINGS + 1);
     let last = d.last().unwrap();
     assert_eq!(last.code(), Some(Code::WarningsTruncated));
-    assert_eq!(scene.text(last.message).unwrap(), "4000 more warnings from here on were not kept (a scene keeps 1000)");
+    assert_eq!(
+        scene.text(last.message).unwrap(),
+        "4000 more warnings from here on were not kept (a scene keeps 1000)"
+    );
 }
 
 fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
-    format!("<World Version=\"1\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n<Bodies>{bodies}</Bodies>\n<Joints>{joints}</Joints>\n</World>")
+    format!(
+        "<World Version=\"1\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n<Bodies>{bodies}</Bodies>\n<Joints>{joints}</Joints>\n</World>"
+    )
 }
 
 const CIRCLE: &str = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape>";
@@ -217,7 +238,12 @@ const FIXTURE: &str = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
 
 /// A fixture whose `element` holds `value`, the value marked.
 fn with_value(element: &str, value: &str) -> String {
-    world(CIRCLE, &format!("<Fixture><Shape>0</Shape><{element}>⌖{value}</{element}></Fixture>"), "", "")
+    world(
+        CIRCLE,
+        &format!("<Fixture><Shape>0</Shape><{element}>⌖{value}</{element}></Fixture>"),
+        "",
+        "",
+    )
 }
 
 #[test]
@@ -245,7 +271,14 @@ fn decimal_commas() {
 
 #[test]
 fn huge_and_negative_ids() {
-    let body = |id: &str| world(CIRCLE, FIXTURE, &format!("<Body Type=\"Static\"><Fixtures><ID>⌖{id}</ID></Fixtures></Body>"), "");
+    let body = |id: &str| {
+        world(
+            CIRCLE,
+            FIXTURE,
+            &format!("<Body Type=\"Static\"><Fixtures><ID>⌖{id}</ID></Fixtures></Body>"),
+            "",
+        )
+    };
     expect_at(&body("99999999999999999999"), Code::IdOutOfRange);
     expect_at(&body("4294967294"), Code::IdOutOfRange);
     expect_at(&body("-1"), Code::InvalidId);
@@ -255,20 +288,28 @@ fn huge_and_negative_ids() {
 fn ids_into_the_wrong_container() {
     // Three shapes but one fixture: a shape index used as a fixture ID.
     let shapes = CIRCLE.repeat(3);
-    let xml = world(&shapes, FIXTURE, "<Body Type=\"Static\"><Fixtures><ID>⌖2</ID></Fixtures></Body>", "");
+    let xml = world(
+        &shapes,
+        FIXTURE,
+        "<Body Type=\"Static\"><Fixtures><ID>⌖2</ID></Fixtures></Body>",
+        "",
+    );
     let error = expect_at(&xml, Code::IdOutOfRange);
     assert_eq!(error.message, "body 0 names fixture 2, but the file has 1 fixture");
 }
 
 fn gear_world(joints: &str) -> String {
-    let bodies = "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
+    let bodies =
+        "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
     world(CIRCLE, FIXTURE, bodies, joints)
 }
 
 const REVOLUTE: &str = "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>";
 
 fn gear(a: u32, b: u32) -> String {
-    format!("<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>")
+    format!(
+        "<Joint Type=\"Gear\"><BodyA>0</BodyA><BodyB>1</BodyB><JointA>{a}</JointA><JointB>{b}</JointB></Joint>"
+    )
 }
 
 #[test]
@@ -279,7 +320,11 @@ fn a_gear_pointing_at_itself() {
 
 #[test]
 fn a_gear_pointing_at_a_gear() {
-    let xml = gear_world(&format!("{REVOLUTE}{}{}", gear(0, 0), gear(1, 0).replace("<JointA>1", "<JointA>⌖1")));
+    let xml = gear_world(&format!(
+        "{REVOLUTE}{}{}",
+        gear(0, 0),
+        gear(1, 0).replace("<JointA>1", "<JointA>⌖1")
+    ));
     expect_at(&xml, Code::BadGearJoint);
 }
 
@@ -302,24 +347,36 @@ fn a_polygon_with_9_vertices() {
 
 #[test]
 fn collinear_points() {
-    expect_at(&polygon(&["0 0", "1 1", "2 2", "3 3"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_at(
+        &polygon(&["0 0", "1 1", "2 2", "3 3"]).replace("<Shape ", "⌖<Shape "),
+        Code::DegeneratePolygon,
+    );
 }
 
 #[test]
 fn duplicate_points() {
-    expect_at(&polygon(&["1 1", "1 1", "1 1"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
+    expect_at(
+        &polygon(&["1 1", "1 1", "1 1"]).replace("<Shape ", "⌖<Shape "),
+        Code::DegeneratePolygon,
+    );
     expect_at(&polygon(&["0 0", "0 0"]).replace("<Shape ", "⌖<Shape "), Code::DegeneratePolygon);
 }
 
 #[test]
 fn zero_radius() {
-    let xml = world("<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>", "", "", "");
+    let xml = world(
+        "<Shape Type=\"Circle\"><Radius>⌖0</Radius><Position>0 0</Position></Shape>",
+        "",
+        "",
+        "",
+    );
     expect_at(&xml, Code::BadRadius);
 }
 
 #[test]
 fn negative_mass() {
-    let xml = world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-3</Mass></MassData></Body>", "");
+    let xml =
+        world("", "", "<Body Type=\"Dynamic\"><MassData><Mass>⌖-3</Mass></MassData></Body>", "");
     expect_at(&xml, Code::NegativeValue);
 }
 

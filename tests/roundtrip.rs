@@ -8,9 +8,12 @@ use std::path::PathBuf;
 
 use common::{Random, generate};
 
-use box2scene::{JointKind, LoadOptions, Scene, WriteOptions, joints_not_written, load, load_path, write};
+use box2scene::{
+    JointKind, LoadOptions, Scene, WriteOptions, joints_not_written, load, load_path, write,
+};
 
-const MODES: [WriteOptions; 2] = [WriteOptions { all_fields: false }, WriteOptions { all_fields: true }];
+const MODES: [WriteOptions; 2] =
+    [WriteOptions { all_fields: false }, WriteOptions { all_fields: true }];
 
 /// Everything a scene holds, bit for bit (the dump's floats are shortest round-trip text),
 /// except what describes the file rather than the scene: its version and its warnings.
@@ -30,7 +33,11 @@ fn assert_round_trip(scene: &Scene, what: &str) -> String {
     for options in MODES {
         let written = write(scene, &options);
         let again = load_text(&written);
-        assert_eq!(content(&again), content(scene), "{what} ({options:?}) read back differently:\n{written}");
+        assert_eq!(
+            content(&again),
+            content(scene),
+            "{what} ({options:?}) read back differently:\n{written}"
+        );
         assert_eq!(write(&again, &options), written, "{what} ({options:?}) is not written stably");
         if first.is_empty() {
             first = written;
@@ -60,7 +67,9 @@ fn every_scene_file_round_trips_exactly() {
             continue; // farseer-v2.xml: see the test below
         }
         let written = assert_round_trip(&scene, &path.display().to_string());
-        assert!(written.contains("<World Version=\"1\">") || written.contains("<World Version=\"2\">"));
+        assert!(
+            written.contains("<World Version=\"1\">") || written.contains("<World Version=\"2\">")
+        );
         checked += 1;
     }
     assert!(checked >= 9, "{checked} files");
@@ -69,20 +78,36 @@ fn every_scene_file_round_trips_exactly() {
 #[test]
 fn legacy_and_farseer_files_come_out_clean() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let legacy = load_path(root.join("tests/data/corpus/legacy-unversioned.xml"), &LoadOptions::default()).unwrap();
+    let legacy =
+        load_path(root.join("tests/data/corpus/legacy-unversioned.xml"), &LoadOptions::default())
+            .unwrap();
     let written = write(&legacy, &WriteOptions::default());
-    assert!(written.contains("<World Version=\"1\">") && !written.contains("<JointA>"), "{written}");
+    assert!(
+        written.contains("<World Version=\"1\">") && !written.contains("<JointA>"),
+        "{written}"
+    );
     assert!(load_text(&written).diagnostics().is_empty());
 
     let v3 = load_path(root.join("tests/scenes/farseer-v3.xml"), &LoadOptions::default()).unwrap();
     let written = write(&v3, &WriteOptions::default());
-    assert!(written.contains("<World Version=\"2\">") && !written.contains("Bindings"), "{written}");
+    assert!(
+        written.contains("<World Version=\"2\">") && !written.contains("Bindings"),
+        "{written}"
+    );
 
     let v2 = load_path(root.join("tests/scenes/farseer-v2.xml"), &LoadOptions::default()).unwrap();
     assert_eq!(joints_not_written(&v2), [10, 11], "the Angle and Slider joints");
     for options in MODES {
         let written = write(&v2, &options);
-        for farseer in ["Breakpoint", "LocalXAxis", "WorldAnchor", "Constant", "Angle\"", "Slider", "2147483647"] {
+        for farseer in [
+            "Breakpoint",
+            "LocalXAxis",
+            "WorldAnchor",
+            "Constant",
+            "Angle\"",
+            "Slider",
+            "2147483647",
+        ] {
             assert!(!written.contains(farseer), "{farseer} in:\n{written}");
         }
         let again = load_text(&written);

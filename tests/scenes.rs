@@ -51,7 +51,8 @@ fn every_scene_matches_its_golden_dump() {
 fn the_editor_files_load_with_their_values() {
     let corpus = root().join("tests/data/corpus");
     let scene = load_file(&corpus.join("renderer-scene-v1.xml"));
-    let counts = |s: &Scene| (s.shapes().len(), s.fixtures().len(), s.bodies().len(), s.joints().len());
+    let counts =
+        |s: &Scene| (s.shapes().len(), s.fixtures().len(), s.bodies().len(), s.joints().len());
     assert_eq!(counts(&scene), (38, 38, 17, 12));
     let kinematic = scene.find_body("Kinematic test").expect("the kinematic body is named");
     let body = &scene.bodies()[kinematic as usize];
@@ -76,7 +77,10 @@ fn the_editor_files_load_with_their_values() {
         assert_eq!((j.body_a, j.body_b, j.collide_connected, j.enable_limit), (1, 0, true, true));
         assert_eq!((j.lower_limit, j.upper_limit), (-0.7853982, 1.570796));
         assert_eq!((j.motor_speed, j.max_motor_torque, j.enable_motor), (3.141593, 10000.0, false));
-        assert_eq!((j.local_anchor_a, j.local_anchor_b), (Vec2::new(0.0, 12.0), Vec2::new(0.0, -8.0)));
+        assert_eq!(
+            (j.local_anchor_a, j.local_anchor_b),
+            (Vec2::new(0.0, 12.0), Vec2::new(0.0, -8.0))
+        );
         let ground = &scene.shapes()[1];
         assert_eq!(scene.vertices(ground), &[Vec2::new(-40.0, 0.0), Vec2::new(40.0, 0.0)]);
         let user_data = scene.user_data_at(scene.bodies()[2].user_data).unwrap();
@@ -90,7 +94,10 @@ fn the_editor_files_load_with_their_values() {
 fn every_value_spelling_reads_exactly() {
     let scene = load_file(&root().join("tests/scenes/value-spellings.xml"));
     let shapes = scene.shapes();
-    assert_eq!((shapes[0].kind(), shapes[0].radius, shapes[0].position), (Some(ShapeKind::Circle), 0.5, Vec2::ZERO));
+    assert_eq!(
+        (shapes[0].kind(), shapes[0].radius, shapes[0].position),
+        (Some(ShapeKind::Circle), 0.5, Vec2::ZERO)
+    );
     assert_eq!(
         scene.vertices(&shapes[1]),
         &[Vec2::new(-1.0, -1.0), Vec2::new(1.0, -1.0), Vec2::new(1.0, 1.0), Vec2::new(-1.0, 1.0)]
@@ -100,7 +107,10 @@ fn every_value_spelling_reads_exactly() {
     assert_eq!(shapes[2].position.y.to_bits(), (-0.0f32).to_bits());
     let f = scene.fixtures();
     assert_eq!((f[0].density, f[0].is_sensor), (10.0, true));
-    assert_eq!((f[0].filter.category_bits, f[0].filter.mask_bits, f[0].filter.group_index), (16, 255, -32768));
+    assert_eq!(
+        (f[0].filter.category_bits, f[0].filter.mask_bits, f[0].filter.group_index),
+        (16, 255, -32768)
+    );
     assert_eq!((f[1].shape, f[1].friction, f[1].is_sensor), (1, 0.25, true));
     assert_eq!((f[2].restitution, f[2].is_sensor), (0.5, false));
     let b = &scene.bodies()[0];
@@ -117,11 +127,20 @@ fn joint_defaults_follow_the_spec_per_kind() {
     let scene = load_file(&root().join("tests/scenes/defaults-per-joint-kind.xml"));
     let j = scene.joints();
     let v = Vec2::new;
-    assert_eq!((j[1].local_axis_a, j[4].local_axis_a, j[8].local_axis_a), (v(1.0, 0.0), v(1.0, 0.0), v(1.0, 0.0)));
+    assert_eq!(
+        (j[1].local_axis_a, j[4].local_axis_a, j[8].local_axis_a),
+        (v(1.0, 0.0), v(1.0, 0.0), v(1.0, 0.0))
+    );
     assert_eq!(j[2].length, 1.0);
     assert_eq!((j[3].ground_anchor_a, j[3].ground_anchor_b), (v(-1.0, 1.0), v(1.0, 1.0)));
-    assert_eq!((j[3].local_anchor_a, j[3].local_anchor_b, j[3].ratio), (v(-1.0, 0.0), v(1.0, 0.0), 1.0));
-    assert!(!j[3].collide_connected, "the editor reads an absent CollideConnected as false, even for pulleys");
+    assert_eq!(
+        (j[3].local_anchor_a, j[3].local_anchor_b, j[3].ratio),
+        (v(-1.0, 0.0), v(1.0, 0.0), 1.0)
+    );
+    assert!(
+        !j[3].collide_connected,
+        "the editor reads an absent CollideConnected as false, even for pulleys"
+    );
     assert_eq!((j[7].ratio, j[7].joint_a, j[7].joint_b), (1.0, 0, 1));
     assert_eq!((j[8].frequency_hz, j[8].damping_ratio), (2.0, 0.7));
     assert_eq!((j[9].local_anchor_a, j[9].local_anchor_b), (v(-1.0, 0.0), v(1.0, 0.0)));
@@ -148,11 +167,13 @@ fn permutations(n: usize) -> Vec<Vec<usize>> {
     }
     permutations(n - 1)
         .into_iter()
-        .flat_map(|p| (0..n).map(move |i| {
-            let mut q = p.clone();
-            q.insert(i, n - 1);
-            q
-        }))
+        .flat_map(|p| {
+            (0..n).map(move |i| {
+                let mut q = p.clone();
+                q.insert(i, n - 1);
+                q
+            })
+        })
         .collect()
 }
 
@@ -164,7 +185,8 @@ fn all_24_container_orders_give_identical_scenes() {
     let orders = permutations(4);
     assert_eq!(orders.len(), 24);
     for order in orders {
-        let body: String = order.iter().map(|&i| parts[i].as_str()).collect::<Vec<_>>().join("\n  ");
+        let body: String =
+            order.iter().map(|&i| parts[i].as_str()).collect::<Vec<_>>().join("\n  ");
         let reordered = format!("{head}{body}{tail}");
         let scene = load(reordered.as_bytes(), &LoadOptions::default()).unwrap();
         assert!(scene.diagnostics().is_empty(), "{order:?}");
@@ -221,8 +243,14 @@ fn every_v1_field_is_read() {
     assert_eq!((m.mass, m.center, m.inertia), (12.0, Vec2::new(0.1, -0.2), 4.5));
     assert!(m.mass_given && m.center_given && m.inertia_given);
     let wheel = &scene.bodies()[2].mass_data;
-    assert_eq!((wheel.mass_given, wheel.center_given, wheel.inertia_given, wheel.inertia), (false, false, true, 0.25));
-    assert_eq!((cart.allow_sleep, cart.awake, cart.bullet, cart.inertia_scale), (false, false, true, 1.5));
+    assert_eq!(
+        (wheel.mass_given, wheel.center_given, wheel.inertia_given, wheel.inertia),
+        (false, false, true, 0.25)
+    );
+    assert_eq!(
+        (cart.allow_sleep, cart.awake, cart.bullet, cart.inertia_scale),
+        (false, false, true, 1.5)
+    );
     let rubber = scene.user_data_at(scene.fixtures()[0].user_data).unwrap();
     assert_eq!(scene.text(rubber.value), Some("tyre & rim"));
     assert!(scene.text(rubber.raw).unwrap().contains("<string>tyre &amp; rim</string>"));
@@ -241,23 +269,73 @@ fn farseer_version_2_spellings_are_read() {
     let j = scene.joints();
     let kinds: Vec<_> = j.iter().map(|j| j.kind().unwrap()).collect();
     use JointKind::*;
-    assert_eq!(kinds, [Revolute, Prismatic, Distance, Pulley, Wheel, Wheel, Weld, Friction, Gear, Rope, Unsupported, Unsupported, Motor]);
+    assert_eq!(
+        kinds,
+        [
+            Revolute,
+            Prismatic,
+            Distance,
+            Pulley,
+            Wheel,
+            Wheel,
+            Weld,
+            Friction,
+            Gear,
+            Rope,
+            Unsupported,
+            Unsupported,
+            Motor
+        ]
+    );
     assert_eq!(j[1].local_axis_a, Vec2::new(0.0, 1.0), "LocalXAxis1");
-    assert_eq!((j[3].ground_anchor_a, j[3].ground_anchor_b), (Vec2::new(-1.0, 10.0), Vec2::new(1.0, 10.0)), "WorldAnchorA/B");
-    assert_eq!((j[4].frequency_hz, j[4].max_motor_torque, j[4].local_axis_a), (5.0, 20.0, Vec2::new(0.0, 1.0)), "Line read as Wheel");
+    assert_eq!(
+        (j[3].ground_anchor_a, j[3].ground_anchor_b),
+        (Vec2::new(-1.0, 10.0), Vec2::new(1.0, 10.0)),
+        "WorldAnchorA/B"
+    );
+    assert_eq!(
+        (j[4].frequency_hz, j[4].max_motor_torque, j[4].local_axis_a),
+        (5.0, 20.0, Vec2::new(0.0, 1.0)),
+        "Line read as Wheel"
+    );
     assert_eq!(j[5].local_axis_a, Vec2::new(0.0, 1.0), "Axis");
     assert_eq!((j[6].frequency_hz, j[6].damping_ratio), (2.0, 0.3), "soft weld");
     assert_eq!((j[10].body_a, j[10].body_b), (0, 2), "an unsupported joint keeps its bodies");
-    assert_eq!((j[12].linear_offset, j[12].angular_offset, j[12].correction_factor), (Vec2::new(-1.0, 2.0), 0.5, 0.4));
+    assert_eq!(
+        (j[12].linear_offset, j[12].angular_offset, j[12].correction_factor),
+        (Vec2::new(-1.0, 2.0), 0.5, 0.4)
+    );
     let s = scene.shapes();
-    assert_eq!((s[0].kind(), s[0].has_prev_vertex, s[0].has_next_vertex), (Some(ShapeKind::Edge), false, false));
-    assert_eq!((s[1].has_prev_vertex, s[1].prev_vertex), (true, Vec2::new(-20.0, 0.0)), "a ghost counts only with its own flag");
+    assert_eq!(
+        (s[0].kind(), s[0].has_prev_vertex, s[0].has_next_vertex),
+        (Some(ShapeKind::Edge), false, false)
+    );
+    assert_eq!(
+        (s[1].has_prev_vertex, s[1].prev_vertex),
+        (true, Vec2::new(-20.0, 0.0)),
+        "a ghost counts only with its own flag"
+    );
     assert!(!s[1].has_next_vertex);
-    assert_eq!((s[2].is_loop, s[2].has_prev_vertex, s[2].next_vertex), (false, true, Vec2::new(-15.0, 4.0)));
-    assert_eq!((s[3].kind(), s[3].is_loop, scene.vertices(&s[3]).len()), (Some(ShapeKind::Chain), true, 4));
+    assert_eq!(
+        (s[2].is_loop, s[2].has_prev_vertex, s[2].next_vertex),
+        (false, true, Vec2::new(-15.0, 4.0))
+    );
+    assert_eq!(
+        (s[3].kind(), s[3].is_loop, scene.vertices(&s[3]).len()),
+        (Some(ShapeKind::Chain), true, 4)
+    );
     assert_eq!(scene.bodies()[1].gravity_scale, 0.5);
     let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code().unwrap()).collect();
-    assert_eq!(codes, [Code::FilterBitsTruncated, Code::FilterBitsTruncated, Code::LineJointIsWheel, Code::FarseerOnlyJoint, Code::FarseerOnlyJoint]);
+    assert_eq!(
+        codes,
+        [
+            Code::FilterBitsTruncated,
+            Code::FilterBitsTruncated,
+            Code::LineJointIsWheel,
+            Code::FarseerOnlyJoint,
+            Code::FarseerOnlyJoint
+        ]
+    );
 }
 
 #[test]

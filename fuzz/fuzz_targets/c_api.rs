@@ -4,14 +4,18 @@
 
 use std::ffi::{CStr, c_char};
 
-use box2scene::ffi::{ErrorInfo, SceneView, b2s_code_name, b2s_load_memory, b2s_scene_free, b2s_scene_get_view};
+use box2scene::ffi::{
+    ErrorInfo, SceneView, b2s_code_name, b2s_load_memory, b2s_scene_free, b2s_scene_get_view,
+};
 use box2scene::{Code, NONE};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let mut scene = std::ptr::null_mut();
     let mut error: ErrorInfo = unsafe { std::mem::zeroed() };
-    let code = unsafe { b2s_load_memory(data.as_ptr(), data.len(), std::ptr::null(), &mut scene, &mut error) };
+    let code = unsafe {
+        b2s_load_memory(data.as_ptr(), data.len(), std::ptr::null(), &mut scene, &mut error)
+    };
     if code != Code::Ok {
         assert!(scene.is_null());
         assert_eq!(error.code, code as u32);
@@ -63,7 +67,10 @@ fn walk(v: &SceneView) {
     }
     for j in items(v.joints, v.joint_count) {
         assert!(j.body_a < v.body_count && j.body_b < v.body_count);
-        assert!((j.joint_a == NONE || j.joint_a < v.joint_count) && (j.joint_b == NONE || j.joint_b < v.joint_count));
+        assert!(
+            (j.joint_a == NONE || j.joint_a < v.joint_count)
+                && (j.joint_b == NONE || j.joint_b < v.joint_count)
+        );
         user_data(j.user_data);
         string(j.name.as_ptr());
     }

@@ -9,7 +9,10 @@ fuzz_target!(|data: &[u8]| {
     for strict in [false, true] {
         if let Ok(scene) = load(data, &LoadOptions { strict, ..LoadOptions::default() }) {
             check_references(&scene);
-            assert!(!strict || scene.diagnostics().is_empty(), "strict mode turns warnings into errors");
+            assert!(
+                !strict || scene.diagnostics().is_empty(),
+                "strict mode turns warnings into errors"
+            );
         }
     }
 });
@@ -31,7 +34,9 @@ fn check_references(scene: &Scene) {
         user_data(b.user_data);
     }
     for j in scene.joints() {
-        assert!((j.body_a as usize) < bodies && (j.body_b as usize) < bodies && j.body_a != j.body_b);
+        assert!(
+            (j.body_a as usize) < bodies && (j.body_b as usize) < bodies && j.body_a != j.body_b
+        );
         for target in [j.joint_a, j.joint_b] {
             assert!(target == NONE || (target as usize) < joints);
         }

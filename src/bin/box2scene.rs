@@ -180,8 +180,19 @@ fn fmt(file: &Path, out: Option<&Path>, options: &LoadOptions, write: &WriteOpti
         }
     };
     for joint in box2scene::joints_not_written(&scene) {
-        let message = format!("joint {joint} is a Farseer-only joint with no Box2Scene form; it is not written");
-        eprintln!("{}", report_line(file, Position::default(), Severity::Warning.name(), Code::SkippedJoint.name(), &message));
+        let message = format!(
+            "joint {joint} is a Farseer-only joint with no Box2Scene form; it is not written"
+        );
+        eprintln!(
+            "{}",
+            report_line(
+                file,
+                Position::default(),
+                Severity::Warning.name(),
+                Code::SkippedJoint.name(),
+                &message
+            )
+        );
     }
     let Some(out) = out else {
         return emit(&scene.to_xml(write));

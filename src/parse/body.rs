@@ -5,9 +5,24 @@ use crate::error::Code;
 use crate::scene::{Body, BodyKind, MassData, Range};
 
 const BODY: &[&str] = &[
-    "name", "active", "allowsleep", "awake", "bullet", "fixedrotation", "angle",
-    "angulardamping", "angularvelocity", "lineardamping", "linearvelocity", "position",
-    "inertiascale", "gravityscale", "massdata", "fixtures", "userdata", "bindings",
+    "name",
+    "active",
+    "allowsleep",
+    "awake",
+    "bullet",
+    "fixedrotation",
+    "angle",
+    "angulardamping",
+    "angularvelocity",
+    "lineardamping",
+    "linearvelocity",
+    "position",
+    "inertiascale",
+    "gravityscale",
+    "massdata",
+    "fixtures",
+    "userdata",
+    "bindings",
 ];
 const MASS_DATA: &[&str] = &["mass", "center", "inertia"];
 
@@ -64,7 +79,9 @@ impl<'a> Parser<'a> {
     fn layout_mismatch(&self, child: &Tag<'a>, name: &str) -> Option<super::Problem> {
         let why = match (name, self.farseer_layout()) {
             ("fixtures", true) => "a Version 3 body lists its fixtures in <Bindings>",
-            ("bindings", false) => "<Bindings> belongs to Version 3 files; this body lists its fixtures in <Fixtures>",
+            ("bindings", false) => {
+                "<Bindings> belongs to Version 3 files; this body lists its fixtures in <Fixtures>"
+            }
             _ => return None,
         };
         Some(problem(Code::UnexpectedElement, child.at, format!("<{}> here: {why}", child.name())))
@@ -79,7 +96,11 @@ impl<'a> Parser<'a> {
             p.unknown_attributes(&pair, &attrs, &["fixtureid", "shapeid"])?;
             let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
                 Some(attr) => p.attribute(&pair, attr, crate::text::id),
-                None => Err(problem(Code::MissingAttribute, pair.at, format!("<{}> has no {name} attribute", pair.name()))),
+                None => Err(problem(
+                    Code::MissingAttribute,
+                    pair.at,
+                    format!("<{}> has no {name} attribute", pair.name()),
+                )),
             };
             let (fixture_id, shape) = (id("fixtureid")?, id("shapeid")?);
             p.origins.pairs.push(super::Pair { body, fixture_id, shape });
@@ -105,7 +126,10 @@ impl<'a> Parser<'a> {
             _ => Err(problem(
                 Code::UnknownType,
                 ty.at,
-                format!("unknown body Type \"{}\": expected Static, Dynamic or Kinematic", super::shorten(value)),
+                format!(
+                    "unknown body Type \"{}\": expected Static, Dynamic or Kinematic",
+                    super::shorten(value)
+                ),
             )),
         }
     }

@@ -5,9 +5,8 @@ use crate::error::Code;
 use crate::scene::{Filter, Fixture};
 use crate::text;
 
-const FIXTURE: &[&str] = &[
-    "shape", "name", "density", "friction", "restitution", "issensor", "filterdata", "userdata",
-];
+const FIXTURE: &[&str] =
+    &["shape", "name", "density", "friction", "restitution", "issensor", "filterdata", "userdata"];
 const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex", "collisionignores"];
 
 impl<'a> Parser<'a> {

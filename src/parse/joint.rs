@@ -7,15 +7,55 @@ use crate::scene::{Joint, JointKind, NONE, Vec2};
 use crate::validate;
 
 const JOINT: &[&str] = &[
-    "Name", "UserData", "BodyA", "BodyB", "JointA", "JointB", "CollideConnected",
-    "LocalAnchorA", "LocalAnchorB", "LocalAxisA", "ReferenceAngle", "EnableLimit",
-    "LowerAngle", "UpperAngle", "LowerTranslation", "UpperTranslation", "EnableMotor",
-    "MotorSpeed", "MaxMotorTorque", "MaxMotorForce", "Length", "FrequencyHz", "DampingRatio",
-    "GroundAnchorA", "GroundAnchorB", "LengthA", "LengthB", "MaxLengthA", "MaxLengthB", "Ratio",
-    "MaxForce", "MaxTorque", "MaxLength", "LinearOffset", "AngularOffset", "CorrectionFactor",
+    "Name",
+    "UserData",
+    "BodyA",
+    "BodyB",
+    "JointA",
+    "JointB",
+    "CollideConnected",
+    "LocalAnchorA",
+    "LocalAnchorB",
+    "LocalAxisA",
+    "ReferenceAngle",
+    "EnableLimit",
+    "LowerAngle",
+    "UpperAngle",
+    "LowerTranslation",
+    "UpperTranslation",
+    "EnableMotor",
+    "MotorSpeed",
+    "MaxMotorTorque",
+    "MaxMotorForce",
+    "Length",
+    "FrequencyHz",
+    "DampingRatio",
+    "GroundAnchorA",
+    "GroundAnchorB",
+    "LengthA",
+    "LengthB",
+    "MaxLengthA",
+    "MaxLengthB",
+    "Ratio",
+    "MaxForce",
+    "MaxTorque",
+    "MaxLength",
+    "LinearOffset",
+    "AngularOffset",
+    "CorrectionFactor",
     // Farseer's spellings (spec section 8.1).
-    "Breakpoint", "LocalXAxis1", "LocalXAxis", "Axis", "WorldAnchorA", "WorldAnchorB", "Constant",
-    "BiasFactor", "MaxImpulse", "Softness", "TargetAngle", "MinLength",
+    "Breakpoint",
+    "LocalXAxis1",
+    "LocalXAxis",
+    "Axis",
+    "WorldAnchorA",
+    "WorldAnchorB",
+    "Constant",
+    "BiasFactor",
+    "MaxImpulse",
+    "Softness",
+    "TargetAngle",
+    "MinLength",
 ];
 
 /// The elements that make a Farseer `Line` joint (February 2011 on) a wheel joint.
@@ -40,8 +80,16 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
     let anchored = !is(&[Gear, Motor, Unsupported]);
     let farseer_only = matches!(
         name,
-        "LocalAnchorA" | "LocalAnchorB" | "BiasFactor" | "MaxImpulse" | "Softness" | "TargetAngle"
-            | "MinLength" | "MaxLength" | "FrequencyHz" | "DampingRatio"
+        "LocalAnchorA"
+            | "LocalAnchorB"
+            | "BiasFactor"
+            | "MaxImpulse"
+            | "Softness"
+            | "TargetAngle"
+            | "MinLength"
+            | "MaxLength"
+            | "FrequencyHz"
+            | "DampingRatio"
     );
     Some(match name {
         "Breakpoint" => Ignored,
@@ -60,11 +108,15 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
         "UpperTranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
         "EnableMotor" if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
         "MotorSpeed" if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
-        "MaxMotorTorque" if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
+        "MaxMotorTorque" if is(&[Revolute, Wheel, Line]) => {
+            NonNegative(|j| &mut j.max_motor_torque)
+        }
         "MaxMotorForce" if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
         "Length" if is(&[Distance]) => NonNegative(|j| &mut j.length),
         "FrequencyHz" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
-        "DampingRatio" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
+        "DampingRatio" if is(&[Distance, Weld, Wheel, Line]) => {
+            NonNegative(|j| &mut j.damping_ratio)
+        }
         "GroundAnchorA" | "WorldAnchorA" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
         "GroundAnchorB" | "WorldAnchorB" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
         "Constant" if is(&[Pulley]) => Ignored,
@@ -87,7 +139,9 @@ fn slot(kind: JointKind, name: &str) -> Option<Slot> {
 /// format has for that kind taken from `given` (the common fields included). Fails on a
 /// non-finite value or a negative one where the format forbids it, naming the element.
 pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
-    let kind = given.kind().ok_or((Code::InvalidArgument, format!("unknown joint kind {}", given.kind)))?;
+    let kind = given
+        .kind()
+        .ok_or((Code::InvalidArgument, format!("unknown joint kind {}", given.kind)))?;
     let mut joint = Joint {
         name: given.name,
         user_data: given.user_data,
@@ -146,18 +200,22 @@ impl<'a> Parser<'a> {
     pub(super) fn joint(&mut self, tag: Tag<'a>) -> Parsed<()> {
         let kind = self.joint_type(&tag)?;
         let mut joint = Joint::new(kind);
-        let mut at = JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
+        let mut at =
+            JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
             let Some((name, repeated)) = self.known(&tag, &child, JOINT, &mut seen)? else {
                 continue;
             };
             let legacy = self.version == 0;
-            let common = matches!(name, "Name" | "UserData" | "BodyA" | "BodyB" | "CollideConnected");
-            let named_joint = matches!(name, "JointA" | "JointB") && (legacy || kind == JointKind::Gear);
+            let common =
+                matches!(name, "Name" | "UserData" | "BodyA" | "BodyB" | "CollideConnected");
+            let named_joint =
+                matches!(name, "JointA" | "JointB") && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
             if !common && !named_joint && slot.is_none() {
-                let message = format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
+                let message =
+                    format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
                 self.warn(Code::UnknownElement, child.at, message)?;
                 self.skip(&child)?;
                 continue;
@@ -231,7 +289,9 @@ impl<'a> Parser<'a> {
             return Err(problem(
                 Code::UnsupportedJointType,
                 ty.at,
-                format!("{why}; supported: Revolute, Prismatic, Distance, Pulley, Line, Weld, Friction, Gear, Wheel, Rope, Motor"),
+                format!(
+                    "{why}; supported: Revolute, Prismatic, Distance, Pulley, Line, Weld, Friction, Gear, Wheel, Rope, Motor"
+                ),
             ));
         };
         if matches!(kind, JointKind::Wheel | JointKind::Rope | JointKind::Motor) {
@@ -250,17 +310,24 @@ impl<'a> Parser<'a> {
     /// The rules one joint can break on its own (cross references come later).
     fn check_joint(&self, tag: &Tag<'a>, joint: &Joint, at: &JointOrigin) -> Parsed<()> {
         let legacy = self.version == 0;
-        for (index, name, legacy_name) in [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")] {
+        for (index, name, legacy_name) in
+            [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]
+        {
             if index == NONE {
                 let name = if legacy { legacy_name } else { name };
-                return Err(self.missing(tag, &format!("<{name}>: a joint names both of its bodies")));
+                return Err(
+                    self.missing(tag, &format!("<{name}>: a joint names both of its bodies"))
+                );
             }
         }
         let kind = joint.kind();
         if kind == Some(JointKind::Gear) {
             for (index, name) in [(joint.joint_a, "JointA"), (joint.joint_b, "JointB")] {
                 if index == NONE {
-                    return Err(self.missing(tag, &format!("<{name}>: a gear joint names the two joints it couples")));
+                    return Err(self.missing(
+                        tag,
+                        &format!("<{name}>: a gear joint names the two joints it couples"),
+                    ));
                 }
             }
         }

@@ -15,9 +15,9 @@ pub(crate) use user_data::user_data_fragment;
 
 use std::borrow::Cow;
 
+use quick_xml::Reader;
 use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesStart, Event};
-use quick_xml::Reader;
 
 use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
 use crate::input::{self, Decoded, Encoding, Locator};
@@ -44,7 +44,9 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
     let Parser { mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), .. } = parser;
     warnings.sort_by_key(|w| w.at);
     if dropped > 0 {
-        let message = format!("{dropped} more warnings from here on were not kept (a scene keeps {MAX_WARNINGS})");
+        let message = format!(
+            "{dropped} more warnings from here on were not kept (a scene keeps {MAX_WARNINGS})"
+        );
         warnings.push(problem(Code::WarningsTruncated, first_dropped, message));
     }
     for w in warnings {
@@ -318,7 +320,9 @@ impl<'a> Parser<'a> {
         problem(
             Code::LimitExceeded,
             at,
-            format!("the file exceeds a load limit here ({name} = {value}); raise it in the load options if the file is trusted"),
+            format!(
+                "the file exceeds a load limit here ({name} = {value}); raise it in the load options if the file is trusted"
+            ),
         )
     }
 
@@ -332,7 +336,11 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn check_declared_encoding(&self, decl: &quick_xml::events::BytesDecl, at: usize) -> Parsed<()> {
+    fn check_declared_encoding(
+        &self,
+        decl: &quick_xml::events::BytesDecl,
+        at: usize,
+    ) -> Parsed<()> {
         let Some(Ok(declared)) = decl.encoding() else {
             return Ok(());
         };
@@ -371,7 +379,11 @@ impl<'a> Parser<'a> {
                         return Err(problem(
                             Code::UnexpectedText,
                             at + lead,
-                            format!("text '{}' inside <{}>, which holds only elements", shorten(text), parent.name()),
+                            format!(
+                                "text '{}' inside <{}>, which holds only elements",
+                                shorten(text),
+                                parent.name()
+                            ),
                         ));
                     }
                 }
@@ -391,7 +403,11 @@ impl<'a> Parser<'a> {
                         Some((text, _)) => {
                             text.to_mut().push_str(&t);
                             if text.len() as u64 > self.options.max_text_bytes {
-                                return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+                                return Err(self.limit(
+                                    at,
+                                    "max_text_bytes",
+                                    self.options.max_text_bytes,
+                                ));
                             }
                         }
                     },
@@ -399,7 +415,11 @@ impl<'a> Parser<'a> {
                         return Err(problem(
                             Code::UnexpectedElement,
                             child.at,
-                            format!("<{}> holds a value, not elements such as <{}>", tag.name(), child.name()),
+                            format!(
+                                "<{}> holds a value, not elements such as <{}>",
+                                tag.name(),
+                                child.name()
+                            ),
                         ));
                     }
                     Node::Close(_) => break,
@@ -419,11 +439,17 @@ impl<'a> Parser<'a> {
     }
 
     /// Reads a value element and converts its text with `convert`.
-    pub fn parsed<T>(&mut self, tag: &Tag, convert: fn(&str) -> Result<T, BadValue>) -> Parsed<(T, usize)> {
+    pub fn parsed<T>(
+        &mut self,
+        tag: &Tag,
+        convert: fn(&str) -> Result<T, BadValue>,
+    ) -> Parsed<(T, usize)> {
         let value = self.value(tag)?;
         match convert(&value.text) {
             Ok(v) => Ok((v, value.at)),
-            Err(e) => Err(problem(e.code, value.at + e.at, format!("<{}>: {}", tag.name(), e.message))),
+            Err(e) => {
+                Err(problem(e.code, value.at + e.at, format!("<{}>: {}", tag.name(), e.message)))
+            }
         }
     }
 
@@ -451,11 +477,20 @@ impl<'a> Parser<'a> {
     }
 
     /// Converts an attribute's value with `convert`; errors point into the value.
-    pub fn attribute<T>(&self, tag: &Tag, attr: &Attr, convert: fn(&str) -> Result<T, BadValue>) -> Parsed<(T, usize)> {
+    pub fn attribute<T>(
+        &self,
+        tag: &Tag,
+        attr: &Attr,
+        convert: fn(&str) -> Result<T, BadValue>,
+    ) -> Parsed<(T, usize)> {
         let value = trim_xml(&attr.value);
         let lead = attr.value.len() - attr.value.trim_start_matches(text::is_xml_space).len();
         convert(value).map(|v| (v, attr.at + lead)).map_err(|e| {
-            problem(e.code, attr.at + lead + e.at, format!("<{} {}>: {}", tag.name(), attr.key, e.message))
+            problem(
+                e.code,
+                attr.at + lead + e.at,
+                format!("<{} {}>: {}", tag.name(), attr.key, e.message),
+            )
         })
     }
 
@@ -500,7 +535,12 @@ impl<'a> Parser<'a> {
     }
 
     /// Warns about every attribute of `tag` except the lowercase names in `known`.
-    pub fn unknown_attributes(&mut self, tag: &Tag<'a>, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
+    pub fn unknown_attributes(
+        &mut self,
+        tag: &Tag<'a>,
+        attrs: &[Attr],
+        known: &[&str],
+    ) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             let message = format!("unknown attribute {} on <{}> ignored", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
@@ -554,7 +594,8 @@ impl<'a> Parser<'a> {
 
     /// Warns that a scalar element was repeated (the last one wins).
     pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
-        let message = format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name());
+        let message =
+            format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name());
         self.warn(Code::DuplicateElement, child.at, message)
     }
 
@@ -563,7 +604,11 @@ impl<'a> Parser<'a> {
         problem(
             Code::DuplicateContainer,
             child.at,
-            format!("<{}> appears twice in <{}>: the indices of its items would be ambiguous", child.name(), parent.name()),
+            format!(
+                "<{}> appears twice in <{}>: the indices of its items would be ambiguous",
+                child.name(),
+                parent.name()
+            ),
         )
     }
 
@@ -580,7 +625,11 @@ impl<'a> Parser<'a> {
                 return Err(problem(
                     Code::UnexpectedElement,
                     child.at,
-                    format!("<{}> holds <{item}> elements, not <{}>", container.name(), child.name()),
+                    format!(
+                        "<{}> holds <{item}> elements, not <{}>",
+                        container.name(),
+                        child.name()
+                    ),
                 ));
             }
             each(self, child)?;
@@ -596,7 +645,11 @@ impl<'a> Parser<'a> {
         problem(
             Code::MalformedXml,
             self.text.len(),
-            format!("malformed XML: the file ends before </{}> (opened at byte {})", tag.name(), tag.at),
+            format!(
+                "malformed XML: the file ends before </{}> (opened at byte {})",
+                tag.name(),
+                tag.at
+            ),
         )
     }
 
@@ -615,14 +668,20 @@ fn unknown_entity(r: &quick_xml::events::BytesRef, at: usize) -> Problem {
     problem(
         Code::MalformedXml,
         at,
-        format!("malformed XML: unknown entity &{name}; (only &amp; &lt; &gt; &quot; &apos; and character references are allowed)"),
+        format!(
+            "malformed XML: unknown entity &{name}; (only &amp; &lt; &gt; &quot; &apos; and character references are allowed)"
+        ),
     )
 }
 
 /// `value`, unless it is negative (error `negative-value` naming `what`).
 pub(crate) fn not_negative(what: &str, value: f32, at: usize) -> Parsed<f32> {
     if value < 0.0 {
-        return Err(problem(Code::NegativeValue, at, format!("{what} is {value}, but it cannot be negative")));
+        return Err(problem(
+            Code::NegativeValue,
+            at,
+            format!("{what} is {value}, but it cannot be negative"),
+        ));
     }
     Ok(value)
 }

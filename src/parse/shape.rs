@@ -6,9 +6,22 @@ use crate::scene::{Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
 const SHAPE: &[&str] = &[
-    "name", "radius", "position", "vertices", "centroid", "vertex0", "vertex1", "vertex2",
-    "vertex3", "hasvertex0", "hasvertex3", "prevvertex", "nextvertex", "hasprevvertex",
-    "hasnextvertex", "loop",
+    "name",
+    "radius",
+    "position",
+    "vertices",
+    "centroid",
+    "vertex0",
+    "vertex1",
+    "vertex2",
+    "vertex3",
+    "hasvertex0",
+    "hasvertex3",
+    "prevvertex",
+    "nextvertex",
+    "hasprevvertex",
+    "hasnextvertex",
+    "loop",
 ];
 
 /// Whether a shape of `kind` has the element `name` (from [`SHAPE`]).
@@ -36,7 +49,8 @@ impl<'a> Parser<'a> {
                 continue;
             };
             if !belongs(kind, name) {
-                let message = format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
+                let message =
+                    format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
                 self.warn(Code::UnknownElement, child.at, message)?;
                 self.skip(&child)?;
                 continue;
@@ -67,7 +81,8 @@ impl<'a> Parser<'a> {
             ShapeKind::Circle => {
                 for needed in ["radius", "position"] {
                     if !seen.contains(SHAPE, needed) {
-                        return Err(self.missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
+                        return Err(self
+                            .missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
                     }
                 }
                 if let Err((code, message)) = validate::circle(shape.radius) {
@@ -77,7 +92,9 @@ impl<'a> Parser<'a> {
             ShapeKind::Edge => {
                 for needed in ["vertex1", "vertex2"] {
                     if !seen.contains(SHAPE, needed) {
-                        return Err(self.missing(&tag, &format!("<{}> (an Edge needs one)", title(needed))));
+                        return Err(
+                            self.missing(&tag, &format!("<{}> (an Edge needs one)", title(needed)))
+                        );
                     }
                 }
                 let first = self.scene.vertices.len() as u32;
@@ -99,10 +116,14 @@ impl<'a> Parser<'a> {
     /// the `Density` of the fixtures made with it).
     fn shape_type(&mut self, tag: &Tag<'a>) -> Parsed<Shape> {
         let attrs = self.attributes(tag)?;
-        let known: &[&str] = if self.farseer_layout() { &["type", "name", "density"] } else { &["type", "name"] };
+        let known: &[&str] =
+            if self.farseer_layout() { &["type", "name", "density"] } else { &["type", "name"] };
         self.unknown_attributes(tag, &attrs, known)?;
-        let density = match attrs.iter().find(|a| a.is("density")).filter(|_| self.farseer_layout()) {
-            Some(attr) => self.attribute(tag, attr, crate::text::float).and_then(|(d, at)| super::not_negative("the shape's Density", d, at))?,
+        let density = match attrs.iter().find(|a| a.is("density")).filter(|_| self.farseer_layout())
+        {
+            Some(attr) => self
+                .attribute(tag, attr, crate::text::float)
+                .and_then(|(d, at)| super::not_negative("the shape's Density", d, at))?,
             None => 0.0,
         };
         self.origins.shape_densities.push(density);
@@ -124,7 +145,10 @@ impl<'a> Parser<'a> {
                 return Err(problem(
                     Code::UnknownType,
                     ty.at,
-                    format!("unknown shape Type \"{}\": expected Circle, Polygon, Edge or Chain", super::shorten(value)),
+                    format!(
+                        "unknown shape Type \"{}\": expected Circle, Polygon, Edge or Chain",
+                        super::shorten(value)
+                    ),
                 ));
             }
         };

@@ -2,30 +2,42 @@
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (spec section 7).
 
 use super::{Node, Parsed, Parser, Tag, trim_xml};
+use crate::LoadOptions;
 use crate::error::Code;
 use crate::input::Decoded;
 use crate::scene::{Str, UserData};
-use crate::LoadOptions;
 
 /// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would: the
 /// type name and value text when it has the editor's form. Fails when `raw` is not
 /// well-formed XML content.
-pub(crate) fn user_data_fragment(raw: &str) -> Result<(Option<String>, Option<String>), (Code, String)> {
+pub(crate) fn user_data_fragment(
+    raw: &str,
+) -> Result<(Option<String>, Option<String>), (Code, String)> {
     let document = format!("<UserData>{raw}</UserData>");
-    let decoded = Decoded { text: document.as_str().into(), encoding: crate::input::Encoding::Utf8 { bom: false } };
+    let decoded = Decoded {
+        text: document.as_str().into(),
+        encoding: crate::input::Encoding::Utf8 { bom: false },
+    };
     let options = LoadOptions::default();
     let mut parser = Parser::new(&decoded, &options);
     let read = |p: &mut Parser| -> Parsed<EditorForm> {
-        let Node::Open(tag) = p.next_node()? else { unreachable!("the document starts with <UserData>") };
+        let Node::Open(tag) = p.next_node()? else {
+            unreachable!("the document starts with <UserData>")
+        };
         let (_, form) = p.walk_user_data(&tag)?;
         match p.next_node()? {
             Node::Eof => Ok(form),
             _ => Err(super::problem(Code::MalformedXml, 0, "closes <UserData> early")),
         }
     };
-    let form = read(&mut parser).map_err(|p| (p.code, format!("the UserData is not well-formed XML content: {}", p.message)))?;
+    let form = read(&mut parser).map_err(|p| {
+        (p.code, format!("the UserData is not well-formed XML content: {}", p.message))
+    })?;
     Ok(match form.complete() {
-        true => (form.type_name.map(|t| trim_xml(&t).to_owned()), form.value.map(|v| trim_xml(&v).to_owned())),
+        true => (
+            form.type_name.map(|t| trim_xml(&t).to_owned()),
+            form.value.map(|v| trim_xml(&v).to_owned()),
+        ),
         false => (None, None),
     })
 }
@@ -60,7 +72,8 @@ enum Inside {
 impl<'a> Parser<'a> {
     /// Stores the user data of `tag` and returns its index.
     pub(super) fn user_data(&mut self, tag: &Tag<'a>) -> Parsed<u32> {
-        let (raw, form) = if tag.empty { ("", EditorForm::default()) } else { self.walk_user_data(tag)? };
+        let (raw, form) =
+            if tag.empty { ("", EditorForm::default()) } else { self.walk_user_data(tag)? };
         let complete = form.complete();
         let mut text = |s: Option<String>| match (complete, s) {
             (true, Some(s)) => self.scene.add_str(trim_xml(&s)),
@@ -105,8 +118,12 @@ impl<'a> Parser<'a> {
                     }
                 }
                 Node::Text(t, _) => match path.last() {
-                    Some(Inside::Type) => form.type_name.get_or_insert_with(String::new).push_str(&t),
-                    Some(Inside::ValueChild) => form.value.get_or_insert_with(String::new).push_str(&t),
+                    Some(Inside::Type) => {
+                        form.type_name.get_or_insert_with(String::new).push_str(&t)
+                    }
+                    Some(Inside::ValueChild) => {
+                        form.value.get_or_insert_with(String::new).push_str(&t)
+                    }
                     _ => form.other |= !trim_xml(&t).is_empty(),
                 },
                 Node::Close(at) => {

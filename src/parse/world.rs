@@ -13,14 +13,26 @@ impl<'a> Parser<'a> {
             match self.next_node()? {
                 super::Node::Open(tag) => break tag,
                 super::Node::Text(t, at) if !super::trim_xml(&t).is_empty() => {
-                    return Err(problem(Code::MalformedXml, at, "malformed XML: text before the root element"));
+                    return Err(problem(
+                        Code::MalformedXml,
+                        at,
+                        "malformed XML: text before the root element",
+                    ));
                 }
                 super::Node::Text(..) => {}
                 super::Node::Close(at) => {
-                    return Err(problem(Code::MalformedXml, at, "malformed XML: an end tag before any start tag"));
+                    return Err(problem(
+                        Code::MalformedXml,
+                        at,
+                        "malformed XML: an end tag before any start tag",
+                    ));
                 }
                 super::Node::Eof => {
-                    return Err(problem(Code::MalformedXml, 0, "malformed XML: the file has no root element; expected <World>"));
+                    return Err(problem(
+                        Code::MalformedXml,
+                        0,
+                        "malformed XML: the file has no root element; expected <World>",
+                    ));
                 }
             }
         };
@@ -28,7 +40,10 @@ impl<'a> Parser<'a> {
             return Err(problem(
                 Code::NotAScene,
                 root.at,
-                format!("the root element is <{}>, not <World>: this is not a Box2Scene file", root.name()),
+                format!(
+                    "the root element is <{}>, not <World>: this is not a Box2Scene file",
+                    root.name()
+                ),
             ));
         }
         self.world(&root)?;
@@ -40,11 +55,18 @@ impl<'a> Parser<'a> {
                     return Err(problem(
                         Code::MalformedXml,
                         tag.at,
-                        format!("malformed XML: a second root element <{}> after </World>", tag.name()),
+                        format!(
+                            "malformed XML: a second root element <{}> after </World>",
+                            tag.name()
+                        ),
                     ));
                 }
                 super::Node::Text(_, at) | super::Node::Close(at) => {
-                    return Err(problem(Code::MalformedXml, at, "malformed XML: content after </World>"));
+                    return Err(problem(
+                        Code::MalformedXml,
+                        at,
+                        "malformed XML: content after </World>",
+                    ));
                 }
             }
         }
@@ -102,7 +124,10 @@ impl<'a> Parser<'a> {
                 return Err(problem(
                     Code::UnsupportedVersion,
                     version.at,
-                    format!("Version \"{}\" is not supported: box2scene reads Versions 1, 2 and 3 and unversioned files", super::shorten(other)),
+                    format!(
+                        "Version \"{}\" is not supported: box2scene reads Versions 1, 2 and 3 and unversioned files",
+                        super::shorten(other)
+                    ),
                 ));
             }
         };

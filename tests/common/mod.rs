@@ -30,7 +30,22 @@ impl Random {
 
     /// Any finite float, odd ones often.
     fn float(&mut self) -> f32 {
-        let odd = [0.0, -0.0, 1.0, -1.0, f32::MAX, -f32::MAX, f32::MIN_POSITIVE, f32::from_bits(1), -f32::from_bits(0x007F_FFFF), 0.1, 1e-5, 9.999999e-6, 1e16, 8.369571e-36];
+        let odd = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            f32::MAX,
+            -f32::MAX,
+            f32::MIN_POSITIVE,
+            f32::from_bits(1),
+            -f32::from_bits(0x007F_FFFF),
+            0.1,
+            1e-5,
+            9.999999e-6,
+            1e16,
+            8.369571e-36,
+        ];
         if self.chance(40) {
             return self.pick(&odd);
         }
@@ -67,7 +82,17 @@ fn escape(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('\r', "&#13;")
 }
 
-const NAMES: &[&str] = &["", "ground", "a & b", "<tag>", "say \"hi\" 'there'", "tab\tinside", "é€ 😀 日本", "line\r\nbreak", "]]>"];
+const NAMES: &[&str] = &[
+    "",
+    "ground",
+    "a & b",
+    "<tag>",
+    "say \"hi\" 'there'",
+    "tab\tinside",
+    "é€ 😀 日本",
+    "line\r\nbreak",
+    "]]>",
+];
 const USER_DATA: &[&str] = &[
     "<Type>System.String</Type><Value><string>ok &amp; fine</string></Value>",
     "plain text",
@@ -207,7 +232,14 @@ fn body(x: &mut String, r: &mut Random, fixtures: usize) {
             element(x, name, if r.chance(50) { "true" } else { "False" });
         }
     }
-    for name in ["Angle", "AngularDamping", "AngularVelocity", "LinearDamping", "InertiaScale", "GravityScale"] {
+    for name in [
+        "Angle",
+        "AngularDamping",
+        "AngularVelocity",
+        "LinearDamping",
+        "InertiaScale",
+        "GravityScale",
+    ] {
         if r.chance(40) {
             element(x, name, &num(r.float()));
         }
@@ -242,25 +274,99 @@ fn joint_fields(kind: &str) -> &'static [(&'static str, char)] {
     // v = any vector, a = non-zero axis, f = any float, n = non-negative, b = bool,
     // p = positive (pulley ratio).
     match kind {
-        "Revolute" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("ReferenceAngle", 'f'), ("EnableMotor", 'b'), ("MotorSpeed", 'f'), ("MaxMotorTorque", 'n')],
-        "Prismatic" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("LocalAxisA", 'a'), ("ReferenceAngle", 'f'), ("EnableMotor", 'b'), ("MaxMotorForce", 'n'), ("MotorSpeed", 'f')],
-        "Distance" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("Length", 'n'), ("FrequencyHz", 'n'), ("DampingRatio", 'n')],
-        "Pulley" => &[("GroundAnchorA", 'v'), ("GroundAnchorB", 'v'), ("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("LengthA", 'f'), ("LengthB", 'f'), ("MaxLengthA", 'f'), ("MaxLengthB", 'f'), ("Ratio", 'p')],
-        "Line" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("LocalAxisA", 'a'), ("EnableMotor", 'b'), ("MaxMotorForce", 'n'), ("MotorSpeed", 'f')],
-        "Weld" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("ReferenceAngle", 'f'), ("FrequencyHz", 'n'), ("DampingRatio", 'n')],
-        "Friction" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("MaxForce", 'n'), ("MaxTorque", 'n')],
+        "Revolute" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("ReferenceAngle", 'f'),
+            ("EnableMotor", 'b'),
+            ("MotorSpeed", 'f'),
+            ("MaxMotorTorque", 'n'),
+        ],
+        "Prismatic" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("LocalAxisA", 'a'),
+            ("ReferenceAngle", 'f'),
+            ("EnableMotor", 'b'),
+            ("MaxMotorForce", 'n'),
+            ("MotorSpeed", 'f'),
+        ],
+        "Distance" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("Length", 'n'),
+            ("FrequencyHz", 'n'),
+            ("DampingRatio", 'n'),
+        ],
+        "Pulley" => &[
+            ("GroundAnchorA", 'v'),
+            ("GroundAnchorB", 'v'),
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("LengthA", 'f'),
+            ("LengthB", 'f'),
+            ("MaxLengthA", 'f'),
+            ("MaxLengthB", 'f'),
+            ("Ratio", 'p'),
+        ],
+        "Line" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("LocalAxisA", 'a'),
+            ("EnableMotor", 'b'),
+            ("MaxMotorForce", 'n'),
+            ("MotorSpeed", 'f'),
+        ],
+        "Weld" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("ReferenceAngle", 'f'),
+            ("FrequencyHz", 'n'),
+            ("DampingRatio", 'n'),
+        ],
+        "Friction" => {
+            &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("MaxForce", 'n'), ("MaxTorque", 'n')]
+        }
         "Gear" => &[("Ratio", 'f')],
-        "Wheel" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("LocalAxisA", 'a'), ("EnableMotor", 'b'), ("MaxMotorTorque", 'n'), ("MotorSpeed", 'f'), ("FrequencyHz", 'n'), ("DampingRatio", 'n')],
+        "Wheel" => &[
+            ("LocalAnchorA", 'v'),
+            ("LocalAnchorB", 'v'),
+            ("LocalAxisA", 'a'),
+            ("EnableMotor", 'b'),
+            ("MaxMotorTorque", 'n'),
+            ("MotorSpeed", 'f'),
+            ("FrequencyHz", 'n'),
+            ("DampingRatio", 'n'),
+        ],
         "Rope" => &[("LocalAnchorA", 'v'), ("LocalAnchorB", 'v'), ("MaxLength", 'n')],
-        _ => &[("LinearOffset", 'v'), ("AngularOffset", 'f'), ("MaxForce", 'n'), ("MaxTorque", 'n'), ("CorrectionFactor", 'f')],
+        _ => &[
+            ("LinearOffset", 'v'),
+            ("AngularOffset", 'f'),
+            ("MaxForce", 'n'),
+            ("MaxTorque", 'n'),
+            ("CorrectionFactor", 'f'),
+        ],
     }
 }
 
 fn joints(x: &mut String, r: &mut Random, bodies: usize) {
-    const KINDS: [&str; 11] = ["Revolute", "Prismatic", "Distance", "Pulley", "Line", "Weld", "Friction", "Gear", "Wheel", "Rope", "Motor"];
+    const KINDS: [&str; 11] = [
+        "Revolute",
+        "Prismatic",
+        "Distance",
+        "Pulley",
+        "Line",
+        "Weld",
+        "Friction",
+        "Gear",
+        "Wheel",
+        "Rope",
+        "Motor",
+    ];
     let count = r.below(8) as usize;
     // Revolute and prismatic joints first, so that gears have something to couple.
-    let kinds: Vec<&str> = (0..count).map(|i| if i < 2 { KINDS[i] } else { r.pick(&KINDS) }).collect();
+    let kinds: Vec<&str> =
+        (0..count).map(|i| if i < 2 { KINDS[i] } else { r.pick(&KINDS) }).collect();
     for kind in kinds {
         let _ = write!(x, "<Joint Type=\"{kind}\">");
         named(x, r);
@@ -276,7 +382,11 @@ fn joints(x: &mut String, r: &mut Random, bodies: usize) {
             element(x, "JointB", &r.below(2).to_string());
         }
         if matches!(kind, "Revolute" | "Prismatic" | "Line") && r.chance(50) {
-            let (lower, upper) = if kind == "Revolute" { ("LowerAngle", "UpperAngle") } else { ("LowerTranslation", "UpperTranslation") };
+            let (lower, upper) = if kind == "Revolute" {
+                ("LowerAngle", "UpperAngle")
+            } else {
+                ("LowerTranslation", "UpperTranslation")
+            };
             let (low, high) = (r.float(), r.float());
             element(x, "EnableLimit", if r.chance(50) { "true" } else { "false" });
             element(x, lower, &num(low.min(high)));
@@ -299,4 +409,3 @@ fn joints(x: &mut String, r: &mut Random, bodies: usize) {
         x.push_str("</Joint>");
     }
 }
-
