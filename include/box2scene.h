@@ -179,6 +179,11 @@ enum b2s_code
    * bounds); the object, and what depends on it, was skipped.
    */
   B2S_CODE_BEYOND_BOX2D_RANGE = 204,
+  /**
+   * Capturing a live world: a value was written as the nearest the format can hold,
+   * not exactly (the message says what and by how much).
+   */
+  B2S_CODE_LOSSY_CAPTURE = 205,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

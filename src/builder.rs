@@ -11,7 +11,7 @@
 use crate::LoadOptions;
 use crate::error::{Code, Diagnostic, Error, Position, Severity};
 use crate::parse::{canonical_joint, user_data_fragment};
-use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
+use crate::scene::{Body, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
 use crate::validate::{self, Geometry};
@@ -246,7 +246,9 @@ impl Builder {
         let canonical =
             Body { name, fixtures: Range { first, count: fixtures.len() as u32 }, ..canonical };
         self.scene.bodies.push(canonical);
-        if let Some(message) = self.zero_density(&canonical) {
+        if let Some(message) =
+            validate::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)
+        {
             self.warn("body", index, Code::DynamicBodyZeroDensity, &message);
         }
         Ok(index as u32)
@@ -291,18 +293,6 @@ impl Builder {
         }
         self.user_data_reference(b.user_data)?;
         Ok(Body { mass_data: mass, ..*b })
-    }
-
-    /// The loader's `dynamic-body-zero-density` rule for one body.
-    fn zero_density(&self, body: &Body) -> Option<String> {
-        if body.kind() != Some(BodyKind::Dynamic) || body.mass_data.mass_given {
-            return None;
-        }
-        let ids = &self.scene.fixture_ids[body.fixtures.indices()];
-        let f = ids.iter().find(|&&f| self.scene.fixtures[f as usize].density == 0.0)?;
-        Some(format!(
-            "has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"
-        ))
     }
 
     /// Adds a joint between already added bodies (a gear: after its two joints) and

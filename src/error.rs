@@ -111,6 +111,9 @@ pub enum Code {
     /// A value beyond the range in which Box2D 2.4 stays finite (the README gives the
     /// bounds); the object, and what depends on it, was skipped.
     BeyondBox2dRange = 204,
+    /// Capturing a live world: a value was written as the nearest the format can hold,
+    /// not exactly (the message says what and by how much).
+    LossyCapture = 205,
 }
 
 impl Code {
@@ -175,6 +178,7 @@ impl Code {
         Code::SkippedDependent,
         Code::InconsistentMassData,
         Code::BeyondBox2dRange,
+        Code::LossyCapture,
     ];
 
     /// The spec's kebab-case name of the code.
@@ -244,6 +248,7 @@ impl Code {
             Code::SkippedDependent => c"skipped-dependent",
             Code::InconsistentMassData => c"inconsistent-mass-data",
             Code::BeyondBox2dRange => c"beyond-box2d-range",
+            Code::LossyCapture => c"lossy-capture",
         }
     }
 

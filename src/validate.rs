@@ -5,7 +5,7 @@
 
 use crate::error::Code;
 use crate::parse::{Parsed, Parser};
-use crate::scene::{BodyKind, Joint, JointKind, Vec2};
+use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
 pub(crate) const MAX_POLYGON_VERTICES: usize = 8;
@@ -221,23 +221,32 @@ pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
 }
 
 /// "A dynamic body that contains a fixture whose density is zero is malformed", unless its
-/// MassData gives a mass: Box2D would give it mass 1.
+/// MassData gives a mass: why, for the message, when `body` breaks that rule.
+pub(crate) fn zero_density(
+    body: &Body,
+    fixture_ids: &[u32],
+    fixtures: &[Fixture],
+) -> Option<String> {
+    if body.kind() != Some(BodyKind::Dynamic) || body.mass_data.mass_given {
+        return None;
+    }
+    let ids = &fixture_ids[body.fixtures.indices()];
+    let f = ids.iter().find(|&&f| fixtures[f as usize].density == 0.0)?;
+    Some(format!(
+        "has fixture {f} with density 0 and no MassData mass: that fixture adds no mass, and a \
+         dynamic body with no mass at all gets mass 0 in Box2D 2.4 (1 in Box2D 2.1)"
+    ))
+}
+
+/// Warns about every dynamic body that breaks the [`zero_density`] rule.
 pub(crate) fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
     let s = &p.scene;
-    let mut found = Vec::new();
-    for (i, b) in s.bodies.iter().enumerate() {
-        if b.kind() != Some(BodyKind::Dynamic) || b.mass_data.mass_given {
-            continue;
-        }
-        let zero = s.fixture_ids[b.fixtures.indices()]
-            .iter()
-            .find(|&&f| s.fixtures[f as usize].density == 0.0);
-        if let Some(f) = zero {
-            found.push((p.origins.bodies[i], format!(
-                "dynamic body {i} has fixture {f} with density 0 and no MassData mass; Box2D will give it mass 1"
-            )));
-        }
-    }
+    let found: Vec<(usize, String)> = (s.bodies.iter().enumerate())
+        .filter_map(|(i, b)| {
+            let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
+            Some((p.origins.bodies[i], format!("dynamic body {i} {why}")))
+        })
+        .collect();
     for (at, message) in found {
         p.warn(Code::DynamicBodyZeroDensity, at, message)?;
     }

@@ -638,7 +638,7 @@ inline Built build_world(const b2s_scene* scene, b2World& world) {
 /// as it can (the message says what changed). The library is to name it
 /// B2S_CODE_LOSSY_CAPTURE ("lossy-capture"); until it does, this stand-in lies at the end of
 /// the adapter's block of codes, where none is, and b2s_code_name does not know it.
-inline constexpr b2s_code lossy_capture_code = static_cast<b2s_code>(299);
+inline constexpr b2s_code lossy_capture_code = B2S_CODE_LOSSY_CAPTURE;
 
 /// A Name and UserData that capture_world gives one object; an empty string gives none.
 struct Label {
