@@ -653,11 +653,12 @@ impl<'a> Parser<'a> {
         )
     }
 
-    /// Offset and length of a tag's content so far: used to slice raw inner XML.
+    /// The offset the reader has reached: just past the last event read.
     pub fn position(&self) -> usize {
         self.reader.buffer_position() as usize
     }
 
+    /// The decoded text between two offsets (UserData keeps its inner XML verbatim).
     pub fn slice(&self, from: usize, to: usize) -> &'a str {
         self.text.get(from..to).unwrap_or_default()
     }

@@ -4,7 +4,7 @@
 use super::{Node, Parsed, Parser, Tag, trim_xml};
 use crate::LoadOptions;
 use crate::error::Code;
-use crate::input::Decoded;
+use crate::input;
 use crate::scene::{Str, UserData};
 
 /// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would: the
@@ -14,11 +14,8 @@ pub(crate) fn user_data_fragment(
     raw: &str,
 ) -> Result<(Option<String>, Option<String>), (Code, String)> {
     let document = format!("<UserData>{raw}</UserData>");
-    let decoded = Decoded {
-        text: document.as_str().into(),
-        encoding: crate::input::Encoding::Utf8 { bom: false },
-    };
     let options = LoadOptions::default();
+    let decoded = input::decode(document.as_bytes(), &options).map_err(|e| (e.code, e.message))?;
     let mut parser = Parser::new(&decoded, &options);
     let read = |p: &mut Parser| -> Parsed<EditorForm> {
         let Node::Open(tag) = p.next_node()? else {
@@ -33,13 +30,7 @@ pub(crate) fn user_data_fragment(
     let form = read(&mut parser).map_err(|p| {
         (p.code, format!("the UserData is not well-formed XML content: {}", p.message))
     })?;
-    Ok(match form.complete() {
-        true => (
-            form.type_name.map(|t| trim_xml(&t).to_owned()),
-            form.value.map(|v| trim_xml(&v).to_owned()),
-        ),
-        false => (None, None),
-    })
+    Ok(form.texts())
 }
 
 /// What a walk over a UserData subtree saw of the editor's form.
@@ -58,6 +49,17 @@ impl EditorForm {
     fn complete(&self) -> bool {
         !self.other && self.types == 1 && self.values == 1 && self.value_children == 1
     }
+
+    /// The type name and value text, trimmed, when the content has the editor's form.
+    fn texts(self) -> (Option<String>, Option<String>) {
+        match self.complete() {
+            true => (
+                self.type_name.map(|t| trim_xml(&t).to_owned()),
+                self.value.map(|v| trim_xml(&v).to_owned()),
+            ),
+            false => (None, None),
+        }
+    }
 }
 
 /// Where the walk is.
@@ -74,12 +76,9 @@ impl<'a> Parser<'a> {
     pub(super) fn user_data(&mut self, tag: &Tag<'a>) -> Parsed<u32> {
         let (raw, form) =
             if tag.empty { ("", EditorForm::default()) } else { self.walk_user_data(tag)? };
-        let complete = form.complete();
-        let mut text = |s: Option<String>| match (complete, s) {
-            (true, Some(s)) => self.scene.add_str(trim_xml(&s)),
-            _ => Str::NULL,
-        };
-        let (type_name, value) = (text(form.type_name), text(form.value));
+        let (type_name, value) = form.texts();
+        let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.scene.add_str(&s));
+        let (type_name, value) = (add(type_name), add(value));
         let raw = self.scene.add_str(raw);
         self.scene.user_data.push(UserData { raw, type_name, value });
         Ok((self.scene.user_data.len() - 1) as u32)
