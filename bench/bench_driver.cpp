@@ -1,0 +1,266 @@
+// The measurements bench/run makes, one mode per kind of measurement:
+//
+//   bench_driver time RUNS FILE... box2scene and the pugixml peer, interleaved, in RUNS
+//                                  rounds over every FILE: parsing it already in memory,
+//                                  loading it from its path; box2scene writing it back and
+//                                  building its b2World. Prints "FILE name value" lines,
+//                                  medians in seconds.
+//   bench_driver rss LOADER FILE   loads FILE from its path once (a fresh process per
+//                                  measurement) and prints the peak RSS in KiB before the
+//                                  load (the process itself) and after it.
+//   bench_driver once LOADER FILE  reads FILE into memory and loads it once, for callgrind;
+//                                  LOADER `read` only reads, the baseline to subtract.
+//
+// LOADER is box2scene or pugixml.
+#include <box2d/box2d.h>
+#include <box2scene.h>
+#include <box2scene/box2d.hpp>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "file_bytes.hpp"
+#include "pugi_loader.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+[[noreturn]] void die(const std::string& message) {
+    std::fprintf(stderr, "bench_driver: %s\n", message.c_str());
+    std::exit(1);
+}
+
+template <typename Work>
+double seconds(Work work) {
+    Clock::time_point start = Clock::now();
+    work();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+/// The whole file, or exit.
+std::unique_ptr<char[]> file_bytes(const char* path, size_t& size) {
+    std::unique_ptr<char[]> bytes = bench::read_file(path, size);
+    if (!bytes) {
+        die(std::string("cannot read ") + path);
+    }
+    return bytes;
+}
+
+/// A fresh writable copy: the peer parses in place, so every run needs its own.
+std::unique_ptr<char[]> copy_of(const char* bytes, size_t size) {
+    std::unique_ptr<char[]> copy(new char[size]);
+    std::memcpy(copy.get(), bytes, size);
+    return copy;
+}
+
+b2s_scene* box2scene_from_memory(const char* bytes, size_t size) {
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    if (b2s_load_memory(reinterpret_cast<const uint8_t*>(bytes), size, nullptr, &scene,
+                        &error) != B2S_CODE_OK) {
+        die(std::string("box2scene: ") + error.message);
+    }
+    return scene;
+}
+
+b2s_scene* box2scene_from_path(const char* path) {
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    if (b2s_load_file(path, nullptr, &scene, &error) != B2S_CODE_OK) {
+        die(std::string("box2scene: ") + error.message);
+    }
+    return scene;
+}
+
+void peer_from_memory(std::unique_ptr<char[]> bytes, size_t size, bench::PugiScene& scene) {
+    std::string error;
+    if (!bench::pugi_load(std::move(bytes), size, scene, error)) {
+        die("pugixml peer: " + error);
+    }
+}
+
+void peer_from_path(const char* path, bench::PugiScene& scene) {
+    std::string error;
+    if (!bench::pugi_load_file(path, scene, error)) {
+        die("pugixml peer: " + error);
+    }
+}
+
+/// What the timing mode collects, one sample per run.
+struct Samples {
+    std::vector<double> box2scene_parse, pugixml_parse, box2scene_path, pugixml_path;
+    std::vector<double> write, build;
+};
+
+/// One file under measurement.
+struct Subject {
+    const char* path;
+    size_t size = 0;
+    std::unique_ptr<char[]> bytes;
+    b2s_scene* loaded = nullptr; // what writing and building start from
+    Samples samples;
+};
+
+/// One run of every measurement on `s`. The loaders take turns going first, so that
+/// neither always meets the caches (and the other processes) the other left.
+void measure_once(Subject& s) {
+    Samples& samples = s.samples;
+    auto box2scene_parse = [&] {
+        b2s_scene* scene = nullptr;
+        samples.box2scene_parse.push_back(
+            seconds([&] { scene = box2scene_from_memory(s.bytes.get(), s.size); }));
+        b2s_scene_free(scene);
+    };
+    auto pugixml_parse = [&] {
+        std::unique_ptr<char[]> copy = copy_of(s.bytes.get(), s.size);
+        bench::PugiScene scene;
+        samples.pugixml_parse.push_back(
+            seconds([&] { peer_from_memory(std::move(copy), s.size, scene); }));
+    };
+    auto box2scene_path = [&] {
+        b2s_scene* scene = nullptr;
+        samples.box2scene_path.push_back(seconds([&] { scene = box2scene_from_path(s.path); }));
+        b2s_scene_free(scene);
+    };
+    auto pugixml_path = [&] {
+        bench::PugiScene scene;
+        samples.pugixml_path.push_back(seconds([&] { peer_from_path(s.path, scene); }));
+    };
+    bool box2scene_first = samples.write.size() % 2 == 0;
+    for (int turn = 0; turn < 2; ++turn) {
+        (turn == 0) == box2scene_first ? box2scene_parse() : pugixml_parse();
+    }
+    for (int turn = 0; turn < 2; ++turn) {
+        (turn == 0) == box2scene_first ? box2scene_path() : pugixml_path();
+    }
+    char* text = nullptr;
+    samples.write.push_back(seconds([&] {
+        if (b2s_write_memory(s.loaded, nullptr, &text, nullptr, nullptr) != B2S_CODE_OK) {
+            die("box2scene could not write the scene");
+        }
+    }));
+    b2s_text_free(text);
+    b2World world(box2scene::scene_gravity(s.loaded, b2Vec2(0, -10)));
+    samples.build.push_back(seconds([&] { box2scene::build_world(s.loaded, world); }));
+}
+
+/// Files of a few milliseconds are what other processes disturb most: each round measures
+/// those under 10 MB as often as makes 10 MB (at most 10 times).
+int repeats(size_t size) {
+    size_t times = (10000000 + size - 1) / std::max<size_t>(size, 1);
+    return static_cast<int>(std::clamp<size_t>(times, 1, 10));
+}
+
+void report(const Subject& s) {
+    const char* path = s.path;
+    char* text = nullptr;
+    size_t written = 0;
+    b2s_write_memory(s.loaded, nullptr, &text, &written, nullptr);
+    b2s_text_free(text);
+    b2World world(box2scene::scene_gravity(s.loaded, b2Vec2(0, -10)));
+    box2scene::Built built = box2scene::build_world(s.loaded, world);
+    const Samples& m = s.samples;
+    std::printf("%s bytes %zu\n", path, s.size);
+    std::printf("%s runs %zu\n", path, m.write.size());
+    std::printf("%s box2scene.parse %.9f\n", path, median(m.box2scene_parse));
+    std::printf("%s pugixml.parse %.9f\n", path, median(m.pugixml_parse));
+    std::printf("%s box2scene.path %.9f\n", path, median(m.box2scene_path));
+    std::printf("%s pugixml.path %.9f\n", path, median(m.pugixml_path));
+    std::printf("%s box2scene.write %.9f\n", path, median(m.write));
+    std::printf("%s box2scene.written %zu\n", path, written);
+    std::printf("%s box2scene.build %.9f\n", path, median(m.build));
+    std::printf("%s box2scene.build_reports %zu\n", path, built.reports.size());
+}
+
+int time_loaders(int runs, char** paths, int count) {
+    std::vector<Subject> subjects(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        Subject& s = subjects[static_cast<size_t>(i)];
+        s.path = paths[i];
+        s.bytes = file_bytes(s.path, s.size);
+        s.loaded = box2scene_from_memory(s.bytes.get(), s.size);
+    }
+    for (int round = 0; round < runs; ++round) {
+        for (Subject& s : subjects) {
+            for (int k = repeats(s.size); k > 0; --k) {
+                measure_once(s);
+            }
+        }
+    }
+    for (Subject& s : subjects) {
+        report(s);
+        b2s_scene_free(s.loaded);
+    }
+    return 0;
+}
+
+long peak_rss_kib() {
+    struct rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss; // KiB on Linux
+}
+
+int peak_rss(const std::string& loader, const char* path) {
+    long before = peak_rss_kib();
+    if (loader == "box2scene") {
+        b2s_scene* scene = box2scene_from_path(path);
+        std::printf("%ld %ld\n", before, peak_rss_kib());
+        b2s_scene_free(scene);
+    } else {
+        bench::PugiScene scene;
+        peer_from_path(path, scene);
+        std::printf("%ld %ld\n", before, peak_rss_kib());
+    }
+    return 0;
+}
+
+int load_once(const std::string& loader, const char* path) {
+    size_t size = 0;
+    std::unique_ptr<char[]> bytes = file_bytes(path, size);
+    if (loader == "box2scene") {
+        b2s_scene_free(box2scene_from_memory(bytes.get(), size));
+    } else if (loader == "pugixml") {
+        bench::PugiScene scene;
+        peer_from_memory(std::move(bytes), size, scene);
+    }
+    return 0;
+}
+
+bool is_loader(const std::string& name, bool or_read) {
+    return name == "box2scene" || name == "pugixml" || (or_read && name == "read");
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "time" && argc >= 4 && std::atoi(argv[2]) > 0) {
+        return time_loaders(std::atoi(argv[2]), argv + 3, argc - 3);
+    }
+    if (mode == "rss" && argc == 4 && is_loader(argv[2], false)) {
+        return peak_rss(argv[2], argv[3]);
+    }
+    if (mode == "once" && argc == 4 && is_loader(argv[2], true)) {
+        return load_once(argv[2], argv[3]);
+    }
+    std::fprintf(stderr,
+                 "usage: %s time RUNS FILE... | rss box2scene|pugixml FILE | "
+                 "once read|box2scene|pugixml FILE\n",
+                 argv[0]);
+    return 2;
+}

@@ -1,0 +1,244 @@
+// bench/checksum_test [FILE...]: box2scene and the pugixml peer load each FILE (from
+// bench/generate), and small generated scenes of many sizes and seeds, to the same counts
+// and the same checksum of every value; box2scene without a warning, since the files are
+// meant to load cleanly. And the peer refuses what box2scene refuses, for each check it
+// makes.
+#include <box2scene.h>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "pugi_loader.hpp"
+#include "scene_checksum.hpp"
+#include "scene_generator.hpp"
+
+namespace {
+
+void print_counts(const char* who, const b2s_scene_view& v) {
+    std::printf("  %-9s %u shapes, %u fixtures, %u bodies, %u joints, %u vertices, "
+                "%u fixture IDs\n",
+                who, v.shape_count, v.fixture_count, v.body_count, v.joint_count, v.vertex_count,
+                v.fixture_id_count);
+}
+
+void print_parts(const char* who, const bench::SceneChecksum& c) {
+    std::printf("  %-9s world %016" PRIx64 " shapes %016" PRIx64 " fixtures %016" PRIx64
+                " bodies %016" PRIx64 " joints %016" PRIx64 " vertices %016" PRIx64
+                " fixture IDs %016" PRIx64 "\n",
+                who, c.world, c.shapes, c.fixtures, c.bodies, c.joints, c.vertices,
+                c.fixture_ids);
+}
+
+/// Whether the two loads agree; says what differs when they do not.
+bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PugiScene& peer) {
+    const b2s_scene_view& view = *b2s_scene_get_view(scene);
+    if (view.diagnostic_count != 0) {
+        std::printf("FAIL %s: box2scene warns (%u warnings), first: %s\n", what.c_str(),
+                    view.diagnostic_count, view.diagnostics[0].message);
+        return false;
+    }
+    bench::SceneChecksum ours = bench::checksum(view), theirs = bench::checksum(peer.view());
+    if (!(ours == theirs)) {
+        std::printf("FAIL %s: the loads differ\n", what.c_str());
+        print_counts("box2scene", view);
+        print_counts("pugixml", peer.view());
+        print_parts("box2scene", ours);
+        print_parts("pugixml", theirs);
+        return false;
+    }
+    return true;
+}
+
+bool check_file(const char* path) {
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    if (b2s_load_file(path, nullptr, &scene, &error) != B2S_CODE_OK) {
+        std::printf("FAIL %s: box2scene: %u:%u: %s\n", path, error.line, error.column,
+                    error.message);
+        return false;
+    }
+    bench::PugiScene peer;
+    std::string why;
+    bool loaded = bench::pugi_load_file(path, peer, why);
+    bool same = loaded && same_scene(path, scene, peer);
+    if (!loaded) {
+        std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
+    } else if (same) {
+        const b2s_scene_view& v = *b2s_scene_get_view(scene);
+        std::printf("ok   %s: %u shapes, %u fixtures, %u bodies, %u joints; checksum %016" PRIx64
+                    "\n",
+                    path, v.shape_count, v.fixture_count, v.body_count, v.joint_count,
+                    bench::checksum(v).combined());
+    }
+    b2s_scene_free(scene);
+    return same;
+}
+
+b2s_code box2scene_load(const std::string& text, b2s_scene** scene, b2s_error& error) {
+    return b2s_load_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), nullptr,
+                           scene, &error);
+}
+
+bool peer_load(const std::string& text, bench::PugiScene& peer, std::string& why) {
+    std::unique_ptr<char[]> copy(new char[text.size()]);
+    std::memcpy(copy.get(), text.data(), text.size());
+    return bench::pugi_load(std::move(copy), text.size(), peer, why);
+}
+
+/// Whether both loaders load `text` alike.
+bool check_text(const std::string& what, const std::string& text) {
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    if (box2scene_load(text, &scene, error) != B2S_CODE_OK) {
+        std::printf("FAIL %s: box2scene: %u:%u: %s\n", what.c_str(), error.line, error.column,
+                    error.message);
+        return false;
+    }
+    bench::PugiScene peer;
+    std::string why;
+    bool loaded = peer_load(text, peer, why);
+    if (!loaded) {
+        std::printf("FAIL %s: pugixml peer: %s\n", what.c_str(), why.c_str());
+    }
+    bool same = loaded && same_scene(what, scene, peer);
+    b2s_scene_free(scene);
+    return same;
+}
+
+// A small scene both loaders take, for the refusals below to change one part of.
+const char* const kCircle =
+    "<Shape Type='Circle'><Radius>1</Radius><Position>0 0</Position></Shape>";
+const char* const kFixture = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
+const char* const kBodies =
+    "<Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body><Body Type='Static'/>";
+const char* const kJoint = "<Joint Type='Revolute'><BodyA>1</BodyA><BodyB>0</BodyB></Joint>";
+
+std::string scene(const std::string& shapes = kCircle, const std::string& fixtures = kFixture,
+                  const std::string& bodies = kBodies, const std::string& joints = kJoint) {
+    return "<World Version='2'><Shapes>" + shapes + "</Shapes><Fixtures>" + fixtures +
+           "</Fixtures><Bodies>" + bodies + "</Bodies><Joints>" + joints + "</Joints></World>";
+}
+
+std::string fixture_with(const std::string& element) {
+    return "<Fixture><Shape>0</Shape>" + element + "</Fixture>";
+}
+
+std::string joint(const char* type, const std::string& elements) {
+    return std::string("<Joint Type='") + type + "'><BodyA>1</BodyA><BodyB>0</BodyB>" +
+           elements + "</Joint>";
+}
+
+std::string polygon(const std::string& vertices) {
+    return "<Shape Type='Polygon'><Vertices>" + vertices + "</Vertices></Shape>";
+}
+
+struct Refusal {
+    const char* what;
+    std::string text;
+};
+
+/// Whether both loaders refuse `r.text`; says which one did not.
+bool both_refuse(const Refusal& r) {
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    bool box2scene_refused = box2scene_load(r.text, &scene, error) != B2S_CODE_OK;
+    b2s_scene_free(scene);
+    bench::PugiScene peer;
+    std::string why;
+    bool peer_refused = !peer_load(r.text, peer, why);
+    if (!box2scene_refused || !peer_refused) {
+        std::printf("FAIL %s: %s loads it\n", r.what, box2scene_refused ? "the peer" : "box2scene");
+    }
+    return box2scene_refused && peer_refused;
+}
+
+int check_refusals() {
+    std::string nine_vertices;
+    for (int k = 0; k < 9; ++k) {
+        double angle = 6.283185307179586 * k / 9;
+        nine_vertices += "<Vertex>" + std::to_string(std::cos(angle)) + " " +
+                         std::to_string(std::sin(angle)) + "</Vertex>";
+    }
+    const Refusal refusals[] = {
+        {"the base scene, made malformed", scene().substr(1)},
+        {"a DOCTYPE", "<!DOCTYPE World>" + scene()},
+        {"a second root", scene() + "<World Version='2'/>"},
+        {"an unsupported version", "<World Version='7'/>"},
+        {"a negative density", scene(kCircle, fixture_with("<Density>-1</Density>"))},
+        {"a decimal comma", scene(kCircle, fixture_with("<Friction>0,5</Friction>"))},
+        {"NaN", scene(kCircle, fixture_with("<Friction>NaN</Friction>"))},
+        {"a float beyond f32", scene(kCircle, fixture_with("<Restitution>1e39</Restitution>"))},
+        {"a boolean spelled yes", scene(kCircle, fixture_with("<IsSensor>yes</IsSensor>"))},
+        {"a 17-bit group index",
+         scene(kCircle, fixture_with("<FilterData><GroupIndex>40000</GroupIndex></FilterData>"))},
+        {"a negative bit mask",
+         scene(kCircle, fixture_with("<FilterData><MaskBits>-1</MaskBits></FilterData>"))},
+        {"a fixture without a shape", scene(kCircle, "<Fixture><Density>1</Density></Fixture>")},
+        {"a shape ID out of range", scene(kCircle, "<Fixture><Shape>5</Shape></Fixture>")},
+        {"a negative fixture ID",
+         scene(kCircle, kFixture, "<Body Type='Static'><Fixtures><ID>-1</ID></Fixtures></Body>")},
+        {"a fixture ID out of range",
+         scene(kCircle, kFixture, "<Body Type='Static'><Fixtures><ID>3</ID></Fixtures></Body>")},
+        {"an unknown body type", scene(kCircle, kFixture, "<Body Type='Floating'/>")},
+        {"a zero radius",
+         scene("<Shape Type='Circle'><Radius>0</Radius><Position>0 0</Position></Shape>")},
+        {"a circle without a position", scene("<Shape Type='Circle'><Radius>1</Radius></Shape>")},
+        {"a three-number vector",
+         scene("<Shape Type='Circle'><Radius>1</Radius><Position>1 2 3</Position></Shape>")},
+        {"nine vertices", scene(polygon(nine_vertices))},
+        {"a collinear polygon",
+         scene(polygon("<Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>2 0</Vertex>"))},
+        {"a joint on one body",
+         scene(kCircle, kFixture, kBodies,
+               "<Joint Type='Weld'><BodyA>0</BodyA><BodyB>0</BodyB></Joint>")},
+        {"a body ID out of range",
+         scene(kCircle, kFixture, kBodies,
+               "<Joint Type='Weld'><BodyA>0</BodyA><BodyB>9</BodyB></Joint>")},
+        {"a limit upside down",
+         scene(kCircle, kFixture, kBodies,
+               joint("Revolute", "<EnableLimit>true</EnableLimit><LowerAngle>1</LowerAngle>"
+                                 "<UpperAngle>0</UpperAngle>"))},
+        {"a zero axis", scene(kCircle, kFixture, kBodies,
+                              joint("Prismatic", "<LocalAxisA>0 0</LocalAxisA>"))},
+        {"a zero pulley ratio",
+         scene(kCircle, kFixture, kBodies, joint("Pulley", "<Ratio>0</Ratio>"))},
+        {"a gear coupling a weld",
+         scene(kCircle, kFixture, kBodies,
+               joint("Weld", "") + joint("Gear", "<JointA>0</JointA><JointB>0</JointB>"))},
+        {"a mouse joint", scene(kCircle, kFixture, kBodies, joint("Mouse", ""))},
+    };
+    int failures = check_text("the base scene of the refusals", scene()) ? 0 : 1;
+    for (const Refusal& r : refusals) {
+        failures += both_refuse(r) ? 0 : 1;
+    }
+    if (failures == 0) {
+        std::printf("ok   both refuse each of %zu broken scenes\n", std::size(refusals));
+    }
+    return failures;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    int failures = 0;
+    for (int i = 1; i < argc; ++i) {
+        failures += check_file(argv[i]) ? 0 : 1;
+    }
+    // Small scenes reach the corners: no joints, empty containers, a lone gear's fallback.
+    int generated = 0;
+    for (uint32_t bodies = 0; bodies <= 60; ++bodies) {
+        for (uint64_t seed = 1; seed <= 8; ++seed, ++generated) {
+            std::string what = std::to_string(bodies) + " bodies, seed " + std::to_string(seed);
+            failures += check_text(what, bench::generate_scene(bodies, seed)) ? 0 : 1;
+        }
+    }
+    std::printf("%s %d generated scenes of 0 to 60 bodies\n", failures == 0 ? "ok  " : "FAIL",
+                generated);
+    failures += check_refusals();
+    return failures == 0 ? 0 : 1;
+}
