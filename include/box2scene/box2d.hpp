@@ -20,8 +20,10 @@
  * aborts and throws nothing for bad data: what it cannot create it skips and reports.
  * Debian's Box2D keeps its assertions on, so the adapter checks what they check before
  * calling Box2D (bodies it follows, joint kinds, a negative damping, a MassData that
- * leaves no positive inertia about the centre of mass), whether or not the loader in use
- * already refuses it: a report is better than an abort.
+ * leaves no positive inertia about the centre of mass, a prismatic limit's order, a gear's
+ * bodies), whether or not the loader in use already refuses it: a report is better than an
+ * abort. Values past box2scene::working_range, where Box2D would compute inf or NaN, are
+ * reported and their objects not created.
  * Call it outside b2World::Step (Box2D refuses to add objects to a locked world).
  */
 #ifndef BOX2SCENE_BOX2D_HPP
@@ -30,6 +32,7 @@
 #include <box2d/box2d.h>
 #include <box2scene.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -41,6 +44,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace box2scene {
@@ -71,17 +75,93 @@ struct Built {
     std::vector<Report> reports;
 };
 
-/// The scene's gravity when the file gives one, else `fallback` (the format has no default
-/// gravity: the host decides). A NULL scene gives `fallback`.
+/// The scene's gravity when the file gives one within working_range::acceleration, else
+/// `fallback` (the format has no default gravity: the host decides; build_world reports a
+/// gravity beyond the range). A NULL scene gives `fallback`.
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
 
 /// Adds the scene's bodies, fixtures and joints to `world`. A NULL scene adds nothing.
 inline Built build_world(const b2s_scene* scene, b2World& world);
 
+/// The values build_world passes to Box2D 2.4. The format, and the loader, accept any
+/// finite float; Box2D does not: near FLT_MAX its solver computes inf and NaN, or trips an
+/// assertion (Debian's Box2D keeps them). An object with a value beyond these bounds is not
+/// created: build_world reports it (B2S_CODE_BEYOND_BOX2D_RANGE, naming the field and the
+/// value) and what depends on it (B2S_CODE_SKIPPED_DEPENDENT). Real levels stay orders of
+/// magnitude inside: Box2D is made for objects of 0.1 to 10 m moving at most 2 m a step.
+///
+/// Why they keep a world finite. Box2D clamps each step's motion to 2 m and pi/2 rad, so a
+/// position or an angle stops being finite only through a velocity that did, and a
+/// velocity only through a product overflowing FLT_MAX (3.4e38), or 0 times infinity,
+/// within one step. With every value at its bound:
+/// - speeds entering a step stay under 1e3 (given) + 17 (a step of gravity) + 3e8 (the
+///   kick w * r when a fixture moves a spinning body's centre of mass) m/s, and restitution
+///   multiplies them by at most 1e5;
+/// - a dynamic body has at most 1e10 kg and 1e12 kg m^2, so impulses m * v stay under 1e24
+///   and spring stiffnesses m * (2 pi * 1e3 Hz)^2 under 4e17 N/m (I w^2: 4e19 N m/rad);
+///   a stiffness under 1e-20 would make Box2D's 1 / (h * (damping + h * stiffness))
+///   infinite;
+/// - its inverse mass and inertia are at most 1e20, and at a joint's anchor, 1/m + r^2/I at
+///   most 1e12: the joint solvers' 2x2 and 3x3 matrices of such terms have cofactors under
+///   1e24 (times a velocity: 1e38) and determinants at least (1e-10)^2 * 1e-12 = 1e-32,
+///   normal floats; a 2x2 determinant cancels terms (r/g)^2 and a 3x3 one (r/g)^4 times
+///   larger than what is left (g = sqrt(I/m)), and lever_2x2 and lever_3x3 keep 4 of
+///   float's 24 bits for it;
+/// - an axis at least 1e-6 long is one b2Vec2::Normalize turns into a unit vector;
+/// - force and torque maxima at most 1e20 keep the friction and motor joints' squared
+///   impulse limits (h * F)^2 finite;
+/// - damping, friction and restitution only scale velocities; past 1e5 they change nothing
+///   (a damping of 1e5/s already stops a body within a step).
+/// What Box2D asserts about combinations of values build_world checks exactly, by Box2D's
+/// own arithmetic: the inertia left about the centre of mass after each fixture and after
+/// MassData, a prismatic limit's order, the bodies of a gear's joints; and it does not make
+/// a spring between two bodies without mass, whose upper length, FLT_MAX, Box2D multiplies
+/// by 0. Within the range, Box2D's solver can still diverge on an assembly it cannot hold
+/// (a light body carrying a heavy one far out, joints that start far from satisfied or
+/// fight a kinematic body): that is the level's, whatever its values.
+namespace working_range {
+/// m, each component: positions, vertices, radii, anchors, lengths, limits, offsets (their
+/// squares and products stay far below FLT_MAX).
+inline constexpr float length = 1e5f;
+/// rad: angles, angle limits and offsets (float still resolves 0.008 rad there).
+inline constexpr float angle = 1e5f;
+/// m/s and rad/s: velocities and motor speeds (Box2D moves a body at most 120 m/s and
+/// 94 rad/s at 60 Hz; a joint takes the rest of a faster start as one impulse).
+inline constexpr float speed = 1e3f;
+/// m/s^2: each component of the gravity, and of a body's (GravityScale times the world's).
+inline constexpr float acceleration = 1e3f;
+inline constexpr float gravity_scale = 1e3f; ///< a body's multiple of the gravity
+inline constexpr float damping = 1e5f;       ///< 1/s: linear and angular damping
+inline constexpr float density = 1e5f;       ///< kg/m^2
+inline constexpr float friction = 1e5f;      ///< friction coefficient and restitution
+inline constexpr float ratio = 1e5f;         ///< pulley and gear ratios
+inline constexpr float frequency = 1e3f;     ///< Hz, and damping ratios, of springs
+/// N/m or N m/rad: the softest spring, unless 0 (a rigid joint), as b2LinearStiffness and
+/// b2AngularStiffness make it from FrequencyHz and the bodies' masses.
+inline constexpr float min_stiffness = 1e-20f;
+inline constexpr float force = 1e20f;        ///< N and N m: force and torque maxima
+inline constexpr float min_axis = 1e-6f;     ///< m: the shortest joint axis
+inline constexpr float mass_min = 1e-20f;    ///< kg: a dynamic body's mass, unless 0
+inline constexpr float mass_max = 1e10f;
+inline constexpr float inertia_min = 1e-20f; ///< kg m^2, about the centre of mass, unless 0
+inline constexpr float inertia_max = 1e12f;
+/// 1/kg: 1/m + r^2/I of a body at a joint's anchor.
+inline constexpr float compliance = 1e12f;
+/// A joint's anchor's distance from its body's centre of mass, in radii of gyration
+/// sqrt(I/m), where Box2D inverts a 2x2 matrix for it (revolute, friction and motor joints:
+/// a 10 cm ball can hang 70 m out) or a 3x3 one (prismatic and weld joints).
+inline constexpr float lever_2x2 = 1e3f;
+inline constexpr float lever_3x3 = 30.0f;
+} // namespace working_range
+
 namespace detail {
 
 inline b2Vec2 to_b2(b2s_vec2 v) {
     return b2Vec2(v.x, v.y);
+}
+
+inline b2s_vec2 to_b2s(b2Vec2 v) {
+    return b2s_vec2{v.x, v.y};
 }
 
 inline std::string text_of(b2s_str s) {
@@ -94,12 +174,139 @@ inline b2Vec2 extrapolated(b2Vec2 end, b2Vec2 inner) {
     return end + (end - inner);
 }
 
+/// A float for a report: every digit that tells it from its neighbours.
+inline std::string decimal(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+    return text;
+}
+
+/// A fixture as build_world recreates it: what its body's mass is made of.
+struct FixtureMass {
+    float density;
+    b2MassData mass; ///< of the rebuilt shape at that density
+};
+
+/// What b2Body::ResetMassData leaves in a dynamic body holding the first `count` of
+/// `created` (its fixture list is newest first), operation for operation as Box2D 2.4.1
+/// does it so that the bits agree: mass, centre, and inertia about the centre in `I`.
+inline b2MassData reset_mass(const std::vector<FixtureMass>& created, size_t count,
+                             bool fixed_rotation) {
+    b2MassData body{0.0f, b2Vec2_zero, 0.0f};
+    for (size_t i = count; i-- > 0;) {
+        if (created[i].density == 0.0f) {
+            continue;
+        }
+        const b2MassData& m = created[i].mass;
+        body.mass += m.mass;
+        body.center += m.mass * m.center;
+        body.I += m.I;
+    }
+    if (body.mass > 0.0f) {
+        float inverse = 1.0f / body.mass;
+        body.center *= inverse;
+    }
+    if (body.I > 0.0f && !fixed_rotation) {
+        body.I -= body.mass * b2Dot(body.center, body.center);
+    } else {
+        body.I = 0.0f;
+    }
+    return body;
+}
+
+/// A bound for a report: as short as it reads.
+inline std::string rounded(float v) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
+    return text;
+}
+
+/// The first value of one object found beyond the working range: what its report says.
+class RangeCheck {
+public:
+    bool passed() const { return problem_.empty(); }
+    const std::string& problem() const { return problem_; }
+
+    void magnitude(const std::string& field, float value, float bound, const char* unit) {
+        if (passed() && !(std::fabs(value) <= bound)) {
+            beyond(field + " " + decimal(value), "within +-" + rounded(bound) + " " + unit);
+        }
+    }
+    void vector(const std::string& field, b2s_vec2 v, float bound, const char* unit) {
+        if (passed() && !(std::fabs(v.x) <= bound && std::fabs(v.y) <= bound)) {
+            beyond(field + " (" + decimal(v.x) + ", " + decimal(v.y) + ")",
+                   "each component within +-" + rounded(bound) + " " + unit);
+        }
+    }
+    void within(const std::string& field, float value, float low, float high,
+                const char* unit) {
+        if (passed() && !(low <= value && value <= high)) {
+            beyond(field + " " + decimal(value),
+                   "within [" + rounded(low) + ", " + rounded(high) + "] " + unit);
+        }
+    }
+    void at_least(const std::string& field, float value, float bound, const char* unit) {
+        if (passed() && !(value >= bound)) {
+            beyond(field + " " + decimal(value), "at least " + rounded(bound) + " " + unit);
+        }
+    }
+    /// 0, or within [low, high]: a derived quantity such as a body's mass.
+    void zero_or_within(const std::string& field, float value, float low, float high,
+                        const char* unit) {
+        if (passed() && value != 0.0f && !(low <= value && value <= high)) {
+            beyond(field + " " + decimal(value) + " " + unit,
+                   "0 or within [" + rounded(low) + ", " + rounded(high) + "] " + unit);
+        }
+    }
+    /// What Box2D 2.4 asserts against, whatever the bounds.
+    void fail(const std::string& what) {
+        if (passed()) {
+            problem_ = what;
+        }
+    }
+
+private:
+    void beyond(const std::string& value, const std::string& range) {
+        problem_ = value + " lies beyond Box2D 2.4's working range (" + range + ")";
+    }
+
+    std::string problem_;
+};
+
+inline RangeCheck gravity_check(b2s_vec2 gravity) {
+    RangeCheck check;
+    check.vector("Gravity", gravity, working_range::acceleration, "m/s^2");
+    return check;
+}
+
+/// Whether b2Body::ResetMassData, for the first `count` of `created`, moves an inertia to
+/// the centre of mass, and then asserts that some is left: the summed inertia is positive.
+inline bool inertia_centred(const std::vector<FixtureMass>& created, size_t count,
+                            bool fixed_rotation) {
+    float sum = 0.0f;
+    for (size_t i = count; i-- > 0;) {
+        if (created[i].density != 0.0f) {
+            sum += created[i].mass.I;
+        }
+    }
+    return sum > 0.0f && !fixed_rotation;
+}
+
+/// What b2Body::SetMassData(&m) leaves in a dynamic body (a zero mass becomes 1), with the
+/// inertia about the centre of mass.
+inline b2MassData set_mass(const b2MassData& m, bool fixed_rotation) {
+    b2MassData body{m.mass > 0.0f ? m.mass : 1.0f, m.center, 0.0f};
+    if (m.I > 0.0f && !fixed_rotation) {
+        body.I = m.I - body.mass * b2Dot(m.center, m.center);
+    }
+    return body;
+}
+
 /// Whether b2Body::SetMassData(&m) would derive a positive inertia about the centre of mass
 /// where it uses one: Box2D asserts that it does.
 inline bool central_inertia_positive(const b2MassData& m, bool fixed_rotation) {
-    float mass = m.mass > 0.0f ? m.mass : 1.0f; // SetMassData replaces a zero mass by 1
     bool inertia_used = m.I > 0.0f && !fixed_rotation;
-    return !inertia_used || m.I - mass * b2Dot(m.center, m.center) > 0.0f;
+    return !inertia_used || set_mass(m, fixed_rotation).I > 0.0f;
 }
 
 /// One build: the scene's view, the world, and what was made so far.
@@ -108,8 +315,10 @@ public:
     WorldBuilder(const struct b2s_scene_view& view, b2World& world) : view_(view), world_(world) {}
 
     Built run() {
+        check_gravity();
         make_shapes();
         built_.bodies.assign(view_.body_count, nullptr);
+        masses_.assign(view_.body_count, b2MassData{0.0f, b2Vec2_zero, 0.0f});
         built_.fixtures.assign(view_.fixture_id_count, nullptr);
         for (uint32_t i = 0; i < view_.body_count; ++i) {
             make_body(i);
@@ -136,6 +345,26 @@ private:
         built_.reports.push_back(Report{code, object, index, text_of(name), std::move(message)});
     }
 
+    /// Reports an object found beyond the working range; false when it is.
+    bool within_range(const RangeCheck& check, const char* object, uint32_t index,
+                      b2s_str name, const std::string& owner = std::string()) {
+        if (check.passed()) {
+            return true;
+        }
+        report(B2S_CODE_BEYOND_BOX2D_RANGE, object, index, name,
+               owner + check.problem() + "; " + object + " not created");
+        return false;
+    }
+
+    /// scene_gravity gives the host's fallback for a gravity beyond the range.
+    void check_gravity() {
+        RangeCheck check = gravity_check(view_.gravity);
+        if (view_.gravity_given && !check.passed()) {
+            report(B2S_CODE_BEYOND_BOX2D_RANGE, "world", 0, nullptr,
+                   check.problem() + "; scene_gravity gives the host's fallback instead");
+        }
+    }
+
     // ---- shapes: made once each, then cloned by Box2D into every fixture that uses them
 
     void make_shapes() {
@@ -158,6 +387,9 @@ private:
                    std::to_string(points.size()) + " vertices do not make a Box2D shape");
             return nullptr;
         }
+        if (!within_range(shape_check(shape, points), "shape", index, shape.name)) {
+            return nullptr;
+        }
         switch (shape.kind) {
         case B2S_SHAPE_KIND_CIRCLE: return make_circle(shape);
         case B2S_SHAPE_KIND_POLYGON: return make_polygon(shape, points);
@@ -178,6 +410,34 @@ private:
             points.push_back(to_b2(view_.vertices[shape.vertices.first + i]));
         }
         return true;
+    }
+
+    /// The points Box2D gets: every vertex, a circle's centre and radius, the centroid and
+    /// the ghost vertices where they are used.
+    static RangeCheck shape_check(const b2s_shape& shape, const std::vector<b2Vec2>& points) {
+        using working_range::length;
+        RangeCheck check;
+        bool edge = shape.kind == B2S_SHAPE_KIND_EDGE;
+        if (shape.kind == B2S_SHAPE_KIND_CIRCLE) {
+            check.magnitude("Radius", shape.radius, length, "m");
+            check.vector("Position", shape.position, length, "m");
+        }
+        for (size_t i = 0; i < points.size(); ++i) {
+            std::string field = edge ? "Vertex" + std::to_string(i + 1)
+                                     : "Vertex " + std::to_string(i);
+            check.vector(field, b2s_vec2{points[i].x, points[i].y}, length, "m");
+        }
+        if (shape.kind == B2S_SHAPE_KIND_POLYGON && shape.centroid_given) {
+            check.vector("Centroid", shape.centroid, length, "m");
+        }
+        bool ghosts = edge || (shape.kind == B2S_SHAPE_KIND_CHAIN && !shape.is_loop);
+        if (ghosts && shape.has_prev_vertex) {
+            check.vector(edge ? "Vertex0" : "PrevVertex", shape.prev_vertex, length, "m");
+        }
+        if (ghosts && shape.has_next_vertex) {
+            check.vector(edge ? "Vertex3" : "NextVertex", shape.next_vertex, length, "m");
+        }
+        return check;
     }
 
     static bool vertex_count_fits(const b2s_shape& shape, size_t count) {
@@ -248,6 +508,15 @@ private:
         if (body.kind > B2S_BODY_KIND_DYNAMIC) {
             report(B2S_CODE_UNKNOWN_TYPE, "body", index, body.name,
                    "unknown body kind " + std::to_string(body.kind) + "; body skipped");
+            skip_fixtures_of(index, body);
+            return;
+        }
+        RangeCheck check = body_check(body);
+        if (body.kind == B2S_BODY_KIND_DYNAMIC && check.passed()) {
+            masses_[index] = predicted_mass(body, check);
+        }
+        if (!within_range(check, "body", index, body.name)) {
+            skip_fixtures_of(index, body);
             return;
         }
         b2BodyDef def = body_def(index, body);
@@ -257,13 +526,104 @@ private:
         apply_mass_data(index, body, created);
     }
 
+    RangeCheck body_check(const b2s_body& body) const {
+        namespace range = working_range;
+        RangeCheck check;
+        check.vector("Position", body.position, range::length, "m");
+        check.magnitude("Angle", body.angle, range::angle, "rad");
+        check.vector("LinearVelocity", body.linear_velocity, range::speed, "m/s");
+        check.magnitude("AngularVelocity", body.angular_velocity, range::speed, "rad/s");
+        check.magnitude("LinearDamping", body.linear_damping, range::damping, "1/s");
+        check.magnitude("AngularDamping", body.angular_damping, range::damping, "1/s");
+        check.magnitude("GravityScale", body.gravity_scale, range::gravity_scale, "");
+        if (body.kind == B2S_BODY_KIND_DYNAMIC) {
+            b2Vec2 gravity = body.gravity_scale * world_.GetGravity();
+            check.vector("GravityScale times the world's gravity", to_b2s(gravity),
+                         range::acceleration, "m/s^2");
+        }
+        if (body.mass_data.center_given) {
+            check.vector("MassData Center", body.mass_data.center, range::length, "m");
+        }
+        return check;
+    }
+
+    /// The fixtures of a body that was not created: they depend on it.
+    void skip_fixtures_of(uint32_t body_index, const b2s_body& body) {
+        uint64_t end = uint64_t{body.fixtures.first} + body.fixtures.count;
+        for (uint64_t slot = body.fixtures.first; slot < end && slot < view_.fixture_id_count;
+             ++slot) {
+            uint32_t index = view_.fixture_ids[slot];
+            report(B2S_CODE_SKIPPED_DEPENDENT, "fixture", index,
+                   index < view_.fixture_count ? view_.fixtures[index].name : nullptr,
+                   "fixture " + std::to_string(index) + " of body " +
+                       std::to_string(body_index) + ": the body was not created; fixture skipped");
+        }
+    }
+
+    /// The mass Box2D 2.4 will give a dynamic body, as b2Body computes it: after each of
+    /// its fixtures (ResetMassData, which asserts that an inertia it centres stays
+    /// positive), then MassData. `check` fails when Box2D would assert or the result lies
+    /// beyond the working range.
+    b2MassData predicted_mass(const b2s_body& body, RangeCheck& check) const {
+        std::vector<FixtureMass> created;
+        b2MassData mass{0.0f, b2Vec2_zero, 0.0f};
+        uint64_t end = uint64_t{body.fixtures.first} + body.fixtures.count;
+        for (uint64_t slot = body.fixtures.first; slot < end && slot < view_.fixture_id_count;
+             ++slot) {
+            uint32_t index = view_.fixture_ids[slot];
+            if (!fixture_creatable(index)) {
+                continue;
+            }
+            const b2s_fixture& fixture = view_.fixtures[index];
+            created.push_back(FixtureMass{fixture.density, {}});
+            shapes_[fixture.shape]->ComputeMass(&created.back().mass, fixture.density);
+            if (fixture.density > 0.0f) { // only then does CreateFixture reset the mass
+                mass = reset_mass(created, created.size(), body.fixed_rotation);
+                std::string with = "with fixture " + std::to_string(index) + " ";
+                if (inertia_centred(created, created.size(), body.fixed_rotation) &&
+                    !(mass.I > 0.0f)) {
+                    check.fail(with + "it has no positive inertia about its centre of mass in "
+                                      "Box2D 2.4's float arithmetic (which asserts)");
+                }
+                // Each new centre of mass moves the body's velocity (w x its shift): a centre
+                // made NaN by a subnormal mass (0 * infinity) would stay in it.
+                check.vector(with + "its centre of mass", to_b2s(mass.center),
+                             working_range::length, "m");
+            }
+        }
+        mass = with_mass_data(mass, body);
+        check.zero_or_within("its mass", mass.mass, working_range::mass_min,
+                             working_range::mass_max, "kg");
+        check.vector("its centre of mass", to_b2s(mass.center), working_range::length, "m");
+        check.zero_or_within("its inertia about the centre of mass", mass.I,
+                             working_range::inertia_min, working_range::inertia_max, "kg m^2");
+        return mass;
+    }
+
+    /// `mass` (from the fixtures, inertia about the centre) as apply_mass_data leaves it.
+    static b2MassData with_mass_data(const b2MassData& mass, const b2s_body& body) {
+        if (!mass_data_given(body.mass_data)) {
+            return mass;
+        }
+        // b2Body::GetMassData gives the inertia about the body origin
+        float inertia = mass.I + mass.mass * b2Dot(mass.center, mass.center);
+        b2MassData data = overwritten({mass.mass, mass.center, inertia}, body.mass_data);
+        return central_inertia_positive(data, body.fixed_rotation)
+                   ? set_mass(data, body.fixed_rotation)
+                   : mass;
+    }
+
     b2BodyDef body_def(uint32_t index, const b2s_body& body) {
         b2BodyDef def;
         def.type = static_cast<b2BodyType>(body.kind);
         def.position = to_b2(body.position);
         def.angle = body.angle;
-        def.linearVelocity = to_b2(body.linear_velocity);
-        def.angularVelocity = body.angular_velocity;
+        // Box2D 2.4 keeps the velocity a static body is created with and moves the body
+        // by it whenever a joint puts it in an island; static bodies never move.
+        if (body.kind != B2S_BODY_KIND_STATIC) {
+            def.linearVelocity = to_b2(body.linear_velocity);
+            def.angularVelocity = body.angular_velocity;
+        }
         def.linearDamping = damping(index, body, body.linear_damping, "LinearDamping");
         def.angularDamping = damping(index, body, body.angular_damping, "AngularDamping");
         def.allowSleep = body.allow_sleep;
@@ -298,6 +658,24 @@ private:
         }
     }
 
+    bool shape_created(const b2s_fixture& fixture) const {
+        return fixture.shape < shapes_.size() && shapes_[fixture.shape] != nullptr;
+    }
+
+    static RangeCheck fixture_check(const b2s_fixture& fixture) {
+        RangeCheck check;
+        check.magnitude("Density", fixture.density, working_range::density, "kg/m^2");
+        check.magnitude("Friction", fixture.friction, working_range::friction, "");
+        check.magnitude("Restitution", fixture.restitution, working_range::friction, "");
+        return check;
+    }
+
+    /// Whether make_fixture will create fixture `index`.
+    bool fixture_creatable(uint32_t index) const {
+        return index < view_.fixture_count && shape_created(view_.fixtures[index]) &&
+               fixture_check(view_.fixtures[index]).passed();
+    }
+
     b2Fixture* make_fixture(uint32_t body_index, uint32_t index, b2Body* body) {
         std::string owner = "fixture " + std::to_string(index) + " of body " +
                             std::to_string(body_index);
@@ -307,10 +685,14 @@ private:
             return nullptr;
         }
         const b2s_fixture& fixture = view_.fixtures[index];
-        if (fixture.shape >= shapes_.size() || shapes_[fixture.shape] == nullptr) {
+        if (!shape_created(fixture)) {
             report(B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, fixture.name,
                    owner + " names shape " + std::to_string(fixture.shape) +
                        ", which was not created; fixture skipped");
+            return nullptr;
+        }
+        if (!within_range(fixture_check(fixture), "fixture", index, fixture.name,
+                          owner + ": ")) {
             return nullptr;
         }
         b2FixtureDef def;
@@ -327,12 +709,28 @@ private:
 
     /// A datum the file leaves out keeps the value Box2D computed from the fixtures.
     void apply_mass_data(uint32_t index, const b2s_body& body, b2Body* created) {
-        const b2s_mass_data& given = body.mass_data;
-        if (!given.mass_given && !given.center_given && !given.inertia_given) {
+        if (!mass_data_given(body.mass_data)) {
             return;
         }
         b2MassData mass;
         created->GetMassData(&mass);
+        mass = overwritten(mass, body.mass_data);
+        if (!central_inertia_positive(mass, body.fixed_rotation)) {
+            report(B2S_CODE_INCONSISTENT_MASS_DATA, "body", index, body.name,
+                   "its MassData leaves no positive inertia about the centre of mass "
+                   "(Inertia < Mass * |Center|^2); the mass computed from the fixtures was kept");
+            return;
+        }
+        created->SetMassData(&mass);
+    }
+
+    static bool mass_data_given(const b2s_mass_data& given) {
+        return given.mass_given || given.center_given || given.inertia_given;
+    }
+
+    /// `mass` (as b2Body::GetMassData gives it: inertia about the body origin) with what
+    /// the body's MassData gives written over it.
+    static b2MassData overwritten(b2MassData mass, const b2s_mass_data& given) {
         if (given.mass_given) {
             mass.mass = given.mass;
         }
@@ -342,13 +740,7 @@ private:
         if (given.inertia_given) {
             mass.I = given.inertia;
         }
-        if (!central_inertia_positive(mass, body.fixed_rotation)) {
-            report(B2S_CODE_INCONSISTENT_MASS_DATA, "body", index, body.name,
-                   "its MassData leaves no positive inertia about the centre of mass "
-                   "(Inertia < Mass * |Center|^2); the mass computed from the fixtures was kept");
-            return;
-        }
-        created->SetMassData(&mass);
+        return mass;
     }
 
     // ---- joints
@@ -386,6 +778,12 @@ private:
 
     void make_joint(uint32_t index) {
         const b2s_joint& joint = view_.joints[index];
+        // A joint on a body that was not created is reported as its dependent by connect.
+        bool bodies_created = created_body(joint.body_a) != nullptr &&
+                              created_body(joint.body_b) != nullptr;
+        if (bodies_created && !within_range(joint_check(joint), "joint", index, joint.name)) {
+            return;
+        }
         switch (joint.kind) {
         case B2S_JOINT_KIND_REVOLUTE: return make_revolute(index, joint);
         case B2S_JOINT_KIND_PRISMATIC: return make_prismatic(index, joint);
@@ -403,6 +801,175 @@ private:
                                : "unknown joint kind " + std::to_string(joint.kind);
         report(B2S_CODE_SKIPPED_JOINT, "joint", index, joint.name,
                what + " has no Box2D 2.4 equivalent; joint skipped");
+    }
+
+    /// The fields Box2D gets of the joint's kind, then how hard its bodies are to move at
+    /// its anchors.
+    RangeCheck joint_check(const b2s_joint& joint) const {
+        namespace range = working_range;
+        RangeCheck check;
+        bool axis = false, spring = false, forces = false;
+        b2s_vec2 anchor_a = joint.local_anchor_a, anchor_b = joint.local_anchor_b;
+        switch (joint.kind) {
+        case B2S_JOINT_KIND_REVOLUTE:
+            check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
+            check.magnitude("LowerAngle", joint.lower_limit, range::angle, "rad");
+            check.magnitude("UpperAngle", joint.upper_limit, range::angle, "rad");
+            check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "rad/s");
+            check.magnitude("MaxMotorTorque", joint.max_motor_torque, range::force, "N m");
+            break;
+        case B2S_JOINT_KIND_PRISMATIC:
+            check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
+            check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "m/s");
+            check.magnitude("MaxMotorForce", joint.max_motor_force, range::force, "N");
+            [[fallthrough]];
+        case B2S_JOINT_KIND_LINE: // its motor stays off
+            axis = true;
+            check.magnitude("LowerTranslation", joint.lower_limit, range::length, "m");
+            check.magnitude("UpperTranslation", joint.upper_limit, range::length, "m");
+            break;
+        case B2S_JOINT_KIND_DISTANCE:
+            spring = true;
+            check.magnitude("Length", joint.length, range::length, "m");
+            if (joint.frequency_hz > 0.0f && massless(joint.body_a) && massless(joint.body_b)) {
+                // Its upper length, FLT_MAX, gives Box2D's solver an infinite bias that
+                // only a body with mass multiplies into something other than NaN.
+                check.fail("a spring (FrequencyHz > 0) between two bodies without mass, for "
+                           "which Box2D 2.4's distance joint computes 0 * infinity = NaN");
+            }
+            break;
+        case B2S_JOINT_KIND_ROPE:
+            check.magnitude("MaxLength", joint.max_length, range::length, "m");
+            break;
+        case B2S_JOINT_KIND_PULLEY:
+            check.vector("GroundAnchorA", joint.ground_anchor_a, range::length, "m");
+            check.vector("GroundAnchorB", joint.ground_anchor_b, range::length, "m");
+            check.magnitude("LengthA", joint.length_a, range::length, "m");
+            check.magnitude("LengthB", joint.length_b, range::length, "m");
+            check.magnitude("Ratio", joint.ratio, range::ratio, "");
+            break;
+        case B2S_JOINT_KIND_WHEEL:
+            axis = spring = true;
+            check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "rad/s");
+            check.magnitude("MaxMotorTorque", joint.max_motor_torque, range::force, "N m");
+            break;
+        case B2S_JOINT_KIND_WELD:
+            spring = true;
+            check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
+            break;
+        case B2S_JOINT_KIND_FRICTION: forces = true; break;
+        case B2S_JOINT_KIND_MOTOR:
+            forces = true;
+            anchor_a = joint.linear_offset; // body B's origin, held there in A's frame
+            anchor_b = b2s_vec2{0.0f, 0.0f};
+            check.vector("LinearOffset", joint.linear_offset, range::length, "m");
+            check.magnitude("AngularOffset", joint.angular_offset, range::angle, "rad");
+            check.within("CorrectionFactor", joint.correction_factor, 0.0f, 1.0f, "");
+            break;
+        default: return check; // not created: reported by make_joint
+        }
+        if (joint.kind != B2S_JOINT_KIND_MOTOR) {
+            check.vector("LocalAnchorA", joint.local_anchor_a, range::length, "m");
+            check.vector("LocalAnchorB", joint.local_anchor_b, range::length, "m");
+        }
+        if (axis) {
+            check.vector("LocalAxisA", joint.local_axis_a, range::length, "m");
+            check.at_least("The length of LocalAxisA",
+                           b2Vec2(joint.local_axis_a.x, joint.local_axis_a.y).Length(),
+                           range::min_axis, "m");
+        }
+        if (spring) {
+            check.magnitude("FrequencyHz", joint.frequency_hz, range::frequency, "Hz");
+            check.magnitude("DampingRatio", joint.damping_ratio, range::frequency, "");
+            check_stiffness(joint, check);
+        }
+        if (forces) {
+            check.magnitude("MaxForce", joint.max_force, range::force, "N");
+            check.magnitude("MaxTorque", joint.max_torque, range::force, "N m");
+        }
+        if (check.passed()) {
+            check_anchors(joint, anchor_a, anchor_b, check);
+        }
+        return check;
+    }
+
+    bool massless(uint32_t body) const { return masses_[body].mass == 0.0f; }
+
+    /// Box2D divides by h * (damping + h * stiffness): a spring whose stiffness underflows,
+    /// from a tiny FrequencyHz or mass, makes that infinite. The stiffness is computed as
+    /// make_distance, make_wheel and make_weld compute it.
+    void check_stiffness(const b2s_joint& joint, RangeCheck& check) const {
+        if (!check.passed() || !(joint.frequency_hz > 0.0f)) {
+            return;
+        }
+        const b2Body* a = built_.bodies[joint.body_a];
+        const b2Body* b = built_.bodies[joint.body_b];
+        float stiffness = 0.0f, damping = 0.0f;
+        bool angular = joint.kind == B2S_JOINT_KIND_WELD;
+        (angular ? b2AngularStiffness : b2LinearStiffness)(stiffness, damping, joint.frequency_hz,
+                                                           joint.damping_ratio, a, b);
+        if (stiffness != 0.0f && !(stiffness >= working_range::min_stiffness)) {
+            check.fail("FrequencyHz " + decimal(joint.frequency_hz) + " gives a stiffness of " +
+                       decimal(stiffness) + (angular ? " N m/rad" : " N/m") +
+                       " with these bodies, beyond Box2D 2.4's working range (0 or at least " +
+                       rounded(working_range::min_stiffness) + ")");
+        }
+    }
+
+    /// Box2D's joint solvers work with 1/m + r^2/I of each body at the joint's anchor, r
+    /// from the body's centre of mass: past working_range::compliance its products
+    /// overflow. Revolute, friction and motor joints invert 2x2 matrices of such terms,
+    /// prismatic and weld joints 3x3 ones, whose determinants cancel terms (r/g)^2 and
+    /// (r/g)^4 times larger than what is left (g = sqrt(I/m), the radius of gyration): past
+    /// working_range::lever_2x2 and lever_3x3, float's 24 bits no longer hold what is left
+    /// (at 30, a 3x3 determinant is already 3% off; at 100, its sign is noise) and the
+    /// inverse explodes. A prismatic joint's lever on body A reaches body B's anchor.
+    void check_anchors(const b2s_joint& joint, b2s_vec2 anchor_a, b2s_vec2 anchor_b,
+                       RangeCheck& check) const {
+        b2Vec2 a = to_b2(anchor_a), b = to_b2(anchor_b);
+        float lever = 0.0f; // none: Box2D solves the joint's rows one by one
+        switch (joint.kind) {
+        case B2S_JOINT_KIND_REVOLUTE:
+        case B2S_JOINT_KIND_FRICTION:
+        case B2S_JOINT_KIND_MOTOR: lever = working_range::lever_2x2; break;
+        case B2S_JOINT_KIND_PRISMATIC:
+        case B2S_JOINT_KIND_WELD: lever = working_range::lever_3x3; break;
+        default: break;
+        }
+        const b2MassData& mass_a = masses_[joint.body_a];
+        float lever_a = b2Distance(a, mass_a.center);
+        if (joint.kind == B2S_JOINT_KIND_PRISMATIC) {
+            const b2Body* body_a = built_.bodies[joint.body_a];
+            b2Vec2 b_on_a = body_a->GetLocalPoint(built_.bodies[joint.body_b]->GetWorldPoint(b));
+            lever_a = std::max(lever_a, b2Distance(b_on_a, mass_a.center));
+        }
+        const char* field_a = joint.kind == B2S_JOINT_KIND_MOTOR ? "LinearOffset" : "LocalAnchorA";
+        check_anchor(field_a, joint.body_a, lever_a, lever, check);
+        check_anchor("LocalAnchorB", joint.body_b,
+                     b2Distance(b, masses_[joint.body_b].center), lever, check);
+    }
+
+    void check_anchor(const char* field, uint32_t body, float r, float lever,
+                      RangeCheck& check) const {
+        const b2MassData& mass = masses_[body];
+        if (mass.mass == 0.0f) { // it does not move
+            return;
+        }
+        float compliance = 1.0f / mass.mass + (mass.I > 0.0f ? r * r / mass.I : 0.0f);
+        std::string where = std::string(field) + ": the joint acts " + decimal(r) +
+                            " m from the centre of mass of body " + std::to_string(body) +
+                            " (mass " + decimal(mass.mass) + " kg, inertia " +
+                            decimal(mass.I) + " kg m^2), ";
+        if (!(compliance <= working_range::compliance)) {
+            check.fail(where + "where 1/m + r^2/I = " + rounded(compliance) +
+                       " 1/kg lies beyond Box2D 2.4's working range (at most " +
+                       rounded(working_range::compliance) + " 1/kg)");
+        } else if (lever > 0.0f && mass.I > 0.0f &&
+                   !(r <= lever * std::sqrt(mass.I / mass.mass))) {
+            check.fail(where + rounded(r / std::sqrt(mass.I / mass.mass)) +
+                       " radii of gyration out, beyond Box2D 2.4's working range for this "
+                       "joint (at most " + rounded(lever) + ")");
+        }
     }
 
     void make_revolute(uint32_t index, const b2s_joint& joint) {
@@ -434,6 +1001,15 @@ private:
         def.enableLimit = joint.enable_limit;
         def.lowerTranslation = joint.lower_limit;
         def.upperTranslation = joint.upper_limit;
+        if (def.lowerTranslation > def.upperTranslation) {
+            // Only a disabled limit gets here (the loader refuses an enabled one), and Box2D
+            // 2.4's prismatic joint asserts against it all the same.
+            std::swap(def.lowerTranslation, def.upperTranslation);
+            report(B2S_CODE_BAD_LIMIT, "joint", index, joint.name,
+                   "its disabled limit has LowerTranslation " + decimal(joint.lower_limit) +
+                       " above UpperTranslation " + decimal(joint.upper_limit) +
+                       ", which Box2D 2.4 asserts against; they were passed swapped");
+        }
         def.enableMotor = joint.enable_motor;
         def.maxMotorForce = joint.max_motor_force;
         def.motorSpeed = joint.motor_speed;
@@ -585,6 +1161,11 @@ private:
         if (def.joint1 == nullptr || def.joint2 == nullptr || !connect(index, joint, def)) {
             return;
         }
+        RangeCheck check;
+        check.magnitude("Ratio", joint.ratio, working_range::ratio, "");
+        if (!within_range(check, "joint", index, joint.name)) {
+            return;
+        }
         def.ratio = joint.ratio;
         create(index, def);
     }
@@ -605,12 +1186,20 @@ private:
                        ", which is not revolute or prismatic; gear skipped");
             return nullptr;
         }
+        if (coupled->GetBodyB()->GetType() != b2_dynamicBody) {
+            report(B2S_CODE_BAD_GEAR_JOINT, "joint", index, gear.name,
+                   "the gear couples joint " + std::to_string(input) +
+                       ", whose body B is not dynamic, which Box2D 2.4 asserts against; "
+                       "gear skipped");
+            return nullptr;
+        }
         return coupled;
     }
 
     const struct b2s_scene_view& view_;
     b2World& world_;
     std::vector<std::unique_ptr<b2Shape>> shapes_; // indexed like the scene's shapes
+    std::vector<b2MassData> masses_; // each dynamic body's, I about its centre of mass
     Built built_;
 };
 
@@ -618,7 +1207,8 @@ private:
 
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-    if (view == nullptr || !view->gravity_given) {
+    if (view == nullptr || !view->gravity_given ||
+        !detail::gravity_check(view->gravity).passed()) {
         return fallback;
     }
     return detail::to_b2(view->gravity);
@@ -690,17 +1280,6 @@ namespace detail {
 template <class T>
 bool same_bits(const T& a, const T& b) {
     return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-
-inline b2s_vec2 to_b2s(b2Vec2 v) {
-    return b2s_vec2{v.x, v.y};
-}
-
-/// A float for a report: every digit that tells it from its neighbours.
-inline std::string decimal(float v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
-    return text;
 }
 
 /// `x` moved by `steps` representable floats (negative: down).
@@ -822,39 +1401,6 @@ inline bool is_loop(const b2ChainShape& chain) {
     int32 n = chain.m_count;
     return n >= 4 && same_bits(v[n - 1], v[0]) && same_bits(chain.m_prevVertex, v[n - 2]) &&
            same_bits(chain.m_nextVertex, v[1]);
-}
-
-/// A fixture as build_world recreates it: what its body's mass is made of.
-struct FixtureMass {
-    float density;
-    b2MassData mass; ///< of the rebuilt shape at that density
-};
-
-/// What b2Body::ResetMassData leaves in a dynamic body holding the first `count` of
-/// `created` (its fixture list is newest first), operation for operation as Box2D 2.4.1
-/// does it so that the bits agree: mass, centre, and inertia about the centre in `I`.
-inline b2MassData reset_mass(const std::vector<FixtureMass>& created, size_t count,
-                             bool fixed_rotation) {
-    b2MassData body{0.0f, b2Vec2_zero, 0.0f};
-    for (size_t i = count; i-- > 0;) {
-        if (created[i].density == 0.0f) {
-            continue;
-        }
-        const b2MassData& m = created[i].mass;
-        body.mass += m.mass;
-        body.center += m.mass * m.center;
-        body.I += m.I;
-    }
-    if (body.mass > 0.0f) {
-        float inverse = 1.0f / body.mass;
-        body.center *= inverse;
-    }
-    if (body.I > 0.0f && !fixed_rotation) {
-        body.I -= body.mass * b2Dot(body.center, body.center);
-    } else {
-        body.I = 0.0f;
-    }
-    return body;
 }
 
 /// Appends a value's bytes to a de-duplication key.
