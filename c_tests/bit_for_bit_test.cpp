@@ -14,6 +14,7 @@
 
 #include "test_macros.h"
 #include "test_scenes.hpp"
+#include "test_worlds.hpp"
 
 static const b2Vec2 kGravity(0.5f, -9.8f);
 
@@ -333,31 +334,11 @@ static void step(b2World& world) {
     }
 }
 
-static bool same_bits(const void* a, const void* b, size_t size) {
-    return std::memcmp(a, b, size) == 0;
-}
-
-static int ensure_same_state(uint32_t index, const b2Body* loaded, const b2Body* by_hand) {
-    b2Vec2 p = loaded->GetPosition(), q = by_hand->GetPosition();
-    b2Vec2 v = loaded->GetLinearVelocity(), w = by_hand->GetLinearVelocity();
-    float a = loaded->GetAngle(), b = by_hand->GetAngle();
-    float s = loaded->GetAngularVelocity(), t = by_hand->GetAngularVelocity();
-    if (!same_bits(&p, &q, sizeof p) || !same_bits(&a, &b, sizeof a) ||
-        !same_bits(&v, &w, sizeof v) || !same_bits(&s, &t, sizeof s)) {
-        std::fprintf(stderr,
-                     "body %u: loaded at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s,\n"
-                     "  by hand at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s\n",
-                     index, p.x, p.y, a, v.x, v.y, s, q.x, q.y, b, w.x, w.y, t);
-        return 1;
-    }
-    return 0;
-}
-
 static int loaded_world_equals_hand_built_world() {
     ScenePtr scene = load_project_file("c_tests/data/every-v1-field.xml");
     ENSURE(scene != nullptr);
     b2Vec2 gravity = box2scene::scene_gravity(scene.get(), b2Vec2(0.0f, -10.0f));
-    ENSURE(same_bits(&gravity, &kGravity, sizeof gravity));
+    ENSURE(same_bits(gravity, kGravity));
     b2World loaded_world(gravity);
     box2scene::Built built = box2scene::build_world(scene.get(), loaded_world);
 

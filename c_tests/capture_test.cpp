@@ -348,28 +348,6 @@ static ScenePtr captured_and_reloaded(b2World& world) {
     return load_text(text_of(captured.get()).c_str());
 }
 
-template <class T>
-static bool same_bits(const T& a, const T& b) {
-    return std::memcmp(&a, &b, sizeof(T)) == 0;
-}
-
-/// Whether two bodies are in the same state bit for bit (and say how they differ if not).
-static int ensure_same_state(size_t index, const b2Body* rebuilt, const b2Body* original) {
-    b2Vec2 p = rebuilt->GetPosition(), q = original->GetPosition();
-    b2Vec2 v = rebuilt->GetLinearVelocity(), w = original->GetLinearVelocity();
-    float a = rebuilt->GetAngle(), b = original->GetAngle();
-    float s = rebuilt->GetAngularVelocity(), t = original->GetAngularVelocity();
-    if (!same_bits(p, q) || !same_bits(a, b) || !same_bits(v, w) || !same_bits(s, t) ||
-        rebuilt->IsAwake() != original->IsAwake()) {
-        std::fprintf(stderr,
-                     "body %zu: rebuilt at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s,\n"
-                     "  original at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s\n",
-                     index, p.x, p.y, a, v.x, v.y, s, q.x, q.y, b, w.x, w.y, t);
-        return 1;
-    }
-    return 0;
-}
-
 static int ensure_same_mass(size_t index, const b2Body* rebuilt, const b2Body* original) {
     float m = rebuilt->GetMass(), n = original->GetMass();
     float i = rebuilt->GetInertia(), j = original->GetInertia();

@@ -8,6 +8,7 @@
 #include <box2scene/box2d.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <utility>
 
@@ -51,5 +52,28 @@ inline bool holds_for_steps(b2World& world, int steps, const std::function<bool(
     }
     return true;
 }
+
+template <class T>
+inline bool same_bits(const T& a, const T& b) {
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+/// Whether two bodies are in the same state bit for bit (and say how they differ if not).
+inline int ensure_same_state(size_t index, const b2Body* rebuilt, const b2Body* original) {
+    b2Vec2 p = rebuilt->GetPosition(), q = original->GetPosition();
+    b2Vec2 v = rebuilt->GetLinearVelocity(), w = original->GetLinearVelocity();
+    float a = rebuilt->GetAngle(), b = original->GetAngle();
+    float s = rebuilt->GetAngularVelocity(), t = original->GetAngularVelocity();
+    if (!same_bits(p, q) || !same_bits(a, b) || !same_bits(v, w) || !same_bits(s, t) ||
+        rebuilt->IsAwake() != original->IsAwake()) {
+        std::fprintf(stderr,
+                     "body %zu: rebuilt at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s,\n"
+                     "  original at (%.9g, %.9g) %.9g rad moving (%.9g, %.9g) %.9g rad/s\n",
+                     index, p.x, p.y, a, v.x, v.y, s, q.x, q.y, b, w.x, w.y, t);
+        return 1;
+    }
+    return 0;
+}
+
 
 #endif // BOX2SCENE_TEST_WORLDS_HPP
