@@ -23,8 +23,25 @@ pub fn is_xml_space(c: char) -> bool {
     matches!(c, ' ' | '\t' | '\r' | '\n')
 }
 
+/// XML white space, as a byte of UTF-8 text. All four are ASCII, so a byte that matches is a
+/// whole character and the text can be sliced next to it.
+pub fn is_xml_space_byte(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | b'\n')
+}
+
+/// `s` without leading and trailing XML white space. Works on bytes: the white space is
+/// ASCII, so the cut points are always character boundaries.
 pub fn trim_xml(s: &str) -> &str {
-    s.trim_matches(is_xml_space)
+    let bytes = s.as_bytes();
+    let mut start = 0;
+    let mut end = bytes.len();
+    while start < end && is_xml_space_byte(bytes[start]) {
+        start += 1;
+    }
+    while end > start && is_xml_space_byte(bytes[end - 1]) {
+        end -= 1;
+    }
+    &s[start..end]
 }
 
 /// The spellings of infinity and NaN that writers produce (.NET, C, JavaScript).
@@ -33,86 +50,134 @@ fn is_non_finite_word(s: &str) -> bool {
     ["inf", "infinity", "nan", "∞"].iter().any(|w| word.eq_ignore_ascii_case(w))
 }
 
+/// A byte that can appear in a float as the format writes them: digits, point, exponent, sign.
+fn is_float_byte(b: u8) -> bool {
+    matches!(b, b'0'..=b'9' | b'.' | b'e' | b'E' | b'+' | b'-')
+}
+
 /// A decimal float, read with correct rounding to the nearest f32.
+///
+/// The common case takes one pass over the bytes to check that they can only spell a float,
+/// then the standard library's parse. Such text cannot be empty, a non-finite word or a
+/// decimal comma, so a parse error there is simply not a number. Everything else goes to
+/// [`not_a_float`], which works out which mistake it is.
 pub fn float(s: &str) -> Result<f32, BadValue> {
+    if s.is_empty() || !s.bytes().all(is_float_byte) {
+        return Err(not_a_float(s));
+    }
+    match s.parse::<f32>() {
+        Ok(value) if value.is_infinite() => {
+            Err(bad(Code::NonFiniteFloat, 0, format!("{s} is too large for a 32-bit float")))
+        }
+        Ok(value) => Ok(value),
+        Err(_) => Err(bad(Code::InvalidFloat, 0, format!("'{s}' is not a number"))),
+    }
+}
+
+/// Why `s`, which is empty or has a byte no float has, is not a float: nothing at all, an
+/// infinity or NaN, a decimal comma, or something else.
+#[cold]
+#[inline(never)]
+fn not_a_float(s: &str) -> BadValue {
     if s.is_empty() {
-        return Err(bad(Code::InvalidFloat, 0, "expected a number, found nothing"));
+        return bad(Code::InvalidFloat, 0, "expected a number, found nothing");
     }
     if is_non_finite_word(s) {
-        return Err(bad(Code::NonFiniteFloat, 0, format!("'{s}' is not a finite number")));
+        return bad(Code::NonFiniteFloat, 0, format!("'{s}' is not a finite number"));
     }
     if let Some(comma) = s.find(',') {
         let digits = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit() || b == b'-');
         if digits(&s[..comma]) && digits(&s[comma + 1..]) {
-            return Err(bad(
+            return bad(
                 Code::FloatDecimalComma,
                 comma,
                 format!(
                     "'{s}' has a decimal comma: the file was written with a locale that uses \
                      one; numbers must use a decimal point"
                 ),
-            ));
+            );
         }
     }
-    let well_formed =
-        s.bytes().all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-'));
-    let value: f32 = match s.parse() {
-        Ok(v) if well_formed => v,
-        _ => return Err(bad(Code::InvalidFloat, 0, format!("'{s}' is not a number"))),
-    };
-    if value.is_infinite() {
-        return Err(bad(Code::NonFiniteFloat, 0, format!("{s} is too large for a 32-bit float")));
-    }
-    Ok(value)
+    bad(Code::InvalidFloat, 0, format!("'{s}' is not a number"))
 }
 
 /// Two floats separated by white space and/or one comma; empty text is (0, 0).
+///
+/// One pass over the bytes counts the commas (keeping the first), notes any white space,
+/// and finds the first two runs of non-white-space bytes (the parts of the white-space form).
+/// Then, in this order:
+/// - two or more commas and some white space: decimal commas, pointing at the first comma;
+/// - exactly one comma: the parts are either side of it (each may be padded with white space);
+/// - no comma and exactly two runs: the parts are the runs;
+/// - anything else is not a vector.
 pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
     if s.is_empty() {
         return Ok(Vec2::ZERO);
     }
-    let parts: Vec<(usize, &str)> = if s.contains(',') {
-        pieces(s, |c| c == ',').collect()
-    } else {
-        pieces(s, is_xml_space).filter(|(_, part)| !part.is_empty()).collect()
-    };
-    if parts.len() > 2 && s.contains(',') && s.contains(is_xml_space) {
-        let comma = s.find(',').unwrap_or(0);
+    let mut commas = 0;
+    let mut first_comma = 0;
+    let mut has_space = false;
+    let mut runs = 0;
+    let mut in_run = false;
+    let mut run_bounds = [(0, s.len()); 2];
+    for (i, &b) in s.as_bytes().iter().enumerate() {
+        if is_xml_space_byte(b) {
+            has_space = true;
+            if in_run {
+                in_run = false;
+                if runs <= 2 {
+                    run_bounds[runs - 1].1 = i;
+                }
+            }
+            continue;
+        }
+        if b == b',' {
+            if commas == 0 {
+                first_comma = i;
+            }
+            commas += 1;
+        }
+        if !in_run {
+            in_run = true;
+            runs += 1;
+            if runs <= 2 {
+                run_bounds[runs - 1].0 = i;
+            }
+        }
+    }
+    if commas > 1 && has_space {
         return Err(bad(
             Code::FloatDecimalComma,
-            comma,
+            first_comma,
             format!(
                 "'{s}' looks like two numbers with decimal commas: the file was written with a \
                  locale that uses one; numbers must use a decimal point"
             ),
         ));
     }
-    let [(at_x, x), (at_y, y)] = parts[..] else {
-        return Err(bad(
-            Code::InvalidVector2,
-            0,
-            format!("'{s}' is not a vector: expected two numbers such as '1 5' or '1, 5'"),
-        ));
+    let ((at_x, x), (at_y, y)) = match (commas, runs) {
+        (1, _) => ((0, &s[..first_comma]), (first_comma + 1, &s[first_comma + 1..])),
+        (0, 2) => {
+            let [(x_start, x_end), (y_start, y_end)] = run_bounds;
+            ((x_start, &s[x_start..x_end]), (y_start, &s[y_start..y_end]))
+        }
+        _ => {
+            return Err(bad(
+                Code::InvalidVector2,
+                0,
+                format!("'{s}' is not a vector: expected two numbers such as '1 5' or '1, 5'"),
+            ));
+        }
     };
     let component = |at: usize, part: &str| {
-        let lead = part.len() - part.trim_start_matches(is_xml_space).len();
-        let part = trim_xml(part);
-        if part.is_empty() {
+        let lead = part.bytes().take_while(|&b| is_xml_space_byte(b)).count();
+        let trimmed = trim_xml(&part[lead..]);
+        if trimmed.is_empty() {
             return Err(bad(Code::InvalidVector2, at, format!("'{s}' has an empty component")));
         }
-        float(part).map_err(|e| BadValue { at: at + lead + e.at, ..e })
+        float(trimmed).map_err(|e| BadValue { at: at + lead + e.at, ..e })
     };
     Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
-}
-
-/// The parts of `s` between single-byte separators, each with its offset in `s`.
-fn pieces(s: &str, is_separator: fn(char) -> bool) -> impl Iterator<Item = (usize, &str)> {
-    let mut next = 0;
-    s.split(is_separator).map(move |part| {
-        let at = next;
-        next += part.len() + 1;
-        (at, part)
-    })
 }
 
 /// `true`/`false` in any letter case, or `1`/`0`.
@@ -127,12 +192,18 @@ pub fn boolean(s: &str) -> Result<bool, BadValue> {
 }
 
 /// Optional sign, decimal digits; 32-bit.
+///
+/// The standard library's parse accepts exactly that (one optional sign, at least one digit),
+/// so a successful parse is the answer in one pass; only a failure needs telling apart.
 pub fn int(s: &str) -> Result<i32, BadValue> {
+    if let Ok(value) = s.parse() {
+        return Ok(value);
+    }
     let digits = s.strip_prefix(['+', '-']).unwrap_or(s);
     if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return Err(bad(Code::InvalidInt, 0, format!("'{s}' is not a whole number")));
     }
-    s.parse().map_err(|_| bad(Code::OutOfRange, 0, format!("{s} is out of the 32-bit range")))
+    Err(bad(Code::OutOfRange, 0, format!("{s} is out of the 32-bit range")))
 }
 
 /// A 16-bit signed int (a group index).
@@ -143,7 +214,15 @@ pub fn int16(s: &str) -> Result<i16, BadValue> {
 }
 
 /// A non-negative index into a container.
+///
+/// As for [`int`], the standard library's parse of a `u32` accepts exactly an optional `+` and
+/// digits, so a successful parse (short of the reserved `u32::MAX`) is the answer in one pass.
 pub fn id(s: &str) -> Result<u32, BadValue> {
+    if let Ok(value) = s.parse::<u32>()
+        && value != u32::MAX
+    {
+        return Ok(value);
+    }
     let digits = s.strip_prefix('+').unwrap_or(s);
     if s.starts_with('-') && s.len() > 1 && s[1..].bytes().all(|b| b.is_ascii_digit()) {
         return Err(bad(Code::InvalidId, 0, format!("ID {s} is negative: IDs count from 0")));
@@ -171,7 +250,7 @@ pub fn bits(s: &str) -> Result<(u16, bool), BadValue> {
     if s.starts_with('-') {
         return Err(bad(Code::InvalidBits, 0, format!("bits {s} are negative")));
     }
-    let ok = !digits.is_empty() && digits.chars().all(|c| c.is_digit(radix));
+    let ok = !digits.is_empty() && digits.bytes().all(|b| char::from(b).is_digit(radix));
     let value = (ok.then(|| u64::from_str_radix(digits, radix).ok()).flatten())
         .ok_or_else(|| bad(Code::InvalidBits, 0, format!("'{s}' is not a bit mask")))?;
     Ok(((value & 0xFFFF) as u16, value > 0xFFFF))
@@ -255,5 +334,270 @@ mod tests {
         assert_eq!(bits("65535").unwrap(), (0xFFFF, false));
         assert_eq!(bits("2147483647").unwrap(), (0xFFFF, true));
         assert_eq!(bits("-1").unwrap_err().code, Code::InvalidBits);
+    }
+
+    /// The implementations before the byte-level rewrite, verbatim, as references that the
+    /// new ones must match exactly (values, codes, offsets and messages).
+    mod old {
+        use super::super::{BadValue, Code, Vec2, bad, is_non_finite_word, is_xml_space};
+
+        pub fn trim_xml(s: &str) -> &str {
+            s.trim_matches(is_xml_space)
+        }
+
+        pub fn float(s: &str) -> Result<f32, BadValue> {
+            if s.is_empty() {
+                return Err(bad(Code::InvalidFloat, 0, "expected a number, found nothing"));
+            }
+            if is_non_finite_word(s) {
+                return Err(bad(Code::NonFiniteFloat, 0, format!("'{s}' is not a finite number")));
+            }
+            if let Some(comma) = s.find(',') {
+                let digits =
+                    |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit() || b == b'-');
+                if digits(&s[..comma]) && digits(&s[comma + 1..]) {
+                    return Err(bad(
+                        Code::FloatDecimalComma,
+                        comma,
+                        format!(
+                            "'{s}' has a decimal comma: the file was written with a locale that \
+                             uses one; numbers must use a decimal point"
+                        ),
+                    ));
+                }
+            }
+            let well_formed = s
+                .bytes()
+                .all(|b| b.is_ascii_digit() || matches!(b, b'.' | b'e' | b'E' | b'+' | b'-'));
+            let value: f32 = match s.parse() {
+                Ok(v) if well_formed => v,
+                _ => return Err(bad(Code::InvalidFloat, 0, format!("'{s}' is not a number"))),
+            };
+            if value.is_infinite() {
+                return Err(bad(
+                    Code::NonFiniteFloat,
+                    0,
+                    format!("{s} is too large for a 32-bit float"),
+                ));
+            }
+            Ok(value)
+        }
+
+        pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
+            if s.is_empty() {
+                return Ok(Vec2::ZERO);
+            }
+            let parts: Vec<(usize, &str)> = if s.contains(',') {
+                pieces(s, |c| c == ',').collect()
+            } else {
+                pieces(s, is_xml_space).filter(|(_, part)| !part.is_empty()).collect()
+            };
+            if parts.len() > 2 && s.contains(',') && s.contains(is_xml_space) {
+                let comma = s.find(',').unwrap_or(0);
+                return Err(bad(
+                    Code::FloatDecimalComma,
+                    comma,
+                    format!(
+                        "'{s}' looks like two numbers with decimal commas: the file was written \
+                         with a locale that uses one; numbers must use a decimal point"
+                    ),
+                ));
+            }
+            let [(at_x, x), (at_y, y)] = parts[..] else {
+                return Err(bad(
+                    Code::InvalidVector2,
+                    0,
+                    format!("'{s}' is not a vector: expected two numbers such as '1 5' or '1, 5'"),
+                ));
+            };
+            let component = |at: usize, part: &str| {
+                let lead = part.len() - part.trim_start_matches(is_xml_space).len();
+                let part = trim_xml(part);
+                if part.is_empty() {
+                    return Err(bad(
+                        Code::InvalidVector2,
+                        at,
+                        format!("'{s}' has an empty component"),
+                    ));
+                }
+                float(part).map_err(|e| BadValue { at: at + lead + e.at, ..e })
+            };
+            Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
+        }
+
+        fn pieces(s: &str, is_separator: fn(char) -> bool) -> impl Iterator<Item = (usize, &str)> {
+            let mut next = 0;
+            s.split(is_separator).map(move |part| {
+                let at = next;
+                next += part.len() + 1;
+                (at, part)
+            })
+        }
+
+        pub fn int(s: &str) -> Result<i32, BadValue> {
+            let digits = s.strip_prefix(['+', '-']).unwrap_or(s);
+            if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+                return Err(bad(Code::InvalidInt, 0, format!("'{s}' is not a whole number")));
+            }
+            s.parse()
+                .map_err(|_| bad(Code::OutOfRange, 0, format!("{s} is out of the 32-bit range")))
+        }
+
+        pub fn id(s: &str) -> Result<u32, BadValue> {
+            let digits = s.strip_prefix('+').unwrap_or(s);
+            if s.starts_with('-') && s.len() > 1 && s[1..].bytes().all(|b| b.is_ascii_digit()) {
+                return Err(bad(
+                    Code::InvalidId,
+                    0,
+                    format!("ID {s} is negative: IDs count from 0"),
+                ));
+            }
+            if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+                return Err(bad(
+                    Code::InvalidId,
+                    0,
+                    format!("'{s}' is not an ID: expected an index such as 0"),
+                ));
+            }
+            match digits.parse::<u32>() {
+                Ok(v) if v != u32::MAX => Ok(v),
+                _ => Err(bad(Code::IdOutOfRange, 0, format!("ID {s} is out of range"))),
+            }
+        }
+
+        pub fn bits(s: &str) -> Result<(u16, bool), BadValue> {
+            let (digits, radix) = match s.strip_prefix("0x").or_else(|| s.strip_prefix("0X")) {
+                Some(hex) => (hex, 16),
+                None => (s.strip_prefix('+').unwrap_or(s), 10),
+            };
+            if s.starts_with('-') {
+                return Err(bad(Code::InvalidBits, 0, format!("bits {s} are negative")));
+            }
+            let ok = !digits.is_empty() && digits.chars().all(|c| c.is_digit(radix));
+            let value = (ok.then(|| u64::from_str_radix(digits, radix).ok()).flatten())
+                .ok_or_else(|| bad(Code::InvalidBits, 0, format!("'{s}' is not a bit mask")))?;
+            Ok(((value & 0xFFFF) as u16, value > 0xFFFF))
+        }
+    }
+
+    /// Calls `check` with every string of up to `max_len` symbols drawn from `alphabet`.
+    fn for_all_strings(alphabet: &[&str], max_len: usize, mut check: impl FnMut(&str)) {
+        let mut text = String::new();
+        let mut digits = Vec::new();
+        loop {
+            text.clear();
+            digits.iter().for_each(|&d: &usize| text.push_str(alphabet[d]));
+            check(&text);
+            // Count up in base alphabet.len(), growing by one symbol on carry out.
+            let mut i = 0;
+            loop {
+                if i == digits.len() {
+                    if digits.len() == max_len {
+                        return;
+                    }
+                    digits.push(0);
+                    break;
+                }
+                digits[i] += 1;
+                if digits[i] < alphabet.len() {
+                    break;
+                }
+                digits[i] = 0;
+                i += 1;
+            }
+        }
+    }
+
+    #[rustfmt::skip]
+    const HAND_PICKED: &[&str] = &[
+        "", " ", "8.369571E-36", ".5", "5.", "1e39", "-1e39", "3.4028235e38", "3.4028236e38",
+        "1e-46", "NaN", "nan", "-NaN", "inf", "+inf", "-inf", "--inf", "+-Infinity", "INFINITY",
+        "∞", "-∞", "+∞", "∞ ∞", "infinite", "0,5", "-0,5", "0,-5", ",5", "5,", "1,2,3", " 1 , 5 ",
+        "1\t\n5", "1\r5", "1 ,5", "1, 5", "1,5", "1,,2", "1 2 3", "0,5 1,5", "0,5\t1,5", "1, x",
+        "x, 1", "1 NaN", "NaN, 1", "1, 1e39", "1e39 1", "é 1", "1 é", "1,é", "1 , ", " , 1",
+        ",", ", ", " ,", "  ", "0x10", "1.2.3", "1e", "e1", "+", "-", ".", "1_000", "١", "1 ١",
+        "3.141593", "-0.7853982", "+1", "1e5", "-0", "1.0 , 5.0", "  1   5  ", "1\u{a0}5",
+        "1\u{2003}5", "4294967295", "4294967294", "4294967296", "-4294967295", "2147483647",
+        "2147483648", "-2147483648", "-2147483649", "+-1", "-+1", "++1", "--1", "0x", "0X",
+        "0xFFFF", "0x10000", "0xffffffffffffffff", "0x10000000000000000", "18446744073709551615",
+        "18446744073709551616", "0x+1", "0x-1", "+0x1", "-0x1", "true", "TRUE", "fAlSe", "yes",
+        "01", "00", "0b1", "1 ", " 1",
+    ];
+
+    /// Compares a new conversion with its old reference on `text`: `Ok` floats by their bits.
+    fn same<T: PartialEq + std::fmt::Debug>(
+        name: &str,
+        text: &str,
+        new: Result<T, BadValue>,
+        old: Result<T, BadValue>,
+    ) {
+        assert_eq!(new, old, "{name}({text:?})");
+    }
+
+    fn same_float(text: &str) {
+        same("float", text, float(text).map(f32::to_bits), old::float(text).map(f32::to_bits));
+    }
+
+    fn same_vector2(text: &str) {
+        let bits = |v: Vec2| (v.x.to_bits(), v.y.to_bits());
+        same("vector2", text, vector2(text).map(bits), old::vector2(text).map(bits));
+    }
+
+    fn same_trim(text: &str) {
+        assert_eq!(trim_xml(text), old::trim_xml(text), "trim_xml({text:?})");
+    }
+
+    fn same_integers(text: &str) {
+        same("int", text, int(text), old::int(text));
+        same("id", text, id(text), old::id(text));
+        same("bits", text, bits(text), old::bits(text));
+    }
+
+    #[test]
+    fn rewritten_conversions_match_the_old_ones_on_hand_picked_text() {
+        for &text in HAND_PICKED {
+            same_trim(text);
+            same_float(text);
+            same_vector2(text);
+            same_integers(text);
+            // Padded, as the vector's components and untrimmed callers see them.
+            for padded in [format!(" {text}"), format!("{text}\t"), format!("\r\n{text} \n")] {
+                same_trim(&padded);
+                same_float(&padded);
+                same_vector2(&padded);
+            }
+        }
+        // Every pair of hand-picked texts, as both vector forms.
+        for &a in HAND_PICKED {
+            for &b in HAND_PICKED {
+                same_vector2(&format!("{a} {b}"));
+                same_vector2(&format!("{a},{b}"));
+                same_vector2(&format!("{a} , {b}"));
+            }
+        }
+    }
+
+    #[test]
+    fn rewritten_conversions_match_the_old_ones_on_every_short_text() {
+        let alphabet = ["0", "1", ".", ",", "-", "+", "e", "E", " ", "\t", "\n", "\r", "x"];
+        for_all_strings(&alphabet, 5, |text| {
+            same_trim(text);
+            same_float(text);
+            same_vector2(text);
+        });
+        let alphabet = ["0", "5", ".", ",", "-", "e", " ", "\t"];
+        for_all_strings(&alphabet, 6, |text| {
+            same_float(text);
+            same_vector2(text);
+        });
+        let alphabet = ["0", "9", "+", "-", "x", "X", "f", "é", " "];
+        for_all_strings(&alphabet, 5, same_integers);
+        // Words and non-ASCII next to numbers.
+        let alphabet = ["1", "-", "inf", "NaN", "∞", "é", ",", " ", "e9"];
+        for_all_strings(&alphabet, 4, |text| {
+            same_trim(text);
+            same_float(text);
+            same_vector2(text);
+        });
     }
 }
