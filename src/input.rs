@@ -1,8 +1,17 @@
 //! From the bytes of a file to UTF-8 text, and from offsets in that text back to lines,
 //! columns and byte offsets in the file.
+//!
+//! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory;
+//! a window that moves forward in chunks for a UTF-8 file read from a path, so a load never
+//! holds the whole file. Either way the text stops at the first byte that cannot be text
+//! (invalid UTF-8, a NUL, an unpaired UTF-16 surrogate, a read error) and the source says
+//! why, so a load reports the first problem in the file whichever way it was read.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
+use std::fs::File;
+use std::io::Read;
+use std::path::Path;
 
 use crate::LoadOptions;
 use crate::error::{Code, Error, Position};
@@ -14,72 +23,307 @@ pub enum Encoding {
     Utf16 { big_endian: bool },
 }
 
-/// The file as UTF-8 text (the byte-order mark removed).
-pub struct Decoded<'a> {
-    pub text: Cow<'a, str>,
-    pub encoding: Encoding,
+/// Why the text ends before the file does, at an offset of the decoded text.
+#[derive(Clone, Debug)]
+pub struct Stop {
+    pub code: Code,
+    pub at: usize,
+    pub message: String,
 }
+
+/// Bytes read from a file at a time.
+const CHUNK: usize = 1 << 16;
 
 const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
 
-/// Checks the size limit, detects the encoding, and validates the text: invalid UTF-8 and
-/// NUL bytes are errors with their position.
-pub fn decode<'a>(bytes: &'a [u8], options: &LoadOptions) -> Result<Decoded<'a>, Error> {
-    if bytes.len() as u64 > options.max_input_bytes {
-        return Err(too_big(options.max_input_bytes));
-    }
-    let decoded = match bytes {
-        [0xFF, 0xFE, rest @ ..] => decode_utf16(rest, false)?,
-        [0xFE, 0xFF, rest @ ..] => decode_utf16(rest, true)?,
-        _ => decode_utf8(bytes)?,
-    };
-    if let Some(at) = decoded.text.find('\0') {
-        let position = Locator::new(&decoded).locate(at);
-        return Err(Error {
-            code: Code::NulByte,
-            position,
-            message: "the file holds a NUL byte: it is not a text file (or it was truncated \
-                      or padded)"
-                .into(),
-        });
-    }
-    Ok(decoded)
+/// The decoded text of a file (the byte-order mark removed), whole or a moving window.
+pub struct Source<'a> {
+    /// The text from `base` on that is at hand.
+    text: Cow<'a, str>,
+    base: usize,
+    /// The rest of a file read from a path.
+    file: Option<Stream>,
+    /// Why the text ends early; None when it ends with the file.
+    stop: Option<Stop>,
+    encoding: Encoding,
+    /// Where the text came from, to read it again for positions.
+    origin: Origin<'a>,
 }
 
-fn decode_utf8(bytes: &[u8]) -> Result<Decoded<'_>, Error> {
-    let bom = bytes.starts_with(UTF8_BOM);
-    let body = if bom { &bytes[UTF8_BOM.len()..] } else { bytes };
-    if looks_like_utf16_without_bom(body) {
-        return Err(Error {
-            code: Code::UnsupportedEncoding,
-            position: Position { line: 1, column: 1, byte_offset: 0 },
-            message: "the file looks like UTF-16 without a byte-order mark; save it as UTF-8, \
-                      or as UTF-16 with a byte-order mark"
-                .into(),
-        });
+#[derive(Clone)]
+enum Origin<'a> {
+    Memory,
+    Path(&'a Path),
+}
+
+/// A UTF-8 file being read.
+struct Stream {
+    file: File,
+    /// The bytes of a character split by the end of the last chunk.
+    pending: Vec<u8>,
+    /// Bytes read so far, against the input limit.
+    read: u64,
+    max: u64,
+}
+
+impl<'a> Source<'a> {
+    /// The text of a file in memory. Errors are those found before any text: the size
+    /// limit and UTF-16 without a byte-order mark.
+    pub fn memory(bytes: &'a [u8], options: &LoadOptions) -> Result<Source<'a>, Error> {
+        if bytes.len() as u64 > options.max_input_bytes {
+            return Err(too_big(options.max_input_bytes));
+        }
+        let (text, encoding, stop) = match bytes {
+            [0xFF, 0xFE, rest @ ..] => decode_utf16(rest, false),
+            [0xFE, 0xFF, rest @ ..] => decode_utf16(rest, true),
+            _ => {
+                let bom = bytes.starts_with(UTF8_BOM);
+                let body = if bom { &bytes[UTF8_BOM.len()..] } else { bytes };
+                check_utf16_without_bom(body)?;
+                let (text, stop) = valid_prefix(body, 0);
+                (Cow::Borrowed(text), Encoding::Utf8 { bom }, stop)
+            }
+        };
+        let (text, stop) = cut_at_nul(text, 0, stop);
+        Ok(Source { text, base: 0, file: None, stop, encoding, origin: Origin::Memory })
     }
-    match std::str::from_utf8(body) {
-        Ok(text) => Ok(Decoded { text: Cow::Borrowed(text), encoding: Encoding::Utf8 { bom } }),
-        Err(e) => {
-            let valid = std::str::from_utf8(&body[..e.valid_up_to()]).unwrap_or_default();
-            let decoded = Decoded { text: Cow::Borrowed(valid), encoding: Encoding::Utf8 { bom } };
-            Err(Error {
-                code: Code::InvalidUtf8,
-                position: Locator::new(&decoded).locate(valid.len()),
-                message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a \
-                          legacy code page must be converted)"
-                    .into(),
-            })
+
+    /// The text of the file at `path`: UTF-8 is read a chunk at a time as the parser needs
+    /// it; UTF-16 is read and converted whole.
+    pub fn path(path: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
+        let io = |e: std::io::Error| io_error(path, &e);
+        let mut file = File::open(path).map_err(io)?;
+        if file.metadata().map_err(io)?.len() > options.max_input_bytes {
+            return Err(too_big(options.max_input_bytes));
+        }
+        let mut head = Vec::with_capacity(CHUNK);
+        (&mut file).take(CHUNK as u64).read_to_end(&mut head).map_err(io)?;
+        if head.starts_with(&[0xFF, 0xFE]) || head.starts_with(&[0xFE, 0xFF]) {
+            let mut bytes = head;
+            file.read_to_end(&mut bytes).map_err(io)?;
+            let source = Source::memory(&bytes, options)?;
+            let (text, stop) = (Cow::Owned(source.text.into_owned()), source.stop);
+            let origin = Origin::Path(path);
+            return Ok(Source {
+                text,
+                base: 0,
+                file: None,
+                stop,
+                encoding: source.encoding,
+                origin,
+            });
+        }
+        let bom = head.starts_with(UTF8_BOM);
+        let body = if bom { &head[UTF8_BOM.len()..] } else { &head[..] };
+        check_utf16_without_bom(body)?;
+        let mut source = Source {
+            text: Cow::Owned(String::new()),
+            base: 0,
+            file: Some(Stream {
+                file,
+                pending: Vec::new(),
+                read: head.len() as u64,
+                max: options.max_input_bytes,
+            }),
+            stop: None,
+            encoding: Encoding::Utf8 { bom },
+            origin: Origin::Path(path),
+        };
+        source.append(body, head.len() < CHUNK);
+        Ok(source)
+    }
+
+    pub fn encoding(&self) -> Encoding {
+        self.encoding
+    }
+
+    /// The text at hand, which starts at offset [`Source::base`].
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    pub fn base(&self) -> usize {
+        self.base
+    }
+
+    /// The offset just past the text at hand.
+    pub fn end(&self) -> usize {
+        self.base + self.text.len()
+    }
+
+    /// Why the text ends early, once no more can be read.
+    pub fn stop(&self) -> Option<&Stop> {
+        self.stop.as_ref().filter(|_| self.file.is_none())
+    }
+
+    /// The text between two offsets, when it is at hand.
+    pub fn slice(&self, from: usize, to: usize) -> &str {
+        let (from, to) = (from.saturating_sub(self.base), to.saturating_sub(self.base));
+        self.text.get(from..to).unwrap_or_default()
+    }
+
+    /// Reads more of the file, letting go of the text before offset `keep`. Returns false
+    /// when the text at hand is all there is.
+    pub fn more(&mut self, keep: usize) -> bool {
+        let end = self.end();
+        let Some(stream) = &mut self.file else {
+            return false;
+        };
+        let text = self.text.to_mut();
+        let drop = keep.saturating_sub(self.base).min(text.len());
+        if drop >= text.len() / 2 {
+            text.drain(..drop);
+            self.base += drop;
+        }
+        let mut chunk = std::mem::take(&mut stream.pending);
+        let had = chunk.len();
+        let read = (&mut stream.file).take(CHUNK as u64).read_to_end(&mut chunk);
+        match read {
+            Ok(n) => {
+                stream.read += n as u64;
+                if stream.read > stream.max {
+                    let at = end;
+                    self.stop = Some(Stop {
+                        code: Code::LimitExceeded,
+                        at,
+                        message: format!(
+                            "the file is larger than the input size limit (max_input_bytes = {})",
+                            stream.max
+                        ),
+                    });
+                    self.file = None;
+                    return false;
+                }
+                let before = self.end();
+                self.append(&chunk, n == 0 && had == chunk.len());
+                self.end() > before || self.file.is_some() && self.more(keep)
+            }
+            Err(e) => {
+                let at = end;
+                let message = match &self.origin {
+                    Origin::Path(path) => format!("cannot read {}: {e}", path.display()),
+                    Origin::Memory => e.to_string(),
+                };
+                self.stop = Some(Stop { code: Code::Io, at, message });
+                self.file = None;
+                false
+            }
+        }
+    }
+
+    /// Appends the valid text of `bytes`; `last` says the file ends with them.
+    fn append(&mut self, bytes: &[u8], last: bool) {
+        let at = self.end();
+        let (valid, mut stop) = valid_prefix(bytes, at);
+        let valid_len = valid.len();
+        if let Some(s) = &stop {
+            // A character cut by the end of the chunk is completed by the next one.
+            let tail = &bytes[valid_len..];
+            if !last && tail.len() < 4 && std::str::from_utf8(tail).is_err() && could_continue(tail)
+            {
+                if let Some(stream) = &mut self.file {
+                    stream.pending = tail.to_vec();
+                }
+                stop = None;
+            } else {
+                debug_assert_eq!(s.at, at + valid_len);
+            }
+        }
+        let (valid, stop) = cut_at_nul(Cow::Borrowed(valid), at, stop);
+        self.text.to_mut().push_str(&valid);
+        if stop.is_some() || last {
+            self.stop = stop;
+            self.file = None;
+        }
+    }
+
+    /// The same text from its start again, for [`Locator`].
+    fn reopen(&self) -> Result<Source<'a>, Error> {
+        if self.base == 0 && self.file.is_none() {
+            return Ok(Source {
+                text: self.text.clone(),
+                base: 0,
+                file: None,
+                stop: self.stop.clone(),
+                encoding: self.encoding,
+                origin: self.origin.clone(),
+            });
+        }
+        match self.origin {
+            Origin::Path(path) => {
+                Source::path(path, &LoadOptions { max_input_bytes: u64::MAX, ..Default::default() })
+            }
+            Origin::Memory => unreachable!("a source in memory is whole"),
         }
     }
 }
 
-/// `<` followed or preceded by a zero byte: UTF-16 text that lost its byte-order mark.
-fn looks_like_utf16_without_bom(bytes: &[u8]) -> bool {
-    matches!(bytes, [b'<', 0, ..] | [0, b'<', ..])
+/// Whether `tail` is the start of a multi-byte UTF-8 character.
+fn could_continue(tail: &[u8]) -> bool {
+    let need = match tail.first() {
+        Some(b) if b & 0xE0 == 0xC0 => 2,
+        Some(b) if b & 0xF0 == 0xE0 => 3,
+        Some(b) if b & 0xF8 == 0xF0 => 4,
+        _ => return false,
+    };
+    tail.len() < need && tail[1..].iter().all(|b| b & 0xC0 == 0x80)
 }
 
-fn decode_utf16(bytes: &[u8], big_endian: bool) -> Result<Decoded<'static>, Error> {
+/// The longest valid UTF-8 prefix of `bytes`, and the `invalid-utf8` stop after it.
+fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Stop>) {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => (text, None),
+        Err(e) => {
+            let valid = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
+            let stop = Stop {
+                code: Code::InvalidUtf8,
+                at: base + valid.len(),
+                message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy \
+                          code page must be converted)"
+                    .into(),
+            };
+            (valid, Some(stop))
+        }
+    }
+}
+
+/// `text` up to its first NUL, which stops the text there.
+fn cut_at_nul(text: Cow<'_, str>, base: usize, stop: Option<Stop>) -> (Cow<'_, str>, Option<Stop>) {
+    let Some(nul) = memchr::memchr(0, text.as_bytes()) else {
+        return (text, stop);
+    };
+    let stop = Stop {
+        code: Code::NulByte,
+        at: base + nul,
+        message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
+                  padded)"
+            .into(),
+    };
+    let text = match text {
+        Cow::Borrowed(t) => Cow::Borrowed(&t[..nul]),
+        Cow::Owned(mut t) => {
+            t.truncate(nul);
+            Cow::Owned(t)
+        }
+    };
+    (text, Some(stop))
+}
+
+/// `<` followed or preceded by a zero byte: UTF-16 text that lost its byte-order mark.
+fn check_utf16_without_bom(bytes: &[u8]) -> Result<(), Error> {
+    if !matches!(bytes, [b'<', 0, ..] | [0, b'<', ..]) {
+        return Ok(());
+    }
+    Err(Error {
+        code: Code::UnsupportedEncoding,
+        position: Position { line: 1, column: 1, byte_offset: 0 },
+        message: "the file looks like UTF-16 without a byte-order mark; save it as UTF-8, or as \
+                  UTF-16 with a byte-order mark"
+            .into(),
+    })
+}
+
+fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding, Option<Stop>) {
     let units = bytes.chunks_exact(2).map(|pair| {
         let pair = [pair[0], pair[1]];
         if big_endian { u16::from_be_bytes(pair) } else { u16::from_le_bytes(pair) }
@@ -95,17 +339,14 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> Result<Decoded<'static>, Erro
             }
         }
     }
-    let decoded = Decoded { text: Cow::Owned(text), encoding: Encoding::Utf16 { big_endian } };
-    if valid {
-        return Ok(decoded);
-    }
-    Err(Error {
+    let stop = (!valid).then(|| Stop {
         code: Code::InvalidUtf8,
-        position: Locator::new(&decoded).locate(decoded.text.len()),
+        at: text.len(),
         message: "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of \
                   bytes)"
             .into(),
-    })
+    });
+    (Cow::Owned(text), Encoding::Utf16 { big_endian }, stop)
 }
 
 /// The `limit-exceeded` error of an input larger than `max` bytes.
@@ -117,59 +358,82 @@ pub fn too_big(max: u64) -> Error {
     }
 }
 
-/// Turns offsets in the decoded text into positions in the file. Walks forward from the
-/// last position it gave, so locating offsets in increasing order is linear overall.
-pub struct Locator<'t> {
-    text: &'t str,
-    encoding: Encoding,
-    offset: usize,
-    line: u32,
-    line_start: usize,
+pub fn io_error(path: &Path, e: &std::io::Error) -> Error {
+    Error {
+        code: Code::Io,
+        position: Position::default(),
+        message: format!("cannot read {}: {e}", path.display()),
+    }
 }
 
-impl<'t> Locator<'t> {
-    pub fn new(decoded: &'t Decoded<'_>) -> Locator<'t> {
+/// Turns offsets in the decoded text into positions in the file, reading the text again
+/// from its start. Offsets must come in increasing order.
+pub struct Locator<'a> {
+    source: Option<Source<'a>>,
+    encoding: Encoding,
+    /// The offset reached, its line, its column (in characters, from 1), and its UTF-16
+    /// code units from the start (for UTF-16 files).
+    offset: usize,
+    line: u32,
+    column: u64,
+    units: u64,
+}
+
+impl<'a> Locator<'a> {
+    pub fn new(source: &Source<'a>) -> Locator<'a> {
         Locator {
-            text: &decoded.text,
-            encoding: decoded.encoding,
+            source: source.reopen().ok(),
+            encoding: source.encoding,
             offset: 0,
             line: 1,
-            line_start: 0,
+            column: 1,
+            units: 0,
         }
     }
 
     pub fn locate(&mut self, offset: usize) -> Position {
-        let offset = offset.min(self.text.len());
-        if offset < self.offset {
-            (self.offset, self.line, self.line_start) = (0, 1, 0);
-        }
-        for (i, b) in self.text.as_bytes()[self.offset..offset].iter().enumerate() {
-            if *b == b'\n' {
-                self.line += 1;
-                self.line_start = self.offset + i + 1;
+        debug_assert!(offset >= self.offset, "offsets are located in increasing order");
+        while let Some(source) = &mut self.source {
+            let to = offset.min(source.end());
+            let text = source.slice(self.offset.max(source.base()), to);
+            advance(&mut self.line, &mut self.column, &mut self.units, self.encoding, text);
+            self.offset = to;
+            if to == offset || !source.more(to) {
+                break;
             }
         }
-        self.offset = offset;
-        let before = self.text.get(self.line_start..offset).unwrap_or_default();
         Position {
             line: self.line,
-            column: 1 + saturate(before.chars().count()),
-            byte_offset: self.file_offset(offset),
+            column: u32::try_from(self.column).unwrap_or(u32::MAX - 1),
+            byte_offset: self.file_offset(),
         }
     }
 
-    /// The offset in the file of an offset in the decoded text.
-    fn file_offset(&self, offset: usize) -> u64 {
+    /// The offset in the file of the offset reached.
+    fn file_offset(&self) -> u64 {
         match self.encoding {
-            Encoding::Utf8 { bom } => (offset + if bom { UTF8_BOM.len() } else { 0 }) as u64,
-            Encoding::Utf16 { .. } => {
-                let units: usize = self.text[..offset].chars().map(char::len_utf16).sum();
-                2 + 2 * units as u64
-            }
+            Encoding::Utf8 { bom } => (self.offset + if bom { UTF8_BOM.len() } else { 0 }) as u64,
+            Encoding::Utf16 { .. } => 2 + 2 * self.units,
         }
     }
 }
 
-fn saturate(n: usize) -> u32 {
-    u32::try_from(n).unwrap_or(u32::MAX - 1)
+/// Moves a line, column and UTF-16 unit count past `text`.
+fn advance(line: &mut u32, column: &mut u64, units: &mut u64, encoding: Encoding, text: &str) {
+    let bytes = text.as_bytes();
+    // A count the compiler vectorises; lines are short, so a search per line is not.
+    let newlines: usize = bytes.iter().map(|&b| usize::from(b == b'\n')).sum();
+    *line = line.saturating_add(u32::try_from(newlines).unwrap_or(u32::MAX));
+    let last_line = match memchr::memrchr(b'\n', bytes) {
+        Some(newline) => {
+            *column = 1;
+            &bytes[newline + 1..]
+        }
+        None => bytes,
+    };
+    // Characters: every byte that does not continue a multi-byte sequence.
+    *column += last_line.iter().filter(|&&b| b & 0xC0 != 0x80).count() as u64;
+    if let Encoding::Utf16 { .. } = encoding {
+        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
+    }
 }

@@ -73,23 +73,7 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
 
 /// Loads a scene from a file.
 pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, Error> {
-    let path = path.as_ref();
-    let too_big = |size: u64| size > options.max_input_bytes;
-    match std::fs::metadata(path) {
-        Ok(meta) if too_big(meta.len()) => return Err(input::too_big(options.max_input_bytes)),
-        Ok(_) => {}
-        Err(e) => return Err(io_error(path, &e)),
-    }
-    let bytes = std::fs::read(path).map_err(|e| io_error(path, &e))?;
-    load(&bytes, options)
-}
-
-fn io_error(path: &Path, e: &std::io::Error) -> Error {
-    Error {
-        code: Code::Io,
-        position: Position::default(),
-        message: format!("cannot read {}: {e}", path.display()),
-    }
+    parse::load_path(path.as_ref(), options)
 }
 
 /// Writes `scene` to a file (see [`write`]).

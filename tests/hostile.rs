@@ -429,3 +429,35 @@ fn every_corpus_file_with_random_single_byte_changes_loads_or_fails_cleanly() {
         }
     }
 }
+
+#[test]
+fn a_load_from_a_path_does_not_hold_the_file() {
+    let body = "<Body Type=\"Dynamic\"><Name>a body</Name><Position>1.5 -2.25</Position>\
+                <Angle>0.5</Angle><LinearVelocity>0 -1</LinearVelocity><Fixtures/></Body>\n";
+    let count = 100_000;
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{}</Bodies><Joints/></World>",
+        body.repeat(count)
+    );
+    let file = std::env::temp_dir().join(format!("box2scene-hostile-{}.xml", std::process::id()));
+    std::fs::write(&file, &xml).unwrap();
+    let load_from = |from_path: bool| {
+        extra_bytes_while(|| {
+            let options = LoadOptions::default();
+            let scene = match from_path {
+                true => box2scene::load_path(&file, &options),
+                false => load(xml.as_bytes(), &options),
+            };
+            assert_eq!(scene.unwrap().bodies().len(), count);
+        })
+    };
+    let (from_memory, from_path) = (load_from(false), load_from(true));
+    std::fs::remove_file(&file).unwrap();
+    // From memory the input is the caller's; from a path only a window of it is held.
+    let window = 1 << 20;
+    assert!(
+        from_path < from_memory + window,
+        "a {} byte file: {from_path} bytes held loading from its path, {from_memory} from memory",
+        xml.len()
+    );
+}

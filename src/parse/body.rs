@@ -27,7 +27,7 @@ const BODY: &[&str] = &[
 const MASS_DATA: &[&str] = &["mass", "center", "inertia"];
 
 impl<'a> Parser<'a> {
-    pub(super) fn body(&mut self, tag: Tag<'a>) -> Parsed<()> {
+    pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
@@ -76,7 +76,7 @@ impl<'a> Parser<'a> {
 
     /// A body lists its fixtures as `<Fixtures>` IDs, or in Farseer's Version 3 layout as
     /// `<Bindings>`; the other one is an error, since dropping it would lose fixtures.
-    fn layout_mismatch(&self, child: &Tag<'a>, name: &str) -> Option<super::Problem> {
+    fn layout_mismatch(&self, child: &Tag, name: &str) -> Option<super::Problem> {
         let why = match (name, self.farseer_layout()) {
             ("fixtures", true) => "a Version 3 body lists its fixtures in <Bindings>",
             ("bindings", false) => {
@@ -89,7 +89,7 @@ impl<'a> Parser<'a> {
 
     /// Version 3: `<Pair FixtureId="k" ShapeId="s"/>` children, made into fixtures once the
     /// whole file is read.
-    fn bindings(&mut self, tag: &Tag<'a>) -> Parsed<()> {
+    fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
             let attrs = p.attributes(&pair)?;
@@ -108,7 +108,7 @@ impl<'a> Parser<'a> {
         })
     }
 
-    fn body_type(&mut self, tag: &Tag<'a>) -> Parsed<BodyKind> {
+    fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
         let attrs = self.attributes(tag)?;
         self.unknown_attributes(tag, &attrs, &["type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
@@ -134,7 +134,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn mass_data(&mut self, tag: &Tag<'a>, mass: &mut MassData) -> Parsed<()> {
+    fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
         while let Some(child) = self.child(tag)? {
             let Some((name, repeated)) = self.known(tag, &child, MASS_DATA, &mut seen)? else {
@@ -154,7 +154,7 @@ impl<'a> Parser<'a> {
 
     /// A body's `<Fixtures>`: `ID` children, checked against the fixtures after the whole
     /// file is read.
-    fn fixture_ids(&mut self, tag: &Tag<'a>) -> Parsed<Range> {
+    fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
         let first = self.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
             let (index, at) = p.id(&id)?;

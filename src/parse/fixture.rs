@@ -10,7 +10,7 @@ const FIXTURE: &[&str] =
 const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex", "collisionignores"];
 
 impl<'a> Parser<'a> {
-    pub(super) fn fixture(&mut self, tag: Tag<'a>) -> Parsed<()> {
+    pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
         self.fixture_template_id(&tag)?;
         let mut fixture = Fixture::default();
         let mut shape_at = tag.at;
@@ -43,7 +43,7 @@ impl<'a> Parser<'a> {
     }
 
     /// Version 3: the `Id` that bodies' `Pair`s name the fixture by.
-    fn fixture_template_id(&mut self, tag: &Tag<'a>) -> Parsed<()> {
+    fn fixture_template_id(&mut self, tag: &Tag) -> Parsed<()> {
         let attrs = self.attributes(tag)?;
         if !self.farseer_layout() {
             return self.unknown_attributes(tag, &attrs, &[]);
@@ -61,7 +61,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn filter(&mut self, tag: &Tag<'a>, filter: &mut Filter) -> Parsed<()> {
+    fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
         while let Some(child) = self.child(tag)? {
             let Some((name, repeated)) = self.known(tag, &child, FILTER, &mut seen)? else {
@@ -82,7 +82,7 @@ impl<'a> Parser<'a> {
     }
 
     /// Collision bits; above 16 bits only the low 16 are kept, with a warning.
-    fn bits(&mut self, tag: &Tag<'a>) -> Parsed<u16> {
+    fn bits(&mut self, tag: &Tag) -> Parsed<u16> {
         let ((bits, truncated), at) = self.parsed(tag, text::bits)?;
         if truncated {
             let message = format!(

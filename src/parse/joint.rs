@@ -197,7 +197,7 @@ fn joint_kind(value: &str) -> Option<JointKind> {
 }
 
 impl<'a> Parser<'a> {
-    pub(super) fn joint(&mut self, tag: Tag<'a>) -> Parsed<()> {
+    pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
         let kind = self.joint_type(&tag)?;
         let mut joint = Joint::new(kind);
         let mut at =
@@ -257,7 +257,7 @@ impl<'a> Parser<'a> {
 
     /// Farseer's `Line` joints from February 2011 on are wheel joints under the old name:
     /// read them as Wheel, with the wheel's defaults for what they leave out.
-    fn line_is_wheel(&mut self, tag: &Tag<'a>, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
+    fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
         let wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
         if !seen.contains(JOINT, "FrequencyHz") {
@@ -273,7 +273,7 @@ impl<'a> Parser<'a> {
         )
     }
 
-    fn joint_type(&mut self, tag: &Tag<'a>) -> Parsed<JointKind> {
+    fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
         let attrs = self.attributes(tag)?;
         self.unknown_attributes(tag, &attrs, &["type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
@@ -308,7 +308,7 @@ impl<'a> Parser<'a> {
     }
 
     /// The rules one joint can break on its own (cross references come later).
-    fn check_joint(&self, tag: &Tag<'a>, joint: &Joint, at: &JointOrigin) -> Parsed<()> {
+    fn check_joint(&self, tag: &Tag, joint: &Joint, at: &JointOrigin) -> Parsed<()> {
         let legacy = self.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]

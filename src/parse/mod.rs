@@ -1,6 +1,14 @@
-//! The quick-xml event loop: a thin pull parser over the decoded text that enforces the
-//! limits and hands whole elements, values and attributes to one handler per object kind
-//! (`world`, `shape`, `fixture`, `body`, `joint`, `user_data`).
+//! The event loop: a pull tokenizer over the decoded text (whole, or a window moving over a
+//! streamed file) that enforces the limits and hands whole elements, values and attributes
+//! to one handler per object kind (`world`, `shape`, `fixture`, `body`, `joint`,
+//! `user_data`).
+//!
+//! The markup is quick-xml's: its element parser finds where a tag ends (quotes included),
+//! its attribute iterator reads and checks attributes, its reference and declaration types
+//! resolve entities and read the XML declaration, and its errors are the messages. The loop
+//! itself is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
+//! again; the text here was checked once, as a whole, and slices of it at ASCII markup are
+//! text by construction.
 #![forbid(unsafe_code)]
 
 mod body;
@@ -14,34 +22,48 @@ pub(crate) use joint::canonical_joint;
 pub(crate) use user_data::user_data_fragment;
 
 use std::borrow::Cow;
+use std::path::Path;
 
-use quick_xml::Reader;
+use quick_xml::errors::{IllFormedError, SyntaxError};
 use quick_xml::events::attributes::AttrError;
-use quick_xml::events::{BytesStart, Event};
+use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
+use quick_xml::parser::{ElementParser, Parser as _};
 
 use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
-use crate::input::{self, Decoded, Encoding, Locator};
+use crate::input::{Encoding, Locator, Source};
 use crate::scene::{Scene, SceneBuilder, Vec2};
 use crate::text::{self, BadValue, trim_xml};
 use crate::{LoadOptions, resolve, validate};
 
-/// Loads a scene: decode, parse into the arena, check cross references, freeze.
+/// Loads a scene from the bytes of a file.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
-    let decoded = input::decode(bytes, options)?;
-    let mut parser = Parser::new(&decoded, options);
+    parse(Source::memory(bytes, options)?, options)
+}
+
+/// Loads a scene from a file, reading it a chunk at a time.
+pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Scene, Error> {
+    parse(Source::path(path, options)?, options)
+}
+
+/// Parses into the arena, checks cross references, freezes; positions are worked out
+/// only when there are diagnostics, by reading the text again.
+fn parse(source: Source<'_>, options: &LoadOptions) -> Result<Scene, Error> {
+    let mut parser = Parser::new(source, options);
     let outcome = parser
         .document()
         .and_then(|()| resolve::resolve(&mut parser))
         .and_then(|()| validate::dynamic_bodies_without_mass(&mut parser));
-    let mut locator = Locator::new(&decoded);
     if let Err(problem) = outcome {
+        let mut locator = Locator::new(&parser.source);
         return Err(Error {
             code: problem.code,
             position: locator.locate(problem.at),
             message: problem.message,
         });
     }
-    let Parser { mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), .. } = parser;
+    let Parser {
+        source, mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), ..
+    } = parser;
     warnings.sort_by_key(|w| w.at);
     if dropped > 0 {
         let message = format!(
@@ -49,17 +71,20 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
         );
         warnings.push(problem(Code::WarningsTruncated, first_dropped, message));
     }
-    for w in warnings {
-        let position = locator.locate(w.at);
-        let message = scene.add_str(&w.message);
-        scene.diagnostics.push(Diagnostic {
-            message,
-            byte_offset: position.byte_offset,
-            code: w.code as u32,
-            severity: Severity::Warning as u32,
-            line: position.line,
-            column: position.column,
-        });
+    if !warnings.is_empty() {
+        let mut locator = Locator::new(&source);
+        for w in warnings {
+            let position = locator.locate(w.at);
+            let message = scene.add_str(&w.message);
+            scene.diagnostics.push(Diagnostic {
+                message,
+                byte_offset: position.byte_offset,
+                code: w.code as u32,
+                severity: Severity::Warning as u32,
+                line: position.line,
+                column: position.column,
+            });
+        }
     }
     Ok(scene.freeze())
 }
@@ -78,48 +103,109 @@ pub fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
     Problem { code, at, message: message.into() }
 }
 
-/// A start tag (`<Name ...>` or `<Name .../>`) and where it begins.
-pub(crate) struct Tag<'a> {
-    start: BytesStart<'a>,
+fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
+    problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
+}
+
+/// A start tag (`<Name ...>` or `<Name .../>`) and where it begins. It owns what it needs,
+/// so it outlives the text window it was read from.
+pub(crate) struct Tag {
+    name: Name,
+    /// What lies between `<` and `>` (or `/>`), when the tag has more than its name.
+    content: Option<Box<str>>,
     /// Offset of its `<`.
     pub at: usize,
     /// `<Name/>`: it has no children and no text.
     pub empty: bool,
 }
 
-impl Tag<'_> {
+impl Tag {
     pub fn name(&self) -> &str {
-        self.start.name().into_inner()
+        self.name.as_str()
     }
 
     /// Names compare case-insensitively (spec section 2).
     pub fn is(&self, name: &str) -> bool {
-        self.name().eq_ignore_ascii_case(name)
+        self.name.as_bytes().eq_ignore_ascii_case(name.as_bytes())
     }
 }
 
-/// The trimmed text of a value element and the offset of its first character.
-pub(crate) struct Value<'a> {
-    pub text: Cow<'a, str>,
+/// An element name, kept inline (and in lowercase too) when short, as names almost
+/// always are.
+enum Name {
+    Short { len: u8, name: [u8; 22], lowercase: [u8; 22] },
+    Long(Box<str>),
+}
+
+impl Name {
+    fn new(name: &str) -> Name {
+        let mut inline = [0; 22];
+        match inline.get_mut(..name.len()) {
+            Some(bytes) => {
+                bytes.copy_from_slice(name.as_bytes());
+                let mut lowercase = inline;
+                lowercase.make_ascii_lowercase();
+                Name::Short { len: name.len() as u8, name: inline, lowercase }
+            }
+            None => Name::Long(name.into()),
+        }
+    }
+
+    fn as_bytes(&self) -> &[u8] {
+        match self {
+            Name::Short { len, name, .. } => &name[..usize::from(*len)],
+            Name::Long(name) => name.as_bytes(),
+        }
+    }
+
+    /// The name in lowercase, when it is short.
+    fn lowercase(&self) -> Option<&[u8]> {
+        match self {
+            Name::Short { len, lowercase, .. } => Some(&lowercase[..usize::from(*len)]),
+            Name::Long(_) => None,
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        match self {
+            // Whole names are copied, so the bytes are text.
+            Name::Short { .. } => std::str::from_utf8(self.as_bytes()).unwrap_or_default(),
+            Name::Long(name) => name,
+        }
+    }
+}
+
+/// A piece of text: a range of the decoded text, or its resolved form when it held
+/// references or carriage returns. Read it with [`Parser::text_of`] before the next node.
+pub(crate) struct Text {
+    at: usize,
+    end: usize,
+    resolved: Option<String>,
+}
+
+/// The trimmed text of a value element and the offset of its first character. Read it
+/// with [`Parser::text_of`] before the next node.
+pub(crate) struct Value {
+    text: Text,
     pub at: usize,
 }
 
 /// An attribute: lowercase comparisons go through [`Attr::is`].
-pub(crate) struct Attr<'t> {
-    key: &'t str,
-    pub value: Cow<'t, str>,
+pub(crate) struct Attr {
+    key: String,
+    pub value: String,
     pub at: usize,
 }
 
-impl Attr<'_> {
+impl Attr {
     pub fn is(&self, lowercase_name: &str) -> bool {
         self.key.eq_ignore_ascii_case(lowercase_name)
     }
 }
 
-enum Node<'a> {
-    Open(Tag<'a>),
-    Text(Cow<'a, str>, usize),
+enum Node {
+    Open(Tag),
+    Text(Text),
     /// An end tag, at the offset of its `<`.
     Close(usize),
     Eof,
@@ -172,11 +258,19 @@ pub(crate) struct JointOrigin {
 }
 
 pub struct Parser<'a> {
-    reader: Reader<&'a [u8]>,
-    text: &'a str,
-    encoding: Encoding,
+    source: Source<'a>,
     options: &'a LoadOptions,
-    depth: u32,
+    /// The tokenizer's offset: the next node starts here.
+    pos: usize,
+    /// Where the node being read and the one before it began: the text from the one
+    /// before on stays at hand, so a value can be read after the end tag that ends it.
+    started: usize,
+    last: usize,
+    /// Set while UserData is read: its text stays at hand from here on.
+    pinned: Option<usize>,
+    /// The names of the open elements, one after the other, and where each starts.
+    open_names: String,
+    open_starts: Vec<usize>,
     elements: u64,
     /// The file's Version; 0 for an unversioned legacy file.
     pub version: u32,
@@ -188,18 +282,16 @@ pub struct Parser<'a> {
 }
 
 impl<'a> Parser<'a> {
-    fn new(decoded: &'a Decoded<'a>, options: &'a LoadOptions) -> Parser<'a> {
-        let text: &'a str = &decoded.text;
-        let mut reader = Reader::from_str(text);
-        let config = reader.config_mut();
-        config.check_end_names = true;
-        config.trim_text(false);
+    fn new(source: Source<'a>, options: &'a LoadOptions) -> Parser<'a> {
         Parser {
-            reader,
-            text,
-            encoding: decoded.encoding,
+            source,
             options,
-            depth: 0,
+            pos: 0,
+            started: 0,
+            last: 0,
+            pinned: None,
+            open_names: String::new(),
+            open_starts: Vec::new(),
             elements: 0,
             version: 0,
             scene: SceneBuilder::default(),
@@ -252,68 +344,265 @@ impl<'a> Parser<'a> {
         )
     }
 
-    fn next_node(&mut self) -> Parsed<Node<'a>> {
-        loop {
-            let at = self.reader.buffer_position() as usize;
-            let event = self.reader.read_event().map_err(|e| self.xml_error(e))?;
-            return Ok(match event {
-                Event::Start(start) => {
-                    self.depth += 1;
-                    if self.depth > self.options.max_depth {
-                        return Err(self.limit(at, "max_depth", self.options.max_depth.into()));
-                    }
-                    self.open(start, at, false)?
-                }
-                Event::Empty(start) => self.open(start, at, true)?,
-                Event::End(_) => {
-                    self.depth -= 1;
-                    Node::Close(at)
-                }
-                Event::Text(t) => self.text_node(t.xml10_content(), at)?,
-                Event::CData(c) => self.text_node(c.into_inner(), at + "<![CDATA[".len())?,
-                Event::GeneralRef(r) => {
-                    let resolved = match r.resolve_char_ref() {
-                        Ok(Some(c)) => c.to_string(),
-                        _ => quick_xml::escape::resolve_predefined_entity(&r)
-                            .ok_or_else(|| unknown_entity(&r, at))?
-                            .to_string(),
-                    };
-                    Node::Text(Cow::Owned(resolved), at)
-                }
-                Event::Decl(decl) => {
-                    self.check_declared_encoding(&decl, at)?;
-                    continue;
-                }
-                Event::DocType(_) => {
-                    return Err(problem(
-                        Code::DoctypeForbidden,
-                        at,
-                        "a <!DOCTYPE> is not allowed in a scene file: box2scene never expands \
-                         entities or fetches DTDs",
-                    ));
-                }
-                Event::Comment(_) | Event::PI(_) => continue,
-                Event::Eof => Node::Eof,
-            });
+    // ---- the tokenizer
+
+    /// The text at hand from offset `from` on (empty when `from` is past it).
+    fn rest(&self, from: usize) -> &[u8] {
+        let text = self.source.text().as_bytes();
+        text.get(from - self.source.base()..).unwrap_or_default()
+    }
+
+    /// Reads more text, keeping what the current node and the last one need. Ok(false)
+    /// at the end of the file; the problem that ends the text early, when that is why.
+    fn more(&mut self) -> Parsed<bool> {
+        let keep = self.last.min(self.pinned.unwrap_or(usize::MAX));
+        if self.source.more(keep) {
+            return Ok(true);
+        }
+        match self.source.stop() {
+            Some(stop) => Err(problem(stop.code, stop.at, stop.message.clone())),
+            None => Ok(false),
         }
     }
 
-    fn open(&mut self, start: BytesStart<'a>, at: usize, empty: bool) -> Parsed<Node<'a>> {
+    /// The offset at which `find` first succeeds on the text from `from` on, reading more
+    /// as needed; None at the end of the file. `find` is given the text from where it
+    /// stopped last, less `overlap` bytes (a delimiter of `overlap + 1` bytes may be cut by
+    /// the end of the text at hand), and returns an offset into it. A node longer than
+    /// `max_text_bytes` is refused before it is all read.
+    fn scan(
+        &mut self,
+        start: usize,
+        mut from: usize,
+        overlap: usize,
+        mut find: impl FnMut(&[u8]) -> Option<usize>,
+    ) -> Parsed<Option<usize>> {
+        loop {
+            let rest = self.rest(from);
+            if let Some(i) = find(rest) {
+                return Ok(Some(from + i));
+            }
+            from = (from + rest.len()).saturating_sub(overlap).max(from);
+            if (from - start) as u64 > self.options.max_text_bytes {
+                return Err(self.limit(start, "max_text_bytes", self.options.max_text_bytes));
+            }
+            if !self.more()? {
+                return Ok(None);
+            }
+        }
+    }
+
+    /// Skips the white space at hand before the next node: blank text between elements
+    /// is never a node of its own where only elements may follow.
+    fn skip_space(&mut self) {
+        let rest = self.rest(self.pos);
+        self.pos += rest.iter().position(|&b| !text::is_xml_space_byte(b)).unwrap_or(rest.len());
+    }
+
+    fn next_node(&mut self) -> Parsed<Node> {
+        (self.last, self.started) = (self.started, self.pos);
+        loop {
+            let at = self.pos;
+            let second = match *self.rest(at) {
+                [b'<', second, ..] => second,
+                [first, ..] if first != b'<' => return self.text_node(at),
+                // `<` or nothing at the end of the text at hand.
+                ref end => {
+                    let lone = !end.is_empty();
+                    if self.more()? {
+                        continue;
+                    }
+                    return match lone {
+                        true => Err(malformed(at, SyntaxError::UnclosedTag)),
+                        false => Ok(Node::Eof),
+                    };
+                }
+            };
+            match second {
+                b'/' => return self.end_tag(at),
+                b'?' => self.processing_instruction(at)?,
+                b'!' => match self.bang(at)? {
+                    Some(node) => return Ok(node),
+                    None => continue,
+                },
+                _ => return self.start_tag(at),
+            }
+        }
+    }
+
+    /// Text up to the next markup, its references resolved and its line ends normalised.
+    fn text_node(&mut self, at: usize) -> Parsed<Node> {
+        let mut plain = true;
+        let end = self.scan(at, at, 0, |rest| {
+            let mut from = 0;
+            while let Some(i) = find3(&rest[from..], b'<', b'&', b'\r') {
+                if rest[from + i] == b'<' {
+                    return Some(from + i);
+                }
+                plain = false;
+                from += i + 1;
+            }
+            None
+        })?;
+        let end = end.unwrap_or(self.source.end());
+        if (end - at) as u64 > self.options.max_text_bytes {
+            return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+        }
+        self.pos = end;
+        let resolved = match plain {
+            true => None,
+            false => Some(resolve_text(self.source.slice(at, end), at)?),
+        };
+        Ok(Node::Text(Text { at, end, resolved }))
+    }
+
+    /// The end of a tag that starts at `at`: the offset of its `>`.
+    fn tag_end(&mut self, at: usize) -> Parsed<usize> {
+        // Most tags have no attributes, so no quotes that could hold a `>`.
+        if let Some(i) = find3(self.rest(at + 1), b'>', b'"', b'\'') {
+            if self.rest(at + 1)[i] == b'>' {
+                return Ok(at + 1 + i);
+            }
+        }
+        let mut parser = ElementParser::Outside;
+        match self.scan(at, at + 1, 0, |rest| parser.feed(rest))? {
+            Some(end) => Ok(end),
+            None => Err(malformed(at, parser.eof_error(&[]))),
+        }
+    }
+
+    fn start_tag(&mut self, at: usize) -> Parsed<Node> {
+        let rest = self.rest(at + 1);
+        let stop = rest
+            .iter()
+            .position(|&b| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'/' | b'>' | b'"' | b'\''));
+        // `<Name>` and `<Name/>`, the usual tags, end right after their name.
+        let simple = match stop {
+            Some(i) if rest[i] == b'>' => Some((i, false, at + 1 + i)),
+            Some(i) if rest[i] == b'/' && rest.get(i + 1) == Some(&b'>') => {
+                Some((i, true, at + 2 + i))
+            }
+            _ => None,
+        };
+        let tag = match simple {
+            Some((name_len, empty, end)) => {
+                self.pos = end + 1;
+                let name = self.source.slice(at + 1, at + 1 + name_len);
+                Tag { name: Name::new(name), content: None, at, empty }
+            }
+            None => {
+                let end = self.tag_end(at)?;
+                self.pos = end + 1;
+                let content = self.source.slice(at + 1, end);
+                let (content, empty) = match content.strip_suffix('/') {
+                    Some(content) => (content, true),
+                    None => (content, false),
+                };
+                let name_len =
+                    content.bytes().position(text::is_xml_space_byte).unwrap_or(content.len());
+                let name = &content[..name_len];
+                let content = (content.len() > name_len).then(|| content.into());
+                Tag { name: Name::new(name), content, at, empty }
+            }
+        };
+        let (empty, name_len) = (tag.empty, tag.name.as_bytes().len());
         self.elements += 1;
         if self.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
         }
-        if start.name().as_ref().len() as u64 > self.options.max_text_bytes {
-            return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+        if !empty {
+            if self.open_starts.len() as u64 >= u64::from(self.options.max_depth) {
+                return Err(self.limit(at, "max_depth", self.options.max_depth.into()));
+            }
+            self.open_starts.push(self.open_names.len());
+            let name = self.source.slice(at + 1, at + 1 + name_len);
+            self.open_names.push_str(name);
         }
-        Ok(Node::Open(Tag { start, at, empty }))
+        Ok(Node::Open(tag))
     }
 
-    fn text_node(&self, text: Cow<'a, str>, at: usize) -> Parsed<Node<'a>> {
-        if text.len() as u64 > self.options.max_text_bytes {
-            return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+    fn end_tag(&mut self, at: usize) -> Parsed<Node> {
+        // The usual end tag: `</Name>` of the open element.
+        if let Some(&start) = self.open_starts.last() {
+            let expected = &self.open_names.as_bytes()[start..];
+            let rest = self.rest(at + 2);
+            if rest.get(expected.len()) == Some(&b'>') && rest.starts_with(expected) {
+                self.pos = at + 3 + expected.len();
+                self.open_starts.pop();
+                self.open_names.truncate(start);
+                return Ok(Node::Close(at));
+            }
         }
-        Ok(Node::Text(text, at))
+        let end = self.tag_end(at)?;
+        self.pos = end + 1;
+        let found = self.source.slice(at + 2, end).trim_end_matches(text::is_xml_space);
+        let Some(start) = self.open_starts.pop() else {
+            return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
+        };
+        if self.open_names[start..] != *found {
+            let expected = self.open_names[start..].to_owned();
+            let found = found.to_owned();
+            return Err(malformed(at, IllFormedError::MismatchedEndTag { expected, found }));
+        }
+        self.open_names.truncate(start);
+        Ok(Node::Close(at))
+    }
+
+    /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
+    fn processing_instruction(&mut self, at: usize) -> Parsed<()> {
+        let end = self.scan(at, at + 2, 1, |rest| memchr::memmem::find(rest, b"?>"))?;
+        let Some(end) = end else {
+            let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
+            return Err(malformed(at, unclosed));
+        };
+        self.pos = end + 2;
+        let content = self.source.slice(at + 2, end);
+        let is_declaration = content.starts_with("xml")
+            && content.as_bytes().get(3).is_none_or(|&b| text::is_xml_space_byte(b));
+        if is_declaration {
+            let decl = BytesDecl::from_start(BytesStart::from_content(content, 3));
+            self.check_declared_encoding(&decl, at)?;
+        }
+        Ok(())
+    }
+
+    /// `<!...`: a comment (skipped: None), CDATA (its text), or a DOCTYPE (refused).
+    fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
+        while self.rest(at).len() < 9 && self.more()? {}
+        let head = self.rest(at);
+        if head.starts_with(b"<!--") {
+            let end = self.scan(at, at + 4, 2, |rest| memchr::memmem::find(rest, b"-->"))?;
+            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
+            self.pos = end + 3;
+            return Ok(None);
+        }
+        if head.starts_with(b"<![CDATA[") {
+            let end = self.scan(at, at + 9, 2, |rest| memchr::memmem::find(rest, b"]]>"))?;
+            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedCData))?;
+            self.pos = end + 3;
+            return Ok(Some(Node::Text(Text { at: at + 9, end, resolved: None })));
+        }
+        if matches!(head.get(2), Some(b'D' | b'd')) {
+            return Err(problem(
+                Code::DoctypeForbidden,
+                at,
+                "a <!DOCTYPE> is not allowed in a scene file: box2scene never expands entities \
+                 or fetches DTDs",
+            ));
+        }
+        Err(malformed(at, SyntaxError::InvalidBangMarkup))
+    }
+
+    /// The text of `t`, valid until the next node is read.
+    pub fn text_of<'t>(&'t self, t: &'t Text) -> &'t str {
+        match &t.resolved {
+            Some(resolved) => resolved,
+            None => self.source.slice(t.at, t.end),
+        }
+    }
+
+    fn is_blank(&self, t: &Text) -> bool {
+        trim_xml(self.text_of(t)).is_empty()
     }
 
     pub fn limit(&self, at: usize, name: &str, value: u64) -> Problem {
@@ -326,26 +615,12 @@ impl<'a> Parser<'a> {
         )
     }
 
-    fn xml_error(&self, e: quick_xml::Error) -> Problem {
-        let at = self.reader.error_position() as usize;
-        match e {
-            quick_xml::Error::InvalidAttr(AttrError::Duplicated(..)) => {
-                problem(Code::DuplicateAttribute, at, format!("malformed XML: {e}"))
-            }
-            e => problem(Code::MalformedXml, at, format!("malformed XML: {e}")),
-        }
-    }
-
-    fn check_declared_encoding(
-        &self,
-        decl: &quick_xml::events::BytesDecl,
-        at: usize,
-    ) -> Parsed<()> {
+    fn check_declared_encoding(&self, decl: &BytesDecl, at: usize) -> Parsed<()> {
         let Some(Ok(declared)) = decl.encoding() else {
             return Ok(());
         };
         let declared = declared.to_ascii_lowercase();
-        let fits = match self.encoding {
+        let fits = match self.source.encoding() {
             Encoding::Utf8 { .. } => matches!(declared.as_str(), "utf-8" | "utf8"),
             Encoding::Utf16 { .. } => declared.starts_with("utf-16") || declared == "unicode",
         };
@@ -364,21 +639,23 @@ impl<'a> Parser<'a> {
 
     /// The next child element of `parent`, or None at its end. Blank text and comments are
     /// skipped; other text is an error.
-    pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag<'a>>> {
+    pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         if parent.empty {
             return Ok(None);
         }
         loop {
+            self.skip_space();
             match self.next_node()? {
                 Node::Open(tag) => return Ok(Some(tag)),
                 Node::Close(_) => return Ok(None),
-                Node::Text(t, at) => {
-                    let text = trim_xml(&t);
+                Node::Text(t) => {
+                    let all = self.text_of(&t);
+                    let text = trim_xml(all);
                     if !text.is_empty() {
-                        let lead = t.len() - t.trim_start_matches(text::is_xml_space).len();
+                        let lead = all.len() - all.trim_start_matches(text::is_xml_space).len();
                         return Err(problem(
                             Code::UnexpectedText,
-                            at + lead,
+                            t.at + lead,
                             format!(
                                 "text '{}' inside <{}>, which holds only elements",
                                 shorten(text),
@@ -393,22 +670,23 @@ impl<'a> Parser<'a> {
     }
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
-    pub fn value(&mut self, tag: &Tag) -> Parsed<Value<'a>> {
-        let mut value: Option<(Cow<'a, str>, usize)> = None;
+    pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
+        let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
                 match self.next_node()? {
-                    Node::Text(t, at) => match &mut value {
-                        None => value = Some((t, at)),
-                        Some((text, _)) => {
-                            text.to_mut().push_str(&t);
-                            if text.len() as u64 > self.options.max_text_bytes {
+                    Node::Text(t) => match &mut value {
+                        None => value = Some(t),
+                        Some(first) => {
+                            let joined = self.text_of(first).to_owned() + self.text_of(&t);
+                            if joined.len() as u64 > self.options.max_text_bytes {
                                 return Err(self.limit(
-                                    at,
+                                    t.at,
                                     "max_text_bytes",
                                     self.options.max_text_bytes,
                                 ));
                             }
+                            first.resolved = Some(joined);
                         }
                     },
                     Node::Open(child) => {
@@ -427,15 +705,24 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        let Some((text, at)) = value else {
-            return Ok(Value { text: Cow::Borrowed(""), at: tag.at });
+        let Some(mut text) = value else {
+            return Ok(Value {
+                text: Text { at: tag.at, end: tag.at, resolved: None },
+                at: tag.at,
+            });
         };
-        let lead = text.len() - text.trim_start_matches(text::is_xml_space).len();
-        let text = match text {
-            Cow::Borrowed(t) => Cow::Borrowed(trim_xml(t)),
-            Cow::Owned(t) => Cow::Owned(trim_xml(&t).to_owned()),
-        };
-        Ok(Value { text, at: at + lead })
+        let all = self.text_of(&text);
+        let lead = all.bytes().position(|b| !text::is_xml_space_byte(b)).unwrap_or(all.len());
+        let trimmed = trim_xml(&all[lead..]).len();
+        match &mut text.resolved {
+            Some(resolved) => {
+                resolved.truncate(lead + trimmed);
+                resolved.drain(..lead);
+            }
+            None => (text.at, text.end) = (text.at + lead, text.at + lead + trimmed),
+        }
+        let at = text.at + lead * usize::from(text.resolved.is_some());
+        Ok(Value { text, at })
     }
 
     /// Reads a value element and converts its text with `convert`.
@@ -445,7 +732,7 @@ impl<'a> Parser<'a> {
         convert: fn(&str) -> Result<T, BadValue>,
     ) -> Parsed<(T, usize)> {
         let value = self.value(tag)?;
-        match convert(&value.text) {
+        match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
             Err(e) => {
                 Err(problem(e.code, value.at + e.at, format!("<{}>: {}", tag.name(), e.message)))
@@ -460,7 +747,10 @@ impl<'a> Parser<'a> {
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.parsed(tag, text::float)?;
-        not_negative(&format!("<{}>", tag.name()), v, at)
+        if v < 0.0 {
+            return not_negative(&format!("<{}>", tag.name()), v, at);
+        }
+        Ok(v)
     }
 
     pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
@@ -497,20 +787,31 @@ impl<'a> Parser<'a> {
     /// A string value, stored in the scene's string pool.
     pub fn string(&mut self, tag: &Tag) -> Parsed<crate::scene::Str> {
         let value = self.value(tag)?;
-        Ok(self.scene.add_str(&value.text))
+        let Parser { source, scene, .. } = self;
+        let text = match &value.text.resolved {
+            Some(resolved) => resolved,
+            None => source.slice(value.text.at, value.text.end),
+        };
+        Ok(scene.add_str(text))
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
-    pub fn attributes<'t>(&self, tag: &'t Tag<'a>) -> Parsed<Vec<Attr<'t>>> {
+    pub fn attributes(&self, tag: &Tag) -> Parsed<Vec<Attr>> {
+        let Some(content) = &tag.content else {
+            return Ok(Vec::new());
+        };
+        let start = BytesStart::from_content(&**content, tag.name.as_bytes().len());
         let mut attrs = Vec::new();
-        for attr in tag.start.attributes() {
+        for attr in start.attributes() {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
-            let at = self.offset_of(&attr.value).unwrap_or(tag.at);
+            // Offsets in `content` count from the first byte after `<`.
+            let offset = attr.value.as_ptr().addr().checked_sub(content.as_ptr().addr());
+            let at = offset.map_or(tag.at, |offset| tag.at + 1 + offset);
             let value = attr
                 .normalized_value(quick_xml::XmlVersion::Implicit1_0)
                 .map_err(|e| problem(Code::MalformedXml, at, format!("malformed XML: {e}")))?;
-            let key = attr.key.into_inner();
-            attrs.push(Attr { key, value: Cow::Owned(value.into_owned()), at });
+            let key = attr.key.into_inner().to_owned();
+            attrs.push(Attr { key, value: value.into_owned(), at });
         }
         Ok(attrs)
     }
@@ -528,19 +829,8 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Where a slice of the input starts, when it is one.
-    fn offset_of(&self, s: &str) -> Option<usize> {
-        let offset = s.as_ptr().addr().checked_sub(self.text.as_ptr().addr())?;
-        (offset <= self.text.len()).then_some(offset)
-    }
-
     /// Warns about every attribute of `tag` except the lowercase names in `known`.
-    pub fn unknown_attributes(
-        &mut self,
-        tag: &Tag<'a>,
-        attrs: &[Attr],
-        known: &[&str],
-    ) -> Parsed<()> {
+    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             let message = format!("unknown attribute {} on <{}> ignored", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
@@ -572,7 +862,7 @@ impl<'a> Parser<'a> {
         self.skip(child)
     }
 
-    /// Looks `child` up among an object's known elements (lowercase). Returns its canonical
+    /// Looks `child` up among an object's known elements (any case). Returns its canonical
     /// name and whether the object already had it; None (after a warning and a skip) when
     /// it is not one of them.
     pub fn known(
@@ -582,7 +872,13 @@ impl<'a> Parser<'a> {
         names: &[&'static str],
         seen: &mut Seen,
     ) -> Parsed<Option<(&'static str, bool)>> {
-        let Some(index) = names.iter().position(|n| child.is(n)) else {
+        let found = match child.name.lowercase() {
+            Some(lowercase) => names.iter().position(|n| {
+                n.len() == lowercase.len() && n.as_bytes().eq_ignore_ascii_case(lowercase)
+            }),
+            None => names.iter().position(|n| child.is(n)),
+        };
+        let Some(index) = found else {
             self.unknown(parent, child)?;
             return Ok(None);
         };
@@ -618,7 +914,7 @@ impl<'a> Parser<'a> {
         &mut self,
         container: &Tag,
         item: &str,
-        mut each: impl FnMut(&mut Self, Tag<'a>) -> Parsed<()>,
+        mut each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
     ) -> Parsed<()> {
         while let Some(child) = self.child(container)? {
             if !child.is(item) {
@@ -644,7 +940,7 @@ impl<'a> Parser<'a> {
     fn unclosed(&self, tag: &Tag) -> Problem {
         problem(
             Code::MalformedXml,
-            self.text.len(),
+            self.source.end(),
             format!(
                 "malformed XML: the file ends before </{}> (opened at byte {})",
                 tag.name(),
@@ -653,19 +949,73 @@ impl<'a> Parser<'a> {
         )
     }
 
-    /// The offset the reader has reached: just past the last event read.
+    /// The offset the tokenizer has reached: just past the last node read.
     pub fn position(&self) -> usize {
-        self.reader.buffer_position() as usize
+        self.pos
     }
 
-    /// The decoded text between two offsets (UserData keeps its inner XML verbatim).
-    pub fn slice(&self, from: usize, to: usize) -> &'a str {
-        self.text.get(from..to).unwrap_or_default()
+    /// Keeps the text from `from` on at hand (UserData keeps its inner XML verbatim),
+    /// until [`Parser::unpin`].
+    fn pin(&mut self, from: usize) {
+        self.pinned = Some(from);
+    }
+
+    /// The text from the pinned offset to `to`, and lets it go.
+    fn unpin(&mut self, to: usize) -> String {
+        let from = self.pinned.take().unwrap_or(to);
+        self.source.slice(from, to).to_owned()
     }
 }
 
-fn unknown_entity(r: &quick_xml::events::BytesRef, at: usize) -> Problem {
-    let name: &str = r;
+/// The offset of the first of three bytes in `hay`. Nodes are short: their first bytes
+/// are looked at one by one, which is cheaper than setting up memchr, which takes the rest.
+fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
+    let head = hay.len().min(32);
+    match hay[..head].iter().position(|&x| x == a || x == b || x == c) {
+        Some(i) => Some(i),
+        None => memchr::memchr3(a, b, c, &hay[head..]).map(|i| i + head),
+    }
+}
+
+/// Text with references or carriage returns: references resolved (only the five
+/// predefined entities and character references exist), line ends normalised to `\n`.
+fn resolve_text(raw: &str, at: usize) -> Parsed<String> {
+    let mut out = String::with_capacity(raw.len());
+    let (mut rest, mut offset) = (raw, at);
+    while let Some(amp) = memchr::memchr(b'&', rest.as_bytes()) {
+        push_normalised(&mut out, &rest[..amp]);
+        let after = &rest[amp + 1..];
+        let name = match memchr::memchr2(b';', b'&', after.as_bytes()) {
+            Some(semi) if after.as_bytes()[semi] == b';' => &after[..semi],
+            _ => return Err(malformed(offset + amp, IllFormedError::UnclosedReference)),
+        };
+        let reference = BytesRef::new(name);
+        match reference.resolve_char_ref() {
+            Ok(Some(c)) => out.push(c),
+            _ => match quick_xml::escape::resolve_predefined_entity(name) {
+                Some(resolved) => out.push_str(resolved),
+                None => return Err(unknown_entity(name, offset + amp)),
+            },
+        }
+        let used = amp + 1 + name.len() + 1;
+        rest = &rest[used..];
+        offset += used;
+    }
+    push_normalised(&mut out, rest);
+    Ok(out)
+}
+
+/// Appends `text` with `\r\n` and lone `\r` made `\n` (XML 1.0 section 2.11).
+fn push_normalised(out: &mut String, text: &str) {
+    let mut pieces = text.split('\r');
+    out.push_str(pieces.next().unwrap_or_default());
+    for piece in pieces {
+        out.push('\n');
+        out.push_str(piece.strip_prefix('\n').unwrap_or(piece));
+    }
+}
+
+fn unknown_entity(name: &str, at: usize) -> Problem {
     problem(
         Code::MalformedXml,
         at,

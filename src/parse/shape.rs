@@ -39,7 +39,7 @@ fn belongs(kind: ShapeKind, name: &str) -> bool {
 }
 
 impl<'a> Parser<'a> {
-    pub(super) fn shape(&mut self, tag: Tag<'a>) -> Parsed<()> {
+    pub(super) fn shape(&mut self, tag: Tag) -> Parsed<()> {
         let mut shape = self.shape_type(&tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
@@ -114,7 +114,7 @@ impl<'a> Parser<'a> {
 
     /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
     /// the `Density` of the fixtures made with it).
-    fn shape_type(&mut self, tag: &Tag<'a>) -> Parsed<Shape> {
+    fn shape_type(&mut self, tag: &Tag) -> Parsed<Shape> {
         let attrs = self.attributes(tag)?;
         let known: &[&str] =
             if self.farseer_layout() { &["type", "name", "density"] } else { &["type", "name"] };
@@ -164,7 +164,7 @@ impl<'a> Parser<'a> {
     }
 
     /// `<Vertices>` of a polygon (at most 8) or a chain (at most the chain limit).
-    fn vertices(&mut self, tag: &Tag<'a>, kind: ShapeKind) -> Parsed<Range> {
+    fn vertices(&mut self, tag: &Tag, kind: ShapeKind) -> Parsed<Range> {
         let first = self.scene.vertices.len();
         let most = match kind {
             ShapeKind::Polygon => validate::MAX_POLYGON_VERTICES,
@@ -188,7 +188,7 @@ impl<'a> Parser<'a> {
         Ok(Range { first: first as u32, count: (self.scene.vertices.len() - first) as u32 })
     }
 
-    fn check_geometry(&mut self, tag: &Tag<'a>, shape: &Shape) -> Parsed<()> {
+    fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Parsed<()> {
         let vertices = &self.scene.vertices[shape.vertices.indices()];
         let checked = match shape.kind() {
             Some(ShapeKind::Polygon) => validate::polygon(vertices),

@@ -4,7 +4,7 @@
 use super::{Node, Parsed, Parser, Tag, trim_xml};
 use crate::LoadOptions;
 use crate::error::Code;
-use crate::input;
+use crate::input::Source;
 use crate::scene::{Str, UserData};
 
 /// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would: the
@@ -15,8 +15,8 @@ pub(crate) fn user_data_fragment(
 ) -> Result<(Option<String>, Option<String>), (Code, String)> {
     let document = format!("<UserData>{raw}</UserData>");
     let options = LoadOptions::default();
-    let decoded = input::decode(document.as_bytes(), &options).map_err(|e| (e.code, e.message))?;
-    let mut parser = Parser::new(&decoded, &options);
+    let source = Source::memory(document.as_bytes(), &options).map_err(|e| (e.code, e.message))?;
+    let mut parser = Parser::new(source, &options);
     let read = |p: &mut Parser| -> Parsed<EditorForm> {
         let Node::Open(tag) = p.next_node()? else {
             unreachable!("the document starts with <UserData>")
@@ -73,20 +73,22 @@ enum Inside {
 
 impl<'a> Parser<'a> {
     /// Stores the user data of `tag` and returns its index.
-    pub(super) fn user_data(&mut self, tag: &Tag<'a>) -> Parsed<u32> {
-        let (raw, form) =
-            if tag.empty { ("", EditorForm::default()) } else { self.walk_user_data(tag)? };
+    pub(super) fn user_data(&mut self, tag: &Tag) -> Parsed<u32> {
+        let (raw, form) = match tag.empty {
+            true => (String::new(), EditorForm::default()),
+            false => self.walk_user_data(tag)?,
+        };
         let (type_name, value) = form.texts();
         let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.scene.add_str(&s));
         let (type_name, value) = (add(type_name), add(value));
-        let raw = self.scene.add_str(raw);
+        let raw = self.scene.add_str(&raw);
         self.scene.user_data.push(UserData { raw, type_name, value });
         Ok((self.scene.user_data.len() - 1) as u32)
     }
 
     /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
-    fn walk_user_data(&mut self, tag: &Tag<'a>) -> Parsed<(&'a str, EditorForm)> {
-        let start = self.position();
+    fn walk_user_data(&mut self, tag: &Tag) -> Parsed<(String, EditorForm)> {
+        self.pin(self.position());
         let mut form = EditorForm::default();
         let mut path: Vec<Inside> = Vec::new();
         loop {
@@ -116,18 +118,21 @@ impl<'a> Parser<'a> {
                         path.push(inside);
                     }
                 }
-                Node::Text(t, _) => match path.last() {
-                    Some(Inside::Type) => {
-                        form.type_name.get_or_insert_with(String::new).push_str(&t)
+                Node::Text(t) => {
+                    let t = self.text_of(&t);
+                    match path.last() {
+                        Some(Inside::Type) => {
+                            form.type_name.get_or_insert_with(String::new).push_str(t)
+                        }
+                        Some(Inside::ValueChild) => {
+                            form.value.get_or_insert_with(String::new).push_str(t)
+                        }
+                        _ => form.other |= !trim_xml(t).is_empty(),
                     }
-                    Some(Inside::ValueChild) => {
-                        form.value.get_or_insert_with(String::new).push_str(&t)
-                    }
-                    _ => form.other |= !trim_xml(&t).is_empty(),
-                },
+                }
                 Node::Close(at) => {
                     if path.pop().is_none() {
-                        return Ok((self.slice(start, at), form));
+                        return Ok((self.unpin(at), form));
                     }
                 }
                 Node::Eof => return Err(self.unclosed(tag)),

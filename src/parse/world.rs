@@ -12,10 +12,10 @@ impl<'a> Parser<'a> {
         let root = loop {
             match self.next_node()? {
                 super::Node::Open(tag) => break tag,
-                super::Node::Text(t, at) if !super::trim_xml(&t).is_empty() => {
+                super::Node::Text(t) if !self.is_blank(&t) => {
                     return Err(problem(
                         Code::MalformedXml,
-                        at,
+                        t.at,
                         "malformed XML: text before the root element",
                     ));
                 }
@@ -50,7 +50,7 @@ impl<'a> Parser<'a> {
         loop {
             match self.next_node()? {
                 super::Node::Eof => return Ok(()),
-                super::Node::Text(t, _) if super::trim_xml(&t).is_empty() => {}
+                super::Node::Text(t) if self.is_blank(&t) => {}
                 super::Node::Open(tag) => {
                     return Err(problem(
                         Code::MalformedXml,
@@ -61,7 +61,7 @@ impl<'a> Parser<'a> {
                         ),
                     ));
                 }
-                super::Node::Text(_, at) | super::Node::Close(at) => {
+                super::Node::Text(super::Text { at, .. }) | super::Node::Close(at) => {
                     return Err(problem(
                         Code::MalformedXml,
                         at,
@@ -72,7 +72,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn world(&mut self, root: &Tag<'a>) -> Parsed<()> {
+    fn world(&mut self, root: &Tag) -> Parsed<()> {
         self.read_version(root)?;
         let mut seen = Seen::default();
         while let Some(child) = self.child(root)? {
@@ -105,7 +105,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn read_version(&mut self, root: &Tag<'a>) -> Parsed<()> {
+    fn read_version(&mut self, root: &Tag) -> Parsed<()> {
         let attrs = self.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {

@@ -1,0 +1,148 @@
+//! Loading from a path reads the file a chunk at a time. Whatever falls on a chunk boundary
+//! (a tag, a value, a reference, a character of several bytes, UserData kept verbatim, a
+//! bad byte), the result must be exactly that of loading the same bytes from memory: the
+//! same scene, or the same error at the same position.
+
+use std::path::PathBuf;
+
+use box2scene::{LoadOptions, load, load_path};
+
+/// The bytes a path load reads at a time (`input::CHUNK`).
+const CHUNK: usize = 1 << 16;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Loads `bytes` from memory and from a file, checks that both give the same, and says
+/// whether the load succeeded.
+fn same_both_ways(bytes: &[u8], what: &str) -> bool {
+    let file =
+        std::env::temp_dir().join(format!("box2scene-streaming-{}-{what}.xml", std::process::id()));
+    std::fs::write(&file, bytes).unwrap();
+    let options = LoadOptions::default();
+    let from_path = load_path(&file, &options).map(|s| s.to_json());
+    std::fs::remove_file(&file).unwrap();
+    let from_memory = load(bytes, &options).map(|s| s.to_json());
+    match (from_memory, from_path) {
+        (Ok(memory), Ok(path)) => {
+            if memory != path {
+                let line = memory.lines().zip(path.lines()).find(|(m, p)| m != p);
+                panic!("{what}: the scenes differ: {line:?}");
+            }
+            true
+        }
+        (Err(memory), Err(path)) => {
+            assert_eq!(memory, path, "{what}");
+            false
+        }
+        (memory, path) => panic!("{what}: from memory {memory:?}, from the path {path:?}"),
+    }
+}
+
+/// A body with a name of several-byte characters, a reference, a line end to normalise,
+/// CDATA, a comment and editor-form UserData, all of which must survive any cut.
+fn body(i: usize) -> String {
+    format!(
+        "    <Body Type=\"Dynamic\">\r\n      <Name>b&amp;{i} é€日本&#x1F600;\r\n</Name>\n      \
+         <Position>{i}.5 -1.25e-1</Position><!-- c{i} -->\n      <AllowSleep>true</AllowSleep>\n      \
+         <UserData><Type>T{i}</Type><Value><x a=\"{i}\">{i} <![CDATA[<raw & {i}>]]></x></Value></UserData>\n      \
+         <Fixtures><ID>0</ID></Fixtures>\n    </Body>\n"
+    )
+}
+
+/// A scene of `bodies` such bodies after a comment of `padding` bytes, which moves every
+/// chunk boundary by one byte per unit.
+fn scene(bodies: usize, padding: usize) -> String {
+    let mut xml = format!(
+        "\u{FEFF}<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<!--{}-->\n<World Version=\"2\">\n  \
+         <Shapes><Shape Type=\"Circle\"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>\n  \
+         <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>\n  <Bodies>\n",
+        "p".repeat(padding)
+    );
+    for i in 0..bodies {
+        xml.push_str(&body(i));
+    }
+    xml.push_str(
+        "  </Bodies>\n  <Joints/>\n  <Unknown>warned about at the end</Unknown>\n</World>\n",
+    );
+    xml
+}
+
+#[test]
+fn every_scene_and_corpus_file_loads_the_same_from_a_path() {
+    let dirs = [root().join("tests/scenes"), root().join("tests/data/corpus")];
+    let mut count = 0;
+    for dir in dirs {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "xml") {
+                let name = path.file_stem().unwrap().to_string_lossy().into_owned();
+                assert!(same_both_ways(&std::fs::read(&path).unwrap(), &name), "{name}");
+                count += 1;
+            }
+        }
+    }
+    assert!(count >= 9, "found only {count} files");
+}
+
+#[test]
+fn a_chunk_boundary_anywhere_in_a_body_changes_nothing() {
+    let period = body(1000).len();
+    let bodies = CHUNK / period + 20;
+    assert!(scene(bodies, 0).len() > CHUNK + period);
+    // Every shift of the boundary across one whole body (its line ends, characters and
+    // references included), and a scene that crosses several boundaries.
+    for padding in 0..period {
+        assert!(same_both_ways(scene(bodies, padding).as_bytes(), &format!("shift-{padding}")));
+    }
+    assert!(same_both_ways(scene(2000, 7).as_bytes(), "several-chunks"));
+}
+
+#[test]
+fn problems_in_a_later_chunk_are_reported_alike() {
+    let xml = scene(1200, 0);
+    let late = 3 * CHUNK + 100;
+    let name = late + xml[late..].find("<Name>").unwrap() + "<Name>".len();
+    for (what, byte) in [("invalid-utf8", 0xFF), ("nul", 0)] {
+        let mut bytes = xml.clone().into_bytes();
+        bytes[name + 2] = byte;
+        assert!(!same_both_ways(&bytes, what));
+    }
+    for cut in [CHUNK - 1, CHUNK, CHUNK + 1, 2 * CHUNK + 3, xml.len() - 2] {
+        assert!(!same_both_ways(&xml.as_bytes()[..cut], &format!("truncated-{cut}")));
+    }
+    let mismatched = xml.replacen("</Position>", "</Positio>", 900);
+    assert!(!same_both_ways(mismatched.as_bytes(), "mismatched"));
+    let unknown_entity = xml.replacen("&amp;", "&nope;", 1100);
+    assert!(!same_both_ways(unknown_entity.as_bytes(), "unknown-entity"));
+}
+
+#[test]
+fn a_character_cut_by_a_boundary_is_joined() {
+    let head = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"><Name>";
+    for offset in 0..4 {
+        let before = CHUNK - head.len() - offset;
+        let xml = format!(
+            "{head}{}€😀{}</Name></Body></Bodies><Joints/></World>",
+            "x".repeat(before),
+            "y".repeat(10)
+        );
+        assert!(same_both_ways(xml.as_bytes(), &format!("cut-character-{offset}")));
+        let json = load(xml.as_bytes(), &LoadOptions::default()).unwrap().to_json();
+        assert!(json.contains("€😀"));
+    }
+}
+
+#[test]
+fn utf16_files_load_the_same_from_a_path() {
+    let xml = scene(300, 3).replace("utf-8", "utf-16");
+    for big_endian in [false, true] {
+        let mut bytes = if big_endian { vec![0xFE, 0xFF] } else { vec![0xFF, 0xFE] };
+        for unit in xml.trim_start_matches('\u{FEFF}').encode_utf16() {
+            let pair = if big_endian { unit.to_be_bytes() } else { unit.to_le_bytes() };
+            bytes.extend(pair);
+        }
+        assert!(same_both_ways(&bytes, &format!("utf16-{big_endian}")));
+    }
+}
