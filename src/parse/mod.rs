@@ -130,10 +130,9 @@ impl Tag {
     }
 }
 
-/// An element name, kept inline (and in lowercase too) when short, as names almost
-/// always are.
+/// An element name, kept inline when short, as names almost always are.
 enum Name {
-    Short { len: u8, name: [u8; 22], lowercase: [u8; 22] },
+    Short(u8, [u8; 22]),
     Long(Box<str>),
 }
 
@@ -143,9 +142,7 @@ impl Name {
         match inline.get_mut(..name.len()) {
             Some(bytes) => {
                 bytes.copy_from_slice(name.as_bytes());
-                let mut lowercase = inline;
-                lowercase.make_ascii_lowercase();
-                Name::Short { len: name.len() as u8, name: inline, lowercase }
+                Name::Short(name.len() as u8, inline)
             }
             None => Name::Long(name.into()),
         }
@@ -153,23 +150,15 @@ impl Name {
 
     fn as_bytes(&self) -> &[u8] {
         match self {
-            Name::Short { len, name, .. } => &name[..usize::from(*len)],
+            Name::Short(len, name) => &name[..usize::from(*len)],
             Name::Long(name) => name.as_bytes(),
-        }
-    }
-
-    /// The name in lowercase, when it is short.
-    fn lowercase(&self) -> Option<&[u8]> {
-        match self {
-            Name::Short { len, lowercase, .. } => Some(&lowercase[..usize::from(*len)]),
-            Name::Long(_) => None,
         }
     }
 
     fn as_str(&self) -> &str {
         match self {
             // Whole names are copied, so the bytes are text.
-            Name::Short { .. } => std::str::from_utf8(self.as_bytes()).unwrap_or_default(),
+            Name::Short(..) => std::str::from_utf8(self.as_bytes()).unwrap_or_default(),
             Name::Long(name) => name,
         }
     }
@@ -213,13 +202,18 @@ enum Node {
 
 /// Which of an object's known elements were already read (for `duplicate-element`).
 #[derive(Default)]
-pub(crate) struct Seen(u64);
+pub(crate) struct Seen {
+    bits: u64,
+    /// Where to start looking for the next element: after the last one found, since
+    /// writers list an object's elements in the same order every time.
+    next: usize,
+}
 
 impl Seen {
     /// Whether the element `name` (any case) of the list `names` was read.
     pub fn contains(&self, names: &[&str], name: &str) -> bool {
         let index = names.iter().position(|n| n.eq_ignore_ascii_case(name));
-        index.is_some_and(|i| self.0 & (1 << i) != 0)
+        index.is_some_and(|i| self.bits & (1 << i) != 0)
     }
 }
 
@@ -671,6 +665,9 @@ impl<'a> Parser<'a> {
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
     pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
+        if let Some(value) = self.plain_value(tag) {
+            return Ok(value);
+        }
         let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
@@ -723,6 +720,32 @@ impl<'a> Parser<'a> {
         }
         let at = text.at + lead * usize::from(text.resolved.is_some());
         Ok(Value { text, at })
+    }
+
+    /// The usual value, read without nodes: text at hand with no markup, references or
+    /// carriage returns, then the end tag of `tag`. None for anything else.
+    fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
+        let start = *self.open_starts.last().filter(|_| !tag.empty)?;
+        let expected = &self.open_names.as_bytes()[start..];
+        let at = self.pos;
+        let rest = self.rest(at);
+        let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
+        let close = &rest[len..];
+        let matches = close.get(1) == Some(&b'/')
+            && close.get(2 + expected.len()) == Some(&b'>')
+            && close[2..].starts_with(expected);
+        if !matches || len as u64 > self.options.max_text_bytes {
+            return None;
+        }
+        let text = &rest[..len];
+        let lead = text.iter().position(|&b| !text::is_xml_space_byte(b)).unwrap_or(len);
+        let trail = text.iter().rposition(|&b| !text::is_xml_space_byte(b)).map_or(lead, |i| i + 1);
+        self.pos = at + len + 3 + expected.len();
+        self.open_starts.pop();
+        self.open_names.truncate(start);
+        // `<X></X>` has its value at its tag.
+        let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + lead, at + trail) };
+        Some(Value { text: Text { at, end, resolved: None }, at })
     }
 
     /// Reads a value element and converts its text with `convert`.
@@ -872,19 +895,20 @@ impl<'a> Parser<'a> {
         names: &[&'static str],
         seen: &mut Seen,
     ) -> Parsed<Option<(&'static str, bool)>> {
-        let found = match child.name.lowercase() {
-            Some(lowercase) => names.iter().position(|n| {
-                n.len() == lowercase.len() && n.as_bytes().eq_ignore_ascii_case(lowercase)
-            }),
-            None => names.iter().position(|n| child.is(n)),
-        };
+        let name = child.name.as_bytes();
+        let start = seen.next.min(names.len());
+        let (after, before) = (&names[start..], &names[..start]);
+        let matches = |n: &&str| n.len() == name.len() && n.as_bytes().eq_ignore_ascii_case(name);
+        let found = (after.iter().position(matches).map(|i| start + i))
+            .or_else(|| before.iter().position(matches));
         let Some(index) = found else {
             self.unknown(parent, child)?;
             return Ok(None);
         };
         let bit = 1u64 << index;
-        let repeated = seen.0 & bit != 0;
-        seen.0 |= bit;
+        let repeated = seen.bits & bit != 0;
+        seen.bits |= bit;
+        seen.next = index + 1;
         Ok(Some((names[index], repeated)))
     }
 
