@@ -87,12 +87,19 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
 /// The shortest text that reads back to the same f32: plain decimals for ordinary
 /// magnitudes, an exponent for tiny and huge ones (as .NET wrote `8.369571E-36`).
 pub(crate) fn float_text(value: f32) -> String {
+    let mut text = String::new();
+    push_float(&mut text, value);
+    text
+}
+
+/// Appends [`float_text`] of `value` to `out`.
+fn push_float(out: &mut String, value: f32) {
     let magnitude = value.abs();
-    if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) {
-        format!("{value}")
+    let _ = if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) {
+        write!(out, "{value}")
     } else {
-        format!("{value:e}")
-    }
+        write!(out, "{value:e}")
+    };
 }
 
 /// Text content and attribute values: markup characters as entities, characters XML
@@ -141,11 +148,25 @@ impl Writer<'_> {
     }
 
     fn element(&mut self, name: &str, text: &str) {
-        self.indent();
         if text.is_empty() {
-            let _ = writeln!(self.out, "<{name} />");
+            self.indent();
+            for piece in ["<", name, " />\n"] {
+                self.out.push_str(piece);
+            }
         } else {
-            let _ = writeln!(self.out, "<{name}>{text}</{name}>");
+            self.element_with(name, |out| out.push_str(text));
+        }
+    }
+
+    /// `<name>text</name>` on its own line, `text` written straight into the output.
+    fn element_with(&mut self, name: &str, text: impl FnOnce(&mut String)) {
+        self.indent();
+        for piece in ["<", name, ">"] {
+            self.out.push_str(piece);
+        }
+        text(&mut self.out);
+        for piece in ["</", name, ">\n"] {
+            self.out.push_str(piece);
         }
     }
 
@@ -161,7 +182,11 @@ impl Writer<'_> {
     }
 
     fn vector(&mut self, name: &str, v: Vec2) {
-        self.element(name, &format!("{} {}", float_text(v.x), float_text(v.y)));
+        self.element_with(name, |out| {
+            push_float(out, v.x);
+            out.push(' ');
+            push_float(out, v.y);
+        });
     }
 
     fn name(&mut self, name: Str) {
@@ -174,7 +199,7 @@ impl Writer<'_> {
     /// differ from the default's (so -0.0 and 0.0 stay apart).
     fn float(&mut self, name: &str, value: f32, default: f32) {
         if self.all || value.to_bits() != default.to_bits() {
-            self.element(name, &float_text(value));
+            self.element_with(name, |out| push_float(out, value));
         }
     }
 
