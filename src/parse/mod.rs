@@ -179,14 +179,15 @@ pub(crate) struct Value {
     pub at: usize,
 }
 
-/// An attribute: lowercase comparisons go through [`Attr::is`].
-pub(crate) struct Attr {
-    key: String,
-    pub value: String,
+/// An attribute of a [`Tag`], borrowed from it: lowercase comparisons go through
+/// [`Attr::is`].
+pub(crate) struct Attr<'t> {
+    key: &'t str,
+    pub value: Cow<'t, str>,
     pub at: usize,
 }
 
-impl Attr {
+impl Attr<'_> {
     pub fn is(&self, lowercase_name: &str) -> bool {
         self.key.eq_ignore_ascii_case(lowercase_name)
     }
@@ -819,22 +820,32 @@ impl<'a> Parser<'a> {
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
-    pub fn attributes(&self, tag: &Tag) -> Parsed<Vec<Attr>> {
-        let Some(content) = &tag.content else {
+    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Vec<Attr<'t>>> {
+        let Some(content) = tag.content.as_deref() else {
             return Ok(Vec::new());
         };
-        let start = BytesStart::from_content(&**content, tag.name.as_bytes().len());
+        // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
+        // tag, is found by its offset in `content` (which counts from after `<`).
+        let within = |piece: &str| {
+            let from = piece.as_ptr().addr().checked_sub(content.as_ptr().addr())?;
+            Some((from, content.get(from..from + piece.len())?))
+        };
+        let start = BytesStart::from_content(content, tag.name.as_bytes().len());
         let mut attrs = Vec::new();
         for attr in start.attributes() {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
-            // Offsets in `content` count from the first byte after `<`.
-            let offset = attr.value.as_ptr().addr().checked_sub(content.as_ptr().addr());
-            let at = offset.map_or(tag.at, |offset| tag.at + 1 + offset);
-            let value = attr
-                .normalized_value(quick_xml::XmlVersion::Implicit1_0)
-                .map_err(|e| problem(Code::MalformedXml, at, format!("malformed XML: {e}")))?;
-            let key = attr.key.into_inner().to_owned();
-            attrs.push(Attr { key, value: value.into_owned(), at });
+            let raw = within(&attr.value);
+            let at = raw.map_or(tag.at, |(from, _)| tag.at + 1 + from);
+            let value = match (attr.normalized_value(quick_xml::XmlVersion::Implicit1_0), raw) {
+                // Unchanged by normalisation: the text as written.
+                (Ok(Cow::Borrowed(_)), Some((_, raw))) => Cow::Borrowed(raw),
+                (Ok(value), _) => Cow::Owned(value.into_owned()),
+                (Err(e), _) => {
+                    return Err(problem(Code::MalformedXml, at, format!("malformed XML: {e}")));
+                }
+            };
+            let key = within(attr.key.as_ref()).map_or("", |(_, key)| key);
+            attrs.push(Attr { key, value, at });
         }
         Ok(attrs)
     }
