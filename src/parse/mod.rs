@@ -126,8 +126,16 @@ impl Tag {
 
     /// Names compare case-insensitively (spec section 2).
     pub fn is(&self, name: &str) -> bool {
-        self.name.as_bytes().eq_ignore_ascii_case(name.as_bytes())
+        same_name(self.name.as_bytes(), name.as_bytes())
     }
+}
+
+/// ASCII case-insensitive equality, cheapest when the bytes are equal, as they mostly are.
+fn same_name(a: &[u8], b: &[u8]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(&x, &y)| x == y || (x ^ y == 0x20 && (x | 0x20).is_ascii_lowercase()))
 }
 
 /// An element name, kept inline when short, as names almost always are.
@@ -909,7 +917,7 @@ impl<'a> Parser<'a> {
         let name = child.name.as_bytes();
         let start = seen.next.min(names.len());
         let (after, before) = (&names[start..], &names[..start]);
-        let matches = |n: &&str| n.len() == name.len() && n.as_bytes().eq_ignore_ascii_case(name);
+        let matches = |n: &&str| same_name(n.as_bytes(), name);
         let found = (after.iter().position(matches).map(|i| start + i))
             .or_else(|| before.iter().position(matches));
         let Some(index) = found else {
@@ -1077,5 +1085,21 @@ pub(crate) fn shorten(text: &str) -> Cow<'_, str> {
     match text.char_indices().nth(40) {
         Some((cut, _)) => Cow::Owned(format!("{}...", &text[..cut])),
         None => Cow::Borrowed(text),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn same_name_is_ascii_case_insensitive_equality() {
+        for x in 0..=u8::MAX {
+            for y in 0..=u8::MAX {
+                let expected = x.eq_ignore_ascii_case(&y);
+                assert_eq!(super::same_name(&[x], &[y]), expected, "{x} {y}");
+            }
+        }
+        assert!(super::same_name(b"LocalAnchorA", b"localanchora"));
+        assert!(!super::same_name(b"LocalAnchorA", b"localanchorb"));
+        assert!(!super::same_name(b"Body", b"Bodies"));
     }
 }
