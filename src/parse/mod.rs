@@ -139,6 +139,7 @@ fn same_name(a: &[u8], b: &[u8]) -> bool {
 }
 
 /// An element name, kept inline when short, as names almost always are.
+#[derive(Clone)]
 enum Name {
     Short(u8, [u8; 22]),
     Long(Box<str>),
@@ -271,9 +272,8 @@ pub struct Parser<'a> {
     last: usize,
     /// Set while UserData is read: its text stays at hand from here on.
     pinned: Option<usize>,
-    /// The names of the open elements, one after the other, and where each starts.
-    open_names: String,
-    open_starts: Vec<usize>,
+    /// The names of the open elements, innermost last.
+    open: Vec<Name>,
     elements: u64,
     /// The file's Version; 0 for an unversioned legacy file.
     pub version: u32,
@@ -293,8 +293,7 @@ impl<'a> Parser<'a> {
             started: 0,
             last: 0,
             pinned: None,
-            open_names: String::new(),
-            open_starts: Vec::new(),
+            open: Vec::new(),
             elements: 0,
             version: 0,
             scene: SceneBuilder::default(),
@@ -508,46 +507,41 @@ impl<'a> Parser<'a> {
                 Tag { name: Name::new(name), content, at, empty }
             }
         };
-        let (empty, name_len) = (tag.empty, tag.name.as_bytes().len());
         self.elements += 1;
         if self.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
         }
-        if !empty {
-            if self.open_starts.len() as u64 >= u64::from(self.options.max_depth) {
+        if !tag.empty {
+            if self.open.len() as u64 >= u64::from(self.options.max_depth) {
                 return Err(self.limit(at, "max_depth", self.options.max_depth.into()));
             }
-            self.open_starts.push(self.open_names.len());
-            let name = self.source.slice(at + 1, at + 1 + name_len);
-            self.open_names.push_str(name);
+            self.open.push(tag.name.clone());
         }
         Ok(Node::Open(tag))
     }
 
     fn end_tag(&mut self, at: usize) -> Parsed<Node> {
         // The usual end tag: `</Name>` of the open element.
-        if let Some(&start) = self.open_starts.last() {
-            let expected = &self.open_names.as_bytes()[start..];
+        if let Some(expected) = self.open.last() {
+            let expected = expected.as_bytes();
             let rest = self.rest(at + 2);
             if rest.get(expected.len()) == Some(&b'>') && rest.starts_with(expected) {
                 self.pos = at + 3 + expected.len();
-                self.open_starts.pop();
-                self.open_names.truncate(start);
+                self.open.pop();
                 return Ok(Node::Close(at));
             }
         }
         let end = self.tag_end(at)?;
         self.pos = end + 1;
         let found = self.source.slice(at + 2, end).trim_end_matches(text::is_xml_space);
-        let Some(start) = self.open_starts.pop() else {
+        let Some(expected) = self.open.pop() else {
             return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
         };
-        if self.open_names[start..] != *found {
-            let expected = self.open_names[start..].to_owned();
+        if expected.as_str() != found {
+            let expected = expected.as_str().to_owned();
             let found = found.to_owned();
             return Err(malformed(at, IllFormedError::MismatchedEndTag { expected, found }));
         }
-        self.open_names.truncate(start);
         Ok(Node::Close(at))
     }
 
@@ -734,8 +728,7 @@ impl<'a> Parser<'a> {
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
-        let start = *self.open_starts.last().filter(|_| !tag.empty)?;
-        let expected = &self.open_names.as_bytes()[start..];
+        let expected = self.open.last().filter(|_| !tag.empty)?.as_bytes();
         let at = self.pos;
         let rest = self.rest(at);
         let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
@@ -750,8 +743,7 @@ impl<'a> Parser<'a> {
         let lead = text.iter().position(|&b| !text::is_xml_space_byte(b)).unwrap_or(len);
         let trail = text.iter().rposition(|&b| !text::is_xml_space_byte(b)).map_or(lead, |i| i + 1);
         self.pos = at + len + 3 + expected.len();
-        self.open_starts.pop();
-        self.open_names.truncate(start);
+        self.open.pop();
         // `<X></X>` has its value at its tag.
         let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + lead, at + trail) };
         Some(Value { text: Text { at, end, resolved: None }, at })
