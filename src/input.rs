@@ -182,15 +182,9 @@ impl<'a> Source<'a> {
             Ok(n) => {
                 stream.read += n as u64;
                 if stream.read > stream.max {
-                    let at = end;
-                    self.stop = Some(Stop {
-                        code: Code::LimitExceeded,
-                        at,
-                        message: format!(
-                            "the file is larger than the input size limit (max_input_bytes = {})",
-                            stream.max
-                        ),
-                    });
+                    // The file grew past the limit since its size was checked.
+                    let message = too_big(stream.max).message;
+                    self.stop = Some(Stop { code: Code::LimitExceeded, at: end, message });
                     self.file = None;
                     return false;
                 }
@@ -199,12 +193,11 @@ impl<'a> Source<'a> {
                 self.end() > before || self.file.is_some() && self.more(keep)
             }
             Err(e) => {
-                let at = end;
                 let message = match &self.origin {
-                    Origin::Path(path) => format!("cannot read {}: {e}", path.display()),
+                    Origin::Path(path) => io_error(path, &e).message,
                     Origin::Memory => e.to_string(),
                 };
-                self.stop = Some(Stop { code: Code::Io, at, message });
+                self.stop = Some(Stop { code: Code::Io, at: end, message });
                 self.file = None;
                 false
             }
@@ -215,19 +208,13 @@ impl<'a> Source<'a> {
     fn append(&mut self, bytes: &[u8], last: bool) {
         let at = self.end();
         let (valid, mut stop) = valid_prefix(bytes, at);
-        let valid_len = valid.len();
-        if let Some(s) = &stop {
-            // A character cut by the end of the chunk is completed by the next one.
-            let tail = &bytes[valid_len..];
-            if !last && tail.len() < 4 && std::str::from_utf8(tail).is_err() && could_continue(tail)
-            {
-                if let Some(stream) = &mut self.file {
-                    stream.pending = tail.to_vec();
-                }
-                stop = None;
-            } else {
-                debug_assert_eq!(s.at, at + valid_len);
+        // A character cut by the end of the chunk is completed by the next one.
+        let tail = &bytes[valid.len()..];
+        if stop.is_some() && !last && could_continue(tail) {
+            if let Some(stream) = &mut self.file {
+                stream.pending = tail.to_vec();
             }
+            stop = None;
         }
         let (valid, stop) = cut_at_nul(Cow::Borrowed(valid), at, stop);
         self.text.to_mut().push_str(&valid);

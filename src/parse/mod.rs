@@ -714,14 +714,14 @@ impl<'a> Parser<'a> {
         let all = self.text_of(&text);
         let lead = all.bytes().position(|b| !text::is_xml_space_byte(b)).unwrap_or(all.len());
         let trimmed = trim_xml(&all[lead..]).len();
+        let at = text.at + lead;
         match &mut text.resolved {
             Some(resolved) => {
                 resolved.truncate(lead + trimmed);
                 resolved.drain(..lead);
             }
-            None => (text.at, text.end) = (text.at + lead, text.at + lead + trimmed),
+            None => (text.at, text.end) = (at, at + trimmed),
         }
-        let at = text.at + lead * usize::from(text.resolved.is_some());
         Ok(Value { text, at })
     }
 
