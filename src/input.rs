@@ -354,7 +354,7 @@ pub fn io_error(path: &Path, e: &std::io::Error) -> Error {
 }
 
 /// Turns offsets in the decoded text into positions in the file, reading the text again
-/// from its start. Offsets must come in increasing order.
+/// from its start. Offsets in increasing order take one pass; an earlier one starts over.
 pub struct Locator<'a> {
     source: Option<Source<'a>>,
     encoding: Encoding,
@@ -379,7 +379,13 @@ impl<'a> Locator<'a> {
     }
 
     pub fn locate(&mut self, offset: usize) -> Position {
-        debug_assert!(offset >= self.offset, "offsets are located in increasing order");
+        if offset < self.offset {
+            // Back to the start (a warnings-truncated warning points before the last
+            // warning kept).
+            if let Some(restarted) = self.source.as_ref().map(Locator::new) {
+                *self = restarted;
+            }
+        }
         while let Some(source) = &mut self.source {
             let to = offset.min(source.end());
             let text = source.slice(self.offset.max(source.base()), to);

@@ -236,6 +236,29 @@ fn warnings_are_capped() {
     );
 }
 
+/// Fuzz finding (c_api target, after the streaming loader): the warnings-truncated
+/// warning points at the first warning dropped, which can come before the last one kept
+/// (a missing container is found at the end but lies at `<World>`). Locating it went
+/// backwards in the text: a debug assertion, and a wrong position in release builds.
+#[test]
+fn fuzz_warnings_truncated_before_the_last_kept_warning() {
+    let xml = format!("<World Version=\"1\">\n{}</World>", "<a/>\n".repeat(1000));
+    let file = std::env::temp_dir().join(format!("box2scene-truncated-{}.xml", std::process::id()));
+    std::fs::write(&file, &xml).unwrap();
+    let from_path = box2scene::load_path(&file, &LoadOptions::default());
+    std::fs::remove_file(&file).unwrap();
+    for scene in [load_bytes(xml.as_bytes()).unwrap(), from_path.unwrap()] {
+        let d = scene.diagnostics();
+        assert_eq!(d.len(), box2scene::error::MAX_WARNINGS + 1);
+        let last = d.last().unwrap();
+        assert_eq!(last.code(), Some(Code::WarningsTruncated));
+        assert_eq!((last.line, last.column, last.byte_offset), (1, 1, 0));
+        let kept = &d[d.len() - 2];
+        assert_eq!(kept.code(), Some(Code::UnknownElement));
+        assert_eq!((kept.line, kept.column), (1001, 1));
+    }
+}
+
 fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
     format!(
         "<World Version=\"1\">\n<Shapes>{shapes}</Shapes>\n<Fixtures>{fixtures}</Fixtures>\n<Bodies>{bodies}</Bodies>\n<Joints>{joints}</Joints>\n</World>"
