@@ -18,10 +18,8 @@ fn bad(code: Code, at: usize, message: impl Into<String>) -> BadValue {
     BadValue { code, at, message: message.into() }
 }
 
-/// XML white space (not Unicode's).
-pub fn is_xml_space(c: char) -> bool {
-    matches!(c, ' ' | '\t' | '\r' | '\n')
-}
+/// XML white space (not Unicode's), for `trim_*_matches`.
+pub const XML_SPACE: [char; 4] = [' ', '\t', '\r', '\n'];
 
 /// XML white space, as a byte of UTF-8 text. All four are ASCII, so a byte that matches is a
 /// whole character and the text can be sliced next to it.
@@ -29,19 +27,28 @@ pub fn is_xml_space_byte(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\r' | b'\n')
 }
 
-/// `s` without leading and trailing XML white space. Works on bytes: the white space is
-/// ASCII, so the cut points are always character boundaries.
+/// How many bytes of XML white space `bytes` starts with.
+pub fn leading_space(bytes: &[u8]) -> usize {
+    bytes.iter().position(|&b| !is_xml_space_byte(b)).unwrap_or(bytes.len())
+}
+
+/// Where `bytes` without leading and trailing XML white space starts and ends.
+pub fn trimmed_span(bytes: &[u8]) -> (usize, usize) {
+    let start = leading_space(bytes);
+    let end = bytes.iter().rposition(|&b| !is_xml_space_byte(b)).map_or(start, |i| i + 1);
+    (start, end)
+}
+
+/// `s` without leading and trailing XML white space, and where that starts in `s`. The
+/// white space is ASCII, so the cut points are always character boundaries.
+pub fn trim_xml_at(s: &str) -> (usize, &str) {
+    let (start, end) = trimmed_span(s.as_bytes());
+    (start, &s[start..end])
+}
+
+/// `s` without leading and trailing XML white space.
 pub fn trim_xml(s: &str) -> &str {
-    let bytes = s.as_bytes();
-    let mut start = 0;
-    let mut end = bytes.len();
-    while start < end && is_xml_space_byte(bytes[start]) {
-        start += 1;
-    }
-    while end > start && is_xml_space_byte(bytes[end - 1]) {
-        end -= 1;
-    }
-    &s[start..end]
+    trim_xml_at(s).1
 }
 
 /// The spellings of infinity and NaN that writers produce (.NET, C, JavaScript).
@@ -231,8 +238,7 @@ pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
         }
     };
     let component = |at: usize, part: &str| {
-        let lead = part.bytes().take_while(|&b| is_xml_space_byte(b)).count();
-        let trimmed = trim_xml(&part[lead..]);
+        let (lead, trimmed) = trim_xml_at(part);
         if trimmed.is_empty() {
             return Err(bad(Code::InvalidVector2, at, format!("'{s}' has an empty component")));
         }
@@ -445,7 +451,11 @@ mod tests {
     /// The implementations before the byte-level rewrite, verbatim, as references that the
     /// new ones must match exactly (values, codes, offsets and messages).
     mod old {
-        use super::super::{BadValue, Code, Vec2, bad, is_non_finite_word, is_xml_space};
+        use super::super::{BadValue, Code, Vec2, bad, is_non_finite_word};
+
+        pub fn is_xml_space(c: char) -> bool {
+            matches!(c, ' ' | '\t' | '\r' | '\n')
+        }
 
         pub fn trim_xml(s: &str) -> &str {
             s.trim_matches(is_xml_space)

@@ -32,7 +32,7 @@ use quick_xml::parser::{ElementParser, Parser as _};
 use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
 use crate::input::{Encoding, Locator, Source};
 use crate::scene::{Scene, SceneBuilder, Vec2};
-use crate::text::{self, BadValue, trim_xml};
+use crate::text::{self, BadValue, trim_xml, trim_xml_at};
 use crate::{LoadOptions, resolve, validate};
 
 /// Loads a scene from the bytes of a file.
@@ -397,8 +397,7 @@ impl<'a> Parser<'a> {
     /// Skips the white space at hand before the next node: blank text between elements
     /// is never a node of its own where only elements may follow.
     fn skip_space(&mut self) {
-        let rest = self.rest(self.pos);
-        self.pos += rest.iter().position(|&b| !text::is_xml_space_byte(b)).unwrap_or(rest.len());
+        self.pos += text::leading_space(self.rest(self.pos));
     }
 
     fn next_node(&mut self) -> Parsed<Node> {
@@ -524,8 +523,7 @@ impl<'a> Parser<'a> {
         // The usual end tag: `</Name>` of the open element.
         if let Some(expected) = self.open.last() {
             let expected = expected.as_bytes();
-            let rest = self.rest(at + 2);
-            if rest.get(expected.len()) == Some(&b'>') && rest.starts_with(expected) {
+            if ends_tag(self.rest(at + 2), expected) {
                 self.pos = at + 3 + expected.len();
                 self.open.pop();
                 return Ok(Node::Close(at));
@@ -533,7 +531,7 @@ impl<'a> Parser<'a> {
         }
         let end = self.tag_end(at)?;
         self.pos = end + 1;
-        let found = self.source.slice(at + 2, end).trim_end_matches(text::is_xml_space);
+        let found = self.source.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
         let Some(expected) = self.open.pop() else {
             return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
         };
@@ -646,10 +644,8 @@ impl<'a> Parser<'a> {
                 Node::Open(tag) => return Ok(Some(tag)),
                 Node::Close(_) => return Ok(None),
                 Node::Text(t) => {
-                    let all = self.text_of(&t);
-                    let text = trim_xml(all);
+                    let (lead, text) = trim_xml_at(self.text_of(&t));
                     if !text.is_empty() {
-                        let lead = all.len() - all.trim_start_matches(text::is_xml_space).len();
                         return Err(problem(
                             Code::UnexpectedText,
                             t.at + lead,
@@ -711,10 +707,8 @@ impl<'a> Parser<'a> {
                 at: tag.at,
             });
         };
-        let all = self.text_of(&text);
-        let lead = all.bytes().position(|b| !text::is_xml_space_byte(b)).unwrap_or(all.len());
-        let trimmed = trim_xml(&all[lead..]).len();
-        let at = text.at + lead;
+        let (lead, trimmed) = trim_xml_at(self.text_of(&text));
+        let (at, trimmed) = (text.at + lead, trimmed.len());
         match &mut text.resolved {
             Some(resolved) => {
                 resolved.truncate(lead + trimmed);
@@ -732,20 +726,15 @@ impl<'a> Parser<'a> {
         let at = self.pos;
         let rest = self.rest(at);
         let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
-        let close = &rest[len..];
-        let matches = close.get(1) == Some(&b'/')
-            && close.get(2 + expected.len()) == Some(&b'>')
-            && close[2..].starts_with(expected);
-        if !matches || len as u64 > self.options.max_text_bytes {
+        let close = rest[len..].strip_prefix(b"</")?;
+        if !ends_tag(close, expected) || len as u64 > self.options.max_text_bytes {
             return None;
         }
-        let text = &rest[..len];
-        let lead = text.iter().position(|&b| !text::is_xml_space_byte(b)).unwrap_or(len);
-        let trail = text.iter().rposition(|&b| !text::is_xml_space_byte(b)).map_or(lead, |i| i + 1);
+        let (start, end) = text::trimmed_span(&rest[..len]);
         self.pos = at + len + 3 + expected.len();
         self.open.pop();
         // `<X></X>` has its value at its tag.
-        let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + lead, at + trail) };
+        let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) };
         Some(Value { text: Text { at, end, resolved: None }, at })
     }
 
@@ -797,8 +786,7 @@ impl<'a> Parser<'a> {
         attr: &Attr,
         convert: fn(&str) -> Result<T, BadValue>,
     ) -> Parsed<(T, usize)> {
-        let value = trim_xml(&attr.value);
-        let lead = attr.value.len() - attr.value.trim_start_matches(text::is_xml_space).len();
+        let (lead, value) = trim_xml_at(&attr.value);
         convert(value).map(|v| (v, attr.at + lead)).map_err(|e| {
             problem(
                 e.code,
@@ -1000,6 +988,11 @@ impl<'a> Parser<'a> {
         let from = self.pinned.take().unwrap_or(to);
         self.source.slice(from, to).to_owned()
     }
+}
+
+/// Whether `after_slash`, the text after `</`, is `name>`: the usual end tag.
+fn ends_tag(after_slash: &[u8], name: &[u8]) -> bool {
+    after_slash.get(name.len()) == Some(&b'>') && after_slash.starts_with(name)
 }
 
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first bytes
