@@ -317,18 +317,6 @@ static void add_joints(b2World& world, const std::vector<b2Body*>& b) {
 
 // ---- capture, write, load, rebuild
 
-/// The scene written to text, as a file would hold it.
-static std::string text_of(const b2s_scene* scene) {
-    char* text = nullptr;
-    size_t size = 0;
-    if (b2s_write_memory(scene, nullptr, &text, &size, nullptr) != B2S_CODE_OK) {
-        return std::string();
-    }
-    std::string copy(text, size);
-    b2s_text_free(text);
-    return copy;
-}
-
 static void print_reports(const std::vector<box2scene::Report>& reports) {
     for (const box2scene::Report& r : reports) {
         std::fprintf(stderr, "report: %s %s %u \"%s\": %s\n", b2s_code_name(r.code), r.object,
@@ -345,7 +333,7 @@ static ScenePtr captured_and_reloaded(b2World& world) {
     if (captured == nullptr || !reports.empty()) {
         return nullptr;
     }
-    return load_text(text_of(captured.get()).c_str());
+    return load_text(written_text(captured.get()).c_str());
 }
 
 static int ensure_same_mass(size_t index, const b2Body* rebuilt, const b2Body* original) {
@@ -420,7 +408,7 @@ static int world_captured_in_motion_restarts_there() {
         ENSURE(r.code == box2scene::lossy_capture_code && std::strcmp(r.object, "body") == 0);
         velocity_missed.at(r.index) = true;
     }
-    World rebuilt(load_text(text_of(captured.get()).c_str()));
+    World rebuilt(load_text(written_text(captured.get()).c_str()));
     ENSURE(rebuilt.ok());
     int different = 0;
     for (size_t i = 0; i < bodies.size(); ++i) {
@@ -494,7 +482,7 @@ static int mouse_joint_is_reported_not_written() {
     ENSURE_EQ(view_of(scene).body_count, 3);
     ENSURE_EQ(view_of(scene).joint_count, 1);
     ENSURE_EQ(view_of(scene).joints[0].kind, B2S_JOINT_KIND_REVOLUTE);
-    std::string text = text_of(scene.get());
+    std::string text = written_text(scene.get());
     ENSURE(text.find("Mouse") == std::string::npos);
     ENSURE(load_text(text.c_str()) != nullptr);
     return 0;
@@ -540,7 +528,7 @@ static int approximations_are_reported() {
     ENSURE_EQ(view_of(scene).joints[0].kind, B2S_JOINT_KIND_WHEEL);
     ENSURE_EQ(view_of(scene).joints[1].kind, B2S_JOINT_KIND_DISTANCE);
     // The box keeps its exact mass through a MassData, though Set orders it differently.
-    World rebuilt(load_text(text_of(scene.get()).c_str()));
+    World rebuilt(load_text(written_text(scene.get()).c_str()));
     ENSURE(rebuilt.ok());
     ENSURE_EQ(ensure_same_mass(1, rebuilt.body(1), body), 0);
     return 0;
@@ -605,7 +593,7 @@ static int namer_supplies_names_and_user_data() {
     ScenePtr captured(box2scene::capture_world(world, reports, &namer));
     ENSURE(captured != nullptr);
     ENSURE_EQ(reports.size(), 0);
-    std::string text = text_of(captured.get());
+    std::string text = written_text(captured.get());
     ENSURE(text.find("<Name>hull</Name>") != std::string::npos);
     ENSURE(text.find("hull &amp; co") != std::string::npos);
     ENSURE(text.find("<Color>red</Color>") != std::string::npos);

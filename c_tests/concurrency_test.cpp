@@ -7,9 +7,6 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,8 +16,6 @@
 
 static const int kThreads = 8;
 static const int kLoadsPerThread = 500;
-static const char* const kSceneFolders[] = {"tests/data/corpus", "tests/scenes",
-                                            "examples/scenes", "c_tests/data"};
 
 /// A scene file and what loading it alone gives.
 struct Expected {
@@ -31,13 +26,7 @@ struct Expected {
 
 /// What a scene writes back to, with its warnings appended: equal for equal scenes.
 static std::string fingerprint(const b2s_scene* scene) {
-    char* text = nullptr;
-    size_t size = 0;
-    if (b2s_write_memory(scene, nullptr, &text, &size, nullptr) != B2S_CODE_OK) {
-        return std::string();
-    }
-    std::string result(text, size);
-    b2s_text_free(text);
+    std::string result = written_text(scene);
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     for (uint32_t i = 0; i < view->diagnostic_count; ++i) {
         const b2s_diagnostic& d = view->diagnostics[i];
@@ -47,40 +36,25 @@ static std::string fingerprint(const b2s_scene* scene) {
     return result;
 }
 
-static std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 static ScenePtr load(const Expected& file, bool from_disk) {
-    b2s_scene* scene = nullptr;
-    if (from_disk) {
-        std::string path = std::string(BOX2SCENE_SOURCE_DIR) + "/" + file.path;
-        b2s_load_file(path.c_str(), nullptr, &scene, nullptr);
-    } else {
-        b2s_load_memory(reinterpret_cast<const uint8_t*>(file.bytes.data()), file.bytes.size(),
-                        nullptr, &scene, nullptr);
+    if (!from_disk) {
+        return load_quietly(file.bytes);
     }
+    b2s_scene* scene = nullptr;
+    std::string path = std::string(BOX2SCENE_SOURCE_DIR) + "/" + file.path;
+    b2s_load_file(path.c_str(), nullptr, &scene, nullptr);
     return ScenePtr(scene);
 }
 
 /// Every project scene, loaded alone.
 static std::vector<Expected> expected_scenes() {
     std::vector<Expected> files;
-    for (const char* folder : kSceneFolders) {
-        std::filesystem::path dir = std::filesystem::path(BOX2SCENE_SOURCE_DIR) / folder;
-        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-            if (entry.path().extension() != ".xml") {
-                continue;
-            }
-            Expected file;
-            file.path = std::string(folder) + "/" + entry.path().filename().string();
-            file.bytes = read_bytes(entry.path());
-            ScenePtr scene = load(file, false);
-            if (scene != nullptr) {
-                file.written = fingerprint(scene.get());
-                files.push_back(file);
-            }
+    for (const std::string& path : project_scene_files()) {
+        Expected file{path, project_file_bytes(path), {}};
+        ScenePtr scene = load(file, false);
+        if (scene != nullptr) {
+            file.written = fingerprint(scene.get());
+            files.push_back(file);
         }
     }
     return files;

@@ -21,7 +21,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -31,8 +30,6 @@
 
 static const int kSteps = 600;
 static const int kGeneratedScenes = 2000; // that load; more are generated
-static const char* const kSceneFolders[] = {"tests/scenes", "tests/data/corpus",
-                                            "examples/scenes", "c_tests/data"};
 
 // ---- stepping a built world
 
@@ -512,36 +509,21 @@ private:
     std::vector<std::vector<Pose>> poses_; // by body: in the level, in the twin
 };
 
-/// A generated level that loads, or null; no error printed (most failures are intended).
-static ScenePtr load_quietly(const std::string& xml) {
-    b2s_scene* scene = nullptr;
-    b2s_load_memory(reinterpret_cast<const uint8_t*>(xml.data()), xml.size(), nullptr, &scene,
-                    nullptr);
-    return ScenePtr(scene);
-}
-
 // ---- the sweeps
 
 static int every_project_scene_stays_finite() {
-    for (const char* folder : kSceneFolders) {
-        std::filesystem::path dir = std::filesystem::path(BOX2SCENE_SOURCE_DIR) / folder;
-        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-            if (entry.path().extension() != ".xml") {
-                continue;
-            }
-            std::string relative = std::string(folder) + "/" + entry.path().filename().string();
-            ScenePtr scene = load_project_file(relative.c_str());
-            ENSURE(scene != nullptr);
-            ++tally.files;
-            World world(std::move(scene));
-            count_reports(world.built);
-            int broken = first_step_not_finite(world);
-            if (broken >= 0) {
-                std::fprintf(stderr, "%s: a body is not finite after step %d\n",
-                             relative.c_str(), broken);
-            }
-            ENSURE_EQ(broken, -1);
+    for (const std::string& relative : project_scene_files()) {
+        ScenePtr scene = load_project_file(relative.c_str());
+        ENSURE(scene != nullptr);
+        ++tally.files;
+        World world(std::move(scene));
+        count_reports(world.built);
+        int broken = first_step_not_finite(world);
+        if (broken >= 0) {
+            std::fprintf(stderr, "%s: a body is not finite after step %d\n", relative.c_str(),
+                         broken);
         }
+        ENSURE_EQ(broken, -1);
     }
     ENSURE(tally.files >= 10);
     return 0;

@@ -9,9 +9,6 @@
 #include <box2scene/box2d.hpp>
 
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -20,8 +17,6 @@
 #include "test_worlds.hpp"
 
 static const int kScenes = 1000;
-static const char* const kSceneFolders[] = {"tests/scenes", "tests/data/corpus",
-                                            "examples/scenes", "c_tests/data"};
 
 /// A scene file's bytes and what its first load gave.
 struct SceneFile {
@@ -30,41 +25,12 @@ struct SceneFile {
     std::string written; // b2s_write_memory of the first load
 };
 
-static std::string read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-static std::string written(const b2s_scene* scene) {
-    char* text = nullptr;
-    size_t size = 0;
-    if (b2s_write_memory(scene, nullptr, &text, &size, nullptr) != B2S_CODE_OK) {
-        return std::string();
-    }
-    std::string copy(text, size);
-    b2s_text_free(text);
-    return copy;
-}
-
 static std::vector<SceneFile> project_scenes() {
     std::vector<SceneFile> files;
-    for (const char* folder : kSceneFolders) {
-        std::filesystem::path dir = std::filesystem::path(BOX2SCENE_SOURCE_DIR) / folder;
-        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-            if (entry.path().extension() == ".xml") {
-                std::string path = std::string(folder) + "/" + entry.path().filename().string();
-                files.push_back(SceneFile{path, read_bytes(entry.path()), {}});
-            }
-        }
+    for (const std::string& path : project_scene_files()) {
+        files.push_back(SceneFile{path, project_file_bytes(path), {}});
     }
     return files;
-}
-
-static ScenePtr load_bytes(const std::string& bytes) {
-    b2s_scene* scene = nullptr;
-    b2s_load_memory(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), nullptr,
-                    &scene, nullptr);
-    return ScenePtr(scene);
 }
 
 /// The load that must fail: the file cut in half, its root never closed.
@@ -96,17 +62,18 @@ static int a_thousand_scenes_load_and_free() {
     std::vector<SceneFile> files = project_scenes();
     ENSURE(files.size() >= 10);
     for (SceneFile& file : files) {
-        ScenePtr first = load_bytes(file.bytes);
+        ScenePtr first = load_quietly(file.bytes);
         ENSURE(first != nullptr);
-        file.written = written(first.get());
+        file.written = written_text(first.get());
         ENSURE(!file.written.empty());
     }
     for (int i = 0; i < kScenes; ++i) {
         const SceneFile& file = files[i % files.size()];
         bool from_disk = i % 2 == 0;
-        ScenePtr scene = from_disk ? load_project_file(file.path.c_str()) : load_bytes(file.bytes);
+        ScenePtr scene =
+            from_disk ? load_project_file(file.path.c_str()) : load_quietly(file.bytes);
         ENSURE(scene != nullptr);
-        if (written(scene.get()) != file.written) {
+        if (written_text(scene.get()) != file.written) {
             std::fprintf(stderr, "load %d of %s gave another scene\n", i, file.path.c_str());
             return 1;
         }

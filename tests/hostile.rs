@@ -243,10 +243,7 @@ fn warnings_are_capped() {
 #[test]
 fn fuzz_warnings_truncated_before_the_last_kept_warning() {
     let xml = format!("<World Version=\"1\">\n{}</World>", "<a/>\n".repeat(1000));
-    let file = std::env::temp_dir().join(format!("box2scene-truncated-{}.xml", std::process::id()));
-    std::fs::write(&file, &xml).unwrap();
-    let from_path = box2scene::load_path(&file, &LoadOptions::default());
-    std::fs::remove_file(&file).unwrap();
+    let from_path = load_from_a_file(xml.as_bytes(), "truncated");
     for scene in [load_bytes(xml.as_bytes()).unwrap(), from_path.unwrap()] {
         let d = scene.diagnostics();
         assert_eq!(d.len(), box2scene::error::MAX_WARNINGS + 1);
@@ -257,6 +254,15 @@ fn fuzz_warnings_truncated_before_the_last_kept_warning() {
         assert_eq!(kept.code(), Some(Code::UnknownElement));
         assert_eq!((kept.line, kept.column), (1001, 1));
     }
+}
+
+/// Loads `bytes` through a file of their own, with the default options.
+fn load_from_a_file(bytes: &[u8], name: &str) -> Result<Scene, Error> {
+    let file = std::env::temp_dir().join(format!("box2scene-{name}-{}.xml", std::process::id()));
+    std::fs::write(&file, bytes).unwrap();
+    let scene = box2scene::load_path(&file, &LoadOptions::default());
+    std::fs::remove_file(&file).unwrap();
+    scene
 }
 
 fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
@@ -472,20 +478,16 @@ fn a_load_from_a_path_does_not_hold_the_file() {
         "<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{}</Bodies><Joints/></World>",
         body.repeat(count)
     );
-    let file = std::env::temp_dir().join(format!("box2scene-hostile-{}.xml", std::process::id()));
-    std::fs::write(&file, &xml).unwrap();
     let load_from = |from_path: bool| {
         extra_bytes_while(|| {
-            let options = LoadOptions::default();
             let scene = match from_path {
-                true => box2scene::load_path(&file, &options),
-                false => load(xml.as_bytes(), &options),
+                true => load_from_a_file(xml.as_bytes(), "held"),
+                false => load_bytes(xml.as_bytes()),
             };
             assert_eq!(scene.unwrap().bodies().len(), count);
         })
     };
     let (from_memory, from_path) = (load_from(false), load_from(true));
-    std::fs::remove_file(&file).unwrap();
     // From memory the input is the caller's; from a path only a window of it is held
     // (a chunk or two), with room for what other tests allocate meanwhile.
     let window = 2 << 20;
