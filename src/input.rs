@@ -224,18 +224,28 @@ impl<'a> Source<'a> {
         }
     }
 
-    /// The same text from its start again, for [`Locator`].
-    fn reopen(&self) -> Result<Source<'a>, Error> {
-        if self.base == 0 && self.file.is_none() {
-            return Ok(Source {
-                text: self.text.clone(),
-                base: 0,
-                file: None,
-                stop: self.stop.clone(),
-                encoding: self.encoding,
-                origin: self.origin.clone(),
-            });
+    /// Whether all the text is at hand, from its start.
+    fn is_whole(&self) -> bool {
+        self.base == 0 && self.file.is_none()
+    }
+
+    /// The same text from its start again, for [`Locator`]: borrowed when it is whole,
+    /// read again from its file otherwise.
+    fn reopen(&self) -> Result<Source<'_>, Error> {
+        if !self.is_whole() {
+            return self.read_again();
         }
+        Ok(Source {
+            text: Cow::Borrowed(&self.text),
+            base: 0,
+            file: None,
+            stop: self.stop.clone(),
+            encoding: self.encoding,
+            origin: self.origin.clone(),
+        })
+    }
+
+    fn read_again(&self) -> Result<Source<'a>, Error> {
         match self.origin {
             Origin::Path(path) => {
                 Source::path(path, &LoadOptions { max_input_bytes: u64::MAX, ..Default::default() })
@@ -367,7 +377,7 @@ pub struct Locator<'a> {
 }
 
 impl<'a> Locator<'a> {
-    pub fn new(source: &Source<'a>) -> Locator<'a> {
+    pub fn new(source: &'a Source<'_>) -> Locator<'a> {
         Locator {
             source: source.reopen().ok(),
             encoding: source.encoding,
@@ -382,9 +392,10 @@ impl<'a> Locator<'a> {
         if offset < self.offset {
             // Back to the start (a warnings-truncated warning points before the last
             // warning kept).
-            if let Some(restarted) = self.source.as_ref().map(Locator::new) {
-                *self = restarted;
+            if let Some(source) = self.source.as_ref().filter(|s| !s.is_whole()) {
+                self.source = source.read_again().ok();
             }
+            (self.offset, self.line, self.column, self.units) = (0, 1, 1, 0);
         }
         while let Some(source) = &mut self.source {
             let to = offset.min(source.end());
