@@ -19,7 +19,7 @@ fn bad(code: Code, at: usize, message: impl Into<String>) -> BadValue {
 }
 
 /// XML white space (not Unicode's), for `trim_*_matches`.
-pub const XML_SPACE: [char; 4] = [' ', '\t', '\r', '\n'];
+pub(crate) const XML_SPACE: [char; 4] = [' ', '\t', '\r', '\n'];
 
 /// XML white space, as a byte of UTF-8 text. All four are ASCII, so a byte that matches is a
 /// whole character and the text can be sliced next to it.
