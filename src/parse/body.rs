@@ -1,10 +1,10 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Parsed, Parser, Seen, Tag, problem};
+use super::{Names, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Body, BodyKind, MassData, Range};
 
-const BODY: &[&str] = &[
+const BODY: &Names = &Names::new(&[
     "name",
     "active",
     "allowsleep",
@@ -23,8 +23,8 @@ const BODY: &[&str] = &[
     "fixtures",
     "userdata",
     "bindings",
-];
-const MASS_DATA: &[&str] = &["mass", "center", "inertia"];
+]);
+const MASS_DATA: &Names = &Names::new(&["mass", "center", "inertia"]);
 
 impl<'a> Parser<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {

@@ -1,13 +1,21 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Parsed, Parser, Seen, Tag, problem};
+use super::{Names, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Filter, Fixture};
 use crate::text;
 
-const FIXTURE: &[&str] =
-    &["shape", "name", "density", "friction", "restitution", "issensor", "filterdata", "userdata"];
-const FILTER: &[&str] = &["categorybits", "maskbits", "groupindex", "collisionignores"];
+const FIXTURE: &Names = &Names::new(&[
+    "shape",
+    "name",
+    "density",
+    "friction",
+    "restitution",
+    "issensor",
+    "filterdata",
+    "userdata",
+]);
+const FILTER: &Names = &Names::new(&["categorybits", "maskbits", "groupindex", "collisionignores"]);
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {

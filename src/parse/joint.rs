@@ -1,12 +1,12 @@
 //! `<Joint Type="...">`: the common fields, then one table that says which element each
 //! joint kind has, where it goes, and what it may hold.
 
-use super::{JointOrigin, Parsed, Parser, Seen, Tag, problem};
+use super::{JointOrigin, Names, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Joint, JointKind, NONE, Vec2};
 use crate::validate;
 
-const JOINT: &[&str] = &[
+const JOINT: &Names = &Names::new(&[
     "Name",
     "UserData",
     "BodyA",
@@ -56,7 +56,7 @@ const JOINT: &[&str] = &[
     "Softness",
     "TargetAngle",
     "MinLength",
-];
+]);
 
 /// The elements that make a Farseer `Line` joint (February 2011 on) a wheel joint.
 const WHEEL_ONLY: [&str; 4] = ["FrequencyHz", "DampingRatio", "MaxMotorTorque", "LocalXAxis"];
@@ -158,7 +158,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
         true => Ok(v),
         false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
     };
-    for &name in JOINT {
+    for &name in JOINT.names {
         match slot(kind, name) {
             Some(Slot::Vector(field)) => {
                 let v = *field(&mut source);

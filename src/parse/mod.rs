@@ -14,11 +14,13 @@
 mod body;
 mod fixture;
 mod joint;
+mod names;
 mod shape;
 mod user_data;
 mod world;
 
 pub(crate) use joint::canonical_joint;
+pub(crate) use names::Names;
 pub(crate) use user_data::user_data_fragment;
 
 use std::borrow::Cow;
@@ -34,6 +36,7 @@ use crate::input::{Encoding, Locator, Source};
 use crate::scene::{Scene, SceneBuilder, Vec2};
 use crate::text::{self, BadValue, trim_xml, trim_xml_at};
 use crate::{LoadOptions, resolve, validate};
+use names::{Name, SHORT};
 
 /// Loads a scene from the bytes of a file.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
@@ -89,9 +92,13 @@ fn parse(source: Source<'_>, options: &LoadOptions) -> Result<Scene, Error> {
     Ok(scene.freeze())
 }
 
-/// An error or warning found while parsing, at a byte offset of the decoded text.
+/// An error or warning found while parsing, boxed so that a [`Parsed`] result is no bigger
+/// than its value plus a pointer.
+pub type Problem = Box<Finding>;
+
+/// What a [`Problem`] says, at a byte offset of the decoded text.
 #[derive(Debug)]
-pub struct Problem {
+pub struct Finding {
     pub code: Code,
     pub at: usize,
     pub message: String,
@@ -100,7 +107,7 @@ pub struct Problem {
 pub type Parsed<T> = Result<T, Problem>;
 
 pub fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
-    Problem { code, at, message: message.into() }
+    Box::new(Finding { code, at, message: message.into() })
 }
 
 fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
@@ -124,52 +131,10 @@ impl Tag {
         self.name.as_str()
     }
 
-    /// Names compare case-insensitively (spec section 2).
-    pub fn is(&self, name: &str) -> bool {
-        same_name(self.name.as_bytes(), name.as_bytes())
-    }
-}
-
-/// ASCII case-insensitive equality, cheapest when the bytes are equal, as they mostly are.
-fn same_name(a: &[u8], b: &[u8]) -> bool {
-    a.len() == b.len()
-        && a.iter()
-            .zip(b)
-            .all(|(&x, &y)| x == y || (x ^ y == 0x20 && (x | 0x20).is_ascii_lowercase()))
-}
-
-/// An element name, kept inline when short, as names almost always are.
-#[derive(Clone)]
-enum Name {
-    Short(u8, [u8; 22]),
-    Long(Box<str>),
-}
-
-impl Name {
-    fn new(name: &str) -> Name {
-        let mut inline = [0; 22];
-        match inline.get_mut(..name.len()) {
-            Some(bytes) => {
-                bytes.copy_from_slice(name.as_bytes());
-                Name::Short(name.len() as u8, inline)
-            }
-            None => Name::Long(name.into()),
-        }
-    }
-
-    fn as_bytes(&self) -> &[u8] {
-        match self {
-            Name::Short(len, name) => &name[..usize::from(*len)],
-            Name::Long(name) => name.as_bytes(),
-        }
-    }
-
-    fn as_str(&self) -> &str {
-        match self {
-            // Whole names are copied, so the bytes are text.
-            Name::Short(..) => std::str::from_utf8(self.as_bytes()).unwrap_or_default(),
-            Name::Long(name) => name,
-        }
+    /// Names compare case-insensitively (spec section 2); `key` is [`names::key`] of the
+    /// name to compare with.
+    pub fn is(&self, key: u128) -> bool {
+        self.name.key() == key
     }
 }
 
@@ -220,10 +185,9 @@ pub(crate) struct Seen {
 }
 
 impl Seen {
-    /// Whether the element `name` (any case) of the list `names` was read.
-    pub fn contains(&self, names: &[&str], name: &str) -> bool {
-        let index = names.iter().position(|n| n.eq_ignore_ascii_case(name));
-        index.is_some_and(|i| self.bits & (1 << i) != 0)
+    /// Whether the element `name` (any case) of `names` was read.
+    pub fn contains(&self, names: &Names, name: &str) -> bool {
+        names.index(name).is_some_and(|i| self.bits & (1 << i) != 0)
     }
 }
 
@@ -311,7 +275,10 @@ impl<'a> Parser<'a> {
     pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Parsed<()> {
         let w = problem(code, at, message);
         if self.options.strict {
-            return Err(Problem { message: format!("{} (strict mode)", w.message), ..w });
+            return Err(Box::new(Finding {
+                message: format!("{} (strict mode)", w.message),
+                ..*w
+            }));
         }
         if self.warnings.len() < MAX_WARNINGS {
             self.warnings.push(w);
@@ -473,24 +440,8 @@ impl<'a> Parser<'a> {
     }
 
     fn start_tag(&mut self, at: usize) -> Parsed<Node> {
-        let rest = self.rest(at + 1);
-        let stop = rest
-            .iter()
-            .position(|&b| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'/' | b'>' | b'"' | b'\''));
-        // `<Name>` and `<Name/>`, the usual tags, end right after their name.
-        let simple = match stop {
-            Some(i) if rest[i] == b'>' => Some((i, false, at + 1 + i)),
-            Some(i) if rest[i] == b'/' && rest.get(i + 1) == Some(&b'>') => {
-                Some((i, true, at + 2 + i))
-            }
-            _ => None,
-        };
-        let tag = match simple {
-            Some((name_len, empty, end)) => {
-                self.pos = end + 1;
-                let name = self.source.slice(at + 1, at + 1 + name_len);
-                Tag { name: Name::new(name), content: None, at, empty }
-            }
+        let tag = match self.short_tag(at) {
+            Some(tag) => tag,
             None => {
                 let end = self.tag_end(at)?;
                 self.pos = end + 1;
@@ -519,11 +470,25 @@ impl<'a> Parser<'a> {
         Ok(Node::Open(tag))
     }
 
+    /// `<Name>` or `<Name/>` with a short name, the usual tags, read without looking
+    /// for quotes. None for any other tag, or when too little text is at hand to tell.
+    fn short_tag(&mut self, at: usize) -> Option<Tag> {
+        let head = self.rest(at + 1).first_chunk::<{ SHORT + 2 }>()?;
+        let len = head.iter().position(|&b| ENDS_NAME[usize::from(b)]).filter(|&n| n <= SHORT)?;
+        let empty = match head[len..] {
+            [b'>', ..] => false,
+            [b'/', b'>', ..] => true,
+            _ => return None,
+        };
+        let name = Name::from_head(head.first_chunk()?, len);
+        self.pos = at + 2 + len + usize::from(empty);
+        Some(Tag { name, content: None, at, empty })
+    }
+
     fn end_tag(&mut self, at: usize) -> Parsed<Node> {
         // The usual end tag: `</Name>` of the open element.
         if let Some(expected) = self.open.last() {
-            let expected = expected.as_bytes();
-            if ends_tag(self.rest(at + 2), expected) {
+            if expected.ends(self.rest(at + 2)) {
                 self.pos = at + 3 + expected.len();
                 self.open.pop();
                 return Ok(Node::Close(at));
@@ -722,12 +687,12 @@ impl<'a> Parser<'a> {
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
-        let expected = self.open.last().filter(|_| !tag.empty)?.as_bytes();
+        let expected = self.open.last().filter(|_| !tag.empty)?;
         let at = self.pos;
         let rest = self.rest(at);
         let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
         let close = rest[len..].strip_prefix(b"</")?;
-        if !ends_tag(close, expected) || len as u64 > self.options.max_text_bytes {
+        if !expected.ends(close) || len as u64 > self.options.max_text_bytes {
             return None;
         }
         let (start, end) = text::trimmed_span(&rest[..len]);
@@ -818,7 +783,7 @@ impl<'a> Parser<'a> {
             let from = piece.as_ptr().addr().checked_sub(content.as_ptr().addr())?;
             Some((from, content.get(from..from + piece.len())?))
         };
-        let start = BytesStart::from_content(content, tag.name.as_bytes().len());
+        let start = BytesStart::from_content(content, tag.name.len());
         let mut attrs = Vec::new();
         for attr in start.attributes() {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
@@ -891,16 +856,10 @@ impl<'a> Parser<'a> {
         &mut self,
         parent: &Tag,
         child: &Tag,
-        names: &[&'static str],
+        names: &Names,
         seen: &mut Seen,
     ) -> Parsed<Option<(&'static str, bool)>> {
-        let name = child.name.as_bytes();
-        let start = seen.next.min(names.len());
-        let (after, before) = (&names[start..], &names[..start]);
-        let matches = |n: &&str| same_name(n.as_bytes(), name);
-        let found = (after.iter().position(matches).map(|i| start + i))
-            .or_else(|| before.iter().position(matches));
-        let Some(index) = found else {
+        let Some(index) = names.find(child.name.key(), seen.next) else {
             self.unknown(parent, child)?;
             return Ok(None);
         };
@@ -908,7 +867,7 @@ impl<'a> Parser<'a> {
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;
         seen.next = index + 1;
-        Ok(Some((names[index], repeated)))
+        Ok(Some((names.names[index], repeated)))
     }
 
     /// Warns that a scalar element was repeated (the last one wins).
@@ -939,8 +898,9 @@ impl<'a> Parser<'a> {
         item: &str,
         mut each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
     ) -> Parsed<()> {
+        let key = names::key(item);
         while let Some(child) = self.child(container)? {
-            if !child.is(item) {
+            if !child.is(key) {
                 return Err(problem(
                     Code::UnexpectedElement,
                     child.at,
@@ -990,10 +950,21 @@ impl<'a> Parser<'a> {
     }
 }
 
-/// Whether `after_slash`, the text after `</`, is `name>`: the usual end tag.
-fn ends_tag(after_slash: &[u8], name: &[u8]) -> bool {
-    after_slash.get(name.len()) == Some(&b'>') && after_slash.starts_with(name)
-}
+/// The bytes that end a name in the usual tags: white space (and the control characters,
+/// which no name has), `/`, `>` and quotes.
+const ENDS_NAME: [bool; 256] = {
+    let mut ends = [false; 256];
+    let mut b = 0;
+    while b <= b' ' {
+        ends[b as usize] = true;
+        b += 1;
+    }
+    ends[b'/' as usize] = true;
+    ends[b'>' as usize] = true;
+    ends[b'"' as usize] = true;
+    ends[b'\'' as usize] = true;
+    ends
+};
 
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first bytes
 /// are looked at one by one, which is cheaper than setting up memchr, which takes the rest.
@@ -1070,21 +1041,5 @@ pub(crate) fn shorten(text: &str) -> Cow<'_, str> {
     match text.char_indices().nth(40) {
         Some((cut, _)) => Cow::Owned(format!("{}...", &text[..cut])),
         None => Cow::Borrowed(text),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn same_name_is_ascii_case_insensitive_equality() {
-        for x in 0..=u8::MAX {
-            for y in 0..=u8::MAX {
-                let expected = x.eq_ignore_ascii_case(&y);
-                assert_eq!(super::same_name(&[x], &[y]), expected, "{x} {y}");
-            }
-        }
-        assert!(super::same_name(b"LocalAnchorA", b"localanchora"));
-        assert!(!super::same_name(b"LocalAnchorA", b"localanchorb"));
-        assert!(!super::same_name(b"Body", b"Bodies"));
     }
 }

@@ -1,11 +1,11 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Parsed, Parser, Seen, Tag, problem};
+use super::{Names, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 use crate::scene::{Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
-const SHAPE: &[&str] = &[
+const SHAPE: &Names = &Names::new(&[
     "name",
     "radius",
     "position",
@@ -22,7 +22,7 @@ const SHAPE: &[&str] = &[
     "hasprevvertex",
     "hasnextvertex",
     "loop",
-];
+]);
 
 /// Whether a shape of `kind` has the element `name` (from [`SHAPE`]).
 fn belongs(kind: ShapeKind, name: &str) -> bool {

@@ -1,9 +1,9 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Parsed, Parser, Seen, Tag, problem};
+use super::{Names, Parsed, Parser, Seen, Tag, problem};
 use crate::error::Code;
 
-const WORLD: &[&str] = &["gravity", "shapes", "fixtures", "bodies", "joints"];
+const WORLD: &Names = &Names::new(&["gravity", "shapes", "fixtures", "bodies", "joints"]);
 const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
 
 impl<'a> Parser<'a> {
@@ -36,7 +36,7 @@ impl<'a> Parser<'a> {
                 }
             }
         };
-        if !root.is("world") {
+        if !root.is(super::names::key("world")) {
             return Err(problem(
                 Code::NotAScene,
                 root.at,

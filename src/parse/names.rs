@@ -1,0 +1,218 @@
+//! Element names. Nearly every name has at most 16 bytes and is kept in one 128-bit
+//! number, so that reading it, matching its end tag and looking it up among an object's
+//! known elements take a few integer operations instead of byte loops.
+
+/// The most bytes a name kept in one number has.
+pub(super) const SHORT: usize = 16;
+
+/// An element name.
+#[derive(Clone)]
+pub(super) enum Name {
+    /// A name of at most [`SHORT`] bytes, none of them a control character or a space:
+    /// its bytes in order, then zeros.
+    Short([u8; SHORT]),
+    Long(Box<str>),
+}
+
+impl Name {
+    pub fn new(name: &str) -> Name {
+        let mut short = [0; SHORT];
+        match short.get_mut(..name.len()) {
+            Some(bytes) if name.bytes().all(|b| b > b' ') => {
+                bytes.copy_from_slice(name.as_bytes());
+                Name::Short(short)
+            }
+            _ => Name::Long(name.into()),
+        }
+    }
+
+    /// The name made of the first `len` bytes of `head`, which a caller found to be one.
+    pub fn from_head(head: &[u8; SHORT], len: usize) -> Name {
+        let bytes = u128::from_le_bytes(*head) & low_bytes(len);
+        Name::Short(bytes.to_le_bytes())
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Name::Short(bytes) => {
+                SHORT - (u128::from_le_bytes(*bytes).leading_zeros() / 8) as usize
+            }
+            Name::Long(name) => name.len(),
+        }
+    }
+
+    pub fn as_bytes(&self) -> &[u8] {
+        match self {
+            Name::Short(bytes) => &bytes[..self.len()],
+            Name::Long(name) => name.as_bytes(),
+        }
+    }
+
+    pub fn as_str(&self) -> &str {
+        // Whole names are copied, so the bytes are text.
+        std::str::from_utf8(self.as_bytes()).unwrap_or_default()
+    }
+
+    /// The name with ASCII letters folded to lower case; 0 for a long name, which no
+    /// known element has.
+    pub fn key(&self) -> u128 {
+        match self {
+            Name::Short(bytes) => fold(u128::from_le_bytes(*bytes), self.len()),
+            Name::Long(_) => 0,
+        }
+    }
+
+    /// Whether `after_slash`, the text after `</`, is this name and `>`: the usual end tag.
+    pub fn ends(&self, after_slash: &[u8]) -> bool {
+        let len = self.len();
+        match (self, after_slash.first_chunk::<SHORT>()) {
+            (Name::Short(bytes), Some(head)) => {
+                u128::from_le_bytes(*head) & low_bytes(len) == u128::from_le_bytes(*bytes)
+                    && after_slash.get(len) == Some(&b'>')
+            }
+            _ => after_slash.get(len) == Some(&b'>') && after_slash.starts_with(self.as_bytes()),
+        }
+    }
+}
+
+/// The key of a known element's name, as [`Name::key`] gives it for that name in any case.
+/// Known names are ASCII letters and digits, at most [`SHORT`] of them.
+pub(super) const fn key(name: &str) -> u128 {
+    let bytes = name.as_bytes();
+    assert!(bytes.len() <= SHORT, "a known element name has at most 16 bytes");
+    let mut raw = 0u128;
+    let mut i = bytes.len();
+    while i > 0 {
+        i -= 1;
+        assert!(bytes[i].is_ascii_alphanumeric(), "known element names are letters and digits");
+        raw = raw << 8 | bytes[i] as u128;
+    }
+    fold(raw, bytes.len())
+}
+
+/// Sets bit 5 of each of the first `len` bytes: that makes ASCII letters lower case and
+/// leaves digits as they are. Another byte of a short name could only meet a letter or a
+/// digit of a known name this way if it were a control character, which short names
+/// never hold, or a byte of 0x80 or above, which a known name never has.
+const fn fold(bytes: u128, len: usize) -> u128 {
+    bytes | (u128::from_le_bytes([0x20; SHORT]) & low_bytes(len))
+}
+
+/// A mask of the first `len` bytes (`len` at most [`SHORT`]).
+const fn low_bytes(len: usize) -> u128 {
+    match len {
+        SHORT => u128::MAX,
+        _ => (1 << (8 * len)) - 1,
+    }
+}
+
+/// The known elements of an object, in the order writers list them, with their keys.
+pub(crate) struct Names {
+    pub names: &'static [&'static str],
+    keys: [u128; Names::MOST],
+}
+
+impl Names {
+    /// The most elements an object has (a joint's, with Farseer's spellings).
+    const MOST: usize = 64;
+
+    pub const fn new(names: &'static [&'static str]) -> Names {
+        assert!(names.len() <= Names::MOST);
+        let mut keys = [0; Names::MOST];
+        let mut i = 0;
+        while i < names.len() {
+            keys[i] = key(names[i]);
+            i += 1;
+        }
+        Names { names, keys }
+    }
+
+    /// The index of the element whose key is `key`, looking from `start` on first.
+    pub fn find(&self, key: u128, start: usize) -> Option<usize> {
+        let keys = &self.keys[..self.names.len()];
+        let start = start.min(keys.len());
+        let (before, after) = keys.split_at(start);
+        (after.iter().position(|&k| k == key).map(|i| start + i))
+            .or_else(|| before.iter().position(|&k| k == key))
+    }
+
+    /// The index of `name` (any case), which must be one of them.
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.find(key(name), 0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Name, key};
+
+    /// Case-insensitive ASCII equality, the rule for element names (spec section 2).
+    fn same(a: &[u8], b: &[u8]) -> bool {
+        a.eq_ignore_ascii_case(b)
+    }
+
+    #[test]
+    fn a_key_matches_exactly_the_names_equal_to_it_in_any_case() {
+        let known = ["vertex1", "localanchora", "collideconnected", "id", "x"];
+        let mut names: Vec<Vec<u8>> = Vec::new();
+        for k in known {
+            names.push(k.as_bytes().to_vec());
+            names.push(k.to_ascii_uppercase().into_bytes());
+        }
+        // Every byte in every place of a few names, and one byte more or less.
+        for base in [&b"Vertex1"[..], b"LocalAnchorA", b"ID", b"CollideConnected"] {
+            for i in 0..base.len() {
+                for b in 0x21..=u8::MAX {
+                    let mut name = base.to_vec();
+                    name[i] = b;
+                    names.push(name);
+                }
+            }
+            names.push(base[..base.len() - 1].to_vec());
+            names.push([base, b"1"].concat());
+        }
+        for name in &names {
+            let Ok(text) = std::str::from_utf8(name) else { continue };
+            let name = Name::new(text);
+            for k in known {
+                assert_eq!(
+                    name.key() == key(k),
+                    same(text.as_bytes(), k.as_bytes()),
+                    "{text:?} {k}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn names_with_control_characters_or_over_16_bytes_match_no_key() {
+        assert_eq!(Name::new("Vertex\u{11}").key(), 0);
+        assert_eq!(Name::new("Vertex\u{11}").as_str(), "Vertex\u{11}");
+        let long = "CollideConnectedX";
+        assert_eq!(Name::new(long).key(), 0);
+        assert_eq!(Name::new(long).as_str(), long);
+    }
+
+    #[test]
+    fn a_name_ends_only_at_its_own_end_tag() {
+        for name in ["A", "Vertex", "CollideConnected", "CollideConnectedX", "名前"] {
+            let n = Name::new(name);
+            assert_eq!(n.len(), name.len());
+            assert_eq!(n.as_str(), name);
+            let name = name.as_bytes();
+            // Short and long text after the name, since a short name reads 16 bytes at once.
+            for tail in [&b""[..], b"                 "] {
+                let ends = |text: &[&[u8]]| n.ends(&[text, &[tail]].concat().concat());
+                assert!(ends(&[name, b">"]));
+                assert!(!ends(&[name, b" >"]));
+                assert!(!ends(&[name, b"x>"]));
+                assert!(
+                    !ends(&[&name.to_ascii_lowercase(), b">"]) || name == name.to_ascii_lowercase()
+                );
+                assert!(!ends(&[&name[..name.len() - 1], b">"]));
+                assert!(!ends(&[name]));
+            }
+        }
+        assert!(!Name::new("Vertex").ends(b"vertex>                 "));
+    }
+}
