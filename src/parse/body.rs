@@ -119,7 +119,7 @@ impl<'a> Parser<'a> {
             ));
         };
         let value = super::trim_xml(&ty.value);
-        match value.to_ascii_lowercase().as_str() {
+        match super::lowercase(value, &mut [0; 16]) {
             "static" => Ok(BodyKind::Static),
             "kinematic" => Ok(BodyKind::Kinematic),
             "dynamic" => Ok(BodyKind::Dynamic),

@@ -179,7 +179,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
 
 fn joint_kind(value: &str) -> Option<JointKind> {
     use JointKind::*;
-    Some(match value.to_ascii_lowercase().as_str() {
+    Some(match super::lowercase(value, &mut [0; 16]) {
         "angle" | "slider" => Unsupported,
         "revolute" => Revolute,
         "prismatic" => Prismatic,

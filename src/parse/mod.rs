@@ -426,10 +426,16 @@ impl<'a> Parser<'a> {
 
     /// The end of a tag that starts at `at`: the offset of its `>`.
     fn tag_end(&mut self, at: usize) -> Parsed<usize> {
-        // Most tags have no attributes, so no quotes that could hold a `>`.
-        if let Some(i) = find3(self.rest(at + 1), b'>', b'"', b'\'') {
-            if self.rest(at + 1)[i] == b'>' {
+        // The tag at hand, its quoted values skipped; the element parser takes the rest.
+        let rest = self.rest(at + 1);
+        let mut from = 0;
+        while let Some(i) = find3(&rest[from..], b'>', b'"', b'\'').map(|i| from + i) {
+            if rest[i] == b'>' {
                 return Ok(at + 1 + i);
+            }
+            match memchr::memchr(rest[i], &rest[i + 1..]) {
+                Some(len) => from = i + 2 + len,
+                None => break,
             }
         }
         let mut parser = ElementParser::Outside;
@@ -777,6 +783,14 @@ impl<'a> Parser<'a> {
         let Some(content) = tag.content.as_deref() else {
             return Ok(Vec::new());
         };
+        match plain_attributes(content, tag.name.len(), tag.at) {
+            Some(attrs) => Ok(attrs),
+            None => self.xml_attributes(tag, content),
+        }
+    }
+
+    /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
+    fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Vec<Attr<'t>>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
         // tag, is found by its offset in `content` (which counts from after `<`).
         let within = |piece: &str| {
@@ -950,6 +964,45 @@ impl<'a> Parser<'a> {
     }
 }
 
+/// The attributes of the usual tag, whose `content` (what follows its `<`) has its name
+/// of `name_len` bytes and then `name="value"` pairs (or single quotes) after white space,
+/// with plain names, values with no reference, `<` or line break, and no name twice.
+/// None for anything else: quick-xml reads that, and tells what is malformed.
+fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
+    let bytes = content.as_bytes();
+    let mut attrs: Vec<Attr> = Vec::new();
+    let mut i = name_len;
+    loop {
+        let space = text::leading_space(&bytes[i..]);
+        i += space;
+        if i == bytes.len() {
+            return Some(attrs);
+        }
+        let key_len = bytes[i..].iter().position(|&b| !is_plain_name_byte(b))?;
+        let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
+        let [b'=', quote @ (b'"' | b'\''), value @ ..] = after else {
+            return None;
+        };
+        let len = value
+            .iter()
+            .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
+        if space == 0 || key_len == 0 || value[len] != *quote || attrs.iter().any(|a| a.key == key)
+        {
+            return None;
+        }
+        let start = i + key_len + 2;
+        let value = Cow::Borrowed(&content[start..start + len]);
+        attrs.push(Attr { key, value, at: at + 1 + start });
+        i = start + len + 1;
+    }
+}
+
+/// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without
+/// quick-xml.
+fn is_plain_name_byte(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || matches!(b, b'_' | b':' | b'-' | b'.')
+}
+
 /// The bytes that end a name in the usual tags: white space (and the control characters,
 /// which no name has), `/`, `>` and quotes.
 const ENDS_NAME: [bool; 256] = {
@@ -1036,10 +1089,71 @@ pub(crate) fn not_negative(what: &str, value: f32, at: usize) -> Parsed<f32> {
     Ok(value)
 }
 
+/// `word` in ASCII lower case, made in `buffer` when it fits (the words it is matched
+/// against are shorter), so that matching a Type attribute allocates nothing.
+pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b str {
+    let Some(bytes) = buffer.get_mut(..word.len()) else {
+        return word;
+    };
+    bytes.copy_from_slice(word.as_bytes());
+    bytes.make_ascii_lowercase();
+    // Changing the case of ASCII letters keeps the text valid.
+    std::str::from_utf8(bytes).unwrap_or_default()
+}
+
 /// At most 40 characters of `text`, for messages.
 pub(crate) fn shorten(text: &str) -> Cow<'_, str> {
     match text.char_indices().nth(40) {
         Some((cut, _)) => Cow::Owned(format!("{}...", &text[..cut])),
         None => Cow::Borrowed(text),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Attr, Name, Parser, Source, Tag, plain_attributes};
+    use crate::LoadOptions;
+
+    fn read(attrs: &[Attr]) -> Vec<(String, String, usize)> {
+        attrs.iter().map(|a| (a.key.to_string(), a.value.to_string(), a.at)).collect()
+    }
+
+    /// The plain reading of attributes gives what quick-xml gives, or leaves the tag to it.
+    #[test]
+    fn plain_attributes_agree_with_quick_xml() {
+        let options = LoadOptions::default();
+        let parser = Parser::new(Source::memory(b"", &options).unwrap(), &options);
+        let keys = ["Type", "type", "a:b", "x-y.z", "_k", "é", "1a", "a b", ""];
+        let values = ["Polygon", "", "a&amp;b", "a<b", "tab\there", "line\nbreak", "it's", "x\"y"];
+        let spaces = [" ", "\t", "\r\n", "", "  "];
+        let mut tried = 0;
+        for key in keys {
+            for value in values {
+                for space in spaces {
+                    for quote in ['"', '\''] {
+                        for equals in ["=", " = ", "= "] {
+                            let first = format!("{space}{key}{equals}{quote}{value}{quote}");
+                            for rest in ["", " ", " Other='1'", " Type=\"2\"", "Id=\"3\"", " k"] {
+                                let content = format!("Shape{first}{rest}");
+                                let tag = Tag {
+                                    name: Name::new("Shape"),
+                                    content: Some(content.as_str().into()),
+                                    at: 7,
+                                    empty: false,
+                                };
+                                let body = tag.content.as_deref().unwrap();
+                                let xml = parser.xml_attributes(&tag, body);
+                                if let Some(plain) = plain_attributes(body, 5, 7) {
+                                    let xml = xml.unwrap_or_else(|e| panic!("{content:?}: {e:?}"));
+                                    assert_eq!(read(&plain), read(&xml), "{content:?}");
+                                    tried += 1;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(tried > 200, "only {tried} contents were plain");
     }
 }

@@ -9,8 +9,8 @@ pub(super) const SHORT: usize = 16;
 #[derive(Clone)]
 pub(super) enum Name {
     /// A name of at most [`SHORT`] bytes, none of them a control character or a space:
-    /// its bytes in order, then zeros.
-    Short([u8; SHORT]),
+    /// how many, and its bytes in order, then zeros.
+    Short(u8, [u8; SHORT]),
     Long(Box<str>),
 }
 
@@ -20,7 +20,7 @@ impl Name {
         match short.get_mut(..name.len()) {
             Some(bytes) if name.bytes().all(|b| b > b' ') => {
                 bytes.copy_from_slice(name.as_bytes());
-                Name::Short(short)
+                Name::Short(name.len() as u8, short)
             }
             _ => Name::Long(name.into()),
         }
@@ -29,21 +29,19 @@ impl Name {
     /// The name made of the first `len` bytes of `head`, which a caller found to be one.
     pub fn from_head(head: &[u8; SHORT], len: usize) -> Name {
         let bytes = u128::from_le_bytes(*head) & low_bytes(len);
-        Name::Short(bytes.to_le_bytes())
+        Name::Short(len as u8, bytes.to_le_bytes())
     }
 
     pub fn len(&self) -> usize {
         match self {
-            Name::Short(bytes) => {
-                SHORT - (u128::from_le_bytes(*bytes).leading_zeros() / 8) as usize
-            }
+            Name::Short(len, _) => usize::from(*len),
             Name::Long(name) => name.len(),
         }
     }
 
     pub fn as_bytes(&self) -> &[u8] {
         match self {
-            Name::Short(bytes) => &bytes[..self.len()],
+            Name::Short(len, bytes) => &bytes[..usize::from(*len)],
             Name::Long(name) => name.as_bytes(),
         }
     }
@@ -57,7 +55,7 @@ impl Name {
     /// known element has.
     pub fn key(&self) -> u128 {
         match self {
-            Name::Short(bytes) => fold(u128::from_le_bytes(*bytes), self.len()),
+            Name::Short(len, bytes) => fold(u128::from_le_bytes(*bytes), usize::from(*len)),
             Name::Long(_) => 0,
         }
     }
@@ -66,7 +64,7 @@ impl Name {
     pub fn ends(&self, after_slash: &[u8]) -> bool {
         let len = self.len();
         match (self, after_slash.first_chunk::<SHORT>()) {
-            (Name::Short(bytes), Some(head)) => {
+            (Name::Short(_, bytes), Some(head)) => {
                 u128::from_le_bytes(*head) & low_bytes(len) == u128::from_le_bytes(*bytes)
                     && after_slash.get(len) == Some(&b'>')
             }
@@ -100,11 +98,18 @@ const fn fold(bytes: u128, len: usize) -> u128 {
 
 /// A mask of the first `len` bytes (`len` at most [`SHORT`]).
 const fn low_bytes(len: usize) -> u128 {
-    match len {
-        SHORT => u128::MAX,
-        _ => (1 << (8 * len)) - 1,
-    }
+    LOW_BYTES[len]
 }
+
+const LOW_BYTES: [u128; SHORT + 1] = {
+    let mut masks = [u128::MAX; SHORT + 1];
+    let mut len = 0;
+    while len < SHORT {
+        masks[len] = (1 << (8 * len)) - 1;
+        len += 1;
+    }
+    masks
+};
 
 /// The known elements of an object, in the order writers list them, with their keys.
 pub(crate) struct Names {

@@ -135,7 +135,7 @@ impl<'a> Parser<'a> {
             ));
         };
         let value = super::trim_xml(&ty.value);
-        let (kind, is_loop) = match value.to_ascii_lowercase().as_str() {
+        let (kind, is_loop) = match super::lowercase(value, &mut [0; 16]) {
             "circle" => (ShapeKind::Circle, false),
             "polygon" => (ShapeKind::Polygon, false),
             "edge" => (ShapeKind::Edge, false),
