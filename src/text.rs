@@ -90,7 +90,13 @@ pub fn float(s: &str) -> Result<f32, BadValue> {
 /// the standard library's parse gives (Clinger's fast path, which that parse also takes
 /// after more general work). None for anything else.
 fn exact_float(s: &str) -> Option<f32> {
-    let bytes = s.as_bytes();
+    exact_float_prefix(s.as_bytes()).filter(|&(_, len)| len == s.len()).map(|(value, _)| value)
+}
+
+/// [`exact_float`] of the float `bytes` start with, and how many bytes it has. None when
+/// they start with no float, or one that is not exact in one step, or one whose exponent
+/// has more than 3 digits.
+fn exact_float_prefix(bytes: &[u8]) -> Option<(f32, usize)> {
     let (negative, mut i) = match bytes.first()? {
         b'-' => (true, 1),
         b'+' => (false, 1),
@@ -115,31 +121,27 @@ fn exact_float(s: &str) -> Option<f32> {
     }
     if let Some(b'e' | b'E') = bytes.get(i) {
         i += 1;
-        let negative_exponent = match bytes.get(i) {
-            Some(b'-') => {
-                i += 1;
-                true
-            }
-            Some(b'+') => {
-                i += 1;
-                false
-            }
-            _ => false,
-        };
-        let exponent = s.get(i..).filter(|e| !e.is_empty() && e.len() <= 3)?;
-        let exponent: i32 =
-            exponent.bytes().all(|b| b.is_ascii_digit()).then(|| exponent.parse().ok())??;
+        let negative_exponent = bytes.get(i) == Some(&b'-');
+        if let Some(b'-' | b'+') = bytes.get(i) {
+            i += 1;
+        }
+        let exponent_digits = bytes[i..].iter().take(4).take_while(|b| b.is_ascii_digit()).count();
+        if !(1..=3).contains(&exponent_digits) {
+            return None;
+        }
+        let exponent =
+            bytes[i..i + exponent_digits].iter().fold(0, |e, &b| e * 10 + i32::from(b - b'0'));
         scale += if negative_exponent { -exponent } else { exponent };
-        i = bytes.len();
+        i += exponent_digits;
     }
-    if i != bytes.len() || !(-10..=10).contains(&scale) {
+    if !(-10..=10).contains(&scale) {
         return None;
     }
     const POWERS: [f32; 11] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
     let power = POWERS[scale.unsigned_abs() as usize];
     let magnitude = mantissa as f32;
     let value = if scale < 0 { magnitude / power } else { magnitude * power };
-    Some(if negative { -value } else { value })
+    Some((if negative { -value } else { value }, i))
 }
 
 /// Why `s`, which is empty or has a byte no float has, is not a float: nothing at all, an
@@ -179,6 +181,9 @@ fn not_a_float(s: &str) -> BadValue {
 /// - no comma and exactly two runs: the parts are the runs;
 /// - anything else is not a vector.
 pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
+    if let Some(v) = exact_vector2(s.as_bytes()) {
+        return Ok(v);
+    }
     if s.is_empty() {
         return Ok(Vec2::ZERO);
     }
@@ -245,6 +250,20 @@ pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
         float(trimmed).map_err(|e| BadValue { at: at + lead + e.at, ..e })
     };
     Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
+}
+
+/// The usual vector in one pass: an exact float, white space and/or one comma, an exact
+/// float (see [`exact_float`]). None for anything else, which [`vector2`] reads in full.
+fn exact_vector2(bytes: &[u8]) -> Option<Vec2> {
+    let (x, mut i) = exact_float_prefix(bytes)?;
+    let separator = i;
+    i += leading_space(&bytes[i..]);
+    if bytes.get(i) == Some(&b',') {
+        i += 1;
+        i += leading_space(&bytes[i..]);
+    }
+    let (y, len) = exact_float_prefix(bytes.get(i..).filter(|_| i > separator)?)?;
+    (i + len == bytes.len()).then_some(Vec2 { x, y })
 }
 
 /// `true`/`false` in any letter case, or `1`/`0`.
