@@ -27,9 +27,31 @@ pub fn is_xml_space_byte(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\r' | b'\n')
 }
 
-/// How many bytes of XML white space `bytes` starts with.
+/// How many bytes of XML white space `bytes` starts with, looking at eight at a time:
+/// indentation before a tag is often longer than that.
 pub fn leading_space(bytes: &[u8]) -> usize {
-    bytes.iter().position(|&b| !is_xml_space_byte(b)).unwrap_or(bytes.len())
+    let mut i = 0;
+    while let Some(eight) = bytes[i..].first_chunk::<8>() {
+        let word = u64::from_le_bytes(*eight);
+        let space = [b' ', b'\t', b'\n', b'\r']
+            .into_iter()
+            .fold(0, |space, b| space | zero_bytes(word ^ u64::from_le_bytes([b; 8])));
+        let other = !space & HIGH_BITS;
+        if other != 0 {
+            return i + (other.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
+    i + bytes[i..].iter().position(|&b| !is_xml_space_byte(b)).unwrap_or(bytes.len() - i)
+}
+
+const HIGH_BITS: u64 = u64::from_le_bytes([0x80; 8]);
+
+/// The high bit of each byte of `word` that is zero. Exact for every byte (no borrow
+/// crosses from one byte to the next, as it can in the shorter formula).
+fn zero_bytes(word: u64) -> u64 {
+    let low = !HIGH_BITS;
+    !(((word & low) + low) | word) & HIGH_BITS
 }
 
 /// Where `bytes` without leading and trailing XML white space starts and ends.
@@ -102,23 +124,28 @@ fn exact_float_prefix(bytes: &[u8]) -> Option<(f32, usize)> {
         b'+' => (false, 1),
         _ => (false, 0),
     };
-    let (mut digits, mut mantissa, mut scale) = (0, 0u32, 0i32);
-    let mut point = false;
-    while let Some(&b) = bytes.get(i) {
-        match b {
-            b'0'..=b'9' => {
-                mantissa = mantissa.checked_mul(10)?.checked_add(u32::from(b - b'0'))?;
-                scale -= i32::from(point);
-                digits += 1;
-            }
-            b'.' if !point => point = true,
-            _ => break,
+    // At most 19 digits in all, so that the mantissa cannot overflow.
+    let mut mantissa = 0u64;
+    let mut digits = |i: &mut usize| {
+        let from = *i;
+        while let Some(digit) = bytes.get(*i).map(|b| b.wrapping_sub(b'0')).filter(|&d| d < 10) {
+            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(digit));
+            *i += 1;
         }
-        i += 1;
-    }
-    if digits == 0 || mantissa > 1 << 24 {
+        *i - from
+    };
+    let whole = digits(&mut i);
+    let fraction = match bytes.get(i) {
+        Some(b'.') => {
+            i += 1;
+            digits(&mut i)
+        }
+        _ => 0,
+    };
+    if whole + fraction == 0 || whole + fraction > 19 || mantissa > 1 << 24 {
         return None;
     }
+    let mut scale = -(fraction as i32);
     if let Some(b'e' | b'E') = bytes.get(i) {
         i += 1;
         let negative_exponent = bytes.get(i) == Some(&b'-');
@@ -635,6 +662,25 @@ mod tests {
 
     fn same_trim(text: &str) {
         assert_eq!(trim_xml(text), old::trim_xml(text), "trim_xml({text:?})");
+    }
+
+    #[test]
+    fn leading_space_stops_at_the_first_other_byte() {
+        let spaces = b" \t\n\r";
+        for len in 0..20 {
+            for b in 0..=u8::MAX {
+                // `len` white space bytes of every kind, `b`, then more white space.
+                let mut bytes: Vec<u8> = (0..len).map(|i| spaces[i % 4]).collect();
+                bytes.push(b);
+                bytes.extend(spaces);
+                let expected = match spaces.contains(&b) {
+                    true => bytes.len(),
+                    false => len,
+                };
+                assert_eq!(super::leading_space(&bytes), expected, "{bytes:?}");
+                assert_eq!(super::leading_space(&bytes[..len]), len);
+            }
+        }
     }
 
     #[test]
