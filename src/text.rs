@@ -30,12 +30,15 @@ pub fn is_xml_space_byte(b: u8) -> bool {
 /// How many bytes of XML white space `bytes` starts with, looking at eight at a time:
 /// indentation before a tag is often longer than that.
 pub fn leading_space(bytes: &[u8]) -> usize {
+    if !bytes.first().is_some_and(|&b| is_xml_space_byte(b)) {
+        return 0;
+    }
     let mut i = 0;
     while let Some(eight) = bytes[i..].first_chunk::<8>() {
         let word = u64::from_le_bytes(*eight);
         let space = [b' ', b'\t', b'\n', b'\r']
             .into_iter()
-            .fold(0, |space, b| space | zero_bytes(word ^ u64::from_le_bytes([b; 8])));
+            .fold(0, |space, b| space | bytes_equal(word, b));
         let other = !space & HIGH_BITS;
         if other != 0 {
             return i + (other.trailing_zeros() / 8) as usize;
@@ -46,6 +49,11 @@ pub fn leading_space(bytes: &[u8]) -> usize {
 }
 
 const HIGH_BITS: u64 = u64::from_le_bytes([0x80; 8]);
+
+/// The high bit of each byte of `word` that is `b`.
+pub(crate) fn bytes_equal(word: u64, b: u8) -> u64 {
+    zero_bytes(word ^ u64::from_le_bytes([b; 8]))
+}
 
 /// The high bit of each byte of `word` that is zero. Exact for every byte (no borrow
 /// crosses from one byte to the next, as it can in the shorter formula).

@@ -141,9 +141,9 @@ impl Names {
             .or_else(|| before.iter().position(|&k| k == key))
     }
 
-    /// The index of `name` (any case), which must be one of them.
+    /// The index of `name` (any case).
     pub fn index(&self, name: &str) -> Option<usize> {
-        self.find(key(name), 0)
+        self.names.iter().position(|n| n.eq_ignore_ascii_case(name))
     }
 }
 
