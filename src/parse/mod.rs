@@ -463,6 +463,13 @@ impl<'a> Parser<'a> {
                 Tag { name: Name::new(name), content, at, empty }
             }
         };
+        self.opened(&tag)?;
+        Ok(Node::Open(tag))
+    }
+
+    /// Counts a start tag just read against the limits and opens its element.
+    fn opened(&mut self, tag: &Tag) -> Parsed<()> {
+        let at = tag.at;
         self.elements += 1;
         if self.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
@@ -473,13 +480,18 @@ impl<'a> Parser<'a> {
             }
             self.open.push(tag.name.clone());
         }
-        Ok(Node::Open(tag))
+        Ok(())
     }
 
     /// `<Name>` or `<Name/>` with a short name, the usual tags, read without looking
     /// for quotes. None for any other tag, or when too little text is at hand to tell.
     fn short_tag(&mut self, at: usize) -> Option<Tag> {
-        let head = self.rest(at + 1).first_chunk::<{ SHORT + 2 }>()?;
+        let [b'<', head @ ..] = self.rest(at).first_chunk::<{ SHORT + 3 }>()? else {
+            return None;
+        };
+        if matches!(head[0], b'/' | b'?' | b'!') {
+            return None;
+        }
         let len = head.iter().position(|&b| ENDS_NAME[usize::from(b)]).filter(|&n| n <= SHORT)?;
         let empty = match head[len..] {
             [b'>', ..] => false,
@@ -608,6 +620,12 @@ impl<'a> Parser<'a> {
     pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         if parent.empty {
             return Ok(None);
+        }
+        self.skip_space();
+        if let Some(tag) = self.short_tag(self.pos) {
+            (self.last, self.started) = (self.started, tag.at);
+            self.opened(&tag)?;
+            return Ok(Some(tag));
         }
         loop {
             self.skip_space();

@@ -27,11 +27,13 @@ impl Name {
     }
 
     /// The name made of the first `len` bytes of `head`, which a caller found to be one.
+    #[inline]
     pub fn from_head(head: &[u8; SHORT], len: usize) -> Name {
         let bytes = u128::from_le_bytes(*head) & low_bytes(len);
         Name::Short(len as u8, bytes.to_le_bytes())
     }
 
+    #[inline]
     pub fn len(&self) -> usize {
         match self {
             Name::Short(len, _) => usize::from(*len),
@@ -53,6 +55,7 @@ impl Name {
 
     /// The name with ASCII letters folded to lower case; 0 for a long name, which no
     /// known element has.
+    #[inline]
     pub fn key(&self) -> u128 {
         match self {
             Name::Short(len, bytes) => fold(u128::from_le_bytes(*bytes), usize::from(*len)),
@@ -61,6 +64,7 @@ impl Name {
     }
 
     /// Whether `after_slash`, the text after `</`, is this name and `>`: the usual end tag.
+    #[inline]
     pub fn ends(&self, after_slash: &[u8]) -> bool {
         let len = self.len();
         match (self, after_slash.first_chunk::<SHORT>()) {
@@ -133,6 +137,7 @@ impl Names {
     }
 
     /// The index of the element whose key is `key`, looking from `start` on first.
+    #[inline]
     pub fn find(&self, key: u128, start: usize) -> Option<usize> {
         let keys = &self.keys[..self.names.len()];
         let start = start.min(keys.len());
