@@ -106,10 +106,12 @@ pub struct Finding {
 
 pub type Parsed<T> = Result<T, Problem>;
 
+#[cold]
 pub fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
     Box::new(Finding { code, at, message: message.into() })
 }
 
+#[cold]
 fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
     problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
 }
@@ -583,6 +585,7 @@ impl<'a> Parser<'a> {
         trim_xml(self.text_of(t)).is_empty()
     }
 
+    #[cold]
     pub fn limit(&self, at: usize, name: &str, value: u64) -> Problem {
         problem(
             Code::LimitExceeded,
@@ -835,6 +838,7 @@ impl<'a> Parser<'a> {
         Ok(attrs)
     }
 
+    #[cold]
     fn attr_error(&self, tag: &Tag, e: AttrError) -> Problem {
         // Attribute error positions count from the first byte after `<`.
         let at = |pos: usize| tag.at + 1 + pos;
@@ -910,6 +914,7 @@ impl<'a> Parser<'a> {
     }
 
     /// The error for a repeated container.
+    #[cold]
     pub fn duplicate_container(&self, parent: &Tag, child: &Tag) -> Problem {
         problem(
             Code::DuplicateContainer,
@@ -948,10 +953,12 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
+    #[cold]
     pub fn missing(&self, tag: &Tag, what: &str) -> Problem {
         problem(Code::MissingElement, tag.at, format!("<{}> has no {what}", tag.name()))
     }
 
+    #[cold]
     fn unclosed(&self, tag: &Tag) -> Problem {
         problem(
             Code::MalformedXml,
@@ -1092,6 +1099,7 @@ fn push_normalised(out: &mut String, text: &str) {
     }
 }
 
+#[cold]
 fn unknown_entity(name: &str, at: usize) -> Problem {
     problem(
         Code::MalformedXml,
