@@ -1,40 +1,45 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Names, Parsed, Parser, Seen, Tag, problem};
+use super::{Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 use crate::scene::{Body, BodyKind, MassData, Range};
 
-const BODY: &Names = &Names::new(&[
-    "name",
-    "active",
-    "allowsleep",
-    "awake",
-    "bullet",
-    "fixedrotation",
-    "angle",
-    "angulardamping",
-    "angularvelocity",
-    "lineardamping",
-    "linearvelocity",
-    "position",
-    "inertiascale",
-    "gravityscale",
-    "massdata",
-    "fixtures",
-    "userdata",
-    "bindings",
-]);
-const MASS_DATA: &Names = &Names::new(&["mass", "center", "inertia"]);
+elements! {
+    enum BodyChild {
+        Name,
+        Active,
+        AllowSleep,
+        Awake,
+        Bullet,
+        FixedRotation,
+        Angle,
+        AngularDamping,
+        AngularVelocity,
+        LinearDamping,
+        LinearVelocity,
+        Position,
+        InertiaScale,
+        GravityScale,
+        MassData,
+        Fixtures,
+        UserData,
+        Bindings,
+    }
+}
+
+elements! {
+    enum MassChild { Mass, Center, Inertia }
+}
 
 impl<'a> Parser<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
-            let Some((name, repeated)) = self.known(&tag, &child, BODY, &mut seen)? else {
+            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
-            if repeated && matches!(name, "fixtures" | "bindings") {
+            if repeated && matches!(name, BodyChild::Fixtures | BodyChild::Bindings) {
                 return Err(self.duplicate_container(&tag, &child));
             }
             if let Some(problem) = self.layout_mismatch(&child, name) {
@@ -44,29 +49,29 @@ impl<'a> Parser<'a> {
                 self.duplicate(&tag, &child)?;
             }
             match name {
-                "name" => body.name = self.string(&child)?,
-                "active" => body.active = self.boolean(&child)?,
-                "allowsleep" => body.allow_sleep = self.boolean(&child)?,
-                "awake" => body.awake = self.boolean(&child)?,
-                "bullet" => body.bullet = self.boolean(&child)?,
-                "fixedrotation" => body.fixed_rotation = self.boolean(&child)?,
-                "angle" => body.angle = self.float(&child)?,
+                BodyChild::Name => body.name = self.string(&child)?,
+                BodyChild::Active => body.active = self.boolean(&child)?,
+                BodyChild::AllowSleep => body.allow_sleep = self.boolean(&child)?,
+                BodyChild::Awake => body.awake = self.boolean(&child)?,
+                BodyChild::Bullet => body.bullet = self.boolean(&child)?,
+                BodyChild::FixedRotation => body.fixed_rotation = self.boolean(&child)?,
+                BodyChild::Angle => body.angle = self.float(&child)?,
                 // Negative damping is not an error of the format; the Box2D adapter, whose
                 // engine asserts against it, reports it and uses 0.
-                "angulardamping" => body.angular_damping = self.float(&child)?,
-                "angularvelocity" => body.angular_velocity = self.float(&child)?,
-                "lineardamping" => body.linear_damping = self.float(&child)?,
-                "linearvelocity" => body.linear_velocity = self.vector(&child)?,
-                "position" => body.position = self.vector(&child)?,
-                "inertiascale" => body.inertia_scale = self.float(&child)?,
-                "gravityscale" => {
+                BodyChild::AngularDamping => body.angular_damping = self.float(&child)?,
+                BodyChild::AngularVelocity => body.angular_velocity = self.float(&child)?,
+                BodyChild::LinearDamping => body.linear_damping = self.float(&child)?,
+                BodyChild::LinearVelocity => body.linear_velocity = self.vector(&child)?,
+                BodyChild::Position => body.position = self.vector(&child)?,
+                BodyChild::InertiaScale => body.inertia_scale = self.float(&child)?,
+                BodyChild::GravityScale => {
                     self.newer_construct(child.at, "<GravityScale>")?;
                     body.gravity_scale = self.float(&child)?;
                 }
-                "massdata" => self.mass_data(&child, &mut body.mass_data)?,
-                "fixtures" => body.fixtures = self.fixture_ids(&child)?,
-                "bindings" => self.bindings(&child)?,
-                _ => body.user_data = self.user_data(&child)?,
+                BodyChild::MassData => self.mass_data(&child, &mut body.mass_data)?,
+                BodyChild::Fixtures => body.fixtures = self.fixture_ids(&child)?,
+                BodyChild::Bindings => self.bindings(&child)?,
+                BodyChild::UserData => body.user_data = self.user_data(&child)?,
             }
         }
         self.origins.bodies.push(tag.at);
@@ -76,10 +81,10 @@ impl<'a> Parser<'a> {
 
     /// A body lists its fixtures as `<Fixtures>` IDs, or in Farseer's Version 3 layout as
     /// `<Bindings>`; the other one is an error, since dropping it would lose fixtures.
-    fn layout_mismatch(&self, child: &Tag, name: &str) -> Option<super::Problem> {
+    fn layout_mismatch(&self, child: &Tag, name: BodyChild) -> Option<super::Problem> {
         let why = match (name, self.farseer_layout()) {
-            ("fixtures", true) => "a Version 3 body lists its fixtures in <Bindings>",
-            ("bindings", false) => {
+            (BodyChild::Fixtures, true) => "a Version 3 body lists its fixtures in <Bindings>",
+            (BodyChild::Bindings, false) => {
                 "<Bindings> belongs to Version 3 files; this body lists its fixtures in <Fixtures>"
             }
             _ => return None,
@@ -137,16 +142,22 @@ impl<'a> Parser<'a> {
     fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
         while let Some(child) = self.child(tag)? {
-            let Some((name, repeated)) = self.known(tag, &child, MASS_DATA, &mut seen)? else {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated {
                 self.duplicate(tag, &child)?;
             }
             match name {
-                "mass" => (mass.mass, mass.mass_given) = (self.non_negative(&child)?, true),
-                "center" => (mass.center, mass.center_given) = (self.vector(&child)?, true),
-                _ => (mass.inertia, mass.inertia_given) = (self.non_negative(&child)?, true),
+                MassChild::Mass => {
+                    (mass.mass, mass.mass_given) = (self.non_negative(&child)?, true)
+                }
+                MassChild::Center => {
+                    (mass.center, mass.center_given) = (self.vector(&child)?, true)
+                }
+                MassChild::Inertia => {
+                    (mass.inertia, mass.inertia_given) = (self.non_negative(&child)?, true)
+                }
             }
         }
         Ok(())

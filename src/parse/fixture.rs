@@ -1,21 +1,17 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Names, Parsed, Parser, Seen, Tag, problem};
+use super::{Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 use crate::scene::{Filter, Fixture};
 use crate::text;
 
-const FIXTURE: &Names = &Names::new(&[
-    "shape",
-    "name",
-    "density",
-    "friction",
-    "restitution",
-    "issensor",
-    "filterdata",
-    "userdata",
-]);
-const FILTER: &Names = &Names::new(&["categorybits", "maskbits", "groupindex", "collisionignores"]);
+elements! {
+    enum FixtureChild { Shape, Name, Density, Friction, Restitution, IsSensor, FilterData, UserData }
+}
+
+elements! {
+    enum FilterChild { CategoryBits, MaskBits, GroupIndex, CollisionIgnores }
+}
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
@@ -24,25 +20,26 @@ impl<'a> Parser<'a> {
         let mut shape_at = tag.at;
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
-            let Some((name, repeated)) = self.known(&tag, &child, FIXTURE, &mut seen)? else {
+            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated {
                 self.duplicate(&tag, &child)?;
             }
+            use FixtureChild::*;
             match name {
-                "shape" => (fixture.shape, shape_at) = self.id(&child)?,
-                "name" => fixture.name = self.string(&child)?,
-                "density" => fixture.density = self.non_negative(&child)?,
-                "friction" => fixture.friction = self.non_negative(&child)?,
-                "restitution" => fixture.restitution = self.non_negative(&child)?,
-                "issensor" => fixture.is_sensor = self.boolean(&child)?,
-                "filterdata" => self.filter(&child, &mut fixture.filter)?,
-                _ => fixture.user_data = self.user_data(&child)?,
+                Shape => (fixture.shape, shape_at) = self.id(&child)?,
+                Name => fixture.name = self.string(&child)?,
+                Density => fixture.density = self.non_negative(&child)?,
+                Friction => fixture.friction = self.non_negative(&child)?,
+                Restitution => fixture.restitution = self.non_negative(&child)?,
+                IsSensor => fixture.is_sensor = self.boolean(&child)?,
+                FilterData => self.filter(&child, &mut fixture.filter)?,
+                UserData => fixture.user_data = self.user_data(&child)?,
             }
         }
         // In Farseer's layout a fixture is a template: bodies pair it with shapes.
-        if !seen.contains(FIXTURE, "shape") && !self.farseer_layout() {
+        if !seen.contains(FixtureChild::Shape) && !self.farseer_layout() {
             return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
         self.origins.fixture_shapes.push(shape_at);
@@ -72,18 +69,18 @@ impl<'a> Parser<'a> {
     fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
         while let Some(child) = self.child(tag)? {
-            let Some((name, repeated)) = self.known(tag, &child, FILTER, &mut seen)? else {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated {
                 self.duplicate(tag, &child)?;
             }
             match name {
-                "categorybits" => filter.category_bits = self.bits(&child)?,
-                "maskbits" => filter.mask_bits = self.bits(&child)?,
+                FilterChild::CategoryBits => filter.category_bits = self.bits(&child)?,
+                FilterChild::MaskBits => filter.mask_bits = self.bits(&child)?,
+                FilterChild::GroupIndex => filter.group_index = self.parsed(&child, text::int16)?.0,
                 // Farseer's per-body collision exceptions: Box2D has no such thing.
-                "collisionignores" => self.skip(&child)?,
-                _ => filter.group_index = self.parsed(&child, text::int16)?.0,
+                FilterChild::CollisionIgnores => self.skip(&child)?,
             }
         }
         Ok(())

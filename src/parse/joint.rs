@@ -1,65 +1,72 @@
 //! `<Joint Type="...">`: the common fields, then one table that says which element each
 //! joint kind has, where it goes, and what it may hold.
 
-use super::{JointOrigin, Names, Parsed, Parser, Seen, Tag, problem};
+use super::{Element, JointOrigin, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 use crate::scene::{Joint, JointKind, NONE, Vec2};
 use crate::validate;
 
-const JOINT: &Names = &Names::new(&[
-    "Name",
-    "UserData",
-    "BodyA",
-    "BodyB",
-    "JointA",
-    "JointB",
-    "CollideConnected",
-    "LocalAnchorA",
-    "LocalAnchorB",
-    "LocalAxisA",
-    "ReferenceAngle",
-    "EnableLimit",
-    "LowerAngle",
-    "UpperAngle",
-    "LowerTranslation",
-    "UpperTranslation",
-    "EnableMotor",
-    "MotorSpeed",
-    "MaxMotorTorque",
-    "MaxMotorForce",
-    "Length",
-    "FrequencyHz",
-    "DampingRatio",
-    "GroundAnchorA",
-    "GroundAnchorB",
-    "LengthA",
-    "LengthB",
-    "MaxLengthA",
-    "MaxLengthB",
-    "Ratio",
-    "MaxForce",
-    "MaxTorque",
-    "MaxLength",
-    "LinearOffset",
-    "AngularOffset",
-    "CorrectionFactor",
-    // Farseer's spellings (spec section 8.1).
-    "Breakpoint",
-    "LocalXAxis1",
-    "LocalXAxis",
-    "Axis",
-    "WorldAnchorA",
-    "WorldAnchorB",
-    "Constant",
-    "BiasFactor",
-    "MaxImpulse",
-    "Softness",
-    "TargetAngle",
-    "MinLength",
-]);
+elements! {
+    enum JointChild {
+        Name,
+        UserData,
+        BodyA,
+        BodyB,
+        JointA,
+        JointB,
+        CollideConnected,
+        LocalAnchorA,
+        LocalAnchorB,
+        LocalAxisA,
+        ReferenceAngle,
+        EnableLimit,
+        LowerAngle,
+        UpperAngle,
+        LowerTranslation,
+        UpperTranslation,
+        EnableMotor,
+        MotorSpeed,
+        MaxMotorTorque,
+        MaxMotorForce,
+        Length,
+        FrequencyHz,
+        DampingRatio,
+        GroundAnchorA,
+        GroundAnchorB,
+        LengthA,
+        LengthB,
+        MaxLengthA,
+        MaxLengthB,
+        Ratio,
+        MaxForce,
+        MaxTorque,
+        MaxLength,
+        LinearOffset,
+        AngularOffset,
+        CorrectionFactor,
+        // Farseer's spellings (spec section 8.1).
+        Breakpoint,
+        LocalXAxis1,
+        LocalXAxis,
+        Axis,
+        WorldAnchorA,
+        WorldAnchorB,
+        Constant,
+        BiasFactor,
+        MaxImpulse,
+        Softness,
+        TargetAngle,
+        MinLength,
+    }
+}
 
 /// The elements that make a Farseer `Line` joint (February 2011 on) a wheel joint.
-const WHEEL_ONLY: [&str; 4] = ["FrequencyHz", "DampingRatio", "MaxMotorTorque", "LocalXAxis"];
+const WHEEL_ONLY: [JointChild; 4] = [
+    JointChild::FrequencyHz,
+    JointChild::DampingRatio,
+    JointChild::MaxMotorTorque,
+    JointChild::LocalXAxis,
+];
 
 /// Where a kind-specific element goes.
 enum Slot {
@@ -158,7 +165,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
         true => Ok(v),
         false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
     };
-    for &name in JOINT.names {
+    for name in JointChild::ALL.iter().map(|element| element.name()) {
         match slot(kind, name) {
             Some(Slot::Vector(field)) => {
                 let v = *field(&mut source);
@@ -204,9 +211,11 @@ impl<'a> Parser<'a> {
             JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
-            let Some((name, repeated)) = self.known(&tag, &child, JOINT, &mut seen)? else {
+            let Some((element, repeated)) = self.known::<JointChild>(&tag, &child, &mut seen)?
+            else {
                 continue;
             };
+            let name = element.name();
             let legacy = self.version == 0;
             let common =
                 matches!(name, "Name" | "UserData" | "BodyA" | "BodyB" | "CollideConnected");
@@ -246,7 +255,7 @@ impl<'a> Parser<'a> {
                 },
             }
         }
-        if kind == JointKind::Line && WHEEL_ONLY.iter().any(|name| seen.contains(JOINT, name)) {
+        if kind == JointKind::Line && WHEEL_ONLY.into_iter().any(|element| seen.contains(element)) {
             self.line_is_wheel(&tag, &mut joint, &seen)?;
         }
         self.check_joint(&tag, &joint, &at)?;
@@ -260,10 +269,10 @@ impl<'a> Parser<'a> {
     fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
         let wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
-        if !seen.contains(JOINT, "FrequencyHz") {
+        if !seen.contains(JointChild::FrequencyHz) {
             joint.frequency_hz = wheel.frequency_hz;
         }
-        if !seen.contains(JOINT, "DampingRatio") {
+        if !seen.contains(JointChild::DampingRatio) {
             joint.damping_ratio = wheel.damping_ratio;
         }
         self.warn(

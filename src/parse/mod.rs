@@ -21,6 +21,7 @@ mod world;
 
 pub(crate) use joint::canonical_joint;
 pub(crate) use names::Names;
+use names::{Element, elements};
 pub(crate) use user_data::user_data_fragment;
 
 use std::borrow::Cow;
@@ -187,9 +188,9 @@ pub(crate) struct Seen {
 }
 
 impl Seen {
-    /// Whether the element `name` (any case) of `names` was read.
-    pub fn contains(&self, names: &Names, name: &str) -> bool {
-        names.index(name).is_some_and(|i| self.bits & (1 << i) != 0)
+    /// Whether the element was read.
+    pub fn contains(&self, element: impl Element) -> bool {
+        self.bits & (1 << element.index()) != 0
     }
 }
 
@@ -885,17 +886,16 @@ impl<'a> Parser<'a> {
         self.skip(child)
     }
 
-    /// Looks `child` up among an object's known elements (any case). Returns its canonical
-    /// name and whether the object already had it; None (after a warning and a skip) when
-    /// it is not one of them.
-    pub fn known(
+    /// Looks `child` up among an object's known elements `E` (any case). Returns which it
+    /// is and whether the object already had it; None (after a warning and a skip) when it
+    /// is not one of them.
+    pub fn known<E: Element>(
         &mut self,
         parent: &Tag,
         child: &Tag,
-        names: &Names,
         seen: &mut Seen,
-    ) -> Parsed<Option<(&'static str, bool)>> {
-        let Some(index) = names.find(child.name.key(), seen.next) else {
+    ) -> Parsed<Option<(E, bool)>> {
+        let Some(index) = E::NAMES.find(child.name.key(), seen.next) else {
             self.unknown(parent, child)?;
             return Ok(None);
         };
@@ -903,7 +903,7 @@ impl<'a> Parser<'a> {
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;
         seen.next = index + 1;
-        Ok(Some((names.names[index], repeated)))
+        Ok(Some((E::ALL[index], repeated)))
     }
 
     /// Warns that a scalar element was repeated (the last one wins).

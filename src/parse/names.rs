@@ -115,6 +115,44 @@ const LOW_BYTES: [u128; SHORT + 1] = {
     masks
 };
 
+/// The known elements of one kind of object, as an enum: see [`elements!`].
+pub(crate) trait Element: Copy + 'static {
+    /// Their names, in the order of the variants.
+    const NAMES: &'static Names;
+    /// The variants, in order.
+    const ALL: &'static [Self];
+
+    fn index(self) -> usize;
+
+    /// The element's name as the format spells it (files may use any case).
+    fn name(self) -> &'static str {
+        Self::NAMES.names[self.index()]
+    }
+}
+
+/// Declares the known elements of one kind of object: an enum whose variants are named as
+/// the elements are, in the order writers list them, and its [`Element`] table.
+macro_rules! elements {
+    ($(#[$meta:meta])* $vis:vis enum $Enum:ident { $($Variant:ident),+ $(,)? }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, PartialEq, Eq, Debug)]
+        $vis enum $Enum {
+            $($Variant),+
+        }
+
+        impl $crate::parse::names::Element for $Enum {
+            const NAMES: &'static $crate::parse::Names =
+                &$crate::parse::Names::new(&[$(stringify!($Variant)),+]);
+            const ALL: &'static [Self] = &[$($Enum::$Variant),+];
+
+            fn index(self) -> usize {
+                self as usize
+            }
+        }
+    };
+}
+pub(super) use elements;
+
 /// The known elements of an object, in the order writers list them, with their keys.
 pub(crate) struct Names {
     pub names: &'static [&'static str],
@@ -144,11 +182,6 @@ impl Names {
         let (before, after) = keys.split_at(start);
         (after.iter().position(|&k| k == key).map(|i| start + i))
             .or_else(|| before.iter().position(|&k| k == key))
-    }
-
-    /// The index of `name` (any case).
-    pub fn index(&self, name: &str) -> Option<usize> {
-        self.names.iter().position(|n| n.eq_ignore_ascii_case(name))
     }
 }
 

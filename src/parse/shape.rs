@@ -1,40 +1,41 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Names, Parsed, Parser, Seen, Tag, problem};
+use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 use crate::scene::{Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
-const SHAPE: &Names = &Names::new(&[
-    "name",
-    "radius",
-    "position",
-    "vertices",
-    "centroid",
-    "vertex0",
-    "vertex1",
-    "vertex2",
-    "vertex3",
-    "hasvertex0",
-    "hasvertex3",
-    "prevvertex",
-    "nextvertex",
-    "hasprevvertex",
-    "hasnextvertex",
-    "loop",
-]);
+elements! {
+    enum ShapeChild {
+        Name,
+        Radius,
+        Position,
+        Vertices,
+        Centroid,
+        Vertex0,
+        Vertex1,
+        Vertex2,
+        Vertex3,
+        HasVertex0,
+        HasVertex3,
+        PrevVertex,
+        NextVertex,
+        HasPrevVertex,
+        HasNextVertex,
+        Loop,
+    }
+}
 
-/// Whether a shape of `kind` has the element `name` (from [`SHAPE`]).
-fn belongs(kind: ShapeKind, name: &str) -> bool {
+/// Whether a shape of `kind` has the element `name`.
+fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
+    use ShapeChild::*;
     match name {
-        "name" => true,
-        "radius" | "position" => kind == ShapeKind::Circle,
-        "vertices" => matches!(kind, ShapeKind::Polygon | ShapeKind::Chain),
-        "centroid" => kind == ShapeKind::Polygon,
-        "vertex0" | "vertex1" | "vertex2" | "vertex3" | "hasvertex0" | "hasvertex3" => {
-            kind == ShapeKind::Edge
-        }
-        _ => kind == ShapeKind::Chain,
+        Name => true,
+        Radius | Position => kind == ShapeKind::Circle,
+        Vertices => matches!(kind, ShapeKind::Polygon | ShapeKind::Chain),
+        Centroid => kind == ShapeKind::Polygon,
+        Vertex0 | Vertex1 | Vertex2 | Vertex3 | HasVertex0 | HasVertex3 => kind == ShapeKind::Edge,
+        PrevVertex | NextVertex | HasPrevVertex | HasNextVertex | Loop => kind == ShapeKind::Chain,
     }
 }
 
@@ -45,7 +46,7 @@ impl<'a> Parser<'a> {
         let mut seen = Seen::default();
         let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
         while let Some(child) = self.child(&tag)? {
-            let Some((name, repeated)) = self.known(&tag, &child, SHAPE, &mut seen)? else {
+            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
             if !belongs(kind, name) {
@@ -55,34 +56,35 @@ impl<'a> Parser<'a> {
                 self.skip(&child)?;
                 continue;
             }
-            if repeated && name == "vertices" {
+            if repeated && name == ShapeChild::Vertices {
                 return Err(self.duplicate_container(&tag, &child));
             }
             if repeated {
                 self.duplicate(&tag, &child)?;
             }
+            use ShapeChild::*;
             match name {
-                "name" => shape.name = self.string(&child)?,
-                "radius" => (shape.radius, radius_at) = self.parsed(&child, crate::text::float)?,
-                "position" => shape.position = self.vector(&child)?,
-                "vertices" => shape.vertices = self.vertices(&child, kind)?,
-                "centroid" => shape.centroid = self.vector(&child)?,
-                "vertex0" | "prevvertex" => shape.prev_vertex = self.vector(&child)?,
-                "vertex1" => edge[0] = self.vector(&child)?,
-                "vertex2" => edge[1] = self.vector(&child)?,
-                "vertex3" | "nextvertex" => shape.next_vertex = self.vector(&child)?,
-                "hasvertex0" | "hasprevvertex" => shape.has_prev_vertex = self.boolean(&child)?,
-                "hasvertex3" | "hasnextvertex" => shape.has_next_vertex = self.boolean(&child)?,
-                _ => shape.is_loop |= self.boolean(&child)?,
+                Name => shape.name = self.string(&child)?,
+                Radius => (shape.radius, radius_at) = self.parsed(&child, crate::text::float)?,
+                Position => shape.position = self.vector(&child)?,
+                Vertices => shape.vertices = self.vertices(&child, kind)?,
+                Centroid => shape.centroid = self.vector(&child)?,
+                Vertex0 | PrevVertex => shape.prev_vertex = self.vector(&child)?,
+                Vertex1 => edge[0] = self.vector(&child)?,
+                Vertex2 => edge[1] = self.vector(&child)?,
+                Vertex3 | NextVertex => shape.next_vertex = self.vector(&child)?,
+                HasVertex0 | HasPrevVertex => shape.has_prev_vertex = self.boolean(&child)?,
+                HasVertex3 | HasNextVertex => shape.has_next_vertex = self.boolean(&child)?,
+                Loop => shape.is_loop |= self.boolean(&child)?,
             }
         }
-        shape.centroid_given = seen.contains(SHAPE, "centroid");
+        shape.centroid_given = seen.contains(ShapeChild::Centroid);
         match kind {
             ShapeKind::Circle => {
-                for needed in ["radius", "position"] {
-                    if !seen.contains(SHAPE, needed) {
+                for needed in [ShapeChild::Radius, ShapeChild::Position] {
+                    if !seen.contains(needed) {
                         return Err(self
-                            .missing(&tag, &format!("<{}> (a Circle needs one)", title(needed))));
+                            .missing(&tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
                 if let Err((code, message)) = validate::circle(shape.radius) {
@@ -90,10 +92,10 @@ impl<'a> Parser<'a> {
                 }
             }
             ShapeKind::Edge => {
-                for needed in ["vertex1", "vertex2"] {
-                    if !seen.contains(SHAPE, needed) {
+                for needed in [ShapeChild::Vertex1, ShapeChild::Vertex2] {
+                    if !seen.contains(needed) {
                         return Err(
-                            self.missing(&tag, &format!("<{}> (an Edge needs one)", title(needed)))
+                            self.missing(&tag, &format!("<{}> (an Edge needs one)", needed.name()))
                         );
                     }
                 }
@@ -102,7 +104,7 @@ impl<'a> Parser<'a> {
                 shape.vertices = Range { first, count: 2 };
             }
             ShapeKind::Polygon | ShapeKind::Chain => {
-                if !seen.contains(SHAPE, "vertices") {
+                if !seen.contains(ShapeChild::Vertices) {
                     return Err(self.missing(&tag, "<Vertices>"));
                 }
             }
@@ -202,10 +204,4 @@ impl<'a> Parser<'a> {
             Err((code, message)) => Err(problem(code, tag.at, message)),
         }
     }
-}
-
-/// `vertex1` -> `Vertex1`, for messages.
-fn title(name: &str) -> String {
-    let mut chars = name.chars();
-    chars.next().map_or_else(String::new, |c| c.to_ascii_uppercase().to_string() + chars.as_str())
 }

@@ -1,10 +1,11 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Names, Parsed, Parser, Seen, Tag, problem};
+use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 
-const WORLD: &Names = &Names::new(&["gravity", "shapes", "fixtures", "bodies", "joints"]);
-const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
+elements! {
+    enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
+}
 
 impl<'a> Parser<'a> {
     /// The whole document: prolog, `<World>`, epilog.
@@ -76,10 +77,10 @@ impl<'a> Parser<'a> {
         self.read_version(root)?;
         let mut seen = Seen::default();
         while let Some(child) = self.child(root)? {
-            let Some((name, repeated)) = self.known(root, &child, WORLD, &mut seen)? else {
+            let Some((name, repeated)) = self.known(root, &child, &mut seen)? else {
                 continue;
             };
-            if name == "gravity" {
+            if name == WorldChild::Gravity {
                 if repeated {
                     self.duplicate(root, &child)?;
                 }
@@ -90,15 +91,16 @@ impl<'a> Parser<'a> {
                 return Err(self.duplicate_container(root, &child));
             }
             match name {
-                "shapes" => self.items(&child, "Shape", Self::shape)?,
-                "fixtures" => self.items(&child, "Fixture", Self::fixture)?,
-                "bodies" => self.items(&child, "Body", Self::body)?,
+                WorldChild::Shapes => self.items(&child, "Shape", Self::shape)?,
+                WorldChild::Fixtures => self.items(&child, "Fixture", Self::fixture)?,
+                WorldChild::Bodies => self.items(&child, "Body", Self::body)?,
                 _ => self.items(&child, "Joint", Self::joint)?,
             }
         }
-        for container in CONTAINERS {
-            if !seen.contains(WORLD, container) {
-                let message = format!("the file has no <{container}>; read as empty");
+        use WorldChild::*;
+        for container in [Shapes, Fixtures, Bodies, Joints] {
+            if !seen.contains(container) {
+                let message = format!("the file has no <{}>; read as empty", container.name());
                 self.warn(Code::MissingContainer, root.at, message)?;
             }
         }
