@@ -470,7 +470,31 @@ impl<'a> Parser<'a> {
         Ok(Node::Open(tag))
     }
 
+    /// Reads the usual end tag of the innermost open element, if it is next; whether it
+    /// was.
+    fn closes_parent(&mut self) -> bool {
+        let at = self.pos;
+        let Some(end) = self.usual_end_tag(at) else {
+            return false;
+        };
+        (self.last, self.started) = (self.started, at);
+        self.pos = end;
+        self.open.pop();
+        true
+    }
+
+    /// Where the end tag at `at` ends, when it is the usual `</Name>` of the innermost open
+    /// element.
+    fn usual_end_tag(&self, at: usize) -> Option<usize> {
+        let expected = self.open.last()?;
+        match self.rest(at) {
+            [b'<', b'/', after @ ..] if expected.ends(after) => Some(at + 3 + expected.len()),
+            _ => None,
+        }
+    }
+
     /// Counts a start tag just read against the limits and opens its element.
+    #[inline]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
         self.elements += 1;
@@ -507,13 +531,10 @@ impl<'a> Parser<'a> {
     }
 
     fn end_tag(&mut self, at: usize) -> Parsed<Node> {
-        // The usual end tag: `</Name>` of the open element.
-        if let Some(expected) = self.open.last() {
-            if expected.ends(self.rest(at + 2)) {
-                self.pos = at + 3 + expected.len();
-                self.open.pop();
-                return Ok(Node::Close(at));
-            }
+        if let Some(end) = self.usual_end_tag(at) {
+            self.pos = end;
+            self.open.pop();
+            return Ok(Node::Close(at));
         }
         let end = self.tag_end(at)?;
         self.pos = end + 1;
@@ -630,6 +651,9 @@ impl<'a> Parser<'a> {
             (self.last, self.started) = (self.started, tag.at);
             self.opened(&tag)?;
             return Ok(Some(tag));
+        }
+        if self.closes_parent() {
+            return Ok(None);
         }
         loop {
             self.skip_space();
