@@ -71,14 +71,16 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
         }
         _ => {}
     }
-    let merged = merge_close_points(vertices);
-    let hull = convex_hull(&merged);
-    if hull.len() < 3 || hull_area(&merged, &hull) <= f32::EPSILON {
+    let (mut merged, mut hull) =
+        ([Vec2::ZERO; MAX_POLYGON_VERTICES], [0; MAX_POLYGON_VERTICES + 1]);
+    let merged = merge_close_points(vertices, &mut merged);
+    let hull = convex_hull(merged, &mut hull);
+    if hull.len() < 3 || hull_area(merged, hull) <= f32::EPSILON {
         return Err((Code::DegeneratePolygon, "the polygon's points are collinear or (nearly) coincide: it has no area, and Box2D would replace it with a 1x1 box".into()));
     }
     let kept_in_order = merged.len() == vertices.len()
         && hull.len() == vertices.len()
-        && is_rotation_of_identity(&hull);
+        && is_rotation_of_identity(hull);
     if kept_in_order {
         Ok(Geometry::Fine)
     } else {
@@ -86,29 +88,33 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
     }
 }
 
-/// The vertices without those closer than half the linear slop to an earlier one.
-fn merge_close_points(vertices: &[Vec2]) -> Vec<Vec2> {
+/// The vertices without those closer than half the linear slop to an earlier one, in
+/// `kept` (as long as `vertices`).
+fn merge_close_points<'k>(vertices: &[Vec2], kept: &'k mut [Vec2]) -> &'k [Vec2] {
     let weld = 0.5 * LINEAR_SLOP;
-    let mut kept: Vec<Vec2> = Vec::with_capacity(vertices.len());
+    let mut len = 0;
     for &v in vertices {
-        if kept.iter().all(|&k| length_squared(sub(v, k)) >= weld * weld) {
-            kept.push(v);
+        if kept[..len].iter().all(|&k| length_squared(sub(v, k)) >= weld * weld) {
+            kept[len] = v;
+            len += 1;
         }
     }
-    kept
+    &kept[..len]
 }
 
 /// Indices of the convex hull, counter-clockwise from the rightmost (then lowest) point:
-/// the gift wrapping of Box2D 2.4.1, collinear points dropped.
-fn convex_hull(points: &[Vec2]) -> Vec<usize> {
+/// the gift wrapping of Box2D 2.4.1, collinear points dropped. Made in `hull`, which has
+/// room for one more index than there are points.
+fn convex_hull<'h>(points: &[Vec2], hull: &'h mut [usize]) -> &'h [usize] {
     let rightmost = (0..points.len()).fold(0, |best, i| {
         let (p, b) = (points[i], points[best]);
         if p.x > b.x || (p.x == b.x && p.y < b.y) { i } else { best }
     });
-    let mut hull = Vec::new();
+    let mut len = 0;
     let mut current = rightmost;
     loop {
-        hull.push(current);
+        hull[len] = current;
+        len += 1;
         let mut next = 0;
         for j in 1..points.len() {
             if next == current {
@@ -123,8 +129,8 @@ fn convex_hull(points: &[Vec2]) -> Vec<usize> {
             }
         }
         current = next;
-        if current == rightmost || hull.len() > points.len() {
-            return hull;
+        if current == rightmost || len > points.len() {
+            return &hull[..len];
         }
     }
 }
