@@ -3,10 +3,12 @@
 //! to one handler per object kind (`world`, `shape`, `fixture`, `body`, `joint`,
 //! `user_data`).
 //!
-//! The markup is quick-xml's: its element parser finds where a tag ends (quotes included),
-//! its attribute iterator reads and checks attributes, its reference and declaration types
-//! resolve entities and read the XML declaration, and its errors are the messages. The loop
-//! itself is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
+//! The usual markup is read here: tags with short names and plain `name="value"`
+//! attributes, values followed by their end tag. Anything else goes to quick-xml: its
+//! element parser finds where a tag ends when the text at hand does not show it, its
+//! attribute iterator reads and checks the other attributes, its reference and declaration
+//! types resolve entities and read the XML declaration, and its errors are the messages.
+//! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
 //! again; the text here was checked once, as a whole, and slices of it at ASCII markup are
 //! text by construction.
 #![forbid(unsafe_code)]
