@@ -22,7 +22,6 @@ mod user_data;
 mod world;
 
 pub(crate) use joint::canonical_joint;
-pub(crate) use names::Names;
 use names::{Element, elements};
 pub(crate) use user_data::user_data_fragment;
 
@@ -136,10 +135,9 @@ impl Tag {
         self.name.as_str()
     }
 
-    /// Names compare case-insensitively (spec section 2); `key` is [`names::key`] of the
-    /// name to compare with.
-    pub fn is(&self, key: u128) -> bool {
-        self.name.key() == key
+    /// Names compare case-insensitively (spec section 2).
+    pub fn is(&self, name: &str) -> bool {
+        self.name.key() == names::key(name)
     }
 }
 
@@ -488,9 +486,16 @@ impl<'a> Parser<'a> {
     /// Where the end tag at `at` ends, when it is the usual `</Name>` of the innermost open
     /// element.
     fn usual_end_tag(&self, at: usize) -> Option<usize> {
+        Some(at + self.usual_end_tag_len(self.rest(at))?)
+    }
+
+    /// How long the usual end tag of the innermost open element is, when `text` starts
+    /// with it.
+    #[inline]
+    fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
         let expected = self.open.last()?;
-        match self.rest(at) {
-            [b'<', b'/', after @ ..] if expected.ends(after) => Some(at + 3 + expected.len()),
+        match text {
+            [b'<', b'/', after @ ..] if expected.ends(after) => Some(3 + expected.len()),
             _ => None,
         }
     }
@@ -741,16 +746,18 @@ impl<'a> Parser<'a> {
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
-        let expected = self.open.last().filter(|_| !tag.empty)?;
+        if tag.empty {
+            return None;
+        }
         let at = self.pos;
         let rest = self.rest(at);
         let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
-        let close = rest[len..].strip_prefix(b"</")?;
-        if !expected.ends(close) || len as u64 > self.options.max_text_bytes {
+        if len as u64 > self.options.max_text_bytes {
             return None;
         }
+        let end_tag = self.usual_end_tag_len(&rest[len..])?;
         let (start, end) = text::trimmed_span(&rest[..len]);
-        self.pos = at + len + 3 + expected.len();
+        self.pos = at + len + end_tag;
         self.open.pop();
         // `<X></X>` has its value at its tag.
         let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) };
@@ -963,7 +970,7 @@ impl<'a> Parser<'a> {
     ) -> Parsed<()> {
         let key = names::key(item);
         while let Some(child) = self.child(container)? {
-            if !child.is(key) {
+            if child.name.key() != key {
                 return Err(problem(
                     Code::UnexpectedElement,
                     child.at,

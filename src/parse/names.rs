@@ -141,8 +141,8 @@ macro_rules! elements {
         }
 
         impl $crate::parse::names::Element for $Enum {
-            const NAMES: &'static $crate::parse::Names =
-                &$crate::parse::Names::new(&[$(stringify!($Variant)),+]);
+            const NAMES: &'static $crate::parse::names::Names =
+                &$crate::parse::names::Names::new(&[$(stringify!($Variant)),+]);
             const ALL: &'static [Self] = &[$($Enum::$Variant),+];
 
             fn index(self) -> usize {

@@ -95,12 +95,12 @@ impl<'a> Parser<'a> {
             match self.next_node()? {
                 Node::Open(child) => {
                     let inside = match path.as_slice() {
-                        [] if child.is(super::names::key("type")) => {
+                        [] if child.is("type") => {
                             form.types += 1;
                             form.type_name.get_or_insert_with(String::new);
                             Inside::Type
                         }
-                        [] if child.is(super::names::key("value")) => {
+                        [] if child.is("value") => {
                             form.values += 1;
                             Inside::Value
                         }

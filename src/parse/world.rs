@@ -37,7 +37,7 @@ impl<'a> Parser<'a> {
                 }
             }
         };
-        if !root.is(super::names::key("world")) {
+        if !root.is("world") {
             return Err(problem(
                 Code::NotAScene,
                 root.at,
