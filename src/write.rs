@@ -30,7 +30,7 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> String {
     let version = if needs_version_2(scene) { 2 } else { 1 };
     let mut w = Writer { out: String::new(), depth: 0, scene, all: options.all_fields, version };
     w.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
-    w.open(&format!("World Version=\"{version}\""));
+    w.open_typed("World", "Version", if version == 2 { "2" } else { "1" });
     if let Some(gravity) = scene.gravity() {
         w.vector("Gravity", gravity);
     }
@@ -84,39 +84,183 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
         || scene.joints().iter().any(joint)
 }
 
-/// The shortest text that reads back to the same f32: plain decimals for ordinary
-/// magnitudes, an exponent for tiny and huge ones (as .NET wrote `8.369571E-36`).
-pub(crate) fn float_text(value: f32) -> String {
-    let mut text = String::new();
-    push_float(&mut text, value);
-    text
+/// Appends the shortest text that reads back to the same f32 as `value`: plain
+/// decimals for ordinary magnitudes, an exponent for tiny and huge ones (as .NET wrote
+/// `8.369571E-36`). That is the text `Display` gives for the first and `{:e}` for the
+/// others, laid out from ryu's shortest digits, which cost a fraction of `core::fmt`'s.
+fn push_float(out: &mut String, value: f32) {
+    if !value.is_finite() {
+        let _ = write!(out, "{value}");
+        return;
+    }
+    if value.is_sign_negative() {
+        out.push('-');
+    }
+    if value == 0.0 {
+        out.push('0');
+        return;
+    }
+    let mut buffer = ryu::Buffer::new();
+    let mut shortest = Shortest::of(buffer.format_finite(value.abs()));
+    shortest.break_ties_upwards(value.abs());
+    let digits = shortest.digits();
+    let point = shortest.point;
+    if (1e-5..1e16).contains(&value.abs()) {
+        if point <= 0 {
+            out.push_str("0.");
+            push_zeros(out, -point);
+            out.push_str(digits);
+        } else if point as usize >= digits.len() {
+            out.push_str(digits);
+            push_zeros(out, point - digits.len() as i32);
+        } else {
+            let (whole, fraction) = digits.split_at(point as usize);
+            for piece in [whole, ".", fraction] {
+                out.push_str(piece);
+            }
+        }
+    } else {
+        let (first, rest) = digits.split_at(1);
+        out.push_str(first);
+        if !rest.is_empty() {
+            out.push('.');
+            out.push_str(rest);
+        }
+        out.push('e');
+        out.push_str(integer_text(i64::from(point - 1), &mut [0; 20]));
+    }
 }
 
-/// Appends [`float_text`] of `value` to `out`.
-fn push_float(out: &mut String, value: f32) {
-    let magnitude = value.abs();
-    let _ = if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) {
-        write!(out, "{value}")
-    } else {
-        write!(out, "{value:e}")
-    };
+fn push_zeros(out: &mut String, count: i32) {
+    for _ in 0..count {
+        out.push('0');
+    }
+}
+
+/// `value` in decimal, in `buffer`.
+fn integer_text(value: i64, buffer: &mut [u8; 20]) -> &str {
+    let mut at = buffer.len();
+    let mut rest = value.unsigned_abs();
+    loop {
+        at -= 1;
+        buffer[at] = b'0' + (rest % 10) as u8;
+        rest /= 10;
+        if rest == 0 {
+            break;
+        }
+    }
+    if value < 0 {
+        at -= 1;
+        buffer[at] = b'-';
+    }
+    std::str::from_utf8(&buffer[at..]).unwrap_or_default()
+}
+
+/// A positive float's shortest digits, without leading or trailing zeros, and where
+/// its decimal point goes: the value is 0.`digits` x 10^`point`.
+struct Shortest {
+    digits: [u8; 32],
+    len: usize,
+    point: i32,
+}
+
+impl Shortest {
+    /// Reads them from ryu's text, whichever of its layouts (`1e-7`, `1.5e20`,
+    /// `0.001`, `12.5`, `100.0`) it chose.
+    fn of(text: &str) -> Self {
+        let text = text.as_bytes();
+        let (mantissa, exponent) = match text.iter().position(|&b| b == b'e') {
+            Some(e) => (&text[..e], Self::exponent(&text[e + 1..])),
+            None => (text, 0),
+        };
+        let dot = mantissa.iter().position(|&b| b == b'.').unwrap_or(mantissa.len());
+        let mut shortest = Shortest { digits: [0; 32], len: 0, point: exponent };
+        for (at, &b) in mantissa.iter().enumerate().filter(|&(_, &b)| b != b'.') {
+            if b == b'0' && shortest.len == 0 {
+                continue;
+            }
+            if shortest.len == 0 {
+                shortest.point += dot as i32 - at as i32 + i32::from(at > dot);
+            }
+            shortest.digits[shortest.len] = b;
+            shortest.len += 1;
+        }
+        while shortest.len > 1 && shortest.digits[shortest.len - 1] == b'0' {
+            shortest.len -= 1;
+        }
+        shortest
+    }
+
+    /// `core::fmt` breaks a tie between two shortest texts upwards, ryu to the even
+    /// last digit: moves ryu's digits of `value` up where the two differ.
+    fn break_ties_upwards(&mut self, value: f32) {
+        let last = self.digits[self.len - 1] - b'0';
+        if last % 2 == 1 || !self.is_just_below_half_way(value) {
+            return;
+        }
+        self.digits[self.len - 1] += 1;
+    }
+
+    /// Whether `value` lies exactly half way between these digits and the next ones
+    /// up, compared as integers: m x 2^e against (10 x digits + 5) x 10^q. A tie has
+    /// at most 10 digits, so its exact value is a fraction over at most 2^14 (5^k
+    /// digits need 2^k below them), and where a side overflows u128 the two differ.
+    fn is_just_below_half_way(&self, value: f32) -> bool {
+        let bits = value.to_bits();
+        let (fraction, biased) = (u128::from(bits & 0x7f_ffff), (bits >> 23) & 0xff);
+        let (m, e) = match biased {
+            0 => (fraction, -149),
+            _ => (fraction | 1 << 23, biased as i32 - 150),
+        };
+        if -e - m.trailing_zeros() as i32 > 14 {
+            return false;
+        }
+        let digits = self.digits().bytes().fold(0u128, |n, d| n * 10 + u128::from(d - b'0'));
+        let q = self.point - self.len as i32 - 1;
+        let times = |n: u128, base: u128, power: i32| {
+            base.checked_pow(power.max(0) as u32).and_then(|p| n.checked_mul(p))
+        };
+        let left = times(m, 2, e).and_then(|n| times(n, 10, -q));
+        let right = times(digits * 10 + 5, 10, q).and_then(|n| times(n, 2, -e));
+        matches!((left, right), (Some(l), Some(r)) if l == r)
+    }
+
+    fn exponent(text: &[u8]) -> i32 {
+        let (negative, digits) = match text {
+            [b'-', digits @ ..] => (true, digits),
+            _ => (false, text),
+        };
+        let magnitude = digits.iter().fold(0, |n, &d| n * 10 + i32::from(d - b'0'));
+        if negative { -magnitude } else { magnitude }
+    }
+
+    fn digits(&self) -> &str {
+        std::str::from_utf8(&self.digits[..self.len]).unwrap_or_default()
+    }
 }
 
 /// Text content and attribute values: markup characters as entities, characters XML
 /// would change on reading (carriage returns) as character references.
 pub(crate) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\r' => out.push_str("&#13;"),
-            c => out.push(c),
-        }
-    }
+    push_escaped(&mut out, text);
     out
+}
+
+/// Appends [`escape`] of `text` to `out`.
+fn push_escaped(out: &mut String, mut text: &str) {
+    while let Some(at) = text.find(['&', '<', '>', '"', '\r']) {
+        out.push_str(&text[..at]);
+        out.push_str(match text.as_bytes()[at] {
+            b'&' => "&amp;",
+            b'<' => "&lt;",
+            b'>' => "&gt;",
+            b'"' => "&quot;",
+            _ => "&#13;",
+        });
+        text = &text[at + 1..];
+    }
+    out.push_str(text);
 }
 
 struct Writer<'s> {
@@ -129,22 +273,44 @@ struct Writer<'s> {
 
 impl Writer<'_> {
     fn indent(&mut self) {
-        for _ in 0..self.depth {
-            self.out.push_str("  ");
+        const SPACES: &str = "                ";
+        let mut width = 2 * self.depth;
+        while width > 0 {
+            let piece = &SPACES[..width.min(SPACES.len())];
+            self.out.push_str(piece);
+            width -= piece.len();
         }
     }
 
-    /// `<tag>` on its own line; `tag` may carry attributes.
-    fn open(&mut self, tag: &str) {
+    /// `<name>` on its own line.
+    fn open(&mut self, name: &str) {
+        self.open_with(name, |_| {});
+    }
+
+    /// `<name Type="value">` on its own line.
+    fn open_typed(&mut self, name: &str, attribute: &str, value: &str) {
+        self.open_with(name, |out| {
+            for piece in [" ", attribute, "=\"", value, "\""] {
+                out.push_str(piece);
+            }
+        });
+    }
+
+    fn open_with(&mut self, name: &str, attributes: impl FnOnce(&mut String)) {
         self.indent();
-        let _ = writeln!(self.out, "<{tag}>");
+        self.out.push('<');
+        self.out.push_str(name);
+        attributes(&mut self.out);
+        self.out.push_str(">\n");
         self.depth += 1;
     }
 
     fn close(&mut self, name: &str) {
         self.depth -= 1;
         self.indent();
-        let _ = writeln!(self.out, "</{name}>");
+        for piece in ["</", name, ">\n"] {
+            self.out.push_str(piece);
+        }
     }
 
     fn element(&mut self, name: &str, text: &str) {
@@ -190,16 +356,27 @@ impl Writer<'_> {
     }
 
     fn name(&mut self, name: Str) {
-        if let Some(text) = self.scene.text(name) {
-            self.element("Name", &escape(text));
+        match self.scene.text(name) {
+            Some("") => self.element("Name", ""),
+            Some(text) => self.element_with("Name", |out| push_escaped(out, text)),
+            None => {}
         }
+    }
+
+    fn number(&mut self, name: &str, value: f32) {
+        self.element_with(name, |out| push_float(out, value));
+    }
+
+    fn integer(&mut self, name: &str, value: impl Into<i64>) {
+        let value = value.into();
+        self.element_with(name, |out| out.push_str(integer_text(value, &mut [0; 20])));
     }
 
     /// The optional elements: written when asked for every field or when the value's bits
     /// differ from the default's (so -0.0 and 0.0 stay apart).
     fn float(&mut self, name: &str, value: f32, default: f32) {
         if self.all || value.to_bits() != default.to_bits() {
-            self.element_with(name, |out| push_float(out, value));
+            self.number(name, value);
         }
     }
 
@@ -222,7 +399,9 @@ impl Writer<'_> {
         let Some(user_data) = self.scene.user_data_at(index) else { return };
         let raw = self.scene.text(user_data.raw).unwrap_or_default();
         self.indent();
-        let _ = writeln!(self.out, "<UserData>{raw}</UserData>");
+        for piece in ["<UserData>", raw, "</UserData>\n"] {
+            self.out.push_str(piece);
+        }
     }
 
     fn shape(&mut self, shape: &Shape) {
@@ -234,13 +413,13 @@ impl Writer<'_> {
             (ShapeKind::Chain, false) => "Chain",
             (ShapeKind::Chain, true) => "Loop",
         };
-        self.open(&format!("Shape Type=\"{ty}\""));
+        self.open_typed("Shape", "Type", ty);
         self.name(shape.name);
         let vertices = self.scene.vertices(shape);
         let zero = Vec2::ZERO;
         match kind {
             ShapeKind::Circle => {
-                self.element("Radius", &float_text(shape.radius));
+                self.number("Radius", shape.radius);
                 self.vector("Position", shape.position);
             }
             ShapeKind::Polygon | ShapeKind::Chain => {
@@ -277,7 +456,7 @@ impl Writer<'_> {
     fn fixture(&mut self, fixture: &Fixture) {
         let defaults = Fixture::default();
         self.open("Fixture");
-        self.element("Shape", &fixture.shape.to_string());
+        self.integer("Shape", fixture.shape);
         self.name(fixture.name);
         self.float("Density", fixture.density, defaults.density);
         self.float("Friction", fixture.friction, defaults.friction);
@@ -299,11 +478,11 @@ impl Writer<'_> {
             ("MaskBits", filter.mask_bits, defaults.mask_bits),
         ] {
             if self.all || value != default {
-                self.element(name, &value.to_string());
+                self.integer(name, value);
             }
         }
         if self.all || filter.group_index != defaults.group_index {
-            self.element("GroupIndex", &filter.group_index.to_string());
+            self.integer("GroupIndex", filter.group_index);
         }
         self.close("FilterData");
     }
@@ -316,7 +495,7 @@ impl Writer<'_> {
             BodyKind::Kinematic => "Kinematic",
             BodyKind::Dynamic => "Dynamic",
         };
-        self.open(&format!("Body Type=\"{ty}\""));
+        self.open_typed("Body", "Type", ty);
         self.name(body.name);
         self.flag("Active", body.active, d.active);
         self.flag("AllowSleep", body.allow_sleep, d.allow_sleep);
@@ -337,23 +516,23 @@ impl Writer<'_> {
         if m.mass_given || m.center_given || m.inertia_given {
             self.open("MassData");
             if m.mass_given {
-                self.element("Mass", &float_text(m.mass));
+                self.number("Mass", m.mass);
             }
             if m.center_given {
                 self.vector("Center", m.center);
             }
             if m.inertia_given {
-                self.element("Inertia", &float_text(m.inertia));
+                self.number("Inertia", m.inertia);
             }
             self.close("MassData");
         }
-        let ids: Vec<String> = self.scene.body_fixtures(body).iter().map(u32::to_string).collect();
+        let ids = self.scene.body_fixtures(body);
         if ids.is_empty() {
             self.element("Fixtures", "");
         } else {
             self.open("Fixtures");
-            for id in &ids {
-                self.element("ID", id);
+            for &id in ids {
+                self.integer("ID", id);
             }
             self.close("Fixtures");
         }
@@ -364,10 +543,12 @@ impl Writer<'_> {
     fn joint(&mut self, joint: &Joint) {
         let kind = joint.kind().unwrap_or(JointKind::Revolute);
         let d = Joint::new(kind);
-        self.open(&format!("Joint Type=\"{kind:?}\""));
+        self.open_with("Joint", |out| {
+            let _ = write!(out, " Type=\"{kind:?}\"");
+        });
         self.name(joint.name);
-        self.element("BodyA", &joint.body_a.to_string());
-        self.element("BodyB", &joint.body_b.to_string());
+        self.integer("BodyA", joint.body_a);
+        self.integer("BodyB", joint.body_b);
         self.flag("CollideConnected", joint.collide_connected, d.collide_connected);
         use JointKind::*;
         let is = |kinds: &[JointKind]| kinds.contains(&kind);
@@ -417,8 +598,8 @@ impl Writer<'_> {
             self.float("MaxLengthB", joint.max_length_b, d.max_length_b);
         }
         if kind == Gear && joint.joint_a != NONE {
-            self.element("JointA", &joint.joint_a.to_string());
-            self.element("JointB", &joint.joint_b.to_string());
+            self.integer("JointA", joint.joint_a);
+            self.integer("JointB", joint.joint_b);
         }
         if is(&[Pulley, Gear]) {
             self.float("Ratio", joint.ratio, d.ratio);
@@ -444,6 +625,12 @@ impl Writer<'_> {
 mod tests {
     use super::*;
 
+    fn float_text(value: f32) -> String {
+        let mut text = String::new();
+        push_float(&mut text, value);
+        text
+    }
+
     #[test]
     fn floats_are_shortest_and_read_back_to_the_same_bits() {
         for (value, text) in [
@@ -459,6 +646,53 @@ mod tests {
             assert_eq!(float_text(value), text);
             assert_eq!(crate::text::float(text).unwrap().to_bits(), value.to_bits(), "{text}");
         }
+    }
+
+    /// The writer's floats before ryu: `core::fmt`'s text, which stays the contract.
+    fn core_fmt_text(value: f32) -> String {
+        let magnitude = value.abs();
+        if magnitude == 0.0 || (1e-5..1e16).contains(&magnitude) {
+            format!("{value}")
+        } else {
+            format!("{value:e}")
+        }
+    }
+
+    #[test]
+    fn floats_are_written_as_core_fmt_writes_them() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut random_bits = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state as u32
+        };
+        let edges = [0u32, 1, 0x007f_ffff, 0x0080_0000, 0x7f7f_ffff, 0x3f80_0000, 0x4b80_0000]
+            .into_iter()
+            .chain([1e-5f32, 9.99999e-6, 1e16, 9.999999e15, 0.1, 123_456_790.0].map(f32::to_bits))
+            .chain((-45..=38).map(|e| format!("1e{e}").parse::<f32>().unwrap().to_bits()));
+        for bits in edges.chain((0..2_000_000).map(|_| random_bits())) {
+            for value in [f32::from_bits(bits), -f32::from_bits(bits)] {
+                assert_eq!(float_text(value), core_fmt_text(value), "{bits:#x}");
+            }
+        }
+    }
+
+    /// Every f32, a few minutes in release:
+    /// `cargo test --release --lib every_float -- --ignored`.
+    #[test]
+    #[ignore]
+    fn every_float_is_written_as_core_fmt_writes_it() {
+        std::thread::scope(|scope| {
+            for half in [0u32, 1] {
+                scope.spawn(move || {
+                    for bits in (half << 31..=(half << 31 | 0x7fff_ffff)).step_by(1) {
+                        let value = f32::from_bits(bits);
+                        assert_eq!(float_text(value), core_fmt_text(value), "{bits:#x}");
+                    }
+                });
+            }
+        });
     }
 
     #[test]
