@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "file_bytes.hpp"
 #include "pugi_loader.hpp"
 #include "scene_checksum.hpp"
 #include "scene_generator.hpp"
@@ -54,6 +55,27 @@ bool same_scene(const std::string& what, const b2s_scene* scene, const bench::Pu
     return true;
 }
 
+/// Whether loading `path` from memory with `threads` gives the scene `peer` holds.
+bool same_from_memory(const char* path, uint32_t threads, const bench::PugiScene& peer) {
+    size_t size = 0;
+    std::unique_ptr<char[]> bytes = bench::read_file(path, size);
+    b2s_load_options options = b2s_load_options_default();
+    options.threads = threads;
+    b2s_scene* scene = nullptr;
+    b2s_error error;
+    if (!bytes || b2s_load_memory(reinterpret_cast<const uint8_t*>(bytes.get()), size, &options,
+                                  &scene, &error) != B2S_CODE_OK) {
+        std::printf("FAIL %s: box2scene from memory, threads %u\n", path, threads);
+        return false;
+    }
+    std::string what = std::string(path) + " from memory, threads " + std::to_string(threads);
+    bool same = same_scene(what, scene, peer);
+    b2s_scene_free(scene);
+    return same;
+}
+
+/// The file loads alike from its path (a chunk at a time), and from memory on one thread
+/// and on as many as box2scene chooses (two from 1 MiB on).
 bool check_file(const char* path) {
     b2s_scene* scene = nullptr;
     b2s_error error;
@@ -65,7 +87,8 @@ bool check_file(const char* path) {
     bench::PugiScene peer;
     std::string why;
     bool loaded = bench::pugi_load_file(path, peer, why);
-    bool same = loaded && same_scene(path, scene, peer);
+    bool same = loaded && same_scene(path, scene, peer) && same_from_memory(path, 1, peer) &&
+                same_from_memory(path, 0, peer);
     if (!loaded) {
         std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
     } else if (same) {

@@ -144,6 +144,7 @@ PIN_AT(b2s_load_options, max_text_bytes, 16);
 PIN_AT(b2s_load_options, max_depth, 24);
 PIN_AT(b2s_load_options, max_chain_vertices, 28);
 PIN_AT(b2s_load_options, strict, 32);
+PIN_AT(b2s_load_options, threads, 36);
 
 static_assert(B2S_ERROR_MESSAGE_SIZE == 256, "B2S_ERROR_MESSAGE_SIZE");
 PIN_SIZE(b2s_error, 280);

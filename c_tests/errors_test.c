@@ -147,6 +147,7 @@ static int names_and_versions(void) {
     ENSURE_EQ(options.max_depth, 64);
     ENSURE_EQ(options.max_input_bytes, 1ull << 30);
     ENSURE(!options.strict);
+    ENSURE(options.threads == 0);
     return 0;
 }
 

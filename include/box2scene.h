@@ -358,6 +358,13 @@ typedef struct b2s_load_options {
    * Every warning becomes an error. Default false.
    */
   bool strict;
+  /**
+   * Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
+   * 1 MiB or more loaded from memory is read on two threads, everything else on the
+   * calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
+   * its warnings and any error are the same however many threads read it.
+   */
+  uint32_t threads;
 } b2s_load_options;
 
 /**
@@ -875,7 +882,7 @@ extern "C" {
 
 /**
  * The load options with every field at its default (the limits of spec section 9,
- * strict off). Start from this and change what you need.
+ * strict off, threads chosen by box2scene). Start from this and change what you need.
  */
 struct b2s_load_options b2s_load_options_default(void);
 

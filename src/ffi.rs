@@ -206,7 +206,7 @@ unsafe fn scene_into(
 }
 
 /// The load options with every field at its default (the limits of spec section 9,
-/// strict off). Start from this and change what you need.
+/// strict off, threads chosen by box2scene). Start from this and change what you need.
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_load_options_default() -> LoadOptions {
     LoadOptions::default()

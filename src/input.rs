@@ -88,6 +88,24 @@ impl<'a> Source<'a> {
         Ok(Source { text, base: 0, file: None, stop, encoding, origin: Origin::Memory })
     }
 
+    /// A second reader of this text, when it is a whole UTF-8 text in memory that ends
+    /// with the file: what a second thread may read.
+    pub fn shared(&self) -> Option<Source<'a>> {
+        match (&self.text, &self.file, &self.stop, &self.origin, self.encoding) {
+            (Cow::Borrowed(text), None, None, Origin::Memory, Encoding::Utf8 { .. }) => {
+                Some(Source {
+                    text: Cow::Borrowed(text),
+                    base: 0,
+                    file: None,
+                    stop: None,
+                    encoding: self.encoding,
+                    origin: Origin::Memory,
+                })
+            }
+            _ => None,
+        }
+    }
+
     /// The text of the file at `path`: UTF-8 is read a chunk at a time as the parser needs
     /// it; UTF-16 is read and converted whole.
     pub fn path(path: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {

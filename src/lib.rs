@@ -51,6 +51,11 @@ pub struct LoadOptions {
     pub max_chain_vertices: u32,
     /// Every warning becomes an error. Default false.
     pub strict: bool,
+    /// Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
+    /// 1 MiB or more loaded from memory is read on two threads, everything else on the
+    /// calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
+    /// its warnings and any error are the same however many threads read it.
+    pub threads: u32,
 }
 
 impl Default for LoadOptions {
@@ -62,6 +67,7 @@ impl Default for LoadOptions {
             max_depth: 64,
             max_chain_vertices: 100_000,
             strict: false,
+            threads: 0,
         }
     }
 }

@@ -76,6 +76,14 @@ impl Str {
         Str(std::ptr::without_provenance(offset + 1))
     }
 
+    /// A pending string of a pool that is appended to one of `before` bytes.
+    fn shifted(self, before: usize) -> Str {
+        match self.is_null() {
+            true => self,
+            false => Str(std::ptr::without_provenance(self.0.addr() + before)),
+        }
+    }
+
     fn rebase(&mut self, pool: *const c_char) {
         if !self.is_null() {
             self.0 = pool.wrapping_add(self.0.addr() - 1);
@@ -577,6 +585,63 @@ impl SceneBuilder {
         self.strings.extend_from_slice(text.as_bytes());
         self.strings.push(0);
         Str::pending(offset)
+    }
+
+    /// Appends what `other` read after this builder's last object: its objects after
+    /// these, their pool ranges, user data indices and strings moved along. A gravity
+    /// is taken only when this builder has none.
+    pub fn append(&mut self, other: SceneBuilder) {
+        let SceneBuilder {
+            version: _,
+            gravity,
+            shapes,
+            fixtures,
+            bodies,
+            joints,
+            vertices,
+            fixture_ids,
+            user_data,
+            diagnostics,
+            strings,
+        } = other;
+        let strings_before = self.strings.len();
+        let name = |s: Str| s.shifted(strings_before);
+        let range = |r: Range, before: usize| Range { first: r.first + before as u32, ..r };
+        let user_data_before = self.user_data.len() as u32;
+        let user = |index: u32| if index == NONE { NONE } else { index + user_data_before };
+        let (vertices_before, ids_before) = (self.vertices.len(), self.fixture_ids.len());
+        self.gravity = self.gravity.or(gravity);
+        self.shapes.extend(shapes.into_iter().map(|s| Shape {
+            name: name(s.name),
+            vertices: range(s.vertices, vertices_before),
+            ..s
+        }));
+        self.fixtures.extend(fixtures.into_iter().map(|f| Fixture {
+            name: name(f.name),
+            user_data: user(f.user_data),
+            ..f
+        }));
+        self.bodies.extend(bodies.into_iter().map(|b| Body {
+            name: name(b.name),
+            fixtures: range(b.fixtures, ids_before),
+            user_data: user(b.user_data),
+            ..b
+        }));
+        self.joints.extend(joints.into_iter().map(|j| Joint {
+            name: name(j.name),
+            user_data: user(j.user_data),
+            ..j
+        }));
+        self.vertices.extend(vertices);
+        self.fixture_ids.extend(fixture_ids);
+        self.user_data.extend(user_data.into_iter().map(|u| UserData {
+            raw: name(u.raw),
+            type_name: name(u.type_name),
+            value: name(u.value),
+        }));
+        self.diagnostics
+            .extend(diagnostics.into_iter().map(|d| Diagnostic { message: name(d.message), ..d }));
+        self.strings.extend(strings);
     }
 
     /// Rebases every string into the final pool and returns the immutable scene.

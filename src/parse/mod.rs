@@ -13,6 +13,7 @@
 //! text by construction.
 #![forbid(unsafe_code)]
 
+mod ahead;
 mod body;
 mod fixture;
 mod joint;
@@ -53,7 +54,25 @@ pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Scene, Error> {
 /// Parses into the arena, checks cross references, freezes; positions are worked out
 /// only when there are diagnostics, by reading the text again.
 fn parse(source: Source<'_>, options: &LoadOptions) -> Result<Scene, Error> {
-    let mut parser = Parser::new(source, options);
+    parse_split(source, options, None)
+}
+
+/// [`parse`], with a second thread starting where `split` says, if anywhere.
+fn parse_split(
+    source: Source<'_>,
+    options: &LoadOptions,
+    split: Option<(usize, world::WorldChild)>,
+) -> Result<Scene, Error> {
+    std::thread::scope(|scope| {
+        let ahead = ahead::start(scope, &source, options, split);
+        let mut parser = Parser::new(source, options);
+        parser.ahead = ahead;
+        finish(parser)
+    })
+}
+
+/// Reads the whole document with `parser` and makes the scene or the error.
+fn finish(mut parser: Parser<'_>) -> Result<Scene, Error> {
     let outcome = parser
         .document()
         .and_then(|()| resolve::resolve(&mut parser))
@@ -212,6 +231,29 @@ pub(crate) struct Origins {
     pub pairs: Vec<Pair>,
 }
 
+impl Origins {
+    /// Appends those of what was read after this one's last object, whose bodies are
+    /// numbered after the `bodies_before` read here.
+    pub fn append(&mut self, other: Origins, bodies_before: u32) {
+        let Origins {
+            fixture_shapes,
+            bodies,
+            fixture_ids,
+            joints,
+            shape_densities,
+            fixture_template_ids,
+            pairs,
+        } = other;
+        self.fixture_shapes.extend(fixture_shapes);
+        self.bodies.extend(bodies);
+        self.fixture_ids.extend(fixture_ids);
+        self.joints.extend(joints);
+        self.shape_densities.extend(shape_densities);
+        self.fixture_template_ids.extend(fixture_template_ids);
+        self.pairs.extend(pairs.into_iter().map(|p| Pair { body: p.body + bodies_before, ..p }));
+    }
+}
+
 /// A Version 3 `<Pair FixtureId="k" ShapeId="s"/>`: one fixture of a body.
 pub(crate) struct Pair {
     pub body: u32,
@@ -249,6 +291,8 @@ pub struct Parser<'a> {
     warnings: Vec<Problem>,
     /// Warnings past [`MAX_WARNINGS`]: how many, and where the first was.
     dropped_warnings: (u64, usize),
+    /// A second parser reading the rest of the file from an item on.
+    ahead: Option<ahead::Ahead<'a>>,
 }
 
 impl<'a> Parser<'a> {
@@ -267,6 +311,7 @@ impl<'a> Parser<'a> {
             origins: Origins::default(),
             warnings: Vec::new(),
             dropped_warnings: (0, 0),
+            ahead: None,
         }
     }
 
@@ -966,10 +1011,22 @@ impl<'a> Parser<'a> {
         &mut self,
         container: &Tag,
         item: &str,
+        each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
+    ) -> Parsed<()> {
+        self.items_until(container, item, each, |_| false)
+    }
+
+    /// [`Parser::items`], stopping early before an item where `stop` says so.
+    pub fn items_until(
+        &mut self,
+        container: &Tag,
+        item: &str,
         mut each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
+        mut stop: impl FnMut(&mut Self) -> bool,
     ) -> Parsed<()> {
         let key = names::key(item);
-        while let Some(child) = self.child(container)? {
+        while !stop(self) {
+            let Some(child) = self.child(container)? else { break };
             if child.name.key() != key {
                 return Err(problem(
                     Code::UnexpectedElement,

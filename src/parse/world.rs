@@ -4,12 +4,19 @@ use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
 
 elements! {
-    enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
+    pub(super) enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
 }
 
 impl<'a> Parser<'a> {
     /// The whole document: prolog, `<World>`, epilog.
     pub(super) fn document(&mut self) -> Parsed<()> {
+        let root = self.root()?;
+        self.world(&root)?;
+        self.epilog()
+    }
+
+    /// The prolog and the root's start tag, which must be `<World>`.
+    pub(super) fn root(&mut self) -> Parsed<Tag> {
         let root = loop {
             match self.next_node()? {
                 super::Node::Open(tag) => break tag,
@@ -47,7 +54,11 @@ impl<'a> Parser<'a> {
                 ),
             ));
         }
-        self.world(&root)?;
+        Ok(root)
+    }
+
+    /// What follows `</World>`: blank text, comments and processing instructions only.
+    pub(super) fn epilog(&mut self) -> Parsed<()> {
         loop {
             match self.next_node()? {
                 super::Node::Eof => return Ok(()),
@@ -76,8 +87,22 @@ impl<'a> Parser<'a> {
     fn world(&mut self, root: &Tag) -> Parsed<()> {
         self.read_version(root)?;
         let mut seen = Seen::default();
+        self.world_children(root, &mut seen)?;
+        use WorldChild::*;
+        for container in [Shapes, Fixtures, Bodies, Joints] {
+            if !seen.contains(container) {
+                let message = format!("the file has no <{}>; read as empty", container.name());
+                self.warn(Code::MissingContainer, root.at, message)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The root's children up to `</World>`, or to the end of the file when a reader
+    /// ahead read the rest (see [`super::ahead`]).
+    pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
         while let Some(child) = self.child(root)? {
-            let Some((name, repeated)) = self.known(root, &child, &mut seen)? else {
+            let Some((name, repeated)) = self.known(root, &child, seen)? else {
                 continue;
             };
             if name == WorldChild::Gravity {
@@ -90,24 +115,35 @@ impl<'a> Parser<'a> {
             if repeated {
                 return Err(self.duplicate_container(root, &child));
             }
-            match name {
-                WorldChild::Shapes => self.items(&child, "Shape", Self::shape)?,
-                WorldChild::Fixtures => self.items(&child, "Fixture", Self::fixture)?,
-                WorldChild::Bodies => self.items(&child, "Body", Self::body)?,
-                _ => self.items(&child, "Joint", Self::joint)?,
-            }
-        }
-        use WorldChild::*;
-        for container in [Shapes, Fixtures, Bodies, Joints] {
-            if !seen.contains(container) {
-                let message = format!("the file has no <{}>; read as empty", container.name());
-                self.warn(Code::MissingContainer, root.at, message)?;
+            if self.container(&child, name, seen)? {
+                return Ok(());
             }
         }
         Ok(())
     }
 
-    fn read_version(&mut self, root: &Tag) -> Parsed<()> {
+    /// The items of a container; true when a reader ahead read the rest of the file.
+    pub(super) fn container(
+        &mut self,
+        tag: &Tag,
+        name: WorldChild,
+        seen: &mut Seen,
+    ) -> Parsed<bool> {
+        let (item, each): (_, fn(&mut Self, Tag) -> Parsed<()>) = match name {
+            WorldChild::Shapes => ("Shape", Self::shape),
+            WorldChild::Fixtures => ("Fixture", Self::fixture),
+            WorldChild::Bodies => ("Body", Self::body),
+            _ => ("Joint", Self::joint),
+        };
+        let mut taken_over = false;
+        self.items_until(tag, item, each, |p| {
+            taken_over = p.take_over(name, seen);
+            taken_over
+        })?;
+        Ok(taken_over)
+    }
+
+    pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
         let attrs = self.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
