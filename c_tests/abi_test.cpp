@@ -146,6 +146,10 @@ PIN_AT(b2s_load_options, max_chain_vertices, 28);
 PIN_AT(b2s_load_options, strict, 32);
 PIN_AT(b2s_load_options, threads, 36);
 
+PIN_SIZE(b2s_write_options, 8);
+PIN_AT(b2s_write_options, all_fields, 0);
+PIN_AT(b2s_write_options, threads, 4);
+
 static_assert(B2S_ERROR_MESSAGE_SIZE == 256, "B2S_ERROR_MESSAGE_SIZE");
 PIN_SIZE(b2s_error, 280);
 PIN_AT(b2s_error, code, 0);

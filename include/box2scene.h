@@ -874,6 +874,13 @@ typedef struct b2s_write_options {
    * Default false: omit them, as the original editor did.
    */
   bool all_fields;
+  /**
+   * Threads one write may use. 0 (the default) lets box2scene choose: a scene whose
+   * text comes to about 1 MiB or more is written on two threads, each writing half
+   * of it, everything else on the calling thread. 1 never starts a thread; more than
+   * 2 is read as 2. The text is the same however many threads write it.
+   */
+  uint32_t threads;
 } b2s_write_options;
 
 #ifdef __cplusplus
@@ -966,7 +973,7 @@ uint32_t b2s_scene_find_joint(const struct b2s_scene *scene, const char *name);
 
 /**
  * The write options with every field at its default (defaults omitted, as the editor
- * wrote).
+ * wrote; threads chosen by box2scene).
  */
 struct b2s_write_options b2s_write_options_default(void);
 

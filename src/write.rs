@@ -14,6 +14,11 @@ pub struct WriteOptions {
     /// Write every field of the file's version, even those equal to their defaults.
     /// Default false: omit them, as the original editor did.
     pub all_fields: bool,
+    /// Threads one write may use. 0 (the default) lets box2scene choose: a scene whose
+    /// text comes to about 1 MiB or more is written on two threads, each writing half
+    /// of it, everything else on the calling thread. 1 never starts a thread; more than
+    /// 2 is read as 2. The text is the same however many threads write it.
+    pub threads: u32,
 }
 
 /// The joints [`write`] leaves out: Farseer-only joints, which have no Box2Scene form.
@@ -27,30 +32,113 @@ pub fn joints_not_written(scene: &Scene) -> Vec<u32> {
 /// constructs, else `Version="2"`. Farseer-only joints are left out (see
 /// [`joints_not_written`]) and gear joints' references renumbered to match.
 pub fn write(scene: &Scene, options: &WriteOptions) -> String {
-    let version = if needs_version_2(scene) { 2 } else { 1 };
-    let mut w = Writer { out: String::new(), depth: 0, scene, all: options.all_fields, version };
-    w.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
-    w.open_typed("World", "Version", if version == 2 { "2" } else { "1" });
-    if let Some(gravity) = scene.gravity() {
-        w.vector("Gravity", gravity);
+    let text = Text::new(scene, options);
+    let cut = match options.threads {
+        1 => None,
+        _ if text.size < MIN_BYTES_FOR_TWO_THREADS => None,
+        _ => half_way(&text.sizes, text.size),
+    };
+    text.write(cut)
+}
+
+/// What a scene's text is made from.
+struct Text<'s> {
+    scene: &'s Scene,
+    /// The joints written, gear references renumbered.
+    joints: Vec<Joint>,
+    all: bool,
+    version: u32,
+    /// Per container, the estimated size of each item's text, and their sum.
+    sizes: [Vec<usize>; 4],
+    size: usize,
+}
+
+impl<'s> Text<'s> {
+    fn new(scene: &'s Scene, options: &WriteOptions) -> Text<'s> {
+        let renumbered = written_joint_indices(scene);
+        let joints: Vec<Joint> = scene
+            .joints()
+            .iter()
+            .filter(|j| j.kind() != Some(JointKind::Unsupported))
+            .map(|&j| Joint {
+                joint_a: renumber(&renumbered, j.joint_a),
+                joint_b: renumber(&renumbered, j.joint_b),
+                ..j
+            })
+            .collect();
+        let sizes = estimated_sizes(scene, &joints);
+        let size = sizes.iter().flatten().sum();
+        let version = if needs_version_2(scene) { 2 } else { 1 };
+        Text { scene, joints, all: options.all_fields, version, sizes, size }
     }
-    w.container("Shapes", scene.shapes(), Writer::shape);
-    w.container("Fixtures", scene.fixtures(), Writer::fixture);
-    w.container("Bodies", scene.bodies(), Writer::body);
-    let renumbered = written_joint_indices(scene);
-    let joints: Vec<Joint> = scene
-        .joints()
-        .iter()
-        .filter(|j| j.kind() != Some(JointKind::Unsupported))
-        .map(|&j| Joint {
-            joint_a: renumber(&renumbered, j.joint_a),
-            joint_b: renumber(&renumbered, j.joint_b),
-            ..j
+
+    fn writer(&self, depth: usize, capacity: usize) -> Writer<'_> {
+        Writer {
+            out: String::with_capacity(capacity),
+            depth,
+            scene: self.scene,
+            joints: &self.joints,
+            all: self.all,
+            version: self.version,
+        }
+    }
+
+    /// The whole text, on one thread or, given a place to cut it, on two.
+    fn write(&self, cut: Option<Place>) -> String {
+        let Some(cut) = cut else {
+            let mut w = self.writer(0, self.size);
+            w.part(START, END);
+            return w.out;
+        };
+        std::thread::scope(|threads| {
+            let second = threads.spawn(|| {
+                let mut w = self.writer(2, 0);
+                w.part(cut, END);
+                w.out
+            });
+            let mut w = self.writer(0, self.size + self.size / 8);
+            w.part(START, cut);
+            let second = second.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            w.out.push_str(&second);
+            w.out
         })
-        .collect();
-    w.container("Joints", &joints, Writer::joint);
-    w.close("World");
-    w.out
+    }
+}
+
+/// The smallest text worth a second thread.
+const MIN_BYTES_FOR_TWO_THREADS: usize = 1 << 20;
+
+/// A place in the text: before item `.1` of the world's container `.0` (0 to 3, in the
+/// order they are written); [`END`] after the last.
+type Place = (usize, usize);
+const START: Place = (0, 0);
+const END: Place = (4, 0);
+const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
+
+/// About how many bytes each item of each container takes, from what is typical of the
+/// editor's files: enough to cut the text in two halves of nearly the same length.
+fn estimated_sizes(scene: &Scene, joints: &[Joint]) -> [Vec<usize>; 4] {
+    [
+        scene.shapes().iter().map(|s| 100 + 40 * s.vertices.count as usize).collect(),
+        vec![200; scene.fixtures().len()],
+        scene.bodies().iter().map(|b| 300 + 30 * b.fixtures.count as usize).collect(),
+        vec![270; joints.len()],
+    ]
+}
+
+/// The item where half of the estimated text is written, when it lies inside a
+/// container (not at its first item), where two parts of the text can meet.
+fn half_way(sizes: &[Vec<usize>; 4], total: usize) -> Option<Place> {
+    let mut written = 0;
+    for (container, items) in sizes.iter().enumerate() {
+        for (item, size) in items.iter().enumerate() {
+            if written >= total / 2 {
+                return (item > 0).then_some((container, item));
+            }
+            written += size;
+        }
+    }
+    None
 }
 
 /// Per joint, its index among the joints that are written.
@@ -267,11 +355,52 @@ struct Writer<'s> {
     out: String,
     depth: usize,
     scene: &'s Scene,
+    /// The joints written, gear references renumbered.
+    joints: &'s [Joint],
     all: bool,
     version: u32,
 }
 
 impl Writer<'_> {
+    /// The text from place `from` to place `to`, with the start and end tags of the world
+    /// and of the containers that begin or end between them.
+    fn part(&mut self, from: Place, to: Place) {
+        if from == START {
+            self.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
+            self.open_typed("World", "Version", if self.version == 2 { "2" } else { "1" });
+            if let Some(gravity) = self.scene.gravity() {
+                self.vector("Gravity", gravity);
+            }
+        }
+        let (scene, joints) = (self.scene, self.joints);
+        let counts =
+            [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), joints.len()];
+        for (container, &count) in counts.iter().enumerate().take(to.0 + 1).skip(from.0) {
+            let name = CONTAINERS[container];
+            let first = if container == from.0 { from.1 } else { 0 };
+            let end = if container == to.0 { to.1 } else { count };
+            if count == 0 {
+                self.element(name, "");
+                continue;
+            }
+            if first == 0 {
+                self.open(name);
+            }
+            match container {
+                0 => scene.shapes()[first..end].iter().for_each(|s| self.shape(s)),
+                1 => scene.fixtures()[first..end].iter().for_each(|f| self.fixture(f)),
+                2 => scene.bodies()[first..end].iter().for_each(|b| self.body(b)),
+                _ => joints[first..end].iter().for_each(|j| self.joint(j)),
+            }
+            if end == count {
+                self.close(name);
+            }
+        }
+        if to == END {
+            self.close("World");
+        }
+    }
+
     fn indent(&mut self) {
         const SPACES: &str = "                ";
         let mut width = 2 * self.depth;
@@ -334,17 +463,6 @@ impl Writer<'_> {
         for piece in ["</", name, ">\n"] {
             self.out.push_str(piece);
         }
-    }
-
-    fn container<T>(&mut self, name: &str, items: &[T], write_item: fn(&mut Self, &T)) {
-        if items.is_empty() {
-            return self.element(name, "");
-        }
-        self.open(name);
-        for item in items {
-            write_item(self, item);
-        }
-        self.close(name);
     }
 
     fn vector(&mut self, name: &str, v: Vec2) {
@@ -693,6 +811,58 @@ mod tests {
                 });
             }
         });
+    }
+
+    fn scene_files() -> Vec<(String, Scene)> {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let mut scenes = Vec::new();
+        for dir in ["tests/scenes", "tests/data/corpus"] {
+            for entry in std::fs::read_dir(root.join(dir)).unwrap() {
+                let path = entry.unwrap().path();
+                if path.extension().is_some_and(|e| e == "xml") {
+                    let scene = crate::load_path(&path, &crate::LoadOptions::default()).unwrap();
+                    scenes.push((path.display().to_string(), scene));
+                }
+            }
+        }
+        assert!(scenes.len() >= 9, "the scene files are missing");
+        scenes
+    }
+
+    #[test]
+    fn a_text_cut_anywhere_is_the_text_of_one_thread() {
+        for (name, scene) in scene_files() {
+            for all_fields in [false, true] {
+                let options = WriteOptions { all_fields, threads: 1 };
+                let expected = write(&scene, &options);
+                let text = Text::new(&scene, &options);
+                for (container, items) in text.sizes.iter().enumerate() {
+                    for item in 1..items.len() {
+                        let cut = text.write(Some((container, item)));
+                        assert_eq!(cut, expected, "{name} cut at {container}, {item}");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_large_scene_is_cut_half_way_and_written_as_on_one_thread() {
+        let body = "<Body Type=\"Dynamic\"><Position>1.5 -2.25</Position><Fixtures /></Body>";
+        let xml = format!(
+            "<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{}</Bodies><Joints /></World>",
+            body.repeat(5000)
+        );
+        let scene = crate::load(xml.as_bytes(), &crate::LoadOptions::default()).unwrap();
+        let text = Text::new(&scene, &WriteOptions::default());
+        assert!(text.size >= MIN_BYTES_FOR_TWO_THREADS, "{}", text.size);
+        assert_eq!(half_way(&text.sizes, text.size), Some((2, 2500)));
+        let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() });
+        assert_eq!(write(&scene, &WriteOptions::default()), one);
+        assert_eq!(
+            crate::load(one.as_bytes(), &crate::LoadOptions::default()).unwrap().bodies().len(),
+            5000
+        );
     }
 
     #[test]

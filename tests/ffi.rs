@@ -146,7 +146,7 @@ fn a_scene_is_written_to_a_library_owned_text() {
     let (scene, _, _) = load_text(SCENE);
     let mut written = null_mut();
     let mut size = 0usize;
-    let options = box2scene::WriteOptions { all_fields: true };
+    let options = box2scene::WriteOptions { all_fields: true, ..Default::default() };
     unsafe {
         assert_eq!(
             b2s_write_memory(scene, &options, &mut written, &mut size, null_mut()),

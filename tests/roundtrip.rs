@@ -13,7 +13,7 @@ use box2scene::{
 };
 
 const MODES: [WriteOptions; 2] =
-    [WriteOptions { all_fields: false }, WriteOptions { all_fields: true }];
+    [WriteOptions { all_fields: false, threads: 0 }, WriteOptions { all_fields: true, threads: 0 }];
 
 /// Everything a scene holds, bit for bit (the dump's floats are shortest round-trip text),
 /// except what describes the file rather than the scene: its version and its warnings.

@@ -18,7 +18,7 @@ fuzz_target!(|data: &[u8]| {
         return; // Farseer-only joints are left out by design.
     }
     for all_fields in [false, true] {
-        let options = WriteOptions { all_fields };
+        let options = WriteOptions { all_fields, ..WriteOptions::default() };
         let written = write(&scene, &options);
         let again = load(written.as_bytes(), &LoadOptions::default())
             .unwrap_or_else(|e| panic!("the written file does not load: {e}\n{written}"));

@@ -72,11 +72,13 @@ where
     Some(Ahead { at, container, done })
 }
 
-/// The first item at or after the middle of `text` that follows an item of its own name,
-/// with only white space between: `</Body>` then `<Body`. None when there is none before
-/// three quarters of the text.
+/// The first item from a little before the middle of `text` on (the first thread also
+/// takes over what the second read, and its shapes and fixtures cost a little more to
+/// read than bodies and joints) that follows an item of its own name, with only white
+/// space between: `</Body>` then `<Body`. None when there is none before three quarters
+/// of the text.
 fn split_point(text: &[u8]) -> Option<(usize, WorldChild)> {
-    let (mut from, last) = (text.len() / 2, text.len() / 4 * 3);
+    let (mut from, last) = (text.len() / 100 * 46, text.len() / 4 * 3);
     while from < last {
         let at = from + memchr::memchr(b'<', &text[from..last])?;
         if let Some(container) = item_after_its_twin(text, at) {
@@ -223,13 +225,14 @@ mod tests {
     }
 
     #[test]
-    fn the_split_point_is_the_first_twin_from_the_middle_on() {
+    fn the_split_point_is_the_first_twin_from_near_the_middle_on() {
         let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
         let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(100));
         let (at, container) = split_point(text.as_bytes()).expect("a split point");
         assert_eq!(container, WorldChild::Bodies);
         assert!(text[at..].starts_with("<Body "), "{}", &text[at..at + 10]);
-        assert!(at >= text.len() / 2 && at - text.len() / 2 <= body.len(), "{at}");
+        let from = text.len() / 100 * 46;
+        assert!(at >= from && at - from <= body.len(), "{at}");
         assert_eq!(split_point(b"<World><Bodies></Bodies></World>"), None);
     }
 
