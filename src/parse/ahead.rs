@@ -11,7 +11,7 @@ use std::sync::mpsc;
 use std::thread::Scope;
 
 use super::names::{Element, Name};
-use super::world::WorldChild;
+use super::world::{CONTAINERS, WorldChild};
 use super::{Parser, Seen, Tag};
 use crate::LoadOptions;
 use crate::input::Source;
@@ -20,14 +20,6 @@ use crate::text::is_xml_space_byte;
 /// The smallest text worth a second thread: below it, starting one costs more than it
 /// saves.
 const MIN_BYTES: usize = 1 << 20;
-
-/// The item elements of the world's containers, as the editor spells them.
-const ITEMS: [(WorldChild, &[u8]); 4] = [
-    (WorldChild::Shapes, b"Shape"),
-    (WorldChild::Fixtures, b"Fixture"),
-    (WorldChild::Bodies, b"Body"),
-    (WorldChild::Joints, b"Joint"),
-];
 
 /// The second parser, as the first one sees it.
 pub(super) struct Ahead<'a> {
@@ -93,7 +85,8 @@ fn split_point(text: &[u8]) -> Option<(usize, WorldChild)> {
 /// end tag of an item of the same name.
 fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
     let after = &text[at + 1..];
-    let &(container, name) = ITEMS.iter().find(|(_, name)| {
+    let container = CONTAINERS.into_iter().find(|c| {
+        let name = c.item().as_bytes();
         after.starts_with(name)
             && after
                 .get(name.len())
@@ -101,6 +94,7 @@ fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
     })?;
     let before = &text[..at];
     let end = before.iter().rposition(|&b| !is_xml_space_byte(b))? + 1;
+    let name = container.item().as_bytes();
     let twin = before[..end].strip_suffix(b">")?.strip_suffix(name)?.ends_with(b"</");
     twin.then_some(container)
 }
@@ -176,9 +170,6 @@ impl Parser<'_> {
 mod tests {
     use super::*;
     use crate::scene::Scene;
-
-    const CONTAINERS: [WorldChild; 4] =
-        [WorldChild::Shapes, WorldChild::Fixtures, WorldChild::Bodies, WorldChild::Joints];
 
     /// The scene (as its dump) or the error of a load on one thread, or on two split at
     /// `split`.

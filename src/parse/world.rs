@@ -7,6 +7,24 @@ elements! {
     pub(super) enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
 }
 
+/// The world's containers, in the order writers list them.
+pub(super) const CONTAINERS: [WorldChild; 4] =
+    [WorldChild::Shapes, WorldChild::Fixtures, WorldChild::Bodies, WorldChild::Joints];
+
+impl WorldChild {
+    /// The element each item of this container is, as the editor spells it (none for
+    /// Gravity, which is a value).
+    pub(super) fn item(self) -> &'static str {
+        match self {
+            WorldChild::Gravity => "",
+            WorldChild::Shapes => "Shape",
+            WorldChild::Fixtures => "Fixture",
+            WorldChild::Bodies => "Body",
+            WorldChild::Joints => "Joint",
+        }
+    }
+}
+
 impl<'a> Parser<'a> {
     /// The whole document: prolog, `<World>`, epilog.
     pub(super) fn document(&mut self) -> Parsed<()> {
@@ -88,8 +106,7 @@ impl<'a> Parser<'a> {
         self.read_version(root)?;
         let mut seen = Seen::default();
         self.world_children(root, &mut seen)?;
-        use WorldChild::*;
-        for container in [Shapes, Fixtures, Bodies, Joints] {
+        for container in CONTAINERS {
             if !seen.contains(container) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
                 self.warn(Code::MissingContainer, root.at, message)?;
@@ -129,14 +146,14 @@ impl<'a> Parser<'a> {
         name: WorldChild,
         seen: &mut Seen,
     ) -> Parsed<bool> {
-        let (item, each): (_, fn(&mut Self, Tag) -> Parsed<()>) = match name {
-            WorldChild::Shapes => ("Shape", Self::shape),
-            WorldChild::Fixtures => ("Fixture", Self::fixture),
-            WorldChild::Bodies => ("Body", Self::body),
-            _ => ("Joint", Self::joint),
+        let each: fn(&mut Self, Tag) -> Parsed<()> = match name {
+            WorldChild::Shapes => Self::shape,
+            WorldChild::Fixtures => Self::fixture,
+            WorldChild::Bodies => Self::body,
+            _ => Self::joint,
         };
         let mut taken_over = false;
-        self.items_until(tag, item, each, |p| {
+        self.items_until(tag, name.item(), each, |p| {
             taken_over = p.take_over(name, seen);
             taken_over
         })?;
