@@ -816,25 +816,10 @@ mod tests {
         });
     }
 
-    fn scene_files() -> Vec<(String, Scene)> {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let mut scenes = Vec::new();
-        for dir in ["tests/scenes", "tests/data/corpus"] {
-            for entry in std::fs::read_dir(root.join(dir)).unwrap() {
-                let path = entry.unwrap().path();
-                if path.extension().is_some_and(|e| e == "xml") {
-                    let scene = crate::load_path(&path, &crate::LoadOptions::default()).unwrap();
-                    scenes.push((path.display().to_string(), scene));
-                }
-            }
-        }
-        assert!(scenes.len() >= 9, "the scene files are missing");
-        scenes
-    }
-
     #[test]
     fn a_text_cut_anywhere_is_the_text_of_one_thread() {
-        for (name, scene) in scene_files() {
+        for (name, bytes) in crate::scene_files() {
+            let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
             for all_fields in [false, true] {
                 let options = WriteOptions { all_fields, threads: 1 };
                 let expected = write(&scene, &options);

@@ -184,21 +184,6 @@ mod tests {
         }
     }
 
-    fn scene_files() -> Vec<(String, Vec<u8>)> {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let mut files = Vec::new();
-        for dir in ["tests/scenes", "tests/data/corpus"] {
-            for entry in std::fs::read_dir(root.join(dir)).unwrap() {
-                let path = entry.unwrap().path();
-                if path.extension().is_some_and(|e| e == "xml") {
-                    files.push((path.display().to_string(), std::fs::read(&path).unwrap()));
-                }
-            }
-        }
-        assert!(files.len() >= 9, "the scene files are missing");
-        files
-    }
-
     /// Where a split is worth trying: every `<`.
     fn tags(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
         memchr::memchr_iter(b'<', bytes)
@@ -232,7 +217,7 @@ mod tests {
     #[test]
     fn every_split_of_every_scene_file_loads_as_one_thread_reads_it() {
         let options = LoadOptions::default();
-        for (name, bytes) in scene_files() {
+        for (name, bytes) in crate::scene_files() {
             let expected = outcome(&bytes, &options, None);
             for at in tags(&bytes) {
                 for container in CONTAINERS {
@@ -255,7 +240,7 @@ mod tests {
             (state % below as u64) as usize
         };
         let strict = LoadOptions { strict: true, ..LoadOptions::default() };
-        for (name, bytes) in scene_files() {
+        for (name, bytes) in crate::scene_files() {
             let splits: Vec<_> = tags(&bytes)
                 .filter_map(|at| Some((at, item_after_its_twin(&bytes, at)?)))
                 .collect();
