@@ -91,17 +91,16 @@ impl<'a> Source<'a> {
     /// A second reader of this text, when it is a whole UTF-8 text in memory that ends
     /// with the file: what a second thread may read.
     pub fn shared(&self) -> Option<Source<'a>> {
-        match (&self.text, &self.file, &self.stop, &self.origin, self.encoding) {
-            (Cow::Borrowed(text), None, None, Origin::Memory, Encoding::Utf8 { .. }) => {
-                Some(Source {
-                    text: Cow::Borrowed(text),
-                    base: 0,
-                    file: None,
-                    stop: None,
-                    encoding: self.encoding,
-                    origin: Origin::Memory,
-                })
-            }
+        // Only a UTF-8 file in memory is borrowed; the others are decoded or streamed.
+        match (&self.text, &self.stop) {
+            (Cow::Borrowed(text), None) => Some(Source {
+                text: Cow::Borrowed(text),
+                base: 0,
+                file: None,
+                stop: None,
+                encoding: self.encoding,
+                origin: Origin::Memory,
+            }),
             _ => None,
         }
     }

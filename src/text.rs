@@ -339,9 +339,7 @@ pub fn int16(s: &str) -> Result<i16, BadValue> {
 /// As for [`int`], the standard library's parse of a `u32` accepts exactly an optional `+` and
 /// digits, so a successful parse (short of the reserved `u32::MAX`) is the answer in one pass.
 pub fn id(s: &str) -> Result<u32, BadValue> {
-    if let Ok(value) = s.parse::<u32>()
-        && value != u32::MAX
-    {
+    if let Ok(value @ 0..=0xFFFF_FFFE) = s.parse::<u32>() {
         return Ok(value);
     }
     let digits = s.strip_prefix('+').unwrap_or(s);

@@ -174,7 +174,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
             Some(Slot::Float(field)) => *field(&mut joint) = finite(name, *field(&mut source))?,
             Some(Slot::NonNegative(field)) => {
                 let v = finite(name, *field(&mut source))?;
-                *field(&mut joint) = super::not_negative(&format!("<{name}>"), v, 0)
+                *field(&mut joint) = super::not_negative(format_args!("<{name}>"), v, 0)
                     .map_err(|p| (p.code, p.message))?;
             }
             Some(Slot::Flag(field)) => *field(&mut joint) = *field(&mut source),

@@ -168,6 +168,16 @@ pub(crate) struct Text {
     resolved: Option<String>,
 }
 
+impl Text {
+    /// Its text, from `source` when it is a range of it.
+    fn read<'t>(&'t self, source: &'t Source) -> &'t str {
+        match &self.resolved {
+            Some(resolved) => resolved,
+            None => source.slice(self.at, self.end),
+        }
+    }
+}
+
 /// The trimmed text of a value element and the offset of its first character. Read it
 /// with [`Parser::text_of`] before the next node.
 pub(crate) struct Value {
@@ -519,19 +529,22 @@ impl<'a> Parser<'a> {
     /// was.
     fn closes_parent(&mut self) -> bool {
         let at = self.pos;
-        let Some(end) = self.usual_end_tag(at) else {
-            return false;
-        };
-        (self.last, self.started) = (self.started, at);
-        self.pos = end;
-        self.open.pop();
-        true
+        let closed = self.usual_end_tag(at);
+        if closed {
+            (self.last, self.started) = (self.started, at);
+        }
+        closed
     }
 
-    /// Where the end tag at `at` ends, when it is the usual `</Name>` of the innermost open
-    /// element.
-    fn usual_end_tag(&self, at: usize) -> Option<usize> {
-        Some(at + self.usual_end_tag_len(self.rest(at))?)
+    /// Reads the end tag at `at` when it is the usual `</Name>` of the innermost open
+    /// element, closing it; whether it was.
+    fn usual_end_tag(&mut self, at: usize) -> bool {
+        let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
+            return false;
+        };
+        self.pos = at + len;
+        self.open.pop();
+        true
     }
 
     /// How long the usual end tag of the innermost open element is, when `text` starts
@@ -583,9 +596,7 @@ impl<'a> Parser<'a> {
     }
 
     fn end_tag(&mut self, at: usize) -> Parsed<Node> {
-        if let Some(end) = self.usual_end_tag(at) {
-            self.pos = end;
-            self.open.pop();
+        if self.usual_end_tag(at) {
             return Ok(Node::Close(at));
         }
         let end = self.tag_end(at)?;
@@ -649,10 +660,7 @@ impl<'a> Parser<'a> {
 
     /// The text of `t`, valid until the next node is read.
     pub fn text_of<'t>(&'t self, t: &'t Text) -> &'t str {
-        match &t.resolved {
-            Some(resolved) => resolved,
-            None => self.source.slice(t.at, t.end),
-        }
+        t.read(&self.source)
     }
 
     fn is_blank(&self, t: &Text) -> bool {
@@ -831,10 +839,7 @@ impl<'a> Parser<'a> {
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.parsed(tag, text::float)?;
-        if v < 0.0 {
-            return not_negative(&format!("<{}>", tag.name()), v, at);
-        }
-        Ok(v)
+        not_negative(format_args!("<{}>", tag.name), v, at)
     }
 
     pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
@@ -870,12 +875,7 @@ impl<'a> Parser<'a> {
     /// A string value, stored in the scene's string pool.
     pub fn string(&mut self, tag: &Tag) -> Parsed<crate::scene::Str> {
         let value = self.value(tag)?;
-        let Parser { source, scene, .. } = self;
-        let text = match &value.text.resolved {
-            Some(resolved) => resolved,
-            None => source.slice(value.text.at, value.text.end),
-        };
-        Ok(scene.add_str(text))
+        Ok(self.scene.add_str(value.text.read(&self.source)))
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
@@ -1200,8 +1200,9 @@ fn unknown_entity(name: &str, at: usize) -> Problem {
     )
 }
 
-/// `value`, unless it is negative (error `negative-value` naming `what`).
-pub(crate) fn not_negative(what: &str, value: f32, at: usize) -> Parsed<f32> {
+/// `value`, unless it is negative (error `negative-value` naming `what`, which is formatted
+/// only then).
+pub(crate) fn not_negative(what: impl std::fmt::Display, value: f32, at: usize) -> Parsed<f32> {
     if value < 0.0 {
         return Err(problem(
             Code::NegativeValue,

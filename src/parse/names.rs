@@ -77,6 +77,12 @@ impl Name {
     }
 }
 
+impl std::fmt::Display for Name {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
 /// The key of a known element's name, as [`Name::key`] gives it for that name in any case.
 /// Known names are ASCII letters and digits, at most [`SHORT`] of them.
 pub(super) const fn key(name: &str) -> u128 {
