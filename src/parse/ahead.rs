@@ -1,13 +1,16 @@
-//! Reading a large file on two threads. A second parser starts at an item in the middle
-//! of the text (a `<Body>` just after a `</Body>`, say), assuming that it lies directly in
-//! its container in `<World>`, and reads from there to the end of the file. When the
-//! first parser reaches that point it checks the assumption: its container is open
-//! there, spelled as assumed, the second parser met no problem and no warning, and the
-//! two together stay within the limits. Then it takes what the second one read and is
-//! done; otherwise it reads on itself. Either way the scene, the warnings and the first
-//! error are those of one parser reading the whole file.
+//! Reading a large file on two threads. The text is cut into pieces at items (a `<Body>`
+//! just after a `</Body>`, say), each assumed to lie directly in its container in
+//! `<World>`. A helper thread reads the pieces from the last one back, each up to where
+//! the next one begins; the calling thread reads from the start on, taking the pieces
+//! the helper has not begun as it reaches them, until the two meet. Then the calling
+//! thread checks the assumptions: it is at the next piece's item, in its container,
+//! spelled as assumed; each of the helper's pieces read cleanly (no problem, no warning)
+//! and ended where the next one begins; the limits still hold; and no world element was
+//! read twice. If all hold it takes what the helper read and is done; otherwise it reads
+//! on itself. Either way the scene, the warnings and the first error are those of one
+//! parser reading the whole file; a busy core only moves where the two meet.
 
-use std::sync::mpsc;
+use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
 
 use super::names::{Element, Name};
@@ -21,58 +24,116 @@ use crate::text::is_xml_space_byte;
 /// saves.
 const MIN_BYTES: usize = 1 << 20;
 
-/// The second parser, as the first one sees it.
-pub(super) struct Ahead<'a> {
-    /// Where it started: the `<` of an item.
-    at: usize,
-    /// The container it assumed the item is in.
-    container: WorldChild,
-    done: mpsc::Receiver<Option<Done<'a>>>,
+/// About how long a piece is. The calling thread may wait for the piece the helper is
+/// reading when they meet, so pieces are short; each costs a parser and a merge.
+const PIECE_BYTES: usize = 256 << 10;
+
+/// At most this many pieces, however large the text.
+const MAX_PIECES: usize = 64;
+
+/// Where a piece begins: the `<` of an item, and the container it is assumed to be in.
+pub(super) type Boundary = (usize, WorldChild);
+
+/// A parser's part in a load.
+pub(super) enum Part<'a> {
+    /// It reads the whole file, or the rest of it.
+    Whole,
+    /// The calling thread, with a helper reading the pieces from the last one back.
+    Caller(Caller<'a>),
+    /// A piece the helper reads: it ends at `end`, where the next piece begins, and
+    /// `reached` says whether it ended there as that piece assumes.
+    Piece { end: Boundary, reached: bool },
 }
 
-/// What the second parser read, when it read to the end of the file without a problem.
+/// The helper, as the calling thread sees it.
+pub(super) struct Caller<'a> {
+    boundaries: Vec<Boundary>,
+    /// The first boundary the calling thread has not reached.
+    next: usize,
+    claims: Arc<Mutex<Claims>>,
+    done: mpsc::Receiver<(usize, Option<Done<'a>>)>,
+    /// What the helper read, by piece.
+    pieces: Vec<Piece<'a>>,
+}
+
+/// Who reads which piece: the calling thread those before `caller`, the helper those from
+/// `helper` on. Each claims a piece before it reads it, so they never read the same one:
+/// the helper only one from `caller` on, the calling thread only one before `helper`.
+struct Claims {
+    caller: usize,
+    helper: usize,
+}
+
+enum Piece<'a> {
+    /// Not read by the helper, or not yet received.
+    Waiting,
+    Read(Box<Done<'a>>),
+    /// Read with a problem or a warning, or not where the next piece begins.
+    Unusable,
+}
+
+/// What the helper read of one piece, when it read it without a problem.
 struct Done<'a> {
     parser: Parser<'a>,
     /// The world's elements it read, its own container among them.
     seen: Seen,
 }
 
-/// Starts the second parser on `scope`, when the options allow a thread and `source` is
-/// a text in memory large enough to be worth it; `split` forces where (for tests).
+/// Starts the helper on `scope`, when the options allow a thread and `source` is a text
+/// in memory large enough to be worth it. For tests, `split` forces the boundaries and
+/// a first piece that is the helper's from the start, from which on it reads them
+/// whatever the timing.
 pub(super) fn start<'a, 'scope>(
     scope: &'scope Scope<'scope, '_>,
     source: &Source<'a>,
     options: &'a LoadOptions,
-    split: Option<(usize, WorldChild)>,
-) -> Option<Ahead<'a>>
+    split: Option<(Vec<Boundary>, usize)>,
+) -> Part<'a>
 where
     'a: 'scope,
 {
     if options.threads == 1 {
-        return None;
+        return Part::Whole;
     }
-    let shared = source.shared()?;
-    let (at, container) = match split {
+    let Some(shared) = source.shared() else { return Part::Whole };
+    let (boundaries, helped) = match split {
         Some(split) => split,
-        None if shared.text().len() >= MIN_BYTES => split_point(shared.text().as_bytes())?,
-        None => return None,
+        None if shared.text().len() >= MIN_BYTES => {
+            let boundaries = boundaries(shared.text().as_bytes());
+            let last = boundaries.len();
+            (boundaries, last)
+        }
+        None => return Part::Whole,
     };
-    let (sender, done) = mpsc::sync_channel(1);
-    scope.spawn(move || {
-        let _ = sender.send(read_ahead(shared, options, at, container));
-    });
-    Some(Ahead { at, container, done })
+    if boundaries.is_empty() {
+        return Part::Whole;
+    }
+    let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped.min(boundaries.len()) }));
+    let (sender, done) = mpsc::channel();
+    let (their_boundaries, their_claims) = (boundaries.clone(), Arc::clone(&claims));
+    scope.spawn(move || help(shared, options, &their_boundaries, &their_claims, &sender));
+    let pieces = boundaries.iter().map(|_| Piece::Waiting).collect();
+    Part::Caller(Caller { boundaries, next: 0, claims, done, pieces })
 }
 
-/// The first item from a little before the middle of `text` on (the first thread also
-/// takes over what the second read, and its shapes and fixtures cost a little more to
-/// read than bodies and joints) that follows an item of its own name, with only white
-/// space between: `</Body>` then `<Body`. None when there is none before three quarters
-/// of the text.
-fn split_point(text: &[u8]) -> Option<(usize, WorldChild)> {
-    let (mut from, last) = (text.len() / 100 * 46, text.len() / 4 * 3);
-    while from < last {
-        let at = from + memchr::memchr(b'<', &text[from..last])?;
+/// Where the pieces of `text` begin: the first item after its twin from every
+/// [`PIECE_BYTES`] or so on.
+fn boundaries(text: &[u8]) -> Vec<Boundary> {
+    let pieces = (text.len() / PIECE_BYTES).clamp(2, MAX_PIECES);
+    let step = text.len() / pieces;
+    let mut boundaries: Vec<Boundary> = Vec::with_capacity(pieces);
+    for k in 1..pieces {
+        let from = boundaries.last().map_or(0, |&(at, _)| at + 1).max(step * k);
+        boundaries.extend(item_after_a_twin(text, from, step * (k + 1)));
+    }
+    boundaries
+}
+
+/// The first item from `from` on and before `to` that follows an item of its own name,
+/// with only white space between: `</Body>` then `<Body`.
+fn item_after_a_twin(text: &[u8], mut from: usize, to: usize) -> Option<Boundary> {
+    while from < to {
+        let at = from + memchr::memchr(b'<', &text[from..to])?;
         if let Some(container) = item_after_its_twin(text, at) {
             return Some((at, container));
         }
@@ -99,39 +160,111 @@ fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
     twin.then_some(container)
 }
 
-/// The second parser: reads the root's start tag for the Version, then from `at` to the
-/// end of the file as if `at` began an item of `container`.
-fn read_ahead<'a>(
+/// The helper: claims and reads the pieces from the last one back until it reaches one
+/// the calling thread has claimed, or one it cannot use (the pieces before it could not
+/// be used either: the calling thread takes the pieces from one on to the end).
+fn help<'a>(
     source: Source<'a>,
     options: &'a LoadOptions,
-    at: usize,
-    container: WorldChild,
+    boundaries: &[Boundary],
+    claims: &Mutex<Claims>,
+    sender: &mpsc::Sender<(usize, Option<Done<'a>>)>,
+) {
+    for piece in (0..boundaries.len()).rev() {
+        {
+            let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
+            if piece < claims.helper.min(claims.caller) {
+                return;
+            }
+            claims.helper = claims.helper.min(piece);
+        }
+        let Some(source) = source.shared() else { return };
+        let end = boundaries.get(piece + 1).copied();
+        let done = read_piece(source, options, boundaries[piece], end);
+        let usable = done.is_some();
+        if sender.send((piece, done)).is_err() || !usable {
+            return;
+        }
+    }
+}
+
+/// Reads the root's start tag for the Version, then from `start` on as if it began an
+/// item of its container, up to `end` (the next piece) or to the end of the file.
+fn read_piece<'a>(
+    source: Source<'a>,
+    options: &'a LoadOptions,
+    (at, container): Boundary,
+    end: Option<Boundary>,
 ) -> Option<Done<'a>> {
     let mut parser = Parser::new(source, options);
     let root = parser.root().ok()?;
     parser.read_version(&root).ok()?;
-    // The first parser counts and reports everything up to `at`.
+    // The calling thread counts and reports everything before `at`.
     parser.warnings.clear();
     parser.elements = 0;
     let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
     parser.open.push(tag.name.clone());
     (parser.pos, parser.started, parser.last) = (at, at, at);
+    if let Some(end) = end {
+        parser.part = Part::Piece { end, reached: false };
+    }
     let mut seen = Seen::default();
     seen.bits |= 1 << container.index();
-    let read = parser
-        .container(&tag, container, &mut seen)
-        .and_then(|_| parser.world_children(&root, &mut seen))
-        .and_then(|()| parser.epilog());
-    let clean = read.is_ok() && parser.warnings.is_empty() && parser.dropped_warnings.0 == 0;
+    let read = match parser.container(&tag, container, &mut seen) {
+        Ok(false) => parser.world_children(&root, &mut seen),
+        done => done.map(drop),
+    };
+    let ended = match parser.part {
+        Part::Piece { reached, .. } => read.is_ok() && reached,
+        _ => read.and_then(|()| parser.epilog()).is_ok(),
+    };
+    let clean = ended && parser.warnings.is_empty() && parser.dropped_warnings.0 == 0;
     clean.then_some(Done { parser, seen })
 }
 
+impl Caller<'_> {
+    /// Claims `piece` for the calling thread, which has reached or passed where it begins,
+    /// and keeps the helper from those before it; whether the helper had not claimed it.
+    fn claim(&self, piece: usize) -> bool {
+        let mut claims = self.claims.lock().unwrap_or_else(PoisonError::into_inner);
+        claims.caller = claims.caller.max(piece + 1);
+        piece < claims.helper
+    }
+
+    /// Waits until the helper has read or given up every piece from `first` on.
+    fn receive(&mut self, first: usize) {
+        while self.pieces[first..].iter().any(|p| matches!(p, Piece::Waiting)) {
+            let Ok((piece, done)) = self.done.recv() else {
+                for p in &mut self.pieces[first..] {
+                    if matches!(p, Piece::Waiting) {
+                        *p = Piece::Unusable;
+                    }
+                }
+                return;
+            };
+            self.pieces[piece] = done.map_or(Piece::Unusable, |done| Piece::Read(Box::new(done)));
+        }
+    }
+}
+
+impl Drop for Caller<'_> {
+    /// The helper starts no piece once the calling thread is done with them.
+    fn drop(&mut self) {
+        self.claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
+    }
+}
+
 impl Parser<'_> {
-    /// Before the next item of `container`: whether the second parser started here and
-    /// what it read is taken, so that the whole file is read. `seen` has the world's
-    /// elements read so far and gets those the second parser read.
+    /// Before the next item of `container`: whether this parser is done here. A piece is
+    /// done at its end; the calling thread is done when it has taken the helper's pieces
+    /// from here to the end of the file. `seen` has the world's elements read so far and
+    /// gets those of the pieces taken.
     pub(super) fn take_over(&mut self, container: WorldChild, seen: &mut Seen) -> bool {
-        let Some(at) = self.ahead.as_ref().map(|ahead| ahead.at) else { return false };
+        let at = match &self.part {
+            Part::Whole => return false,
+            Part::Caller(caller) => caller.boundaries[caller.next].0,
+            Part::Piece { end, .. } => end.0,
+        };
         if self.open.len() != 2 {
             return false;
         }
@@ -139,29 +272,68 @@ impl Parser<'_> {
         if self.pos < at {
             return false;
         }
-        // Here or past it: the second parser is of use here or nowhere.
-        let Some(ahead) = self.ahead.take() else { return false };
-        let assumed = self.pos == ahead.at
-            && container == ahead.container
-            && self.open[1].as_str() == container.name();
-        if !assumed {
-            return false;
-        }
-        let Ok(Some(Done { parser, seen: seen_ahead })) = ahead.done.recv() else {
-            return false;
+        // At or past the boundary.
+        let here = |(at, assumed): Boundary, parser: &Parser| {
+            parser.pos == at && container == assumed && parser.open[1].as_str() == container.name()
         };
-        let within_limits = self.elements + parser.elements <= self.options.max_elements;
-        let repeated = seen.bits & seen_ahead.bits & !(1 << container.index());
-        if !within_limits || repeated != 0 {
+        match std::mem::replace(&mut self.part, Part::Whole) {
+            Part::Whole => false,
+            Part::Piece { end, .. } => {
+                let reached = here(end, self);
+                self.part = Part::Piece { end, reached };
+                true
+            }
+            Part::Caller(mut caller) => {
+                while let Some(&boundary) = caller.boundaries.get(caller.next) {
+                    if self.pos < boundary.0 {
+                        self.part = Part::Caller(caller);
+                        return false;
+                    }
+                    let piece = caller.next;
+                    caller.next += 1;
+                    if !caller.claim(piece)
+                        && here(boundary, self)
+                        && self.take(&mut caller, piece, seen)
+                    {
+                        return true;
+                    }
+                }
+                // Past every piece: the rest is read here.
+                false
+            }
+        }
+    }
+
+    /// Appends what the helper read from `first` on, to the end of the file, when every
+    /// piece of it is usable and all of it together keeps the limits; whether it did.
+    fn take(&mut self, caller: &mut Caller, first: usize, seen: &mut Seen) -> bool {
+        caller.receive(first);
+        let (mut bits, mut elements) = (seen.bits, self.elements);
+        for (piece, &(_, container)) in
+            caller.pieces[first..].iter().zip(&caller.boundaries[first..])
+        {
+            let Piece::Read(done) = piece else { return false };
+            // Each piece has the container it begins in, as does the one before it.
+            if bits & done.seen.bits & !(1 << container.index()) != 0 {
+                return false;
+            }
+            bits |= done.seen.bits;
+            elements += done.parser.elements;
+        }
+        if elements > self.options.max_elements {
             return false;
         }
-        let bodies_before = self.scene.bodies.len() as u32;
-        self.scene.append(parser.scene);
-        self.origins.append(parser.origins, bodies_before);
-        self.elements += parser.elements;
-        (self.pos, self.started, self.last) = (parser.pos, parser.started, parser.last);
-        self.open = parser.open;
-        seen.bits |= seen_ahead.bits;
+        // Every piece from `first` on was read, as checked above.
+        for piece in &mut caller.pieces[first..] {
+            let Piece::Read(done) = std::mem::replace(piece, Piece::Unusable) else { continue };
+            let parser = done.parser;
+            let bodies_before = self.scene.bodies.len() as u32;
+            self.scene.append(parser.scene);
+            self.origins.append(parser.origins, bodies_before);
+            (self.pos, self.started, self.last) = (parser.pos, parser.started, parser.last);
+            self.open = parser.open;
+        }
+        (seen.bits, self.elements) = (bits, elements);
         true
     }
 }
@@ -171,9 +343,13 @@ mod tests {
     use super::*;
     use crate::scene::Scene;
 
-    /// The scene (as its dump) or the error of a load on one thread, or on two split at
-    /// `split`.
-    fn outcome(bytes: &[u8], options: &LoadOptions, split: Option<(usize, WorldChild)>) -> String {
+    /// The scene (as its dump) or the error of a load on one thread, or on two with the
+    /// pieces and the helper's first piece of `split`.
+    fn outcome(
+        bytes: &[u8],
+        options: &LoadOptions,
+        split: Option<(Vec<Boundary>, usize)>,
+    ) -> String {
         let threads = if split.is_some() { 2 } else { 1 };
         let options = &LoadOptions { threads, ..*options };
         let loaded: Result<Scene, _> = Source::memory(bytes, options)
@@ -184,13 +360,18 @@ mod tests {
         }
     }
 
-    /// Where a split is worth trying: every `<`.
+    /// Where a piece is worth trying: every `<`.
     fn tags(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
         memchr::memchr_iter(b'<', bytes)
     }
 
+    /// Where pieces would begin: every item after its twin.
+    fn twins(bytes: &[u8]) -> Vec<Boundary> {
+        tags(bytes).filter_map(|at| Some((at, item_after_its_twin(bytes, at)?))).collect()
+    }
+
     #[test]
-    fn a_split_point_is_an_item_after_its_twin() {
+    fn a_piece_begins_at_an_item_after_its_twin() {
         let text = b"<Bodies><Body/>\n  </Body>\r\n\t<Body Type=\"Static\">";
         let at = text.len() - 20;
         assert_eq!(item_after_its_twin(text, at), Some(WorldChild::Bodies));
@@ -201,35 +382,72 @@ mod tests {
     }
 
     #[test]
-    fn the_split_point_is_the_first_twin_from_near_the_middle_on() {
+    fn pieces_begin_at_the_first_twin_from_every_step_on() {
         let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
-        let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(100));
-        let (at, container) = split_point(text.as_bytes()).expect("a split point");
-        assert_eq!(container, WorldChild::Bodies);
-        assert!(text[at..].starts_with("<Body "), "{}", &text[at..at + 10]);
-        let from = text.len() / 100 * 46;
-        assert!(at >= from && at - from <= body.len(), "{at}");
-        assert_eq!(split_point(b"<World><Bodies></Bodies></World>"), None);
+        for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
+            let text =
+                format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
+            let found = boundaries(text.as_bytes());
+            assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
+            let step = text.len() / pieces;
+            for (k, &(at, container)) in (1..).zip(&found) {
+                assert_eq!(container, WorldChild::Bodies);
+                assert!(text[at..].starts_with("<Body "), "{}", &text[at..at + 10]);
+                assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
+            }
+        }
+        assert_eq!(boundaries(b"<World><Bodies></Bodies></World>"), []);
     }
 
-    /// Split at every tag, assuming each container: what the second parser reads is taken
+    /// One piece from every tag, assuming each container: what the helper reads is taken
     /// where the assumption holds and dropped elsewhere, and the result never changes.
     #[test]
-    fn every_split_of_every_scene_file_loads_as_one_thread_reads_it() {
+    fn every_piece_of_every_scene_file_loads_as_one_thread_reads_it() {
         let options = LoadOptions::default();
         for (name, bytes) in crate::scene_files() {
             let expected = outcome(&bytes, &options, None);
             for at in tags(&bytes) {
                 for container in CONTAINERS {
-                    let split = outcome(&bytes, &options, Some((at, container)));
-                    assert_eq!(split, expected, "{name} split at {at} in {container:?}");
+                    let split = outcome(&bytes, &options, Some((vec![(at, container)], 0)));
+                    assert_eq!(split, expected, "{name}: a piece from {at} in {container:?}");
+                }
+            }
+        }
+    }
+
+    /// Pieces at every twin, the helper taking them from each on; and three pieces with
+    /// any tag between two twins, so that the middle one may be unusable.
+    #[test]
+    fn many_pieces_of_every_scene_file_load_as_one_thread_reads_them() {
+        let options = LoadOptions::default();
+        for (name, bytes) in crate::scene_files() {
+            let expected = outcome(&bytes, &options, None);
+            let twins = twins(&bytes);
+            for first in 0..=twins.len() {
+                let got = outcome(&bytes, &options, Some((twins.clone(), first)));
+                assert_eq!(
+                    got, expected,
+                    "{name}: pieces at every twin, the helper's from {first}"
+                );
+            }
+            let (Some(&first), Some(&last)) = (twins.first(), twins.last()) else { continue };
+            for at in tags(&bytes).filter(|&at| first.0 < at && at < last.0) {
+                for container in CONTAINERS {
+                    for helped in 0..3 {
+                        let split = (vec![first, (at, container), last], helped);
+                        let got = outcome(&bytes, &options, Some(split));
+                        assert_eq!(
+                            got, expected,
+                            "{name}: pieces at {first:?}, {at} in {container:?}, {last:?}"
+                        );
+                    }
                 }
             }
         }
     }
 
     /// A change anywhere (a warning, an error, a repeated container, a limit) gives the
-    /// load of one thread, wherever the split.
+    /// load of one thread, however the text is cut.
     #[test]
     fn changed_files_load_as_one_thread_reads_them() {
         let mut state = 0x2545_f491_4f6c_dd1du64;
@@ -241,18 +459,18 @@ mod tests {
         };
         let strict = LoadOptions { strict: true, ..LoadOptions::default() };
         for (name, bytes) in crate::scene_files() {
-            let splits: Vec<_> = tags(&bytes)
-                .filter_map(|at| Some((at, item_after_its_twin(&bytes, at)?)))
-                .collect();
+            let twins = twins(&bytes);
             for _ in 0..200 {
                 let mut changed = bytes.clone();
                 let at = next(changed.len());
                 changed[at] = b"<>/\"x 1&-"[next(9)];
                 for options in [LoadOptions::default(), strict] {
                     let expected = outcome(&changed, &options, None);
-                    for &split in &splits {
-                        let got = outcome(&changed, &options, Some(split));
-                        assert_eq!(got, expected, "{name}, byte {at} changed, split at {split:?}");
+                    let mut splits: Vec<_> = twins.iter().map(|&twin| (vec![twin], 0)).collect();
+                    splits.extend([0, twins.len() / 2].map(|first| (twins.clone(), first)));
+                    for split in splits {
+                        let got = outcome(&changed, &options, Some(split.clone()));
+                        assert_eq!(got, expected, "{name}, byte {at} changed, pieces {split:?}");
                     }
                 }
             }
@@ -260,7 +478,7 @@ mod tests {
     }
 
     #[test]
-    fn what_the_second_thread_must_not_decide_is_left_to_the_first() {
+    fn what_the_helper_must_not_decide_is_left_to_the_calling_thread() {
         let bodies = "<Body Type=\"Static\"><Fixtures /></Body>\n".repeat(4);
         let scene = |before: &str, after: &str| {
             format!(
@@ -279,21 +497,78 @@ mod tests {
         for (case, text) in cases {
             let bytes = text.as_bytes();
             let count = bytes.iter().filter(|&&b| b == b'<').count() as u64;
+            let twins = twins(bytes);
             for max_elements in [count, count / 2, 3] {
                 let options = LoadOptions { max_elements, ..LoadOptions::default() };
                 let expected = outcome(bytes, &options, None);
                 for at in tags(bytes) {
-                    let got = outcome(bytes, &options, Some((at, WorldChild::Bodies)));
-                    assert_eq!(got, expected, "{case}, max {max_elements}, split at {at}");
+                    let got = outcome(bytes, &options, Some((vec![(at, WorldChild::Bodies)], 0)));
+                    assert_eq!(got, expected, "{case}, max {max_elements}, a piece from {at}");
+                }
+                for first in 0..=twins.len() {
+                    let got = outcome(bytes, &options, Some((twins.clone(), first)));
+                    assert_eq!(got, expected, "{case}, max {max_elements}, helped from {first}");
                 }
             }
         }
     }
 
-    /// The second thread is used where the assumption holds: given a text with one more
-    /// body after the split than the first parser's, the first parser ends with it.
+    /// A scene of more than [`MIN_BYTES`], cut where [`boundaries`] cuts it, loads on two
+    /// threads as on one however the two meet: the helper is given each piece from the
+    /// start, or left to the timing.
     #[test]
-    fn the_first_parser_takes_what_the_second_read() {
+    fn a_large_scene_loads_on_two_threads_as_on_one() {
+        let n = 6_000;
+        let mut text = String::from("<World Version=\"2\"><Gravity>0 -10</Gravity><Shapes>");
+        for i in 0..n {
+            text += &format!(
+                "<Shape Type=\"Circle\"><Radius>1.{i}</Radius><Position>0 0</Position></Shape>\n"
+            );
+        }
+        text += "</Shapes><Fixtures>";
+        for i in 0..n {
+            text += &format!("<Fixture><Shape>{i}</Shape><Density>{i}.5</Density></Fixture>\n");
+        }
+        text += "</Fixtures><Bodies>";
+        for i in 0..n {
+            text += &format!(
+                "<Body Type=\"Dynamic\"><Position>{i} 1</Position><Fixtures><ID>{i}</ID></Fixtures></Body>\n"
+            );
+        }
+        text += "</Bodies><Joints>";
+        for i in 1..n {
+            text += &format!(
+                "<Joint Type=\"Distance\"><BodyA>{}</BodyA><BodyB>{i}</BodyB><Length>2</Length></Joint>\n",
+                i - 1
+            );
+        }
+        text += "</Joints></World>";
+        let bytes = text.as_bytes();
+        assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
+        let pieces = boundaries(bytes);
+        assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
+        let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
+        for container in CONTAINERS {
+            assert!(containers.contains(&container), "no piece begins in {container:?}");
+        }
+        let options = LoadOptions::default();
+        let expected = outcome(bytes, &options, None);
+        assert!(expected.starts_with('{'), "{expected}");
+        for helped in 0..=pieces.len() {
+            let got = outcome(bytes, &options, Some((pieces.clone(), helped)));
+            assert_eq!(got, expected, "the helper's from piece {helped}");
+        }
+        for _ in 0..20 {
+            let source = Source::memory(bytes, &options).unwrap();
+            let got = super::super::parse(source, &options).map(|s| crate::dump::to_json(&s));
+            assert_eq!(got.unwrap(), expected);
+        }
+    }
+
+    /// The helper's pieces are used where the assumptions hold: given a text with one more
+    /// body at the end than the calling thread's, that thread ends with it.
+    #[test]
+    fn the_calling_thread_takes_what_the_helper_read() {
         let scene = |bodies: usize| {
             let body = "<Body Type=\"Dynamic\"><Fixtures /></Body>";
             format!(
@@ -302,16 +577,20 @@ mod tests {
             )
         };
         let (mine, theirs) = (scene(3), scene(4));
-        let at = mine.rfind("<Body ").unwrap();
+        let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
         let options = LoadOptions::default();
-        let mut parser = Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
-        let second = Source::memory(theirs.as_bytes(), &options).unwrap();
-        std::thread::scope(|scope| {
-            parser.ahead = start(scope, &second, &options, Some((at, WorldChild::Bodies)));
-            parser.document().unwrap();
-        });
-        assert_eq!(parser.scene.bodies.len(), 4);
-        assert_eq!(parser.elements, 4 + 4 * 2 + 1);
-        assert_eq!(parser.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
+        for first in 0..2 {
+            let mut parser =
+                Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
+            let second = Source::memory(theirs.as_bytes(), &options).unwrap();
+            let pieces = vec![(starts[1], WorldChild::Bodies), (starts[2], WorldChild::Bodies)];
+            std::thread::scope(|scope| {
+                parser.part = start(scope, &second, &options, Some((pieces, first)));
+                parser.document().unwrap();
+            });
+            assert_eq!(parser.scene.bodies.len(), 4, "helped from piece {first}");
+            assert_eq!(parser.elements, 4 + 4 * 2 + 1);
+            assert_eq!(parser.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
+        }
     }
 }

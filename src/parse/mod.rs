@@ -57,16 +57,16 @@ fn parse(source: Source<'_>, options: &LoadOptions) -> Result<Scene, Error> {
     parse_split(source, options, None)
 }
 
-/// [`parse`], with a second thread starting where `split` says, if anywhere.
+/// [`parse`], with the pieces and the helper's first one forced by `split` (for tests).
 fn parse_split(
     source: Source<'_>,
     options: &LoadOptions,
-    split: Option<(usize, world::WorldChild)>,
+    split: Option<(Vec<ahead::Boundary>, usize)>,
 ) -> Result<Scene, Error> {
     std::thread::scope(|scope| {
-        let ahead = ahead::start(scope, &source, options, split);
+        let part = ahead::start(scope, &source, options, split);
         let mut parser = Parser::new(source, options);
-        parser.ahead = ahead;
+        parser.part = part;
         finish(parser)
     })
 }
@@ -301,8 +301,8 @@ pub struct Parser<'a> {
     warnings: Vec<Problem>,
     /// Warnings past [`MAX_WARNINGS`]: how many, and where the first was.
     dropped_warnings: (u64, usize),
-    /// A second parser reading the rest of the file from an item on.
-    ahead: Option<ahead::Ahead<'a>>,
+    /// Its part in a load on two threads.
+    part: ahead::Part<'a>,
 }
 
 impl<'a> Parser<'a> {
@@ -321,7 +321,7 @@ impl<'a> Parser<'a> {
             origins: Origins::default(),
             warnings: Vec::new(),
             dropped_warnings: (0, 0),
-            ahead: None,
+            part: ahead::Part::Whole,
         }
     }
 

@@ -115,8 +115,8 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// The root's children up to `</World>`, or to the end of the file when a reader
-    /// ahead read the rest (see [`super::ahead`]).
+    /// The root's children up to `</World>`, or until this parser is done with the file
+    /// before an item (see [`super::ahead`]).
     pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
         while let Some(child) = self.child(root)? {
             let Some((name, repeated)) = self.known(root, &child, seen)? else {
@@ -139,7 +139,8 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// The items of a container; true when a reader ahead read the rest of the file.
+    /// The items of a container; true when this parser is done with the file before one
+    /// (see [`super::ahead`]).
     pub(super) fn container(
         &mut self,
         tag: &Tag,
