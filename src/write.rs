@@ -2,6 +2,7 @@
 //! scene: every float bit for bit, every name, every UserData text.
 #![forbid(unsafe_code)]
 
+use std::borrow::Cow;
 use std::fmt::Write as _;
 
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, NONE, Scene, Shape};
@@ -36,7 +37,7 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> String {
     let cut = match options.threads {
         1 => None,
         _ if text.size < MIN_BYTES_FOR_TWO_THREADS => None,
-        _ => half_way(&text.sizes, text.size),
+        _ => text.half_way(),
     };
     text.write(cut)
 }
@@ -44,32 +45,72 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> String {
 /// What a scene's text is made from.
 struct Text<'s> {
     scene: &'s Scene,
-    /// The joints written, gear references renumbered.
-    joints: Vec<Joint>,
+    /// The joints written, gear references renumbered (the scene's own when it has
+    /// none to leave out).
+    joints: Cow<'s, [Joint]>,
     all: bool,
     version: u32,
-    /// Per container, the estimated size of each item's text, and their sum.
-    sizes: [Vec<usize>; 4],
+    /// The estimated size of the whole text.
     size: usize,
 }
 
 impl<'s> Text<'s> {
     fn new(scene: &'s Scene, options: &WriteOptions) -> Text<'s> {
-        let renumbered = written_joint_indices(scene);
-        let joints: Vec<Joint> = scene
-            .joints()
-            .iter()
-            .filter(|j| j.kind() != Some(JointKind::Unsupported))
-            .map(|&j| Joint {
-                joint_a: renumber(&renumbered, j.joint_a),
-                joint_b: renumber(&renumbered, j.joint_b),
-                ..j
-            })
-            .collect();
-        let sizes = estimated_sizes(scene, &joints);
-        let size = sizes.iter().flatten().sum();
+        let unsupported = |j: &Joint| j.kind() == Some(JointKind::Unsupported);
+        let joints = match scene.joints().iter().any(unsupported) {
+            false => Cow::Borrowed(scene.joints()),
+            true => {
+                let renumbered = written_joint_indices(scene);
+                let written = scene.joints().iter().filter(|j| !unsupported(j));
+                Cow::Owned(
+                    written
+                        .map(|&j| Joint {
+                            joint_a: renumber(&renumbered, j.joint_a),
+                            joint_b: renumber(&renumbered, j.joint_b),
+                            ..j
+                        })
+                        .collect(),
+                )
+            }
+        };
         let version = if needs_version_2(scene) { 2 } else { 1 };
-        Text { scene, joints, all: options.all_fields, version, sizes, size }
+        let mut text = Text { scene, joints, all: options.all_fields, version, size: 0 };
+        text.size =
+            text.items().map(|(container, item)| text.estimated_size(container, item)).sum();
+        text
+    }
+
+    /// Every item, as (container, index).
+    fn items(&self) -> impl Iterator<Item = Place> + '_ {
+        let counts = counts(self.scene, &self.joints);
+        (0..4).flat_map(move |container| (0..counts[container]).map(move |item| (container, item)))
+    }
+
+    /// About how many bytes an item's text takes, from what is typical of the editor's
+    /// files: enough to cut the text in two parts of nearly the length wanted.
+    fn estimated_size(&self, container: usize, item: usize) -> usize {
+        match container {
+            0 => 100 + 40 * self.scene.shapes()[item].vertices.count as usize,
+            1 => 200,
+            2 => 300 + 30 * self.scene.bodies()[item].fixtures.count as usize,
+            _ => 270,
+        }
+    }
+
+    /// The item where the first thread's part of the estimated text ends, when it lies
+    /// inside a container (not at its first item), where two parts of the text can meet.
+    /// That part is a little more than half: the first thread also copies the second
+    /// thread's part after its own, into memory the system has not yet handed out (on the
+    /// 100 MB bench scene, writing takes about 2.4 ms a MB and that copy 0.4).
+    fn half_way(&self) -> Option<Place> {
+        let mut written = 0;
+        for (container, item) in self.items() {
+            if written >= self.size / 100 * 54 {
+                return (item > 0).then_some((container, item));
+            }
+            written += self.estimated_size(container, item);
+        }
+        None
     }
 
     fn writer(&self, depth: usize, capacity: usize) -> Writer<'_> {
@@ -115,33 +156,9 @@ const START: Place = (0, 0);
 const END: Place = (4, 0);
 const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
 
-/// About how many bytes each item of each container takes, from what is typical of the
-/// editor's files: enough to cut the text in two halves of nearly the same length.
-fn estimated_sizes(scene: &Scene, joints: &[Joint]) -> [Vec<usize>; 4] {
-    [
-        scene.shapes().iter().map(|s| 100 + 40 * s.vertices.count as usize).collect(),
-        vec![200; scene.fixtures().len()],
-        scene.bodies().iter().map(|b| 300 + 30 * b.fixtures.count as usize).collect(),
-        vec![270; joints.len()],
-    ]
-}
-
-/// The item where the first thread's part of the estimated text ends, when it lies
-/// inside a container (not at its first item), where two parts of the text can meet.
-/// That part is a little more than half: the first thread also copies the second
-/// thread's part after its own, into memory the system has not yet handed out (on the
-/// 100 MB bench scene, writing takes about 2.4 ms a MB and that copy 0.4).
-fn half_way(sizes: &[Vec<usize>; 4], total: usize) -> Option<Place> {
-    let mut written = 0;
-    for (container, items) in sizes.iter().enumerate() {
-        for (item, size) in items.iter().enumerate() {
-            if written >= total / 100 * 54 {
-                return (item > 0).then_some((container, item));
-            }
-            written += size;
-        }
-    }
-    None
+/// How many items each container holds, in the order they are written.
+fn counts(scene: &Scene, joints: &[Joint]) -> [usize; 4] {
+    [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), joints.len()]
 }
 
 /// Per joint, its index among the joints that are written.
@@ -376,8 +393,7 @@ impl Writer<'_> {
             }
         }
         let (scene, joints) = (self.scene, self.joints);
-        let counts =
-            [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), joints.len()];
+        let counts = counts(scene, joints);
         for (container, &count) in counts.iter().enumerate().take(to.0 + 1).skip(from.0) {
             let name = CONTAINERS[container];
             let first = if container == from.0 { from.1 } else { 0 };
@@ -824,8 +840,8 @@ mod tests {
                 let options = WriteOptions { all_fields, threads: 1 };
                 let expected = write(&scene, &options);
                 let text = Text::new(&scene, &options);
-                for (container, items) in text.sizes.iter().enumerate() {
-                    for item in 1..items.len() {
+                for (container, count) in counts(&scene, &text.joints).into_iter().enumerate() {
+                    for item in 1..count {
                         let cut = text.write(Some((container, item)));
                         assert_eq!(cut, expected, "{name} cut at {container}, {item}");
                     }
@@ -844,7 +860,7 @@ mod tests {
         let scene = crate::load(xml.as_bytes(), &crate::LoadOptions::default()).unwrap();
         let text = Text::new(&scene, &WriteOptions::default());
         assert!(text.size >= MIN_BYTES_FOR_TWO_THREADS, "{}", text.size);
-        assert_eq!(half_way(&text.sizes, text.size), Some((2, 2700)));
+        assert_eq!(text.half_way(), Some((2, 2700)));
         let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() });
         assert_eq!(write(&scene, &WriteOptions::default()), one);
         assert_eq!(

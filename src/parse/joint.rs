@@ -79,65 +79,62 @@ enum Slot {
     Ignored,
 }
 
-/// The slot of element `name` (from [`JOINT`]) in a joint of `kind`, if it has one.
-fn slot(kind: JointKind, name: &str) -> Option<Slot> {
+/// The slot of element `name` in a joint of `kind`, if it has one.
+fn slot(kind: JointKind, name: JointChild) -> Option<Slot> {
+    use JointChild::*;
     use JointKind::*;
     use Slot::*;
     let is = |kinds: &[JointKind]| kinds.contains(&kind);
     let anchored = !is(&[Gear, Motor, Unsupported]);
     let farseer_only = matches!(
         name,
-        "LocalAnchorA"
-            | "LocalAnchorB"
-            | "BiasFactor"
-            | "MaxImpulse"
-            | "Softness"
-            | "TargetAngle"
-            | "MinLength"
-            | "MaxLength"
-            | "FrequencyHz"
-            | "DampingRatio"
+        LocalAnchorA
+            | LocalAnchorB
+            | BiasFactor
+            | MaxImpulse
+            | Softness
+            | TargetAngle
+            | MinLength
+            | MaxLength
+            | FrequencyHz
+            | DampingRatio
     );
     Some(match name {
-        "Breakpoint" => Ignored,
+        Breakpoint => Ignored,
         _ if kind == Unsupported && farseer_only => Ignored,
-        "LocalAnchorA" if anchored => Vector(|j| &mut j.local_anchor_a),
-        "LocalAnchorB" if anchored => Vector(|j| &mut j.local_anchor_b),
-        "LocalAxisA" if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "LocalXAxis1" if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
-        "LocalXAxis" if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "Axis" if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        "ReferenceAngle" if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
-        "EnableLimit" if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
-        "LowerAngle" if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
-        "UpperAngle" if is(&[Revolute]) => Float(|j| &mut j.upper_limit),
-        "LowerTranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.lower_limit),
-        "UpperTranslation" if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
-        "EnableMotor" if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
-        "MotorSpeed" if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
-        "MaxMotorTorque" if is(&[Revolute, Wheel, Line]) => {
-            NonNegative(|j| &mut j.max_motor_torque)
-        }
-        "MaxMotorForce" if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
-        "Length" if is(&[Distance]) => NonNegative(|j| &mut j.length),
-        "FrequencyHz" if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
-        "DampingRatio" if is(&[Distance, Weld, Wheel, Line]) => {
-            NonNegative(|j| &mut j.damping_ratio)
-        }
-        "GroundAnchorA" | "WorldAnchorA" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
-        "GroundAnchorB" | "WorldAnchorB" if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
-        "Constant" if is(&[Pulley]) => Ignored,
-        "LengthA" if is(&[Pulley]) => Float(|j| &mut j.length_a),
-        "LengthB" if is(&[Pulley]) => Float(|j| &mut j.length_b),
-        "MaxLengthA" if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
-        "MaxLengthB" if is(&[Pulley]) => Float(|j| &mut j.max_length_b),
-        "Ratio" if is(&[Pulley, Gear]) => Float(|j| &mut j.ratio),
-        "MaxForce" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_force),
-        "MaxTorque" if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_torque),
-        "MaxLength" if is(&[Rope]) => NonNegative(|j| &mut j.max_length),
-        "LinearOffset" if is(&[Motor]) => Vector(|j| &mut j.linear_offset),
-        "AngularOffset" if is(&[Motor]) => Float(|j| &mut j.angular_offset),
-        "CorrectionFactor" if is(&[Motor]) => Float(|j| &mut j.correction_factor),
+        LocalAnchorA if anchored => Vector(|j| &mut j.local_anchor_a),
+        LocalAnchorB if anchored => Vector(|j| &mut j.local_anchor_b),
+        LocalAxisA if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        LocalXAxis1 if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
+        LocalXAxis if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        Axis if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
+        ReferenceAngle if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
+        EnableLimit if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
+        LowerAngle if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
+        UpperAngle if is(&[Revolute]) => Float(|j| &mut j.upper_limit),
+        LowerTranslation if is(&[Prismatic, Line]) => Float(|j| &mut j.lower_limit),
+        UpperTranslation if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
+        EnableMotor if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
+        MotorSpeed if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
+        MaxMotorTorque if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
+        MaxMotorForce if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
+        Length if is(&[Distance]) => NonNegative(|j| &mut j.length),
+        FrequencyHz if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
+        DampingRatio if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
+        GroundAnchorA | WorldAnchorA if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
+        GroundAnchorB | WorldAnchorB if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
+        Constant if is(&[Pulley]) => Ignored,
+        LengthA if is(&[Pulley]) => Float(|j| &mut j.length_a),
+        LengthB if is(&[Pulley]) => Float(|j| &mut j.length_b),
+        MaxLengthA if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
+        MaxLengthB if is(&[Pulley]) => Float(|j| &mut j.max_length_b),
+        Ratio if is(&[Pulley, Gear]) => Float(|j| &mut j.ratio),
+        MaxForce if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_force),
+        MaxTorque if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_torque),
+        MaxLength if is(&[Rope]) => NonNegative(|j| &mut j.max_length),
+        LinearOffset if is(&[Motor]) => Vector(|j| &mut j.linear_offset),
+        AngularOffset if is(&[Motor]) => Float(|j| &mut j.angular_offset),
+        CorrectionFactor if is(&[Motor]) => Float(|j| &mut j.correction_factor),
         _ => return None,
     })
 }
@@ -165,8 +162,9 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
         true => Ok(v),
         false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
     };
-    for name in JointChild::ALL.iter().map(|element| element.name()) {
-        match slot(kind, name) {
+    for &element in JointChild::ALL {
+        let name = element.name();
+        match slot(kind, element) {
             Some(Slot::Vector(field)) => {
                 let v = *field(&mut source);
                 *field(&mut joint) = Vec2::new(finite(name, v.x)?, finite(name, v.y)?);
@@ -211,16 +209,14 @@ impl<'a> Parser<'a> {
             JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
-            let Some((element, repeated)) = self.known::<JointChild>(&tag, &child, &mut seen)?
-            else {
+            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
-            let name = element.name();
+            use JointChild::*;
             let legacy = self.version == 0;
-            let common =
-                matches!(name, "Name" | "UserData" | "BodyA" | "BodyB" | "CollideConnected");
+            let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected);
             let named_joint =
-                matches!(name, "JointA" | "JointB") && (legacy || kind == JointKind::Gear);
+                matches!(name, JointA | JointB) && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
             if !common && !named_joint && slot.is_none() {
                 let message =
@@ -232,20 +228,20 @@ impl<'a> Parser<'a> {
             if repeated {
                 self.duplicate(&tag, &child)?;
             }
-            if kind == JointKind::Weld && matches!(name, "FrequencyHz" | "DampingRatio") {
+            if kind == JointKind::Weld && matches!(name, FrequencyHz | DampingRatio) {
                 self.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
-                "Name" => joint.name = self.string(&child)?,
-                "UserData" => joint.user_data = self.user_data(&child)?,
-                "CollideConnected" => joint.collide_connected = self.boolean(&child)?,
-                "BodyA" => (joint.body_a, at.body_a) = self.id(&child)?,
-                "BodyB" => (joint.body_b, at.body_b) = self.id(&child)?,
+                Name => joint.name = self.string(&child)?,
+                UserData => joint.user_data = self.user_data(&child)?,
+                CollideConnected => joint.collide_connected = self.boolean(&child)?,
+                BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
+                BodyB => (joint.body_b, at.body_b) = self.id(&child)?,
                 // Legacy files name the bodies JointA and JointB.
-                "JointA" if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
-                "JointB" if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
-                "JointA" => (joint.joint_a, at.joint_a) = self.id(&child)?,
-                "JointB" => (joint.joint_b, at.joint_b) = self.id(&child)?,
+                JointA if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
+                JointB if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
+                JointA => (joint.joint_a, at.joint_a) = self.id(&child)?,
+                JointB => (joint.joint_b, at.joint_b) = self.id(&child)?,
                 _ => match slot.expect("elements without a slot were skipped above") {
                     Slot::Vector(field) => *field(&mut joint) = self.vector(&child)?,
                     Slot::Float(field) => *field(&mut joint) = self.float(&child)?,

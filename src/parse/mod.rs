@@ -425,8 +425,13 @@ impl<'a> Parser<'a> {
         self.pos += text::leading_space(self.rest(self.pos));
     }
 
+    /// A node begins at `at`: the one before it stays at hand (see [`Parser::started`]).
+    fn begin_node(&mut self, at: usize) {
+        (self.last, self.started) = (self.started, at);
+    }
+
     fn next_node(&mut self) -> Parsed<Node> {
-        (self.last, self.started) = (self.started, self.pos);
+        self.begin_node(self.pos);
         loop {
             let at = self.pos;
             let second = match *self.rest(at) {
@@ -531,7 +536,7 @@ impl<'a> Parser<'a> {
         let at = self.pos;
         let closed = self.usual_end_tag(at);
         if closed {
-            (self.last, self.started) = (self.started, at);
+            self.begin_node(at);
         }
         closed
     }
@@ -708,7 +713,7 @@ impl<'a> Parser<'a> {
         }
         self.skip_space();
         if let Some(tag) = self.short_tag(self.pos) {
-            (self.last, self.started) = (self.started, tag.at);
+            self.begin_node(tag.at);
             self.opened(&tag)?;
             return Ok(Some(tag));
         }
