@@ -13,7 +13,8 @@ use std::path::Path;
 use crate::error::{Code, Diagnostic, Error, Position};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
 use crate::scene::{NONE, UserData, Vec2};
-use crate::{Builder, LoadOptions, WriteOptions, load, load_path, write, write_path};
+use crate::write::write_utf8;
+use crate::{Builder, LoadOptions, WriteOptions, load, load_path, write_path};
 
 // SAFETY: a `Str` points into the string pool of the scene that holds it, which is never
 // mutated after the scene is frozen; sharing or sending it is sharing immutable bytes.
@@ -409,7 +410,7 @@ pub unsafe extern "C" fn b2s_write_memory(
         *out = std::ptr::null_mut();
         // SAFETY: by the caller's contract.
         let (scene, options) = unsafe { scene_and_options(scene, options)? };
-        let text = CString::new(write(scene, &options))
+        let text = CString::new(write_utf8(scene, &options))
             .map_err(|_| simple_error(Code::Internal, "the written text holds a NUL byte"))?;
         // SAFETY: by the caller's contract.
         if let Some(size) = unsafe { out_size.as_mut() } {

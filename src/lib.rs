@@ -107,7 +107,7 @@ pub fn write_path(
     options: &WriteOptions,
 ) -> Result<(), Error> {
     let path = path.as_ref();
-    std::fs::write(path, write(scene, options)).map_err(|e| Error {
+    std::fs::write(path, write::write_utf8(scene, options)).map_err(|e| Error {
         code: Code::Io,
         position: Position::default(),
         message: format!("cannot write {}: {e}", path.display()),

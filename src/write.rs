@@ -33,13 +33,28 @@ pub fn joints_not_written(scene: &Scene) -> Vec<u32> {
 /// constructs, else `Version="2"`. Farseer-only joints are left out (see
 /// [`joints_not_written`]) and gear joints' references renumbered to match.
 pub fn write(scene: &Scene, options: &WriteOptions) -> String {
+    String::from_utf8(write_utf8(scene, options)).expect("the text is written from str pieces")
+}
+
+/// [`write`]'s text, as the bytes it is made of (for the C text and files, which need
+/// no `String`).
+pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Vec<u8> {
     let text = Text::new(scene, options);
     let cut = match options.threads {
         1 => None,
         _ if text.size < MIN_BYTES_FOR_TWO_THREADS => None,
         _ => text.half_way(),
     };
-    text.write(cut)
+    match cut {
+        Some((cut, before)) => text.write(Some(cut), [room(before), room(text.size - before)]),
+        None => text.write(None, [room(text.size), 0]),
+    }
+}
+
+/// The room given to a part of the text estimated at `size` bytes: estimates are of
+/// typical files, and a part that outgrows its room goes on in memory of its own.
+fn room(size: usize) -> usize {
+    size + size / 8 + 4096
 }
 
 /// What a scene's text is made from.
@@ -97,53 +112,106 @@ impl<'s> Text<'s> {
         }
     }
 
-    /// The item where the first thread's part of the estimated text ends, when it lies
-    /// inside a container (not at its first item), where two parts of the text can meet.
-    /// That part is a little more than half: the first thread also copies the second
-    /// thread's part after its own, into memory the system has not yet handed out (on the
-    /// 100 MB bench scene, writing takes about 2.4 ms a MB and that copy 0.4).
-    fn half_way(&self) -> Option<Place> {
+    /// The item where half of the estimated text is written, when it lies inside a
+    /// container (not at its first item), where two parts of the text can meet; with the
+    /// estimated size of the text before it.
+    fn half_way(&self) -> Option<(Place, usize)> {
         let mut written = 0;
         for (container, item) in self.items() {
-            if written >= self.size / 100 * 54 {
-                return (item > 0).then_some((container, item));
+            if written >= self.size / 2 {
+                return (item > 0).then_some(((container, item), written));
             }
             written += self.estimated_size(container, item);
         }
         None
     }
 
-    fn writer(&self, depth: usize, capacity: usize) -> Writer<'_> {
-        Writer {
-            out: String::with_capacity(capacity),
-            depth,
+    /// The whole text, on one thread or, given a place to cut it, on two. The parts are
+    /// written into two regions of one buffer, `rooms` bytes long, so the second needs no
+    /// copy into memory the system has yet to hand out (a third of a large write): once
+    /// both are done, it moves down to meet the first.
+    fn write(&self, cut: Option<Place>, rooms: [usize; 2]) -> Vec<u8> {
+        let mut buffer = vec![0; rooms[0] + rooms[1]];
+        let (first, second) = buffer.split_at_mut(rooms[0]);
+        let (first, second) = match cut {
+            None => (self.part(first, START, END), Written::default()),
+            Some(cut) => std::thread::scope(|threads| {
+                let second = threads.spawn(|| self.part(second, cut, END));
+                let first = self.part(first, START, cut);
+                let second = second.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+                (first, second)
+            }),
+        };
+        joined(buffer, rooms[0], first, second)
+    }
+
+    /// The text from place `from` to place `to`, written into `room`.
+    fn part(&self, room: &mut [u8], from: Place, to: Place) -> Written {
+        let mut writer = Writer {
+            out: Out { room, written: Written::default() },
+            depth: if from == START { 0 } else { 2 },
             scene: self.scene,
             joints: &self.joints,
             all: self.all,
             version: self.version,
+        };
+        writer.part(from, to);
+        writer.out.written
+    }
+}
+
+/// What a part of the text wrote: `len` bytes into its room, then whatever did not fit.
+#[derive(Default)]
+struct Written {
+    len: usize,
+    more: Vec<u8>,
+}
+
+/// A part of the text, written into its room of the buffer and on into memory of its own
+/// once that is full.
+struct Out<'b> {
+    room: &'b mut [u8],
+    written: Written,
+}
+
+impl Out<'_> {
+    fn push_str(&mut self, text: &str) {
+        let end = self.written.len + text.len();
+        match self.room.get_mut(self.written.len..end) {
+            Some(free) => {
+                free.copy_from_slice(text.as_bytes());
+                self.written.len = end;
+            }
+            None => {
+                // Full: everything from here on follows in order in `more`.
+                self.room = &mut [];
+                self.written.more.extend_from_slice(text.as_bytes());
+            }
         }
     }
+}
 
-    /// The whole text, on one thread or, given a place to cut it, on two.
-    fn write(&self, cut: Option<Place>) -> String {
-        let Some(cut) = cut else {
-            let mut w = self.writer(0, self.size);
-            w.part(START, END);
-            return w.out;
-        };
-        std::thread::scope(|threads| {
-            let second = threads.spawn(|| {
-                let mut w = self.writer(2, 0);
-                w.part(cut, END);
-                w.out
-            });
-            let mut w = self.writer(0, self.size + self.size / 8);
-            w.part(START, cut);
-            let second = second.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-            w.out.push_str(&second);
-            w.out
-        })
+impl std::fmt::Write for Out<'_> {
+    fn write_str(&mut self, text: &str) -> std::fmt::Result {
+        self.push_str(text);
+        Ok(())
     }
+}
+
+/// The text of two parts written into `buffer`, the second from `second_at` on: the
+/// second moved down to follow the first, unless the first outgrew its room.
+fn joined(mut buffer: Vec<u8>, second_at: usize, first: Written, second: Written) -> Vec<u8> {
+    if first.more.is_empty() {
+        buffer.copy_within(second_at..second_at + second.len, first.len);
+        buffer.truncate(first.len + second.len);
+    } else {
+        let second_text = buffer[second_at..second_at + second.len].to_vec();
+        buffer.truncate(first.len);
+        buffer.extend_from_slice(&first.more);
+        buffer.extend_from_slice(&second_text);
+    }
+    buffer.extend_from_slice(&second.more);
+    buffer
 }
 
 /// The smallest text worth a second thread.
@@ -196,16 +264,16 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
 /// decimals for ordinary magnitudes, an exponent for tiny and huge ones (as .NET wrote
 /// `8.369571E-36`). That is the text `Display` gives for the first and `{:e}` for the
 /// others, laid out from ryu's shortest digits, which cost a fraction of `core::fmt`'s.
-fn push_float(out: &mut String, value: f32) {
+fn push_float(out: &mut Out, value: f32) {
     if !value.is_finite() {
         let _ = write!(out, "{value}");
         return;
     }
     if value.is_sign_negative() {
-        out.push('-');
+        out.push_str("-");
     }
     if value == 0.0 {
-        out.push('0');
+        out.push_str("0");
         return;
     }
     let mut buffer = ryu::Buffer::new();
@@ -231,17 +299,17 @@ fn push_float(out: &mut String, value: f32) {
         let (first, rest) = digits.split_at(1);
         out.push_str(first);
         if !rest.is_empty() {
-            out.push('.');
+            out.push_str(".");
             out.push_str(rest);
         }
-        out.push('e');
+        out.push_str("e");
         out.push_str(integer_text(i64::from(point - 1), &mut [0; 20]));
     }
 }
 
-fn push_zeros(out: &mut String, count: i32) {
+fn push_zeros(out: &mut Out, count: i32) {
     for _ in 0..count {
-        out.push('0');
+        out.push_str("0");
     }
 }
 
@@ -351,15 +419,15 @@ impl Shortest {
 /// would change on reading (carriage returns) as character references.
 pub(crate) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
-    push_escaped(&mut out, text);
+    escaped(text, |piece| out.push_str(piece));
     out
 }
 
-/// Appends [`escape`] of `text` to `out`.
-fn push_escaped(out: &mut String, mut text: &str) {
+/// [`escape`] of `text`, as the pieces to append in turn.
+fn escaped(mut text: &str, mut push: impl FnMut(&str)) {
     while let Some(at) = text.find(['&', '<', '>', '"', '\r']) {
-        out.push_str(&text[..at]);
-        out.push_str(match text.as_bytes()[at] {
+        push(&text[..at]);
+        push(match text.as_bytes()[at] {
             b'&' => "&amp;",
             b'<' => "&lt;",
             b'>' => "&gt;",
@@ -368,11 +436,11 @@ fn push_escaped(out: &mut String, mut text: &str) {
         });
         text = &text[at + 1..];
     }
-    out.push_str(text);
+    push(text);
 }
 
-struct Writer<'s> {
-    out: String,
+struct Writer<'s, 'b> {
+    out: Out<'b>,
     depth: usize,
     scene: &'s Scene,
     /// The joints written, gear references renumbered.
@@ -381,7 +449,7 @@ struct Writer<'s> {
     version: u32,
 }
 
-impl Writer<'_> {
+impl Writer<'_, '_> {
     /// The text from place `from` to place `to`, with the start and end tags of the world
     /// and of the containers that begin or end between them.
     fn part(&mut self, from: Place, to: Place) {
@@ -444,9 +512,9 @@ impl Writer<'_> {
         });
     }
 
-    fn open_with(&mut self, name: &str, attributes: impl FnOnce(&mut String)) {
+    fn open_with(&mut self, name: &str, attributes: impl FnOnce(&mut Out<'_>)) {
         self.indent();
-        self.out.push('<');
+        self.out.push_str("<");
         self.out.push_str(name);
         attributes(&mut self.out);
         self.out.push_str(">\n");
@@ -473,7 +541,7 @@ impl Writer<'_> {
     }
 
     /// `<name>text</name>` on its own line, `text` written straight into the output.
-    fn element_with(&mut self, name: &str, text: impl FnOnce(&mut String)) {
+    fn element_with(&mut self, name: &str, text: impl FnOnce(&mut Out<'_>)) {
         self.indent();
         for piece in ["<", name, ">"] {
             self.out.push_str(piece);
@@ -487,7 +555,7 @@ impl Writer<'_> {
     fn vector(&mut self, name: &str, v: Vec2) {
         self.element_with(name, |out| {
             push_float(out, v.x);
-            out.push(' ');
+            out.push_str(" ");
             push_float(out, v.y);
         });
     }
@@ -495,7 +563,9 @@ impl Writer<'_> {
     fn name(&mut self, name: Str) {
         match self.scene.text(name) {
             Some("") => self.element("Name", ""),
-            Some(text) => self.element_with("Name", |out| push_escaped(out, text)),
+            Some(text) => {
+                self.element_with("Name", |out| escaped(text, |piece| out.push_str(piece)))
+            }
             None => {}
         }
     }
@@ -763,9 +833,11 @@ mod tests {
     use super::*;
 
     fn float_text(value: f32) -> String {
-        let mut text = String::new();
-        push_float(&mut text, value);
-        text
+        let mut room = [0; 64];
+        let mut out = Out { room: &mut room, written: Written::default() };
+        push_float(&mut out, value);
+        let len = out.written.len;
+        String::from_utf8(room[..len].to_vec()).unwrap()
     }
 
     #[test]
@@ -832,6 +904,25 @@ mod tests {
         });
     }
 
+    /// Rooms that each part fills to the end, falls short of in the middle of a piece,
+    /// or has plenty of, for a text of `len` bytes.
+    fn rooms(len: usize) -> [[usize; 2]; 5] {
+        [[0, 0], [len, 0], [0, len], [len / 3, len / 5 + 1], [room(len), room(len)]]
+    }
+
+    #[test]
+    fn a_text_in_any_room_is_the_text_written_with_room_to_spare() {
+        for (name, bytes) in crate::scene_files() {
+            let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
+            let options = WriteOptions { threads: 1, ..WriteOptions::default() };
+            let text = Text::new(&scene, &options);
+            let expected = write(&scene, &options);
+            for rooms in rooms(expected.len()) {
+                assert_eq!(text.write(None, rooms), expected.as_bytes(), "{name} in {rooms:?}");
+            }
+        }
+    }
+
     #[test]
     fn a_text_cut_anywhere_is_the_text_of_one_thread() {
         for (name, bytes) in crate::scene_files() {
@@ -842,8 +933,11 @@ mod tests {
                 let text = Text::new(&scene, &options);
                 for (container, count) in counts(&scene, &text.joints).into_iter().enumerate() {
                     for item in 1..count {
-                        let cut = text.write(Some((container, item)));
-                        assert_eq!(cut, expected, "{name} cut at {container}, {item}");
+                        for rooms in rooms(expected.len()) {
+                            let cut = text.write(Some((container, item)), rooms);
+                            let place = format!("{name} cut at {container}, {item} in {rooms:?}");
+                            assert_eq!(cut, expected.as_bytes(), "{place}");
+                        }
                     }
                 }
             }
@@ -860,7 +954,7 @@ mod tests {
         let scene = crate::load(xml.as_bytes(), &crate::LoadOptions::default()).unwrap();
         let text = Text::new(&scene, &WriteOptions::default());
         assert!(text.size >= MIN_BYTES_FOR_TWO_THREADS, "{}", text.size);
-        assert_eq!(text.half_way(), Some((2, 2700)));
+        assert_eq!(text.half_way(), Some(((2, 2500), 2500 * 300)));
         let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() });
         assert_eq!(write(&scene, &WriteOptions::default()), one);
         assert_eq!(
