@@ -277,11 +277,19 @@ fn push_float(out: &mut Out, value: f32) {
         return;
     }
     let mut buffer = ryu::Buffer::new();
-    let mut shortest = Shortest::of(buffer.format_finite(value.abs()));
+    let text = buffer.format_finite(value.abs());
+    let plain = (1e-5..1e16).contains(&value.abs());
+    if plain && !text.contains('e') && !may_be_a_tie(value.abs()) {
+        // Most values: ryu's own layout is the one wanted, but for its `.0` on whole
+        // numbers.
+        out.push_str(text.strip_suffix(".0").unwrap_or(text));
+        return;
+    }
+    let mut shortest = Shortest::of(text);
     shortest.break_ties_upwards(value.abs());
     let digits = shortest.digits();
     let point = shortest.point;
-    if (1e-5..1e16).contains(&value.abs()) {
+    if plain {
         if point <= 0 {
             out.push_str("0.");
             push_zeros(out, -point);
@@ -332,6 +340,24 @@ fn integer_text(value: i64, buffer: &mut [u8; 20]) -> &str {
     std::str::from_utf8(&buffer[at..]).unwrap_or_default()
 }
 
+/// A positive float as m x 2^e.
+fn binary(value: f32) -> (u128, i32) {
+    let bits = value.to_bits();
+    let (fraction, biased) = (u128::from(bits & 0x7f_ffff), (bits >> 23) & 0xff);
+    match biased {
+        0 => (fraction, -149),
+        _ => (fraction | 1 << 23, biased as i32 - 150),
+    }
+}
+
+/// Whether a positive float could lie half way between two texts of its shortest
+/// length. A tie has at most 10 digits, so its exact value is a fraction over at most
+/// 2^14 (5^k digits need 2^k below them).
+fn may_be_a_tie(value: f32) -> bool {
+    let (m, e) = binary(value);
+    -e - m.trailing_zeros() as i32 <= 14
+}
+
 /// A positive float's shortest digits, without leading or trailing zeros, and where
 /// its decimal point goes: the value is 0.`digits` x 10^`point`.
 struct Shortest {
@@ -378,19 +404,13 @@ impl Shortest {
     }
 
     /// Whether `value` lies exactly half way between these digits and the next ones
-    /// up, compared as integers: m x 2^e against (10 x digits + 5) x 10^q. A tie has
-    /// at most 10 digits, so its exact value is a fraction over at most 2^14 (5^k
-    /// digits need 2^k below them), and where a side overflows u128 the two differ.
+    /// up, compared as integers: m x 2^e against (10 x digits + 5) x 10^q. Where a side
+    /// overflows u128 the two differ.
     fn is_just_below_half_way(&self, value: f32) -> bool {
-        let bits = value.to_bits();
-        let (fraction, biased) = (u128::from(bits & 0x7f_ffff), (bits >> 23) & 0xff);
-        let (m, e) = match biased {
-            0 => (fraction, -149),
-            _ => (fraction | 1 << 23, biased as i32 - 150),
-        };
-        if -e - m.trailing_zeros() as i32 > 14 {
+        if !may_be_a_tie(value) {
             return false;
         }
+        let (m, e) = binary(value);
         let digits = self.digits().bytes().fold(0u128, |n, d| n * 10 + u128::from(d - b'0'));
         let q = self.point - self.len as i32 - 1;
         let times = |n: u128, base: u128, power: i32| {
