@@ -24,24 +24,6 @@ mod text;
 mod validate;
 mod write;
 
-/// The project's scene files and the editor's (tests/scenes, tests/data/corpus): names
-/// and bytes, for the unit tests.
-#[cfg(test)]
-fn scene_files() -> Vec<(String, Vec<u8>)> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut files = Vec::new();
-    for dir in ["tests/scenes", "tests/data/corpus"] {
-        for entry in std::fs::read_dir(root.join(dir)).unwrap() {
-            let path = entry.unwrap().path();
-            if path.extension().is_some_and(|e| e == "xml") {
-                files.push((path.display().to_string(), std::fs::read(&path).unwrap()));
-            }
-        }
-    }
-    assert!(files.len() >= 9, "the scene files are missing");
-    files
-}
-
 use std::path::Path;
 
 pub use builder::Builder;
@@ -125,4 +107,22 @@ impl Scene {
     pub fn to_json(&self) -> String {
         dump::to_json(self)
     }
+}
+
+/// The project's scene files and the editor's (tests/scenes, tests/data/corpus): names
+/// and bytes, for the unit tests.
+#[cfg(test)]
+fn scene_files() -> Vec<(String, Vec<u8>)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = Vec::new();
+    for dir in ["tests/scenes", "tests/data/corpus"] {
+        for entry in std::fs::read_dir(root.join(dir)).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "xml") {
+                files.push((path.display().to_string(), std::fs::read(&path).unwrap()));
+            }
+        }
+    }
+    assert!(files.len() >= 9, "the scene files are missing");
+    files
 }

@@ -24,9 +24,12 @@ pub struct WriteOptions {
 
 /// The joints [`write`] leaves out: Farseer-only joints, which have no Box2Scene form.
 pub fn joints_not_written(scene: &Scene) -> Vec<u32> {
-    (0..scene.joints().len() as u32)
-        .filter(|&i| scene.joints()[i as usize].kind() == Some(JointKind::Unsupported))
-        .collect()
+    (0..scene.joints().len() as u32).filter(|&i| !is_written(&scene.joints()[i as usize])).collect()
+}
+
+/// Whether a joint has a Box2Scene form.
+fn is_written(joint: &Joint) -> bool {
+    joint.kind() != Some(JointKind::Unsupported)
 }
 
 /// Writes `scene` as a Box2Scene file: `Version="1"` when it uses only Version 1
@@ -71,12 +74,11 @@ struct Text<'s> {
 
 impl<'s> Text<'s> {
     fn new(scene: &'s Scene, options: &WriteOptions) -> Text<'s> {
-        let unsupported = |j: &Joint| j.kind() == Some(JointKind::Unsupported);
-        let joints = match scene.joints().iter().any(unsupported) {
-            false => Cow::Borrowed(scene.joints()),
-            true => {
+        let joints = match scene.joints().iter().all(is_written) {
+            true => Cow::Borrowed(scene.joints()),
+            false => {
                 let renumbered = written_joint_indices(scene);
-                let written = scene.joints().iter().filter(|j| !unsupported(j));
+                let written = scene.joints().iter().filter(|j| is_written(j));
                 Cow::Owned(
                     written
                         .map(|&j| Joint {
@@ -237,7 +239,7 @@ fn written_joint_indices(scene: &Scene) -> Vec<u32> {
         .iter()
         .map(|j| {
             let index = next;
-            next += u32::from(j.kind() != Some(JointKind::Unsupported));
+            next += u32::from(is_written(j));
             index
         })
         .collect()
