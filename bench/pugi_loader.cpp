@@ -467,7 +467,8 @@ private:
             }
             scene_.fixture_ids.push_back(id(child));
         });
-        return b2s_range{first, static_cast<uint32_t>(scene_.fixture_ids.size()) - first};
+        uint32_t count = static_cast<uint32_t>(scene_.fixture_ids.size()) - first;
+        return count == 0 ? b2s_range{0, 0} : b2s_range{first, count};
     }
 
     void joint(xml_node node) {

@@ -409,7 +409,8 @@ typedef struct b2s_vec2 {
 #define b2s_vec2_ZERO (b2s_vec2){ .x = 0.0, .y = 0.0 }
 
 /**
- * A run of `count` consecutive items of a pool, starting at index `first`.
+ * A run of `count` consecutive items of a pool, starting at index `first`. An empty run
+ * is always `{0, 0}`, however the scene was made.
  */
 typedef struct b2s_range {
   uint32_t first;

@@ -135,14 +135,11 @@ impl Builder {
         let index = self.scene.shapes.len();
         let canonical =
             self.check_shape(shape, vertices).map_err(|e| refused("shape", index, e))?;
-        let first = self.scene.vertices.len() as u32;
+        let first = self.scene.vertices.len();
         self.scene.vertices.extend_from_slice(vertices);
+        let vertices = Range::between(first, self.scene.vertices.len());
         let name = self.name(name);
-        self.scene.shapes.push(Shape {
-            name,
-            vertices: Range { first, count: vertices.len() as u32 },
-            ..canonical
-        });
+        self.scene.shapes.push(Shape { name, vertices, ..canonical });
         Ok(index as u32)
     }
 
@@ -240,11 +237,11 @@ impl Builder {
     ) -> Result<u32, Error> {
         let index = self.scene.bodies.len();
         let canonical = self.check_body(body, fixtures).map_err(|e| refused("body", index, e))?;
-        let first = self.scene.fixture_ids.len() as u32;
+        let first = self.scene.fixture_ids.len();
         self.scene.fixture_ids.extend_from_slice(fixtures);
+        let fixtures = Range::between(first, self.scene.fixture_ids.len());
         let name = self.name(name);
-        let canonical =
-            Body { name, fixtures: Range { first, count: fixtures.len() as u32 }, ..canonical };
+        let canonical = Body { name, fixtures, ..canonical };
         self.scene.bodies.push(canonical);
         if let Some(message) =
             validate::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)

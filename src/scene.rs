@@ -31,7 +31,8 @@ impl Vec2 {
     }
 }
 
-/// A run of `count` consecutive items of a pool, starting at index `first`.
+/// A run of `count` consecutive items of a pool, starting at index `first`. An empty run
+/// is always `{0, 0}`, however the scene was made.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Range {
@@ -40,6 +41,19 @@ pub struct Range {
 }
 
 impl Range {
+    /// The items of a pool from index `first` up to `end`.
+    pub(crate) fn between(first: usize, end: usize) -> Range {
+        if first == end {
+            return Range::default();
+        }
+        Range { first: first as u32, count: (end - first) as u32 }
+    }
+
+    /// The same items after `before` more were put at the start of their pool.
+    pub(crate) fn shifted(self, before: usize) -> Range {
+        Range::between(self.first as usize + before, self.indices().end + before)
+    }
+
     /// The pool indices this range covers.
     pub fn indices(self) -> std::ops::Range<usize> {
         self.first as usize..self.first as usize + self.count as usize
@@ -606,14 +620,13 @@ impl SceneBuilder {
         } = other;
         let strings_before = self.strings.len();
         let name = |s: Str| s.shifted(strings_before);
-        let range = |r: Range, before: usize| Range { first: r.first + before as u32, ..r };
         let user_data_before = self.user_data.len() as u32;
         let user = |index: u32| if index == NONE { NONE } else { index + user_data_before };
         let (vertices_before, ids_before) = (self.vertices.len(), self.fixture_ids.len());
         self.gravity = self.gravity.or(gravity);
         self.shapes.extend(shapes.into_iter().map(|s| Shape {
             name: name(s.name),
-            vertices: range(s.vertices, vertices_before),
+            vertices: s.vertices.shifted(vertices_before),
             ..s
         }));
         self.fixtures.extend(fixtures.into_iter().map(|f| Fixture {
@@ -623,7 +636,7 @@ impl SceneBuilder {
         }));
         self.bodies.extend(bodies.into_iter().map(|b| Body {
             name: name(b.name),
-            fixtures: range(b.fixtures, ids_before),
+            fixtures: b.fixtures.shifted(ids_before),
             user_data: user(b.user_data),
             ..b
         }));

@@ -5,17 +5,10 @@
 mod common;
 
 use box2scene::{
-    Body, BodyKind, Builder, Code, Fixture, Joint, JointKind, LoadOptions, NONE, Scene, Shape,
-    ShapeKind, Vec2, WriteOptions, load, load_path, write,
+    Body, BodyKind, Builder, Code, Fixture, Joint, JointKind, LoadOptions, NONE, Range, Scene,
+    Shape, ShapeKind, Vec2, WriteOptions, load, load_path, write,
 };
-use common::{Random, generate};
-
-/// Everything but the version and the diagnostics (as in tests/roundtrip.rs).
-fn content(scene: &Scene) -> String {
-    let json = scene.to_json();
-    let body = json.split_once("\n  \"gravity\"").unwrap().1;
-    body.split_once("\n  \"diagnostics\"").unwrap().0.to_string()
-}
+use common::{Random, content, generate};
 
 /// Adds every object of `scene` to a new builder, as a host copying it would.
 fn rebuild(scene: &Scene) -> Scene {
@@ -258,6 +251,7 @@ fn additions_are_made_canonical() {
         (Some("System.String"), Some("a < b"))
     );
     assert_eq!(scene.joints()[0].user_data, NONE);
+    assert_eq!(scene.bodies()[2].fixtures, Range { first: 0, count: 0 }, "an empty range");
 }
 
 #[test]

@@ -6,7 +6,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use common::{Random, generate};
+use common::{Random, content, generate};
 
 use box2scene::{
     JointKind, LoadOptions, Scene, WriteOptions, joints_not_written, load, load_path, write,
@@ -14,14 +14,6 @@ use box2scene::{
 
 const MODES: [WriteOptions; 2] =
     [WriteOptions { all_fields: false, threads: 0 }, WriteOptions { all_fields: true, threads: 0 }];
-
-/// Everything a scene holds, bit for bit (the dump's floats are shortest round-trip text),
-/// except what describes the file rather than the scene: its version and its warnings.
-fn content(scene: &Scene) -> String {
-    let json = scene.to_json();
-    let body = json.split_once("\n  \"gravity\"").unwrap().1;
-    body.split_once("\n  \"diagnostics\"").unwrap().0.to_string()
-}
 
 fn load_text(xml: &str) -> Scene {
     load(xml.as_bytes(), &LoadOptions::default()).unwrap_or_else(|e| panic!("{e}\nin:\n{xml}"))

@@ -8,7 +8,9 @@
 
 use std::path::{Path, PathBuf};
 
-use box2scene::{BodyKind, Code, JointKind, LoadOptions, Scene, ShapeKind, Vec2, load, load_path};
+use box2scene::{
+    BodyKind, Code, JointKind, LoadOptions, Range, Scene, ShapeKind, Vec2, load, load_path,
+};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -232,6 +234,24 @@ fn names_and_enumerations_are_case_insensitive() {
         let scene = load(recased.as_bytes(), &LoadOptions::default()).unwrap();
         assert_eq!(scene.to_json(), expected);
     }
+}
+
+/// Circles and bodies without fixtures have nothing in their pools: `{0, 0}`, wherever in
+/// the pool the scene was when they were read.
+#[test]
+fn an_empty_range_is_zero_zero() {
+    let xml = r#"<World Version="2"><Shapes>
+        <Shape Type="Polygon"><Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex><Vertex>0 1</Vertex></Vertices></Shape>
+        <Shape Type="Circle"><Radius>1</Radius><Position>0 0</Position></Shape>
+      </Shapes><Fixtures><Fixture><Shape>1</Shape></Fixture></Fixtures>
+      <Bodies><Body Type="Static"><Fixtures><ID>0</ID></Fixtures></Body>
+        <Body Type="Static"><Fixtures /></Body></Bodies><Joints /></World>"#;
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).unwrap();
+    let empty = Range { first: 0, count: 0 };
+    assert_eq!(scene.shapes()[0].vertices, Range { first: 0, count: 3 });
+    assert_eq!(scene.shapes()[1].vertices, empty);
+    assert_eq!(scene.bodies()[0].fixtures, Range { first: 0, count: 1 });
+    assert_eq!(scene.bodies()[1].fixtures, empty);
 }
 
 #[test]

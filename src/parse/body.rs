@@ -173,6 +173,6 @@ impl<'a> Parser<'a> {
             p.origins.fixture_ids.push(at);
             Ok(())
         })?;
-        Ok(Range { first: first as u32, count: (self.scene.fixture_ids.len() - first) as u32 })
+        Ok(Range::between(first, self.scene.fixture_ids.len()))
     }
 }

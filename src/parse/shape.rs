@@ -187,7 +187,7 @@ impl<'a> Parser<'a> {
             p.scene.vertices.push(v);
             Ok(())
         })?;
-        Ok(Range { first: first as u32, count: (self.scene.vertices.len() - first) as u32 })
+        Ok(Range::between(first, self.scene.vertices.len()))
     }
 
     fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Parsed<()> {

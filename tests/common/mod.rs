@@ -1,8 +1,34 @@
 //! A deterministic generator of Box2Scene files with every shape, joint and field drawn at
-//! random, odd floats and odd names included: shared by the writer's and the builder's
-//! tests.
+//! random, odd floats and odd names included, and what two scenes must share to be the
+//! same: shared by the writer's and the builder's tests.
 
 use std::fmt::Write as _;
+
+use box2scene::{Body, Fixture, Joint, Scene, Shape, Str};
+
+/// Everything a scene holds, bit for bit (the dump's floats are shortest round-trip text),
+/// except what describes the file rather than the scene: its version and its warnings.
+/// The records follow the dump as C reads them (pool ranges and user data indices as they
+/// are), but for their names, whose pointers differ from scene to scene.
+pub fn content(scene: &Scene) -> String {
+    let json = scene.to_json();
+    let body = json.split_once("\n  \"gravity\"").unwrap().1;
+    let mut content = body.split_once("\n  \"diagnostics\"").unwrap().0.to_string();
+    let name = Str::NULL;
+    for s in scene.shapes() {
+        writeln!(content, "{:?}", Shape { name, ..*s }).unwrap();
+    }
+    for f in scene.fixtures() {
+        writeln!(content, "{:?}", Fixture { name, ..*f }).unwrap();
+    }
+    for b in scene.bodies() {
+        writeln!(content, "{:?}", Body { name, ..*b }).unwrap();
+    }
+    for j in scene.joints() {
+        writeln!(content, "{:?}", Joint { name, ..*j }).unwrap();
+    }
+    content
+}
 
 /// A small deterministic generator (SplitMix64).
 pub struct Random(pub u64);
