@@ -75,7 +75,7 @@ bool same_from_memory(const char* path, uint32_t threads, const bench::PugiScene
 }
 
 /// The file loads alike from its path (a chunk at a time), and from memory on one thread
-/// and on as many as box2scene chooses (two from 1 MiB on).
+/// and, ten times, on as many as box2scene chooses (two from 1 MiB on).
 bool check_file(const char* path) {
     b2s_scene* scene = nullptr;
     b2s_error error;
@@ -87,8 +87,11 @@ bool check_file(const char* path) {
     bench::PugiScene peer;
     std::string why;
     bool loaded = bench::pugi_load_file(path, peer, why);
-    bool same = loaded && same_scene(path, scene, peer) && same_from_memory(path, 1, peer) &&
-                same_from_memory(path, 0, peer);
+    bool same = loaded && same_scene(path, scene, peer) && same_from_memory(path, 1, peer);
+    // Where the two threads meet depends on timing; wherever they meet, the scene is one.
+    for (int run = 0; same && run < 10; ++run) {
+        same = same_from_memory(path, 0, peer);
+    }
     if (!loaded) {
         std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
     } else if (same) {
