@@ -55,10 +55,10 @@ bool same_scene(const std::string& what, const b2s_scene* scene, const bench::Pu
     return true;
 }
 
-/// Whether loading `path` from memory with `threads` gives the scene `peer` holds.
-bool same_from_memory(const char* path, uint32_t threads, const bench::PugiScene& peer) {
-    size_t size = 0;
-    std::unique_ptr<char[]> bytes = bench::read_file(path, size);
+/// Whether loading `bytes`, the text of `path`, from memory with `threads` gives the scene
+/// `peer` holds.
+bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, size_t size,
+                      uint32_t threads, const bench::PugiScene& peer) {
     b2s_load_options options = b2s_load_options_default();
     options.threads = threads;
     b2s_scene* scene = nullptr;
@@ -87,10 +87,13 @@ bool check_file(const char* path) {
     bench::PugiScene peer;
     std::string why;
     bool loaded = bench::pugi_load_file(path, peer, why);
-    bool same = loaded && same_scene(path, scene, peer) && same_from_memory(path, 1, peer);
+    size_t size = 0;
+    std::unique_ptr<char[]> bytes = bench::read_file(path, size);
+    bool same = loaded && same_scene(path, scene, peer) &&
+                same_from_memory(path, bytes, size, 1, peer);
     // Where the two threads meet depends on timing; wherever they meet, the scene is one.
     for (int run = 0; same && run < 10; ++run) {
-        same = same_from_memory(path, 0, peer);
+        same = same_from_memory(path, bytes, size, 0, peer);
     }
     if (!loaded) {
         std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
