@@ -184,6 +184,16 @@ enum b2s_code
    * not exactly (the message says what and by how much).
    */
   B2S_CODE_LOSSY_CAPTURE = 205,
+  /**
+   * A shape Box2D v3 holds only approximately: a ghost vertex it needs was extrapolated,
+   * a polygon's Centroid it cannot take, a chain's sensor flag it has no form for.
+   */
+  B2S_CODE_LOSSY_SHAPE = 206,
+  /**
+   * A joint value Box2D v3 clamps or has no field for: a revolute limit or reference
+   * angle past its range, a length under its minimum, a friction joint's anchors.
+   */
+  B2S_CODE_LOSSY_JOINT = 207,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

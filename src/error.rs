@@ -114,6 +114,12 @@ pub enum Code {
     /// Capturing a live world: a value was written as the nearest the format can hold,
     /// not exactly (the message says what and by how much).
     LossyCapture = 205,
+    /// A shape Box2D v3 holds only approximately: a ghost vertex it needs was extrapolated,
+    /// a polygon's Centroid it cannot take, a chain's sensor flag it has no form for.
+    LossyShape = 206,
+    /// A joint value Box2D v3 clamps or has no field for: a revolute limit or reference
+    /// angle past its range, a length under its minimum, a friction joint's anchors.
+    LossyJoint = 207,
 }
 
 impl Code {
@@ -179,6 +185,8 @@ impl Code {
         Code::InconsistentMassData,
         Code::BeyondBox2dRange,
         Code::LossyCapture,
+        Code::LossyShape,
+        Code::LossyJoint,
     ];
 
     /// The spec's kebab-case name of the code.
@@ -249,6 +257,8 @@ impl Code {
             Code::InconsistentMassData => c"inconsistent-mass-data",
             Code::BeyondBox2dRange => c"beyond-box2d-range",
             Code::LossyCapture => c"lossy-capture",
+            Code::LossyShape => c"lossy-shape",
+            Code::LossyJoint => c"lossy-joint",
         }
     }
 

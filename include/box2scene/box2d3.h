@@ -1,0 +1,150 @@
+/*
+ * box2scene/box2d3.h: builds a Box2D v3.1 world (b2WorldId) from a loaded box2scene scene,
+ * and captures bodies of a live v3 world back into a scene. C99 or later; its declarations
+ * are usable from C++. Needs <box2d/box2d.h> (Box2D v3.1.x) and <box2scene.h>.
+ *
+ * The implementation is in this header too: define B2S_BOX2D3_IMPLEMENTATION in exactly one
+ * C file of the host before including it (CMake's box2scene::box2d3 target does that for
+ * you). It compiles as C, against the host's own Box2D v3.
+ *
+ *     b2s_scene* scene = NULL;
+ *     if (b2s_load_file("level.xml", NULL, &scene, NULL) == B2S_CODE_OK) {
+ *         b2WorldDef def = b2s_box2d3_world_def(scene, (b2Vec2){0.0f, -10.0f});
+ *         b2WorldId world = b2CreateWorld(&def);
+ *         b2s_box2d3_built* built = b2s_box2d3_build_world(scene, world);
+ *         // built->reports says what Box2D v3 could not represent.
+ *         b2s_box2d3_built_free(built);
+ *         b2s_scene_free(scene);  // the world does not need the scene any more
+ *     }
+ *
+ * The adapter never prints, never aborts and never hands Box2D v3 a value that trips one of
+ * its assertions or turns into NaN: what it cannot create it skips and reports. Call it
+ * outside b2World_Step (v3 refuses to change a locked world). The README's "Box2D v3"
+ * section gives the mapping.
+ */
+#ifndef BOX2SCENE_BOX2D3_H
+#define BOX2SCENE_BOX2D3_H
+
+#include <box2d/box2d.h>
+#include <box2scene.h>
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Something of the scene that Box2D v3 could not represent, or only approximately. */
+typedef struct b2s_box2d3_report {
+    /** B2S_CODE_SKIPPED_JOINT, B2S_CODE_LOSSY_SHAPE, B2S_CODE_BEYOND_BOX2D_RANGE, ... */
+    b2s_code code;
+    /** "shape", "fixture", "body", "joint" or "world" (static storage). */
+    const char* object;
+    /** Building: the object's index in the scene's array of that kind. Capturing: the index
+     *  it has in the captured scene, or its place among the world's objects of that kind
+     *  when it was not written. */
+    uint32_t index;
+    /** The object's Name, or NULL. */
+    const char* name;
+    /** What happened, for a level designer. */
+    const char* message;
+} b2s_box2d3_report;
+
+/** A list of reports, owned by what holds it. */
+typedef struct b2s_box2d3_reports {
+    b2s_box2d3_report* items;
+    uint32_t count;
+} b2s_box2d3_reports;
+
+/** What b2s_box2d3_build_world created. Every id is owned by the world. */
+typedef struct b2s_box2d3_built {
+    /** Indexed like the scene's bodies; b2_nullBodyId where not created. */
+    b2BodyId* bodies;
+    uint32_t body_count;
+    /** Indexed like the scene's fixture ID pool (b2s_scene_view::fixture_ids): one v3 shape
+     *  per (body, fixture) pair, since a scene fixture may serve many bodies. A chain shape
+     *  (and an edge with both ghost vertices) becomes a v3 chain, in `chains`; the other
+     *  array holds the null id there. Null where not created. */
+    b2ShapeId* shapes;
+    b2ChainId* chains;
+    uint32_t fixture_count;
+    /** Indexed like the scene's joints; b2_nullJointId where skipped. */
+    b2JointId* joints;
+    uint32_t joint_count;
+    /** What could not be represented, in the order it was met. */
+    b2s_box2d3_reports reports;
+} b2s_box2d3_built;
+
+/** The values the adapter passes to Box2D v3: an object with a value beyond them is not
+ *  created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it. v3 asserts that
+ *  every shape's bounding box stays within +-1e5 m (B2_HUGE), so lengths are bounded ten
+ *  times tighter than for Box2D 2.4, leaving room for motion; the other bounds are 2.4's
+ *  (the README explains them). Linear speeds are bounded by the world's maximum linear
+ *  speed as well, which v3 would otherwise clamp silently. */
+#define B2S_BOX2D3_MAX_LENGTH 1e4f         /**< m: positions, vertices, anchors, lengths */
+#define B2S_BOX2D3_MAX_ANGLE 1e5f          /**< rad */
+#define B2S_BOX2D3_MAX_SPEED 1e3f          /**< m/s and rad/s, each component */
+#define B2S_BOX2D3_MAX_ACCELERATION 1e3f   /**< m/s^2: gravity, times a body's scale */
+#define B2S_BOX2D3_MAX_GRAVITY_SCALE 1e3f
+#define B2S_BOX2D3_MAX_DAMPING 1e5f        /**< 1/s */
+#define B2S_BOX2D3_MAX_DENSITY 1e5f        /**< kg/m^2 */
+#define B2S_BOX2D3_MAX_FRICTION 1e5f       /**< friction and restitution */
+#define B2S_BOX2D3_MAX_FREQUENCY 1e3f      /**< Hz, and damping ratios */
+#define B2S_BOX2D3_MAX_FORCE 1e20f         /**< N and N m */
+#define B2S_BOX2D3_MIN_AXIS 1e-6f          /**< m: the shortest joint axis */
+#define B2S_BOX2D3_MIN_MASS 1e-20f         /**< kg: a dynamic body's mass */
+#define B2S_BOX2D3_MAX_MASS 1e10f
+#define B2S_BOX2D3_MIN_INERTIA 1e-20f      /**< kg m^2 about the centre of mass, unless 0 */
+#define B2S_BOX2D3_MAX_INERTIA 1e12f
+#define B2S_BOX2D3_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
+#define B2S_BOX2D3_MAX_LEVER 1e3f          /**< a joint anchor's distance in radii of gyration */
+/** The maximum linear speed b2s_box2d3_world_def gives: above B2S_BOX2D3_MAX_SPEED with
+ *  room for gravity, still small enough that 600 steps stay within B2_HUGE. */
+#define B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED 1.5e3f
+
+/** The scene's gravity when the file gives one within B2S_BOX2D3_MAX_ACCELERATION, else
+ *  `fallback` (the format has no default gravity: the host decides). NULL gives fallback. */
+b2Vec2 b2s_box2d3_scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
+
+/** b2DefaultWorldDef() with the scene's gravity (b2s_box2d3_scene_gravity) and a maximum
+ *  linear speed of B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED, so that v3 does not clamp the speeds
+ *  a scene may give. The host may change anything else before b2CreateWorld. */
+b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity);
+
+/** Adds the scene's bodies, shapes and joints to `world`. Returns what it created and its
+ *  reports (free it with b2s_box2d3_built_free); NULL only when memory runs out. A NULL
+ *  scene adds nothing. */
+b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world);
+
+/** Frees a result of b2s_box2d3_build_world (not the world's objects). NULL is ignored. */
+void b2s_box2d3_built_free(b2s_box2d3_built* built);
+
+/** A new scene holding `bodies` of `world` (v3 cannot list a world's bodies: the host names
+ *  them), in that order, each with its shapes (in creation order) and the joints between
+ *  them (in creation order): what b2s_box2d3_build_world gives back, so that a world built
+ *  from a scene, captured, written, loaded and built again evolves bit for bit like the
+ *  first. Derived values are inverted exactly: MassData is written only where it differs
+ *  from what the shapes give, an angle is the one whose cosine and sine give the body's
+ *  rotation. Stores in `reports` what the scene cannot hold (capsules, mouse and filter
+ *  joints, joints to bodies not named: not written) or holds only approximately
+ *  (B2S_CODE_LOSSY_CAPTURE); free them with b2s_box2d3_reports_free. The world is not
+ *  changed. Returns B2S_CODE_OK and the scene in `*out_scene` (free it with
+ *  b2s_scene_free), or an error code (an invalid body id: B2S_CODE_INVALID_ARGUMENT) with
+ *  `error` filled when not NULL. */
+b2s_code b2s_box2d3_capture_world(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                  b2s_scene** out_scene, b2s_box2d3_reports* reports,
+                                  b2s_error* error);
+
+/** Frees the reports of a capture and sets them empty. NULL is ignored. */
+void b2s_box2d3_reports_free(b2s_box2d3_reports* reports);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#ifdef B2S_BOX2D3_IMPLEMENTATION
+#include "detail/box2d3_impl.h"
+#endif
+
+#endif /* BOX2SCENE_BOX2D3_H */

@@ -1,0 +1,1938 @@
+/*
+ * The implementation of box2scene/box2d3.h, compiled where the host defines
+ * B2S_BOX2D3_IMPLEMENTATION (C only). Names starting with b2s3_ are private to it.
+ */
+#ifndef BOX2SCENE_BOX2D3_IMPL_H
+#define BOX2SCENE_BOX2D3_IMPL_H
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Box2D v3.1's linear slop (B2_LINEAR_SLOP in its private constants.h) at one length unit
+ * per metre: v3 refuses a segment no longer than it and raises a distance joint's length
+ * to it. */
+#define B2S3_LINEAR_SLOP 0.005f
+/* v3 asserts that a revolute limit lies within +-0.99 pi, and clamps a reference angle to
+ * +-pi (B2_PI). */
+#define B2S3_PI 3.14159265359f
+#define B2S3_REVOLUTE_LIMIT (0.99f * B2S3_PI)
+
+/* ---- reports */
+
+typedef struct b2s3_list {
+    b2s_box2d3_reports* reports;
+    bool out_of_memory;
+} b2s3_list;
+
+static char* b2s3_copy(const char* text) {
+    if (text == NULL) {
+        return NULL;
+    }
+    size_t size = strlen(text) + 1;
+    char* copy = (char*)malloc(size);
+    if (copy != NULL) {
+        memcpy(copy, text, size);
+    }
+    return copy;
+}
+
+static void b2s3_report(b2s3_list* list, b2s_code code, const char* object, uint32_t index,
+                        const char* name, const char* format, ...) {
+    char message[512];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+
+    b2s_box2d3_reports* reports = list->reports;
+    b2s_box2d3_report* items = (b2s_box2d3_report*)realloc(
+        reports->items, (reports->count + 1) * sizeof(b2s_box2d3_report));
+    if (items == NULL) {
+        list->out_of_memory = true;
+        return;
+    }
+    reports->items = items;
+    b2s_box2d3_report* report = &items[reports->count];
+    report->code = code;
+    report->object = object;
+    report->index = index;
+    report->name = b2s3_copy(name);
+    report->message = b2s3_copy(message);
+    if (report->message == NULL || (name != NULL && report->name == NULL)) {
+        free((void*)report->name);
+        free((void*)report->message);
+        list->out_of_memory = true;
+        return;
+    }
+    reports->count += 1;
+}
+
+void b2s_box2d3_reports_free(b2s_box2d3_reports* reports) {
+    if (reports == NULL) {
+        return;
+    }
+    for (uint32_t i = 0; i < reports->count; ++i) {
+        free((void*)reports->items[i].name);
+        free((void*)reports->items[i].message);
+    }
+    free(reports->items);
+    reports->items = NULL;
+    reports->count = 0;
+}
+
+/* ---- the working range: the first value of one object found beyond it */
+
+typedef struct b2s3_check {
+    char problem[320];
+} b2s3_check;
+
+static bool b2s3_passed(const b2s3_check* check) {
+    return check->problem[0] == '\0';
+}
+
+static void b2s3_fail(b2s3_check* check, const char* format, ...) {
+    if (!b2s3_passed(check)) {
+        return;
+    }
+    va_list args;
+    va_start(args, format);
+    vsnprintf(check->problem, sizeof check->problem, format, args);
+    va_end(args);
+}
+
+static void b2s3_magnitude(b2s3_check* check, const char* field, float value, float bound,
+                           const char* unit) {
+    if (!(fabsf(value) <= bound)) {
+        b2s3_fail(check, "%s %.9g lies beyond Box2D v3's working range (within +-%g %s)", field,
+                  (double)value, (double)bound, unit);
+    }
+}
+
+static void b2s3_vector(b2s3_check* check, const char* field, b2s_vec2 v, float bound,
+                        const char* unit) {
+    if (!(fabsf(v.x) <= bound && fabsf(v.y) <= bound)) {
+        b2s3_fail(check,
+                  "%s (%.9g, %.9g) lies beyond Box2D v3's working range (each component "
+                  "within +-%g %s)",
+                  field, (double)v.x, (double)v.y, (double)bound, unit);
+    }
+}
+
+static void b2s3_zero_or_within(b2s3_check* check, const char* field, float value, float low,
+                                float high, const char* unit) {
+    if (value != 0.0f && !(low <= value && value <= high)) {
+        b2s3_fail(check,
+                  "%s %.9g %s lies beyond Box2D v3's working range (0 or within [%g, %g] %s)",
+                  field, (double)value, unit, (double)low, (double)high, unit);
+    }
+}
+
+static b2Vec2 b2s3_to_b2(b2s_vec2 v) {
+    b2Vec2 out = {v.x, v.y};
+    return out;
+}
+
+static b2s_vec2 b2s3_to_b2s(b2Vec2 v) {
+    b2s_vec2 out = {v.x, v.y};
+    return out;
+}
+
+static bool b2s3_is_zero(b2s_vec2 v) {
+    return v.x == 0.0f && v.y == 0.0f;
+}
+
+/* `end` continued by one segment away from `inner`: a ghost vertex v3 needs where the file
+ * gives none. */
+static b2Vec2 b2s3_extrapolated(b2Vec2 end, b2Vec2 inner) {
+    b2Vec2 out = {end.x + (end.x - inner.x), end.y + (end.y - inner.y)};
+    return out;
+}
+
+static bool b2s3_same_point(b2Vec2 a, b2Vec2 b) {
+    return a.x == b.x && a.y == b.y;
+}
+
+static bool b2s3_mass_data_given(const b2s_mass_data* given) {
+    return given->mass_given || given->center_given || given->inertia_given;
+}
+
+/* ---- gravity and the world def */
+
+static bool b2s3_gravity_fits(b2s_vec2 gravity) {
+    return fabsf(gravity.x) <= B2S_BOX2D3_MAX_ACCELERATION &&
+           fabsf(gravity.y) <= B2S_BOX2D3_MAX_ACCELERATION;
+}
+
+b2Vec2 b2s_box2d3_scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
+    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
+    if (view == NULL || !view->gravity_given || !b2s3_gravity_fits(view->gravity)) {
+        return fallback;
+    }
+    return b2s3_to_b2(view->gravity);
+}
+
+b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity) {
+    b2WorldDef def = b2DefaultWorldDef();
+    def.gravity = b2s_box2d3_scene_gravity(scene, fallback_gravity);
+    def.maximumLinearSpeed = B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED;
+    return def;
+}
+
+/* ---- one build */
+
+/* A shape of the scene as v3 geometry, made once and used by every fixture naming it. */
+typedef enum b2s3_geometry_kind {
+    B2S3_NONE,    /* not created (reported) */
+    B2S3_CIRCLE,
+    B2S3_POLYGON,
+    B2S3_SEGMENT,
+    B2S3_CHAIN,   /* points[0 .. point_count) with its ghosts, or a loop */
+} b2s3_geometry_kind;
+
+typedef struct b2s3_geometry {
+    b2s3_geometry_kind kind;
+    b2Circle circle;
+    b2Polygon polygon;
+    b2Segment segment;
+    b2Vec2* points;
+    int point_count;
+    bool is_loop;
+} b2s3_geometry;
+
+typedef struct b2s3_builder {
+    const struct b2s_scene_view* view;
+    b2WorldId world;
+    b2s_box2d3_built* built;
+    b2s3_list list;
+    b2s3_geometry* geometries; /* indexed like the scene's shapes */
+    b2MassData* masses;        /* each created dynamic body's, inertia about its centre */
+} b2s3_builder;
+
+#define B2S3_REPORT(builder, ...) b2s3_report(&(builder)->list, __VA_ARGS__)
+
+static void b2s3_beyond(b2s3_builder* b, const b2s3_check* check, const char* object,
+                        uint32_t index, const char* name, const char* owner) {
+    B2S3_REPORT(b, B2S_CODE_BEYOND_BOX2D_RANGE, object, index, name, "%s%s; %s not created",
+                owner, check->problem, object);
+}
+
+static void b2s3_check_gravity(b2s3_builder* b) {
+    if (b->view->gravity_given && !b2s3_gravity_fits(b->view->gravity)) {
+        B2S3_REPORT(b, B2S_CODE_BEYOND_BOX2D_RANGE, "world", 0, NULL,
+                    "Gravity (%.9g, %.9g) lies beyond Box2D v3's working range (each "
+                    "component within +-%g m/s^2); b2s_box2d3_scene_gravity gives the host's "
+                    "fallback instead",
+                    (double)b->view->gravity.x, (double)b->view->gravity.y,
+                    (double)B2S_BOX2D3_MAX_ACCELERATION);
+    }
+}
+
+/* ---- shapes */
+
+static b2s3_check b2s3_shape_check(const b2s_shape* shape, const b2s_vec2* points,
+                                   uint32_t count) {
+    b2s3_check check = {{0}};
+    bool edge = shape->kind == B2S_SHAPE_KIND_EDGE;
+    char field[32];
+    if (shape->kind == B2S_SHAPE_KIND_CIRCLE) {
+        b2s3_magnitude(&check, "Radius", shape->radius, B2S_BOX2D3_MAX_LENGTH, "m");
+        b2s3_vector(&check, "Position", shape->position, B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    for (uint32_t i = 0; i < count && b2s3_passed(&check); ++i) {
+        snprintf(field, sizeof field, edge ? "Vertex%u" : "Vertex %u", edge ? i + 1 : i);
+        b2s3_vector(&check, field, points[i], B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    if (shape->kind == B2S_SHAPE_KIND_POLYGON && shape->centroid_given) {
+        b2s3_vector(&check, "Centroid", shape->centroid, B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    bool ghosts = edge || (shape->kind == B2S_SHAPE_KIND_CHAIN && !shape->is_loop);
+    if (ghosts && shape->has_prev_vertex) {
+        b2s3_vector(&check, edge ? "Vertex0" : "PrevVertex", shape->prev_vertex,
+                    B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    if (ghosts && shape->has_next_vertex) {
+        b2s3_vector(&check, edge ? "Vertex3" : "NextVertex", shape->next_vertex,
+                    B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    return check;
+}
+
+static bool b2s3_vertex_count_fits(const b2s_shape* shape, uint32_t count) {
+    switch (shape->kind) {
+    case B2S_SHAPE_KIND_POLYGON: return count >= 2 && count <= B2_MAX_POLYGON_VERTICES;
+    case B2S_SHAPE_KIND_EDGE: return count == 2;
+    case B2S_SHAPE_KIND_CHAIN: return count >= (shape->is_loop ? 3u : 2u);
+    default: return true;
+    }
+}
+
+/* v3 refuses (asserts against) a segment no longer than its linear slop. */
+static bool b2s3_segment_long_enough(b2Vec2 a, b2Vec2 b) {
+    return b2DistanceSquared(a, b) > B2S3_LINEAR_SLOP * B2S3_LINEAR_SLOP;
+}
+
+/* Twice the signed area of a hull, as v3's centroid computation needs it positive. */
+static float b2s3_hull_area(const b2Hull* hull) {
+    float area = 0.0f;
+    for (int i = 1; i + 1 < hull->count; ++i) {
+        b2Vec2 e1 = b2Sub(hull->points[i], hull->points[0]);
+        b2Vec2 e2 = b2Sub(hull->points[i + 1], hull->points[0]);
+        area += b2Cross(e1, e2);
+    }
+    return 0.5f * area;
+}
+
+static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* shape,
+                              const b2Vec2* points, uint32_t count, b2s3_geometry* out) {
+    if (count == 2) {
+        if (!b2s3_segment_long_enough(points[0], points[1])) {
+            B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
+                        "its two vertices are no farther apart than Box2D v3's linear slop "
+                        "(%g m); shape not created",
+                        (double)B2S3_LINEAR_SLOP);
+            return false;
+        }
+        out->kind = B2S3_SEGMENT;
+        out->segment.point1 = points[0];
+        out->segment.point2 = points[1];
+        return true;
+    }
+    b2Hull hull = b2ComputeHull(points, (int)count);
+    /* v3 asserts that a polygon's area exceeds FLT_EPSILON when it computes the centroid. */
+    if (hull.count < 3 || !(b2s3_hull_area(&hull) > 2.0f * FLT_EPSILON)) {
+        B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
+                    "Box2D v3 finds no polygon in its vertices (b2ComputeHull welds points "
+                    "closer than %g m and drops collinear ones); shape not created",
+                    (double)B2S3_LINEAR_SLOP);
+        return false;
+    }
+    out->kind = B2S3_POLYGON;
+    out->polygon = b2MakePolygon(&hull, 0.0f);
+    if (shape->centroid_given && (shape->centroid.x != out->polygon.centroid.x ||
+                                  shape->centroid.y != out->polygon.centroid.y)) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
+                    "its Centroid (%.9g, %.9g) cannot be given to Box2D v3, which uses the "
+                    "polygon's own (%.9g, %.9g)",
+                    (double)shape->centroid.x, (double)shape->centroid.y,
+                    (double)out->polygon.centroid.x, (double)out->polygon.centroid.y);
+    }
+    return true;
+}
+
+static bool b2s3_set_chain_points(b2s3_geometry* out, const b2Vec2* points, int count) {
+    out->points = (b2Vec2*)malloc((size_t)count * sizeof(b2Vec2));
+    if (out->points == NULL) {
+        return false;
+    }
+    memcpy(out->points, points, (size_t)count * sizeof(b2Vec2));
+    out->point_count = count;
+    out->kind = B2S3_CHAIN;
+    return true;
+}
+
+/* An open v3 chain: [prev, vertices..., next], whose first and last segments only guide
+ * the ones between; a ghost the file leaves out is extrapolated from its end segment. */
+static bool b2s3_make_open_chain(b2s3_builder* b, uint32_t index, const b2s_shape* shape,
+                                 const b2Vec2* vertices, uint32_t count, b2s3_geometry* out) {
+    b2Vec2* points = (b2Vec2*)malloc(((size_t)count + 2) * sizeof(b2Vec2));
+    if (points == NULL) {
+        b->list.out_of_memory = true;
+        return false;
+    }
+    points[0] = shape->has_prev_vertex ? b2s3_to_b2(shape->prev_vertex)
+                                       : b2s3_extrapolated(vertices[0], vertices[1]);
+    memcpy(points + 1, vertices, count * sizeof(b2Vec2));
+    points[count + 1] = shape->has_next_vertex
+                            ? b2s3_to_b2(shape->next_vertex)
+                            : b2s3_extrapolated(vertices[count - 1], vertices[count - 2]);
+    bool edge = shape->kind == B2S_SHAPE_KIND_EDGE;
+    if (!shape->has_prev_vertex || !shape->has_next_vertex) {
+        const char* which = !shape->has_prev_vertex && !shape->has_next_vertex ? "both ghost vertices"
+                            : !shape->has_prev_vertex ? (edge ? "Vertex0" : "PrevVertex")
+                                                      : (edge ? "Vertex3" : "NextVertex");
+        B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
+                    "Box2D v3's chain needs a ghost vertex at each end: %s extrapolated along "
+                    "the end segment",
+                    which);
+    }
+    bool made = b2s3_set_chain_points(out, points, (int)count + 2);
+    free(points);
+    if (!made) {
+        b->list.out_of_memory = true;
+    }
+    return made;
+}
+
+/* A v3 loop needs 4 points: a 3-vertex loop gets the midpoint of its closing edge, which
+ * changes no geometry. */
+static bool b2s3_make_loop(b2s3_builder* b, const b2Vec2* vertices, uint32_t count,
+                           b2s3_geometry* out) {
+    b2Vec2 points[4];
+    const b2Vec2* used = vertices;
+    int used_count = (int)count;
+    if (count == 3) {
+        points[0] = vertices[0];
+        points[1] = vertices[1];
+        points[2] = vertices[2];
+        points[3] = b2Lerp(vertices[2], vertices[0], 0.5f);
+        used = points;
+        used_count = 4;
+    }
+    if (!b2s3_set_chain_points(out, used, used_count)) {
+        b->list.out_of_memory = true;
+        return false;
+    }
+    out->is_loop = true;
+    return true;
+}
+
+/* Every segment v3 will make of the geometry (those a chain's ghosts guide included). */
+static bool b2s3_segments_long_enough(const b2s3_geometry* g) {
+    if (g->kind == B2S3_SEGMENT) {
+        return b2s3_segment_long_enough(g->segment.point1, g->segment.point2);
+    }
+    if (g->kind != B2S3_CHAIN) {
+        return true;
+    }
+    int segments = g->is_loop ? g->point_count : g->point_count - 1;
+    for (int i = 0; i < segments; ++i) {
+        if (!b2s3_segment_long_enough(g->points[i], g->points[(i + 1) % g->point_count])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void b2s3_make_shape(b2s3_builder* b, uint32_t index) {
+    const b2s_shape* shape = &b->view->shapes[index];
+    b2s3_geometry* out = &b->geometries[index];
+    uint64_t end = (uint64_t)shape->vertices.first + shape->vertices.count;
+    if (shape->kind != B2S_SHAPE_KIND_CIRCLE && end > b->view->vertex_count) {
+        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "shape", index, shape->name,
+                    "its vertices lie outside the scene's vertex pool; shape not created");
+        return;
+    }
+    uint32_t count = shape->kind == B2S_SHAPE_KIND_CIRCLE ? 0 : shape->vertices.count;
+    const b2s_vec2* vertices = count > 0 ? b->view->vertices + shape->vertices.first : NULL;
+    if (shape->kind > B2S_SHAPE_KIND_CHAIN) {
+        B2S3_REPORT(b, B2S_CODE_UNKNOWN_TYPE, "shape", index, shape->name,
+                    "unknown shape kind %u; shape not created", (unsigned)shape->kind);
+        return;
+    }
+    if (!b2s3_vertex_count_fits(shape, count)) {
+        B2S3_REPORT(b, B2S_CODE_BAD_VERTEX_COUNT, "shape", index, shape->name,
+                    "%u vertices do not make a Box2D v3 shape; shape not created",
+                    (unsigned)count);
+        return;
+    }
+    b2s3_check check = b2s3_shape_check(shape, vertices, count);
+    if (!b2s3_passed(&check)) {
+        b2s3_beyond(b, &check, "shape", index, shape->name, "");
+        return;
+    }
+    /* b2Vec2 and b2s_vec2 are both two floats; copying keeps this independent of that. */
+    b2Vec2 points[B2_MAX_POLYGON_VERTICES];
+    b2Vec2* chain_points = NULL;
+    const b2Vec2* v = points;
+    if (count > B2_MAX_POLYGON_VERTICES) {
+        chain_points = (b2Vec2*)malloc(count * sizeof(b2Vec2));
+        if (chain_points == NULL) {
+            b->list.out_of_memory = true;
+            return;
+        }
+        v = chain_points;
+    }
+    for (uint32_t i = 0; i < count; ++i) {
+        (chain_points != NULL ? chain_points : points)[i] = b2s3_to_b2(vertices[i]);
+    }
+    bool edge_with_ghosts =
+        shape->kind == B2S_SHAPE_KIND_EDGE && (shape->has_prev_vertex || shape->has_next_vertex);
+    bool made = false;
+    switch (shape->kind) {
+    case B2S_SHAPE_KIND_CIRCLE:
+        out->kind = B2S3_CIRCLE;
+        out->circle.center = b2s3_to_b2(shape->position);
+        out->circle.radius = shape->radius;
+        made = true;
+        break;
+    case B2S_SHAPE_KIND_POLYGON: made = b2s3_make_polygon(b, index, shape, v, count, out); break;
+    case B2S_SHAPE_KIND_EDGE:
+        if (edge_with_ghosts) {
+            made = b2s3_make_open_chain(b, index, shape, v, count, out);
+        } else {
+            out->kind = B2S3_SEGMENT;
+            out->segment.point1 = v[0];
+            out->segment.point2 = v[1];
+            made = true;
+        }
+        break;
+    case B2S_SHAPE_KIND_CHAIN:
+        made = shape->is_loop ? b2s3_make_loop(b, v, count, out)
+                              : b2s3_make_open_chain(b, index, shape, v, count, out);
+        break;
+    }
+    free(chain_points);
+    if (made && !b2s3_segments_long_enough(out)) {
+        B2S3_REPORT(b,
+                    shape->kind == B2S_SHAPE_KIND_CHAIN ? B2S_CODE_DEGENERATE_CHAIN
+                                                        : B2S_CODE_DEGENERATE_EDGE,
+                    "shape", index, shape->name,
+                    "a segment of it is no longer than Box2D v3's linear slop (%g m), which "
+                    "v3 refuses; shape not created",
+                    (double)B2S3_LINEAR_SLOP);
+        made = false;
+    }
+    if (!made) {
+        free(out->points);
+        out->points = NULL;
+        out->kind = B2S3_NONE;
+    }
+}
+
+/* ---- bodies and their shapes */
+
+static b2s3_check b2s3_fixture_check(const b2s_fixture* fixture) {
+    b2s3_check check = {{0}};
+    b2s3_magnitude(&check, "Density", fixture->density, B2S_BOX2D3_MAX_DENSITY, "kg/m^2");
+    b2s3_magnitude(&check, "Friction", fixture->friction, B2S_BOX2D3_MAX_FRICTION, "");
+    b2s3_magnitude(&check, "Restitution", fixture->restitution, B2S_BOX2D3_MAX_FRICTION, "");
+    if (fixture->density < 0.0f || fixture->friction < 0.0f || fixture->restitution < 0.0f) {
+        b2s3_fail(&check, "a negative Density, Friction or Restitution, which Box2D v3 "
+                          "asserts against");
+    }
+    return check;
+}
+
+/* Whether fixture `index` of a body will be created: what its mass is made of. */
+static bool b2s3_fixture_creatable(const b2s3_builder* b, uint32_t index) {
+    if (index >= b->view->fixture_count) {
+        return false;
+    }
+    const b2s_fixture* fixture = &b->view->fixtures[index];
+    b2s3_check check = b2s3_fixture_check(fixture);
+    return fixture->shape < b->view->shape_count &&
+           b->geometries[fixture->shape].kind != B2S3_NONE && b2s3_passed(&check);
+}
+
+static b2MassData b2s3_geometry_mass(const b2s3_geometry* g, float density) {
+    b2MassData none = {0.0f, {0.0f, 0.0f}, 0.0f};
+    switch (g->kind) {
+    case B2S3_CIRCLE: return b2ComputeCircleMass(&g->circle, density);
+    case B2S3_POLYGON: return b2ComputePolygonMass(&g->polygon, density);
+    default: return none;
+    }
+}
+
+/* The mass v3 gives a dynamic body with these shapes (b2Body_ApplyMassFromShapes, which
+ * walks a body's shapes newest first), operation for operation so that the bits agree,
+ * with a body that has none given 1 kg as Box2D 2.x did (the format's files rely on it).
+ * `inertia_kept` is false when v3 would assert that the centred inertia is positive. */
+static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* densities,
+                                        size_t count, bool fixed_rotation, bool* inertia_kept) {
+    b2MassData body = {0.0f, {0.0f, 0.0f}, 0.0f};
+    b2Vec2 center = b2Vec2_zero;
+    for (size_t i = count; i-- > 0;) {
+        if (densities[i] == 0.0f) {
+            continue;
+        }
+        body.mass += shapes[i].mass;
+        center = b2MulAdd(center, shapes[i].mass, shapes[i].center);
+        body.rotationalInertia += shapes[i].rotationalInertia;
+    }
+    if (body.mass > 0.0f) {
+        float inverse = 1.0f / body.mass;
+        center = b2MulSV(inverse, center);
+    }
+    *inertia_kept = true;
+    if (body.rotationalInertia > 0.0f && !fixed_rotation) {
+        body.rotationalInertia -= body.mass * b2Dot(center, center);
+        *inertia_kept = body.rotationalInertia > 0.0f;
+    } else {
+        body.rotationalInertia = 0.0f;
+    }
+    body.center = center;
+    return body;
+}
+
+/* A dynamic body's final mass data: from its shapes, then what its MassData gives. The
+ * file's inertia is about the body origin, v3's about the centre of mass. */
+static b2MassData b2s3_with_mass_data(b2MassData computed, const b2s_body* body) {
+    const b2s_mass_data* given = &body->mass_data;
+    if (!b2s3_mass_data_given(given)) {
+        return computed;
+    }
+    float origin_inertia =
+        computed.rotationalInertia + computed.mass * b2Dot(computed.center, computed.center);
+    b2MassData out = computed;
+    if (given->mass_given) {
+        out.mass = given->mass;
+    }
+    if (given->center_given) {
+        out.center = b2s3_to_b2(given->center);
+    }
+    if (given->inertia_given) {
+        origin_inertia = given->inertia;
+    }
+    out.rotationalInertia = body->fixed_rotation
+                                ? 0.0f
+                                : origin_inertia - out.mass * b2Dot(out.center, out.center);
+    return out;
+}
+
+/* Box2D 2.x, which the format's files were made for, gives a dynamic body without mass
+ * 1 kg at its origin; v3 would leave it at 0, unmoved by gravity. */
+static b2MassData b2s3_positive_mass(b2MassData m) {
+    if (!(m.mass > 0.0f)) {
+        m.mass = 1.0f;
+    }
+    return m;
+}
+
+/* The mass data the adapter gives a dynamic body, or false (with `check` failed) when v3
+ * would assert or the result lies beyond the working range. */
+static bool b2s3_predicted_mass(const b2s3_builder* b, const b2s_body* body, b2s3_check* check,
+                                b2MassData* out) {
+    size_t capacity = body->fixtures.count > 0 ? body->fixtures.count : 1;
+    b2MassData* masses = (b2MassData*)malloc(capacity * sizeof(b2MassData));
+    float* densities = (float*)malloc(capacity * sizeof(float));
+    if (masses == NULL || densities == NULL) {
+        free(masses);
+        free(densities);
+        return false;
+    }
+    size_t created = 0;
+    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
+    for (uint64_t slot = body->fixtures.first; slot < end && slot < b->view->fixture_id_count;
+         ++slot) {
+        uint32_t index = b->view->fixture_ids[slot];
+        if (!b2s3_fixture_creatable(b, index)) {
+            continue;
+        }
+        const b2s_fixture* fixture = &b->view->fixtures[index];
+        densities[created] = fixture->density;
+        masses[created] = b2s3_geometry_mass(&b->geometries[fixture->shape], fixture->density);
+        created += 1;
+    }
+    bool inertia_kept = true;
+    b2MassData computed =
+        b2s3_mass_from_shapes(masses, densities, created, body->fixed_rotation, &inertia_kept);
+    free(masses);
+    free(densities);
+    if (!inertia_kept) {
+        b2s3_fail(check, "its shapes leave no positive inertia about its centre of mass in "
+                         "Box2D v3's float arithmetic (which asserts)");
+    }
+    b2s3_vector(check, "its centre of mass", b2s3_to_b2s(computed.center), B2S_BOX2D3_MAX_LENGTH,
+                "m");
+    b2MassData final_mass = b2s3_positive_mass(b2s3_with_mass_data(computed, body));
+    b2s3_zero_or_within(check, "its mass", final_mass.mass, B2S_BOX2D3_MIN_MASS,
+                        B2S_BOX2D3_MAX_MASS, "kg");
+    b2s3_vector(check, "its centre of mass", b2s3_to_b2s(final_mass.center),
+                B2S_BOX2D3_MAX_LENGTH, "m");
+    if (final_mass.rotationalInertia < 0.0f) {
+        b2s3_fail(check, "its MassData leaves a negative inertia about the centre of mass "
+                         "(Inertia < Mass * |Center|^2), which Box2D v3 asserts against");
+    }
+    b2s3_zero_or_within(check, "its inertia about the centre of mass",
+                        final_mass.rotationalInertia, B2S_BOX2D3_MIN_INERTIA,
+                        B2S_BOX2D3_MAX_INERTIA, "kg m^2");
+    *out = final_mass;
+    return true;
+}
+
+static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
+    b2s3_check check = {{0}};
+    b2s3_vector(&check, "Position", body->position, B2S_BOX2D3_MAX_LENGTH, "m");
+    b2s3_magnitude(&check, "Angle", body->angle, B2S_BOX2D3_MAX_ANGLE, "rad");
+    if (body->kind != B2S_BODY_KIND_STATIC) {
+        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, B2S_BOX2D3_MAX_SPEED, "m/s");
+        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, B2S_BOX2D3_MAX_SPEED,
+                       "rad/s");
+        float limit = b2World_GetMaximumLinearSpeed(b->world);
+        float speed = b2Length(b2s3_to_b2(body->linear_velocity));
+        if (b2s3_passed(&check) && !(speed <= limit)) {
+            b2s3_fail(&check,
+                      "LinearVelocity (%.9g, %.9g) is faster than the world's maximum linear "
+                      "speed %g m/s, to which Box2D v3 would clamp it",
+                      (double)body->linear_velocity.x, (double)body->linear_velocity.y,
+                      (double)limit);
+        }
+    }
+    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, B2S_BOX2D3_MAX_DAMPING, "1/s");
+    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, B2S_BOX2D3_MAX_DAMPING,
+                   "1/s");
+    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, B2S_BOX2D3_MAX_GRAVITY_SCALE, "");
+    if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check)) {
+        b2Vec2 gravity = b2MulSV(body->gravity_scale, b2World_GetGravity(b->world));
+        b2s3_vector(&check, "GravityScale times the world's gravity", b2s3_to_b2s(gravity),
+                    B2S_BOX2D3_MAX_ACCELERATION, "m/s^2");
+    }
+    if (body->mass_data.center_given) {
+        b2s3_vector(&check, "MassData Center", body->mass_data.center, B2S_BOX2D3_MAX_LENGTH, "m");
+    }
+    return check;
+}
+
+/* The fixtures of a body that was not created: they depend on it. */
+static void b2s3_skip_fixtures_of(b2s3_builder* b, uint32_t body_index, const b2s_body* body) {
+    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
+    for (uint64_t slot = body->fixtures.first; slot < end && slot < b->view->fixture_id_count;
+         ++slot) {
+        uint32_t index = b->view->fixture_ids[slot];
+        B2S3_REPORT(b, B2S_CODE_SKIPPED_DEPENDENT, "fixture", index,
+                    index < b->view->fixture_count ? b->view->fixtures[index].name : NULL,
+                    "fixture %u of body %u: the body was not created; fixture skipped",
+                    (unsigned)index, (unsigned)body_index);
+    }
+}
+
+/* v3 asserts against a negative damping, which the format does not forbid. */
+static float b2s3_damping(b2s3_builder* b, uint32_t index, const b2s_body* body, float value,
+                          const char* field) {
+    if (value >= 0.0f) {
+        return value;
+    }
+    B2S3_REPORT(b, B2S_CODE_NEGATIVE_VALUE, "body", index, body->name,
+                "%s %.9g is negative, which Box2D v3 does not allow; 0 was used", field,
+                (double)value);
+    return 0.0f;
+}
+
+static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* body) {
+    b2BodyDef def = b2DefaultBodyDef();
+    def.type = (b2BodyType)body->kind;
+    def.position = b2s3_to_b2(body->position);
+    /* b2MakeRot approximates; the rotation of the file's angle is its cosine and sine. */
+    def.rotation.c = cosf(body->angle);
+    def.rotation.s = sinf(body->angle);
+    if (body->kind != B2S_BODY_KIND_STATIC) {
+        def.linearVelocity = b2s3_to_b2(body->linear_velocity);
+        def.angularVelocity = body->angular_velocity;
+    }
+    def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
+    def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");
+    def.gravityScale = body->gravity_scale;
+    def.enableSleep = body->allow_sleep;
+    def.isAwake = body->awake;
+    def.fixedRotation = body->fixed_rotation;
+    def.isBullet = body->bullet;
+    def.isEnabled = body->active;
+    /* v3 keeps 31 bytes of a name; a longer one is not cut (it could split a character). */
+    if (body->name != NULL && strlen(body->name) <= 31) {
+        def.name = body->name;
+    }
+    return def;
+}
+
+static b2Filter b2s3_filter(const b2s_filter* filter) {
+    b2Filter out = b2DefaultFilter();
+    out.categoryBits = filter->category_bits;
+    out.maskBits = filter->mask_bits;
+    out.groupIndex = filter->group_index;
+    return out;
+}
+
+static void b2s3_make_fixture(b2s3_builder* b, uint32_t body_index, uint32_t slot,
+                              b2BodyId body) {
+    uint32_t index = b->view->fixture_ids[slot];
+    if (index >= b->view->fixture_count) {
+        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "fixture", index, NULL,
+                    "fixture %u of body %u does not exist", (unsigned)index,
+                    (unsigned)body_index);
+        return;
+    }
+    const b2s_fixture* fixture = &b->view->fixtures[index];
+    if (fixture->shape >= b->view->shape_count ||
+        b->geometries[fixture->shape].kind == B2S3_NONE) {
+        B2S3_REPORT(b, B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, fixture->name,
+                    "fixture %u of body %u names shape %u, which was not created; fixture "
+                    "skipped",
+                    (unsigned)index, (unsigned)body_index, (unsigned)fixture->shape);
+        return;
+    }
+    b2s3_check check = b2s3_fixture_check(fixture);
+    if (!b2s3_passed(&check)) {
+        char owner[64];
+        snprintf(owner, sizeof owner, "fixture %u of body %u: ", (unsigned)index,
+                 (unsigned)body_index);
+        b2s3_beyond(b, &check, "fixture", index, fixture->name, owner);
+        return;
+    }
+    const b2s3_geometry* g = &b->geometries[fixture->shape];
+    if (g->kind == B2S3_CHAIN) {
+        b2SurfaceMaterial material = b2DefaultSurfaceMaterial();
+        material.friction = fixture->friction;
+        material.restitution = fixture->restitution;
+        b2ChainDef def = b2DefaultChainDef();
+        def.points = g->points;
+        def.count = g->point_count;
+        def.isLoop = g->is_loop;
+        def.materials = &material;
+        def.materialCount = 1;
+        def.filter = b2s3_filter(&fixture->filter);
+        def.enableSensorEvents = true;
+        if (fixture->is_sensor) {
+            B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "fixture", index, fixture->name,
+                        "fixture %u of body %u is a sensor, but Box2D v3's chains have no "
+                        "sensor form; it was made a solid chain",
+                        (unsigned)index, (unsigned)body_index);
+        }
+        b->built->chains[slot] = b2CreateChain(body, &def);
+        return;
+    }
+    b2ShapeDef def = b2DefaultShapeDef();
+    def.density = fixture->density;
+    def.material.friction = fixture->friction;
+    def.material.restitution = fixture->restitution;
+    def.filter = b2s3_filter(&fixture->filter);
+    def.isSensor = fixture->is_sensor;
+    /* Box2D 2.x's sensors saw every shape; v3's see those with sensor events on. */
+    def.enableSensorEvents = true;
+    /* One mass update per body, after all its shapes: linear in the shapes, not quadratic. */
+    def.updateBodyMass = false;
+    switch (g->kind) {
+    case B2S3_CIRCLE: b->built->shapes[slot] = b2CreateCircleShape(body, &def, &g->circle); break;
+    case B2S3_POLYGON:
+        b->built->shapes[slot] = b2CreatePolygonShape(body, &def, &g->polygon);
+        break;
+    case B2S3_SEGMENT:
+        b->built->shapes[slot] = b2CreateSegmentShape(body, &def, &g->segment);
+        break;
+    default: break;
+    }
+}
+
+static void b2s3_make_body(b2s3_builder* b, uint32_t index) {
+    const b2s_body* body = &b->view->bodies[index];
+    if (body->kind > B2S_BODY_KIND_DYNAMIC) {
+        B2S3_REPORT(b, B2S_CODE_UNKNOWN_TYPE, "body", index, body->name,
+                    "unknown body kind %u; body skipped", (unsigned)body->kind);
+        b2s3_skip_fixtures_of(b, index, body);
+        return;
+    }
+    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
+    if (end > b->view->fixture_id_count) {
+        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "body", index, body->name,
+                    "its fixture list lies outside the scene's fixture ID pool; body skipped");
+        return;
+    }
+    b2s3_check check = b2s3_body_check(b, body);
+    b2MassData mass = {0.0f, {0.0f, 0.0f}, 0.0f};
+    if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check) &&
+        !b2s3_predicted_mass(b, body, &check, &mass)) {
+        b->list.out_of_memory = true;
+        return;
+    }
+    if (!b2s3_passed(&check)) {
+        b2s3_beyond(b, &check, "body", index, body->name, "");
+        b2s3_skip_fixtures_of(b, index, body);
+        return;
+    }
+    if (fabsf(body->angle) > B2S3_PI) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
+                    "Box2D v3 keeps a rotation, not an angle: the whole turns of Angle %.9g "
+                    "are lost, and a capture writes it within +-pi",
+                    (double)body->angle);
+    }
+    b2BodyDef def = b2s3_body_def(b, index, body);
+    b2BodyId created = b2CreateBody(b->world, &def);
+    b->built->bodies[index] = created;
+    for (uint32_t slot = body->fixtures.first; slot < end; ++slot) {
+        b2s3_make_fixture(b, index, slot, created);
+    }
+    if (body->kind == B2S_BODY_KIND_DYNAMIC) {
+        b2Body_ApplyMassFromShapes(created);
+        b2MassData applied = b2Body_GetMassData(created);
+        if (b2s3_mass_data_given(&body->mass_data) || !(applied.mass > 0.0f)) {
+            b2Body_SetMassData(created, mass);
+        }
+        b->masses[index] = mass;
+    }
+}
+
+/* ---- joints */
+
+static b2BodyId b2s3_created_body(const b2s3_builder* b, uint32_t index) {
+    return index < b->built->body_count ? b->built->bodies[index] : b2_nullBodyId;
+}
+
+/* Box2D's joint solvers work with 1/m + r^2/I of each body at the anchor (r from its centre
+ * of mass) and invert 2x2 matrices of such terms: past the working range, their products
+ * overflow or the determinant loses every bit (see the README). */
+static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const char* field,
+                              uint32_t body, b2Vec2 anchor) {
+    if (b2Body_GetType(b->built->bodies[body]) != b2_dynamicBody) {
+        return;
+    }
+    const b2MassData* mass = &b->masses[body];
+    float r = b2Distance(anchor, mass->center);
+    float inertia = mass->rotationalInertia;
+    float compliance = 1.0f / mass->mass + (inertia > 0.0f ? r * r / inertia : 0.0f);
+    if (!(compliance <= B2S_BOX2D3_MAX_COMPLIANCE)) {
+        b2s3_fail(check,
+                  "%s: the joint acts %.9g m from the centre of mass of body %u (mass %.9g kg, "
+                  "inertia %.9g kg m^2), where 1/m + r^2/I = %g 1/kg lies beyond Box2D v3's "
+                  "working range (at most %g 1/kg)",
+                  field, (double)r, (unsigned)body, (double)mass->mass, (double)inertia,
+                  (double)compliance, (double)B2S_BOX2D3_MAX_COMPLIANCE);
+    } else if (inertia > 0.0f && !(r <= B2S_BOX2D3_MAX_LEVER * sqrtf(inertia / mass->mass))) {
+        b2s3_fail(check,
+                  "%s: the joint acts %g radii of gyration from the centre of mass of body %u, "
+                  "beyond Box2D v3's working range (at most %g)",
+                  field, (double)(r / sqrtf(inertia / mass->mass)), (unsigned)body,
+                  (double)B2S_BOX2D3_MAX_LEVER);
+    }
+}
+
+static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint) {
+    b2s3_check check = {{0}};
+    float length = B2S_BOX2D3_MAX_LENGTH;
+    bool anchored = joint->kind != B2S_JOINT_KIND_MOTOR;
+    if (anchored) {
+        b2s3_vector(&check, "LocalAnchorA", joint->local_anchor_a, length, "m");
+        b2s3_vector(&check, "LocalAnchorB", joint->local_anchor_b, length, "m");
+    }
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S_BOX2D3_MAX_SPEED, "rad/s");
+        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, B2S_BOX2D3_MAX_FORCE,
+                       "N m");
+        break;
+    case B2S_JOINT_KIND_PRISMATIC:
+    case B2S_JOINT_KIND_LINE:
+        b2s3_magnitude(&check, "LowerTranslation", joint->lower_limit, length, "m");
+        b2s3_magnitude(&check, "UpperTranslation", joint->upper_limit, length, "m");
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S_BOX2D3_MAX_SPEED, "m/s");
+        b2s3_magnitude(&check, "MaxMotorForce", joint->max_motor_force, B2S_BOX2D3_MAX_FORCE, "N");
+        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, B2S_BOX2D3_MAX_ANGLE,
+                       "rad");
+        break;
+    case B2S_JOINT_KIND_WHEEL:
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S_BOX2D3_MAX_SPEED, "rad/s");
+        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, B2S_BOX2D3_MAX_FORCE,
+                       "N m");
+        break;
+    case B2S_JOINT_KIND_DISTANCE:
+        b2s3_magnitude(&check, "Length", joint->length, length, "m");
+        break;
+    case B2S_JOINT_KIND_ROPE:
+        b2s3_magnitude(&check, "MaxLength", joint->max_length, length, "m");
+        break;
+    case B2S_JOINT_KIND_WELD:
+        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, B2S_BOX2D3_MAX_ANGLE,
+                       "rad");
+        break;
+    case B2S_JOINT_KIND_FRICTION:
+    case B2S_JOINT_KIND_MOTOR:
+        b2s3_magnitude(&check, "MaxForce", joint->max_force, B2S_BOX2D3_MAX_FORCE, "N");
+        b2s3_magnitude(&check, "MaxTorque", joint->max_torque, B2S_BOX2D3_MAX_FORCE, "N m");
+        if (joint->kind == B2S_JOINT_KIND_MOTOR) {
+            b2s3_vector(&check, "LinearOffset", joint->linear_offset, length, "m");
+            b2s3_magnitude(&check, "AngularOffset", joint->angular_offset, B2S_BOX2D3_MAX_ANGLE,
+                           "rad");
+            b2s3_magnitude(&check, "CorrectionFactor", joint->correction_factor,
+                           B2S_BOX2D3_MAX_FREQUENCY, "");
+        }
+        break;
+    default: break;
+    }
+    bool axis = joint->kind == B2S_JOINT_KIND_PRISMATIC || joint->kind == B2S_JOINT_KIND_LINE ||
+                joint->kind == B2S_JOINT_KIND_WHEEL;
+    if (axis) {
+        b2s3_vector(&check, "LocalAxisA", joint->local_axis_a, length, "m");
+        if (b2s3_passed(&check) &&
+            !(b2Length(b2s3_to_b2(joint->local_axis_a)) >= B2S_BOX2D3_MIN_AXIS)) {
+            b2s3_fail(&check, "LocalAxisA is shorter than %g m: Box2D v3 cannot normalise it",
+                      (double)B2S_BOX2D3_MIN_AXIS);
+        }
+    }
+    bool spring = joint->kind == B2S_JOINT_KIND_DISTANCE || joint->kind == B2S_JOINT_KIND_WHEEL ||
+                  joint->kind == B2S_JOINT_KIND_WELD;
+    if (spring) {
+        b2s3_magnitude(&check, "FrequencyHz", joint->frequency_hz, B2S_BOX2D3_MAX_FREQUENCY, "Hz");
+        b2s3_magnitude(&check, "DampingRatio", joint->damping_ratio, B2S_BOX2D3_MAX_FREQUENCY, "");
+        if (joint->frequency_hz < 0.0f || joint->damping_ratio < 0.0f) {
+            b2s3_fail(&check, "a negative FrequencyHz or DampingRatio, which Box2D v3 asserts "
+                              "against");
+        }
+    }
+    if (b2s3_passed(&check) && anchored) {
+        b2s3_check_anchor(b, &check, "LocalAnchorA", joint->body_a,
+                          b2s3_to_b2(joint->local_anchor_a));
+        b2s3_check_anchor(b, &check, "LocalAnchorB", joint->body_b,
+                          b2s3_to_b2(joint->local_anchor_b));
+    }
+    return check;
+}
+
+/* The bodies every joint def has; false (and a report) when one is missing. */
+static bool b2s3_connect(b2s3_builder* b, uint32_t index, const b2s_joint* joint, b2BodyId* a,
+                         b2BodyId* bb) {
+    *a = b2s3_created_body(b, joint->body_a);
+    *bb = b2s3_created_body(b, joint->body_b);
+    if (B2_IS_NULL((*a)) || B2_IS_NULL((*bb))) {
+        B2S3_REPORT(b, B2S_CODE_SKIPPED_DEPENDENT, "joint", index, joint->name,
+                    "it names body %u, which was not created; joint skipped",
+                    (unsigned)(B2_IS_NULL((*a)) ? joint->body_a : joint->body_b));
+        return false;
+    }
+    if (joint->body_a == joint->body_b) {
+        B2S3_REPORT(b, B2S_CODE_JOINT_SELF_REFERENCE, "joint", index, joint->name,
+                    "it connects a body to itself; joint skipped");
+        return false;
+    }
+    return true;
+}
+
+/* Limits in the order v3 asserts; a disabled pair in the wrong order has no effect, so it
+ * is passed swapped (an enabled one the loader refuses). */
+static void b2s3_ordered_limits(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                const char* lower_name, const char* upper_name, float* lower,
+                                float* upper) {
+    if (*lower > *upper) {
+        float swap = *lower;
+        *lower = *upper;
+        *upper = swap;
+        B2S3_REPORT(b, B2S_CODE_BAD_LIMIT, "joint", index, joint->name,
+                    "%s %.9g lies above %s %.9g, which Box2D v3 asserts against; they were "
+                    "passed swapped",
+                    lower_name, (double)joint->lower_limit, upper_name,
+                    (double)joint->upper_limit);
+    }
+}
+
+static float b2s3_clamped(float value, float low, float high) {
+    return value < low ? low : value > high ? high : value;
+}
+
+static b2JointId b2s3_make_revolute(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                    b2BodyId a, b2BodyId bb) {
+    b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
+    def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
+    def.referenceAngle = joint->reference_angle;
+    if (fabsf(joint->reference_angle) > B2S3_PI) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                    "ReferenceAngle %.9g lies beyond +-pi, to which Box2D v3 clamps it",
+                    (double)joint->reference_angle);
+    }
+    float lower = joint->lower_limit, upper = joint->upper_limit;
+    b2s3_ordered_limits(b, index, joint, "LowerAngle", "UpperAngle", &lower, &upper);
+    def.lowerAngle = b2s3_clamped(lower, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
+    def.upperAngle = b2s3_clamped(upper, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
+    if (joint->enable_limit && (def.lowerAngle != lower || def.upperAngle != upper)) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                    "its limit [%.9g, %.9g] reaches beyond Box2D v3's +-0.99 pi; it was "
+                    "clamped to [%.9g, %.9g]",
+                    (double)lower, (double)upper, (double)def.lowerAngle,
+                    (double)def.upperAngle);
+    }
+    def.enableLimit = joint->enable_limit;
+    def.enableMotor = joint->enable_motor;
+    def.motorSpeed = joint->motor_speed;
+    def.maxMotorTorque = joint->max_motor_torque;
+    return b2CreateRevoluteJoint(b->world, &def);
+}
+
+static b2JointId b2s3_make_prismatic(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                     b2BodyId a, b2BodyId bb) {
+    b2PrismaticJointDef def = b2DefaultPrismaticJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
+    def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
+    def.localAxisA = b2Normalize(b2s3_to_b2(joint->local_axis_a));
+    def.referenceAngle = joint->reference_angle;
+    def.lowerTranslation = joint->lower_limit;
+    def.upperTranslation = joint->upper_limit;
+    b2s3_ordered_limits(b, index, joint, "LowerTranslation", "UpperTranslation",
+                        &def.lowerTranslation, &def.upperTranslation);
+    def.enableLimit = joint->enable_limit;
+    def.enableMotor = joint->enable_motor;
+    def.maxMotorForce = joint->max_motor_force;
+    def.motorSpeed = joint->motor_speed;
+    return b2CreatePrismaticJoint(b->world, &def);
+}
+
+/* v3 asserts a length above 0 and raises it to its linear slop. */
+static float b2s3_joint_length(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                               const char* field, float length) {
+    if (length >= B2S3_LINEAR_SLOP) {
+        return length;
+    }
+    B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                "%s %.9g lies under Box2D v3's shortest joint length, %g m, which was used",
+                field, (double)length, (double)B2S3_LINEAR_SLOP);
+    return B2S3_LINEAR_SLOP;
+}
+
+static b2DistanceJointDef b2s3_distance_def(const b2s_joint* joint, b2BodyId a, b2BodyId bb) {
+    b2DistanceJointDef def = b2DefaultDistanceJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
+    def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
+    return def;
+}
+
+/* FrequencyHz 0 is a rigid rod; above it, a spring around Length. */
+static b2JointId b2s3_make_distance(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                    b2BodyId a, b2BodyId bb) {
+    b2DistanceJointDef def = b2s3_distance_def(joint, a, bb);
+    def.length = b2s3_joint_length(b, index, joint, "Length", joint->length);
+    if (joint->frequency_hz > 0.0f) {
+        def.enableSpring = true;
+        def.hertz = joint->frequency_hz;
+        def.dampingRatio = joint->damping_ratio;
+    }
+    return b2CreateDistanceJoint(b->world, &def);
+}
+
+/* A rope is slack up to MaxLength: a spring of 0 Hz with the upper limit on. */
+static b2JointId b2s3_make_rope(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                b2BodyId a, b2BodyId bb) {
+    b2DistanceJointDef def = b2s3_distance_def(joint, a, bb);
+    def.length = b2s3_joint_length(b, index, joint, "MaxLength", joint->max_length);
+    def.enableSpring = true;
+    def.hertz = 0.0f;
+    def.enableLimit = true;
+    def.minLength = 0.0f;
+    def.maxLength = def.length;
+    return b2CreateDistanceJoint(b->world, &def);
+}
+
+static b2WheelJointDef b2s3_wheel_def(const b2s_joint* joint, b2BodyId a, b2BodyId bb) {
+    b2WheelJointDef def = b2DefaultWheelJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
+    def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
+    def.localAxisA = b2Normalize(b2s3_to_b2(joint->local_axis_a));
+    return def;
+}
+
+/* Box2D 2.1's line joint: a wheel joint without a spring. Its motor drove the translation;
+ * v3's wheel motor drives the rotation, so it stays off. */
+static b2JointId b2s3_make_line(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                b2BodyId a, b2BodyId bb) {
+    b2WheelJointDef def = b2s3_wheel_def(joint, a, bb);
+    def.enableSpring = false;
+    def.lowerTranslation = joint->lower_limit;
+    def.upperTranslation = joint->upper_limit;
+    b2s3_ordered_limits(b, index, joint, "LowerTranslation", "UpperTranslation",
+                        &def.lowerTranslation, &def.upperTranslation);
+    def.enableLimit = joint->enable_limit;
+    if (joint->enable_motor) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_LINE_MOTOR, "joint", index, joint->name,
+                    "Box2D v3 has no linear motor on a line (wheel) joint; the motor is off");
+    }
+    return b2CreateWheelJoint(b->world, &def);
+}
+
+static b2JointId b2s3_make_wheel(b2s3_builder* b, const b2s_joint* joint, b2BodyId a,
+                                 b2BodyId bb) {
+    b2WheelJointDef def = b2s3_wheel_def(joint, a, bb);
+    def.enableSpring = true;
+    def.hertz = joint->frequency_hz;
+    def.dampingRatio = joint->damping_ratio;
+    def.enableMotor = joint->enable_motor;
+    def.maxMotorTorque = joint->max_motor_torque;
+    def.motorSpeed = joint->motor_speed;
+    return b2CreateWheelJoint(b->world, &def);
+}
+
+static b2JointId b2s3_make_weld(b2s3_builder* b, const b2s_joint* joint, b2BodyId a,
+                                b2BodyId bb) {
+    b2WeldJointDef def = b2DefaultWeldJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
+    def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
+    def.referenceAngle = joint->reference_angle;
+    def.linearHertz = 0.0f;
+    def.angularHertz = joint->frequency_hz;
+    def.angularDampingRatio = joint->damping_ratio;
+    return b2CreateWeldJoint(b->world, &def);
+}
+
+/* v3 has no friction joint: a motor joint that holds no offset does its work, at the body
+ * origins. */
+static b2JointId b2s3_make_friction(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                    b2BodyId a, b2BodyId bb) {
+    if (!b2s3_is_zero(joint->local_anchor_a) || !b2s3_is_zero(joint->local_anchor_b)) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                    "Box2D v3's friction (motor) joint acts at the body origins, not at "
+                    "LocalAnchorA (%.9g, %.9g) and LocalAnchorB (%.9g, %.9g)",
+                    (double)joint->local_anchor_a.x, (double)joint->local_anchor_a.y,
+                    (double)joint->local_anchor_b.x, (double)joint->local_anchor_b.y);
+    }
+    b2MotorJointDef def = b2DefaultMotorJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.linearOffset = b2Vec2_zero;
+    def.angularOffset = 0.0f;
+    def.correctionFactor = 0.0f;
+    def.maxForce = joint->max_force;
+    def.maxTorque = joint->max_torque;
+    return b2CreateMotorJoint(b->world, &def);
+}
+
+static b2JointId b2s3_make_motor(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                 b2BodyId a, b2BodyId bb) {
+    b2MotorJointDef def = b2DefaultMotorJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = bb;
+    def.collideConnected = joint->collide_connected;
+    def.linearOffset = b2s3_to_b2(joint->linear_offset);
+    def.angularOffset = joint->angular_offset;
+    def.maxForce = joint->max_force;
+    def.maxTorque = joint->max_torque;
+    def.correctionFactor = joint->correction_factor;
+    if (!(joint->correction_factor >= 0.0f && joint->correction_factor <= 1.0f)) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                    "CorrectionFactor %.9g lies outside [0, 1], to which Box2D v3 clamps it",
+                    (double)joint->correction_factor);
+    }
+    return b2CreateMotorJoint(b->world, &def);
+}
+
+static void b2s3_make_joint(b2s3_builder* b, uint32_t index) {
+    const b2s_joint* joint = &b->view->joints[index];
+    const char* missing = NULL;
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_PULLEY: missing = "a pulley joint"; break;
+    case B2S_JOINT_KIND_GEAR: missing = "a gear joint"; break;
+    case B2S_JOINT_KIND_UNSUPPORTED: missing = "a Farseer-only joint"; break;
+    default:
+        if (joint->kind > B2S_JOINT_KIND_UNSUPPORTED) {
+            B2S3_REPORT(b, B2S_CODE_UNKNOWN_TYPE, "joint", index, joint->name,
+                        "unknown joint kind %u; joint skipped", (unsigned)joint->kind);
+            return;
+        }
+    }
+    if (missing != NULL) {
+        B2S3_REPORT(b, B2S_CODE_SKIPPED_JOINT, "joint", index, joint->name,
+                    "Box2D v3 has no form for %s; joint skipped", missing);
+        return;
+    }
+    b2BodyId a, bb;
+    if (!b2s3_connect(b, index, joint, &a, &bb)) {
+        return;
+    }
+    b2s3_check check = b2s3_joint_check(b, joint);
+    if (!b2s3_passed(&check)) {
+        b2s3_beyond(b, &check, "joint", index, joint->name, "");
+        return;
+    }
+    b2JointId* out = &b->built->joints[index];
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_REVOLUTE: *out = b2s3_make_revolute(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_PRISMATIC: *out = b2s3_make_prismatic(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_DISTANCE: *out = b2s3_make_distance(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_ROPE: *out = b2s3_make_rope(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_LINE: *out = b2s3_make_line(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_WHEEL: *out = b2s3_make_wheel(b, joint, a, bb); break;
+    case B2S_JOINT_KIND_WELD: *out = b2s3_make_weld(b, joint, a, bb); break;
+    case B2S_JOINT_KIND_FRICTION: *out = b2s3_make_friction(b, index, joint, a, bb); break;
+    case B2S_JOINT_KIND_MOTOR: *out = b2s3_make_motor(b, index, joint, a, bb); break;
+    default: break;
+    }
+}
+
+/* Every array of the result, zeroed (null ids), or false when memory runs out. */
+static bool b2s3_allocate(b2s_box2d3_built* built, const struct b2s_scene_view* view) {
+    built->body_count = view->body_count;
+    built->fixture_count = view->fixture_id_count;
+    built->joint_count = view->joint_count;
+    built->bodies = (b2BodyId*)calloc(view->body_count + 1, sizeof(b2BodyId));
+    built->shapes = (b2ShapeId*)calloc(view->fixture_id_count + 1, sizeof(b2ShapeId));
+    built->chains = (b2ChainId*)calloc(view->fixture_id_count + 1, sizeof(b2ChainId));
+    built->joints = (b2JointId*)calloc(view->joint_count + 1, sizeof(b2JointId));
+    return built->bodies != NULL && built->shapes != NULL && built->chains != NULL &&
+           built->joints != NULL;
+}
+
+void b2s_box2d3_built_free(b2s_box2d3_built* built) {
+    if (built == NULL) {
+        return;
+    }
+    free(built->bodies);
+    free(built->shapes);
+    free(built->chains);
+    free(built->joints);
+    b2s_box2d3_reports_free(&built->reports);
+    free(built);
+}
+
+b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world) {
+    b2s_box2d3_built* built = (b2s_box2d3_built*)calloc(1, sizeof(b2s_box2d3_built));
+    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
+    if (built == NULL || view == NULL) {
+        return built;
+    }
+    b2s3_builder b;
+    memset(&b, 0, sizeof b);
+    b.view = view;
+    b.world = world;
+    b.built = built;
+    b.list.reports = &built->reports;
+    b.geometries = (b2s3_geometry*)calloc(view->shape_count + 1, sizeof(b2s3_geometry));
+    b.masses = (b2MassData*)calloc(view->body_count + 1, sizeof(b2MassData));
+    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL;
+    if (ok) {
+        b2s3_check_gravity(&b);
+        for (uint32_t i = 0; i < view->shape_count && !b.list.out_of_memory; ++i) {
+            b2s3_make_shape(&b, i);
+        }
+        for (uint32_t i = 0; i < view->body_count && !b.list.out_of_memory; ++i) {
+            b2s3_make_body(&b, i);
+        }
+        /* Joints come after every body has its final mass: their checks depend on it. */
+        for (uint32_t i = 0; i < view->joint_count && !b.list.out_of_memory; ++i) {
+            b2s3_make_joint(&b, i);
+        }
+    }
+    if (b.geometries != NULL) {
+        for (uint32_t i = 0; i < view->shape_count; ++i) {
+            free(b.geometries[i].points);
+        }
+    }
+    free(b.geometries);
+    free(b.masses);
+    if (!ok || b.list.out_of_memory) {
+        b2s_box2d3_built_free(built);
+        return NULL;
+    }
+    return built;
+}
+
+/* ---- capture */
+
+typedef struct b2s3_capture {
+    b2WorldId world;
+    const b2BodyId* bodies;
+    uint32_t body_count;
+    b2s_builder* builder;
+    b2s3_list list;
+    b2s_error* error;
+    b2s_code failure; /* the first builder error, or B2S_CODE_OK */
+    uint32_t shape_count, fixture_count, joint_count;
+} b2s3_capture;
+
+#define B2S3_CAPTURE_REPORT(c, ...) b2s3_report(&(c)->list, __VA_ARGS__)
+
+static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
+    return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
+}
+
+/* The index the host gave `body`, or B2S_NONE. */
+static uint32_t b2s3_captured_index(const b2s3_capture* c, b2BodyId body) {
+    for (uint32_t i = 0; i < c->body_count; ++i) {
+        if (b2s3_same_body(c->bodies[i], body)) {
+            return i;
+        }
+    }
+    return B2S_NONE;
+}
+
+static bool b2s3_builder_ok(b2s3_capture* c, b2s_code code) {
+    if (code != B2S_CODE_OK && c->failure == B2S_CODE_OK) {
+        c->failure = code;
+    }
+    return code == B2S_CODE_OK;
+}
+
+/* `x` moved by `steps` representable floats. */
+static float b2s3_ulps_away(float x, int steps) {
+    float toward = steps < 0 ? -FLT_MAX : FLT_MAX;
+    for (int i = 0; i < abs(steps); ++i) {
+        x = nextafterf(x, toward);
+    }
+    return x;
+}
+
+/* An angle whose cosf and sinf are the rotation's, searched next to atan2f's. */
+static bool b2s3_angle_of(b2Rot q, float* angle) {
+    float guess = atan2f(q.s, q.c);
+    for (int k = 0; k <= 16; ++k) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            float a = b2s3_ulps_away(guess, sign * k);
+            if (cosf(a) == q.c && sinf(a) == q.s) {
+                *angle = a;
+                return true;
+            }
+        }
+    }
+    *angle = guess;
+    return false;
+}
+
+/* The inertia about the body origin that the build turns back into `central`:
+ * origin - mass * |center|^2 == central, searched next to the direct inverse. */
+static float b2s3_origin_inertia(float central, float mass, b2Vec2 center) {
+    float moment = mass * b2Dot(center, center);
+    float guess = central + moment;
+    for (int k = 0; k <= 16; ++k) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            float x = b2s3_ulps_away(guess, sign * k);
+            if (x - moment == central) {
+                return x;
+            }
+        }
+    }
+    return guess;
+}
+
+/* One component of the velocity the build gives a body's origin, so that v3's
+ * b2Body_ApplyMassFromShapes, adding w x (the centre of mass's shift), gives `target`. */
+static float b2s3_before_shift(float target, float shift) {
+    float guess = target - shift;
+    for (int k = 0; k <= 16; ++k) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            float x = b2s3_ulps_away(guess, sign * k);
+            if (x + shift == target) {
+                return x;
+            }
+        }
+    }
+    return guess;
+}
+
+/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
+ * of mass's, which b2Body_ApplyMassFromShapes moved by w x (R local_center), computed as v3
+ * computes it. */
+static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center, float w,
+                                     b2s_vec2 velocity) {
+    b2Vec2 center = b2TransformPoint(transform, local_center);
+    b2Vec2 shift = b2CrossSV(w, b2Sub(center, transform.p));
+    b2s_vec2 out = {b2s3_before_shift(velocity.x, shift.x), b2s3_before_shift(velocity.y, shift.y)};
+    return out;
+}
+
+static bool b2s3_wide_bits(uint64_t bits) {
+    return (bits >> 16) != 0;
+}
+
+/* A v3 filter in the format's 16 bits: a mask with every higher bit set is "all". */
+static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) {
+    b2s_filter out;
+    uint64_t high_mask = f.maskBits >> 16;
+    bool exact = !b2s3_wide_bits(f.categoryBits) &&
+                 (high_mask == 0 || high_mask == (UINT64_MAX >> 16)) && f.groupIndex >= INT16_MIN &&
+                 f.groupIndex <= INT16_MAX;
+    out.category_bits = (uint16_t)(f.categoryBits & 0xFFFF);
+    out.mask_bits = (uint16_t)(f.maskBits & 0xFFFF);
+    out.group_index = (int16_t)(f.groupIndex < INT16_MIN   ? INT16_MIN
+                                : f.groupIndex > INT16_MAX ? INT16_MAX
+                                                           : f.groupIndex);
+    if (!exact) {
+        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
+                            "its filter (category 0x%llx, mask 0x%llx, group %d) has bits "
+                            "above the format's 16 or a group beyond 16 bits; the low 16 bits "
+                            "were written",
+                            (unsigned long long)f.categoryBits, (unsigned long long)f.maskBits,
+                            f.groupIndex);
+    }
+    return out;
+}
+
+/* One shape and the fixture that carries it; `material` and `density` from the v3 shape. */
+static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_vec2* vertices,
+                             uint32_t count, b2ShapeId from, float density, float friction,
+                             float restitution, bool is_sensor, uint32_t* out_fixture) {
+    uint32_t shape_index = 0;
+    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, shape, vertices, count,
+                                                  &shape_index, c->error))) {
+        return false;
+    }
+    c->shape_count += 1;
+    b2s_fixture fixture;
+    b2s_fixture_default(&fixture);
+    fixture.shape = shape_index;
+    fixture.density = density;
+    fixture.friction = friction;
+    fixture.restitution = restitution;
+    fixture.is_sensor = is_sensor;
+    fixture.filter = b2s3_filter_of(c, b2Shape_GetFilter(from), c->fixture_count);
+    if (!b2s3_builder_ok(c, b2s_builder_add_fixture(c->builder, &fixture, out_fixture,
+                                                    c->error))) {
+        return false;
+    }
+    c->fixture_count += 1;
+    return true;
+}
+
+/* The points of a chain: open, [ghost, points..., ghost], or a loop. */
+static bool b2s3_capture_chain(b2s3_capture* c, b2ChainId chain, b2ShapeId first,
+                               uint32_t* out_fixture) {
+    int count = b2Chain_GetSegmentCount(chain);
+    b2ShapeId* segments = (b2ShapeId*)malloc((size_t)(count > 0 ? count : 1) * sizeof(b2ShapeId));
+    b2s_vec2* points = (b2s_vec2*)malloc(((size_t)count + 3) * sizeof(b2s_vec2));
+    if (segments == NULL || points == NULL) {
+        free(segments);
+        free(points);
+        c->list.out_of_memory = true;
+        return false;
+    }
+    count = b2Chain_GetSegments(chain, segments, count);
+    b2ChainSegment head = b2Shape_GetChainSegment(segments[0]);
+    b2ChainSegment tail = b2Shape_GetChainSegment(segments[count - 1]);
+    bool loop = b2s3_same_point(tail.segment.point2, head.segment.point1) &&
+                b2s3_same_point(tail.ghost2, head.segment.point2) &&
+                b2s3_same_point(head.ghost1, tail.segment.point1);
+    b2s_shape shape;
+    b2s_shape_default(B2S_SHAPE_KIND_CHAIN, &shape);
+    uint32_t n = 0;
+    for (int i = 0; i < count; ++i) {
+        points[n++] = b2s3_to_b2s(b2Shape_GetChainSegment(segments[i]).segment.point1);
+    }
+    if (loop) {
+        shape.is_loop = true;
+    } else {
+        points[n++] = b2s3_to_b2s(tail.segment.point2);
+        shape.has_prev_vertex = true;
+        shape.prev_vertex = b2s3_to_b2s(head.ghost1);
+        shape.has_next_vertex = true;
+        shape.next_vertex = b2s3_to_b2s(tail.ghost2);
+    }
+    b2SurfaceMaterial material = b2Shape_GetSurfaceMaterial(first);
+    bool made = b2s3_add_fixture(c, &shape, points, n, first, 0.0f, material.friction,
+                                 material.restitution, false, out_fixture);
+    free(segments);
+    free(points);
+    return made;
+}
+
+/* The format's shape for one v3 shape, or false when it has none (reported). */
+static bool b2s3_capture_shape(b2s3_capture* c, b2ShapeId id, uint32_t* out_fixture) {
+    b2s_shape shape;
+    b2s_vec2 vertices[B2_MAX_POLYGON_VERTICES];
+    uint32_t count = 0;
+    switch (b2Shape_GetType(id)) {
+    case b2_circleShape: {
+        b2Circle circle = b2Shape_GetCircle(id);
+        b2s_shape_default(B2S_SHAPE_KIND_CIRCLE, &shape);
+        shape.radius = circle.radius;
+        shape.position = b2s3_to_b2s(circle.center);
+        break;
+    }
+    case b2_polygonShape: {
+        b2Polygon polygon = b2Shape_GetPolygon(id);
+        b2s_shape_default(B2S_SHAPE_KIND_POLYGON, &shape);
+        for (int i = 0; i < polygon.count; ++i) {
+            vertices[count++] = b2s3_to_b2s(polygon.vertices[i]);
+        }
+        if (polygon.radius > 0.0f) {
+            B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+                                "a rounded polygon (radius %.9g m): written without its "
+                                "rounding",
+                                (double)polygon.radius);
+        }
+        break;
+    }
+    case b2_segmentShape: {
+        b2Segment segment = b2Shape_GetSegment(id);
+        b2s_shape_default(B2S_SHAPE_KIND_EDGE, &shape);
+        vertices[count++] = b2s3_to_b2s(segment.point1);
+        vertices[count++] = b2s3_to_b2s(segment.point2);
+        break;
+    }
+    default:
+        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+                            "a capsule has no Box2Scene form; not written");
+        return false;
+    }
+    b2SurfaceMaterial material = b2Shape_GetSurfaceMaterial(id);
+    return b2s3_add_fixture(c, &shape, vertices, count, id, b2Shape_GetDensity(id),
+                            material.friction, material.restitution, b2Shape_IsSensor(id),
+                            out_fixture);
+}
+
+static int b2s3_by_index(const void* a, const void* b) {
+    int32_t x = ((const b2ShapeId*)a)->index1, y = ((const b2ShapeId*)b)->index1;
+    return (x > y) - (x < y);
+}
+
+/* The fixtures of one body, in the order its shapes were created (a chain where its first
+ * segment stands), with the masses their densities give. */
+static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fixtures,
+                                  uint32_t* count, b2MassData* computed) {
+    int capacity = b2Body_GetShapeCount(body);
+    b2ShapeId* shapes = (b2ShapeId*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2ShapeId));
+    b2ChainId* chains = (b2ChainId*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2ChainId));
+    b2MassData* masses = (b2MassData*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2MassData));
+    float* densities = (float*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(float));
+    *fixtures = (uint32_t*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(uint32_t));
+    *count = 0;
+    bool ok = shapes != NULL && chains != NULL && masses != NULL && densities != NULL &&
+              *fixtures != NULL;
+    if (!ok) {
+        c->list.out_of_memory = true;
+    }
+    int shape_count = ok ? b2Body_GetShapes(body, shapes, capacity) : 0;
+    qsort(shapes, (size_t)shape_count, sizeof(b2ShapeId), b2s3_by_index);
+    int chain_count = 0;
+    size_t massive = 0;
+    for (int i = 0; i < shape_count && ok; ++i) {
+        b2ShapeId id = shapes[i];
+        uint32_t fixture = 0;
+        if (b2Shape_GetType(id) == b2_chainSegmentShape) {
+            b2ChainId chain = b2Shape_GetParentChain(id);
+            bool seen = false;
+            for (int k = 0; k < chain_count; ++k) {
+                seen = seen || (chains[k].index1 == chain.index1 &&
+                                chains[k].generation == chain.generation);
+            }
+            if (seen) {
+                continue;
+            }
+            chains[chain_count++] = chain;
+            if (!b2s3_capture_chain(c, chain, id, &fixture)) {
+                ok = c->failure == B2S_CODE_OK && !c->list.out_of_memory;
+                continue;
+            }
+        } else if (!b2s3_capture_shape(c, id, &fixture)) {
+            ok = c->failure == B2S_CODE_OK && !c->list.out_of_memory;
+            continue;
+        } else {
+            densities[massive] = b2Shape_GetDensity(id);
+            masses[massive] = b2Shape_GetMassData(id);
+            massive += 1;
+        }
+        (*fixtures)[(*count)++] = fixture;
+    }
+    bool kept = true;
+    *computed = b2s3_mass_from_shapes(masses, densities, massive, b2Body_IsFixedRotation(body),
+                                      &kept);
+    free(shapes);
+    free(chains);
+    free(masses);
+    free(densities);
+    return ok;
+}
+
+static bool b2s3_same_mass(b2MassData a, b2MassData b) {
+    return a.mass == b.mass && a.center.x == b.center.x && a.center.y == b.center.y &&
+           a.rotationalInertia == b.rotationalInertia;
+}
+
+static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
+    b2BodyId id = c->bodies[index];
+    uint32_t* fixtures = NULL;
+    uint32_t fixture_count = 0;
+    b2MassData computed;
+    if (!b2s3_capture_fixtures(c, id, &fixtures, &fixture_count, &computed)) {
+        free(fixtures);
+        return false;
+    }
+    b2BodyType type = b2Body_GetType(id);
+    b2s_body body;
+    b2s_body_default((uint32_t)type, &body);
+    body.position = b2s3_to_b2s(b2Body_GetPosition(id));
+    if (!b2s3_angle_of(b2Body_GetRotation(id), &body.angle)) {
+        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
+                            "no angle has exactly its rotation's cosine and sine; the nearest, "
+                            "%.9g rad, was written",
+                            (double)body.angle);
+    }
+    body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
+    if (type == b2_dynamicBody) {
+        body.linear_velocity = b2s3_origin_velocity(b2Body_GetTransform(id), computed.center,
+                                                    b2Body_GetAngularVelocity(id),
+                                                    body.linear_velocity);
+    }
+    body.angular_velocity = b2Body_GetAngularVelocity(id);
+    body.linear_damping = b2Body_GetLinearDamping(id);
+    body.angular_damping = b2Body_GetAngularDamping(id);
+    body.gravity_scale = b2Body_GetGravityScale(id);
+    body.allow_sleep = b2Body_IsSleepEnabled(id);
+    body.awake = b2Body_IsAwake(id);
+    body.bullet = b2Body_IsBullet(id);
+    body.fixed_rotation = b2Body_IsFixedRotation(id);
+    body.active = b2Body_IsEnabled(id);
+    const char* name = b2Body_GetName(id);
+    body.name = name != NULL && name[0] != '\0' ? name : NULL;
+    if (type == b2_dynamicBody) {
+        b2MassData actual = b2Body_GetMassData(id);
+        if (!b2s3_same_mass(actual, b2s3_positive_mass(computed))) {
+            body.mass_data.mass_given = true;
+            body.mass_data.mass = actual.mass;
+            body.mass_data.center_given = true;
+            body.mass_data.center = b2s3_to_b2s(actual.center);
+            body.mass_data.inertia_given = true;
+            body.mass_data.inertia =
+                b2s3_origin_inertia(actual.rotationalInertia, actual.mass, actual.center);
+        }
+    }
+    uint32_t added = 0;
+    bool ok = b2s3_builder_ok(c, b2s_builder_add_body(c->builder, &body, fixtures, fixture_count,
+                                                      &added, c->error));
+    free(fixtures);
+    return ok;
+}
+
+static int b2s3_joint_by_index(const void* a, const void* b) {
+    int32_t x = ((const b2JointId*)a)->index1, y = ((const b2JointId*)b)->index1;
+    return (x > y) - (x < y);
+}
+
+static void b2s3_capture_lossy(b2s3_capture* c, const char* what) {
+    B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                        "%s has no Box2Scene form; written without it", what);
+}
+
+/* The format's joint for one v3 joint, or false when it has none (reported). */
+static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
+    b2JointType type = b2Joint_GetType(id);
+    uint32_t kind;
+    switch (type) {
+    case b2_revoluteJoint: kind = B2S_JOINT_KIND_REVOLUTE; break;
+    case b2_prismaticJoint: kind = B2S_JOINT_KIND_PRISMATIC; break;
+    case b2_weldJoint: kind = B2S_JOINT_KIND_WELD; break;
+    case b2_motorJoint:
+        kind = b2MotorJoint_GetCorrectionFactor(id) == 0.0f &&
+                       b2s3_same_point(b2MotorJoint_GetLinearOffset(id), b2Vec2_zero) &&
+                       b2MotorJoint_GetAngularOffset(id) == 0.0f
+                   ? B2S_JOINT_KIND_FRICTION
+                   : B2S_JOINT_KIND_MOTOR;
+        break;
+    case b2_distanceJoint:
+        kind = b2DistanceJoint_IsSpringEnabled(id) && b2DistanceJoint_GetSpringHertz(id) == 0.0f
+                   ? B2S_JOINT_KIND_ROPE
+                   : B2S_JOINT_KIND_DISTANCE;
+        break;
+    case b2_wheelJoint:
+        kind = b2WheelJoint_IsSpringEnabled(id) ? B2S_JOINT_KIND_WHEEL : B2S_JOINT_KIND_LINE;
+        break;
+    default:
+        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                            "a %s joint has no Box2Scene form; not written",
+                            type == b2_mouseJoint ? "mouse" : "filter");
+        return false;
+    }
+    b2s_joint_default(kind, joint);
+    if (kind != B2S_JOINT_KIND_FRICTION && kind != B2S_JOINT_KIND_MOTOR) {
+        joint->local_anchor_a = b2s3_to_b2s(b2Joint_GetLocalAnchorA(id));
+        joint->local_anchor_b = b2s3_to_b2s(b2Joint_GetLocalAnchorB(id));
+    }
+    switch (kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+        joint->reference_angle = b2Joint_GetReferenceAngle(id);
+        joint->enable_limit = b2RevoluteJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2RevoluteJoint_GetLowerLimit(id);
+        joint->upper_limit = b2RevoluteJoint_GetUpperLimit(id);
+        joint->enable_motor = b2RevoluteJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2RevoluteJoint_GetMotorSpeed(id);
+        joint->max_motor_torque = b2RevoluteJoint_GetMaxMotorTorque(id);
+        if (b2RevoluteJoint_IsSpringEnabled(id)) {
+            b2s3_capture_lossy(c, "a revolute joint's spring");
+        }
+        break;
+    case B2S_JOINT_KIND_PRISMATIC:
+        joint->local_axis_a = b2s3_to_b2s(b2Joint_GetLocalAxisA(id));
+        joint->reference_angle = b2Joint_GetReferenceAngle(id);
+        joint->enable_limit = b2PrismaticJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2PrismaticJoint_GetLowerLimit(id);
+        joint->upper_limit = b2PrismaticJoint_GetUpperLimit(id);
+        joint->enable_motor = b2PrismaticJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2PrismaticJoint_GetMotorSpeed(id);
+        joint->max_motor_force = b2PrismaticJoint_GetMaxMotorForce(id);
+        if (b2PrismaticJoint_IsSpringEnabled(id)) {
+            b2s3_capture_lossy(c, "a prismatic joint's spring");
+        }
+        break;
+    case B2S_JOINT_KIND_DISTANCE:
+        joint->length = b2DistanceJoint_GetLength(id);
+        if (b2DistanceJoint_IsSpringEnabled(id)) {
+            joint->frequency_hz = b2DistanceJoint_GetSpringHertz(id);
+            joint->damping_ratio = b2DistanceJoint_GetSpringDampingRatio(id);
+        }
+        if (b2DistanceJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's length range");
+        }
+        if (b2DistanceJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's motor");
+        }
+        break;
+    case B2S_JOINT_KIND_ROPE:
+        joint->max_length = b2DistanceJoint_GetMaxLength(id);
+        if (!b2DistanceJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a slack distance joint without its length limit");
+        }
+        if (b2DistanceJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's motor");
+        }
+        break;
+    case B2S_JOINT_KIND_WHEEL:
+        joint->local_axis_a = b2s3_to_b2s(b2Joint_GetLocalAxisA(id));
+        joint->frequency_hz = b2WheelJoint_GetSpringHertz(id);
+        joint->damping_ratio = b2WheelJoint_GetSpringDampingRatio(id);
+        joint->enable_motor = b2WheelJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2WheelJoint_GetMotorSpeed(id);
+        joint->max_motor_torque = b2WheelJoint_GetMaxMotorTorque(id);
+        if (b2WheelJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a wheel joint's limit beside its spring");
+        }
+        break;
+    case B2S_JOINT_KIND_LINE:
+        joint->local_axis_a = b2s3_to_b2s(b2Joint_GetLocalAxisA(id));
+        joint->enable_limit = b2WheelJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2WheelJoint_GetLowerLimit(id);
+        joint->upper_limit = b2WheelJoint_GetUpperLimit(id);
+        if (b2WheelJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a springless wheel joint's rotation motor");
+        }
+        break;
+    case B2S_JOINT_KIND_WELD:
+        joint->reference_angle = b2Joint_GetReferenceAngle(id);
+        joint->frequency_hz = b2WeldJoint_GetAngularHertz(id);
+        joint->damping_ratio = b2WeldJoint_GetAngularDampingRatio(id);
+        if (b2WeldJoint_GetLinearHertz(id) != 0.0f) {
+            b2s3_capture_lossy(c, "a weld joint's linear spring");
+        }
+        break;
+    case B2S_JOINT_KIND_FRICTION:
+    case B2S_JOINT_KIND_MOTOR:
+        joint->linear_offset = b2s3_to_b2s(b2MotorJoint_GetLinearOffset(id));
+        joint->angular_offset = b2MotorJoint_GetAngularOffset(id);
+        joint->max_force = b2MotorJoint_GetMaxForce(id);
+        joint->max_torque = b2MotorJoint_GetMaxTorque(id);
+        joint->correction_factor = b2MotorJoint_GetCorrectionFactor(id);
+        break;
+    }
+    return true;
+}
+
+/* Every joint whose two bodies are captured, once, in creation order. */
+static bool b2s3_capture_joints(b2s3_capture* c) {
+    size_t total = 0;
+    for (uint32_t i = 0; i < c->body_count; ++i) {
+        total += (size_t)b2Body_GetJointCount(c->bodies[i]);
+    }
+    b2JointId* joints = (b2JointId*)malloc((total > 0 ? total : 1) * sizeof(b2JointId));
+    if (joints == NULL) {
+        c->list.out_of_memory = true;
+        return false;
+    }
+    size_t count = 0;
+    for (uint32_t i = 0; i < c->body_count; ++i) {
+        int capacity = b2Body_GetJointCount(c->bodies[i]);
+        int found = b2Body_GetJoints(c->bodies[i], joints + count, capacity);
+        size_t kept = count;
+        for (int k = 0; k < found; ++k) {
+            b2JointId id = joints[count + (size_t)k];
+            /* each joint once: from its body A when that is captured, else from B */
+            uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
+            if (a == i || (a == B2S_NONE && b2s3_same_body(b2Joint_GetBodyB(id), c->bodies[i]))) {
+                joints[kept++] = id;
+            }
+        }
+        count = kept;
+    }
+    qsort(joints, count, sizeof(b2JointId), b2s3_joint_by_index);
+    bool ok = true;
+    for (size_t i = 0; i < count && ok; ++i) {
+        b2JointId id = joints[i];
+        uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
+        uint32_t bb = b2s3_captured_index(c, b2Joint_GetBodyB(id));
+        if (a == B2S_NONE || bb == B2S_NONE) {
+            B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                                "it connects body %u to a body the host did not name; not "
+                                "written",
+                                (unsigned)(a == B2S_NONE ? bb : a));
+            continue;
+        }
+        b2s_joint joint;
+        if (!b2s3_joint_of(c, id, &joint)) {
+            continue;
+        }
+        joint.body_a = a;
+        joint.body_b = bb;
+        joint.collide_connected = b2Joint_GetCollideConnected(id);
+        uint32_t added = 0;
+        ok = b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error));
+        c->joint_count += ok ? 1 : 0;
+    }
+    free(joints);
+    return ok;
+}
+
+static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* message) {
+    if (error != NULL) {
+        memset(error, 0, sizeof *error);
+        error->code = code;
+        snprintf(error->message, sizeof error->message, "%s", message);
+    }
+    return code;
+}
+
+b2s_code b2s_box2d3_capture_world(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                  b2s_scene** out_scene, b2s_box2d3_reports* reports,
+                                  b2s_error* error) {
+    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  "b2s_box2d3_capture_world needs out_scene, reports and, "
+                                  "for a body count above 0, bodies");
+    }
+    *out_scene = NULL;
+    reports->items = NULL;
+    reports->count = 0;
+    if (!b2World_IsValid(world)) {
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, "the world is not valid");
+    }
+    for (uint32_t i = 0; i < body_count; ++i) {
+        if (!b2Body_IsValid(bodies[i]) || bodies[i].world0 != world.index1 - 1) {
+            char message[96];
+            snprintf(message, sizeof message, "body %u is not a live body of this world",
+                     (unsigned)i);
+            return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+        }
+        for (uint32_t k = 0; k < i; ++k) {
+            if (b2s3_same_body(bodies[k], bodies[i])) {
+                char message[96];
+                snprintf(message, sizeof message, "bodies %u and %u are the same body",
+                         (unsigned)k, (unsigned)i);
+                return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+            }
+        }
+    }
+    b2s3_capture c;
+    memset(&c, 0, sizeof c);
+    c.world = world;
+    c.bodies = bodies;
+    c.body_count = body_count;
+    c.builder = b2s_builder_new();
+    c.list.reports = reports;
+    c.error = error;
+    b2Vec2 gravity = b2World_GetGravity(world);
+    b2s_vec2 scene_gravity = b2s3_to_b2s(gravity);
+    bool ok = b2s3_builder_ok(&c, b2s_builder_set_gravity(c.builder, &scene_gravity, error));
+    for (uint32_t i = 0; i < body_count && ok; ++i) {
+        ok = b2s3_capture_body(&c, i);
+    }
+    ok = ok && b2s3_capture_joints(&c);
+    if (c.list.out_of_memory) {
+        b2s_builder_free(c.builder);
+        b2s_box2d3_reports_free(reports);
+        return b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    }
+    if (!ok) {
+        b2s_builder_free(c.builder);
+        return c.failure != B2S_CODE_OK ? c.failure : B2S_CODE_INTERNAL;
+    }
+    return b2s_builder_finish(c.builder, out_scene, error);
+}
+
+#endif /* BOX2SCENE_BOX2D3_IMPL_H */
