@@ -98,7 +98,15 @@ typedef struct b2s_box2d3_built {
 #define B2S_BOX2D3_MIN_INERTIA 1e-20f      /**< kg m^2 about the centre of mass, unless 0 */
 #define B2S_BOX2D3_MAX_INERTIA 1e12f
 #define B2S_BOX2D3_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
-#define B2S_BOX2D3_MAX_LEVER 1e3f          /**< a joint anchor's distance in radii of gyration */
+/** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
+ *  for a revolute joint (a pendulum: a 10 cm ball can hang 70 m out) and for every other
+ *  kind, whose solvers in v3 diverge far sooner on a light body held far out. */
+#define B2S_BOX2D3_MAX_LEVER_REVOLUTE 1e3f
+#define B2S_BOX2D3_MAX_LEVER 5.0f
+/** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies.
+ *  v3, unlike 2.4, does not bound how far a body moves in a step: a stronger motor throws
+ *  a light body past B2_HUGE. */
+#define B2S_BOX2D3_MAX_JOINT_ACCELERATION 1e5f
 /** The maximum linear speed b2s_box2d3_world_def gives: above B2S_BOX2D3_MAX_SPEED with
  *  room for gravity, still small enough that 600 steps stay within B2_HUGE. */
 #define B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED 1.5e3f

@@ -20,6 +20,9 @@
  * +-pi (B2_PI). */
 #define B2S3_PI 3.14159265359f
 #define B2S3_REVOLUTE_LIMIT (0.99f * B2S3_PI)
+/* m: a polygon's Centroid this close to the one v3 computes is the same point written by
+ * another float computation, not an override. */
+#define B2S3_CENTROID_NOISE (0.01f * B2S3_LINEAR_SLOP)
 
 /* ---- reports */
 
@@ -312,8 +315,9 @@ static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* 
     }
     out->kind = B2S3_POLYGON;
     out->polygon = b2MakePolygon(&hull, 0.0f);
-    if (shape->centroid_given && (shape->centroid.x != out->polygon.centroid.x ||
-                                  shape->centroid.y != out->polygon.centroid.y)) {
+    /* The editor writes the centroid it computed, a few ulps from v3's: that is no override. */
+    if (shape->centroid_given &&
+        b2Distance(b2s3_to_b2(shape->centroid), out->polygon.centroid) > B2S3_CENTROID_NOISE) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
                     "its Centroid (%.9g, %.9g) cannot be given to Box2D v3, which uses the "
                     "polygon's own (%.9g, %.9g)",
@@ -864,7 +868,7 @@ static b2BodyId b2s3_created_body(const b2s3_builder* b, uint32_t index) {
  * of mass) and invert 2x2 matrices of such terms: past the working range, their products
  * overflow or the determinant loses every bit (see the README). */
 static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const char* field,
-                              uint32_t body, b2Vec2 anchor) {
+                              uint32_t body, b2Vec2 anchor, float lever) {
     if (b2Body_GetType(b->built->bodies[body]) != b2_dynamicBody) {
         return;
     }
@@ -879,12 +883,40 @@ static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const ch
                   "working range (at most %g 1/kg)",
                   field, (double)r, (unsigned)body, (double)mass->mass, (double)inertia,
                   (double)compliance, (double)B2S_BOX2D3_MAX_COMPLIANCE);
-    } else if (inertia > 0.0f && !(r <= B2S_BOX2D3_MAX_LEVER * sqrtf(inertia / mass->mass))) {
+    } else if (inertia > 0.0f && !(r <= lever * sqrtf(inertia / mass->mass))) {
         b2s3_fail(check,
                   "%s: the joint acts %g radii of gyration from the centre of mass of body %u, "
                   "beyond Box2D v3's working range (at most %g)",
                   field, (double)(r / sqrtf(inertia / mass->mass)), (unsigned)body,
-                  (double)B2S_BOX2D3_MAX_LEVER);
+                  (double)lever);
+    }
+}
+
+/* What a motor's or friction's force (N) does to `body`. (Torques need no bound: v3 limits
+ * how far a body turns in a step.) */
+static void b2s3_check_drive(const b2s3_builder* b, b2s3_check* check, uint32_t body,
+                             float force) {
+    if (b2Body_GetType(b->built->bodies[body]) != b2_dynamicBody) {
+        return;
+    }
+    const b2MassData* mass = &b->masses[body];
+    float acceleration = force / mass->mass;
+    if (!(acceleration <= B2S_BOX2D3_MAX_JOINT_ACCELERATION)) {
+        b2s3_fail(check,
+                  "its motor or friction force %.9g N accelerates body %u (mass %.9g kg) by %g "
+                  "m/s^2, beyond Box2D v3's working range (at most %g m/s^2)",
+                  (double)force, (unsigned)body, (double)mass->mass, (double)acceleration,
+                  (double)B2S_BOX2D3_MAX_JOINT_ACCELERATION);
+    }
+}
+
+/* The force a joint's motor or friction may apply, as v3 will get it. */
+static float b2s3_drive_force(const b2s_joint* joint) {
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_PRISMATIC: return joint->enable_motor ? joint->max_motor_force : 0.0f;
+    case B2S_JOINT_KIND_FRICTION:
+    case B2S_JOINT_KIND_MOTOR: return joint->max_force;
+    default: return 0.0f;
     }
 }
 
@@ -961,10 +993,16 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
         }
     }
     if (b2s3_passed(&check) && anchored) {
+        float lever = joint->kind == B2S_JOINT_KIND_REVOLUTE ? B2S_BOX2D3_MAX_LEVER_REVOLUTE
+                                                             : B2S_BOX2D3_MAX_LEVER;
         b2s3_check_anchor(b, &check, "LocalAnchorA", joint->body_a,
-                          b2s3_to_b2(joint->local_anchor_a));
+                          b2s3_to_b2(joint->local_anchor_a), lever);
         b2s3_check_anchor(b, &check, "LocalAnchorB", joint->body_b,
-                          b2s3_to_b2(joint->local_anchor_b));
+                          b2s3_to_b2(joint->local_anchor_b), lever);
+    }
+    if (b2s3_passed(&check)) {
+        b2s3_check_drive(b, &check, joint->body_a, b2s3_drive_force(joint));
+        b2s3_check_drive(b, &check, joint->body_b, b2s3_drive_force(joint));
     }
     return check;
 }
@@ -1017,12 +1055,9 @@ static b2JointId b2s3_make_revolute(b2s3_builder* b, uint32_t index, const b2s_j
     def.collideConnected = joint->collide_connected;
     def.localAnchorA = b2s3_to_b2(joint->local_anchor_a);
     def.localAnchorB = b2s3_to_b2(joint->local_anchor_b);
-    def.referenceAngle = joint->reference_angle;
-    if (fabsf(joint->reference_angle) > B2S3_PI) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
-                    "ReferenceAngle %.9g lies beyond +-pi, to which Box2D v3 clamps it",
-                    (double)joint->reference_angle);
-    }
+    /* v3 clamps a reference angle to +-pi but measures the joint angle unwound: the same
+     * angle less its whole turns keeps the joint as it was. */
+    def.referenceAngle = (float)remainder((double)joint->reference_angle, 6.283185307179586);
     float lower = joint->lower_limit, upper = joint->upper_limit;
     b2s3_ordered_limits(b, index, joint, "LowerAngle", "UpperAngle", &lower, &upper);
     def.lowerAngle = b2s3_clamped(lower, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
