@@ -139,7 +139,8 @@ enum b2s_code
    */
   B2S_CODE_BAD_RATIO = 51,
   /**
-   * Two fixtures of a Version 3 file share an `Id`.
+   * No longer reported: a Version 3 fixture's `Id` is informational (its Pairs name
+   * fixtures by position), so Ids may repeat. The number stays reserved.
    */
   B2S_CODE_DUPLICATE_ID = 52,
   B2S_CODE_LEGACY_UNVERSIONED = 100,

@@ -3,8 +3,6 @@
 //! and gear joints against the joints they couple.
 #![forbid(unsafe_code)]
 
-use std::collections::HashMap;
-
 use crate::error::Code;
 use crate::parse::{Parsed, Parser, Problem, problem};
 use crate::scene::{JointKind, NONE, Range};
@@ -16,39 +14,32 @@ pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
     check_references(p)
 }
 
-/// Version 3: each body's `<Pair FixtureId="k" ShapeId="s"/>` becomes a fixture: template
-/// k on shape s, with the density of s (spec section 8.2).
+/// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th
+/// fixture template on the s-th shape, with the density of s (spec section 8.2). The
+/// templates' `Id` attributes are never consulted: Farseer wrote a process-wide counter
+/// there, and bound Pairs by position.
 fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
-    let mut template_by_id = HashMap::new();
-    for (index, &(id, at)) in p.origins.fixture_template_ids.iter().enumerate() {
-        if let Some(first) = template_by_id.insert(id, index) {
-            return Err(problem(
-                Code::DuplicateId,
-                at,
-                format!("fixtures {first} and {index} both have Id {id}"),
-            ));
-        }
-    }
     let templates = std::mem::take(&mut p.scene.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
     for (k, pair) in p.origins.pairs.iter().enumerate() {
-        let (id, id_at) = pair.fixture_id;
-        let Some(&template) = template_by_id.get(&id) else {
-            return Err(problem(
-                Code::IdOutOfRange,
-                id_at,
-                format!("body {} binds fixture Id {id}, but no fixture has that Id", pair.body),
-            ));
+        let (template, template_at) = pair.fixture;
+        let Some(&template) = templates.get(template as usize) else {
+            let why = format!(
+                "body {} binds fixture {template} (a position in <Fixtures>, counted from 0), but {}",
+                pair.body,
+                has(templates.len(), "fixture", "fixtures")
+            );
+            return Err(problem(Code::IdOutOfRange, template_at, why));
         };
         let (shape, shape_at) = pair.shape;
-        let mut fixture = templates[template];
+        let mut fixture = template;
         fixture.shape = shape;
         fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
         p.scene.fixtures.push(fixture);
         p.scene.fixture_ids.push(k as u32);
         p.origins.fixture_shapes.push(shape_at);
-        p.origins.fixture_ids.push(id_at);
+        p.origins.fixture_ids.push(template_at);
         let fixtures = &mut p.scene.bodies[pair.body as usize].fixtures;
         if fixtures.count == 0 {
             *fixtures = Range { first: k as u32, count: 0 };
@@ -58,14 +49,16 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
     Ok(())
 }
 
+/// "the file has 1 shape", "the file has 3 shapes".
+fn has(n: usize, one: &str, many: &str) -> String {
+    format!("the file has {n} {}", if n == 1 { one } else { many })
+}
+
 /// Checks every ID against its container, and the gear joints' targets; reports the error
 /// earliest in the file.
 fn check_references(p: &Parser) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
-    let has = |n: usize, one: &str, many: &str| {
-        format!("the file has {n} {}", if n == 1 { one } else { many })
-    };
     for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
         if f.shape as usize >= s.shapes.len() {
             let why = format!(

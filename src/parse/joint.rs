@@ -10,6 +10,7 @@ elements! {
     enum JointChild {
         Name,
         UserData,
+        Tag,
         BodyA,
         BodyB,
         JointA,
@@ -214,7 +215,8 @@ impl<'a> Parser<'a> {
             };
             use JointChild::*;
             let legacy = self.version == 0;
-            let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected);
+            let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected)
+                || (name == Tag && self.tag_is_user_data());
             let named_joint =
                 matches!(name, JointA | JointB) && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
@@ -233,7 +235,7 @@ impl<'a> Parser<'a> {
             }
             match name {
                 Name => joint.name = self.string(&child)?,
-                UserData => joint.user_data = self.user_data(&child)?,
+                UserData | Tag => joint.user_data = self.user_data(&child)?,
                 CollideConnected => joint.collide_connected = self.boolean(&child)?,
                 BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
                 BodyB => (joint.body_b, at.body_b) = self.id(&child)?,

@@ -235,8 +235,6 @@ pub(crate) struct Origins {
     pub joints: Vec<JointOrigin>,
     /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
     pub shape_densities: Vec<f32>,
-    /// Version 3: per fixture template, its `Id` attribute and where that is.
-    pub fixture_template_ids: Vec<(u32, usize)>,
     /// Version 3: every body's `Bindings`, in body order.
     pub pairs: Vec<Pair>,
 }
@@ -251,7 +249,6 @@ impl Origins {
             fixture_ids,
             joints,
             shape_densities,
-            fixture_template_ids,
             pairs,
         } = other;
         self.fixture_shapes.extend(fixture_shapes);
@@ -259,15 +256,15 @@ impl Origins {
         self.fixture_ids.extend(fixture_ids);
         self.joints.extend(joints);
         self.shape_densities.extend(shape_densities);
-        self.fixture_template_ids.extend(fixture_template_ids);
         self.pairs.extend(pairs.into_iter().map(|p| Pair { body: p.body + bodies_before, ..p }));
     }
 }
 
-/// A Version 3 `<Pair FixtureId="k" ShapeId="s"/>`: one fixture of a body.
+/// A Version 3 `<Pair FixtureId="f" ShapeId="s"/>`: one fixture of a body, made of the
+/// f-th fixture template and the s-th shape (positions, with where each is written).
 pub(crate) struct Pair {
     pub body: u32,
-    pub fixture_id: (u32, usize),
+    pub fixture: (u32, usize),
     pub shape: (u32, usize),
 }
 
@@ -353,6 +350,18 @@ impl<'a> Parser<'a> {
     /// Whether the file uses Farseer's Version 3 layout (spec section 8.2).
     pub fn farseer_layout(&self) -> bool {
         self.version >= 3
+    }
+
+    /// Version 3 (Aether.Physics2D's spelling): `<Tag>` is `<UserData>` (spec section 8.2).
+    pub fn tag_is_user_data(&self) -> bool {
+        self.farseer_layout()
+    }
+
+    /// Whether a `<Fixture>` or `<Body>` may carry Farseer's informational `Id` attribute
+    /// (Version 2 from July 2013, and Version 3), which is accepted and kept nowhere (spec
+    /// section 8.2). A Version 3 Pair names its fixture by position, never by this `Id`.
+    pub fn id_is_informational(&self) -> bool {
+        self.version >= 2
     }
 
     /// Warns that `what` needs Version 2 when the file says less.
