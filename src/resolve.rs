@@ -5,7 +5,7 @@
 
 use crate::error::Code;
 use crate::parse::{Parsed, Parser, Problem, problem};
-use crate::scene::{JointKind, NONE, Range};
+use crate::scene::{JointKind, NONE, Object, Place, Range};
 
 pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
     if p.farseer_layout() {
@@ -46,7 +46,26 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
         }
         fixtures.count += 1;
     }
+    move_kept_of_templates(p, templates.len());
     Ok(())
+}
+
+/// What the file held beyond a template's records goes with the first fixture made from
+/// it; that of a template no Pair names, to the end of `<Fixtures>` (its attributes to
+/// `<World>`), so the writer still has it.
+fn move_kept_of_templates(p: &mut Parser, templates: usize) {
+    let mut first_made = vec![None; templates];
+    for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
+        first_made[pair.fixture.0 as usize] = Some(k as u32);
+    }
+    for kept in &mut p.scene.kept {
+        let Object::Fixture(template) = kept.object else { continue };
+        (kept.object, kept.place) = match (first_made[template as usize], kept.place) {
+            (Some(made), place) => (Object::Fixture(made), place),
+            (None, Place::Attribute) => (Object::World, Place::Attribute),
+            (None, _) => (Object::World, Place::Inside { within: "Fixtures", before: "" }),
+        };
+    }
 }
 
 /// "the file has 1 shape", "the file has 3 shapes".

@@ -199,8 +199,10 @@ fn read_piece<'a>(
     let mut parser = Parser::new(source, options);
     let root = parser.root().ok()?;
     parser.read_version(&root).ok()?;
-    // The calling thread counts and reports everything before `at`.
+    // The calling thread counts, reports and keeps everything before `at`.
     parser.warnings.clear();
+    parser.comments.clear();
+    parser.scene.kept.clear();
     parser.elements = 0;
     let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
     parser.open.push(tag.name.clone());

@@ -1,8 +1,8 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Parsed, Parser, Seen, Tag, elements, problem};
+use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
-use crate::scene::{Body, BodyKind, MassData, Range};
+use crate::scene::{Body, BodyKind, MassData, Object, Range};
 
 elements! {
     enum BodyChild {
@@ -34,6 +34,7 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Body(self.scene.bodies.len() as u32));
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
@@ -69,7 +70,10 @@ impl<'a> Parser<'a> {
                     self.newer_construct(child.at, "<GravityScale>")?;
                     body.gravity_scale = self.float(&child)?;
                 }
-                BodyChild::MassData => self.mass_data(&child, &mut body.mass_data)?,
+                BodyChild::MassData => {
+                    let mass = &mut body.mass_data;
+                    self.within(BodyChild::MassData.name(), |p| p.mass_data(&child, mass))?
+                }
                 BodyChild::Fixtures => body.fixtures = self.fixture_ids(&child)?,
                 BodyChild::Bindings => self.bindings(&child)?,
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
@@ -79,6 +83,7 @@ impl<'a> Parser<'a> {
                 },
             }
         }
+        self.end_object();
         self.origins.bodies.push(tag.at);
         self.scene.bodies.push(body);
         Ok(())

@@ -1,8 +1,8 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Parsed, Parser, Seen, Tag, elements};
+use super::{Element, Parsed, Parser, Seen, Tag, elements};
 use crate::error::Code;
-use crate::scene::{Filter, Fixture};
+use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
 elements! {
@@ -25,6 +25,7 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Fixture(self.scene.fixtures.len() as u32));
         let attrs = self.attributes(&tag)?;
         let known: &[&str] = if self.id_is_informational() { &["id"] } else { &[] };
         self.unknown_attributes(&tag, &attrs, known)?;
@@ -46,7 +47,10 @@ impl<'a> Parser<'a> {
                 Friction => fixture.friction = self.non_negative(&child)?,
                 Restitution => fixture.restitution = self.non_negative(&child)?,
                 IsSensor => fixture.is_sensor = self.boolean(&child)?,
-                FilterData => self.filter(&child, &mut fixture.filter)?,
+                FilterData => {
+                    let filter = &mut fixture.filter;
+                    self.within(FilterData.name(), |p| p.filter(&child, filter))?
+                }
                 UserData => fixture.user_data = self.user_data(&child)?,
                 FixtureChild::Tag => match self.tag_is_user_data() {
                     true => fixture.user_data = self.user_data(&child)?,
@@ -58,6 +62,7 @@ impl<'a> Parser<'a> {
         if !seen.contains(FixtureChild::Shape) && !self.farseer_layout() {
             return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
+        self.end_object();
         self.origins.fixture_shapes.push(shape_at);
         self.scene.fixtures.push(fixture);
         Ok(())

@@ -3,7 +3,7 @@
 
 use super::{Element, JointOrigin, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
-use crate::scene::{Joint, JointKind, NONE, Vec2};
+use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
 use crate::validate;
 
 elements! {
@@ -204,7 +204,12 @@ fn joint_kind(value: &str) -> Option<JointKind> {
 
 impl<'a> Parser<'a> {
     pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Joint(self.scene.joints.len() as u32));
         let kind = self.joint_type(&tag)?;
+        if kind == JointKind::Unsupported {
+            // It has no Box2Scene form: the writer writes back its whole text.
+            self.pin(tag.at);
+        }
         let mut joint = Joint::new(kind);
         let mut at =
             JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
@@ -223,8 +228,7 @@ impl<'a> Parser<'a> {
             if !common && !named_joint && slot.is_none() {
                 let message =
                     format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
-                self.warn(Code::UnknownElement, child.at, message)?;
-                self.skip(&child)?;
+                self.ignore(&child, message)?;
                 continue;
             }
             if repeated {
@@ -257,6 +261,11 @@ impl<'a> Parser<'a> {
             self.line_is_wheel(&tag, &mut joint, &seen)?;
         }
         self.check_joint(&tag, &joint, &at)?;
+        if kind == JointKind::Unsupported {
+            let text = self.unpin(self.position());
+            self.keep_str(Place::Whole, &text);
+        }
+        self.end_object();
         self.origins.joints.push(at);
         self.scene.joints.push(joint);
         Ok(())
