@@ -130,3 +130,106 @@ fn ten_thousand_generated_scenes_round_trip_exactly() {
         assert_round_trip(&scene, &format!("generated scene {i}"));
     }
 }
+
+/// The `<!-- ... -->` comments of a text, in order.
+fn comments(text: &str) -> Vec<&str> {
+    text.match_indices("<!--")
+        .map(|(at, _)| &text[at..at + text[at..].find("-->").unwrap() + 3])
+        .collect()
+}
+
+/// The unknown-element warnings of a scene, by message (elements and attributes named
+/// with the object they were in).
+fn unknown_content(scene: &Scene) -> Vec<String> {
+    let mut found: Vec<String> = (scene.diagnostics().iter())
+        .filter(|d| d.code() == Some(Code::UnknownElement))
+        .map(|d| scene.text(d.message).unwrap().to_string())
+        .collect();
+    found.sort();
+    found
+}
+
+/// What `fmt` does, over every scene file of the project: nothing the file said is lost
+/// (its comments, its unknown elements and attributes, its joints), the result loads to
+/// the same scene, and formatting it again gives it again.
+#[test]
+fn fmt_of_every_scene_file_loses_nothing_the_file_said() {
+    for path in scene_files() {
+        let source = std::fs::read_to_string(&path).unwrap();
+        let scene = load_path(&path, &LoadOptions::default()).unwrap();
+        for options in MODES {
+            let what = format!("{} ({options:?})", path.display());
+            let written = write(&scene, &options).unwrap();
+            let mut expected = comments(&source);
+            let mut got = comments(&written);
+            expected.sort();
+            got.sort();
+            assert_eq!(got, expected, "{what}: the comments");
+            let again = load_text(&written);
+            assert_eq!(unknown_content(&again), unknown_content(&scene), "{what}: unknown content");
+            for d in scene.diagnostics().iter().filter(|d| d.code() == Some(Code::UnknownElement)) {
+                let line = source.lines().nth(d.line as usize - 1).unwrap();
+                let element = line[d.column as usize - 1..].split(['>', '"']).next().unwrap();
+                assert!(written.contains(element), "{what}: {element} is not written");
+            }
+            let kinds = |s: &Scene| s.joints().iter().map(|j| j.kind()).collect::<Vec<_>>();
+            assert_eq!(kinds(&again), kinds(&scene), "{what}: the joints");
+            assert_eq!(content(&again), content(&scene), "{what}: the scene");
+            assert_eq!(write(&again, &options).unwrap(), written, "{what}: formatted twice");
+        }
+    }
+}
+
+#[test]
+fn kept_content_goes_back_where_it_was() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let scene =
+        load_path(root.join("tests/scenes/kept-content.xml"), &LoadOptions::default()).unwrap();
+    let written = write(&scene, &WriteOptions::default()).unwrap();
+    for (before, after) in [
+        ("<!-- before the world -->", "<World Version=\"2\">"),
+        ("<Body Type=\"Static\" Author=\"level-tool\">", "<Fixtures />"),
+        ("<!-- before the gravity -->", "<Gravity>"),
+        ("<!-- the first shape -->", "<Shape Type=\"Circle\" Layer=\"front\">"),
+        ("<!-- before the position -->", "<Position>"),
+        ("<!-- between shapes -->", "<Shape Type=\"Polygon\">"),
+        ("<!-- before the end of the shapes -->", "</Shapes>"),
+        ("<!-- inside the filter -->", "<Priority>2</Priority>"),
+        ("<Priority>2</Priority>", "</FilterData>"),
+        ("<Spin>1</Spin>", "</MassData>"),
+        ("<!-- at the end of the body -->", "</Body>"),
+        ("<Wind Strength=\"3\">east</Wind>", "<!-- before the end of the world -->"),
+        ("<!-- before the end of the world -->", "</World>"),
+        ("</World>", "<!-- after the world -->"),
+    ] {
+        let (b, a) = (written.find(before), written.find(after));
+        assert!(
+            b.zip(a).is_some_and(|(b, a)| b < a && written[b + before.len()..a].trim().is_empty()),
+            "{before} is not just before {after}:\n{written}"
+        );
+    }
+    let angle = "<TargetAngle>0.5</TargetAngle>\n    </Joint>\n    <Joint Type=\"Revolute\">";
+    assert!(written.contains(angle), "the Angle joint in its place:\n{written}");
+    let gear = scene.joints()[3];
+    let again = load_text(&written);
+    assert_eq!(
+        (again.joints()[3].joint_a, again.joints()[3].joint_b),
+        (gear.joint_a, gear.joint_b)
+    );
+    assert_eq!((gear.joint_a, gear.joint_b), (1, 2), "past the Angle joint, in place");
+}
+
+/// A joint of the unsupported kind has no form a host could build: it is refused, naming
+/// it, before any scene could hold it without its text.
+#[test]
+fn a_built_unsupported_joint_is_refused_naming_it() {
+    let mut builder = box2scene::Builder::new();
+    let body = box2scene::Body::new(box2scene::BodyKind::Static);
+    for _ in 0..2 {
+        builder.add_body(&body, None, &[]).unwrap();
+    }
+    let joint =
+        box2scene::Joint { body_a: 0, body_b: 1, ..box2scene::Joint::new(JointKind::Unsupported) };
+    let error = builder.add_joint(&joint, Some("slider")).unwrap_err();
+    assert!(error.message.starts_with("joint 0: "), "{error}");
+}

@@ -369,7 +369,8 @@ mod tests {
     }
 
     /// Every field of every record but the names, whose pointers differ from load to load
-    /// (the dump has their text): pool ranges and user data indices as they are.
+    /// (the dump has their text): pool ranges and user data indices as they are; and the
+    /// text kept for the writer, by object and place.
     fn records(scene: &Scene) -> String {
         let name = Str::NULL;
         let mut records = String::new();
@@ -384,6 +385,9 @@ mod tests {
         }
         for j in scene.joints() {
             records += &format!("{:?}\n", Joint { name, ..*j });
+        }
+        for k in &scene.kept {
+            records += &format!("kept {:?} {:?} {:?}\n", k.object, k.place, scene.text(k.text));
         }
         records
     }
