@@ -139,7 +139,8 @@ enum b2s_code
    */
   B2S_CODE_BAD_RATIO = 51,
   /**
-   * Two fixtures of a Version 3 file share an `Id`.
+   * No longer reported: a Version 3 fixture's `Id` is informational (its Pairs name
+   * fixtures by position), so Ids may repeat. The number stays reserved.
    */
   B2S_CODE_DUPLICATE_ID = 52,
   B2S_CODE_LEGACY_UNVERSIONED = 100,
@@ -992,7 +993,10 @@ struct b2s_write_options b2s_write_options_default(void);
  * Writes `scene` as Box2Scene XML into a new NUL-terminated UTF-8 text owned by the
  * library: stores it in `*out_text` (free it with `b2s_text_free`) and, when `out_size`
  * is not NULL, its length in bytes without the NUL. `options` may be NULL (defaults).
- * Farseer-only joints are not written (gear references are renumbered to match).
+ * A loaded scene is written with everything its file held beyond the records
+ * (comments, unknown elements and attributes, Farseer-only joints, in their places).
+ * A joint of the unsupported kind that was built, not loaded, has no form to write:
+ * `B2S_CODE_UNSUPPORTED_JOINT_TYPE`, naming it, and `*out_text` stays NULL.
  *
  * # Safety
  * `scene` is NULL or a live scene; `options` NULL or valid; `out_text` NULL or writable;

@@ -80,7 +80,8 @@ pub enum Code {
     ZeroAxis = 50,
     /// A pulley ratio that is not positive.
     BadRatio = 51,
-    /// Two fixtures of a Version 3 file share an `Id`.
+    /// No longer reported: a Version 3 fixture's `Id` is informational (its Pairs name
+    /// fixtures by position), so Ids may repeat. The number stays reserved.
     DuplicateId = 52,
 
     // Warnings.

@@ -390,7 +390,10 @@ unsafe fn scene_and_options<'a>(
 /// Writes `scene` as Box2Scene XML into a new NUL-terminated UTF-8 text owned by the
 /// library: stores it in `*out_text` (free it with `b2s_text_free`) and, when `out_size`
 /// is not NULL, its length in bytes without the NUL. `options` may be NULL (defaults).
-/// Farseer-only joints are not written (gear references are renumbered to match).
+/// A loaded scene is written with everything its file held beyond the records
+/// (comments, unknown elements and attributes, Farseer-only joints, in their places).
+/// A joint of the unsupported kind that was built, not loaded, has no form to write:
+/// `B2S_CODE_UNSUPPORTED_JOINT_TYPE`, naming it, and `*out_text` stays NULL.
 ///
 /// # Safety
 /// `scene` is NULL or a live scene; `options` NULL or valid; `out_text` NULL or writable;
@@ -410,7 +413,7 @@ pub unsafe extern "C" fn b2s_write_memory(
         *out = std::ptr::null_mut();
         // SAFETY: by the caller's contract.
         let (scene, options) = unsafe { scene_and_options(scene, options)? };
-        let text = CString::new(write_utf8(scene, &options))
+        let text = CString::new(write_utf8(scene, &options)?)
             .map_err(|_| simple_error(Code::Internal, "the written text holds a NUL byte"))?;
         // SAFETY: by the caller's contract.
         if let Some(size) = unsafe { out_size.as_mut() } {

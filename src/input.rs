@@ -241,8 +241,8 @@ impl<'a> Source<'a> {
         }
     }
 
-    /// Whether all the text is at hand, from its start.
-    fn is_whole(&self) -> bool {
+    /// Whether all the text is at hand, from its start (and so stays at hand).
+    pub fn is_whole(&self) -> bool {
         self.base == 0 && self.file.is_none()
     }
 

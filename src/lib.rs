@@ -32,7 +32,7 @@ pub use scene::{
     Body, BodyKind, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene, Shape,
     ShapeKind, Str, UserData, Vec2,
 };
-pub use write::{WriteOptions, joints_not_written, write};
+pub use write::{WriteOptions, write};
 
 /// How to load: strictness and the limits of spec section 9. Exceeding a limit is error
 /// `limit-exceeded`, whose message names the limit.
@@ -82,14 +82,14 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
     parse::load_path(path.as_ref(), options)
 }
 
-/// Writes `scene` to a file (see [`write`]).
+/// Writes `scene` to a file (see [`write`]); nothing is written when the scene cannot be.
 pub fn write_path(
     scene: &Scene,
     path: impl AsRef<Path>,
     options: &WriteOptions,
 ) -> Result<(), Error> {
     let path = path.as_ref();
-    std::fs::write(path, write::write_utf8(scene, options)).map_err(|e| Error {
+    std::fs::write(path, write::write_utf8(scene, options)?).map_err(|e| Error {
         code: Code::Io,
         position: Position::default(),
         message: format!("cannot write {}: {e}", path.display()),
@@ -98,7 +98,7 @@ pub fn write_path(
 
 impl Scene {
     /// The scene as Box2Scene XML (see [`write`]).
-    pub fn to_xml(&self, options: &WriteOptions) -> String {
+    pub fn to_xml(&self, options: &WriteOptions) -> Result<String, Error> {
         write(self, options)
     }
 

@@ -3,11 +3,9 @@
 //! and gear joints against the joints they couple.
 #![forbid(unsafe_code)]
 
-use std::collections::HashMap;
-
 use crate::error::Code;
 use crate::parse::{Parsed, Parser, Problem, problem};
-use crate::scene::{JointKind, NONE, Range};
+use crate::scene::{JointKind, NONE, Object, Place, Range};
 
 pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
     if p.farseer_layout() {
@@ -16,46 +14,63 @@ pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
     check_references(p)
 }
 
-/// Version 3: each body's `<Pair FixtureId="k" ShapeId="s"/>` becomes a fixture: template
-/// k on shape s, with the density of s (spec section 8.2).
+/// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th
+/// fixture template on the s-th shape, with the density of s (spec section 8.2). The
+/// templates' `Id` attributes are never consulted: Farseer wrote a process-wide counter
+/// there, and bound Pairs by position.
 fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
-    let mut template_by_id = HashMap::new();
-    for (index, &(id, at)) in p.origins.fixture_template_ids.iter().enumerate() {
-        if let Some(first) = template_by_id.insert(id, index) {
-            return Err(problem(
-                Code::DuplicateId,
-                at,
-                format!("fixtures {first} and {index} both have Id {id}"),
-            ));
-        }
-    }
     let templates = std::mem::take(&mut p.scene.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
     for (k, pair) in p.origins.pairs.iter().enumerate() {
-        let (id, id_at) = pair.fixture_id;
-        let Some(&template) = template_by_id.get(&id) else {
-            return Err(problem(
-                Code::IdOutOfRange,
-                id_at,
-                format!("body {} binds fixture Id {id}, but no fixture has that Id", pair.body),
-            ));
+        let (template, template_at) = pair.fixture;
+        let Some(&template) = templates.get(template as usize) else {
+            let why = format!(
+                "body {} binds fixture {template} (a position in <Fixtures>, counted from 0), but {}",
+                pair.body,
+                has(templates.len(), "fixture", "fixtures")
+            );
+            return Err(problem(Code::IdOutOfRange, template_at, why));
         };
         let (shape, shape_at) = pair.shape;
-        let mut fixture = templates[template];
+        let mut fixture = template;
         fixture.shape = shape;
         fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
         p.scene.fixtures.push(fixture);
         p.scene.fixture_ids.push(k as u32);
         p.origins.fixture_shapes.push(shape_at);
-        p.origins.fixture_ids.push(id_at);
+        p.origins.fixture_ids.push(template_at);
         let fixtures = &mut p.scene.bodies[pair.body as usize].fixtures;
         if fixtures.count == 0 {
             *fixtures = Range { first: k as u32, count: 0 };
         }
         fixtures.count += 1;
     }
+    move_kept_of_templates(p, templates.len());
     Ok(())
+}
+
+/// What the file held beyond a template's records goes with the first fixture made from
+/// it; that of a template no Pair names, to the end of `<Fixtures>` (its attributes to
+/// `<World>`), so the writer still has it.
+fn move_kept_of_templates(p: &mut Parser, templates: usize) {
+    let mut first_made = vec![None; templates];
+    for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
+        first_made[pair.fixture.0 as usize] = Some(k as u32);
+    }
+    for kept in &mut p.scene.kept {
+        let Object::Fixture(template) = kept.object else { continue };
+        (kept.object, kept.place) = match (first_made[template as usize], kept.place) {
+            (Some(made), place) => (Object::Fixture(made), place),
+            (None, Place::Attribute) => (Object::World, Place::Attribute),
+            (None, _) => (Object::World, Place::Inside { within: "Fixtures", before: "" }),
+        };
+    }
+}
+
+/// "the file has 1 shape", "the file has 3 shapes".
+fn has(n: usize, one: &str, many: &str) -> String {
+    format!("the file has {n} {}", if n == 1 { one } else { many })
 }
 
 /// Checks every ID against its container, and the gear joints' targets; reports the error
@@ -63,9 +78,6 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
 fn check_references(p: &Parser) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
-    let has = |n: usize, one: &str, many: &str| {
-        format!("the file has {n} {}", if n == 1 { one } else { many })
-    };
     for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
         if f.shape as usize >= s.shapes.len() {
             let why = format!(

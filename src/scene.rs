@@ -555,6 +555,89 @@ pub struct UserData {
     pub value: Str,
 }
 
+/// The object a piece of [`Kept`] text belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Object {
+    World,
+    Shape(u32),
+    Fixture(u32),
+    Body(u32),
+    Joint(u32),
+}
+
+impl Object {
+    /// The same object after `before` more of each kind were put before it.
+    fn shifted(self, before: Objects) -> Object {
+        match self {
+            Object::World => Object::World,
+            Object::Shape(i) => Object::Shape(i + before.shapes),
+            Object::Fixture(i) => Object::Fixture(i + before.fixtures),
+            Object::Body(i) => Object::Body(i + before.bodies),
+            Object::Joint(i) => Object::Joint(i + before.joints),
+        }
+    }
+}
+
+/// How many objects of each kind.
+#[derive(Clone, Copy)]
+struct Objects {
+    shapes: u32,
+    fixtures: u32,
+    bodies: u32,
+    joints: u32,
+}
+
+/// Where in its object a piece of [`Kept`] text goes. Element names are the writer's
+/// spelling (the canonical one of the loader's tables).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Place {
+    /// Before the object's start tag: a comment that preceded it (for the world, before
+    /// `<World>`).
+    Before,
+    /// In the object's start tag: an unknown attribute, as ` name="value"`.
+    Attribute,
+    /// Instead of the object: its whole text (a Farseer-only joint, which has no
+    /// Box2Scene form).
+    Whole,
+    /// Inside the object, within its child element `within` ("" for the object itself):
+    /// before the element `before`, or at the end when that is "" or not written.
+    Inside { within: &'static str, before: &'static str },
+    /// After the object's end tag (for the world, after `</World>`).
+    After,
+}
+
+/// Text a loaded file held that no record has: a comment, an unknown element or attribute,
+/// a Farseer-only joint. Only the writer reads it (spec section 11, "Nothing is
+/// dropped"); the C view has none of it. While a file is read, `T` says where the text
+/// is (see [`KeptText`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Kept<T = Str> {
+    pub object: Object,
+    pub place: Place,
+    pub text: T,
+}
+
+/// Kept text while a file is read: a span of a text that stays at hand until the load
+/// ends, copied only once it succeeds (so a file of many unknown elements costs a few
+/// spans, not a copy), or a string of the pool.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum KeptText {
+    Span(usize, usize),
+    Pooled(Str),
+}
+
+impl Kept<KeptText> {
+    /// The same piece after `before` more objects of each kind, and a string pool of
+    /// `strings_before` bytes, were put before it.
+    fn shifted(self, before: Objects, strings_before: usize) -> Self {
+        let text = match self.text {
+            KeptText::Pooled(s) => KeptText::Pooled(s.shifted(strings_before)),
+            span => span,
+        };
+        Kept { object: self.object.shifted(before), text, ..self }
+    }
+}
+
 /// A loaded scene: immutable once built. All arrays are flat; see the field docs of each
 /// record for its cross references.
 #[derive(Debug)]
@@ -569,6 +652,8 @@ pub struct Scene {
     pub(crate) fixture_ids: Vec<u32>,
     pub(crate) user_data: Vec<UserData>,
     pub(crate) diagnostics: Vec<Diagnostic>,
+    /// What the file held beyond the records, by object, each object's in file order.
+    pub(crate) kept: Vec<Kept>,
     /// A Vec, not a Box: moving a Box would invalidate (for Rust's aliasing rules) the
     /// string pointers taken from it when the scene was frozen.
     pub(crate) strings: Vec<u8>,
@@ -587,6 +672,8 @@ pub(crate) struct SceneBuilder {
     pub fixture_ids: Vec<u32>,
     pub user_data: Vec<UserData>,
     pub diagnostics: Vec<Diagnostic>,
+    /// In file order.
+    pub kept: Vec<Kept<KeptText>>,
     strings: Vec<u8>,
 }
 
@@ -616,10 +703,17 @@ impl SceneBuilder {
             fixture_ids,
             user_data,
             diagnostics,
+            kept,
             strings,
         } = other;
         let strings_before = self.strings.len();
         let name = |s: Str| s.shifted(strings_before);
+        let before = Objects {
+            shapes: self.shapes.len() as u32,
+            fixtures: self.fixtures.len() as u32,
+            bodies: self.bodies.len() as u32,
+            joints: self.joints.len() as u32,
+        };
         let user_data_before = self.user_data.len() as u32;
         let user = |index: u32| if index == NONE { NONE } else { index + user_data_before };
         let (vertices_before, ids_before) = (self.vertices.len(), self.fixture_ids.len());
@@ -654,10 +748,21 @@ impl SceneBuilder {
         }));
         self.diagnostics
             .extend(diagnostics.into_iter().map(|d| Diagnostic { message: name(d.message), ..d }));
+        self.kept.extend(kept.into_iter().map(|k| k.shifted(before, strings_before)));
         self.strings.extend(strings);
     }
 
-    /// Rebases every string into the final pool and returns the immutable scene.
+    /// Copies the spans of kept text, read with `slice`, into the string pool.
+    pub fn pool_kept_text<'t>(&mut self, slice: impl Fn(usize, usize) -> &'t str) {
+        for i in 0..self.kept.len() {
+            if let KeptText::Span(from, to) = self.kept[i].text {
+                self.kept[i].text = KeptText::Pooled(self.add_str(slice(from, to)));
+            }
+        }
+    }
+
+    /// Rebases every string into the final pool and returns the immutable scene (whose
+    /// kept text is all in the pool: see [`SceneBuilder::pool_kept_text`]).
     pub fn freeze(self) -> Scene {
         let mut scene = Scene {
             version: self.version,
@@ -670,6 +775,16 @@ impl SceneBuilder {
             fixture_ids: self.fixture_ids,
             user_data: self.user_data,
             diagnostics: self.diagnostics,
+            kept: {
+                let pooled = |k: Kept<KeptText>| match k.text {
+                    KeptText::Pooled(text) => Some(Kept { object: k.object, place: k.place, text }),
+                    KeptText::Span(..) => None,
+                };
+                let mut kept: Vec<Kept> = self.kept.into_iter().filter_map(pooled).collect();
+                // Stable: each object's pieces stay in file order.
+                kept.sort_by_key(|k| k.object);
+                kept
+            },
             strings: {
                 let mut strings = self.strings;
                 strings.shrink_to_fit();
@@ -681,7 +796,8 @@ impl SceneBuilder {
             .chain(scene.fixtures.iter_mut().map(|f| &mut f.name))
             .chain(scene.bodies.iter_mut().map(|b| &mut b.name))
             .chain(scene.joints.iter_mut().map(|j| &mut j.name))
-            .chain(scene.diagnostics.iter_mut().map(|d| &mut d.message));
+            .chain(scene.diagnostics.iter_mut().map(|d| &mut d.message))
+            .chain(scene.kept.iter_mut().map(|k| &mut k.text));
         let user_data =
             scene.user_data.iter_mut().flat_map(|u| [&mut u.raw, &mut u.type_name, &mut u.value]);
         for s in names.chain(user_data) {
@@ -738,6 +854,13 @@ impl Scene {
     /// The user data at `index`, or None for [`NONE`].
     pub fn user_data_at(&self, index: u32) -> Option<&UserData> {
         self.user_data.get(index as usize)
+    }
+
+    /// What the file held beyond the records of `object`, in file order.
+    pub(crate) fn kept(&self, object: Object) -> &[Kept] {
+        let first = self.kept.partition_point(|k| k.object < object);
+        let end = first + self.kept[first..].partition_point(|k| k.object == object);
+        &self.kept[first..end]
     }
 
     /// The text of a string of this scene; None for NULL (or a string of another scene).

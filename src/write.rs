@@ -2,11 +2,11 @@
 //! scene: every float bit for bit, every name, every UserData text.
 #![forbid(unsafe_code)]
 
-use std::borrow::Cow;
 use std::fmt::Write as _;
 
-use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, NONE, Scene, Shape};
-use crate::scene::{ShapeKind, Str, Vec2};
+use crate::error::{Code, Error, Position};
+use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE, Object};
+use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
 /// How to write.
 #[repr(C)]
@@ -22,36 +22,52 @@ pub struct WriteOptions {
     pub threads: u32,
 }
 
-/// The joints [`write`] leaves out: Farseer-only joints, which have no Box2Scene form.
-pub fn joints_not_written(scene: &Scene) -> Vec<u32> {
-    (0..scene.joints().len() as u32).filter(|&i| !is_written(&scene.joints()[i as usize])).collect()
-}
-
-/// Whether a joint has a Box2Scene form.
-fn is_written(joint: &Joint) -> bool {
-    joint.kind() != Some(JointKind::Unsupported)
-}
-
 /// Writes `scene` as a Box2Scene file: `Version="1"` when it uses only Version 1
-/// constructs, else `Version="2"`. Farseer-only joints are left out (see
-/// [`joints_not_written`]) and gear joints' references renumbered to match.
-pub fn write(scene: &Scene, options: &WriteOptions) -> String {
-    String::from_utf8(write_utf8(scene, options)).expect("the text is written from str pieces")
+/// constructs, else `Version="2"`. A loaded scene is written with everything its file
+/// held beyond the records: comments, unknown elements and attributes, and Farseer-only
+/// joints as they were written, in their places (spec section 11). A joint of the
+/// unsupported kind with no text of its own (one a host built) has no form to write:
+/// error `unsupported-joint-type` naming it.
+pub fn write(scene: &Scene, options: &WriteOptions) -> Result<String, Error> {
+    let bytes = write_utf8(scene, options)?;
+    Ok(String::from_utf8(bytes).expect("the text is written from str pieces"))
 }
 
 /// [`write`]'s text, as the bytes it is made of (for the C text and files, which need
 /// no `String`).
-pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Vec<u8> {
-    let text = Text::new(scene, options);
+pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8>, Error> {
+    let text = Text::new(scene, options)?;
     let cut = match options.threads {
         1 => None,
         _ if text.size < MIN_BYTES_FOR_TWO_THREADS => None,
         _ => text.half_way(),
     };
-    match cut {
+    Ok(match cut {
         Some((cut, before)) => text.write(Some(cut), [room(before), room(text.size - before)]),
         None => text.write(None, [room(text.size), 0]),
-    }
+    })
+}
+
+/// The error for the first joint of the unsupported kind that has no text of its own.
+fn unwritable_joint(scene: &Scene) -> Result<(), Error> {
+    let has_text =
+        |i: usize| scene.kept(Object::Joint(i as u32)).iter().any(|k| k.place == KeptAt::Whole);
+    let Some((i, joint)) = scene
+        .joints()
+        .iter()
+        .enumerate()
+        .find(|&(i, j)| j.kind() == Some(JointKind::Unsupported) && !has_text(i))
+    else {
+        return Ok(());
+    };
+    let name = scene.text(joint.name).map(|n| format!(" (\"{n}\")")).unwrap_or_default();
+    Err(Error {
+        code: Code::UnsupportedJointType,
+        position: Position::default(),
+        message: format!(
+            "joint {i}{name} is of the unsupported kind and has no text of its own (only a loaded Farseer-only joint has): the format has no other form for it, so the scene cannot be written"
+        ),
+    })
 }
 
 /// The room given to a part of the text estimated at `size` bytes: estimates are of
@@ -63,9 +79,6 @@ fn room(size: usize) -> usize {
 /// What a scene's text is made from.
 struct Text<'s> {
     scene: &'s Scene,
-    /// The joints written, gear references renumbered (the scene's own when it has
-    /// none to leave out).
-    joints: Cow<'s, [Joint]>,
     all: bool,
     version: u32,
     /// The estimated size of the whole text.
@@ -73,33 +86,18 @@ struct Text<'s> {
 }
 
 impl<'s> Text<'s> {
-    fn new(scene: &'s Scene, options: &WriteOptions) -> Text<'s> {
-        let joints = match scene.joints().iter().all(is_written) {
-            true => Cow::Borrowed(scene.joints()),
-            false => {
-                let renumbered = written_joint_indices(scene);
-                let written = scene.joints().iter().filter(|j| is_written(j));
-                Cow::Owned(
-                    written
-                        .map(|&j| Joint {
-                            joint_a: renumber(&renumbered, j.joint_a),
-                            joint_b: renumber(&renumbered, j.joint_b),
-                            ..j
-                        })
-                        .collect(),
-                )
-            }
-        };
+    fn new(scene: &'s Scene, options: &WriteOptions) -> Result<Text<'s>, Error> {
+        unwritable_joint(scene)?;
         let version = if needs_version_2(scene) { 2 } else { 1 };
-        let mut text = Text { scene, joints, all: options.all_fields, version, size: 0 };
+        let mut text = Text { scene, all: options.all_fields, version, size: 0 };
         text.size =
             text.items().map(|(container, item)| text.estimated_size(container, item)).sum();
-        text
+        Ok(text)
     }
 
     /// Every item, as (container, index).
     fn items(&self) -> impl Iterator<Item = Place> + '_ {
-        let counts = counts(self.scene, &self.joints);
+        let counts = counts(self.scene);
         (0..4).flat_map(move |container| (0..counts[container]).map(move |item| (container, item)))
     }
 
@@ -153,9 +151,10 @@ impl<'s> Text<'s> {
             out: Out { room, written: Written::default() },
             depth: if from == START { 0 } else { 2 },
             scene: self.scene,
-            joints: &self.joints,
             all: self.all,
             version: self.version,
+            world: Scope::new(self.scene.kept(Object::World), 1),
+            item: None,
         };
         writer.part(from, to);
         writer.out.written
@@ -227,33 +226,18 @@ const END: Place = (4, 0);
 const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
 
 /// How many items each container holds, in the order they are written.
-fn counts(scene: &Scene, joints: &[Joint]) -> [usize; 4] {
-    [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), joints.len()]
-}
-
-/// Per joint, its index among the joints that are written.
-fn written_joint_indices(scene: &Scene) -> Vec<u32> {
-    let mut next = 0;
-    scene
-        .joints()
-        .iter()
-        .map(|j| {
-            let index = next;
-            next += u32::from(is_written(j));
-            index
-        })
-        .collect()
-}
-
-fn renumber(renumbered: &[u32], index: u32) -> u32 {
-    renumbered.get(index as usize).copied().unwrap_or(index)
+fn counts(scene: &Scene) -> [usize; 4] {
+    [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), scene.joints().len()]
 }
 
 pub(crate) fn needs_version_2(scene: &Scene) -> bool {
     let shape = |s: &Shape| matches!(s.kind(), Some(ShapeKind::Edge | ShapeKind::Chain));
     let body = |b: &Body| b.gravity_scale.to_bits() != 1f32.to_bits();
     let joint = |j: &Joint| match j.kind() {
-        Some(JointKind::Wheel | JointKind::Rope | JointKind::Motor) => true,
+        // A Farseer-only joint is written back as Farseer wrote it, in a Version 2 file.
+        Some(JointKind::Wheel | JointKind::Rope | JointKind::Motor | JointKind::Unsupported) => {
+            true
+        }
         Some(JointKind::Weld) => j.frequency_hz.to_bits() != 0 || j.damping_ratio.to_bits() != 0,
         _ => false,
     };
@@ -465,41 +449,120 @@ struct Writer<'s, 'b> {
     out: Out<'b>,
     depth: usize,
     scene: &'s Scene,
-    /// The joints written, gear references renumbered.
-    joints: &'s [Joint],
     all: bool,
     version: u32,
+    /// The kept text of the world, and of the item being written.
+    world: Scope<'s>,
+    item: Option<Scope<'s>>,
 }
 
-impl Writer<'_, '_> {
+/// An object being written (the world or an item) and the text its file held beyond the
+/// records, with which of it is written so far.
+struct Scope<'s> {
+    kept: &'s [Kept],
+    written: Vec<bool>,
+    /// The depth of the object's children.
+    depth: usize,
+    /// The child open now, whose children are being written ("" for none).
+    within: &'static str,
+}
+
+impl<'s> Scope<'s> {
+    fn new(kept: &'s [Kept], depth: usize) -> Scope<'s> {
+        Scope { kept, written: vec![false; kept.len()], depth, within: "" }
+    }
+
+    /// Whether some of the text goes inside the child `name`, which is then written even
+    /// when all its values are defaults.
+    fn has_within(&self, name: &str) -> bool {
+        self.kept.iter().any(|k| matches!(k.place, KeptAt::Inside { within, .. } if within == name))
+    }
+}
+
+impl<'s> Writer<'s, '_> {
+    fn scope(&mut self) -> &mut Scope<'s> {
+        self.item.as_mut().unwrap_or(&mut self.world)
+    }
+
+    /// Writes the kept text of the current object at the places `wanted` selects, unless
+    /// it was written: attributes as they are, the rest on lines of their own.
+    fn put(&mut self, wanted: impl Fn(KeptAt) -> bool) {
+        let kept = self.scope().kept;
+        for (i, k) in kept.iter().enumerate() {
+            if self.scope().written[i] || !wanted(k.place) {
+                continue;
+            }
+            self.scope().written[i] = true;
+            let text = self.scene.text(k.text).unwrap_or_default();
+            if k.place != KeptAt::Attribute {
+                self.indent();
+            }
+            self.out.push_str(text);
+            if k.place != KeptAt::Attribute {
+                self.out.push_str("\n");
+            }
+        }
+    }
+
+    /// Before an element `name` of the current object, or of its child open now: the
+    /// kept text that preceded it.
+    fn before(&mut self, name: &str) {
+        let depth = self.depth;
+        let scope = self.scope();
+        let within = match depth - scope.depth {
+            0 => "",
+            1 => scope.within,
+            _ => return,
+        };
+        self.put(|at| matches!(at, KeptAt::Inside { within: w, before } if w == within && before == name));
+    }
+
+    /// Writes `object` (an item of a container) with `write`, or as its kept whole text,
+    /// with the kept text before it.
+    fn item(&mut self, object: Object, write: impl FnOnce(&mut Self)) {
+        let kept = self.scene.kept(object);
+        self.item = Some(Scope::new(kept, self.depth + 1));
+        self.put(|at| at == KeptAt::Before);
+        if kept.iter().any(|k| k.place == KeptAt::Whole) {
+            self.put(|at| at == KeptAt::Whole);
+        } else {
+            write(self);
+        }
+        self.item = None;
+    }
+
     /// The text from place `from` to place `to`, with the start and end tags of the world
     /// and of the containers that begin or end between them.
     fn part(&mut self, from: Place, to: Place) {
         if from == START {
             self.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
+            self.put(|at| at == KeptAt::Before);
             self.open_typed("World", "Version", if self.version == 2 { "2" } else { "1" });
             if let Some(gravity) = self.scene.gravity() {
                 self.vector("Gravity", gravity);
             }
         }
-        let (scene, joints) = (self.scene, self.joints);
-        let counts = counts(scene, joints);
+        let scene = self.scene;
+        let counts = counts(scene);
         for (container, &count) in counts.iter().enumerate().take(to.0 + 1).skip(from.0) {
             let name = CONTAINERS[container];
             let first = if container == from.0 { from.1 } else { 0 };
             let end = if container == to.0 { to.1 } else { count };
-            if count == 0 {
+            if count == 0 && !self.world.has_within(name) {
                 self.element(name, "");
                 continue;
             }
             if first == 0 {
                 self.open(name);
             }
-            match container {
-                0 => scene.shapes()[first..end].iter().for_each(|s| self.shape(s)),
-                1 => scene.fixtures()[first..end].iter().for_each(|f| self.fixture(f)),
-                2 => scene.bodies()[first..end].iter().for_each(|b| self.body(b)),
-                _ => joints[first..end].iter().for_each(|j| self.joint(j)),
+            for i in first..end {
+                let index = i as u32;
+                match container {
+                    0 => self.item(Object::Shape(index), |w| w.shape(&scene.shapes()[i])),
+                    1 => self.item(Object::Fixture(index), |w| w.fixture(&scene.fixtures()[i])),
+                    2 => self.item(Object::Body(index), |w| w.body(&scene.bodies()[i])),
+                    _ => self.item(Object::Joint(index), |w| w.joint(&scene.joints()[i])),
+                }
             }
             if end == count {
                 self.close(name);
@@ -507,6 +570,7 @@ impl Writer<'_, '_> {
         }
         if to == END {
             self.close("World");
+            self.put(|at| at == KeptAt::After);
         }
     }
 
@@ -521,12 +585,12 @@ impl Writer<'_, '_> {
     }
 
     /// `<name>` on its own line.
-    fn open(&mut self, name: &str) {
+    fn open(&mut self, name: &'static str) {
         self.open_with(name, |_| {});
     }
 
     /// `<name Type="value">` on its own line.
-    fn open_typed(&mut self, name: &str, attribute: &str, value: &str) {
+    fn open_typed(&mut self, name: &'static str, attribute: &str, value: &str) {
         self.open_with(name, |out| {
             for piece in [" ", attribute, "=\"", value, "\""] {
                 out.push_str(piece);
@@ -534,16 +598,39 @@ impl Writer<'_, '_> {
         });
     }
 
-    fn open_with(&mut self, name: &str, attributes: impl FnOnce(&mut Out<'_>)) {
+    /// `<name ...>` on its own line; the object's own start tag gets its kept attributes,
+    /// and a child of the object is the one open now.
+    fn open_with(&mut self, name: &'static str, attributes: impl FnOnce(&mut Out<'_>)) {
+        self.before(name);
         self.indent();
         self.out.push_str("<");
         self.out.push_str(name);
         attributes(&mut self.out);
+        if self.depth + 1 == self.scope().depth {
+            self.put(|at| at == KeptAt::Attribute);
+        }
         self.out.push_str(">\n");
         self.depth += 1;
+        let depth = self.depth;
+        let scope = self.scope();
+        if depth == scope.depth + 1 {
+            scope.within = name;
+        }
     }
 
-    fn close(&mut self, name: &str) {
+    /// `</name>` on its own line, after the kept text that ended the element: for a child
+    /// of the object, all of it that goes inside; for an item, whatever of it was not
+    /// written yet (what preceded an element that was not written goes at the end).
+    fn close(&mut self, name: &'static str) {
+        let depth = self.scope().depth;
+        if self.depth == depth + 1 {
+            self.put(|at| matches!(at, KeptAt::Inside { within, .. } if within == name));
+            self.scope().within = "";
+        } else if self.depth == depth && self.item.is_some() {
+            self.put(|at| matches!(at, KeptAt::Inside { .. }));
+        } else if self.depth == depth {
+            self.put(|at| at == KeptAt::Inside { within: "", before: "" });
+        }
         self.depth -= 1;
         self.indent();
         for piece in ["</", name, ">\n"] {
@@ -553,6 +640,7 @@ impl Writer<'_, '_> {
 
     fn element(&mut self, name: &str, text: &str) {
         if text.is_empty() {
+            self.before(name);
             self.indent();
             for piece in ["<", name, " />\n"] {
                 self.out.push_str(piece);
@@ -564,6 +652,7 @@ impl Writer<'_, '_> {
 
     /// `<name>text</name>` on its own line, `text` written straight into the output.
     fn element_with(&mut self, name: &str, text: impl FnOnce(&mut Out<'_>)) {
+        self.before(name);
         self.indent();
         for piece in ["<", name, ">"] {
             self.out.push_str(piece);
@@ -627,6 +716,7 @@ impl Writer<'_, '_> {
     fn user_data(&mut self, index: u32) {
         let Some(user_data) = self.scene.user_data_at(index) else { return };
         let raw = self.scene.text(user_data.raw).unwrap_or_default();
+        self.before("UserData");
         self.indent();
         for piece in ["<UserData>", raw, "</UserData>\n"] {
             self.out.push_str(piece);
@@ -698,7 +788,7 @@ impl Writer<'_, '_> {
 
     fn filter(&mut self, filter: &Filter) {
         let defaults = Filter::default();
-        if !self.all && *filter == defaults {
+        if !self.all && *filter == defaults && !self.scope().has_within("FilterData") {
             return;
         }
         self.open("FilterData");
@@ -742,7 +832,8 @@ impl Writer<'_, '_> {
         self.vector_or_default("LinearVelocity", body.linear_velocity, d.linear_velocity);
         self.vector_or_default("Position", body.position, d.position);
         let m = body.mass_data;
-        if m.mass_given || m.center_given || m.inertia_given {
+        if m.mass_given || m.center_given || m.inertia_given || self.scope().has_within("MassData")
+        {
             self.open("MassData");
             if m.mass_given {
                 self.number("Mass", m.mass);
@@ -937,8 +1028,8 @@ mod tests {
         for (name, bytes) in crate::scene_files() {
             let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
             let options = WriteOptions { threads: 1, ..WriteOptions::default() };
-            let text = Text::new(&scene, &options);
-            let expected = write(&scene, &options);
+            let text = Text::new(&scene, &options).unwrap();
+            let expected = write(&scene, &options).unwrap();
             for rooms in rooms(expected.len()) {
                 assert_eq!(text.write(None, rooms), expected.as_bytes(), "{name} in {rooms:?}");
             }
@@ -951,9 +1042,9 @@ mod tests {
             let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
             for all_fields in [false, true] {
                 let options = WriteOptions { all_fields, threads: 1 };
-                let expected = write(&scene, &options);
-                let text = Text::new(&scene, &options);
-                for (container, count) in counts(&scene, &text.joints).into_iter().enumerate() {
+                let expected = write(&scene, &options).unwrap();
+                let text = Text::new(&scene, &options).unwrap();
+                for (container, count) in counts(&scene).into_iter().enumerate() {
                     for item in 1..count {
                         for rooms in rooms(expected.len()) {
                             let cut = text.write(Some((container, item)), rooms);
@@ -974,11 +1065,11 @@ mod tests {
             body.repeat(5000)
         );
         let scene = crate::load(xml.as_bytes(), &crate::LoadOptions::default()).unwrap();
-        let text = Text::new(&scene, &WriteOptions::default());
+        let text = Text::new(&scene, &WriteOptions::default()).unwrap();
         assert!(text.size >= MIN_BYTES_FOR_TWO_THREADS, "{}", text.size);
         assert_eq!(text.half_way(), Some(((2, 2500), 2500 * 300)));
-        let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() });
-        assert_eq!(write(&scene, &WriteOptions::default()), one);
+        let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() }).unwrap();
+        assert_eq!(write(&scene, &WriteOptions::default()).unwrap(), one);
         assert_eq!(
             crate::load(one.as_bytes(), &crate::LoadOptions::default()).unwrap().bodies().len(),
             5000

@@ -54,7 +54,7 @@ fn generated_scenes_rebuilt_are_the_same_and_round_trip() {
         let scene = load(generate(&mut random).as_bytes(), &LoadOptions::default()).unwrap();
         let built = rebuild(&scene);
         assert_eq!(content(&built), content(&scene), "generated scene {i}");
-        let written = write(&built, &WriteOptions::default());
+        let written = write(&built, &WriteOptions::default()).unwrap();
         let again = load(written.as_bytes(), &LoadOptions::default()).unwrap();
         assert_eq!(content(&again), content(&built), "generated scene {i}");
     }
@@ -279,6 +279,6 @@ fn the_loaders_warnings_are_attached() {
 fn an_empty_builder_makes_an_empty_scene() {
     let scene = Builder::new().finish();
     assert_eq!((scene.version(), scene.gravity(), scene.bodies().len()), (1, None, 0));
-    let written = write(&scene, &WriteOptions::default());
+    let written = write(&scene, &WriteOptions::default()).unwrap();
     assert!(written.contains("<Shapes />") && written.contains("<Joints />"), "{written}");
 }

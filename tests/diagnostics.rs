@@ -696,36 +696,52 @@ fn line_joint_is_wheel() {
     assert_eq!(wheel.local_axis_a, box2scene::Vec2::new(0.0, 1.0));
 }
 
+/// Farseer wrote a process-wide counter into a fixture's `Id` and bound Pairs by
+/// position: Ids repeat, go missing and differ from positions, silently.
 #[test]
-fn duplicate_id() {
-    let xml = world_v3(V3_CIRCLE, "<Fixture Id=\"0\"/><Fixture Id=\"⌖0\"/>", "");
-    expect_error(&xml, Code::DuplicateId);
-}
-
-#[test]
-fn farseer_v3_fixture_needs_an_id() {
-    expect_error(&world_v3(V3_CIRCLE, "⌖<Fixture/>", ""), Code::MissingAttribute);
+fn farseer_ids_are_informational() {
+    let xml = world_v3(
+        V3_CIRCLE,
+        "<Fixture Id=\"17\"><Friction>0.5</Friction></Fixture><Fixture Id=\"17\"/><Fixture/>",
+        "<Body Type=\"Static\" Id=\"3\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/>\
+         <Pair FixtureId=\"2\" ShapeId=\"0\"/></Bindings></Body>",
+    );
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).unwrap();
+    assert!(scene.diagnostics().is_empty());
+    let friction: Vec<_> = scene.fixtures().iter().map(|f| f.friction).collect();
+    assert_eq!(friction, [0.5, 0.2]);
+    let v2 = "<World Version=\"2\"><Shapes>SHAPE</Shapes><Fixtures><Fixture Id=\"9\">\
+              <Shape>0</Shape></Fixture></Fixtures><Bodies><Body Type=\"Static\" Id=\"4\">\
+              <Fixtures><ID>0</ID></Fixtures></Body></Bodies><Joints/></World>"
+        .replace("SHAPE", CIRCLE);
+    let strict = LoadOptions { strict: true, ..LoadOptions::default() };
+    assert!(load(v2.as_bytes(), &strict).unwrap().diagnostics().is_empty());
 }
 
 #[test]
 fn farseer_v3_pairs_are_checked() {
-    let unknown_fixture = world_v3(
+    // The fixture's Id is 5, but a Pair names positions: there is only position 0.
+    let past_the_end = world_v3(
         V3_CIRCLE,
-        "<Fixture Id=\"4\"/>",
-        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"⌖5\" ShapeId=\"0\"/></Bindings></Body>",
+        "<Fixture Id=\"5\"/>",
+        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/>\
+         <Pair FixtureId=\"⌖5\" ShapeId=\"0\"/></Bindings></Body>",
     );
-    let message = expect_error(&unknown_fixture, Code::IdOutOfRange);
-    assert_eq!(message, "body 0 binds fixture Id 5, but no fixture has that Id");
+    let message = expect_error(&past_the_end, Code::IdOutOfRange);
+    assert_eq!(
+        message,
+        "body 0 binds fixture 5 (a position in <Fixtures>, counted from 0), but the file has 1 fixture"
+    );
     let unknown_shape = world_v3(
         V3_CIRCLE,
         "<Fixture Id=\"4\"/>",
-        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"4\" ShapeId=\"⌖1\"/></Bindings></Body>",
+        "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"⌖1\"/></Bindings></Body>",
     );
     expect_error(&unknown_shape, Code::IdOutOfRange);
     let no_shape = world_v3(
         V3_CIRCLE,
         "<Fixture Id=\"4\"/>",
-        "<Body Type=\"Static\"><Bindings>⌖<Pair FixtureId=\"4\"/></Bindings></Body>",
+        "<Body Type=\"Static\"><Bindings>⌖<Pair FixtureId=\"0\"/></Bindings></Body>",
     );
     expect_error(&no_shape, Code::MissingAttribute);
     let negative = world_v3(
@@ -734,6 +750,14 @@ fn farseer_v3_pairs_are_checked() {
         "",
     );
     expect_error(&negative, Code::NegativeValue);
+}
+
+/// `<Tag>` is Aether.Physics2D's UserData in Version 3, and unknown before.
+#[test]
+fn tag_is_user_data_only_in_version_3() {
+    let tag = "<Tag><Type>System.String</Type><Value><string>x</string></Value></Tag>";
+    let v1 = world(CIRCLE, &FIXTURE.replace("<Density>", &format!("⌖{tag}<Density>")), "", "");
+    expect_warning(&v1, Code::UnknownElement);
 }
 
 #[test]

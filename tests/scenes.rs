@@ -368,3 +368,41 @@ fn farseer_version_3_pairs_become_fixtures() {
     assert_eq!(lists, [vec![0], vec![1, 2], vec![3]]);
     assert_eq!(f[1].filter.group_index, -2);
 }
+
+/// Farseer's fixture Ids (17, 23, 24) are a counter; Pairs name positions (0, 1, 2), and
+/// each template is shared by several bodies. Aether's `Tag` is the UserData.
+#[test]
+fn farseer_version_3_pairs_bind_by_position_not_id() {
+    let scene = load_file(&root().join("tests/scenes/farseer-v3-counter-ids.xml"));
+    let f = scene.fixtures();
+    let made: Vec<_> = f.iter().map(|f| (f.shape, f.density, f.friction, f.is_sensor)).collect();
+    assert_eq!(
+        made,
+        [
+            (0, 0.0, 0.9, false),
+            (2, 3.0, 0.3, false),
+            (1, 2.0, 0.0, true),
+            (1, 2.0, 0.3, false),
+            (2, 3.0, 0.0, true)
+        ]
+    );
+    let groups: Vec<_> = f.iter().map(|f| f.filter.group_index).collect();
+    assert_eq!(groups, [0, -1, 0, -1, 0]);
+    let lists: Vec<_> = scene.bodies().iter().map(|b| scene.body_fixtures(b).to_vec()).collect();
+    assert_eq!(lists, [vec![0], vec![1, 2], vec![3, 4]]);
+    let value = |index: u32| {
+        let user_data = scene.user_data_at(index).unwrap();
+        (scene.text(user_data.type_name).unwrap(), scene.text(user_data.value).unwrap())
+    };
+    assert_eq!(value(f[0].user_data), ("System.String", "ground"));
+    assert_eq!(value(scene.bodies()[0].user_data), ("System.String", "floor"));
+    assert_eq!(value(scene.joints()[0].user_data), ("System.Int32", "7"));
+    let chain = &scene.shapes()[0];
+    assert!(!chain.has_prev_vertex && !chain.has_next_vertex, "ghosts without flags are absent");
+    let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code()).collect();
+    assert_eq!(codes, [Some(Code::FilterBitsTruncated)], "Ids and Tags are silent");
+
+    let v2 = load_file(&root().join("tests/scenes/farseer-v2-2013-ids.xml"));
+    assert!(v2.diagnostics().is_empty(), "Ids on fixtures and bodies are silent");
+    assert_eq!(v2.fixtures()[0].friction, 0.4);
+}

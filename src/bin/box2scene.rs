@@ -169,8 +169,9 @@ fn dump(file: &Path, options: &LoadOptions) -> Status {
     }
 }
 
-/// Loads `file` and writes it in canonical form, to `out` or standard output. The file is
-/// read whole before anything is written, so `out` may be `file` itself.
+/// Loads `file` and writes it in canonical form, to `out` or standard output: with its
+/// comments, unknown elements and attributes and Farseer-only joints in their places. The
+/// file is read whole before anything is written, so `out` may be `file` itself.
 fn fmt(file: &Path, out: Option<&Path>, options: &LoadOptions, write: &WriteOptions) -> Status {
     let scene = match box2scene::load_path(file, options) {
         Ok(scene) => scene,
@@ -179,31 +180,14 @@ fn fmt(file: &Path, out: Option<&Path>, options: &LoadOptions, write: &WriteOpti
             return status_of(&error);
         }
     };
-    for joint in box2scene::joints_not_written(&scene) {
-        let message = format!(
-            "joint {joint} is a Farseer-only joint with no Box2Scene form; it is not written"
-        );
-        eprintln!(
-            "{}",
-            report_line(
-                file,
-                Position::default(),
-                Severity::Warning.name(),
-                Code::SkippedJoint.name(),
-                &message
-            )
-        );
-    }
-    let Some(out) = out else {
-        return emit(&scene.to_xml(write));
+    let written = match out {
+        None => scene.to_xml(write).map(|text| emit(&text)),
+        Some(out) => box2scene::write_path(&scene, out, write).map(|()| Status::Clean),
     };
-    match box2scene::write_path(&scene, out, write) {
-        Ok(()) => Status::Clean,
-        Err(error) => {
-            eprintln!("{}", error_line(out, &error));
-            Status::UsageOrIo
-        }
-    }
+    written.unwrap_or_else(|error| {
+        eprintln!("{}", error_line(out.unwrap_or(file), &error));
+        status_of(&error)
+    })
 }
 
 /// A file that cannot be read is the environment's problem, not the file's: status 2.

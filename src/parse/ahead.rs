@@ -199,8 +199,10 @@ fn read_piece<'a>(
     let mut parser = Parser::new(source, options);
     let root = parser.root().ok()?;
     parser.read_version(&root).ok()?;
-    // The calling thread counts and reports everything before `at`.
+    // The calling thread counts, reports and keeps everything before `at`.
     parser.warnings.clear();
+    parser.comments.clear();
+    parser.scene.kept.clear();
     parser.elements = 0;
     let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
     parser.open.push(tag.name.clone());
@@ -367,7 +369,8 @@ mod tests {
     }
 
     /// Every field of every record but the names, whose pointers differ from load to load
-    /// (the dump has their text): pool ranges and user data indices as they are.
+    /// (the dump has their text): pool ranges and user data indices as they are; and the
+    /// text kept for the writer, by object and place.
     fn records(scene: &Scene) -> String {
         let name = Str::NULL;
         let mut records = String::new();
@@ -382,6 +385,9 @@ mod tests {
         }
         for j in scene.joints() {
             records += &format!("{:?}\n", Joint { name, ..*j });
+        }
+        for k in &scene.kept {
+            records += &format!("kept {:?} {:?} {:?}\n", k.object, k.place, scene.text(k.text));
         }
         records
     }

@@ -1,8 +1,8 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Parsed, Parser, Seen, Tag, elements, problem};
+use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
-use crate::scene::{Body, BodyKind, MassData, Range};
+use crate::scene::{Body, BodyKind, MassData, Object, Range};
 
 elements! {
     enum BodyChild {
@@ -24,6 +24,7 @@ elements! {
         Fixtures,
         UserData,
         Bindings,
+        Tag,
     }
 }
 
@@ -33,6 +34,7 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Body(self.scene.bodies.len() as u32));
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
@@ -68,12 +70,20 @@ impl<'a> Parser<'a> {
                     self.newer_construct(child.at, "<GravityScale>")?;
                     body.gravity_scale = self.float(&child)?;
                 }
-                BodyChild::MassData => self.mass_data(&child, &mut body.mass_data)?,
+                BodyChild::MassData => {
+                    let mass = &mut body.mass_data;
+                    self.within(BodyChild::MassData.name(), |p| p.mass_data(&child, mass))?
+                }
                 BodyChild::Fixtures => body.fixtures = self.fixture_ids(&child)?,
                 BodyChild::Bindings => self.bindings(&child)?,
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
+                BodyChild::Tag => match self.tag_is_user_data() {
+                    true => body.user_data = self.user_data(&child)?,
+                    false => self.unknown(&tag, &child)?,
+                },
             }
         }
+        self.end_object();
         self.origins.bodies.push(tag.at);
         self.scene.bodies.push(body);
         Ok(())
@@ -92,8 +102,8 @@ impl<'a> Parser<'a> {
         Some(problem(Code::UnexpectedElement, child.at, format!("<{}> here: {why}", child.name())))
     }
 
-    /// Version 3: `<Pair FixtureId="k" ShapeId="s"/>` children, made into fixtures once the
-    /// whole file is read.
+    /// Version 3: `<Pair FixtureId="f" ShapeId="s"/>` children, made into fixtures once the
+    /// whole file is read. Both are positions in their containers.
     fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
@@ -107,15 +117,16 @@ impl<'a> Parser<'a> {
                     format!("<{}> has no {name} attribute", pair.name()),
                 )),
             };
-            let (fixture_id, shape) = (id("fixtureid")?, id("shapeid")?);
-            p.origins.pairs.push(super::Pair { body, fixture_id, shape });
+            let (fixture, shape) = (id("fixtureid")?, id("shapeid")?);
+            p.origins.pairs.push(super::Pair { body, fixture, shape });
             p.skip(&pair)
         })
     }
 
     fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
         let attrs = self.attributes(tag)?;
-        self.unknown_attributes(tag, &attrs, &["type"])?;
+        let known: &[&str] = if self.id_is_informational() { &["type", "id"] } else { &["type"] };
+        self.unknown_attributes(tag, &attrs, known)?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(
                 Code::MissingAttribute,

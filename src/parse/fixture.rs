@@ -1,12 +1,22 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Parsed, Parser, Seen, Tag, elements, problem};
+use super::{Element, Parsed, Parser, Seen, Tag, elements};
 use crate::error::Code;
-use crate::scene::{Filter, Fixture};
+use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
 elements! {
-    enum FixtureChild { Shape, Name, Density, Friction, Restitution, IsSensor, FilterData, UserData }
+    enum FixtureChild {
+        Shape,
+        Name,
+        Density,
+        Friction,
+        Restitution,
+        IsSensor,
+        FilterData,
+        UserData,
+        Tag,
+    }
 }
 
 elements! {
@@ -15,7 +25,10 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
-        self.fixture_template_id(&tag)?;
+        self.begin_object(Object::Fixture(self.scene.fixtures.len() as u32));
+        let attrs = self.attributes(&tag)?;
+        let known: &[&str] = if self.id_is_informational() { &["id"] } else { &[] };
+        self.unknown_attributes(&tag, &attrs, known)?;
         let mut fixture = Fixture::default();
         let mut shape_at = tag.at;
         let mut seen = Seen::default();
@@ -34,35 +47,24 @@ impl<'a> Parser<'a> {
                 Friction => fixture.friction = self.non_negative(&child)?,
                 Restitution => fixture.restitution = self.non_negative(&child)?,
                 IsSensor => fixture.is_sensor = self.boolean(&child)?,
-                FilterData => self.filter(&child, &mut fixture.filter)?,
+                FilterData => {
+                    let filter = &mut fixture.filter;
+                    self.within(FilterData.name(), |p| p.filter(&child, filter))?
+                }
                 UserData => fixture.user_data = self.user_data(&child)?,
+                FixtureChild::Tag => match self.tag_is_user_data() {
+                    true => fixture.user_data = self.user_data(&child)?,
+                    false => self.unknown(&tag, &child)?,
+                },
             }
         }
         // In Farseer's layout a fixture is a template: bodies pair it with shapes.
         if !seen.contains(FixtureChild::Shape) && !self.farseer_layout() {
             return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
+        self.end_object();
         self.origins.fixture_shapes.push(shape_at);
         self.scene.fixtures.push(fixture);
-        Ok(())
-    }
-
-    /// Version 3: the `Id` that bodies' `Pair`s name the fixture by.
-    fn fixture_template_id(&mut self, tag: &Tag) -> Parsed<()> {
-        let attrs = self.attributes(tag)?;
-        if !self.farseer_layout() {
-            return self.unknown_attributes(tag, &attrs, &[]);
-        }
-        self.unknown_attributes(tag, &attrs, &["id"])?;
-        let Some(attr) = attrs.iter().find(|a| a.is("id")) else {
-            return Err(problem(
-                Code::MissingAttribute,
-                tag.at,
-                "a Version 3 <Fixture> has an Id attribute: bodies' <Pair>s name fixtures by it",
-            ));
-        };
-        let id = self.attribute(tag, attr, text::id)?;
-        self.origins.fixture_template_ids.push(id);
         Ok(())
     }
 

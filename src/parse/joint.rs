@@ -3,13 +3,14 @@
 
 use super::{Element, JointOrigin, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
-use crate::scene::{Joint, JointKind, NONE, Vec2};
+use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
 use crate::validate;
 
 elements! {
     enum JointChild {
         Name,
         UserData,
+        Tag,
         BodyA,
         BodyB,
         JointA,
@@ -203,7 +204,12 @@ fn joint_kind(value: &str) -> Option<JointKind> {
 
 impl<'a> Parser<'a> {
     pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Joint(self.scene.joints.len() as u32));
         let kind = self.joint_type(&tag)?;
+        if kind == JointKind::Unsupported {
+            // It has no Box2Scene form: the writer writes back its whole text.
+            self.pin(tag.at);
+        }
         let mut joint = Joint::new(kind);
         let mut at =
             JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
@@ -214,15 +220,15 @@ impl<'a> Parser<'a> {
             };
             use JointChild::*;
             let legacy = self.version == 0;
-            let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected);
+            let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected)
+                || (name == Tag && self.tag_is_user_data());
             let named_joint =
                 matches!(name, JointA | JointB) && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
             if !common && !named_joint && slot.is_none() {
                 let message =
                     format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
-                self.warn(Code::UnknownElement, child.at, message)?;
-                self.skip(&child)?;
+                self.ignore(&child, message)?;
                 continue;
             }
             if repeated {
@@ -233,7 +239,7 @@ impl<'a> Parser<'a> {
             }
             match name {
                 Name => joint.name = self.string(&child)?,
-                UserData => joint.user_data = self.user_data(&child)?,
+                UserData | Tag => joint.user_data = self.user_data(&child)?,
                 CollideConnected => joint.collide_connected = self.boolean(&child)?,
                 BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
                 BodyB => (joint.body_b, at.body_b) = self.id(&child)?,
@@ -255,6 +261,11 @@ impl<'a> Parser<'a> {
             self.line_is_wheel(&tag, &mut joint, &seen)?;
         }
         self.check_joint(&tag, &joint, &at)?;
+        if kind == JointKind::Unsupported {
+            let text = self.unpin(self.position());
+            self.keep_str(Place::Whole, &text);
+        }
+        self.end_object();
         self.origins.joints.push(at);
         self.scene.joints.push(joint);
         Ok(())

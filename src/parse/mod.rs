@@ -36,7 +36,7 @@ use quick_xml::parser::{ElementParser, Parser as _};
 
 use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
 use crate::input::{Encoding, Locator, Source};
-use crate::scene::{Scene, SceneBuilder, Vec2};
+use crate::scene::{Kept, KeptText, Object, Place, Scene, SceneBuilder, Vec2};
 use crate::text::{self, BadValue, trim_xml, trim_xml_at};
 use crate::{LoadOptions, resolve, validate};
 use names::{Name, SHORT};
@@ -88,6 +88,7 @@ fn finish(mut parser: Parser<'_>) -> Result<Scene, Error> {
     let Parser {
         source, mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), ..
     } = parser;
+    scene.pool_kept_text(|from, to| source.slice(from, to));
     warnings.sort_by_key(|w| w.at);
     if dropped > 0 {
         let message = format!(
@@ -235,8 +236,6 @@ pub(crate) struct Origins {
     pub joints: Vec<JointOrigin>,
     /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
     pub shape_densities: Vec<f32>,
-    /// Version 3: per fixture template, its `Id` attribute and where that is.
-    pub fixture_template_ids: Vec<(u32, usize)>,
     /// Version 3: every body's `Bindings`, in body order.
     pub pairs: Vec<Pair>,
 }
@@ -245,29 +244,21 @@ impl Origins {
     /// Appends those of what was read after this one's last object, whose bodies are
     /// numbered after the `bodies_before` read here.
     pub fn append(&mut self, other: Origins, bodies_before: u32) {
-        let Origins {
-            fixture_shapes,
-            bodies,
-            fixture_ids,
-            joints,
-            shape_densities,
-            fixture_template_ids,
-            pairs,
-        } = other;
+        let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs } = other;
         self.fixture_shapes.extend(fixture_shapes);
         self.bodies.extend(bodies);
         self.fixture_ids.extend(fixture_ids);
         self.joints.extend(joints);
         self.shape_densities.extend(shape_densities);
-        self.fixture_template_ids.extend(fixture_template_ids);
         self.pairs.extend(pairs.into_iter().map(|p| Pair { body: p.body + bodies_before, ..p }));
     }
 }
 
-/// A Version 3 `<Pair FixtureId="k" ShapeId="s"/>`: one fixture of a body.
+/// A Version 3 `<Pair FixtureId="f" ShapeId="s"/>`: one fixture of a body, made of the
+/// f-th fixture template and the s-th shape (positions, with where each is written).
 pub(crate) struct Pair {
     pub body: u32,
-    pub fixture_id: (u32, usize),
+    pub fixture: (u32, usize),
     pub shape: (u32, usize),
 }
 
@@ -289,8 +280,15 @@ pub struct Parser<'a> {
     /// before on stays at hand, so a value can be read after the end tag that ends it.
     started: usize,
     last: usize,
-    /// Set while UserData is read: its text stays at hand from here on.
-    pinned: Option<usize>,
+    /// Set while text is kept verbatim (UserData, an unknown element, a Farseer-only
+    /// joint, one inside another): the text from the first on stays at hand.
+    pins: Vec<usize>,
+    /// What the writer is given beyond the records: the object being read, the child
+    /// element of it being read ("" for none), and the comments read since the last
+    /// element, which go before the next one.
+    object: Object,
+    within: &'static str,
+    comments: Vec<KeptText>,
     /// The names of the open elements, innermost last.
     open: Vec<Name>,
     elements: u64,
@@ -313,7 +311,10 @@ impl<'a> Parser<'a> {
             pos: 0,
             started: 0,
             last: 0,
-            pinned: None,
+            pins: Vec::new(),
+            object: Object::World,
+            within: "",
+            comments: Vec::new(),
             open: Vec::new(),
             elements: 0,
             version: 0,
@@ -355,6 +356,18 @@ impl<'a> Parser<'a> {
         self.version >= 3
     }
 
+    /// Version 3 (Aether.Physics2D's spelling): `<Tag>` is `<UserData>` (spec section 8.2).
+    pub fn tag_is_user_data(&self) -> bool {
+        self.farseer_layout()
+    }
+
+    /// Whether a `<Fixture>` or `<Body>` may carry Farseer's informational `Id` attribute
+    /// (Version 2 from July 2013, and Version 3), which is accepted and kept nowhere (spec
+    /// section 8.2). A Version 3 Pair names its fixture by position, never by this `Id`.
+    pub fn id_is_informational(&self) -> bool {
+        self.version >= 2
+    }
+
     /// Warns that `what` needs Version 2 when the file says less.
     pub fn newer_construct(&mut self, at: usize, what: &str) -> Parsed<()> {
         if self.version >= 2 {
@@ -382,7 +395,7 @@ impl<'a> Parser<'a> {
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
     /// at the end of the file; the problem that ends the text early, when that is why.
     fn more(&mut self) -> Parsed<bool> {
-        let keep = self.last.min(self.pinned.unwrap_or(usize::MAX));
+        let keep = self.last.min(self.pins.first().copied().unwrap_or(usize::MAX));
         if self.source.more(keep) {
             return Ok(true);
         }
@@ -636,7 +649,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// `<!...`: a comment (skipped: None), CDATA (its text), or a DOCTYPE (refused).
+    /// `<!...`: a comment (kept for the writer: None), CDATA (its text), or a DOCTYPE (refused).
     fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
@@ -644,6 +657,10 @@ impl<'a> Parser<'a> {
             let end = self.scan(at, at + 4, 2, |rest| memchr::memmem::find(rest, b"-->"))?;
             let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
             self.pos = end + 3;
+            if self.pins.is_empty() {
+                let comment = self.kept_text(at, self.pos);
+                self.comments.push(comment);
+            }
             return Ok(None);
         }
         if head.starts_with(b"<![CDATA[") {
@@ -936,11 +953,13 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Warns about every attribute of `tag` except the lowercase names in `known`.
+    /// Warns about every attribute of `tag` except the lowercase names in `known`, and keeps
+    /// them for the start tag of the object being read.
     pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             let message = format!("unknown attribute {} on <{}> ignored", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
+            self.keep_str(Place::Attribute, &verbatim(tag, attr));
         }
         Ok(())
     }
@@ -962,11 +981,89 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// Warns that `child` is not part of `parent` and skips it.
+    /// Warns that `child` is not part of `parent` and skips it (see [`Parser::ignore`]).
     pub fn unknown(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
         let message = format!("unknown element <{}> in <{}> ignored", child.name(), parent.name());
+        self.ignore(child, message)
+    }
+
+    /// Warns (`unknown-element`, with `message`) and skips `child`, keeping its text for the
+    /// writer at the end of where it was.
+    pub fn ignore(&mut self, child: &Tag, message: String) -> Parsed<()> {
         self.warn(Code::UnknownElement, child.at, message)?;
-        self.skip(child)
+        self.pin(child.at);
+        self.skip(child)?;
+        self.pins.pop();
+        if self.pins.is_empty() {
+            let text = self.kept_text(child.at, self.pos);
+            self.keep(self.object, Place::Inside { within: self.within, before: "" }, text);
+        }
+        Ok(())
+    }
+
+    /// The text from `from` to `to`, for the writer: a span when the text stays at hand,
+    /// else a copy.
+    fn kept_text(&mut self, from: usize, to: usize) -> KeptText {
+        match self.source.is_whole() {
+            true => KeptText::Span(from, to),
+            false => KeptText::Pooled(self.scene.add_str(self.source.slice(from, to))),
+        }
+    }
+
+    /// Keeps `text` for the writer at `place` in `object`: with the piece before it when
+    /// that is at the same place and only white space lies between them.
+    fn keep(&mut self, object: Object, place: Place, text: KeptText) {
+        let last = self.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
+        if let (Some(last), KeptText::Span(from, to)) = (last, text)
+            && let KeptText::Span(first, end) = last.text
+            && trim_xml(self.source.slice(end, from)).is_empty()
+        {
+            last.text = KeptText::Span(first, to);
+            return;
+        }
+        self.scene.kept.push(Kept { object, place, text });
+    }
+
+    /// Keeps `text` (not from the file's text as it stands) at `place` in the object being
+    /// read, unless it is inside text kept whole.
+    fn keep_str(&mut self, place: Place, text: &str) {
+        if self.pins.is_empty() {
+            let text = KeptText::Pooled(self.scene.add_str(text));
+            self.keep(self.object, place, text);
+        }
+    }
+
+    /// Gives the comments read since the last element to `object`, at `place`.
+    pub fn place_comments(&mut self, object: Object, place: Place) {
+        for text in std::mem::take(&mut self.comments) {
+            self.keep(object, place, text);
+        }
+    }
+
+    /// An item of a world container begins: the comments before it go before it.
+    pub fn begin_object(&mut self, object: Object) {
+        self.place_comments(object, Place::Before);
+        (self.object, self.within) = (object, "");
+    }
+
+    /// The item ends: the comments inside it not followed by an element go at its end.
+    pub fn end_object(&mut self) {
+        self.place_comments(self.object, Place::Inside { within: "", before: "" });
+        self.object = Object::World;
+    }
+
+    /// Reads a child element of the object's child `within` with `read`: the comments in
+    /// it go before the element they precede, or at its end.
+    pub fn within<T>(
+        &mut self,
+        within: &'static str,
+        read: impl FnOnce(&mut Self) -> Parsed<T>,
+    ) -> Parsed<T> {
+        self.within = within;
+        let read = read(self);
+        self.place_comments(self.object, Place::Inside { within, before: "" });
+        self.within = "";
+        read
     }
 
     /// Looks `child` up among an object's known elements `E` (any case). Returns which it
@@ -978,7 +1075,10 @@ impl<'a> Parser<'a> {
         child: &Tag,
         seen: &mut Seen,
     ) -> Parsed<Option<(E, bool)>> {
-        let Some(index) = E::NAMES.find(child.name.key(), seen.next) else {
+        let found = E::NAMES.find(child.name.key(), seen.next);
+        let before = found.map_or("", |index| E::ALL[index].name());
+        self.place_comments(self.object, Place::Inside { within: self.within, before });
+        let Some(index) = found else {
             self.unknown(parent, child)?;
             return Ok(None);
         };
@@ -1074,12 +1174,12 @@ impl<'a> Parser<'a> {
     /// Keeps the text from `from` on at hand (UserData keeps its inner XML verbatim),
     /// until [`Parser::unpin`].
     fn pin(&mut self, from: usize) {
-        self.pinned = Some(from);
+        self.pins.push(from);
     }
 
-    /// The text from the pinned offset to `to`, and lets it go.
+    /// The text from the last pinned offset to `to`, and lets it go.
     fn unpin(&mut self, to: usize) -> String {
-        let from = self.pinned.take().unwrap_or(to);
+        let from = self.pins.pop().unwrap_or(to);
         self.source.slice(from, to).to_owned()
     }
 }
@@ -1115,6 +1215,15 @@ fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Att
         attrs.push(Attr { key, value, at: at + 1 + start });
         i = start + len + 1;
     }
+}
+
+/// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
+fn verbatim(tag: &Tag, attr: &Attr) -> String {
+    let content = tag.content.as_deref().unwrap_or_default();
+    let value = (attr.at - tag.at - 1).min(content.len());
+    let quote = content[..value].chars().next_back().unwrap_or('"');
+    let len = content[value..].find(quote).unwrap_or(content.len() - value);
+    format!(" {}={quote}{}{quote}", attr.key, &content[value..value + len])
 }
 
 /// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without

@@ -2,7 +2,7 @@
 
 use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
-use crate::scene::{Range, Shape, ShapeKind, Vec2};
+use crate::scene::{Object, Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
 elements! {
@@ -41,6 +41,7 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
 
 impl<'a> Parser<'a> {
     pub(super) fn shape(&mut self, tag: Tag) -> Parsed<()> {
+        self.begin_object(Object::Shape(self.scene.shapes.len() as u32));
         let mut shape = self.shape_type(&tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
@@ -52,8 +53,7 @@ impl<'a> Parser<'a> {
             if !belongs(kind, name) {
                 let message =
                     format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
-                self.warn(Code::UnknownElement, child.at, message)?;
-                self.skip(&child)?;
+                self.ignore(&child, message)?;
                 continue;
             }
             if repeated && name == ShapeChild::Vertices {
@@ -110,6 +110,7 @@ impl<'a> Parser<'a> {
             }
         }
         self.check_geometry(&tag, &shape)?;
+        self.end_object();
         self.scene.shapes.push(shape);
         Ok(())
     }

@@ -2,6 +2,7 @@
 
 use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
 use crate::error::Code;
+use crate::scene::{Object, Place};
 
 elements! {
     pub(super) enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
@@ -29,6 +30,7 @@ impl<'a> Parser<'a> {
     /// The whole document: prolog, `<World>`, epilog.
     pub(super) fn document(&mut self) -> Parsed<()> {
         let root = self.root()?;
+        self.place_comments(Object::World, Place::Before);
         self.world(&root)?;
         self.epilog()
     }
@@ -79,7 +81,10 @@ impl<'a> Parser<'a> {
     pub(super) fn epilog(&mut self) -> Parsed<()> {
         loop {
             match self.next_node()? {
-                super::Node::Eof => return Ok(()),
+                super::Node::Eof => {
+                    self.place_comments(Object::World, Place::After);
+                    return Ok(());
+                }
                 super::Node::Text(t) if self.is_blank(&t) => {}
                 super::Node::Open(tag) => {
                     return Err(problem(
@@ -136,6 +141,7 @@ impl<'a> Parser<'a> {
                 return Ok(());
             }
         }
+        self.place_comments(Object::World, Place::Inside { within: "", before: "" });
         Ok(())
     }
 
@@ -158,6 +164,9 @@ impl<'a> Parser<'a> {
             taken_over = p.take_over(name, seen);
             taken_over
         })?;
+        if !taken_over {
+            self.place_comments(Object::World, Place::Inside { within: name.name(), before: "" });
+        }
         Ok(taken_over)
     }
 
