@@ -78,7 +78,8 @@ check_install() {
 
 check_layout() {
   local file
-  for file in include/box2scene.h include/box2scene/box2d.hpp \
+  for file in include/box2scene.h include/box2scene/box2d.hpp include/box2scene/box2d3.h \
+    include/box2scene/detail/box2d3_impl.h share/box2scene/box2d3.c \
     "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
     "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
     "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \
@@ -138,6 +139,20 @@ check_cpp_adapter() {
   needed "$work/build/fall" | grep -q '^libbox2d\.so' || fail "fall does not load Box2D"
   expect_output "2 bodies; after 1 s the ball is at (0.000, 4.917)" \
     "$work/build/fall" "$work/src/scene.xml"
+}
+
+# A C host with its own Box2D v3 (BOX2D3_INCLUDE_DIR, BOX2D3_LIBRARY: the static library the
+# build compiled) and the v3 adapter from box2scene::box2d3; Debian's Box2D 2.4 stays out.
+check_c_box2d3() {
+  : "${BOX2D3_INCLUDE_DIR:?}" "${BOX2D3_LIBRARY:?}"
+  build_consumer box2d3 -DBOX2D3_INCLUDE_DIR="$BOX2D3_INCLUDE_DIR" \
+    -DBOX2D3_LIBRARY="$BOX2D3_LIBRARY"
+  expect_shared "$work/build/fall_v3"
+  if needed "$work/build/fall_v3" | grep -q '^libbox2d\.so'; then
+    fail "fall_v3 loads Box2D 2.4"
+  fi
+  expect_output "2 bodies; after 1 s the ball is at (0.000, 4.979)" \
+    "$work/build/fall_v3" "$work/src/scene.xml"
 }
 
 check_pkg_config() {
