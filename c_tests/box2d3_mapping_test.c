@@ -687,6 +687,35 @@ static int edge_with_ghosts_is_a_one_sided_chain(void) {
     return 0;
 }
 
+/* An edge with one ghost: still a v3 chain, the other ghost extrapolated and reported. */
+static int edge_with_one_ghost_extrapolates_the_other(void) {
+    scene_world w;
+    OPEN(w, "2", "0 -10",
+         "<Shape Type='Edge'><Vertex1>5 0</Vertex1><Vertex2>-5 0</Vertex2><Vertex0>6 1</Vertex0>"
+         "<HasVertex0>true</HasVertex0></Shape>" CIRCLE("0.5"),
+         "<Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape><Density>1</Density>"
+         "</Fixture>",
+         "<Body Type='Static'><Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>0 2</Position><Fixtures><ID>1</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_SHAPE, "shape", 0), 1);
+    b2ChainId chain = CHAIN(w, 0, 0);
+    ENSURE(!B2_IS_NULL(chain));
+    b2ShapeId segment;
+    ENSURE_EQ(b2Chain_GetSegments(chain, &segment, 1), 1);
+    b2ChainSegment s = b2Shape_GetChainSegment(segment);
+    ENSURE_FLOAT(s.ghost1.x, 6.0f); /* the given one */
+    ENSURE_FLOAT(s.ghost1.y, 1.0f);
+    ENSURE_FLOAT(s.ghost2.x, -15.0f); /* Vertex2 + (Vertex2 - Vertex1) */
+    ENSURE_FLOAT(s.ghost2.y, 0.0f);
+    step_v3(&w.v3, 120);
+    ENSURE_NEAR(b2Body_GetPosition(BODY(w, 1)).y, 0.5, 0.02);
+    ENSURE_FINITE(w);
+    close_world(&w);
+    return 0;
+}
+
 static int open_chains_with_and_without_ghosts(void) {
     scene_world w;
     OPEN(w, "2", "0 -10",
@@ -917,6 +946,45 @@ static int revolute_limit_beyond_v3s_range_is_clamped(void) {
     ENSURE(!b2RevoluteJoint_IsLimitEnabled(JOINT(w, 1)));
     ENSURE(!B2_IS_NULL(JOINT(w, 1)));
     step_v3(&w.v3, 60);
+    ENSURE_FINITE(w);
+    close_world(&w);
+    return 0;
+}
+
+/* A disabled revolute limit out of order is passed swapped (bad-limit); a ReferenceAngle
+ * beyond pi, which v3 would clamp, loses only its whole turns: the joint angle of a wheel
+ * built at that angle is 0, and a limit around it stops the wheel's spin there. */
+static int revolute_reference_angle_and_limit_order(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", CIRCLE("0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Static'><Position>0 10</Position></Body>"
+         "<Body Type='Dynamic'><Position>3 10</Position><Angle>7</Angle><AngularVelocity>2"
+         "</AngularVelocity><Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>13 10</Position><Fixtures><ID>0</ID></Fixtures></Body>",
+         "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>3 0"
+         "</LocalAnchorA><ReferenceAngle>7</ReferenceAngle><EnableLimit>true</EnableLimit>"
+         "<LowerAngle>-0.1</LowerAngle><UpperAngle>0.1</UpperAngle></Joint>"
+         "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>10 0"
+         "</LocalAnchorA><LocalAnchorB>-3 0</LocalAnchorB><LowerAngle>1</LowerAngle>"
+         "<UpperAngle>-1</UpperAngle></Joint>");
+    ENSURE_REPORT_COUNT(w, 2);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_CAPTURE, "body", 1), 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_BAD_LIMIT, "joint", 1), 1);
+    ENSURE_FLOAT(b2Joint_GetReferenceAngle(JOINT(w, 0)),
+                 (float)remainder(7.0f, 6.283185307179586));
+    ENSURE_NEAR(b2RevoluteJoint_GetAngle(JOINT(w, 0)), 0.0, 1e-5);
+    ENSURE(!b2RevoluteJoint_IsLimitEnabled(JOINT(w, 1)));
+    ENSURE_FLOAT(b2RevoluteJoint_GetLowerLimit(JOINT(w, 1)), -1.0f);
+    ENSURE_FLOAT(b2RevoluteJoint_GetUpperLimit(JOINT(w, 1)), 1.0f);
+    float widest = 0.0f, lowest = 10.0f;
+    for (int i = 0; i < 120; ++i) {
+        step_v3(&w.v3, 1);
+        widest = fmaxf(widest, fabsf(b2RevoluteJoint_GetAngle(JOINT(w, 0))));
+        lowest = fminf(lowest, b2Body_GetPosition(BODY(w, 2)).y);
+    }
+    ENSURE(widest > 0.09f && widest < 0.1f + 0.03f); /* it reached the limit, and stopped */
+    /* The disabled limit holds nothing: that pendulum swings down, past -1 rad. */
+    ENSURE(lowest < 7.5f);
     ENSURE_FINITE(w);
     close_world(&w);
     return 0;
@@ -1438,6 +1506,7 @@ int main(void) {
     failed += RUN_TEST(circle_and_polygon_shapes);
     failed += RUN_TEST(two_vertex_polygon_and_plain_edge_are_segments);
     failed += RUN_TEST(edge_with_ghosts_is_a_one_sided_chain);
+    failed += RUN_TEST(edge_with_one_ghost_extrapolates_the_other);
     failed += RUN_TEST(open_chains_with_and_without_ghosts);
     failed += RUN_TEST(three_vertex_loops_hold_balls);
     failed += RUN_TEST(what_v3_shapes_cannot_hold_is_reported);
@@ -1445,6 +1514,7 @@ int main(void) {
     failed += RUN_TEST(revolute_limit_holds);
     failed += RUN_TEST(revolute_motor_turns_at_its_speed);
     failed += RUN_TEST(revolute_limit_beyond_v3s_range_is_clamped);
+    failed += RUN_TEST(revolute_reference_angle_and_limit_order);
     failed += RUN_TEST(prismatic_moves_only_along_its_axis);
     failed += RUN_TEST(prismatic_disabled_limit_out_of_order_is_swapped);
     failed += RUN_TEST(rigid_distance_joint_keeps_its_length);
