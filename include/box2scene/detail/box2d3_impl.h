@@ -1398,51 +1398,61 @@ static float b2s3_ulps_away(float x, int steps) {
     return x;
 }
 
-/* An angle whose cosf and sinf are the rotation's, searched next to atan2f's. */
-static bool b2s3_angle_of(b2Rot q, float* angle) {
-    float guess = atan2f(q.s, q.c);
+/* The float nearest `guess` (within 16 ulps) for which `gives` holds: an inverse computed in
+ * floats is a few ulps off the value whose forward computation gives the bits wanted. False,
+ * with `guess` in `*out`, when none does. */
+static bool b2s3_search_ulps(float guess, bool (*gives)(float x, const float* wanted),
+                             const float* wanted, float* out) {
     for (int k = 0; k <= 16; ++k) {
         for (int sign = -1; sign <= 1; sign += 2) {
-            float a = b2s3_ulps_away(guess, sign * k);
-            if (cosf(a) == q.c && sinf(a) == q.s) {
-                *angle = a;
+            float x = b2s3_ulps_away(guess, sign * k);
+            if (gives(x, wanted)) {
+                *out = x;
                 return true;
             }
         }
     }
-    *angle = guess;
+    *out = guess;
     return false;
 }
 
+/* wanted: cosine and sine, as the build makes a rotation of an angle. */
+static bool b2s3_rotation_of(float angle, const float* wanted) {
+    return cosf(angle) == wanted[0] && sinf(angle) == wanted[1];
+}
+
+/* An angle whose cosf and sinf are the rotation's. */
+static bool b2s3_angle_of(b2Rot q, float* angle) {
+    float wanted[2] = {q.c, q.s};
+    return b2s3_search_ulps(atan2f(q.s, q.c), b2s3_rotation_of, wanted, angle);
+}
+
+/* wanted: a result and what the build subtracts from x to get it. */
+static bool b2s3_less_gives(float x, const float* wanted) {
+    return x - wanted[1] == wanted[0];
+}
+
+/* wanted: a result and what the build adds to x to get it. */
+static bool b2s3_plus_gives(float x, const float* wanted) {
+    return x + wanted[1] == wanted[0];
+}
+
 /* The inertia about the body origin that the build turns back into `central`:
- * origin - mass * |center|^2 == central, searched next to the direct inverse. */
+ * origin - mass * |center|^2 == central. */
 static float b2s3_origin_inertia(float central, float mass, b2Vec2 center) {
-    float moment = mass * b2Dot(center, center);
-    float guess = central + moment;
-    for (int k = 0; k <= 16; ++k) {
-        for (int sign = -1; sign <= 1; sign += 2) {
-            float x = b2s3_ulps_away(guess, sign * k);
-            if (x - moment == central) {
-                return x;
-            }
-        }
-    }
-    return guess;
+    float wanted[2] = {central, mass * b2Dot(center, center)};
+    float origin;
+    b2s3_search_ulps(central + wanted[1], b2s3_less_gives, wanted, &origin);
+    return origin;
 }
 
 /* One component of the velocity the build gives a body's origin, so that v3's
  * b2Body_ApplyMassFromShapes, adding w x (the centre of mass's shift), gives `target`. */
 static float b2s3_before_shift(float target, float shift) {
-    float guess = target - shift;
-    for (int k = 0; k <= 16; ++k) {
-        for (int sign = -1; sign <= 1; sign += 2) {
-            float x = b2s3_ulps_away(guess, sign * k);
-            if (x + shift == target) {
-                return x;
-            }
-        }
-    }
-    return guess;
+    float wanted[2] = {target, shift};
+    float before;
+    b2s3_search_ulps(target - shift, b2s3_plus_gives, wanted, &before);
+    return before;
 }
 
 /* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
