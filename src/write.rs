@@ -509,9 +509,10 @@ impl<'s> Writer<'s, '_> {
     fn before(&mut self, name: &str) {
         let depth = self.depth;
         let scope = self.scope();
-        let within = match depth - scope.depth {
-            0 => "",
-            1 => scope.within,
+        // Above the object (its own start tag, or the world's) nothing of it goes before.
+        let within = match depth.checked_sub(scope.depth) {
+            Some(0) => "",
+            Some(1) => scope.within,
             _ => return,
         };
         self.put(|at| matches!(at, KeptAt::Inside { within: w, before } if w == within && before == name));
