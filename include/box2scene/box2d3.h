@@ -1,7 +1,8 @@
 /*
  * box2scene/box2d3.h: builds a Box2D v3.1 world (b2WorldId) from a loaded box2scene scene,
- * and captures bodies of a live v3 world back into a scene. C99 or later; its declarations
- * are usable from C++. Needs <box2d/box2d.h> (Box2D v3.1.x) and <box2scene.h>.
+ * and captures bodies of a live v3 world back into a scene. Its own code is C99 and its
+ * declarations are usable from C++; Box2D v3's headers, which it includes, need C11.
+ * Needs <box2d/box2d.h> (Box2D v3.1.x) and <box2scene.h>.
  *
  * The implementation is in this header too: define B2S_BOX2D3_IMPLEMENTATION in exactly one
  * C file of the host before including it (CMake's box2scene::box2d3 target does that for

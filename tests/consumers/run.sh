@@ -185,7 +185,7 @@ check_subdirectory() {
 check_readme() {
   local readme file
   readme=$(cat "$BOX2SCENE_SOURCE_DIR/README.md")
-  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt; do
+  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt; do
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
   [[ $readme == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)'* ]] ||
