@@ -996,7 +996,9 @@ struct b2s_write_options b2s_write_options_default(void);
  * A loaded scene is written with everything its file held beyond the records
  * (comments, unknown elements and attributes, Farseer-only joints, in their places).
  * A joint of the unsupported kind that was built, not loaded, has no form to write:
- * `B2S_CODE_UNSUPPORTED_JOINT_TYPE`, naming it, and `*out_text` stays NULL.
+ * `B2S_CODE_UNSUPPORTED_JOINT_TYPE`, naming it, and `*out_text` stays NULL. So has an
+ * object given two unknown attributes of one name from different places of its file (a
+ * Version 3 body, those of its Pairs): `B2S_CODE_DUPLICATE_ATTRIBUTE`, naming it.
  *
  * # Safety
  * `scene` is NULL or a live scene; `options` NULL or valid; `out_text` NULL or writable;

@@ -565,6 +565,19 @@ pub(crate) enum Object {
     Joint(u32),
 }
 
+/// As messages name objects: "the world", "body 3".
+impl std::fmt::Display for Object {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Object::World => f.write_str("the world"),
+            Object::Shape(i) => write!(f, "shape {i}"),
+            Object::Fixture(i) => write!(f, "fixture {i}"),
+            Object::Body(i) => write!(f, "body {i}"),
+            Object::Joint(i) => write!(f, "joint {i}"),
+        }
+    }
+}
+
 impl Object {
     /// The same object after `before` more of each kind were put before it.
     fn shifted(self, before: Objects) -> Object {

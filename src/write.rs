@@ -27,7 +27,8 @@ pub struct WriteOptions {
 /// held beyond the records: comments, unknown elements and attributes, and Farseer-only
 /// joints as they were written, in their places (spec section 11). A joint of the
 /// unsupported kind with no text of its own (one a host built) has no form to write:
-/// error `unsupported-joint-type` naming it.
+/// error `unsupported-joint-type` naming it; nor has an object given two unknown
+/// attributes of one name from different places of its file: `duplicate-attribute`.
 pub fn write(scene: &Scene, options: &WriteOptions) -> Result<String, Error> {
     let bytes = write_utf8(scene, options)?;
     Ok(String::from_utf8(bytes).expect("the text is written from str pieces"))
@@ -70,6 +71,40 @@ fn unwritable_joint(scene: &Scene) -> Result<(), Error> {
     })
 }
 
+/// The error for the first object whose start tag would carry one attribute name twice
+/// (names compare as the loader compares them, ignoring case): two unknown attributes it
+/// was given from different places of the file (a Version 3 body gets those of its
+/// `<Pair>`s), or one named as the writer's own `Type` or `Version`.
+fn clashing_attributes(scene: &Scene) -> Result<(), Error> {
+    let mut names: Vec<(Object, String)> = Vec::new();
+    for kept in &scene.kept {
+        if kept.place != KeptAt::Attribute {
+            continue;
+        }
+        let text = scene.text(kept.text).unwrap_or_default().trim_start();
+        let name = text.split(['=', ' ', '\t', '\n', '\r']).next().unwrap_or_default();
+        let key = name.to_ascii_lowercase();
+        let own = match kept.object {
+            Object::World => "version",
+            Object::Fixture(_) => "",
+            _ => "type",
+        };
+        let clash = key == own || names.iter().any(|(o, k)| *o == kept.object && *k == key);
+        if clash {
+            return Err(Error {
+                code: Code::DuplicateAttribute,
+                position: Position::default(),
+                message: format!(
+                    "{} would carry the attribute {name} twice: the file gave it unknown attributes of that name from more than one place (or one the writer writes itself), so the scene cannot be written without losing one",
+                    kept.object
+                ),
+            });
+        }
+        names.push((kept.object, key));
+    }
+    Ok(())
+}
+
 /// The room given to a part of the text estimated at `size` bytes: estimates are of
 /// typical files, and a part that outgrows its room goes on in memory of its own.
 fn room(size: usize) -> usize {
@@ -88,6 +123,7 @@ struct Text<'s> {
 impl<'s> Text<'s> {
     fn new(scene: &'s Scene, options: &WriteOptions) -> Result<Text<'s>, Error> {
         unwritable_joint(scene)?;
+        clashing_attributes(scene)?;
         let version = if needs_version_2(scene) { 2 } else { 1 };
         let mut text = Text { scene, all: options.all_fields, version, size: 0 };
         text.size =

@@ -233,3 +233,36 @@ fn a_built_unsupported_joint_is_refused_naming_it() {
     let error = builder.add_joint(&joint, Some("slider")).unwrap_err();
     assert!(error.message.starts_with("joint 0: "), "{error}");
 }
+
+/// A Version 3 body with the unknown attributes of its `<Pair>`s: the attribute of one Pair
+/// goes onto the body's start tag and reads back; two of one name (or one named as the
+/// writer's own `Type`) would make a file no XML parser reads, so the scene is refused,
+/// naming the body, and nothing is written.
+#[test]
+fn pair_attributes_go_onto_their_body_and_never_twice() {
+    let with_pairs = |pairs: &str| {
+        format!(
+            r#"<World Version="3">
+  <Shapes><Shape Type="Circle" Density="1"><Radius>1</Radius><Position>0 0</Position></Shape></Shapes>
+  <Fixtures><Fixture Id="7"/></Fixtures>
+  <Bodies><Body Type="Dynamic"><Bindings>{pairs}</Bindings></Body></Bodies>
+  <Joints/>
+</World>"#
+        )
+    };
+    let one = load_text(&with_pairs(r#"<Pair FixtureId="0" ShapeId="0" Layer="front"/>"#));
+    let written = assert_round_trip(&one, "one Pair attribute");
+    assert!(written.contains(r#"<Body Type="Dynamic" Layer="front">"#), "{written}");
+
+    for pairs in [
+        r#"<Pair FixtureId="0" ShapeId="0" Layer="a"/><Pair FixtureId="0" ShapeId="0" layer="b"/>"#,
+        r#"<Pair FixtureId="0" ShapeId="0" Type="x"/>"#,
+    ] {
+        let scene = load_text(&with_pairs(pairs));
+        for options in MODES {
+            let error = write(&scene, &options).unwrap_err();
+            assert_eq!(error.code, Code::DuplicateAttribute, "{pairs}: {error}");
+            assert!(error.message.starts_with("body 0 would carry the attribute "), "{error}");
+        }
+    }
+}

@@ -3,7 +3,7 @@
 //! scene and is written again byte for byte.
 #![no_main]
 
-use box2scene::{LoadOptions, Scene, WriteOptions, load, write};
+use box2scene::{Code, LoadOptions, Scene, WriteOptions, load, write};
 use libfuzzer_sys::fuzz_target;
 
 /// Everything but the version and the diagnostics, bit for bit.
@@ -17,7 +17,13 @@ fuzz_target!(|data: &[u8]| {
     let Ok(scene) = load(data, &LoadOptions::default()) else { return };
     for all_fields in [false, true] {
         let options = WriteOptions { all_fields, ..WriteOptions::default() };
-        let written = write(&scene, &options).expect("a loaded scene is written");
+        let written = match write(&scene, &options) {
+            Ok(written) => written,
+            // Unknown attributes of one name from two places of the file (a Version 3 body
+            // gets its Pairs'): refused, as a file carrying both could not be read.
+            Err(e) if e.code == Code::DuplicateAttribute => return,
+            Err(e) => panic!("a loaded scene is not written: {e}"),
+        };
         let again = load(written.as_bytes(), &LoadOptions::default())
             .unwrap_or_else(|e| panic!("the written file does not load: {e}\n{written}"));
         assert_eq!(content(&again), content(&scene), "{written}");
