@@ -17,6 +17,7 @@ mod dump;
 pub mod error;
 pub mod ffi;
 mod input;
+mod output;
 mod parse;
 mod resolve;
 pub mod scene;
@@ -82,14 +83,16 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
     parse::load_path(path.as_ref(), options)
 }
 
-/// Writes `scene` to a file (see [`write`]); nothing is written when the scene cannot be.
+/// Writes `scene` to a file (see [`write`]), replacing it atomically: the text goes to a
+/// new file beside it, flushed to disk, then renamed over it, so a failed write (a full
+/// disk, a scene that cannot be written) leaves the old file as it was.
 pub fn write_path(
     scene: &Scene,
     path: impl AsRef<Path>,
     options: &WriteOptions,
 ) -> Result<(), Error> {
     let path = path.as_ref();
-    std::fs::write(path, write::write_utf8(scene, options)?).map_err(|e| Error {
+    output::replace(path, &write::write_utf8(scene, options)?).map_err(|e| Error {
         code: Code::Io,
         position: Position::default(),
         message: format!("cannot write {}: {e}", path.display()),
