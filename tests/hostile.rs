@@ -142,6 +142,17 @@ fn duplicate_attributes() {
     expect(b"<World Version=\"1\" Version=\"2\"/>", Code::DuplicateAttribute, 1, 20);
 }
 
+/// Names ignore case, so attributes that differ only in case are one attribute given
+/// twice, whichever reader takes the tag (plain text, or quick-xml for references).
+#[test]
+fn attributes_differing_only_in_case_are_duplicates() {
+    expect(b"<World Version=\"1\" version=\"2\"/>", Code::DuplicateAttribute, 1, 20);
+    let shape = "<World Version=\"1\"><Shapes>\n  <Shape Type=\"Circle\" tYPE=\"Polygon\"/>";
+    expect(shape.as_bytes(), Code::DuplicateAttribute, 2, 24);
+    let referenced = "<World Version=\"1\"><Shapes>\n  <Shape Type=\"Circ&#108;e\" TYPE=\"x\"/>";
+    expect(referenced.as_bytes(), Code::DuplicateAttribute, 2, 29);
+}
+
 #[test]
 fn two_roots() {
     expect(format!("{SCENE}\n<World/>").as_bytes(), Code::MalformedXml, 2, 1);

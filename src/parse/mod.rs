@@ -905,10 +905,27 @@ impl<'a> Parser<'a> {
         let Some(content) = tag.content.as_deref() else {
             return Ok(Vec::new());
         };
-        match plain_attributes(content, tag.name.len(), tag.at) {
-            Some(attrs) => Ok(attrs),
-            None => self.xml_attributes(tag, content),
+        let attrs = match plain_attributes(content, tag.name.len(), tag.at) {
+            Some(attrs) => attrs,
+            None => self.xml_attributes(tag, content)?,
+        };
+        // Names compare as the loader reads them, ignoring case: `Type` and `type` are one
+        // attribute, given twice.
+        for (i, attr) in attrs.iter().enumerate() {
+            if attrs[..i].iter().any(|a| a.is(attr.key)) {
+                let offset = attr.key.as_ptr().addr().saturating_sub(content.as_ptr().addr());
+                return Err(problem(
+                    Code::DuplicateAttribute,
+                    tag.at + 1 + offset,
+                    format!(
+                        "<{}> has the attribute {} twice (names ignore case)",
+                        tag.name(),
+                        attr.key
+                    ),
+                ));
+            }
         }
+        Ok(attrs)
     }
 
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
@@ -1206,8 +1223,7 @@ fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Att
         let len = value
             .iter()
             .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
-        if space == 0 || key_len == 0 || value[len] != *quote || attrs.iter().any(|a| a.key == key)
-        {
+        if space == 0 || key_len == 0 || value[len] != *quote || attrs.iter().any(|a| a.is(key)) {
             return None;
         }
         let start = i + key_len + 2;
