@@ -70,7 +70,8 @@ static int same_state(const v3_world* a, const b2BodyId* b_bodies, uint32_t coun
     return 0;
 }
 
-static int round_trip(const char* path, b2s_scene* scene) {
+static int round_trip(const char* path, const b2s_scene* scene, void* unused) {
+    (void)unused;
     v3_world first = build_v3(scene);
     ENSURE(first.built != NULL);
     b2s_box2d3_reports reports;
@@ -106,19 +107,9 @@ static int round_trip(const char* path, b2s_scene* scene) {
 }
 
 static int every_scene_file_round_trips_bit_for_bit(void) {
-    char** paths = scene_files();
-    int failed = 0, checked = 0;
-    for (char** path = paths; *path != NULL; ++path) {
-        b2s_scene* scene = load_if_valid(*path);
-        if (scene == NULL) {
-            continue;
-        }
-        failed += round_trip(*path, scene);
-        checked += 1;
-        b2s_scene_free(scene);
-    }
-    free_paths(paths);
-    ENSURE(checked >= 10);
+    int loaded = 0;
+    int failed = for_each_scene(round_trip, NULL, &loaded);
+    ENSURE(loaded >= 10);
     return failed;
 }
 

@@ -26,7 +26,8 @@ static bool reported_missing(const b2s_box2d3_reports* reports, const char* obje
     return false;
 }
 
-static int build_and_step(const char* path, const b2s_scene* scene) {
+static int build_and_step(const char* path, const b2s_scene* scene, void* unused) {
+    (void)unused;
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     v3_world world = build_v3(scene);
     ENSURE(world.built != NULL);
@@ -131,8 +132,14 @@ static b2MassData expected_mass(b2MassData shapes, const b2s_body* body) {
     return m;
 }
 
+/* How many dynamic bodies were compared, and how many of them have a MassData mass. */
+typedef struct mass_tally {
+    int compared, overridden;
+} mass_tally;
+
 static int masses_match_hand_built_bodies(const char* path, const b2s_scene* scene,
-                                          int* compared) {
+                                          void* context) {
+    mass_tally* tally = (mass_tally*)context;
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     v3_world world = build_v3(scene);
     b2WorldDef def = b2DefaultWorldDef();
@@ -165,7 +172,8 @@ static int masses_match_hand_built_bodies(const char* path, const b2s_scene* sce
                     (double)expected.rotationalInertia);
             return 1;
         }
-        *compared += 1;
+        tally->compared += 1;
+        tally->overridden += body->mass_data.mass_given;
     }
     b2DestroyWorld(by_hand);
     free_v3(&world);
@@ -173,39 +181,18 @@ static int masses_match_hand_built_bodies(const char* path, const b2s_scene* sce
 }
 
 static int every_scene_file_builds_and_stays_finite(void) {
-    char** paths = scene_files();
-    int failed = 0, built = 0;
-    for (char** path = paths; *path != NULL; ++path) {
-        b2s_scene* scene = load_if_valid(*path);
-        if (scene == NULL) {
-            continue;
-        }
-        failed += build_and_step(*path, scene);
-        built += 1;
-        b2s_scene_free(scene);
-    }
-    free_paths(paths);
-    ENSURE(built >= 10);
+    int loaded = 0;
+    int failed = for_each_scene(build_and_step, NULL, &loaded);
+    ENSURE(loaded >= 10);
     return failed;
 }
 
 static int every_body_has_the_mass_v3_gives_its_shapes(void) {
-    char** paths = scene_files();
-    int failed = 0, compared = 0, overridden = 0;
-    for (char** path = paths; *path != NULL; ++path) {
-        b2s_scene* scene = load_if_valid(*path);
-        if (scene != NULL) {
-            failed += masses_match_hand_built_bodies(*path, scene, &compared);
-            const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-            for (uint32_t i = 0; i < view->body_count; ++i) {
-                overridden += view->bodies[i].mass_data.mass_given;
-            }
-            b2s_scene_free(scene);
-        }
-    }
-    free_paths(paths);
-    ENSURE(compared >= 50);
-    ENSURE(overridden >= 2);
+    mass_tally tally = {0, 0};
+    int loaded = 0;
+    int failed = for_each_scene(masses_match_hand_built_bodies, &tally, &loaded);
+    ENSURE(tally.compared >= 50);
+    ENSURE(tally.overridden >= 2);
     return failed;
 }
 

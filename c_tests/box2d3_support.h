@@ -133,13 +133,26 @@ static inline void free_paths(char** paths) {
     free(paths);
 }
 
-/* Whether `path` loads with default options (some project files are refused on purpose). */
-static inline b2s_scene* load_if_valid(const char* path) {
-    b2s_scene* scene = NULL;
-    if (b2s_load_file(path, NULL, &scene, NULL) != B2S_CODE_OK) {
-        return NULL;
+/* A check of one scene file: 0 when it passes. */
+typedef int scene_check(const char* path, const b2s_scene* scene, void* context);
+
+/* Runs `check` on every scene file of the project that loads with default options (some are
+ * refused on purpose); returns how many failed, and stores how many loaded in `*loaded`. */
+static inline int for_each_scene(scene_check* check, void* context, int* loaded) {
+    char** paths = scene_files();
+    int failed = 0;
+    *loaded = 0;
+    for (char** path = paths; *path != NULL; ++path) {
+        b2s_scene* scene = NULL;
+        if (b2s_load_file(*path, NULL, &scene, NULL) != B2S_CODE_OK) {
+            continue;
+        }
+        failed += check(*path, scene, context);
+        *loaded += 1;
+        b2s_scene_free(scene);
     }
-    return scene;
+    free_paths(paths);
+    return failed;
 }
 
 #endif /* BOX2SCENE_BOX2D3_SUPPORT_H */
