@@ -32,14 +32,6 @@ typedef struct scene_world {
     v3_world v3;
 } scene_world;
 
-#define OPEN(w, ...)                                                                         \
-    do {                                                                                     \
-        (w).scene = scene_of(__VA_ARGS__);                                                   \
-        ENSURE((w).scene != NULL);                                                           \
-        (w).v3 = build_v3((w).scene);                                                        \
-        ENSURE((w).v3.built != NULL);                                                        \
-    } while (0)
-
 /* A world built from a scene made with the C builder (for what the loader refuses). */
 #define OPEN_SCENE(w, made)                                                                  \
     do {                                                                                     \
@@ -48,6 +40,9 @@ typedef struct scene_world {
         (w).v3 = build_v3((w).scene);                                                        \
         ENSURE((w).v3.built != NULL);                                                        \
     } while (0)
+
+/* A world built from a scene made of its parts (scene_of). */
+#define OPEN(w, ...) OPEN_SCENE(w, scene_of(__VA_ARGS__))
 
 static void close_world(scene_world* w) {
     free_v3(&w->v3);
@@ -66,25 +61,7 @@ static uint32_t slot_of(const scene_world* w, uint32_t body, uint32_t k) {
 #define SHAPE(w, body, k) ((w).v3.built->shapes[slot_of(&(w), (body), (k))])
 #define CHAIN(w, body, k) ((w).v3.built->chains[slot_of(&(w), (body), (k))])
 
-/* Every created body's position, rotation and velocities are finite. */
-static bool world_finite(const scene_world* w) {
-    const b2s_box2d3_built* built = w->v3.built;
-    for (uint32_t i = 0; i < built->body_count; ++i) {
-        b2BodyId body = built->bodies[i];
-        if (B2_IS_NULL(body)) {
-            continue;
-        }
-        b2Rot q = b2Body_GetRotation(body);
-        if (!finite_vec(b2Body_GetPosition(body)) || !finite_vec(b2Body_GetLinearVelocity(body)) ||
-            !isfinite(q.c) || !isfinite(q.s) || !isfinite(b2Body_GetAngularVelocity(body))) {
-            fprintf(stderr, "body %u is not finite\n", (unsigned)i);
-            return false;
-        }
-    }
-    return true;
-}
-
-#define ENSURE_FINITE(w) ENSURE(world_finite(&(w)))
+#define ENSURE_FINITE(w) ENSURE(bodies_finite(&(w).v3))
 
 /* Exactly `expected` reports in all (the ones the test then checks one by one). */
 #define ENSURE_REPORT_COUNT(w, expected)                                                     \

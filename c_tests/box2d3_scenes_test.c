@@ -61,16 +61,7 @@ static int build_and_step(const char* path, const b2s_scene* scene, void* unused
         }
     }
     step_v3(&world, 600);
-    for (uint32_t i = 0; i < view->body_count; ++i) {
-        b2BodyId body = built->bodies[i];
-        if (B2_IS_NULL(body)) {
-            continue;
-        }
-        ENSURE(finite_vec(b2Body_GetPosition(body)));
-        ENSURE(finite_vec(b2Body_GetLinearVelocity(body)));
-        ENSURE(isfinite(b2Rot_GetAngle(b2Body_GetRotation(body))));
-        ENSURE(isfinite(b2Body_GetAngularVelocity(body)));
-    }
+    ENSURE(bodies_finite(&world));
     free_v3(&world);
     return 0;
 }

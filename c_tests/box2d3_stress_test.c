@@ -308,21 +308,6 @@ static b2s_scene* generated_level(void) {
     return scene;
 }
 
-static bool bodies_finite(const v3_world* world) {
-    for (uint32_t i = 0; i < world->built->body_count; ++i) {
-        b2BodyId body = world->built->bodies[i];
-        if (B2_IS_NULL(body)) {
-            continue;
-        }
-        b2Rot q = b2Body_GetRotation(body);
-        if (!finite_vec(b2Body_GetPosition(body)) || !finite_vec(b2Body_GetLinearVelocity(body)) ||
-            !isfinite(q.c) || !isfinite(q.s) || !isfinite(b2Body_GetAngularVelocity(body))) {
-            return false;
-        }
-    }
-    return true;
-}
-
 static int generated_levels_stay_finite(void) {
     int levels = 0, beyond = 0, skipped = 0, bodies = 0, joints = 0;
     int kinds_built[B2S_JOINT_KIND_UNSUPPORTED + 1] = {0};

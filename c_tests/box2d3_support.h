@@ -92,6 +92,24 @@ static inline bool finite_vec(b2Vec2 v) {
     return isfinite(v.x) && isfinite(v.y);
 }
 
+/* Whether every created body's position, rotation and velocities are finite (the first that
+ * is not is named on stderr). */
+static inline bool bodies_finite(const v3_world* world) {
+    for (uint32_t i = 0; i < world->built->body_count; ++i) {
+        b2BodyId body = world->built->bodies[i];
+        if (B2_IS_NULL(body)) {
+            continue;
+        }
+        b2Rot q = b2Body_GetRotation(body);
+        if (!finite_vec(b2Body_GetPosition(body)) || !finite_vec(b2Body_GetLinearVelocity(body)) ||
+            !isfinite(q.c) || !isfinite(q.s) || !isfinite(b2Body_GetAngularVelocity(body))) {
+            fprintf(stderr, "body %u is not finite\n", (unsigned)i);
+            return false;
+        }
+    }
+    return true;
+}
+
 /* Every scene file of the project and of the editor's corpus, as paths; NULL-terminated,
  * freed with free_paths. */
 static inline char** scene_files(void) {

@@ -215,7 +215,8 @@ typedef struct b2s3_builder {
     b2MassData* masses;        /* each created dynamic body's, inertia about its centre */
 } b2s3_builder;
 
-#define B2S3_REPORT(builder, ...) b2s3_report(&(builder)->list, __VA_ARGS__)
+/* A report of a build or a capture: both keep their list as `list`. */
+#define B2S3_REPORT(owner, ...) b2s3_report(&(owner)->list, __VA_ARGS__)
 
 static void b2s3_beyond(b2s3_builder* b, const b2s3_check* check, const char* object,
                         uint32_t index, const char* name, const char* owner) {
@@ -1366,8 +1367,6 @@ typedef struct b2s3_capture {
     uint32_t shape_count, fixture_count, joint_count;
 } b2s3_capture;
 
-#define B2S3_CAPTURE_REPORT(c, ...) b2s3_report(&(c)->list, __VA_ARGS__)
-
 static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
     return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
 }
@@ -1483,7 +1482,7 @@ static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) 
                                 : f.groupIndex > INT16_MAX ? INT16_MAX
                                                            : f.groupIndex);
     if (!exact) {
-        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
                             "its filter (category 0x%llx, mask 0x%llx, group %d) has bits "
                             "above the format's 16 or a group beyond 16 bits; the low 16 bits "
                             "were written",
@@ -1580,7 +1579,7 @@ static bool b2s3_capture_shape(b2s3_capture* c, b2ShapeId id, uint32_t* out_fixt
             vertices[count++] = b2s3_to_b2s(polygon.vertices[i]);
         }
         if (polygon.radius > 0.0f) {
-            B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+            B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
                                 "a rounded polygon (radius %.9g m): written without its "
                                 "rounding",
                                 (double)polygon.radius);
@@ -1595,7 +1594,7 @@ static bool b2s3_capture_shape(b2s3_capture* c, b2ShapeId id, uint32_t* out_fixt
         break;
     }
     default:
-        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
                             "a capsule has no Box2Scene form; not written");
         return false;
     }
@@ -1687,7 +1686,7 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     b2s_body_default((uint32_t)type, &body);
     body.position = b2s3_to_b2s(b2Body_GetPosition(id));
     if (!b2s3_angle_of(b2Body_GetRotation(id), &body.angle)) {
-        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
                             "no angle has exactly its rotation's cosine and sine; the nearest, "
                             "%.9g rad, was written",
                             (double)body.angle);
@@ -1734,7 +1733,7 @@ static int b2s3_joint_by_index(const void* a, const void* b) {
 }
 
 static void b2s3_capture_lossy(b2s3_capture* c, const char* what) {
-    B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
                         "%s has no Box2Scene form; written without it", what);
 }
 
@@ -1762,7 +1761,7 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
         kind = b2WheelJoint_IsSpringEnabled(id) ? B2S_JOINT_KIND_WHEEL : B2S_JOINT_KIND_LINE;
         break;
     default:
-        B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
                             "a %s joint has no Box2Scene form; not written",
                             type == b2_mouseJoint ? "mouse" : "filter");
         return false;
@@ -1893,7 +1892,7 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
         uint32_t bb = b2s3_captured_index(c, b2Joint_GetBodyB(id));
         if (a == B2S_NONE || bb == B2S_NONE) {
-            B2S3_CAPTURE_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+            B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
                                 "it connects body %u to a body the host did not name; not "
                                 "written",
                                 (unsigned)(a == B2S_NONE ? bb : a));
