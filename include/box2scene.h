@@ -354,7 +354,10 @@ typedef struct b2s_load_options {
    */
   uint64_t max_elements;
   /**
-   * Longest text node or name, in bytes. Default 1 MiB.
+   * Longest node, in bytes: a tag (from its `<` to its `>`), a run of text, a CDATA
+   * section, a comment or a processing instruction (each from its first byte to its
+   * closing delimiter), and a value joined from several of them. Blank text between
+   * elements is not held to it. Default 1 MiB.
    */
   uint64_t max_text_bytes;
   /**

@@ -44,7 +44,10 @@ pub struct LoadOptions {
     pub max_input_bytes: u64,
     /// Most elements in one file. Default 10 000 000.
     pub max_elements: u64,
-    /// Longest text node or name, in bytes. Default 1 MiB.
+    /// Longest node, in bytes: a tag (from its `<` to its `>`), a run of text, a CDATA
+    /// section, a comment or a processing instruction (each from its first byte to its
+    /// closing delimiter), and a value joined from several of them. Blank text between
+    /// elements is not held to it. Default 1 MiB.
     pub max_text_bytes: u64,
     /// Deepest element nesting. Default 64.
     pub max_depth: u32,

@@ -176,9 +176,24 @@ fn limit_exceeded_elements() {
 
 #[test]
 fn limit_exceeded_text() {
-    let options = LoadOptions { max_text_bytes: 8, ..LoadOptions::default() };
+    // Every tag here is shorter than the limit; the name is not.
+    let options = LoadOptions { max_text_bytes: 20, ..LoadOptions::default() };
     let xml =
         world("", "", "<Body Type=\"Static\"><Name>⌖a name that is too long</Name></Body>", "");
+    expect_error_with(&xml, Code::LimitExceeded, &options);
+}
+
+#[test]
+fn limit_exceeded_tag() {
+    let options = LoadOptions { max_text_bytes: 20, ..LoadOptions::default() };
+    let xml = world("", "", "⌖<Body Type=\"Static\"  ><Name>n</Name></Body>", "");
+    expect_error_with(&xml, Code::LimitExceeded, &options);
+}
+
+#[test]
+fn limit_exceeded_comment() {
+    let options = LoadOptions { max_text_bytes: 20, ..LoadOptions::default() };
+    let xml = world("", "", "⌖<!-- a comment longer than that -->", "");
     expect_error_with(&xml, Code::LimitExceeded, &options);
 }
 

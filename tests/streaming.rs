@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use box2scene::{LoadOptions, load, load_path};
+use box2scene::{Code, Error, LoadOptions, load, load_path};
 
 /// The bytes a path load reads at a time (`input::CHUNK`).
 const CHUNK: usize = 1 << 16;
@@ -17,10 +17,15 @@ fn root() -> PathBuf {
 /// Loads `bytes` from memory and from a file, checks that both give the same, and says
 /// whether the load succeeded.
 fn same_both_ways(bytes: &[u8], what: &str) -> bool {
+    same_both_ways_with(bytes, what, &LoadOptions::default()).is_ok()
+}
+
+/// [`same_both_ways`] with `options`, giving the error both gave.
+fn same_both_ways_with(bytes: &[u8], what: &str, options: &LoadOptions) -> Result<(), Error> {
     let file =
         std::env::temp_dir().join(format!("box2scene-streaming-{}-{what}.xml", std::process::id()));
     std::fs::write(&file, bytes).unwrap();
-    let options = LoadOptions::default();
+    let options = *options;
     let from_path = load_path(&file, &options).map(|s| s.to_json());
     std::fs::remove_file(&file).unwrap();
     let from_memory = load(bytes, &options).map(|s| s.to_json());
@@ -30,13 +35,16 @@ fn same_both_ways(bytes: &[u8], what: &str) -> bool {
                 let line = memory.lines().zip(path.lines()).find(|(m, p)| m != p);
                 panic!("{what}: the scenes differ: {line:?}");
             }
-            true
+            Ok(())
         }
         (Err(memory), Err(path)) => {
             assert_eq!(memory, path, "{what}");
-            false
+            Err(memory)
         }
-        (memory, path) => panic!("{what}: from memory {memory:?}, from the path {path:?}"),
+        (memory, path) => {
+            let (memory, path) = (memory.map(|_| "a scene"), path.map(|_| "a scene"));
+            panic!("{what}: from memory {memory:?}, from the path {path:?}")
+        }
     }
 }
 
@@ -144,5 +152,72 @@ fn utf16_files_load_the_same_from_a_path() {
             bytes.extend(pair);
         }
         assert!(same_both_ways(&bytes, &format!("utf16-{big_endian}")));
+    }
+}
+
+/// The text limit holds every node to the same length, whether it lies in the text at hand
+/// or crosses a chunk boundary: a tag, a comment, a processing instruction, CDATA, text.
+#[test]
+fn the_text_limit_means_the_same_from_a_path() {
+    let open = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\">";
+    let close = "</Body></Bodies><Joints/></World>";
+    let big = "x".repeat((1 << 20) + (100 << 10));
+    let nodes = [
+        ("comment", format!("<!--{big}-->")),
+        ("instruction", format!("<?pi {big}?>")),
+        ("attribute", format!("<Name a=\"{big}\">n</Name>")),
+        ("tag", format!("<Name{}>n</Name>", " ".repeat(big.len()))),
+        ("cdata", format!("<Name><![CDATA[{big}]]></Name>")),
+        ("text", format!("<Name>{big}</Name>")),
+    ];
+    for (what, node) in nodes {
+        // The node starts before the first chunk boundary and ends after it.
+        let pad = "<!-- -->".repeat(CHUNK / 16);
+        let xml = format!("{open}{pad}{node}{close}");
+        let error = same_both_ways_with(xml.as_bytes(), what, &LoadOptions::default())
+            .expect_err(what);
+        assert_eq!(error.code, Code::LimitExceeded, "{what}: {error:?}");
+        // Where the node starts: its `<`, or its first character for text.
+        let within = match what {
+            "cdata" => node.find("<![").unwrap(),
+            "text" => "<Name>".len(),
+            _ => 0,
+        };
+        let at = open.len() + pad.len() + within;
+        assert_eq!(error.position.byte_offset as usize, at, "{what}");
+        assert_eq!((error.position.line, error.position.column), (1, at as u32 + 1), "{what}");
+        assert!(error.message.contains("max_text_bytes"), "{what}");
+        // Just within the limit, it loads both ways.
+        let raised = LoadOptions { max_text_bytes: 2 << 20, ..LoadOptions::default() };
+        same_both_ways_with(xml.as_bytes(), what, &raised).unwrap();
+    }
+}
+
+/// With a small text limit, a tag across a chunk boundary is refused from a path exactly
+/// when it is from memory: every shift of the boundary across a whole body, in a file whose
+/// text nodes are all shorter than the limit, with limits below and above its longest tag.
+#[test]
+fn a_small_text_limit_refuses_the_same_nodes_both_ways() {
+    let body = "<Body Type=\"Static\"><Position>1 2</Position><Angle>0</Angle></Body>\n";
+    let bodies = body.repeat(CHUNK / body.len() + 5);
+    for (max_text_bytes, loads) in [(8, false), (24, true)] {
+        let options = LoadOptions { max_text_bytes, ..LoadOptions::default() };
+        for shift in 0..body.len() {
+            // Blank text between elements moves every boundary by one byte per unit.
+            let xml = format!(
+                "<World>{}<Shapes/><Fixtures/><Bodies>{bodies}</Bodies><Joints/></World>",
+                " ".repeat(shift)
+            );
+            let what = format!("small-limit-{max_text_bytes}-{shift}");
+            match same_both_ways_with(xml.as_bytes(), &what, &options) {
+                Ok(()) => assert!(loads, "{what} loaded"),
+                Err(e) => {
+                    assert!(!loads, "{what}: {e:?}");
+                    assert_eq!(e.code, Code::LimitExceeded, "{what}");
+                    // `<Fixtures/>` is the first node longer than 8 bytes up to its `>`.
+                    assert_eq!(e.position.byte_offset as usize, xml.find("<Fixtures/>").unwrap());
+                }
+            }
+        }
     }
 }

@@ -270,8 +270,8 @@ impl Parser<'_> {
         if self.open.len() != 2 {
             return false;
         }
-        self.skip_space();
-        if self.pos < at {
+        // A problem here is found again by the ordinary reading, which goes on.
+        if self.skip_space().is_err() || self.pos < at {
             return false;
         }
         // At or past the boundary.

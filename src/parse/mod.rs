@@ -420,7 +420,7 @@ impl<'a> Parser<'a> {
         loop {
             let rest = self.rest(from);
             if let Some(i) = find(rest) {
-                return Ok(Some(from + i));
+                return self.within_text_limit(start, from + i).map(Some);
             }
             from = (from + rest.len()).saturating_sub(overlap).max(from);
             if (from - start) as u64 > self.options.max_text_bytes {
@@ -432,10 +432,29 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// Skips the white space at hand before the next node: blank text between elements
-    /// is never a node of its own where only elements may follow.
-    fn skip_space(&mut self) {
-        self.pos += text::leading_space(self.rest(self.pos));
+    /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
+    /// is held to it, measured from its first byte to its closing delimiter, whether it lies
+    /// in the text at hand or crosses the end of a window: a load from a path refuses
+    /// exactly what a load from memory refuses.
+    fn within_text_limit(&self, start: usize, end: usize) -> Parsed<usize> {
+        if (end - start) as u64 > self.options.max_text_bytes {
+            return Err(self.limit(start, "max_text_bytes", self.options.max_text_bytes));
+        }
+        Ok(end)
+    }
+
+    /// Skips the white space before the next node, reading on when it reaches the end of
+    /// the text at hand: blank text between elements is never a node of its own where
+    /// only elements may follow, however it falls across a window.
+    fn skip_space(&mut self) -> Parsed<()> {
+        loop {
+            let rest = self.rest(self.pos);
+            let (space, all) = (text::leading_space(rest), rest.len());
+            self.pos += space;
+            if space < all || !self.more()? {
+                return Ok(());
+            }
+        }
     }
 
     /// A node begins at `at`: the one before it stays at hand (see [`Parser::started`]).
@@ -507,7 +526,7 @@ impl<'a> Parser<'a> {
         let mut from = 0;
         while let Some(i) = find3(&rest[from..], b'>', b'"', b'\'').map(|i| from + i) {
             if rest[i] == b'>' {
-                return Ok(at + 1 + i);
+                return self.within_text_limit(at, at + 1 + i);
             }
             match memchr::memchr(rest[i], &rest[i + 1..]) {
                 Some(len) => from = i + 2 + len,
@@ -570,10 +589,12 @@ impl<'a> Parser<'a> {
     #[inline]
     fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
         let expected = self.open.last()?;
-        match text {
-            [b'<', b'/', after @ ..] if expected.ends(after) => Some(3 + expected.len()),
-            _ => None,
-        }
+        let len = match text {
+            [b'<', b'/', after @ ..] if expected.ends(after) => 3 + expected.len(),
+            _ => return None,
+        };
+        // Longer than the limit (measured up to its `>`): the ordinary reading refuses it.
+        ((len - 1) as u64 <= self.options.max_text_bytes).then_some(len)
     }
 
     /// Counts a start tag just read against the limits and opens its element.
@@ -608,6 +629,9 @@ impl<'a> Parser<'a> {
             [b'/', b'>', ..] => true,
             _ => return None,
         };
+        if (1 + len + usize::from(empty)) as u64 > self.options.max_text_bytes {
+            return None;
+        }
         let name = Name::from_head(head.first_chunk()?, len);
         self.pos = at + 2 + len + usize::from(empty);
         Some(Tag { name, content: None, at, empty })
@@ -728,7 +752,7 @@ impl<'a> Parser<'a> {
         if parent.empty {
             return Ok(None);
         }
-        self.skip_space();
+        self.skip_space()?;
         if let Some(tag) = self.short_tag(self.pos) {
             self.begin_node(tag.at);
             self.opened(&tag)?;
@@ -738,7 +762,7 @@ impl<'a> Parser<'a> {
             return Ok(None);
         }
         loop {
-            self.skip_space();
+            self.skip_space()?;
             match self.next_node()? {
                 Node::Open(tag) => return Ok(Some(tag)),
                 Node::Close(_) => return Ok(None),
