@@ -643,6 +643,14 @@ impl<'a> Parser<'a> {
         let is_declaration = content.starts_with("xml")
             && content.as_bytes().get(3).is_none_or(|&b| text::is_xml_space_byte(b));
         if is_declaration {
+            if at != 0 {
+                return Err(problem(
+                    Code::MalformedXml,
+                    at,
+                    "malformed XML: an XML declaration (<?xml ...?>) is allowed only at the very \
+                     start of the file",
+                ));
+            }
             let decl = BytesDecl::from_start(BytesStart::from_content(content, 3));
             self.check_declared_encoding(&decl, at)?;
         }
@@ -654,8 +662,22 @@ impl<'a> Parser<'a> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {
-            let end = self.scan(at, at + 4, 2, |rest| memchr::memmem::find(rest, b"-->"))?;
+            // XML allows `--` in a comment only as the start of its `-->`.
+            let mut dashes = false;
+            let end = self.scan(at, at + 4, 2, |rest| {
+                let i = memchr::memmem::find(rest, b"--")?;
+                dashes = *rest.get(i + 2)? != b'>';
+                Some(i)
+            })?;
             let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
+            if dashes {
+                return Err(problem(
+                    Code::MalformedXml,
+                    end,
+                    "malformed XML: `--` inside a comment (a comment ends at the first `--`, \
+                     which must be followed by `>`)",
+                ));
+            }
             self.pos = end + 3;
             if self.pins.is_empty() {
                 let comment = self.kept_text(at, self.pos);
