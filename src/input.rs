@@ -431,11 +431,13 @@ pub struct Locator<'a> {
     source: Option<Source<'a>>,
     encoding: Encoding,
     /// The offset reached, its line, its column (in characters, from 1), and its UTF-16
-    /// code units from the start (for UTF-16 files).
+    /// code units from the start (for UTF-16 files), and whether the text before it ended
+    /// with a carriage return.
     offset: usize,
     line: u32,
     column: u64,
     units: u64,
+    after_cr: bool,
 }
 
 impl<'a> Locator<'a> {
@@ -447,6 +449,7 @@ impl<'a> Locator<'a> {
             line: 1,
             column: 1,
             units: 0,
+            after_cr: false,
         }
     }
 
@@ -458,11 +461,19 @@ impl<'a> Locator<'a> {
                 self.source = source.read_again().ok();
             }
             (self.offset, self.line, self.column, self.units) = (0, 1, 1, 0);
+            self.after_cr = false;
         }
         while let Some(source) = &mut self.source {
             let to = offset.min(source.end());
             let text = source.slice(self.offset.max(source.base()), to);
-            advance(&mut self.line, &mut self.column, &mut self.units, self.encoding, text);
+            advance(
+                &mut self.line,
+                &mut self.column,
+                &mut self.units,
+                &mut self.after_cr,
+                self.encoding,
+                text,
+            );
             self.offset = to;
             if to == offset || !source.more(to) {
                 break;
@@ -484,22 +495,44 @@ impl<'a> Locator<'a> {
     }
 }
 
-/// Moves a line, column and UTF-16 unit count past `text`.
-fn advance(line: &mut u32, column: &mut u64, units: &mut u64, encoding: Encoding, text: &str) {
-    let bytes = text.as_bytes();
-    // A count the compiler vectorises; lines are short, so a search per line is not.
-    let newlines: usize = bytes.iter().map(|&b| usize::from(b == b'\n')).sum();
-    *line = line.saturating_add(u32::try_from(newlines).unwrap_or(u32::MAX));
-    let last_line = match memchr::memrchr(b'\n', bytes) {
-        Some(newline) => {
+/// Moves a line, column and UTF-16 unit count past `text`. Lines end as editors end them:
+/// at LF, at CR LF and at a lone CR. `after_cr` says the text before `text` ended with a CR,
+/// so that an LF starting `text` ends no second line.
+fn advance(
+    line: &mut u32,
+    column: &mut u64,
+    units: &mut u64,
+    after_cr: &mut bool,
+    encoding: Encoding,
+    text: &str,
+) {
+    if let Encoding::Utf16 { .. } = encoding {
+        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
+    }
+    let mut bytes = text.as_bytes();
+    if *after_cr && bytes.first() == Some(&b'\n') {
+        bytes = &bytes[1..];
+    }
+    if bytes.is_empty() {
+        *after_cr &= text.is_empty();
+        return;
+    }
+    // Counts the compiler vectorises; lines are short, so a search per line is not.
+    let count = |byte: u8| bytes.iter().map(|&b| usize::from(b == byte)).sum::<usize>();
+    let mut line_ends = count(b'\n');
+    let returns = count(b'\r');
+    if returns > 0 {
+        line_ends += returns - memchr::memmem::find_iter(bytes, b"\r\n").count();
+    }
+    *line = line.saturating_add(u32::try_from(line_ends).unwrap_or(u32::MAX));
+    let last_line = match memchr::memrchr2(b'\n', b'\r', bytes) {
+        Some(end) => {
             *column = 1;
-            &bytes[newline + 1..]
+            &bytes[end + 1..]
         }
         None => bytes,
     };
     // Characters: every byte that does not continue a multi-byte sequence.
     *column += last_line.iter().filter(|&&b| b & 0xC0 != 0x80).count() as u64;
-    if let Encoding::Utf16 { .. } = encoding {
-        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
-    }
+    *after_cr = bytes.last() == Some(&b'\r');
 }

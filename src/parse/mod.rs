@@ -166,15 +166,66 @@ impl Tag {
 pub(crate) struct Text {
     at: usize,
     end: usize,
-    resolved: Option<String>,
+    resolved: Option<Resolved>,
 }
 
 impl Text {
     /// Its text, from `source` when it is a range of it.
     fn read<'t>(&'t self, source: &'t Source) -> &'t str {
         match &self.resolved {
-            Some(resolved) => resolved,
+            Some(resolved) => &resolved.text,
             None => source.slice(self.at, self.end),
+        }
+    }
+
+    /// Where the character at `offset` of its text is written in the file's text.
+    fn written_at(&self, offset: usize) -> usize {
+        match &self.resolved {
+            Some(resolved) => resolved.written_at(self.at, offset),
+            None => self.at + offset,
+        }
+    }
+}
+
+/// Text that is not as written: its references resolved, its line ends normalised, or
+/// pieces written apart (around a comment, as CDATA) joined.
+#[derive(Default)]
+pub(crate) struct Resolved {
+    text: String,
+    /// Where its pieces are written, for positions in messages: at each offset of `text`
+    /// listed, the offset in the file's text it was read from, and from there on one byte
+    /// for one up to the next listed (from the text's start, one for one from where it is).
+    written: Vec<(usize, usize)>,
+}
+
+impl Resolved {
+    /// Where the character at `offset` of the text, which starts at `at`, is written.
+    fn written_at(&self, at: usize, offset: usize) -> usize {
+        let after = self.written.partition_point(|&(piece, _)| piece <= offset);
+        let (piece, from) = after.checked_sub(1).map_or((0, at), |last| self.written[last]);
+        from + (offset - piece)
+    }
+
+    /// Appends `text`, written from `at` on.
+    fn push(&mut self, text: &str, at: usize) {
+        self.written.push((self.text.len(), at));
+        self.text.push_str(text);
+    }
+
+    /// Appends `other`, whose text starts at `at`.
+    fn append(&mut self, other: &Resolved, at: usize) {
+        let base = self.text.len();
+        self.push(&other.text, at);
+        self.written.extend(other.written.iter().map(|&(piece, from)| (base + piece, from)));
+    }
+
+    /// Keeps the text from `start` to `end` only (white space trimmed).
+    fn keep(&mut self, start: usize, end: usize) {
+        self.text.truncate(end);
+        self.text.drain(..start);
+        self.written.retain(|&(piece, _)| piece > start);
+        for (piece, _) in &mut self.written {
+            *piece -= start;
         }
     }
 }
@@ -769,7 +820,7 @@ impl<'a> Parser<'a> {
                     if !text.is_empty() {
                         return Err(problem(
                             Code::UnexpectedText,
-                            t.at + lead,
+                            t.written_at(lead),
                             format!(
                                 "text '{}' inside <{}>, which holds only elements",
                                 shorten(text),
@@ -795,8 +846,8 @@ impl<'a> Parser<'a> {
                     Node::Text(t) => match &mut value {
                         None => value = Some(t),
                         Some(first) => {
-                            let joined = self.text_of(first).to_owned() + self.text_of(&t);
-                            if joined.len() as u64 > self.options.max_text_bytes {
+                            let joined = self.joined(first, &t);
+                            if joined.text.len() as u64 > self.options.max_text_bytes {
                                 return Err(self.limit(
                                     t.at,
                                     "max_text_bytes",
@@ -829,15 +880,29 @@ impl<'a> Parser<'a> {
             });
         };
         let (lead, trimmed) = trim_xml_at(self.text_of(&text));
-        let (at, trimmed) = (text.at + lead, trimmed.len());
+        let (at, trimmed) = (text.written_at(lead), trimmed.len());
         match &mut text.resolved {
             Some(resolved) => {
-                resolved.truncate(lead + trimmed);
-                resolved.drain(..lead);
+                resolved.keep(lead, lead + trimmed);
+                text.at = at;
             }
             None => (text.at, text.end) = (at, at + trimmed),
         }
         Ok(Value { text, at })
+    }
+
+    /// The text of `first` followed by that of `second`, which were written apart.
+    fn joined(&self, first: &mut Text, second: &Text) -> Resolved {
+        let mut joined = first.resolved.take().unwrap_or_else(|| {
+            let mut whole = Resolved::default();
+            whole.push(self.source.slice(first.at, first.end), first.at);
+            whole
+        });
+        match &second.resolved {
+            Some(resolved) => joined.append(resolved, second.at),
+            None => joined.push(self.source.slice(second.at, second.end), second.at),
+        }
+        joined
     }
 
     /// The usual value, read without nodes: text at hand with no markup, references or
@@ -871,7 +936,8 @@ impl<'a> Parser<'a> {
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
             Err(e) => {
-                Err(problem(e.code, value.at + e.at, format!("<{}>: {}", tag.name(), e.message)))
+                let at = value.text.written_at(e.at);
+                Err(problem(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
             }
         }
     }
@@ -907,13 +973,14 @@ impl<'a> Parser<'a> {
         convert: fn(&str) -> Result<T, BadValue>,
     ) -> Parsed<(T, usize)> {
         let (lead, value) = trim_xml_at(&attr.value);
-        convert(value).map(|v| (v, attr.at + lead)).map_err(|e| {
-            problem(
+        match convert(value) {
+            Ok(v) => Ok((v, written_at(tag, attr, lead))),
+            Err(e) => Err(problem(
                 e.code,
-                attr.at + lead + e.at,
+                written_at(tag, attr, lead + e.at),
                 format!("<{} {}>: {}", tag.name(), attr.key, e.message),
-            )
-        })
+            )),
+        }
     }
 
     /// A string value, stored in the scene's string pool.
@@ -1257,11 +1324,30 @@ fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Att
 
 /// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
 fn verbatim(tag: &Tag, attr: &Attr) -> String {
+    let (quote, value) = written_value(tag, attr);
+    format!(" {}={quote}{value}{quote}", attr.key)
+}
+
+/// The quote around the value of an attribute of `tag`, and the value as written.
+fn written_value<'t>(tag: &'t Tag, attr: &Attr) -> (char, &'t str) {
     let content = tag.content.as_deref().unwrap_or_default();
     let value = (attr.at - tag.at - 1).min(content.len());
     let quote = content[..value].chars().next_back().unwrap_or('"');
     let len = content[value..].find(quote).unwrap_or(content.len() - value);
-    format!(" {}={quote}{}{quote}", attr.key, &content[value..value + len])
+    (quote, &content[value..value + len])
+}
+
+/// Where the character at `offset` of an attribute's value is written. A value unlike what
+/// is written (references resolved, white space normalised) is resolved again to tell, as
+/// only a message needs it: its bytes line up with the resolved text's.
+fn written_at(tag: &Tag, attr: &Attr, offset: usize) -> usize {
+    if let Cow::Borrowed(_) = attr.value {
+        return attr.at + offset;
+    }
+    match resolve_text(written_value(tag, attr).1, attr.at) {
+        Ok(resolved) => resolved.written_at(attr.at, offset),
+        Err(_) => attr.at + offset,
+    }
 }
 
 /// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without
@@ -1303,13 +1389,14 @@ fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
     memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
 }
 
-/// Text with references or carriage returns: references resolved (only the five
-/// predefined entities and character references exist), line ends normalised to `\n`.
-fn resolve_text(raw: &str, at: usize) -> Parsed<String> {
-    let mut out = String::with_capacity(raw.len());
+/// Text with references or carriage returns, written from `at` on: references resolved
+/// (only the five predefined entities and character references exist), line ends
+/// normalised to `\n`.
+fn resolve_text(raw: &str, at: usize) -> Parsed<Resolved> {
+    let mut out = Resolved { text: String::with_capacity(raw.len()), written: Vec::new() };
     let (mut rest, mut offset) = (raw, at);
     while let Some(amp) = memchr::memchr(b'&', rest.as_bytes()) {
-        push_normalised(&mut out, &rest[..amp]);
+        push_normalised(&mut out, &rest[..amp], offset);
         let after = &rest[amp + 1..];
         let name = match memchr::memchr2(b';', b'&', after.as_bytes()) {
             Some(semi) if after.as_bytes()[semi] == b';' => &after[..semi],
@@ -1317,27 +1404,40 @@ fn resolve_text(raw: &str, at: usize) -> Parsed<String> {
         };
         let reference = BytesRef::new(name);
         match reference.resolve_char_ref() {
-            Ok(Some(c)) => out.push(c),
+            Ok(Some(c)) => out.text.push(c),
             _ => match quick_xml::escape::resolve_predefined_entity(name) {
-                Some(resolved) => out.push_str(resolved),
+                Some(resolved) => out.text.push_str(resolved),
                 None => return Err(unknown_entity(name, offset + amp)),
             },
         }
         let used = amp + 1 + name.len() + 1;
         rest = &rest[used..];
         offset += used;
+        out.written.push((out.text.len(), offset));
     }
-    push_normalised(&mut out, rest);
+    push_normalised(&mut out, rest, offset);
     Ok(out)
 }
 
-/// Appends `text` with `\r\n` and lone `\r` made `\n` (XML 1.0 section 2.11).
-fn push_normalised(out: &mut String, text: &str) {
+/// Appends `text`, written from `at` on, with `\r\n` and lone `\r` made `\n` (XML 1.0
+/// section 2.11).
+fn push_normalised(out: &mut Resolved, text: &str, at: usize) {
     let mut pieces = text.split('\r');
-    out.push_str(pieces.next().unwrap_or_default());
+    let first = pieces.next().unwrap_or_default();
+    out.text.push_str(first);
+    let mut offset = at + first.len();
     for piece in pieces {
-        out.push('\n');
-        out.push_str(piece.strip_prefix('\n').unwrap_or(piece));
+        out.text.push('\n');
+        offset += 1;
+        if let Some(line) = piece.strip_prefix('\n') {
+            offset += 1;
+            out.written.push((out.text.len(), offset));
+            out.text.push_str(line);
+            offset += line.len();
+        } else {
+            out.text.push_str(piece);
+            offset += piece.len();
+        }
     }
 }
 
