@@ -879,3 +879,59 @@ fn a_position_after_references_in_an_attribute_is_where_it_is_written() {
                 </Bindings></Body>";
     expect_marked_error_in_both(&world_v3(V3_CIRCLE, "<Fixture/>", pair), Code::InvalidId);
 }
+
+/// A `<Centroid>` belongs to polygons only: elsewhere it is warned about, and ignored.
+#[test]
+fn a_centroid_on_a_circle_or_edge_is_ignored() {
+    let circle =
+        world(&CIRCLE.replace("</Shape>", "⌖<Centroid>1 2</Centroid></Shape>"), "", "", "");
+    expect_warning(&circle, Code::UnknownElement);
+    let edge = world(
+        "<Shape Type=\"Edge\">⌖<Centroid>1 2</Centroid><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>\
+         </Shape>",
+        "",
+        "",
+        "",
+    )
+    .replace("\"1\"", "\"2\"");
+    expect_warning(&edge, Code::UnknownElement);
+    for xml in [circle, edge] {
+        let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+        assert!(!scene.shapes()[0].centroid_given, "{xml}");
+    }
+}
+
+/// A Version 3 fixture is a template: its body's Pairs give it its shape and the shape's
+/// Density; a `<Shape>` or `<Density>` of its own is warned about, not dropped silently.
+#[test]
+fn a_version_3_fixtures_own_shape_and_density_are_warned_about() {
+    let pair =
+        "<Body Type=\"Dynamic\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/></Bindings></Body>";
+    let density = world_v3(V3_CIRCLE, "<Fixture Id=\"0\">⌖<Density>7</Density></Fixture>", pair);
+    expect_warning(&density, Code::UnknownElement);
+    let shape = world_v3(V3_CIRCLE, "<Fixture Id=\"0\">⌖<Shape>0</Shape></Fixture>", pair);
+    expect_warning(&shape, Code::UnknownElement);
+    let scene = load(unmark(&density).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.fixtures()[0].density, 2.0, "the shape's Density attribute wins");
+    let written = box2scene::write(&scene, &box2scene::WriteOptions::default()).unwrap();
+    assert_eq!(written.matches("<Density>").count(), 1, "{written}");
+    let again = load(written.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(again.fixtures()[0].density, 2.0);
+}
+
+/// A shape named both by its `Name` attribute and by a `<Name>` element: the element wins,
+/// and the attribute's name is not lost without a word.
+#[test]
+fn a_shape_named_twice_is_warned_about() {
+    let shape = "<Shape Type=\"Circle\" Name=\"attribute\"><Radius>1</Radius>⌖<Name>element</Name>\
+                 <Position>0 0</Position></Shape>";
+    let xml = world(shape, "", "", "");
+    expect_warning(&xml, Code::DuplicateElement);
+    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.find_shape("element"), Some(0));
+    assert_eq!(scene.find_shape("attribute"), None);
+    let one = world(&CIRCLE.replace("<Shape ", "<Shape Name=\"only\" "), "", "", "");
+    let scene = load(one.as_bytes(), &LoadOptions::default()).unwrap();
+    assert!(scene.diagnostics().is_empty(), "a Name attribute alone is fine");
+    assert_eq!(scene.find_shape("only"), Some(0));
+}

@@ -1096,14 +1096,21 @@ impl<'a> Parser<'a> {
     /// Warns (`unknown-element`, with `message`) and skips `child`, keeping its text for the
     /// writer at the end of where it was.
     pub fn ignore(&mut self, child: &Tag, message: String) -> Parsed<()> {
-        self.warn(Code::UnknownElement, child.at, message)?;
-        self.pin(child.at);
-        self.skip(child)?;
-        self.pins.pop();
+        self.discard(child, message)?;
         if self.pins.is_empty() {
             let text = self.kept_text(child.at, self.pos);
             self.keep(self.object, Place::Inside { within: self.within, before: "" }, text);
         }
+        Ok(())
+    }
+
+    /// Warns (`unknown-element`, with `message`) and skips `child`, comments inside it
+    /// included, keeping nothing: for what the writer writes in another form.
+    pub fn discard(&mut self, child: &Tag, message: String) -> Parsed<()> {
+        self.warn(Code::UnknownElement, child.at, message)?;
+        self.pin(child.at);
+        self.skip(child)?;
+        self.pins.pop();
         Ok(())
     }
 
