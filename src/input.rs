@@ -4,8 +4,9 @@
 //! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory;
 //! a window that moves forward in chunks for a UTF-8 file read from a path, so a load never
 //! holds the whole file. Either way the text stops at the first byte that cannot be text
-//! (invalid UTF-8, a NUL, an unpaired UTF-16 surrogate, a read error) and the source says
-//! why, so a load reports the first problem in the file whichever way it was read.
+//! (invalid UTF-8, a NUL or another character XML does not allow, an unpaired UTF-16
+//! surrogate, a read error) and the source says why, so a load reports the first problem
+//! in the file whichever way it was read.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
@@ -84,7 +85,7 @@ impl<'a> Source<'a> {
                 (Cow::Borrowed(text), Encoding::Utf8 { bom }, stop)
             }
         };
-        let (text, stop) = cut_at_nul(text, 0, stop);
+        let (text, stop) = cut_at_non_char(text, 0, stop);
         Ok(Source { text, base: 0, file: None, stop, encoding, origin: Origin::Memory })
     }
 
@@ -233,7 +234,7 @@ impl<'a> Source<'a> {
             }
             stop = None;
         }
-        let (valid, stop) = cut_at_nul(Cow::Borrowed(valid), at, stop);
+        let (valid, stop) = cut_at_non_char(Cow::Borrowed(valid), at, stop);
         self.text.to_mut().push_str(&valid);
         if stop.is_some() || last {
             self.stop = stop;
@@ -301,26 +302,70 @@ fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Stop>) {
     }
 }
 
-/// `text` up to its first NUL, which stops the text there.
-fn cut_at_nul(text: Cow<'_, str>, base: usize, stop: Option<Stop>) -> (Cow<'_, str>, Option<Stop>) {
-    let Some(nul) = memchr::memchr(0, text.as_bytes()) else {
+/// `text` up to its first character that XML does not allow (outside the Char production
+/// of XML 1.0: a control character other than tab, line feed and carriage return, U+FFFE,
+/// U+FFFF), which stops the text there. A NUL has its own code: it usually means the file
+/// is not text at all.
+fn cut_at_non_char(
+    text: Cow<'_, str>,
+    base: usize,
+    stop: Option<Stop>,
+) -> (Cow<'_, str>, Option<Stop>) {
+    let Some(at) = first_non_char(text.as_bytes()) else {
         return (text, stop);
     };
-    let stop = Stop {
-        code: Code::NulByte,
-        at: base + nul,
-        message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
-                  padded)"
-            .into(),
+    let stop = match text.as_bytes()[at] {
+        0 => Stop {
+            code: Code::NulByte,
+            at: base + at,
+            message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
+                      padded)"
+                .into(),
+        },
+        _ => {
+            let c = text[at..].chars().next().unwrap_or_default();
+            Stop {
+                code: Code::MalformedXml,
+                at: base + at,
+                message: format!(
+                    "malformed XML: the character U+{:04X} is not allowed in an XML document",
+                    u32::from(c)
+                ),
+            }
+        }
     };
     let text = match text {
-        Cow::Borrowed(t) => Cow::Borrowed(&t[..nul]),
+        Cow::Borrowed(t) => Cow::Borrowed(&t[..at]),
         Cow::Owned(mut t) => {
-            t.truncate(nul);
+            t.truncate(at);
             Cow::Owned(t)
         }
     };
     (text, Some(stop))
+}
+
+/// The offset of the first character of `text` outside XML's Char production. Blocks of
+/// 64 bytes are screened by a loop the compiler vectorises for a suspect byte: a control
+/// character other than tab, line feed and carriage return, or any byte past ASCII (0xEF
+/// begins U+FFFE and U+FFFF). Only a block with one is looked at byte by byte; the usual
+/// file, with no control characters and little text past ASCII, has few.
+fn first_non_char(text: &[u8]) -> Option<usize> {
+    let non_char = |&i: &usize| match text[i] {
+        0xEF => matches!(text[i + 1..], [0xBF, 0xBE | 0xBF, ..]),
+        b => b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r'),
+    };
+    let mut from = 0;
+    while let Some(block) = text[from..].first_chunk::<64>() {
+        // As a signed byte, every byte past ASCII is below 0x20 too.
+        let suspect = |b: u8| ((b as i8) < 0x20) & (b != b'\t') & (b != b'\n') & (b != b'\r');
+        if block.iter().fold(false, |any, &b| any | suspect(b))
+            && let Some(at) = (from..from + block.len()).find(non_char)
+        {
+            return Some(at);
+        }
+        from += block.len();
+    }
+    (from..text.len()).find(non_char)
 }
 
 /// `<` followed or preceded by a zero byte: UTF-16 text that lost its byte-order mark.
@@ -386,11 +431,13 @@ pub struct Locator<'a> {
     source: Option<Source<'a>>,
     encoding: Encoding,
     /// The offset reached, its line, its column (in characters, from 1), and its UTF-16
-    /// code units from the start (for UTF-16 files).
+    /// code units from the start (for UTF-16 files), and whether the text before it ended
+    /// with a carriage return.
     offset: usize,
     line: u32,
     column: u64,
     units: u64,
+    after_cr: bool,
 }
 
 impl<'a> Locator<'a> {
@@ -402,6 +449,7 @@ impl<'a> Locator<'a> {
             line: 1,
             column: 1,
             units: 0,
+            after_cr: false,
         }
     }
 
@@ -413,11 +461,19 @@ impl<'a> Locator<'a> {
                 self.source = source.read_again().ok();
             }
             (self.offset, self.line, self.column, self.units) = (0, 1, 1, 0);
+            self.after_cr = false;
         }
         while let Some(source) = &mut self.source {
             let to = offset.min(source.end());
             let text = source.slice(self.offset.max(source.base()), to);
-            advance(&mut self.line, &mut self.column, &mut self.units, self.encoding, text);
+            advance(
+                &mut self.line,
+                &mut self.column,
+                &mut self.units,
+                &mut self.after_cr,
+                self.encoding,
+                text,
+            );
             self.offset = to;
             if to == offset || !source.more(to) {
                 break;
@@ -439,22 +495,44 @@ impl<'a> Locator<'a> {
     }
 }
 
-/// Moves a line, column and UTF-16 unit count past `text`.
-fn advance(line: &mut u32, column: &mut u64, units: &mut u64, encoding: Encoding, text: &str) {
-    let bytes = text.as_bytes();
-    // A count the compiler vectorises; lines are short, so a search per line is not.
-    let newlines: usize = bytes.iter().map(|&b| usize::from(b == b'\n')).sum();
-    *line = line.saturating_add(u32::try_from(newlines).unwrap_or(u32::MAX));
-    let last_line = match memchr::memrchr(b'\n', bytes) {
-        Some(newline) => {
+/// Moves a line, column and UTF-16 unit count past `text`. Lines end as editors end them:
+/// at LF, at CR LF and at a lone CR. `after_cr` says the text before `text` ended with a CR,
+/// so that an LF starting `text` ends no second line.
+fn advance(
+    line: &mut u32,
+    column: &mut u64,
+    units: &mut u64,
+    after_cr: &mut bool,
+    encoding: Encoding,
+    text: &str,
+) {
+    if let Encoding::Utf16 { .. } = encoding {
+        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
+    }
+    let mut bytes = text.as_bytes();
+    if *after_cr && bytes.first() == Some(&b'\n') {
+        bytes = &bytes[1..];
+    }
+    if bytes.is_empty() {
+        *after_cr &= text.is_empty();
+        return;
+    }
+    // Counts the compiler vectorises; lines are short, so a search per line is not.
+    let count = |byte: u8| bytes.iter().map(|&b| usize::from(b == byte)).sum::<usize>();
+    let mut line_ends = count(b'\n');
+    let returns = count(b'\r');
+    if returns > 0 {
+        line_ends += returns - memchr::memmem::find_iter(bytes, b"\r\n").count();
+    }
+    *line = line.saturating_add(u32::try_from(line_ends).unwrap_or(u32::MAX));
+    let last_line = match memchr::memrchr2(b'\n', b'\r', bytes) {
+        Some(end) => {
             *column = 1;
-            &bytes[newline + 1..]
+            &bytes[end + 1..]
         }
         None => bytes,
     };
     // Characters: every byte that does not continue a multi-byte sequence.
     *column += last_line.iter().filter(|&&b| b & 0xC0 != 0x80).count() as u64;
-    if let Encoding::Utf16 { .. } = encoding {
-        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
-    }
+    *after_cr = bytes.last() == Some(&b'\r');
 }

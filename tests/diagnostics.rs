@@ -790,3 +790,163 @@ fn layouts_do_not_mix() {
         Code::UnknownElement,
     );
 }
+
+/// Loads `xml` from a file of its own, with the default options.
+fn load_from_a_file(xml: &[u8]) -> Result<box2scene::Scene, box2scene::Error> {
+    static FILES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = FILES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let file = std::env::temp_dir().join(format!("box2scene-diag-{}-{n}.xml", std::process::id()));
+    std::fs::write(&file, xml).unwrap();
+    let scene = box2scene::load_path(&file, &LoadOptions::default());
+    std::fs::remove_file(&file).unwrap();
+    scene
+}
+
+/// `xml` fails with `code` at `line` and `column`, loaded from memory and from a file.
+fn expect_error_in_both(xml: &[u8], code: Code, line: u32, column: u32) {
+    for (from, loaded) in
+        [("memory", load(xml, &LoadOptions::default())), ("a file", load_from_a_file(xml))]
+    {
+        let error = loaded.expect_err("the load must fail");
+        assert_eq!(
+            (error.code, error.position.line, error.position.column),
+            (code, line, column),
+            "from {from}: {}\nin:\n{}",
+            error.message,
+            String::from_utf8_lossy(xml)
+        );
+    }
+}
+
+/// [`expect_error_in_both`] at the marker of `marked`.
+fn expect_marked_error_in_both(marked: &str, code: Code) {
+    let (xml, line, column) = unmark(marked);
+    expect_error_in_both(xml.as_bytes(), code, line, column);
+}
+
+/// A fixture whose `<Density>` holds `value`.
+fn density(value: &str) -> String {
+    world(CIRCLE, &format!("<Fixture><Shape>0</Shape><Density>{value}</Density></Fixture>"), "", "")
+}
+
+/// A circle whose `<Position>` holds `value`.
+fn position(value: &str) -> String {
+    world(
+        &format!("<Shape Type=\"Circle\"><Radius>1</Radius><Position>{value}</Position></Shape>"),
+        "",
+        "",
+        "",
+    )
+}
+
+/// An offset in a value's text, after references that are longer written than read, is
+/// where it is written (it was added to the value's start as if they were one byte).
+#[test]
+fn a_position_after_references_in_a_value_is_where_it_is_written() {
+    expect_marked_error_in_both(&position("&#49;&#49;&#49;, ⌖x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&position("&#x31; ⌖&amp;x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&position("&#x20;&#49;, ⌖x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&density("&#32; ⌖-1"), Code::NegativeValue);
+}
+
+/// Lines end at CR LF, as an editor counts them: a value holding them is not a line early.
+#[test]
+fn a_position_after_crlf_in_a_value_is_on_its_line() {
+    let xml = position("\r\n  1,\r\n  ⌖x\r\n").replace('\n', "\r\n").replace("\r\r\n", "\r\n");
+    expect_marked_error_in_both(&xml, Code::InvalidFloat);
+    expect_marked_error_in_both(&density("\r\n ⌖-1"), Code::NegativeValue);
+}
+
+/// A lone CR (old Mac line ends) ends a line too.
+#[test]
+fn a_lone_cr_starts_a_line() {
+    let xml = position("\r  1,\r  x").replace('\n', "\r");
+    // The world's own line ends come before: <World>, <Shapes>..., so the value is on line 2.
+    expect_error_in_both(xml.as_bytes(), Code::InvalidFloat, 4, 3);
+    let unexpected = "<World Version=\"1\">\r<Shapes>\r\r  oops</Shapes></World>";
+    expect_error_in_both(unexpected.as_bytes(), Code::UnexpectedText, 4, 3);
+}
+
+/// A comment or CDATA inside a value splits it; what follows is where it is written.
+#[test]
+fn a_position_after_a_comment_or_cdata_in_a_value_is_where_it_is_written() {
+    expect_marked_error_in_both(&position("1 <!-- one -->, ⌖x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&position("<![CDATA[1]]>, ⌖x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&position("&#49;<!--c--><![CDATA[ ]]>&#44;⌖x"), Code::InvalidFloat);
+    expect_marked_error_in_both(&density("<!-- c -->\n  ⌖-1"), Code::NegativeValue);
+}
+
+/// Text where only elements may be, after a reference, is where it is written.
+#[test]
+fn unexpected_text_after_a_reference_is_where_it_is_written() {
+    let xml = "<World Version=\"1\"><Shapes>&#32;&#x20;\n ⌖oops</Shapes></World>";
+    expect_marked_error_in_both(xml, Code::UnexpectedText);
+}
+
+/// The same in an attribute's value, whose references are resolved and white space
+/// normalised.
+#[test]
+fn a_position_after_references_in_an_attribute_is_where_it_is_written() {
+    let shape = "<Shape Type=\"Circle\" Density=\"&#32;&#x20;\r\n⌖x\"><Radius>1</Radius>\
+                 <Position>0 0</Position></Shape>";
+    expect_marked_error_in_both(&world_v3(shape, "", ""), Code::InvalidFloat);
+    let pair = "<Body Type=\"Static\"><Bindings><Pair FixtureId=\"&#48;\" ShapeId=\"&#9;⌖-1\"/>\
+                </Bindings></Body>";
+    expect_marked_error_in_both(&world_v3(V3_CIRCLE, "<Fixture/>", pair), Code::InvalidId);
+}
+
+/// A `<Centroid>` belongs to polygons only: elsewhere it is warned about, and ignored.
+#[test]
+fn a_centroid_on_a_circle_or_edge_is_ignored() {
+    let circle =
+        world(&CIRCLE.replace("</Shape>", "⌖<Centroid>1 2</Centroid></Shape>"), "", "", "");
+    expect_warning(&circle, Code::UnknownElement);
+    let edge = world(
+        "<Shape Type=\"Edge\">⌖<Centroid>1 2</Centroid><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>\
+         </Shape>",
+        "",
+        "",
+        "",
+    )
+    .replace("\"1\"", "\"2\"");
+    expect_warning(&edge, Code::UnknownElement);
+    for xml in [circle, edge] {
+        let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+        assert!(!scene.shapes()[0].centroid_given, "{xml}");
+    }
+}
+
+/// A Version 3 fixture is a template: its body's Pairs give it its shape and the shape's
+/// Density; a `<Shape>` or `<Density>` of its own is warned about, not dropped silently.
+#[test]
+fn a_version_3_fixtures_own_shape_and_density_are_warned_about() {
+    let pair =
+        "<Body Type=\"Dynamic\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/></Bindings></Body>";
+    let density = world_v3(V3_CIRCLE, "<Fixture Id=\"0\">⌖<Density>7</Density></Fixture>", pair);
+    expect_warning(&density, Code::UnknownElement);
+    let shape = world_v3(V3_CIRCLE, "<Fixture Id=\"0\">⌖<Shape>0</Shape></Fixture>", pair);
+    expect_warning(&shape, Code::UnknownElement);
+    let scene = load(unmark(&density).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.fixtures()[0].density, 2.0, "the shape's Density attribute wins");
+    let written = box2scene::write(&scene, &box2scene::WriteOptions::default()).unwrap();
+    assert_eq!(written.matches("<Density>").count(), 1, "{written}");
+    let again = load(written.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(again.fixtures()[0].density, 2.0);
+}
+
+/// A shape named both by its `Name` attribute and by a `<Name>` element: the element wins,
+/// and the attribute's name is not lost without a word.
+#[test]
+fn a_shape_named_twice_is_warned_about() {
+    let shape = "<Shape Type=\"Circle\" Name=\"attribute\"><Radius>1</Radius>⌖<Name>element</Name>\
+                 <Position>0 0</Position></Shape>";
+    let xml = world(shape, "", "", "");
+    expect_warning(&xml, Code::DuplicateElement);
+    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.find_shape("element"), Some(0));
+    assert_eq!(scene.find_shape("attribute"), None);
+    let one = world(&CIRCLE.replace("<Shape ", "<Shape Name=\"only\" "), "", "", "");
+    let scene = load(one.as_bytes(), &LoadOptions::default()).unwrap();
+    assert!(scene.diagnostics().is_empty(), "a Name attribute alone is fine");
+    assert_eq!(scene.find_shape("only"), Some(0));
+}

@@ -508,3 +508,89 @@ fn a_load_from_a_path_does_not_hold_the_file() {
         xml.len()
     );
 }
+
+/// `bytes` fail with `code` at `line` and `column`, loaded from memory and from a file.
+fn expect_in_both(bytes: &[u8], name: &str, code: Code, line: u32, column: u32) {
+    expect(bytes, code, line, column);
+    let error = load_from_a_file(bytes, name).expect_err("hostile input must not load");
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (code, line, column),
+        "from a file: {}",
+        error.message
+    );
+}
+
+/// XML 1.0 allows no control characters but tab, line feed and carriage return, and
+/// neither U+FFFE nor U+FFFF, anywhere: in a value, a name, a comment, an attribute.
+#[test]
+fn characters_outside_xml_are_malformed() {
+    for (i, bad) in ["\u{1}", "\u{8}", "\u{B}", "\u{C}", "\u{1F}", "\u{FFFE}", "\u{FFFF}"]
+        .into_iter()
+        .enumerate()
+    {
+        let name = format!("<World Version=\"1\">\n  <Name>ab{bad}</Name>");
+        expect_in_both(name.as_bytes(), &format!("char-{i}"), Code::MalformedXml, 2, 11);
+        let comment = format!("<World Version=\"1\"><!-- é{bad} -->");
+        expect_in_both(comment.as_bytes(), &format!("comment-{i}"), Code::MalformedXml, 1, 26);
+        let attribute = format!("<World Version=\"1{bad}\"/>");
+        expect_in_both(attribute.as_bytes(), &format!("attr-{i}"), Code::MalformedXml, 1, 18);
+    }
+}
+
+/// The check reads the whole file: past the first 64 KiB a file is read in, in a file large
+/// enough to be read on two threads, and in UTF-16 files.
+#[test]
+fn a_character_outside_xml_deep_in_a_large_file_is_found() {
+    let bodies = "<Body Type=\"Static\"/>\n".repeat(60_000);
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{bodies}<Body Type=\"Static\">\
+         <Name>\u{FFFF}</Name></Body></Bodies><Joints/></World>"
+    );
+    expect_in_both(xml.as_bytes(), "deep", Code::MalformedXml, 60_002, 27);
+    let mut utf16 = vec![0xFF, 0xFE];
+    utf16.extend("<World>\n <Name>\u{7}".encode_utf16().flat_map(u16::to_le_bytes));
+    expect_in_both(&utf16, "utf16", Code::MalformedXml, 2, 8);
+}
+
+/// The characters XML does allow, control-like or not, still load.
+#[test]
+fn tabs_line_ends_del_and_u_fffd_load() {
+    let name = "\u{7F}\u{85}\u{FFFD}\u{EFFF}\u{10FFFF}";
+    let xml = format!(
+        "<World Version=\"1\">\t\r\n<Shapes/><Fixtures/>\r<Bodies><Body Type=\"Static\">\
+         <Name>{name}</Name></Body></Bodies><Joints/></World>"
+    );
+    let scene = load_bytes(xml.as_bytes()).expect("every character is allowed");
+    assert_eq!(scene.find_body(name), Some(0));
+}
+
+/// `--` may appear in a comment only as the start of its `-->`: not inside it, and not as
+/// `--->`.
+#[test]
+fn double_hyphens_inside_a_comment_are_malformed() {
+    let inside = "<World Version=\"1\">\n<!-- a -- b -->";
+    expect_in_both(inside.as_bytes(), "dashes", Code::MalformedXml, 2, 8);
+    let three = "<World Version=\"1\">\n<Shapes><!-- a ---></Shapes>";
+    expect_in_both(three.as_bytes(), "three-dashes", Code::MalformedXml, 2, 16);
+    let in_user_data = "<World Version=\"1\"><UserData><Type>x</Type><Value><!----->";
+    expect_in_both(in_user_data.as_bytes(), "user-data", Code::MalformedXml, 1, 55);
+    let fine = format!("<!---->{SCENE}<!-- - -->");
+    load_bytes(fine.as_bytes()).expect("single hyphens and an empty comment are allowed");
+}
+
+/// A file has one XML declaration, at its very start (after a byte-order mark at most).
+#[test]
+fn an_xml_declaration_not_at_the_start_is_malformed() {
+    let declaration = "<?xml version=\"1.0\" encoding=\"utf-8\"?>";
+    let after_space = format!("\n  {declaration}{SCENE}");
+    expect_in_both(after_space.as_bytes(), "decl-space", Code::MalformedXml, 2, 3);
+    let inside = SCENE.replace("<Shapes/>", &format!("<Shapes>{declaration}</Shapes>"));
+    expect_in_both(inside.as_bytes(), "decl-inside", Code::MalformedXml, 1, 28);
+    let twice = format!("{declaration}{declaration}{SCENE}");
+    expect_in_both(twice.as_bytes(), "decl-twice", Code::MalformedXml, 1, 39);
+    let with_bom = format!("\u{FEFF}{declaration}{SCENE}");
+    load_bytes(with_bom.as_bytes()).expect("a declaration after a byte-order mark is at the start");
+    let named_like_it = SCENE.replace("<Shapes/>", "<?xml-stylesheet href=\"a\"?><Shapes/>");
+    load_bytes(named_like_it.as_bytes()).expect("other processing instructions are skipped");
+}

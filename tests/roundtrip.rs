@@ -266,3 +266,23 @@ fn pair_attributes_go_onto_their_body_and_never_twice() {
         }
     }
 }
+
+/// Fuzz finding: a `<Centroid>` on a circle or an edge is ignored with a warning, so it must
+/// not mark the centroid as given, or the scene written reads back differently.
+#[test]
+fn an_ignored_centroid_round_trips() {
+    let circle = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position>\
+                  <Centroid>1 2</Centroid></Shape>";
+    let edge = "<Shape Type=\"Edge\"><Centroid>1 2</Centroid><Vertex1>0 0</Vertex1>\
+                <Vertex2>1 0</Vertex2></Shape>";
+    for shape in [circle, edge] {
+        let xml = format!(
+            "<World Version=\"2\"><Shapes>{shape}</Shapes><Fixtures/><Bodies/><Joints/></World>"
+        );
+        let scene = load_text(&xml);
+        let shape = &scene.shapes()[0];
+        assert!(!shape.centroid_given, "{xml}");
+        assert_eq!(shape.centroid, box2scene::Vec2::ZERO);
+        assert_round_trip(&scene, &xml);
+    }
+}

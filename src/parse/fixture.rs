@@ -41,6 +41,16 @@ impl<'a> Parser<'a> {
             }
             use FixtureChild::*;
             match name {
+                // A Version 3 body's Pairs give each of its fixtures a shape, and the shape's
+                // Density attribute its density (spec section 8.2).
+                Shape | Density if self.farseer_layout() => {
+                    let message = format!(
+                        "<{}> in a Version 3 <Fixture> ignored: a body's <Pair> gives the \
+                         fixture its shape, and the shape's Density attribute its density",
+                        child.name()
+                    );
+                    self.discard(&child, message)?;
+                }
                 Shape => (fixture.shape, shape_at) = self.id(&child)?,
                 Name => fixture.name = self.string(&child)?,
                 Density => fixture.density = self.non_negative(&child)?,

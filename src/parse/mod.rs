@@ -166,15 +166,66 @@ impl Tag {
 pub(crate) struct Text {
     at: usize,
     end: usize,
-    resolved: Option<String>,
+    resolved: Option<Resolved>,
 }
 
 impl Text {
     /// Its text, from `source` when it is a range of it.
     fn read<'t>(&'t self, source: &'t Source) -> &'t str {
         match &self.resolved {
-            Some(resolved) => resolved,
+            Some(resolved) => &resolved.text,
             None => source.slice(self.at, self.end),
+        }
+    }
+
+    /// Where the character at `offset` of its text is written in the file's text.
+    fn written_at(&self, offset: usize) -> usize {
+        match &self.resolved {
+            Some(resolved) => resolved.written_at(self.at, offset),
+            None => self.at + offset,
+        }
+    }
+}
+
+/// Text that is not as written: its references resolved, its line ends normalised, or
+/// pieces written apart (around a comment, as CDATA) joined.
+#[derive(Default)]
+pub(crate) struct Resolved {
+    text: String,
+    /// Where its pieces are written, for positions in messages: at each offset of `text`
+    /// listed, the offset in the file's text it was read from, and from there on one byte
+    /// for one up to the next listed (from the text's start, one for one from where it is).
+    written: Vec<(usize, usize)>,
+}
+
+impl Resolved {
+    /// Where the character at `offset` of the text, which starts at `at`, is written.
+    fn written_at(&self, at: usize, offset: usize) -> usize {
+        let after = self.written.partition_point(|&(piece, _)| piece <= offset);
+        let (piece, from) = after.checked_sub(1).map_or((0, at), |last| self.written[last]);
+        from + (offset - piece)
+    }
+
+    /// Appends `text`, written from `at` on.
+    fn push(&mut self, text: &str, at: usize) {
+        self.written.push((self.text.len(), at));
+        self.text.push_str(text);
+    }
+
+    /// Appends `other`, whose text starts at `at`.
+    fn append(&mut self, other: &Resolved, at: usize) {
+        let base = self.text.len();
+        self.push(&other.text, at);
+        self.written.extend(other.written.iter().map(|&(piece, from)| (base + piece, from)));
+    }
+
+    /// Keeps the text from `start` to `end` only (white space trimmed).
+    fn keep(&mut self, start: usize, end: usize) {
+        self.text.truncate(end);
+        self.text.drain(..start);
+        self.written.retain(|&(piece, _)| piece > start);
+        for (piece, _) in &mut self.written {
+            *piece -= start;
         }
     }
 }
@@ -667,6 +718,14 @@ impl<'a> Parser<'a> {
         let is_declaration = content.starts_with("xml")
             && content.as_bytes().get(3).is_none_or(|&b| text::is_xml_space_byte(b));
         if is_declaration {
+            if at != 0 {
+                return Err(problem(
+                    Code::MalformedXml,
+                    at,
+                    "malformed XML: an XML declaration (<?xml ...?>) is allowed only at the very \
+                     start of the file",
+                ));
+            }
             let decl = BytesDecl::from_start(BytesStart::from_content(content, 3));
             self.check_declared_encoding(&decl, at)?;
         }
@@ -678,8 +737,22 @@ impl<'a> Parser<'a> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {
-            let end = self.scan(at, at + 4, 2, |rest| memchr::memmem::find(rest, b"-->"))?;
+            // XML allows `--` in a comment only as the start of its `-->`.
+            let mut dashes = false;
+            let end = self.scan(at, at + 4, 2, |rest| {
+                let i = memchr::memmem::find(rest, b"--")?;
+                dashes = *rest.get(i + 2)? != b'>';
+                Some(i)
+            })?;
             let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
+            if dashes {
+                return Err(problem(
+                    Code::MalformedXml,
+                    end,
+                    "malformed XML: `--` inside a comment (a comment ends at the first `--`, \
+                     which must be followed by `>`)",
+                ));
+            }
             self.pos = end + 3;
             if self.pins.is_empty() {
                 let comment = self.kept_text(at, self.pos);
@@ -771,7 +844,7 @@ impl<'a> Parser<'a> {
                     if !text.is_empty() {
                         return Err(problem(
                             Code::UnexpectedText,
-                            t.at + lead,
+                            t.written_at(lead),
                             format!(
                                 "text '{}' inside <{}>, which holds only elements",
                                 shorten(text),
@@ -797,8 +870,8 @@ impl<'a> Parser<'a> {
                     Node::Text(t) => match &mut value {
                         None => value = Some(t),
                         Some(first) => {
-                            let joined = self.text_of(first).to_owned() + self.text_of(&t);
-                            if joined.len() as u64 > self.options.max_text_bytes {
+                            let joined = self.joined(first, &t);
+                            if joined.text.len() as u64 > self.options.max_text_bytes {
                                 return Err(self.limit(
                                     t.at,
                                     "max_text_bytes",
@@ -831,15 +904,29 @@ impl<'a> Parser<'a> {
             });
         };
         let (lead, trimmed) = trim_xml_at(self.text_of(&text));
-        let (at, trimmed) = (text.at + lead, trimmed.len());
+        let (at, trimmed) = (text.written_at(lead), trimmed.len());
         match &mut text.resolved {
             Some(resolved) => {
-                resolved.truncate(lead + trimmed);
-                resolved.drain(..lead);
+                resolved.keep(lead, lead + trimmed);
+                text.at = at;
             }
             None => (text.at, text.end) = (at, at + trimmed),
         }
         Ok(Value { text, at })
+    }
+
+    /// The text of `first` followed by that of `second`, which were written apart.
+    fn joined(&self, first: &mut Text, second: &Text) -> Resolved {
+        let mut joined = first.resolved.take().unwrap_or_else(|| {
+            let mut whole = Resolved::default();
+            whole.push(self.source.slice(first.at, first.end), first.at);
+            whole
+        });
+        match &second.resolved {
+            Some(resolved) => joined.append(resolved, second.at),
+            None => joined.push(self.source.slice(second.at, second.end), second.at),
+        }
+        joined
     }
 
     /// The usual value, read without nodes: text at hand with no markup, references or
@@ -873,7 +960,8 @@ impl<'a> Parser<'a> {
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
             Err(e) => {
-                Err(problem(e.code, value.at + e.at, format!("<{}>: {}", tag.name(), e.message)))
+                let at = value.text.written_at(e.at);
+                Err(problem(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
             }
         }
     }
@@ -909,13 +997,14 @@ impl<'a> Parser<'a> {
         convert: fn(&str) -> Result<T, BadValue>,
     ) -> Parsed<(T, usize)> {
         let (lead, value) = trim_xml_at(&attr.value);
-        convert(value).map(|v| (v, attr.at + lead)).map_err(|e| {
-            problem(
+        match convert(value) {
+            Ok(v) => Ok((v, written_at(tag, attr, lead))),
+            Err(e) => Err(problem(
                 e.code,
-                attr.at + lead + e.at,
+                written_at(tag, attr, lead + e.at),
                 format!("<{} {}>: {}", tag.name(), attr.key, e.message),
-            )
-        })
+            )),
+        }
     }
 
     /// A string value, stored in the scene's string pool.
@@ -1031,14 +1120,21 @@ impl<'a> Parser<'a> {
     /// Warns (`unknown-element`, with `message`) and skips `child`, keeping its text for the
     /// writer at the end of where it was.
     pub fn ignore(&mut self, child: &Tag, message: String) -> Parsed<()> {
-        self.warn(Code::UnknownElement, child.at, message)?;
-        self.pin(child.at);
-        self.skip(child)?;
-        self.pins.pop();
+        self.discard(child, message)?;
         if self.pins.is_empty() {
             let text = self.kept_text(child.at, self.pos);
             self.keep(self.object, Place::Inside { within: self.within, before: "" }, text);
         }
+        Ok(())
+    }
+
+    /// Warns (`unknown-element`, with `message`) and skips `child`, comments inside it
+    /// included, keeping nothing: for what the writer writes in another form.
+    pub fn discard(&mut self, child: &Tag, message: String) -> Parsed<()> {
+        self.warn(Code::UnknownElement, child.at, message)?;
+        self.pin(child.at);
+        self.skip(child)?;
+        self.pins.pop();
         Ok(())
     }
 
@@ -1259,11 +1355,30 @@ fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Att
 
 /// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
 fn verbatim(tag: &Tag, attr: &Attr) -> String {
+    let (quote, value) = written_value(tag, attr);
+    format!(" {}={quote}{value}{quote}", attr.key)
+}
+
+/// The quote around the value of an attribute of `tag`, and the value as written.
+fn written_value<'t>(tag: &'t Tag, attr: &Attr) -> (char, &'t str) {
     let content = tag.content.as_deref().unwrap_or_default();
     let value = (attr.at - tag.at - 1).min(content.len());
     let quote = content[..value].chars().next_back().unwrap_or('"');
     let len = content[value..].find(quote).unwrap_or(content.len() - value);
-    format!(" {}={quote}{}{quote}", attr.key, &content[value..value + len])
+    (quote, &content[value..value + len])
+}
+
+/// Where the character at `offset` of an attribute's value is written. A value unlike what
+/// is written (references resolved, white space normalised) is resolved again to tell, as
+/// only a message needs it: its bytes line up with the resolved text's.
+fn written_at(tag: &Tag, attr: &Attr, offset: usize) -> usize {
+    if let Cow::Borrowed(_) = attr.value {
+        return attr.at + offset;
+    }
+    match resolve_text(written_value(tag, attr).1, attr.at) {
+        Ok(resolved) => resolved.written_at(attr.at, offset),
+        Err(_) => attr.at + offset,
+    }
 }
 
 /// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without
@@ -1305,13 +1420,14 @@ fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
     memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
 }
 
-/// Text with references or carriage returns: references resolved (only the five
-/// predefined entities and character references exist), line ends normalised to `\n`.
-fn resolve_text(raw: &str, at: usize) -> Parsed<String> {
-    let mut out = String::with_capacity(raw.len());
+/// Text with references or carriage returns, written from `at` on: references resolved
+/// (only the five predefined entities and character references exist), line ends
+/// normalised to `\n`.
+fn resolve_text(raw: &str, at: usize) -> Parsed<Resolved> {
+    let mut out = Resolved { text: String::with_capacity(raw.len()), written: Vec::new() };
     let (mut rest, mut offset) = (raw, at);
     while let Some(amp) = memchr::memchr(b'&', rest.as_bytes()) {
-        push_normalised(&mut out, &rest[..amp]);
+        push_normalised(&mut out, &rest[..amp], offset);
         let after = &rest[amp + 1..];
         let name = match memchr::memchr2(b';', b'&', after.as_bytes()) {
             Some(semi) if after.as_bytes()[semi] == b';' => &after[..semi],
@@ -1319,27 +1435,40 @@ fn resolve_text(raw: &str, at: usize) -> Parsed<String> {
         };
         let reference = BytesRef::new(name);
         match reference.resolve_char_ref() {
-            Ok(Some(c)) => out.push(c),
+            Ok(Some(c)) => out.text.push(c),
             _ => match quick_xml::escape::resolve_predefined_entity(name) {
-                Some(resolved) => out.push_str(resolved),
+                Some(resolved) => out.text.push_str(resolved),
                 None => return Err(unknown_entity(name, offset + amp)),
             },
         }
         let used = amp + 1 + name.len() + 1;
         rest = &rest[used..];
         offset += used;
+        out.written.push((out.text.len(), offset));
     }
-    push_normalised(&mut out, rest);
+    push_normalised(&mut out, rest, offset);
     Ok(out)
 }
 
-/// Appends `text` with `\r\n` and lone `\r` made `\n` (XML 1.0 section 2.11).
-fn push_normalised(out: &mut String, text: &str) {
+/// Appends `text`, written from `at` on, with `\r\n` and lone `\r` made `\n` (XML 1.0
+/// section 2.11).
+fn push_normalised(out: &mut Resolved, text: &str, at: usize) {
     let mut pieces = text.split('\r');
-    out.push_str(pieces.next().unwrap_or_default());
+    let first = pieces.next().unwrap_or_default();
+    out.text.push_str(first);
+    let mut offset = at + first.len();
     for piece in pieces {
-        out.push('\n');
-        out.push_str(piece.strip_prefix('\n').unwrap_or(piece));
+        out.text.push('\n');
+        offset += 1;
+        if let Some(line) = piece.strip_prefix('\n') {
+            offset += 1;
+            out.written.push((out.text.len(), offset));
+            out.text.push_str(line);
+            offset += line.len();
+        } else {
+            out.text.push_str(piece);
+            offset += piece.len();
+        }
     }
 }
 

@@ -64,11 +64,21 @@ impl<'a> Parser<'a> {
             }
             use ShapeChild::*;
             match name {
-                Name => shape.name = self.string(&child)?,
+                Name => {
+                    if !repeated && !shape.name.is_null() {
+                        let message = "<Shape> has both a Name attribute and a <Name> element; \
+                                       the element wins";
+                        self.warn(Code::DuplicateElement, child.at, message)?;
+                    }
+                    shape.name = self.string(&child)?;
+                }
                 Radius => (shape.radius, radius_at) = self.parsed(&child, crate::text::float)?,
                 Position => shape.position = self.vector(&child)?,
                 Vertices => shape.vertices = self.vertices(&child, kind)?,
-                Centroid => shape.centroid = self.vector(&child)?,
+                Centroid => {
+                    shape.centroid = self.vector(&child)?;
+                    shape.centroid_given = true;
+                }
                 Vertex0 | PrevVertex => shape.prev_vertex = self.vector(&child)?,
                 Vertex1 => edge[0] = self.vector(&child)?,
                 Vertex2 => edge[1] = self.vector(&child)?,
@@ -78,7 +88,6 @@ impl<'a> Parser<'a> {
                 Loop => shape.is_loop |= self.boolean(&child)?,
             }
         }
-        shape.centroid_given = seen.contains(ShapeChild::Centroid);
         match kind {
             ShapeKind::Circle => {
                 for needed in [ShapeChild::Radius, ShapeChild::Position] {
