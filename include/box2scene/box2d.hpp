@@ -40,7 +40,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
-#include <map>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -187,13 +186,12 @@ struct FixtureMass {
     b2MassData mass; ///< of the rebuilt shape at that density
 };
 
-/// What b2Body::ResetMassData leaves in a dynamic body holding the first `count` of
-/// `created` (its fixture list is newest first), operation for operation as Box2D 2.4.1
-/// does it so that the bits agree: mass, centre, and inertia about the centre in `I`.
-inline b2MassData reset_mass(const std::vector<FixtureMass>& created, size_t count,
-                             bool fixed_rotation) {
+/// What b2Body::ResetMassData leaves in a dynamic body holding `created` (its fixture list
+/// is newest first), operation for operation as Box2D 2.4.1 does it so that the bits agree:
+/// mass, centre, and inertia about the centre in `I`.
+inline b2MassData reset_mass(const std::vector<FixtureMass>& created, bool fixed_rotation) {
     b2MassData body{0.0f, b2Vec2_zero, 0.0f};
-    for (size_t i = count; i-- > 0;) {
+    for (size_t i = created.size(); i-- > 0;) {
         if (created[i].density == 0.0f) {
             continue;
         }
@@ -279,12 +277,11 @@ inline RangeCheck gravity_check(b2s_vec2 gravity) {
     return check;
 }
 
-/// Whether b2Body::ResetMassData, for the first `count` of `created`, moves an inertia to
-/// the centre of mass, and then asserts that some is left: the summed inertia is positive.
-inline bool inertia_centred(const std::vector<FixtureMass>& created, size_t count,
-                            bool fixed_rotation) {
+/// Whether b2Body::ResetMassData, for `created`, moves an inertia to the centre of mass,
+/// and then asserts that some is left: the summed inertia is positive.
+inline bool inertia_centred(const std::vector<FixtureMass>& created, bool fixed_rotation) {
     float sum = 0.0f;
-    for (size_t i = count; i-- > 0;) {
+    for (size_t i = created.size(); i-- > 0;) {
         if (created[i].density != 0.0f) {
             sum += created[i].mass.I;
         }
@@ -560,13 +557,12 @@ private:
         }
     }
 
-    /// The mass Box2D 2.4 will give a dynamic body, as b2Body computes it: after each of
-    /// its fixtures (ResetMassData, which asserts that an inertia it centres stays
-    /// positive), then MassData. `check` fails when Box2D would assert or the result lies
-    /// beyond the working range.
+    /// The mass Box2D 2.4 will give a dynamic body, as build_world has b2Body compute it:
+    /// from all of its fixtures at once (ResetMassData, which asserts that an inertia it
+    /// centres stays positive), then MassData. `check` fails when Box2D would assert or the
+    /// result lies beyond the working range.
     b2MassData predicted_mass(const b2s_body& body, RangeCheck& check) const {
         std::vector<FixtureMass> created;
-        b2MassData mass{0.0f, b2Vec2_zero, 0.0f};
         uint64_t end = uint64_t{body.fixtures.first} + body.fixtures.count;
         for (uint64_t slot = body.fixtures.first; slot < end && slot < view_.fixture_id_count;
              ++slot) {
@@ -577,20 +573,17 @@ private:
             const b2s_fixture& fixture = view_.fixtures[index];
             created.push_back(FixtureMass{fixture.density, {}});
             shapes_[fixture.shape]->ComputeMass(&created.back().mass, fixture.density);
-            if (fixture.density > 0.0f) { // only then does CreateFixture reset the mass
-                mass = reset_mass(created, created.size(), body.fixed_rotation);
-                std::string with = "with fixture " + std::to_string(index) + " ";
-                if (inertia_centred(created, created.size(), body.fixed_rotation) &&
-                    !(mass.I > 0.0f)) {
-                    check.fail(with + "it has no positive inertia about its centre of mass in "
-                                      "Box2D 2.4's float arithmetic (which asserts)");
-                }
-                // Each new centre of mass moves the body's velocity (w x its shift): a centre
-                // made NaN by a subnormal mass (0 * infinity) would stay in it.
-                check.vector(with + "its centre of mass", to_b2s(mass.center),
-                             working_range::length, "m");
-            }
         }
+        b2MassData mass = reset_mass(created, body.fixed_rotation);
+        if (inertia_centred(created, body.fixed_rotation) && !(mass.I > 0.0f)) {
+            check.fail("with fixtures that have a density, it has no positive inertia about its "
+                       "centre of mass in Box2D 2.4's float arithmetic (which asserts)");
+        }
+        // The new centre of mass moves the body's velocity (w x its shift), even where
+        // MassData then moves it again: a centre made NaN by a subnormal mass (0 * infinity)
+        // would stay in the velocity.
+        check.vector("with fixtures that have a density, its centre of mass",
+                     to_b2s(mass.center), working_range::length, "m");
         mass = with_mass_data(mass, body);
         check.zero_or_within("its mass", mass.mass, working_range::mass_min,
                              working_range::mass_max, "kg");
@@ -653,8 +646,15 @@ private:
                    "its fixture list lies outside the scene's fixture ID pool");
             return;
         }
+        bool dense = false;
         for (uint32_t slot = body.fixtures.first; slot < end; ++slot) {
-            built_.fixtures[slot] = make_fixture(body_index, view_.fixture_ids[slot], created);
+            b2Fixture* fixture = make_fixture(body_index, view_.fixture_ids[slot], created);
+            built_.fixtures[slot] = fixture;
+            dense = dense || (fixture != nullptr && fixture->GetDensity() > 0.0f);
+        }
+        // What CreateFixture would have done after each fixture with a density, once.
+        if (dense) {
+            created->ResetMassData();
         }
     }
 
@@ -677,34 +677,44 @@ private:
     }
 
     b2Fixture* make_fixture(uint32_t body_index, uint32_t index, b2Body* body) {
-        std::string owner = "fixture " + std::to_string(index) + " of body " +
-                            std::to_string(body_index);
+        auto owner = [&] { // only a report needs it
+            return "fixture " + std::to_string(index) + " of body " + std::to_string(body_index);
+        };
         if (index >= view_.fixture_count) {
             report(B2S_CODE_ID_OUT_OF_RANGE, "fixture", index, nullptr,
-                   owner + " does not exist");
+                   owner() + " does not exist");
             return nullptr;
         }
         const b2s_fixture& fixture = view_.fixtures[index];
         if (!shape_created(fixture)) {
             report(B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, fixture.name,
-                   owner + " names shape " + std::to_string(fixture.shape) +
+                   owner() + " names shape " + std::to_string(fixture.shape) +
                        ", which was not created; fixture skipped");
             return nullptr;
         }
-        if (!within_range(fixture_check(fixture), "fixture", index, fixture.name,
-                          owner + ": ")) {
+        RangeCheck check = fixture_check(fixture);
+        if (!check.passed()) {
+            within_range(check, "fixture", index, fixture.name, owner() + ": ");
             return nullptr;
         }
+        // CreateFixture recomputes the body's mass from all its fixtures whenever it adds one
+        // with a density, which makes a body of n fixtures cost n^2: the density is set
+        // after, and make_fixtures has the mass computed once.
+        bool withheld = fixture.density > 0.0f;
         b2FixtureDef def;
         def.shape = shapes_[fixture.shape].get();
-        def.density = fixture.density;
+        def.density = withheld ? 0.0f : fixture.density;
         def.friction = fixture.friction;
         def.restitution = fixture.restitution;
         def.isSensor = fixture.is_sensor;
         def.filter.categoryBits = fixture.filter.category_bits;
         def.filter.maskBits = fixture.filter.mask_bits;
         def.filter.groupIndex = fixture.filter.group_index;
-        return body->CreateFixture(&def);
+        b2Fixture* created = body->CreateFixture(&def);
+        if (withheld) {
+            created->SetDensity(fixture.density);
+        }
+        return created;
     }
 
     /// A datum the file leaves out keeps the value Box2D computed from the fixtures.
@@ -1762,7 +1772,7 @@ private:
         if (body.GetType() != b2_dynamicBody) { // SetMassData ignores other bodies
             return out;
         }
-        b2MassData fixtures = reset_mass(created, created.size(), body.IsFixedRotation());
+        b2MassData fixtures = reset_mass(created, body.IsFixedRotation());
         float fixtures_inertia =
             fixtures.I + fixtures.mass * b2Dot(fixtures.center, fixtures.center);
         float mass = body.GetMass(), inertia = body.GetInertia();
@@ -1794,9 +1804,9 @@ private:
         return out;
     }
 
-    /// The LinearVelocity to write: build_world's ResetMassData (one per fixture with a
-    /// density) and SetMassData each add w x (how far the centre of mass moved) to it,
-    /// and it must end at the body's velocity.
+    /// The LinearVelocity to write: build_world's ResetMassData (once, after the fixtures,
+    /// when one has a density) and SetMassData each add w x (how far the centre of mass
+    /// moved) to it, and it must end at the body's velocity.
     b2Vec2 linear_velocity(const b2Body& body, const std::vector<FixtureMass>& created,
                            const b2s_mass_data& written, uint32_t index, const std::string& name) {
         std::vector<b2Vec2> kicks = velocity_kicks(body, created, given(written));
@@ -1842,10 +1852,10 @@ private:
             kicks.push_back(b2Cross(w, moved - centre));
             centre = moved;
         };
-        for (size_t count = 1; count <= created.size(); ++count) {
-            if (created[count - 1].density > 0.0f) { // only then does CreateFixture reset the mass
-                move_centre(reset_mass(created, count, body.IsFixedRotation()).center);
-            }
+        bool dense = std::any_of(created.begin(), created.end(),
+                                 [](const FixtureMass& f) { return f.density > 0.0f; });
+        if (dense) { // only then does build_world reset the mass
+            move_centre(reset_mass(created, body.IsFixedRotation()).center);
         }
         if (mass_data_written) {
             move_centre(body.GetLocalCenter());
@@ -2111,8 +2121,8 @@ private:
     const Namer unnamed_{};
     const Namer* namer_;
     b2s_builder* builder_ = b2s_builder_new();
-    std::map<std::string, uint32_t> shapes_;   // by shape_key
-    std::map<std::string, uint32_t> fixtures_; // by fixture_key
+    std::unordered_map<std::string, uint32_t> shapes_;   // by shape_key
+    std::unordered_map<std::string, uint32_t> fixtures_; // by fixture_key
     std::unordered_map<const b2Body*, uint32_t> bodies_;
     std::unordered_map<const b2Joint*, uint32_t> joints_;
     uint32_t body_index_ = 0;    // in the world, in creation order
