@@ -3,7 +3,8 @@
 // counts, and the larger must take less than 8 times as long (a quadratic build takes 16).
 // Box2D 2.4's CreateFixture alone would recompute a body's mass from all its fixtures each
 // time, so the one-body scene also checks that the mass the adapter has Box2D compute once
-// is, bit for bit, what Box2D's ResetMassData gives over those fixtures.
+// is, bit for bit, what Box2D's ResetMassData gives over those fixtures. capture_world of
+// that body must grow linearly too.
 #include <box2d/box2d.h>
 #include <box2scene.h>
 #include <box2scene/box2d.hpp>
@@ -93,6 +94,35 @@ static int fixtures_on_one_body() {
     return 0;
 }
 
+/// capture_world of the one-body world likewise: its equal fixtures become one scene fixture
+/// each, found by hashing, and the velocity it writes is inverted through one mass update.
+static int capture_of_one_body() {
+    double times[2] = {0.0, 0.0};
+    const uint32_t sizes[2] = {GROWTH_SMALL, GROWTH_LARGE};
+    for (int i = 0; i < 2; ++i) {
+        ScenePtr scene(growth_one_body(sizes[i]));
+        ENSURE(scene != nullptr);
+        b2World world(b2Vec2(0.0f, -10.0f));
+        ENSURE(box2scene::build_world(scene.get(), world).reports.empty());
+        times[i] = DBL_MAX;
+        for (int run = 0; run < GROWTH_RUNS; ++run) {
+            std::vector<box2scene::Report> reports;
+            double start = growth_clock();
+            ScenePtr captured(box2scene::capture_world(world, reports));
+            times[i] = std::min(times[i], growth_clock() - start);
+            ENSURE(captured != nullptr && reports.empty());
+            const b2s_scene_view& view = view_of(captured);
+            ENSURE_EQ(view.body_count, 1);
+            ENSURE_EQ(view.fixture_id_count, sizes[i]);
+            ENSURE_EQ(view.fixture_count, GROWTH_CIRCLES * 3);
+            ENSURE_FLOAT(view.bodies[0].linear_velocity.x, 1.0f);
+            ENSURE_FLOAT(view.bodies[0].linear_velocity.y, 0.0f);
+        }
+    }
+    ENSURE(growth_linear("capture of fixtures on one body", times[0], times[1]));
+    return 0;
+}
+
 static int many_bodies() {
     ENSURE(grows_linearly("bodies", growth_many_bodies,
                           [](const box2scene::Built& built, uint32_t count) {
@@ -119,6 +149,7 @@ static int many_joints() {
 int main() {
     int failed = 0;
     failed += RUN_TEST(fixtures_on_one_body);
+    failed += RUN_TEST(capture_of_one_body);
     failed += RUN_TEST(many_bodies);
     failed += RUN_TEST(many_joints);
     return failed;
