@@ -12,6 +12,8 @@
 //! The format is specified in the project's `spec/box2scene-format.md`; the C API
 //! conventions are in the README.
 
+#![warn(missing_docs)]
+
 mod builder;
 mod dump;
 pub mod error;
@@ -35,7 +37,7 @@ pub use scene::{
 };
 pub use write::{WriteOptions, write};
 
-/// How to load: strictness and the limits of spec section 9. Exceeding a limit is error
+/// How to load: strictness and the limits of the input. Exceeding a limit is error
 /// `limit-exceeded`, whose message names the limit.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,7 +85,7 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
     parse::load_path(path.as_ref(), options)
 }
 
-/// Writes `scene` to a file (see [`write`]), replacing it atomically: the text goes to a
+/// Writes `scene` to a file (see [`write()`]), replacing it atomically: the text goes to a
 /// new file beside it, flushed to disk, then renamed over it, so a failed write (a full
 /// disk, a scene that cannot be written) leaves the old file as it was.
 pub fn write_path(
@@ -100,7 +102,7 @@ pub fn write_path(
 }
 
 impl Scene {
-    /// The scene as Box2Scene XML (see [`write`]).
+    /// The scene as Box2Scene XML (see [`write()`]).
     pub fn to_xml(&self, options: &WriteOptions) -> Result<String, Error> {
         write(self, options)
     }
