@@ -9,8 +9,10 @@
 //! # Ok::<(), box2scene::Error>(())
 //! ```
 //!
-//! The format is specified in the project's `spec/box2scene-format.md`; the C API
-//! conventions are in the README.
+//! The format (every element and its default, every error and warning code, the mapping
+//! onto Box2D) is described in the repository's `docs/format.md`; the C API's conventions
+//! in `docs/api.md`. The records of [`scene`] are the C API's structs, and [`ffi`] holds
+//! every function of the C header.
 
 #![warn(missing_docs)]
 
