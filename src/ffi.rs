@@ -27,12 +27,15 @@ unsafe impl Sync for Str {}
 // arrive as plain integers: a value from C is converted, never trusted to be a variant.
 
 /// A `b2s_shape_kind` as C passes it: any integer, checked before use.
+///
 /// cbindgen:no-export
 pub type RawShapeKind = u32;
 /// A `b2s_body_kind` as C passes it: any integer, checked before use.
+///
 /// cbindgen:no-export
 pub type RawBodyKind = u32;
 /// A `b2s_joint_kind` as C passes it: any integer, checked before use.
+///
 /// cbindgen:no-export
 pub type RawJointKind = u32;
 

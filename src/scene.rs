@@ -29,7 +29,9 @@ pub struct Vec2 {
 }
 
 impl Vec2 {
-    // Rust only: C initialises with `{0}`, and a compound literal is not C++.
+    /// The zero vector. Rust only: C initialises with `{0}`, and the macro cbindgen would
+    /// emit is a compound literal, which C++ does not have.
+    ///
     /// cbindgen:ignore
     pub const ZERO: Vec2 = Vec2 { x: 0.0, y: 0.0 };
 
