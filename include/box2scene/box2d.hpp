@@ -16,7 +16,7 @@
  *     b2s_write_file(saved, "saved.xml", nullptr, nullptr);
  *     b2s_scene_free(saved);
  *
- * The mapping is section 10 of the format specification. The adapter never prints, never
+ * docs/format.md tables the mapping ("Onto Box2D 2.4.1"). The adapter never prints, never
  * aborts and throws nothing for bad data: what it cannot create it skips and reports.
  * Debian's Box2D keeps its assertions on, so the adapter checks what they check before
  * calling Box2D (bodies it follows, joint kinds, a negative damping, a MassData that

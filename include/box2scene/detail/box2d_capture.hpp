@@ -465,7 +465,7 @@ private:
         }
         Label label = namer_->body(body);
         b2s_body record;
-        b2s_body_default(static_cast<uint32_t>(body.GetType()), &record);
+        b2s_body_default(static_cast<b2s_body_kind>(body.GetType()), &record);
         record.name = name_of(label.name);
         record.position = to_b2s(body.GetPosition());
         record.angle = body.GetAngle();
