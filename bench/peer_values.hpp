@@ -1,5 +1,5 @@
 // The pugixml peer's text-to-value conversions, with the semantics of box2scene's
-// src/text.rs for every spelling of spec section 2 (std::from_chars does the digits).
+// src/text.rs for every spelling of docs/format.md (std::from_chars does the digits).
 // Each takes text already trimmed of XML white space and throws ValueError when it is not
 // a value of its type.
 #pragma once

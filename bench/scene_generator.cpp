@@ -375,8 +375,8 @@ private:
         object(depth, "Joint", type_attribute(kJointKinds[static_cast<uint32_t>(plan.kind)]));
     }
 
-    /// The fields of each kind (spec section 8), each given most of the time, with values
-    /// Box2D 2.4 takes: lower limits below upper ones, non-zero axes, positive ratios.
+    /// The fields of each kind (docs/format.md, "Joints"), each given most of the time, with
+    /// values Box2D 2.4 takes: lower limits below upper ones, non-zero axes, positive ratios.
     void joint_fields(int d, const JointPlan& plan) {
         switch (plan.kind) {
         case JointKind::revolute:
@@ -588,7 +588,7 @@ private:
         }
     }
 
-    /// A float in one of the spellings of spec section 2: `3.141593`, `-0.7853982`,
+    /// A float in one of the spellings of docs/format.md: `3.141593`, `-0.7853982`,
     /// `8.369571E-01`, `1.500e+00`, `.5`, `5.`, `+1.5`, `-0`.
     std::string number(double value, Precision precision) {
         uint32_t style = random_.below(100);

@@ -1,9 +1,10 @@
 // The adapter against Box2D by hand: c_tests/data/every-v1-field.xml (every Version 1
 // field) goes through b2s_load_file and build_world; the same world is written here with
-// plain Box2D calls, following spec section 10. Both step 120 times and every body must
-// end in exactly the same state, bit for bit. Creation order matters to Box2D's solver,
-// so the hand-built world creates bodies, fixtures and joints in the adapter's order:
-// bodies and their fixtures in file order, then joints in file order, gears last.
+// plain Box2D calls, following docs/format.md ("Onto Box2D 2.4.1"). Both step 120 times
+// and every body must end in exactly the same state, bit for bit. Creation order matters to
+// Box2D's solver, so the hand-built world creates bodies, fixtures and joints in the
+// adapter's order: bodies and their fixtures in file order, then joints in file order, gears
+// last.
 #include <box2d/box2d.h>
 #include <box2scene.h>
 #include <box2scene/box2d.hpp>

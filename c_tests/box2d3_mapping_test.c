@@ -1,5 +1,5 @@
 /*
- * The v3 mapping (format spec section 12), row by row, against real Box2D v3.1.1 with its
+ * The v3 mapping (docs/format.md, "Onto Box2D v3.1"), row by row, against real Box2D v3.1.1 with its
  * assertions on: each test builds a small inline scene, steps the world and checks what the
  * physics must do (positions, angles, velocities), exactly where the mapping is exact, with a
  * tolerance only where the solver needs one; every report is checked by its code, object and

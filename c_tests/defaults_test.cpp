@@ -22,7 +22,7 @@ static int ensure_same(b2s_vec2 v, b2Vec2 w) {
 
 static int body_defaults_are_box2ds() {
     const b2BodyDef def;
-    for (uint32_t kind : {B2S_BODY_KIND_STATIC, B2S_BODY_KIND_KINEMATIC, B2S_BODY_KIND_DYNAMIC}) {
+    for (b2s_body_kind kind : {B2S_BODY_KIND_STATIC, B2S_BODY_KIND_KINEMATIC, B2S_BODY_KIND_DYNAMIC}) {
         b2s_body body;
         ENSURE_EQ(b2s_body_default(kind, &body), B2S_CODE_OK);
         ENSURE_EQ(body.kind, kind);
@@ -68,7 +68,7 @@ static int fixture_defaults_are_box2ds() {
     return 0;
 }
 
-static int joint_of(uint32_t kind, b2s_joint* joint) {
+static int joint_of(b2s_joint_kind kind, b2s_joint* joint) {
     ENSURE_EQ(b2s_joint_default(kind, joint), B2S_CODE_OK);
     ENSURE_EQ(joint->kind, kind);
     ENSURE_EQ(joint->joint_a, B2S_NONE);
@@ -206,9 +206,9 @@ static int unknown_kinds_are_invalid_arguments() {
     b2s_shape shape;
     b2s_body body;
     b2s_joint joint;
-    ENSURE_EQ(b2s_shape_default(4, &shape), B2S_CODE_INVALID_ARGUMENT);
-    ENSURE_EQ(b2s_body_default(3, &body), B2S_CODE_INVALID_ARGUMENT);
-    ENSURE_EQ(b2s_joint_default(12, &joint), B2S_CODE_INVALID_ARGUMENT);
+    ENSURE_EQ(b2s_shape_default(static_cast<b2s_shape_kind>(4), &shape), B2S_CODE_INVALID_ARGUMENT);
+    ENSURE_EQ(b2s_body_default(static_cast<b2s_body_kind>(3), &body), B2S_CODE_INVALID_ARGUMENT);
+    ENSURE_EQ(b2s_joint_default(static_cast<b2s_joint_kind>(12), &joint), B2S_CODE_INVALID_ARGUMENT);
     return 0;
 }
 

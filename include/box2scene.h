@@ -29,7 +29,7 @@
 #define B2S_MAX_WARNINGS 1000
 
 /**
- * Bytes in `b2s_error::message`, the terminating NUL included.
+ * Bytes in the `message` of a `b2s_error`, the terminating NUL included.
  */
 #define B2S_ERROR_MESSAGE_SIZE 256
 
@@ -40,14 +40,17 @@
 
 /**
  * Every result, error and warning code. 0 is success. The numbers are part of the ABI:
- * codes are only ever appended, never renumbered. `b2s_code_name` gives the spec's
- * kebab-case name.
+ * codes are only ever appended, never renumbered. `b2s_code_name` gives its
+ * kebab-case name, the one `docs/format.md` lists.
  */
 enum b2s_code
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : uint32_t
 #endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
  {
+  /**
+   * Success.
+   */
   B2S_CODE_OK = 0,
   /**
    * A required pointer argument was NULL.
@@ -65,14 +68,33 @@ enum b2s_code
    * A bug in box2scene: a panic was caught at the C boundary.
    */
   B2S_CODE_INTERNAL = 4,
+  /**
+   * Bytes that are not UTF-8 in a file read as UTF-8.
+   */
   B2S_CODE_INVALID_UTF8 = 10,
+  /**
+   * A NUL character in the text.
+   */
   B2S_CODE_NUL_BYTE = 11,
+  /**
+   * An XML declaration names an encoding other than UTF-8 or UTF-16.
+   */
   B2S_CODE_UNSUPPORTED_ENCODING = 12,
+  /**
+   * A `<!DOCTYPE`: refused so that no entity is ever expanded or fetched.
+   */
   B2S_CODE_DOCTYPE_FORBIDDEN = 13,
+  /**
+   * XML that does not parse: mismatched or unclosed tags, a second root, text after
+   * the root, a bad character reference.
+   */
   B2S_CODE_MALFORMED_XML = 14,
+  /**
+   * One attribute twice on one start tag (names compare without regard to case).
+   */
   B2S_CODE_DUPLICATE_ATTRIBUTE = 15,
   /**
-   * One of the load limits (spec section 9) was exceeded; the message names it.
+   * One of the load limits of `b2s_load_options` was exceeded; the message names it.
    */
   B2S_CODE_LIMIT_EXCEEDED = 16,
   /**
@@ -83,6 +105,9 @@ enum b2s_code
    * The root element is not `World`.
    */
   B2S_CODE_NOT_A_SCENE = 20,
+  /**
+   * A `Version` other than 1, 2 or 3.
+   */
   B2S_CODE_UNSUPPORTED_VERSION = 21,
   /**
    * A container (`Shapes`, `Vertices`, ...) appears twice in one object.
@@ -92,20 +117,54 @@ enum b2s_code
    * A child a container cannot hold (a `Body` inside `Shapes`).
    */
   B2S_CODE_UNEXPECTED_ELEMENT = 23,
+  /**
+   * A mandatory attribute (a `Type`) is absent.
+   */
   B2S_CODE_MISSING_ATTRIBUTE = 24,
+  /**
+   * A mandatory element (a fixture's `Shape`, a joint's `BodyA`) is absent.
+   */
   B2S_CODE_MISSING_ELEMENT = 25,
   /**
    * An unknown shape or body `Type`.
    */
   B2S_CODE_UNKNOWN_TYPE = 26,
+  /**
+   * A joint `Type` box2scene does not know (`Mouse`, a misspelling); also a built
+   * joint of the unsupported kind that has no text to write.
+   */
   B2S_CODE_UNSUPPORTED_JOINT_TYPE = 27,
+  /**
+   * Text that is not an integer.
+   */
   B2S_CODE_INVALID_INT = 30,
+  /**
+   * Text that is not a number.
+   */
   B2S_CODE_INVALID_FLOAT = 31,
+  /**
+   * A number written with a decimal comma (`0,5`), as a writer in a comma locale does.
+   */
   B2S_CODE_FLOAT_DECIMAL_COMMA = 32,
+  /**
+   * NaN, an infinity, or a literal too large for a 32-bit float.
+   */
   B2S_CODE_NON_FINITE_FLOAT = 33,
+  /**
+   * Text that is not `true`, `false`, `1` or `0`.
+   */
   B2S_CODE_INVALID_BOOL = 34,
+  /**
+   * Text that is not two numbers.
+   */
   B2S_CODE_INVALID_VECTOR2 = 35,
+  /**
+   * An ID that is not a non-negative integer.
+   */
   B2S_CODE_INVALID_ID = 36,
+  /**
+   * Filter bits that are not a non-negative decimal or `0x` hexadecimal number.
+   */
   B2S_CODE_INVALID_BITS = 37,
   /**
    * An integer outside its type's range (a 32-bit int, a 16-bit group index).
@@ -115,12 +174,34 @@ enum b2s_code
    * An ID that names an object its container does not have.
    */
   B2S_CODE_ID_OUT_OF_RANGE = 40,
+  /**
+   * A circle radius that is not positive.
+   */
   B2S_CODE_BAD_RADIUS = 41,
+  /**
+   * A polygon with fewer than 2 or more than 8 vertices, a chain with fewer than 2 (a
+   * loop: 3).
+   */
   B2S_CODE_BAD_VERTEX_COUNT = 42,
+  /**
+   * A polygon with (nearly) no area, or a two-vertex polygon whose ends (nearly) meet.
+   */
   B2S_CODE_DEGENERATE_POLYGON = 43,
+  /**
+   * An edge shorter than Box2D's linear slop (5 mm).
+   */
   B2S_CODE_DEGENERATE_EDGE = 44,
+  /**
+   * A chain with two consecutive vertices closer than Box2D's linear slop (5 mm).
+   */
   B2S_CODE_DEGENERATE_CHAIN = 45,
+  /**
+   * A negative value where only zero or more makes sense (density, a force, a length).
+   */
   B2S_CODE_NEGATIVE_VALUE = 46,
+  /**
+   * A joint whose two bodies are the same body.
+   */
   B2S_CODE_JOINT_SELF_REFERENCE = 47,
   /**
    * A gear joint that does not name two revolute or prismatic joints other than itself.
@@ -143,15 +224,45 @@ enum b2s_code
    * fixtures by position), so Ids may repeat. The number stays reserved.
    */
   B2S_CODE_DUPLICATE_ID = 52,
+  /**
+   * A file without `Version`: read as the original editor's 2010 files.
+   */
   B2S_CODE_LEGACY_UNVERSIONED = 100,
+  /**
+   * A Version 2 construct in a file that says Version 1.
+   */
   B2S_CODE_CONSTRUCT_NEWER_THAN_VERSION = 101,
+  /**
+   * A value element given twice in one object; the last one counts.
+   */
   B2S_CODE_DUPLICATE_ELEMENT = 102,
+  /**
+   * An element or attribute box2scene does not know; skipped, and kept for the writer.
+   */
   B2S_CODE_UNKNOWN_ELEMENT = 103,
+  /**
+   * `World` without one of `Shapes`, `Fixtures`, `Bodies`, `Joints`; read as empty.
+   */
   B2S_CODE_MISSING_CONTAINER = 104,
+  /**
+   * Filter bits above 16 bits (Farseer's 32-bit masks); the low 16 bits are kept.
+   */
   B2S_CODE_FILTER_BITS_TRUNCATED = 105,
+  /**
+   * Polygon vertices that are not convex and counter-clockwise; Box2D takes their hull.
+   */
   B2S_CODE_POLYGON_NOT_CONVEX_CCW = 106,
+  /**
+   * A dynamic body with a fixture of zero density and no `MassData` mass.
+   */
   B2S_CODE_DYNAMIC_BODY_ZERO_DENSITY = 107,
+  /**
+   * A Farseer `Angle` or `Slider` joint, kept as a joint of the unsupported kind.
+   */
   B2S_CODE_FARSEER_ONLY_JOINT = 108,
+  /**
+   * A Farseer line joint with a spring: read as a wheel joint.
+   */
   B2S_CODE_LINE_JOINT_IS_WHEEL = 109,
   /**
    * The file had more warnings than a scene keeps; this last one counts the rest.
@@ -176,8 +287,8 @@ enum b2s_code
    */
   B2S_CODE_INCONSISTENT_MASS_DATA = 203,
   /**
-   * A value beyond the range in which Box2D 2.4 stays finite (the README gives the
-   * bounds); the object, and what depends on it, was skipped.
+   * A value beyond the range in which Box2D 2.4 stays finite (`docs/box2d.md`
+   * gives the bounds); the object, and what depends on it, was skipped.
    */
   B2S_CODE_BEYOND_BOX2D_RANGE = 204,
   /**
@@ -205,7 +316,7 @@ typedef uint32_t b2s_code;
 #endif // __cplusplus
 
 /**
- * What a shape is. Stored as `u32` in [`Shape::kind`].
+ * What a shape is: the values of the `kind` field of `b2s_shape`.
  */
 enum b2s_shape_kind
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
@@ -238,15 +349,25 @@ typedef uint32_t b2s_shape_kind;
 #endif // __cplusplus
 
 /**
- * What a body is. Stored as `u32` in [`Body::kind`]; the values equal Box2D's `b2BodyType`.
+ * What a body is: the values of the `kind` field of `b2s_body`, equal to Box2D's
+ * `b2BodyType`.
  */
 enum b2s_body_kind
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : uint32_t
 #endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
  {
+  /**
+   * Does not move (zero mass); collides with dynamic bodies.
+   */
   B2S_BODY_KIND_STATIC = 0,
+  /**
+   * Moves by its velocity alone, unaffected by forces.
+   */
   B2S_BODY_KIND_KINEMATIC = 1,
+  /**
+   * Moved by forces, contacts and joints.
+   */
   B2S_BODY_KIND_DYNAMIC = 2,
 };
 #ifndef __cplusplus
@@ -258,24 +379,45 @@ typedef uint32_t b2s_body_kind;
 #endif // __cplusplus
 
 /**
- * What a joint is. Stored as `u32` in [`Joint::kind`]. The values are box2scene's own
- * (not Box2D's `b2JointType`).
+ * What a joint is: the values of the `kind` field of `b2s_joint`. They are box2scene's
+ * own (not Box2D's `b2JointType`).
  */
 enum b2s_joint_kind
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : uint32_t
 #endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
  {
+  /**
+   * A hinge: the bodies turn about a shared anchor.
+   */
   B2S_JOINT_KIND_REVOLUTE = 0,
+  /**
+   * A slider: the bodies move along an axis without turning.
+   */
   B2S_JOINT_KIND_PRISMATIC = 1,
+  /**
+   * A rod or a spring between two anchors.
+   */
   B2S_JOINT_KIND_DISTANCE = 2,
+  /**
+   * Two bodies hung from two ground anchors by one rope.
+   */
   B2S_JOINT_KIND_PULLEY = 3,
   /**
    * Box2D 2.1's line joint: a wheel joint without a spring.
    */
   B2S_JOINT_KIND_LINE = 4,
+  /**
+   * Glues two bodies together, rigidly or (Version 2) through an angular spring.
+   */
   B2S_JOINT_KIND_WELD = 5,
+  /**
+   * Top-down friction: resists relative motion up to a force and a torque.
+   */
   B2S_JOINT_KIND_FRICTION = 6,
+  /**
+   * Couples two revolute or prismatic joints by a ratio.
+   */
   B2S_JOINT_KIND_GEAR = 7,
   /**
    * Version 2.
@@ -341,7 +483,7 @@ typedef struct b2s_builder b2s_builder;
 typedef struct b2s_scene b2s_scene;
 
 /**
- * How to load: strictness and the limits of spec section 9. Exceeding a limit is error
+ * How to load: strictness and the limits of the input. Exceeding a limit is error
  * `limit-exceeded`, whose message names the limit.
  */
 typedef struct b2s_load_options {
@@ -417,17 +559,28 @@ typedef const char *b2s_str;
  * A 2D vector. Units depend on the field (metres, m/s, ...).
  */
 typedef struct b2s_vec2 {
+  /**
+   * The first component.
+   */
   float x;
+  /**
+   * The second component.
+   */
   float y;
 } b2s_vec2;
-#define b2s_vec2_ZERO (b2s_vec2){ .x = 0.0, .y = 0.0 }
 
 /**
  * A run of `count` consecutive items of a pool, starting at index `first`. An empty run
  * is always `{0, 0}`, however the scene was made.
  */
 typedef struct b2s_range {
+  /**
+   * Index of the first item in the pool.
+   */
   uint32_t first;
+  /**
+   * Number of items.
+   */
   uint32_t count;
 } b2s_range;
 
@@ -528,13 +681,16 @@ typedef struct b2s_fixture {
    * Default 0; never negative.
    */
   float restitution;
+  /**
+   * The `FilterData` element.
+   */
   struct b2s_filter filter;
   /**
    * Default false.
    */
   bool is_sensor;
   /**
-   * Index into the scene's user data, [`NONE`] when absent.
+   * Index into the scene's user data, `B2S_NONE` when absent.
    */
   uint32_t user_data;
 } b2s_fixture;
@@ -557,8 +713,17 @@ typedef struct b2s_mass_data {
    * never negative.
    */
   float inertia;
+  /**
+   * The file gave `Mass`.
+   */
   bool mass_given;
+  /**
+   * The file gave `Center`.
+   */
   bool center_given;
+  /**
+   * The file gave `Inertia`.
+   */
   bool inertia_given;
 } b2s_mass_data;
 
@@ -606,6 +771,9 @@ typedef struct b2s_body {
    * Box2D 2.1 only; kept, but no Box2D 2.4 field takes it. Default 1.
    */
   float inertia_scale;
+  /**
+   * The `MassData` element; with nothing given when absent.
+   */
   struct b2s_mass_data mass_data;
   /**
    * The body's fixtures: a range of the scene's fixture ID pool, each an index into the
@@ -613,7 +781,7 @@ typedef struct b2s_body {
    */
   struct b2s_range fixtures;
   /**
-   * Index into the scene's user data, [`NONE`] when absent.
+   * Index into the scene's user data, `B2S_NONE` when absent.
    */
   uint32_t user_data;
   /**
@@ -661,15 +829,15 @@ typedef struct b2s_joint {
    */
   uint32_t body_b;
   /**
-   * Index into the scene's user data, [`NONE`] when absent.
+   * Index into the scene's user data, `B2S_NONE` when absent.
    */
   uint32_t user_data;
   /**
-   * Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+   * Gear: index into the scene's joints (a revolute or prismatic joint); else `B2S_NONE`.
    */
   uint32_t joint_a;
   /**
-   * Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+   * Gear: index into the scene's joints (a revolute or prismatic joint); else `B2S_NONE`.
    */
   uint32_t joint_b;
   /**
@@ -840,16 +1008,28 @@ typedef struct b2s_diagnostic {
  * scene is freed.
  */
 typedef struct b2s_scene_view {
+  /**
+   * The `shape_count` shapes.
+   */
   const struct b2s_shape *shapes;
+  /**
+   * The `fixture_count` fixtures.
+   */
   const struct b2s_fixture *fixtures;
+  /**
+   * The `body_count` bodies.
+   */
   const struct b2s_body *bodies;
+  /**
+   * The `joint_count` joints.
+   */
   const struct b2s_joint *joints;
   /**
-   * The vertex pool that `b2s_shape::vertices` ranges index.
+   * The vertex pool that the `vertices` ranges of shapes index.
    */
   const struct b2s_vec2 *vertices;
   /**
-   * The fixture ID pool that `b2s_body::fixtures` ranges index.
+   * The fixture ID pool that the `fixtures` ranges of bodies index.
    */
   const uint32_t *fixture_ids;
   /**
@@ -860,13 +1040,37 @@ typedef struct b2s_scene_view {
    * The load's warnings (`B2S_SEVERITY_WARNING`).
    */
   const struct b2s_diagnostic *diagnostics;
+  /**
+   * Number of items in `shapes`.
+   */
   uint32_t shape_count;
+  /**
+   * Number of items in `fixtures`.
+   */
   uint32_t fixture_count;
+  /**
+   * Number of items in `bodies`.
+   */
   uint32_t body_count;
+  /**
+   * Number of items in `joints`.
+   */
   uint32_t joint_count;
+  /**
+   * Number of items in `vertices`.
+   */
   uint32_t vertex_count;
+  /**
+   * Number of items in `fixture_ids`.
+   */
   uint32_t fixture_id_count;
+  /**
+   * Number of items in `user_data`.
+   */
   uint32_t user_data_count;
+  /**
+   * Number of items in `diagnostics`.
+   */
   uint32_t diagnostic_count;
   /**
    * The file's `Version`; 0 for an unversioned (legacy) file.
@@ -877,6 +1081,9 @@ typedef struct b2s_scene_view {
    * default gravity, the host decides.
    */
   struct b2s_vec2 gravity;
+  /**
+   * The file gave a `Gravity`.
+   */
   bool gravity_given;
 } b2s_scene_view;
 
@@ -903,7 +1110,7 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * The load options with every field at its default (the limits of spec section 9,
+ * The load options with every field at its default (the limits of `docs/format.md`,
  * strict off, threads chosen by box2scene). Start from this and change what you need.
  */
 struct b2s_load_options b2s_load_options_default(void);
@@ -1142,14 +1349,14 @@ b2s_code b2s_builder_finish(struct b2s_builder *builder,
                             struct b2s_error *error);
 
 /**
- * Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its
- * default. Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT`
- * for a NULL `out`.
+ * Writes into `*out` a shape of `kind` with every field at its default. Returns
+ * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT` for a NULL
+ * `out`.
  *
  * # Safety
  * `out` is NULL or writable.
  */
-b2s_code b2s_shape_default(uint32_t kind, struct b2s_shape *out);
+b2s_code b2s_shape_default(b2s_shape_kind kind, struct b2s_shape *out);
 
 /**
  * Writes into `*out` a fixture with every field at its default.
@@ -1160,21 +1367,22 @@ b2s_code b2s_shape_default(uint32_t kind, struct b2s_shape *out);
 b2s_code b2s_fixture_default(struct b2s_fixture *out);
 
 /**
- * Writes into `*out` a body of `kind` (a `b2s_body_kind`) with every field at its default.
+ * Writes into `*out` a body of `kind` with every field at its default. Returns
+ * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
  *
  * # Safety
  * `out` is NULL or writable.
  */
-b2s_code b2s_body_default(uint32_t kind, struct b2s_body *out);
+b2s_code b2s_body_default(b2s_body_kind kind, struct b2s_body *out);
 
 /**
- * Writes into `*out` a joint of `kind` (a `b2s_joint_kind`) with every field at the
- * spec's default for that kind.
+ * Writes into `*out` a joint of `kind` with every field at the default of that kind
+ * (`docs/format.md` lists them). Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
  *
  * # Safety
  * `out` is NULL or writable.
  */
-b2s_code b2s_joint_default(uint32_t kind, struct b2s_joint *out);
+b2s_code b2s_joint_default(b2s_joint_kind kind, struct b2s_joint *out);
 
 /**
  * The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the
@@ -1183,8 +1391,8 @@ b2s_code b2s_joint_default(uint32_t kind, struct b2s_joint *out);
 const char *b2s_version(void);
 
 /**
- * The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"`. Static
- * storage.
+ * The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"` for a number
+ * that is no code (so it takes any integer, not only a `b2s_code`). Static storage.
  */
 const char *b2s_code_name(uint32_t code);
 

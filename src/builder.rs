@@ -56,6 +56,7 @@ fn reference(index: u32, count: usize, names: &str, what: &str) -> Result<(), (C
 }
 
 impl Builder {
+    /// An empty builder.
     pub fn new() -> Builder {
         Builder::default()
     }

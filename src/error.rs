@@ -7,11 +7,12 @@ use std::fmt;
 use crate::scene::Str;
 
 /// Every result, error and warning code. 0 is success. The numbers are part of the ABI:
-/// codes are only ever appended, never renumbered. `b2s_code_name` gives the spec's
-/// kebab-case name.
+/// codes are only ever appended, never renumbered. `b2s_code_name` gives its
+/// kebab-case name, the one `docs/format.md` lists.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Code {
+    /// Success.
     Ok = 0,
 
     // Misuse of the API and the environment.
@@ -25,13 +26,20 @@ pub enum Code {
     Internal = 4,
 
     // The bytes and the XML.
+    /// Bytes that are not UTF-8 in a file read as UTF-8.
     InvalidUtf8 = 10,
+    /// A NUL character in the text.
     NulByte = 11,
+    /// An XML declaration names an encoding other than UTF-8 or UTF-16.
     UnsupportedEncoding = 12,
+    /// A `<!DOCTYPE`: refused so that no entity is ever expanded or fetched.
     DoctypeForbidden = 13,
+    /// XML that does not parse: mismatched or unclosed tags, a second root, text after
+    /// the root, a bad character reference.
     MalformedXml = 14,
+    /// One attribute twice on one start tag (names compare without regard to case).
     DuplicateAttribute = 15,
-    /// One of the load limits (spec section 9) was exceeded; the message names it.
+    /// One of the load limits of `b2s_load_options` was exceeded; the message names it.
     LimitExceeded = 16,
     /// Non-blank text where only elements belong.
     UnexpectedText = 17,
@@ -39,25 +47,38 @@ pub enum Code {
     // The structure of the scene.
     /// The root element is not `World`.
     NotAScene = 20,
+    /// A `Version` other than 1, 2 or 3.
     UnsupportedVersion = 21,
     /// A container (`Shapes`, `Vertices`, ...) appears twice in one object.
     DuplicateContainer = 22,
     /// A child a container cannot hold (a `Body` inside `Shapes`).
     UnexpectedElement = 23,
+    /// A mandatory attribute (a `Type`) is absent.
     MissingAttribute = 24,
+    /// A mandatory element (a fixture's `Shape`, a joint's `BodyA`) is absent.
     MissingElement = 25,
     /// An unknown shape or body `Type`.
     UnknownType = 26,
+    /// A joint `Type` box2scene does not know (`Mouse`, a misspelling); also a built
+    /// joint of the unsupported kind that has no text to write.
     UnsupportedJointType = 27,
 
     // Values.
+    /// Text that is not an integer.
     InvalidInt = 30,
+    /// Text that is not a number.
     InvalidFloat = 31,
+    /// A number written with a decimal comma (`0,5`), as a writer in a comma locale does.
     FloatDecimalComma = 32,
+    /// NaN, an infinity, or a literal too large for a 32-bit float.
     NonFiniteFloat = 33,
+    /// Text that is not `true`, `false`, `1` or `0`.
     InvalidBool = 34,
+    /// Text that is not two numbers.
     InvalidVector2 = 35,
+    /// An ID that is not a non-negative integer.
     InvalidId = 36,
+    /// Filter bits that are not a non-negative decimal or `0x` hexadecimal number.
     InvalidBits = 37,
     /// An integer outside its type's range (a 32-bit int, a 16-bit group index).
     OutOfRange = 38,
@@ -65,12 +86,20 @@ pub enum Code {
     // Meaning.
     /// An ID that names an object its container does not have.
     IdOutOfRange = 40,
+    /// A circle radius that is not positive.
     BadRadius = 41,
+    /// A polygon with fewer than 2 or more than 8 vertices, a chain with fewer than 2 (a
+    /// loop: 3).
     BadVertexCount = 42,
+    /// A polygon with (nearly) no area, or a two-vertex polygon whose ends (nearly) meet.
     DegeneratePolygon = 43,
+    /// An edge shorter than Box2D's linear slop (5 mm).
     DegenerateEdge = 44,
+    /// A chain with two consecutive vertices closer than Box2D's linear slop (5 mm).
     DegenerateChain = 45,
+    /// A negative value where only zero or more makes sense (density, a force, a length).
     NegativeValue = 46,
+    /// A joint whose two bodies are the same body.
     JointSelfReference = 47,
     /// A gear joint that does not name two revolute or prismatic joints other than itself.
     BadGearJoint = 48,
@@ -85,15 +114,25 @@ pub enum Code {
     DuplicateId = 52,
 
     // Warnings.
+    /// A file without `Version`: read as the original editor's 2010 files.
     LegacyUnversioned = 100,
+    /// A Version 2 construct in a file that says Version 1.
     ConstructNewerThanVersion = 101,
+    /// A value element given twice in one object; the last one counts.
     DuplicateElement = 102,
+    /// An element or attribute box2scene does not know; skipped, and kept for the writer.
     UnknownElement = 103,
+    /// `World` without one of `Shapes`, `Fixtures`, `Bodies`, `Joints`; read as empty.
     MissingContainer = 104,
+    /// Filter bits above 16 bits (Farseer's 32-bit masks); the low 16 bits are kept.
     FilterBitsTruncated = 105,
+    /// Polygon vertices that are not convex and counter-clockwise; Box2D takes their hull.
     PolygonNotConvexCcw = 106,
+    /// A dynamic body with a fixture of zero density and no `MassData` mass.
     DynamicBodyZeroDensity = 107,
+    /// A Farseer `Angle` or `Slider` joint, kept as a joint of the unsupported kind.
     FarseerOnlyJoint = 108,
+    /// A Farseer line joint with a spring: read as a wheel joint.
     LineJointIsWheel = 109,
     /// The file had more warnings than a scene keeps; this last one counts the rest.
     WarningsTruncated = 110,
@@ -109,8 +148,8 @@ pub enum Code {
     /// positive inertia about the centre of mass, which Box2D rejects; the mass computed
     /// from the fixtures was kept.
     InconsistentMassData = 203,
-    /// A value beyond the range in which Box2D 2.4 stays finite (the README gives the
-    /// bounds); the object, and what depends on it, was skipped.
+    /// A value beyond the range in which Box2D 2.4 stays finite (`docs/box2d.md`
+    /// gives the bounds); the object, and what depends on it, was skipped.
     BeyondBox2dRange = 204,
     /// Capturing a live world: a value was written as the nearest the format can hold,
     /// not exactly (the message says what and by how much).
@@ -190,7 +229,7 @@ impl Code {
         Code::LossyJoint,
     ];
 
-    /// The spec's kebab-case name of the code.
+    /// The kebab-case name of the code (`"id-out-of-range"`).
     pub fn name(self) -> &'static str {
         self.c_name().to_str().expect("code names are ASCII")
     }
@@ -290,6 +329,7 @@ pub enum Severity {
 }
 
 impl Severity {
+    /// `"warning"` or `"error"`.
     pub const fn name(self) -> &'static str {
         match self {
             Severity::Warning => "warning",
@@ -317,14 +357,17 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// The code, when the number is one box2scene knows.
     pub fn code(&self) -> Option<Code> {
         Code::from_u32(self.code)
     }
 
+    /// The severity, when the number is one box2scene knows.
     pub fn severity(&self) -> Option<Severity> {
         [Severity::Warning, Severity::Error].into_iter().find(|&s| s as u32 == self.severity)
     }
 
+    /// Where in the file the diagnostic points.
     pub fn position(&self) -> Position {
         Position { line: self.line, column: self.column, byte_offset: self.byte_offset }
     }
@@ -337,14 +380,18 @@ pub struct Position {
     pub line: u32,
     /// 1-based, in characters; 0 when unknown.
     pub column: u32,
+    /// Bytes from the start of the input; 0 when unknown.
     pub byte_offset: u64,
 }
 
 /// Why a load failed: the code, where, and a message a level designer understands.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
+    /// What went wrong.
     pub code: Code,
+    /// Where in the input; zero when the error has no place in it (an I/O error).
     pub position: Position,
+    /// What went wrong, in words, naming the element, value or limit.
     pub message: String,
 }
 

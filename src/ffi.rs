@@ -1,7 +1,7 @@
 //! The C API. Every export is here, in header order, each inside one panic boundary
-//! ([`guard`]); this is the only module with `unsafe`.
+//! (`guard`); this is the only module with `unsafe`.
 //!
-//! Conventions (also in the README): fallible functions return a `b2s_code` (0 = OK) and
+//! Conventions (also in `docs/api.md`): fallible functions return a `b2s_code` (0 = OK) and
 //! fill an optional caller-owned `b2s_error`; pointers are checked for NULL; enum values
 //! arrive as integers and are converted; a scene is immutable, owned by the library, and
 //! freed by `b2s_scene_free`.
@@ -22,7 +22,24 @@ unsafe impl Send for Str {}
 // SAFETY: as above.
 unsafe impl Sync for Str {}
 
-/// Bytes in `b2s_error::message`, the terminating NUL included.
+// The kind parameters below name their enums in the C prototypes (cbindgen renames these
+// aliases to the enums' typedefs, which it emits already, and so does not emit them), yet
+// arrive as plain integers: a value from C is converted, never trusted to be a variant.
+
+/// A `b2s_shape_kind` as C passes it: any integer, checked before use.
+///
+/// cbindgen:no-export
+pub type RawShapeKind = u32;
+/// A `b2s_body_kind` as C passes it: any integer, checked before use.
+///
+/// cbindgen:no-export
+pub type RawBodyKind = u32;
+/// A `b2s_joint_kind` as C passes it: any integer, checked before use.
+///
+/// cbindgen:no-export
+pub type RawJointKind = u32;
+
+/// Bytes in the `message` of a `b2s_error`, the terminating NUL included.
 pub const ERROR_MESSAGE_SIZE: usize = 256;
 
 /// Why a call failed. Owned by the caller; filled by the library when a call fails.
@@ -45,31 +62,44 @@ pub struct ErrorInfo {
 /// scene is freed.
 #[repr(C)]
 pub struct SceneView {
+    /// The `shape_count` shapes.
     pub shapes: *const Shape,
+    /// The `fixture_count` fixtures.
     pub fixtures: *const Fixture,
+    /// The `body_count` bodies.
     pub bodies: *const Body,
+    /// The `joint_count` joints.
     pub joints: *const Joint,
-    /// The vertex pool that `b2s_shape::vertices` ranges index.
+    /// The vertex pool that the `vertices` ranges of shapes index.
     pub vertices: *const Vec2,
-    /// The fixture ID pool that `b2s_body::fixtures` ranges index.
+    /// The fixture ID pool that the `fixtures` ranges of bodies index.
     pub fixture_ids: *const u32,
     /// The user data that `user_data` indices name.
     pub user_data: *const UserData,
     /// The load's warnings (`B2S_SEVERITY_WARNING`).
     pub diagnostics: *const Diagnostic,
+    /// Number of items in `shapes`.
     pub shape_count: u32,
+    /// Number of items in `fixtures`.
     pub fixture_count: u32,
+    /// Number of items in `bodies`.
     pub body_count: u32,
+    /// Number of items in `joints`.
     pub joint_count: u32,
+    /// Number of items in `vertices`.
     pub vertex_count: u32,
+    /// Number of items in `fixture_ids`.
     pub fixture_id_count: u32,
+    /// Number of items in `user_data`.
     pub user_data_count: u32,
+    /// Number of items in `diagnostics`.
     pub diagnostic_count: u32,
     /// The file's `Version`; 0 for an unversioned (legacy) file.
     pub version: u32,
     /// The file's `Gravity` (m/s²), meaningful only when `gravity_given`: there is no
     /// default gravity, the host decides.
     pub gravity: Vec2,
+    /// The file gave a `Gravity`.
     pub gravity_given: bool,
 }
 
@@ -206,7 +236,7 @@ unsafe fn scene_into(
     })
 }
 
-/// The load options with every field at its default (the limits of spec section 9,
+/// The load options with every field at its default (the limits of `docs/format.md`,
 /// strict off, threads chosen by box2scene). Start from this and change what you need.
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_load_options_default() -> LoadOptions {
@@ -702,14 +732,14 @@ pub unsafe extern "C" fn b2s_builder_finish(
     }
 }
 
-/// Writes into `*out` a shape of `kind` (a `b2s_shape_kind`) with every field at its
-/// default. Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT`
-/// for a NULL `out`.
+/// Writes into `*out` a shape of `kind` with every field at its default. Returns
+/// `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT` for a NULL
+/// `out`.
 ///
 /// # Safety
 /// `out` is NULL or writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn b2s_shape_default(kind: u32, out: *mut Shape) -> Code {
+pub unsafe extern "C" fn b2s_shape_default(kind: RawShapeKind, out: *mut Shape) -> Code {
     // SAFETY: by the caller's contract.
     unsafe { write_default(out, ShapeKind::try_from(kind).ok().map(Shape::new)) }
 }
@@ -724,23 +754,24 @@ pub unsafe extern "C" fn b2s_fixture_default(out: *mut Fixture) -> Code {
     unsafe { write_default(out, Some(Fixture::default())) }
 }
 
-/// Writes into `*out` a body of `kind` (a `b2s_body_kind`) with every field at its default.
+/// Writes into `*out` a body of `kind` with every field at its default. Returns
+/// `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
 ///
 /// # Safety
 /// `out` is NULL or writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn b2s_body_default(kind: u32, out: *mut Body) -> Code {
+pub unsafe extern "C" fn b2s_body_default(kind: RawBodyKind, out: *mut Body) -> Code {
     // SAFETY: by the caller's contract.
     unsafe { write_default(out, BodyKind::try_from(kind).ok().map(Body::new)) }
 }
 
-/// Writes into `*out` a joint of `kind` (a `b2s_joint_kind`) with every field at the
-/// spec's default for that kind.
+/// Writes into `*out` a joint of `kind` with every field at the default of that kind
+/// (`docs/format.md` lists them). Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
 ///
 /// # Safety
 /// `out` is NULL or writable.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn b2s_joint_default(kind: u32, out: *mut Joint) -> Code {
+pub unsafe extern "C" fn b2s_joint_default(kind: RawJointKind, out: *mut Joint) -> Code {
     // SAFETY: by the caller's contract.
     unsafe { write_default(out, JointKind::try_from(kind).ok().map(Joint::new)) }
 }
@@ -775,8 +806,8 @@ pub extern "C" fn b2s_version() -> *const c_char {
     VERSION.as_ptr()
 }
 
-/// The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"`. Static
-/// storage.
+/// The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"` for a number
+/// that is no code (so it takes any integer, not only a `b2s_code`). Static storage.
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_code_name(code: u32) -> *const c_char {
     guard(

@@ -9,8 +9,12 @@
 //! # Ok::<(), box2scene::Error>(())
 //! ```
 //!
-//! The format is specified in the project's `spec/box2scene-format.md`; the C API
-//! conventions are in the README.
+//! The format (every element and its default, every error and warning code, the mapping
+//! onto Box2D) is described in the repository's `docs/format.md`; the C API's conventions
+//! in `docs/api.md`. The records of [`scene`] are the C API's structs, and [`ffi`] holds
+//! every function of the C header.
+
+#![warn(missing_docs)]
 
 mod builder;
 mod dump;
@@ -35,7 +39,7 @@ pub use scene::{
 };
 pub use write::{WriteOptions, write};
 
-/// How to load: strictness and the limits of spec section 9. Exceeding a limit is error
+/// How to load: strictness and the limits of the input. Exceeding a limit is error
 /// `limit-exceeded`, whose message names the limit.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -86,7 +90,7 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
     parse::load_path(path.as_ref(), options)
 }
 
-/// Writes `scene` to a file (see [`write`]), replacing it atomically: the text goes to a
+/// Writes `scene` to a file (see [`write()`]), replacing it atomically: the text goes to a
 /// new file beside it, flushed to disk, then renamed over it, so a failed write (a full
 /// disk, a scene that cannot be written) leaves the old file as it was.
 pub fn write_path(
@@ -103,7 +107,7 @@ pub fn write_path(
 }
 
 impl Scene {
-    /// The scene as Box2Scene XML (see [`write`]).
+    /// The scene as Box2Scene XML (see [`write()`]).
     pub fn to_xml(&self, options: &WriteOptions) -> Result<String, Error> {
         write(self, options)
     }

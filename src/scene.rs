@@ -6,6 +6,9 @@
 //! length data are [`Range`]s into the scene's pools; strings are [`Str`] pointers into the
 //! scene's string pool. Enumerations are stored as `u32` so that a value written by C is
 //! never an invalid Rust enum; the typed enums below name the values.
+//!
+//! The doc comments of the exported items are copied into the C header, so they speak C:
+//! `NULL`, `uint32_t`, the `b2s_*` names.
 #![forbid(unsafe_code)]
 
 use std::ffi::c_char;
@@ -19,13 +22,20 @@ pub const NONE: u32 = u32::MAX;
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Vec2 {
+    /// The first component.
     pub x: f32,
+    /// The second component.
     pub y: f32,
 }
 
 impl Vec2 {
+    /// The zero vector. Rust only: C initialises with `{0}`, and the macro cbindgen would
+    /// emit is a compound literal, which C++ does not have.
+    ///
+    /// cbindgen:ignore
     pub const ZERO: Vec2 = Vec2 { x: 0.0, y: 0.0 };
 
+    /// The vector (x, y).
     pub const fn new(x: f32, y: f32) -> Vec2 {
         Vec2 { x, y }
     }
@@ -36,7 +46,9 @@ impl Vec2 {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Range {
+    /// Index of the first item in the pool.
     pub first: u32,
+    /// Number of items.
     pub count: u32,
 }
 
@@ -67,8 +79,10 @@ impl Range {
 pub struct Str(pub(crate) *const c_char);
 
 impl Str {
+    /// No string.
     pub const NULL: Str = Str(std::ptr::null());
 
+    /// Whether there is no string.
     pub fn is_null(self) -> bool {
         self.0.is_null()
     }
@@ -105,7 +119,7 @@ impl Str {
     }
 }
 
-/// What a shape is. Stored as `u32` in [`Shape::kind`].
+/// What a shape is: the values of the `kind` field of `b2s_shape`.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ShapeKind {
@@ -119,28 +133,39 @@ pub enum ShapeKind {
     Chain = 3,
 }
 
-/// What a body is. Stored as `u32` in [`Body::kind`]; the values equal Box2D's `b2BodyType`.
+/// What a body is: the values of the `kind` field of `b2s_body`, equal to Box2D's
+/// `b2BodyType`.
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum BodyKind {
+    /// Does not move (zero mass); collides with dynamic bodies.
     Static = 0,
+    /// Moves by its velocity alone, unaffected by forces.
     Kinematic = 1,
+    /// Moved by forces, contacts and joints.
     Dynamic = 2,
 }
 
-/// What a joint is. Stored as `u32` in [`Joint::kind`]. The values are box2scene's own
-/// (not Box2D's `b2JointType`).
+/// What a joint is: the values of the `kind` field of `b2s_joint`. They are box2scene's
+/// own (not Box2D's `b2JointType`).
 #[repr(u32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum JointKind {
+    /// A hinge: the bodies turn about a shared anchor.
     Revolute = 0,
+    /// A slider: the bodies move along an axis without turning.
     Prismatic = 1,
+    /// A rod or a spring between two anchors.
     Distance = 2,
+    /// Two bodies hung from two ground anchors by one rope.
     Pulley = 3,
     /// Box2D 2.1's line joint: a wheel joint without a spring.
     Line = 4,
+    /// Glues two bodies together, rigidly or (Version 2) through an angular spring.
     Weld = 5,
+    /// Top-down friction: resists relative motion up to a force and a torque.
     Friction = 6,
+    /// Couples two revolute or prismatic joints by a ratio.
     Gear = 7,
     /// Version 2.
     Wheel = 8,
@@ -231,6 +256,7 @@ impl Shape {
         }
     }
 
+    /// The kind, when `kind` holds one box2scene knows.
     pub fn kind(&self) -> Option<ShapeKind> {
         ShapeKind::try_from(self.kind).ok()
     }
@@ -268,10 +294,11 @@ pub struct Fixture {
     pub friction: f32,
     /// Default 0; never negative.
     pub restitution: f32,
+    /// The `FilterData` element.
     pub filter: Filter,
     /// Default false.
     pub is_sensor: bool,
-    /// Index into the scene's user data, [`NONE`] when absent.
+    /// Index into the scene's user data, `B2S_NONE` when absent.
     pub user_data: u32,
 }
 
@@ -302,8 +329,11 @@ pub struct MassData {
     /// Rotational inertia about the body origin (kg m²), meaningful when `inertia_given`;
     /// never negative.
     pub inertia: f32,
+    /// The file gave `Mass`.
     pub mass_given: bool,
+    /// The file gave `Center`.
     pub center_given: bool,
+    /// The file gave `Inertia`.
     pub inertia_given: bool,
 }
 
@@ -331,11 +361,12 @@ pub struct Body {
     pub gravity_scale: f32,
     /// Box2D 2.1 only; kept, but no Box2D 2.4 field takes it. Default 1.
     pub inertia_scale: f32,
+    /// The `MassData` element; with nothing given when absent.
     pub mass_data: MassData,
     /// The body's fixtures: a range of the scene's fixture ID pool, each an index into the
     /// scene's fixtures.
     pub fixtures: Range,
-    /// Index into the scene's user data, [`NONE`] when absent.
+    /// Index into the scene's user data, `B2S_NONE` when absent.
     pub user_data: u32,
     /// `Active` (Box2D 2.4's `enabled`). Default true.
     pub active: bool,
@@ -381,6 +412,7 @@ impl Body {
         }
     }
 
+    /// The kind, when `kind` holds one box2scene knows.
     pub fn kind(&self) -> Option<BodyKind> {
         BodyKind::try_from(self.kind).ok()
     }
@@ -400,11 +432,11 @@ pub struct Joint {
     pub body_a: u32,
     /// Index into the scene's bodies.
     pub body_b: u32,
-    /// Index into the scene's user data, [`NONE`] when absent.
+    /// Index into the scene's user data, `B2S_NONE` when absent.
     pub user_data: u32,
-    /// Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+    /// Gear: index into the scene's joints (a revolute or prismatic joint); else `B2S_NONE`.
     pub joint_a: u32,
-    /// Gear: index into the scene's joints (a revolute or prismatic joint); else [`NONE`].
+    /// Gear: index into the scene's joints (a revolute or prismatic joint); else `B2S_NONE`.
     pub joint_b: u32,
     /// All kinds except Gear and Motor (m). Default (0, 0); Pulley (-1, 0); Rope (-1, 0).
     pub local_anchor_a: Vec2,
@@ -466,7 +498,7 @@ pub struct Joint {
 }
 
 impl Joint {
-    /// A joint of `kind` with every field at the spec's default for that kind.
+    /// A joint of `kind` with every field at the format's default for that kind.
     pub const fn new(kind: JointKind) -> Joint {
         let mut joint = Joint {
             name: Str::NULL,
@@ -538,6 +570,7 @@ impl Joint {
         joint
     }
 
+    /// The kind, when `kind` holds one box2scene knows.
     pub fn kind(&self) -> Option<JointKind> {
         JointKind::try_from(self.kind).ok()
     }
@@ -620,8 +653,7 @@ pub(crate) enum Place {
 }
 
 /// Text a loaded file held that no record has: a comment, an unknown element or attribute,
-/// a Farseer-only joint. Only the writer reads it (spec section 11, "Nothing is
-/// dropped"); the C view has none of it. While a file is read, `T` says where the text
+/// a Farseer-only joint. Only the writer reads it (`docs/format.md`, "Writing"); the C view has none of it. While a file is read, `T` says where the text
 /// is (see [`KeptText`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Kept<T = Str> {
@@ -829,15 +861,19 @@ impl Scene {
     pub fn gravity(&self) -> Option<Vec2> {
         self.gravity
     }
+    /// The shapes, indexed by the fixtures' `shape`.
     pub fn shapes(&self) -> &[Shape] {
         &self.shapes
     }
+    /// The fixtures, indexed by the fixture ID pool.
     pub fn fixtures(&self) -> &[Fixture] {
         &self.fixtures
     }
+    /// The bodies, indexed by the joints' `body_a` and `body_b`.
     pub fn bodies(&self) -> &[Body] {
         &self.bodies
     }
+    /// The joints, indexed by the gears' `joint_a` and `joint_b`.
     pub fn joints(&self) -> &[Joint] {
         &self.joints
     }
@@ -849,6 +885,7 @@ impl Scene {
     pub fn fixture_id_pool(&self) -> &[u32] {
         &self.fixture_ids
     }
+    /// The user data, indexed by the `user_data` of fixtures, bodies and joints.
     pub fn user_data(&self) -> &[UserData] {
         &self.user_data
     }

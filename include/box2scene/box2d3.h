@@ -20,8 +20,8 @@
  *
  * The adapter never prints, never aborts and never hands Box2D v3 a value that trips one of
  * its assertions or turns into NaN: what it cannot create it skips and reports. Call it
- * outside b2World_Step (v3 refuses to change a locked world). The README's "Box2D v3"
- * section gives the mapping.
+ * outside b2World_Step (v3 refuses to change a locked world). docs/format.md tables the
+ * mapping; docs/box2d.md shows its use.
  */
 #ifndef BOX2SCENE_BOX2D3_H
 #define BOX2SCENE_BOX2D3_H
@@ -81,7 +81,7 @@ typedef struct b2s_box2d3_built {
  *  created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it. v3 asserts that
  *  every shape's bounding box stays within +-1e5 m (B2_HUGE), so lengths are bounded ten
  *  times tighter than for Box2D 2.4, leaving room for motion; the other bounds are 2.4's
- *  (the README explains them). Linear speeds are bounded by the world's maximum linear
+ *  (docs/box2d.md lists them). Linear speeds are bounded by the world's maximum linear
  *  speed as well, which v3 would otherwise clamp silently. */
 #define B2S_BOX2D3_MAX_LENGTH 1e4f         /**< m: positions, vertices, anchors, lengths */
 #define B2S_BOX2D3_MAX_ANGLE 1e5f          /**< rad */

@@ -181,16 +181,23 @@ check_subdirectory() {
   expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
 }
 
-# The README shows these files as they are.
+# The README and docs/install.md show these files as they are.
 check_readme() {
-  local readme file
+  local readme install file
   readme=$(cat "$BOX2SCENE_SOURCE_DIR/README.md")
-  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt; do
+  install=$(cat "$BOX2SCENE_SOURCE_DIR/docs/install.md")
+  for file in c/main.c c/CMakeLists.txt; do
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
-  [[ $readme == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)'* ]] ||
-    fail "README.md does not show the pkg-config command line"
-  echo "README.md shows the consumers as they are"
+  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt; do
+    [[ $install == *"$(cat "$here/$file")"* ]] ||
+      fail "docs/install.md does not show $file as it is"
+  done
+  for text in "$readme" "$install"; do
+    [[ $text == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)'* ]] ||
+      fail "README.md or docs/install.md does not show the pkg-config command line"
+  done
+  echo "README.md and docs/install.md show the consumers as they are"
 }
 
 [ $# -eq 1 ] && declare -F "check_$1" >/dev/null || fail "usage: $0 CHECK"

@@ -867,7 +867,7 @@ static b2BodyId b2s3_created_body(const b2s3_builder* b, uint32_t index) {
 
 /* Box2D's joint solvers work with 1/m + r^2/I of each body at the anchor (r from its centre
  * of mass) and invert 2x2 matrices of such terms: past the working range, their products
- * overflow or the determinant loses every bit (see the README). */
+ * overflow or the determinant loses every bit (see docs/box2d.md). */
 static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const char* field,
                               uint32_t body, b2Vec2 anchor, float lever) {
     if (b2Body_GetType(b->built->bodies[body]) != b2_dynamicBody) {
