@@ -94,6 +94,7 @@ impl<'a> Parser<'a> {
         loop {
             match self.next_node()? {
                 Node::Open(child) => {
+                    self.check_attributes(&child)?;
                     let inside = match path.as_slice() {
                         [] if child.is("type") => {
                             form.types += 1;
