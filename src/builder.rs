@@ -6,6 +6,9 @@
 //! back unchanged: names are trimmed of XML white space (as the loader trims them), fields
 //! that the format does not have for an object's kind take that kind's defaults, and
 //! UserData gets the raw XML and the type name and value the loader would find in it.
+//! What a written file could not hold, or a load with the default options would refuse
+//! from it, is refused at the call: a character XML does not allow, a name longer than a
+//! load reads in one text, UserData that is not well-formed or nests too deep.
 #![forbid(unsafe_code)]
 
 use crate::LoadOptions;
@@ -15,7 +18,7 @@ use crate::scene::{Body, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBui
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
 use crate::validate::{self, Geometry};
-use crate::write::{escape, needs_version_2};
+use crate::write::{escape, needs_version_2, writable_text};
 
 /// A scene under construction. Objects refer to objects added before them.
 #[derive(Default)]
@@ -74,6 +77,11 @@ impl Builder {
         name.map_or(Str::NULL, |n| self.scene.add_str(trim_xml(n)))
     }
 
+    /// Refuses a name that a written file could not hold or read back.
+    fn check_name(name: Option<&str>) -> Result<(), (Code, String)> {
+        name.map_or(Ok(()), |n| writable_text("its Name", trim_xml(n)))
+    }
+
     fn user_data_reference(&self, index: u32) -> Result<(), (Code, String)> {
         match index {
             NONE => Ok(()),
@@ -94,7 +102,8 @@ impl Builder {
     }
 
     /// Adds user data and returns its index. `raw` is XML content, kept verbatim; without
-    /// it, a type name and value are written in the editor's form.
+    /// it, a type name and value are written in the editor's form. Either is refused
+    /// unless the loader, with its default options, would read it back from a written file.
     pub fn add_user_data(
         &mut self,
         raw: Option<&str>,
@@ -134,8 +143,9 @@ impl Builder {
         vertices: &[Vec2],
     ) -> Result<u32, Error> {
         let index = self.scene.shapes.len();
-        let canonical =
-            self.check_shape(shape, vertices).map_err(|e| refused("shape", index, e))?;
+        let canonical = Self::check_name(name)
+            .and_then(|()| self.check_shape(shape, vertices))
+            .map_err(|e| refused("shape", index, e))?;
         let first = self.scene.vertices.len();
         self.scene.vertices.extend_from_slice(vertices);
         let vertices = Range::between(first, self.scene.vertices.len());
@@ -212,7 +222,9 @@ impl Builder {
     /// Adds a fixture on an already added shape and returns its index.
     pub fn add_fixture(&mut self, fixture: &Fixture, name: Option<&str>) -> Result<u32, Error> {
         let index = self.scene.fixtures.len();
-        self.check_fixture(fixture).map_err(|e| refused("fixture", index, e))?;
+        Self::check_name(name)
+            .and_then(|()| self.check_fixture(fixture))
+            .map_err(|e| refused("fixture", index, e))?;
         let name = self.name(name);
         self.scene.fixtures.push(Fixture { name, ..*fixture });
         Ok(index as u32)
@@ -237,7 +249,9 @@ impl Builder {
         fixtures: &[u32],
     ) -> Result<u32, Error> {
         let index = self.scene.bodies.len();
-        let canonical = self.check_body(body, fixtures).map_err(|e| refused("body", index, e))?;
+        let canonical = Self::check_name(name)
+            .and_then(|()| self.check_body(body, fixtures))
+            .map_err(|e| refused("body", index, e))?;
         let first = self.scene.fixture_ids.len();
         self.scene.fixture_ids.extend_from_slice(fixtures);
         let fixtures = Range::between(first, self.scene.fixture_ids.len());
@@ -297,7 +311,9 @@ impl Builder {
     /// returns its index. Farseer-only (unsupported) joints cannot be built.
     pub fn add_joint(&mut self, joint: &Joint, name: Option<&str>) -> Result<u32, Error> {
         let index = self.scene.joints.len();
-        let canonical = self.check_joint(joint).map_err(|e| refused("joint", index, e))?;
+        let canonical = Self::check_name(name)
+            .and_then(|()| self.check_joint(joint))
+            .map_err(|e| refused("joint", index, e))?;
         let name = self.name(name);
         self.scene.joints.push(Joint { name, ..canonical });
         Ok(index as u32)

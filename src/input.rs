@@ -344,12 +344,13 @@ fn cut_at_non_char(
     (text, Some(stop))
 }
 
-/// The offset of the first character of `text` outside XML's Char production. Blocks of
+/// The offset of the first character of `text` outside XML's Char production (the writer
+/// and the builder check names with it too). Blocks of
 /// 64 bytes are screened by a loop the compiler vectorises for a suspect byte: a control
 /// character other than tab, line feed and carriage return, or any byte past ASCII (0xEF
 /// begins U+FFFE and U+FFFF). Only a block with one is looked at byte by byte; the usual
 /// file, with no control characters and little text past ASCII, has few.
-fn first_non_char(text: &[u8]) -> Option<usize> {
+pub(crate) fn first_non_char(text: &[u8]) -> Option<usize> {
     let non_char = |&i: &usize| match text[i] {
         0xEF => matches!(text[i + 1..], [0xBF, 0xBE | 0xBF, ..]),
         b => b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r'),

@@ -4,7 +4,10 @@
 
 use std::fmt::Write as _;
 
+use crate::LoadOptions;
 use crate::error::{Code, Error, Position};
+use crate::input::first_non_char;
+use crate::parse::user_data_fragment;
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE, Object};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
@@ -71,6 +74,79 @@ fn unwritable_joint(scene: &Scene) -> Result<(), Error> {
     })
 }
 
+/// The error for the first name or UserData that a written file could not hold, or that
+/// could not be read back from it with the default load options (a scene loaded with
+/// larger limits, or built with a host's records, may have one).
+fn unwritable_texts(scene: &Scene) -> Result<(), Error> {
+    let unwritable = |object: Object, (code, message): (Code, String)| Error {
+        code,
+        position: Position::default(),
+        message: format!("{object}: {message}, so the scene cannot be written"),
+    };
+    let index = |i: usize| i as u32;
+    let shapes = scene.shapes().iter().enumerate();
+    let shapes = shapes.map(|(i, s)| (Object::Shape(index(i)), s.name, NONE));
+    let fixtures = scene.fixtures().iter().enumerate();
+    let fixtures = fixtures.map(|(i, f)| (Object::Fixture(index(i)), f.name, f.user_data));
+    let bodies = scene.bodies().iter().enumerate();
+    let bodies = bodies.map(|(i, b)| (Object::Body(index(i)), b.name, b.user_data));
+    let joints = scene.joints().iter().enumerate();
+    let joints = joints.map(|(i, j)| (Object::Joint(index(i)), j.name, j.user_data));
+    for (object, name, user_data) in shapes.chain(fixtures).chain(bodies).chain(joints) {
+        if let Some(name) = scene.text(name) {
+            writable_text("its Name", name).map_err(|e| unwritable(object, e))?;
+        }
+        if let Some(raw) = scene.user_data_at(user_data).and_then(|u| scene.text(u.raw)) {
+            writable_user_data(raw).map_err(|(code, why)| {
+                unwritable(object, (code, format!("its UserData: {why}")))
+            })?;
+        }
+    }
+    Ok(())
+}
+
+/// Whether `text`, written escaped as the text of `field`, reads back: it holds only
+/// characters XML allows, and no more bytes than the loader reads in one text by default.
+pub(crate) fn writable_text(field: &str, text: &str) -> Result<(), (Code, String)> {
+    if let Some(at) = first_non_char(text.as_bytes()) {
+        let c = text[at..].chars().next().unwrap_or_default();
+        let c = u32::from(c);
+        return Err((
+            Code::MalformedXml,
+            format!("{field} holds the character U+{c:04X}, which XML does not allow"),
+        ));
+    }
+    let most = LoadOptions::default().max_text_bytes;
+    let mut len = 0;
+    escaped(text, |piece| len += piece.len());
+    if len as u64 > most {
+        return Err((
+            Code::LimitExceeded,
+            format!(
+                "{field} is {len} bytes long written, more than a load reads in one text by \
+                 default (max_text_bytes = {most})"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Whether the UserData `raw`, written verbatim, reads back with the default load options.
+/// Most is plainly short and shallow; the rest is read as the loader would read it.
+fn writable_user_data(raw: &str) -> Result<(), (Code, String)> {
+    let default = LoadOptions::default();
+    // A written UserData is the fourth level of its file, and each `<` opens one more at
+    // most.
+    let tags = memchr::memchr_iter(b'<', raw.as_bytes()).count() as u64;
+    let plain = first_non_char(raw.as_bytes()).is_none()
+        && raw.len() as u64 <= default.max_text_bytes
+        && 4 + tags <= u64::from(default.max_depth);
+    match plain {
+        true => Ok(()),
+        false => user_data_fragment(raw).map(|_| ()),
+    }
+}
+
 /// The error for the first object whose start tag would carry one attribute name twice
 /// (names compare as the loader compares them, ignoring case): two unknown attributes it
 /// was given from different places of the file (a Version 3 body gets those of its
@@ -124,6 +200,7 @@ impl<'s> Text<'s> {
     fn new(scene: &'s Scene, options: &WriteOptions) -> Result<Text<'s>, Error> {
         unwritable_joint(scene)?;
         clashing_attributes(scene)?;
+        unwritable_texts(scene)?;
         let version = if needs_version_2(scene) { 2 } else { 1 };
         let mut text = Text { scene, all: options.all_fields, version, size: 0 };
         text.size =

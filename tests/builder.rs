@@ -282,3 +282,107 @@ fn an_empty_builder_makes_an_empty_scene() {
     let written = write(&scene, &WriteOptions::default()).unwrap();
     assert!(written.contains("<Shapes />") && written.contains("<Joints />"), "{written}");
 }
+
+/// `text` is well-formed XML to an independent parser, and box2scene loads it back with
+/// the default options.
+fn assert_readable(text: &str) -> Scene {
+    if let Err(e) = roxmltree::Document::parse(text) {
+        panic!("an XML parser rejects the written file: {e}\n{text}");
+    }
+    load(text.as_bytes(), &LoadOptions::default()).unwrap_or_else(|e| panic!("{e}\n{text}"))
+}
+
+/// Names a file could not hold (characters outside XML's) or that a load would refuse (more
+/// than max_text_bytes, once escaped) are refused at the call, naming the object and the
+/// field, for every kind of object; nothing refused is added.
+#[test]
+fn unwritable_names_are_refused() {
+    let long = "x".repeat(LoadOptions::default().max_text_bytes as usize + 1);
+    // Short enough as given, too long once each `&` is written `&amp;`.
+    let escaped = "&".repeat(LoadOptions::default().max_text_bytes as usize / 4);
+    let cases = [
+        ("a\u{1}b", Code::MalformedXml, "its Name holds the character U+0001"),
+        ("\u{1F}", Code::MalformedXml, "its Name holds the character U+001F"),
+        ("a\u{FFFE}", Code::MalformedXml, "its Name holds the character U+FFFE"),
+        ("\u{FFFF}b", Code::MalformedXml, "its Name holds the character U+FFFF"),
+        (long.as_str(), Code::LimitExceeded, "its Name is 1048577 bytes long written"),
+        (escaped.as_str(), Code::LimitExceeded, "its Name is 1310720 bytes long written"),
+    ];
+    for (name, code, why) in cases {
+        let mut b = started();
+        let m = assert_refused(b.add_shape(&circle(1.0), Some(name), &[]), code, "shape 1: ");
+        assert!(m.starts_with(&format!("shape 1: {why}")), "{m}");
+        let fixture = Fixture { shape: 0, ..Fixture::default() };
+        assert_refused(b.add_fixture(&fixture, Some(name)), code, "fixture 1: ");
+        let body = Body::new(BodyKind::Static);
+        assert_refused(b.add_body(&body, Some(name), &[]), code, "body 2: ");
+        assert_refused(b.add_joint(&joint(JointKind::Weld), Some(name)), code, "joint 0: ");
+        let scene = b.finish();
+        let counts = [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len()];
+        assert_eq!((counts, scene.joints().len()), ([1, 1, 2], 0));
+    }
+}
+
+/// What XML does allow in a name is written so that a parser and the loader read it back.
+#[test]
+fn names_with_every_allowed_character_are_written_readably() {
+    let name = "tab\there, line\nend, cr\rhere, \u{7F}\u{85}\u{FFFD}\u{10FFFF} <&>\"' ]]> -- end";
+    let mut b = started();
+    b.add_shape(&circle(1.0), Some(name), &[]).unwrap();
+    b.add_body(&Body::new(BodyKind::Static), Some(name), &[]).unwrap();
+    let scene = b.finish();
+    let written = write(&scene, &WriteOptions::default()).unwrap();
+    let again = assert_readable(&written);
+    assert_eq!(again.text(again.shapes()[1].name), Some(name));
+    assert_eq!(again.text(again.bodies()[2].name), Some(name));
+    let at_limit = "n".repeat(LoadOptions::default().max_text_bytes as usize);
+    let mut b = started();
+    b.add_shape(&circle(1.0), Some(&at_limit), &[]).unwrap();
+    assert_readable(&write(&b.finish(), &WriteOptions::default()).unwrap());
+}
+
+/// UserData that a written file could not hold as XML, or that a load with the default
+/// options would refuse there, is refused at the call, naming it.
+#[test]
+fn unwritable_user_data_is_refused() {
+    let long = format!("<Value>{}</Value>", "v".repeat(1 << 20 | 1));
+    let deep = |levels: usize| "<a>".repeat(levels) + &"</a>".repeat(levels);
+    let cases = [
+        ("<!-- a -- b -->", Code::MalformedXml),
+        ("<!-- a --->", Code::MalformedXml),
+        ("<Value>a ]]> b</Value>", Code::MalformedXml),
+        ("a ]]> b", Code::MalformedXml),
+        ("<Value at=\"a<b\"/>", Code::MalformedXml),
+        ("<?xml version=\"1.0\"?><Type>x</Type>", Code::MalformedXml),
+        ("<Type>a\u{1}</Type>", Code::MalformedXml),
+        ("<Type>\u{FFFF}</Type>", Code::MalformedXml),
+        ("<!DOCTYPE x>", Code::DoctypeForbidden),
+        (long.as_str(), Code::LimitExceeded),
+        // A written UserData is the fourth level of its file, which may have 64.
+        (&deep(61), Code::LimitExceeded),
+    ];
+    for (raw, code) in cases {
+        let mut b = started();
+        let added = b.add_user_data(Some(raw), None, None);
+        assert!(added.is_err(), "{} is added", &raw[..raw.len().min(40)]);
+        let m = assert_refused(added, code, "user data 0: ");
+        assert!(m.contains("UserData"), "{m}");
+        assert!(b.finish().user_data().is_empty());
+    }
+    let mut b = started();
+    assert_refused(b.add_user_data(None, Some("T\u{8}"), None), Code::MalformedXml, "user data 0");
+    assert_refused(b.add_user_data(None, Some("T"), Some("\u{FFFE}")), Code::MalformedXml, "user");
+
+    let deepest = b.add_user_data(Some(&deep(60)), None, None).unwrap();
+    let odd = b.add_user_data(
+        Some("<![CDATA[ ]] <b> ]]><!-- - --><v a=\"&lt;\" A=\"\">]]&gt;</v>"),
+        None,
+        None,
+    );
+    b.add_body(&Body { user_data: deepest, ..Body::new(BodyKind::Static) }, None, &[]).unwrap();
+    b.add_body(&Body { user_data: odd.unwrap(), ..Body::new(BodyKind::Static) }, None, &[])
+        .unwrap();
+    let scene = b.finish();
+    let again = assert_readable(&write(&scene, &WriteOptions::default()).unwrap());
+    assert_eq!(content(&again), content(&scene));
+}

@@ -594,3 +594,25 @@ fn an_xml_declaration_not_at_the_start_is_malformed() {
     let named_like_it = SCENE.replace("<Shapes/>", "<?xml-stylesheet href=\"a\"?><Shapes/>");
     load_bytes(named_like_it.as_bytes()).expect("other processing instructions are skipped");
 }
+
+/// `<` may not appear in an attribute value, nor `]]>` in text outside CDATA; and the
+/// attributes of what is kept as written (UserData, ignored elements) must be well-formed
+/// too, since the writer writes them back.
+#[test]
+fn markup_xml_forbids_in_values_is_malformed() {
+    let attribute = "<World Version=\"1\">\n<Shapes><Shape Type=\"Circ<le\"/>";
+    expect_in_both(attribute.as_bytes(), "lt-attr", Code::MalformedXml, 2, 26);
+    let text = "<World Version=\"1\">\n<UserData><Type>a]]>b</Type>";
+    expect_in_both(text.as_bytes(), "cdata-end", Code::MalformedXml, 2, 18);
+    let in_user_data = "<World Version=\"1\"><UserData>\n<Value x=\"<\"/>";
+    expect_in_both(in_user_data.as_bytes(), "lt-user-data", Code::MalformedXml, 2, 11);
+    let unquoted = "<World Version=\"1\"><Fixtures><Fixture><UserData>\n<Value x=1/>";
+    expect_in_both(unquoted.as_bytes(), "unquoted", Code::MalformedXml, 2, 1);
+    let twice = "<World Version=\"1\"><Shapes>\n<Shape Type=\"Circle\"><Oddity a=\"1\" a=\"2\"/>";
+    expect_in_both(twice.as_bytes(), "ignored-twice", Code::DuplicateAttribute, 2, 36);
+    let fine = SCENE.replace(
+        "<Shapes/>",
+        "<UserData><Value a=\"1\" A=\"&lt;\"><![CDATA[]]>]]]]&gt;</Value></UserData><Shapes/>",
+    );
+    load_bytes(fine.as_bytes()).expect("CDATA ends, escaped markup and names differing in case");
+}

@@ -1,6 +1,7 @@
 //! The writer's contract: `load(write(s))` is `s` in every field, bit for bit, in both
 //! modes, and `write(load(write(s)))` is `write(s)` byte for byte; for every test scene,
-//! every editor file, and 10 000 generated scenes.
+//! every editor file, and 10 000 generated scenes. What it writes is well-formed XML to an
+//! independent parser (roxmltree), and what it cannot write so is refused.
 
 mod common;
 
@@ -22,6 +23,9 @@ fn assert_round_trip(scene: &Scene, what: &str) -> String {
     let mut first = String::new();
     for options in MODES {
         let written = write(scene, &options).unwrap();
+        if let Err(e) = roxmltree::Document::parse(&written) {
+            panic!("{what} ({options:?}) is written as a file an XML parser rejects: {e}");
+        }
         let again = load_text(&written);
         assert_eq!(
             content(&again),
@@ -285,4 +289,49 @@ fn an_ignored_centroid_round_trips() {
         assert_eq!(shape.centroid, box2scene::Vec2::ZERO);
         assert_round_trip(&scene, &xml);
     }
+}
+
+/// A scene loaded with limits above the defaults may hold a name or UserData that a load
+/// with the default options would refuse from the written file: the writer refuses the
+/// scene, naming the object and the field, rather than write a file that does not load.
+#[test]
+fn what_a_default_load_would_refuse_is_not_written() {
+    let most = LoadOptions::default().max_text_bytes as usize;
+    let generous =
+        LoadOptions { max_text_bytes: 4 << 20, max_depth: 200, ..LoadOptions::default() };
+    let name = "n".repeat(most + 1);
+    let long_name = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+         <Body Type=\"Static\"><Name>{name}</Name></Body></Bodies><Joints/></World>"
+    );
+    let deep = "<a>".repeat(61) + &"</a>".repeat(61);
+    let deep_user_data = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints><Joint Type=\"Weld\">\
+         <BodyA>0</BodyA><BodyB>1</BodyB><UserData>{deep}</UserData></Joint></Joints></World>"
+    )
+    .replace("<Bodies/>", "<Bodies><Body Type=\"Static\"/><Body Type=\"Static\"/></Bodies>");
+    let cases = [
+        (long_name, Code::LimitExceeded, "body 1: its Name is 1048577 bytes long written"),
+        (deep_user_data, Code::LimitExceeded, "joint 0: its UserData: "),
+    ];
+    for (xml, code, start) in cases {
+        let scene = load(xml.as_bytes(), &generous).unwrap();
+        for options in MODES {
+            let error = write(&scene, &options).unwrap_err();
+            assert_eq!(error.code, code, "{}", error.message);
+            assert!(error.message.starts_with(start), "{}", error.message);
+            assert!(error.message.ends_with("so the scene cannot be written"), "{}", error.message);
+        }
+    }
+    // Just within the defaults: written, and read back.
+    let at_limit = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\">\
+         <Name>{}</Name><UserData>{}</UserData></Body></Bodies><Joints/></World>",
+        "n".repeat(most),
+        "<a>".repeat(60) + &"</a>".repeat(60)
+    );
+    assert_round_trip(
+        &load(at_limit.as_bytes(), &generous).unwrap(),
+        "names and UserData at the limits",
+    );
 }

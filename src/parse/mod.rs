@@ -563,6 +563,14 @@ impl<'a> Parser<'a> {
             return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
         }
         self.pos = end;
+        // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
+        if let Some(i) = memchr::memmem::find(self.source.slice(at, end).as_bytes(), b"]]>") {
+            return Err(problem(
+                Code::MalformedXml,
+                at + i,
+                "malformed XML: `]]>` in text outside CDATA (write `]]&gt;`)",
+            ));
+        }
         let resolved = match plain {
             true => None,
             false => Some(resolve_text(self.source.slice(at, end), at)?),
@@ -1041,6 +1049,19 @@ impl<'a> Parser<'a> {
         Ok(attrs)
     }
 
+    /// Checks that the attributes of `tag`, which is kept as written rather than read
+    /// (inside UserData or an ignored element), are well-formed: the writer writes them
+    /// back. Names differing in case are distinct there, as in any XML.
+    fn check_attributes(&self, tag: &Tag) -> Parsed<()> {
+        let Some(content) = tag.content.as_deref() else {
+            return Ok(());
+        };
+        if plain_attributes(content, tag.name.len(), tag.at).is_none() {
+            self.xml_attributes(tag, content)?;
+        }
+        Ok(())
+    }
+
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
     fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Vec<Attr<'t>>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
@@ -1055,6 +1076,13 @@ impl<'a> Parser<'a> {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
             let raw = within(&attr.value);
             let at = raw.map_or(tag.at, |(from, _)| tag.at + 1 + from);
+            if let Some(lt) = raw.and_then(|(_, raw)| raw.find('<')) {
+                return Err(problem(
+                    Code::MalformedXml,
+                    at + lt,
+                    "malformed XML: `<` in an attribute value (write `&lt;`)",
+                ));
+            }
             let value = match (attr.normalized_value(quick_xml::XmlVersion::Implicit1_0), raw) {
                 // Unchanged by normalisation: the text as written.
                 (Ok(Cow::Borrowed(_)), Some((_, raw))) => Cow::Borrowed(raw),
@@ -1102,8 +1130,11 @@ impl<'a> Parser<'a> {
         let mut depth = 1;
         while depth > 0 {
             match self.next_node()? {
-                Node::Open(t) if !t.empty => depth += 1,
-                Node::Open(_) | Node::Text(..) => {}
+                Node::Open(t) => {
+                    self.check_attributes(&t)?;
+                    depth += usize::from(!t.empty);
+                }
+                Node::Text(..) => {}
                 Node::Close(_) => depth -= 1,
                 Node::Eof => return Err(self.unclosed(tag)),
             }
@@ -1132,6 +1163,7 @@ impl<'a> Parser<'a> {
     /// included, keeping nothing: for what the writer writes in another form.
     pub fn discard(&mut self, child: &Tag, message: String) -> Parsed<()> {
         self.warn(Code::UnknownElement, child.at, message)?;
+        self.check_attributes(child)?;
         self.pin(child.at);
         self.skip(child)?;
         self.pins.pop();

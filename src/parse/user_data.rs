@@ -7,14 +7,18 @@ use crate::error::Code;
 use crate::input::Source;
 use crate::scene::{Str, UserData};
 
-/// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would: the
-/// type name and value text when it has the editor's form. Fails when `raw` is not
-/// well-formed XML content.
+/// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would read
+/// it from a written file with the default options: the type name and value text when it
+/// has the editor's form. Fails when `raw` is not well-formed XML content, or when the
+/// loader would refuse it.
 pub(crate) fn user_data_fragment(
     raw: &str,
 ) -> Result<(Option<String>, Option<String>), (Code, String)> {
     let document = format!("<UserData>{raw}</UserData>");
-    let options = LoadOptions::default();
+    // A written UserData lies inside <World>, a container and an item: three levels
+    // deeper than here.
+    let default = LoadOptions::default();
+    let options = LoadOptions { max_depth: default.max_depth - 3, ..default };
     let source = Source::memory(document.as_bytes(), &options).map_err(|e| (e.code, e.message))?;
     let mut parser = Parser::new(source, &options);
     let read = |p: &mut Parser| -> Parsed<EditorForm> {
@@ -94,6 +98,7 @@ impl<'a> Parser<'a> {
         loop {
             match self.next_node()? {
                 Node::Open(child) => {
+                    self.check_attributes(&child)?;
                     let inside = match path.as_slice() {
                         [] if child.is("type") => {
                             form.types += 1;
