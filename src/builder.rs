@@ -12,12 +12,12 @@
 #![forbid(unsafe_code)]
 
 use crate::LoadOptions;
-use crate::error::{Code, Diagnostic, Error, Position, Severity};
+use crate::error::{Code, Error, Finding, Parsed, Position, Severity, problem};
 use crate::parse::{canonical_joint, user_data_fragment};
-use crate::scene::{Body, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
+use crate::scene::{Body, Diagnostic, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
-use crate::validate::{self, Geometry};
+use crate::validate;
 use crate::write::{escape, needs_version_2, writable_text};
 
 /// A scene under construction. Objects refer to objects added before them.
@@ -27,32 +27,18 @@ pub struct Builder {
 }
 
 /// The error for object `index` of `what` ("shape", "fixture", ...).
-fn refused(what: &str, index: usize, (code, message): (Code, String)) -> Error {
-    Error { code, position: Position::default(), message: format!("{what} {index}: {message}") }
-}
-
-fn finite(name: &str, values: &[f32]) -> Result<(), (Code, String)> {
-    match values.iter().all(|v| v.is_finite()) {
-        true => Ok(()),
-        false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
-    }
-}
-
-fn not_negative(name: &str, value: f32) -> Result<(), (Code, String)> {
-    match value < 0.0 {
-        true => {
-            Err((Code::NegativeValue, format!("<{name}> is {value}, but it cannot be negative")))
-        }
-        false => Ok(()),
-    }
+fn refused(what: &str, index: usize, why: &Finding) -> Error {
+    let message = format!("{what} {index}: {}", why.message);
+    Error { code: why.code, position: Position::default(), message }
 }
 
 /// An index of a container of `count` objects, or the loader's `id-out-of-range` error.
-fn reference(index: u32, count: usize, names: &str, what: &str) -> Result<(), (Code, String)> {
+fn reference(index: u32, count: usize, names: &str, what: &str) -> Parsed<()> {
     match (index as usize) < count {
         true => Ok(()),
-        false => Err((
+        false => Err(problem(
             Code::IdOutOfRange,
+            0,
             format!("names {what} {index}, but the scene has {count} {names}"),
         )),
     }
@@ -67,7 +53,7 @@ impl Builder {
     /// The gravity, or none (the host decides).
     pub fn set_gravity(&mut self, gravity: Option<Vec2>) -> Result<(), Error> {
         if let Some(g) = gravity {
-            finite("Gravity", &[g.x, g.y]).map_err(|e| refused("world", 0, e))?;
+            validate::finite("Gravity", &[g.x, g.y]).map_err(|e| refused("world", 0, &e))?;
         }
         self.scene.gravity = gravity;
         Ok(())
@@ -78,11 +64,11 @@ impl Builder {
     }
 
     /// Refuses a name that a written file could not hold or read back.
-    fn check_name(name: Option<&str>) -> Result<(), (Code, String)> {
+    fn check_name(name: Option<&str>) -> Parsed<()> {
         name.map_or(Ok(()), |n| writable_text("its Name", trim_xml(n)))
     }
 
-    fn user_data_reference(&self, index: u32) -> Result<(), (Code, String)> {
+    fn user_data_reference(&self, index: u32) -> Parsed<()> {
         match index {
             NONE => Ok(()),
             _ => reference(index, self.scene.user_data.len(), "user data", "user data"),
@@ -120,12 +106,16 @@ impl Builder {
             ),
             (None, None) if value.is_some() => {
                 let why = "a UserData value needs a type name (or raw XML)".to_owned();
-                return Err(refused("user data", index, (Code::InvalidArgument, why)));
+                return Err(refused(
+                    "user data",
+                    index,
+                    &Finding::new(Code::InvalidArgument, 0, why),
+                ));
             }
             (None, None) => String::new(),
         };
         let (type_name, value) =
-            user_data_fragment(&raw).map_err(|e| refused("user data", index, e))?;
+            user_data_fragment(&raw).map_err(|e| refused("user data", index, &e))?;
         let user_data = UserData {
             raw: self.scene.add_str(&raw),
             type_name: type_name.map_or(Str::NULL, |t| self.scene.add_str(&t)),
@@ -145,7 +135,7 @@ impl Builder {
         let index = self.scene.shapes.len();
         let canonical = Self::check_name(name)
             .and_then(|()| self.check_shape(shape, vertices))
-            .map_err(|e| refused("shape", index, e))?;
+            .map_err(|e| refused("shape", index, &e))?;
         let first = self.scene.vertices.len();
         self.scene.vertices.extend_from_slice(vertices);
         let vertices = Range::between(first, self.scene.vertices.len());
@@ -154,29 +144,30 @@ impl Builder {
         Ok(index as u32)
     }
 
-    fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Result<Shape, (Code, String)> {
-        let kind = shape
-            .kind()
-            .ok_or((Code::InvalidArgument, format!("unknown shape kind {}", shape.kind)))?;
+    fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Parsed<Shape> {
+        let kind = shape.kind().ok_or_else(|| {
+            problem(Code::InvalidArgument, 0, format!("unknown shape kind {}", shape.kind))
+        })?;
         let points: Vec<f32> = vertices.iter().flat_map(|v| [v.x, v.y]).collect();
-        finite("Vertex", &points)?;
+        validate::finite("Vertex", &points)?;
         let mut canonical = Shape::new(kind);
         let geometry = match kind {
             ShapeKind::Circle => {
-                finite("Radius", &[shape.radius])?;
-                finite("Position", &[shape.position.x, shape.position.y])?;
+                validate::finite("Radius", &[shape.radius])?;
+                validate::finite("Position", &[shape.position.x, shape.position.y])?;
                 (canonical.radius, canonical.position) = (shape.radius, shape.position);
                 if !vertices.is_empty() {
-                    return Err((Code::BadVertexCount, "a circle has no vertices".into()));
+                    return Err(problem(Code::BadVertexCount, 0, "a circle has no vertices"));
                 }
-                validate::circle(shape.radius)?
+                validate::circle(shape.radius, 0)?;
+                None
             }
             ShapeKind::Polygon => {
                 if shape.centroid_given {
-                    finite("Centroid", &[shape.centroid.x, shape.centroid.y])?;
+                    validate::finite("Centroid", &[shape.centroid.x, shape.centroid.y])?;
                     (canonical.centroid, canonical.centroid_given) = (shape.centroid, true);
                 }
-                validate::polygon(vertices)?
+                validate::polygon(vertices, 0)?
             }
             ShapeKind::Edge | ShapeKind::Chain => {
                 let ghosts = [
@@ -185,36 +176,38 @@ impl Builder {
                     shape.next_vertex.x,
                     shape.next_vertex.y,
                 ];
-                finite("Vertex0", &ghosts)?;
+                validate::finite("Vertex0", &ghosts)?;
                 canonical.prev_vertex = shape.prev_vertex;
                 canonical.next_vertex = shape.next_vertex;
                 canonical.has_prev_vertex = shape.has_prev_vertex;
                 canonical.has_next_vertex = shape.has_next_vertex;
                 match kind {
                     ShapeKind::Edge if vertices.len() != 2 => {
-                        return Err((
+                        return Err(problem(
                             Code::BadVertexCount,
+                            0,
                             format!("an edge has 2 vertices, not {}", vertices.len()),
                         ));
                     }
-                    ShapeKind::Edge => validate::edge(vertices)?,
+                    ShapeKind::Edge => validate::edge(vertices, 0)?,
                     _ => {
                         let most = LoadOptions::default().max_chain_vertices as usize;
                         if vertices.len() > most {
-                            return Err((
+                            return Err(problem(
                                 Code::LimitExceeded,
+                                0,
                                 format!("a chain has at most {most} vertices (max_chain_vertices)"),
                             ));
                         }
                         canonical.is_loop = shape.is_loop;
-                        validate::chain(vertices, shape.is_loop)?
+                        validate::chain(vertices, shape.is_loop, 0)?
                     }
                 }
             }
         };
-        if let Geometry::Warn(code, message) = geometry {
+        if let Some(warning) = geometry {
             let index = self.scene.shapes.len();
-            self.warn("shape", index, code, &message);
+            self.warn("shape", index, warning.code, &warning.message);
         }
         Ok(canonical)
     }
@@ -224,19 +217,19 @@ impl Builder {
         let index = self.scene.fixtures.len();
         Self::check_name(name)
             .and_then(|()| self.check_fixture(fixture))
-            .map_err(|e| refused("fixture", index, e))?;
+            .map_err(|e| refused("fixture", index, &e))?;
         let name = self.name(name);
         self.scene.fixtures.push(Fixture { name, ..*fixture });
         Ok(index as u32)
     }
 
-    fn check_fixture(&self, f: &Fixture) -> Result<(), (Code, String)> {
+    fn check_fixture(&self, f: &Fixture) -> Parsed<()> {
         reference(f.shape, self.scene.shapes.len(), "shapes", "shape")?;
         for (name, value) in
             [("Density", f.density), ("Friction", f.friction), ("Restitution", f.restitution)]
         {
-            finite(name, &[value])?;
-            not_negative(name, value)?;
+            validate::finite(name, &[value])?;
+            validate::not_negative(format_args!("<{name}>"), value, 0)?;
         }
         self.user_data_reference(f.user_data)
     }
@@ -251,7 +244,7 @@ impl Builder {
         let index = self.scene.bodies.len();
         let canonical = Self::check_name(name)
             .and_then(|()| self.check_body(body, fixtures))
-            .map_err(|e| refused("body", index, e))?;
+            .map_err(|e| refused("body", index, &e))?;
         let first = self.scene.fixture_ids.len();
         self.scene.fixture_ids.extend_from_slice(fixtures);
         let fixtures = Range::between(first, self.scene.fixture_ids.len());
@@ -266,9 +259,10 @@ impl Builder {
         Ok(index as u32)
     }
 
-    fn check_body(&self, b: &Body, fixtures: &[u32]) -> Result<Body, (Code, String)> {
-        let kind =
-            b.kind().ok_or((Code::InvalidArgument, format!("unknown body kind {}", b.kind)))?;
+    fn check_body(&self, b: &Body, fixtures: &[u32]) -> Parsed<Body> {
+        let kind = b.kind().ok_or_else(|| {
+            problem(Code::InvalidArgument, 0, format!("unknown body kind {}", b.kind))
+        })?;
         let floats = [
             ("Position", b.position.x),
             ("Position", b.position.y),
@@ -282,22 +276,22 @@ impl Builder {
             ("InertiaScale", b.inertia_scale),
         ];
         for (name, value) in floats {
-            finite(name, &[value])?;
+            validate::finite(name, &[value])?;
         }
         let mut mass = Body::new(kind).mass_data;
         let m = b.mass_data;
         if m.mass_given {
-            finite("Mass", &[m.mass])?;
-            not_negative("Mass", m.mass)?;
+            validate::finite("Mass", &[m.mass])?;
+            validate::not_negative("<Mass>", m.mass, 0)?;
             (mass.mass, mass.mass_given) = (m.mass, true);
         }
         if m.center_given {
-            finite("Center", &[m.center.x, m.center.y])?;
+            validate::finite("Center", &[m.center.x, m.center.y])?;
             (mass.center, mass.center_given) = (m.center, true);
         }
         if m.inertia_given {
-            finite("Inertia", &[m.inertia])?;
-            not_negative("Inertia", m.inertia)?;
+            validate::finite("Inertia", &[m.inertia])?;
+            validate::not_negative("<Inertia>", m.inertia, 0)?;
             (mass.inertia, mass.inertia_given) = (m.inertia, true);
         }
         for &id in fixtures {
@@ -313,30 +307,32 @@ impl Builder {
         let index = self.scene.joints.len();
         let canonical = Self::check_name(name)
             .and_then(|()| self.check_joint(joint))
-            .map_err(|e| refused("joint", index, e))?;
+            .map_err(|e| refused("joint", index, &e))?;
         let name = self.name(name);
         self.scene.joints.push(Joint { name, ..canonical });
         Ok(index as u32)
     }
 
-    fn check_joint(&self, joint: &Joint) -> Result<Joint, (Code, String)> {
+    fn check_joint(&self, joint: &Joint) -> Parsed<Joint> {
         if joint.kind() == Some(JointKind::Unsupported) {
-            return Err((
+            return Err(problem(
                 Code::InvalidArgument,
-                "Farseer-only joints have no Box2Scene form and cannot be built".into(),
+                0,
+                "Farseer-only joints have no Box2Scene form and cannot be built",
             ));
         }
         let canonical = canonical_joint(joint)?;
         reference(canonical.body_a, self.scene.bodies.len(), "bodies", "body")?;
         reference(canonical.body_b, self.scene.bodies.len(), "bodies", "body")?;
-        validate::joint(&canonical)?;
+        validate::joint(&canonical, 0, 0)?;
         if canonical.kind() == Some(JointKind::Gear) {
             for target in [canonical.joint_a, canonical.joint_b] {
                 let kind = self.scene.joints.get(target as usize).and_then(Joint::kind);
                 if !matches!(kind, Some(JointKind::Revolute | JointKind::Prismatic)) {
                     let count = self.scene.joints.len();
-                    return Err((
+                    return Err(problem(
                         Code::BadGearJoint,
+                        0,
                         format!(
                             "the gear names joint {target} (the scene has {count} joints); a gear couples two revolute or prismatic joints added before it"
                         ),

@@ -8,7 +8,8 @@
 //! and needs none for this.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Diagnostic, Severity};
+use crate::error::{Code, Severity};
+use crate::scene::Diagnostic;
 use crate::scene::{
     Body, BodyKind, Fixture, Joint, JointKind, MassData, NONE, Scene, Shape, ShapeKind, Str, Vec2,
 };
@@ -329,7 +330,7 @@ fn string(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::Diagnostic;
+    use crate::scene::Diagnostic;
     use crate::scene::{Range, SceneBuilder, UserData};
 
     #[test]

@@ -4,8 +4,6 @@
 use std::ffi::CStr;
 use std::fmt;
 
-use crate::scene::Str;
-
 /// Every result, error and warning code. 0 is success. The numbers are part of the ABI:
 /// codes are only ever appended, never renumbered. `b2s_code_name` gives its
 /// kebab-case name, the one `docs/format.md` lists.
@@ -338,41 +336,6 @@ impl Severity {
     }
 }
 
-/// A warning attached to a loaded scene.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Diagnostic {
-    /// What is wrong, for a level designer. Owned by the scene.
-    pub message: Str,
-    /// Byte offset in the file of the offending element or value.
-    pub byte_offset: u64,
-    /// A `b2s_code` value.
-    pub code: u32,
-    /// A `b2s_severity` value.
-    pub severity: u32,
-    /// 1-based line; 0 when unknown.
-    pub line: u32,
-    /// 1-based column, in characters; 0 when unknown.
-    pub column: u32,
-}
-
-impl Diagnostic {
-    /// The code, when the number is one box2scene knows.
-    pub fn code(&self) -> Option<Code> {
-        Code::from_u32(self.code)
-    }
-
-    /// The severity, when the number is one box2scene knows.
-    pub fn severity(&self) -> Option<Severity> {
-        [Severity::Warning, Severity::Error].into_iter().find(|&s| s as u32 == self.severity)
-    }
-
-    /// Where in the file the diagnostic points.
-    pub fn position(&self) -> Position {
-        Position { line: self.line, column: self.column, byte_offset: self.byte_offset }
-    }
-}
-
 /// Where something is in the input.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Position {
@@ -403,3 +366,31 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// A coded finding of any load stage, a warning or an error alike: what, and where as a byte
+/// offset of the decoded text (a position is worked out only for what is reported).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Finding {
+    pub code: Code,
+    pub at: usize,
+    pub message: String,
+}
+
+/// A [`Finding`] on its way up through `?`, boxed so that a result is no bigger than its
+/// value and a pointer.
+pub(crate) type Problem = Box<Finding>;
+
+/// The result of a stage that may stop at a [`Problem`].
+pub(crate) type Parsed<T> = Result<T, Problem>;
+
+impl Finding {
+    pub fn new(code: Code, at: usize, message: impl Into<String>) -> Finding {
+        Finding { code, at, message: message.into() }
+    }
+}
+
+/// A [`Problem`]: the finding that stops a stage.
+#[cold]
+pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
+    Box::new(Finding::new(code, at, message))
+}

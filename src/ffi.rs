@@ -10,9 +10,9 @@ use std::ffi::{CStr, CString, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
-use crate::error::{Code, Diagnostic, Error, Position};
+use crate::error::{Code, Error, Position};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
-use crate::scene::{NONE, UserData, Vec2};
+use crate::scene::{Diagnostic, NONE, UserData, Vec2};
 use crate::write::write_utf8;
 use crate::{Builder, LoadOptions, WriteOptions, load, load_path, write_path};
 

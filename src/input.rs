@@ -15,21 +15,13 @@ use std::io::Read;
 use std::path::Path;
 
 use crate::LoadOptions;
-use crate::error::{Code, Error, Position};
+use crate::error::{Code, Error, Finding, Position};
 
 /// How the file's bytes were encoded.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Encoding {
     Utf8 { bom: bool },
     Utf16 { big_endian: bool },
-}
-
-/// Why the text ends before the file does, at an offset of the decoded text.
-#[derive(Clone, Debug)]
-pub struct Stop {
-    pub code: Code,
-    pub at: usize,
-    pub message: String,
 }
 
 /// Bytes read from a file at a time.
@@ -45,7 +37,7 @@ pub struct Source<'a> {
     /// The rest of a file read from a path.
     file: Option<Stream>,
     /// Why the text ends early; None when it ends with the file.
-    stop: Option<Stop>,
+    stop: Option<Finding>,
     encoding: Encoding,
     /// Where the text came from, to read it again for positions.
     origin: Origin<'a>,
@@ -170,7 +162,7 @@ impl<'a> Source<'a> {
     }
 
     /// Why the text ends early, once no more can be read.
-    pub fn stop(&self) -> Option<&Stop> {
+    pub fn stop(&self) -> Option<&Finding> {
         self.stop.as_ref().filter(|_| self.file.is_none())
     }
 
@@ -202,7 +194,7 @@ impl<'a> Source<'a> {
                 if stream.read > stream.max {
                     // The file grew past the limit since its size was checked.
                     let message = too_big(stream.max).message;
-                    self.stop = Some(Stop { code: Code::LimitExceeded, at: end, message });
+                    self.stop = Some(Finding { code: Code::LimitExceeded, at: end, message });
                     self.file = None;
                     return false;
                 }
@@ -215,7 +207,7 @@ impl<'a> Source<'a> {
                     Origin::Path(path) => io_error(path, &e).message,
                     Origin::Memory => e.to_string(),
                 };
-                self.stop = Some(Stop { code: Code::Io, at: end, message });
+                self.stop = Some(Finding { code: Code::Io, at: end, message });
                 self.file = None;
                 false
             }
@@ -285,12 +277,12 @@ fn could_continue(tail: &[u8]) -> bool {
 }
 
 /// The longest valid UTF-8 prefix of `bytes`, and the `invalid-utf8` stop after it.
-fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Stop>) {
+fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Finding>) {
     match std::str::from_utf8(bytes) {
         Ok(text) => (text, None),
         Err(e) => {
             let valid = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
-            let stop = Stop {
+            let stop = Finding {
                 code: Code::InvalidUtf8,
                 at: base + valid.len(),
                 message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy \
@@ -309,13 +301,13 @@ fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Stop>) {
 fn cut_at_non_char(
     text: Cow<'_, str>,
     base: usize,
-    stop: Option<Stop>,
-) -> (Cow<'_, str>, Option<Stop>) {
+    stop: Option<Finding>,
+) -> (Cow<'_, str>, Option<Finding>) {
     let Some(at) = first_non_char(text.as_bytes()) else {
         return (text, stop);
     };
     let stop = match text.as_bytes()[at] {
-        0 => Stop {
+        0 => Finding {
             code: Code::NulByte,
             at: base + at,
             message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
@@ -324,7 +316,7 @@ fn cut_at_non_char(
         },
         _ => {
             let c = text[at..].chars().next().unwrap_or_default();
-            Stop {
+            Finding {
                 code: Code::MalformedXml,
                 at: base + at,
                 message: format!(
@@ -383,7 +375,7 @@ fn check_utf16_without_bom(bytes: &[u8]) -> Result<(), Error> {
     })
 }
 
-fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding, Option<Stop>) {
+fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding, Option<Finding>) {
     let units = bytes.chunks_exact(2).map(|pair| {
         let pair = [pair[0], pair[1]];
         if big_endian { u16::from_be_bytes(pair) } else { u16::from_le_bytes(pair) }
@@ -399,7 +391,7 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding,
             }
         }
     }
-    let stop = (!valid).then(|| Stop {
+    let stop = (!valid).then(|| Finding {
         code: Code::InvalidUtf8,
         at: text.len(),
         message: "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of \

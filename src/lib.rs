@@ -16,11 +16,13 @@
 
 #![warn(missing_docs)]
 
+mod arena;
 mod builder;
 mod dump;
 pub mod error;
 pub mod ffi;
 mod input;
+mod load;
 mod output;
 mod parse;
 mod resolve;
@@ -32,10 +34,10 @@ mod write;
 use std::path::Path;
 
 pub use builder::Builder;
-pub use error::{Code, Diagnostic, Error, Position, Severity};
+pub use error::{Code, Error, Position, Severity};
 pub use scene::{
-    Body, BodyKind, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene, Shape,
-    ShapeKind, Str, UserData, Vec2,
+    Body, BodyKind, Diagnostic, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene,
+    Shape, ShapeKind, Str, UserData, Vec2,
 };
 pub use write::{WriteOptions, write};
 
@@ -82,12 +84,12 @@ impl Default for LoadOptions {
 
 /// Loads a scene from the bytes of a file. The result keeps no reference to `bytes`.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
-    parse::load(bytes, options)
+    load::load(bytes, options)
 }
 
 /// Loads a scene from a file.
 pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, Error> {
-    parse::load_path(path.as_ref(), options)
+    load::load_path(path.as_ref(), options)
 }
 
 /// Writes `scene` to a file (see [`write()`]), replacing it atomically: the text goes to a

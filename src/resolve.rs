@@ -3,11 +3,11 @@
 //! and gear joints against the joints they couple.
 #![forbid(unsafe_code)]
 
-use crate::error::Code;
-use crate::parse::{Parsed, Parser, Problem, problem};
+use crate::arena::Arena;
+use crate::error::{Code, Parsed, Problem, problem};
 use crate::scene::{JointKind, NONE, Object, Place, Range};
 
-pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
+pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
     if p.farseer_layout() {
         normalise_farseer_layout(p)?;
     }
@@ -15,10 +15,10 @@ pub(crate) fn resolve(p: &mut Parser) -> Parsed<()> {
 }
 
 /// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th
-/// fixture template on the s-th shape, with the density of s (spec section 8.2). The
+/// fixture template on the s-th shape, with the density of s (docs/format.md). The
 /// templates' `Id` attributes are never consulted: Farseer wrote a process-wide counter
 /// there, and bound Pairs by position.
-fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
+fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     let templates = std::mem::take(&mut p.scene.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
@@ -53,7 +53,7 @@ fn normalise_farseer_layout(p: &mut Parser) -> Parsed<()> {
 /// What the file held beyond a template's records goes with the first fixture made from
 /// it; that of a template no Pair names, to the end of `<Fixtures>` (its attributes to
 /// `<World>`), so the writer still has it.
-fn move_kept_of_templates(p: &mut Parser, templates: usize) {
+fn move_kept_of_templates(p: &mut Arena, templates: usize) {
     let mut first_made = vec![None; templates];
     for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
         first_made[pair.fixture.0 as usize] = Some(k as u32);
@@ -75,7 +75,7 @@ fn has(n: usize, one: &str, many: &str) -> String {
 
 /// Checks every ID against its container, and the gear joints' targets; reports the error
 /// earliest in the file.
-fn check_references(p: &Parser) -> Parsed<()> {
+fn check_references(p: &Arena) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
     for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {

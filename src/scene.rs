@@ -13,7 +13,7 @@
 
 use std::ffi::c_char;
 
-use crate::error::Diagnostic;
+use crate::error::{Code, Position, Severity};
 
 /// The "no object" index: an absent cross reference (no user data, no gear joint, ...).
 pub const NONE: u32 = u32::MAX;
@@ -956,3 +956,38 @@ const _: () = {
     assert!(offset_of!(Body, mass_data) == size_of::<usize>() + 44);
     assert!(offset_of!(Joint, correction_factor) == size_of::<usize>() + 144);
 };
+
+/// A warning attached to a loaded scene.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Diagnostic {
+    /// What is wrong, for a level designer. Owned by the scene.
+    pub message: Str,
+    /// Byte offset in the file of the offending element or value.
+    pub byte_offset: u64,
+    /// A `b2s_code` value.
+    pub code: u32,
+    /// A `b2s_severity` value.
+    pub severity: u32,
+    /// 1-based line; 0 when unknown.
+    pub line: u32,
+    /// 1-based column, in characters; 0 when unknown.
+    pub column: u32,
+}
+
+impl Diagnostic {
+    /// The code, when the number is one box2scene knows.
+    pub fn code(&self) -> Option<Code> {
+        Code::from_u32(self.code)
+    }
+
+    /// The severity, when the number is one box2scene knows.
+    pub fn severity(&self) -> Option<Severity> {
+        [Severity::Warning, Severity::Error].into_iter().find(|&s| s as u32 == self.severity)
+    }
+
+    /// Where in the file the diagnostic points.
+    pub fn position(&self) -> Position {
+        Position { line: self.line, column: self.column, byte_offset: self.byte_offset }
+    }
+}

@@ -1,21 +1,13 @@
-//! Every text-to-value conversion of the format (spec section 2). Each takes the element's
-//! text, already trimmed, and returns the value or a [`BadValue`] whose `at` is the byte
-//! offset, within that text, of the offending part.
+//! Every text-to-value conversion of the format (docs/format.md, "Text, names and values").
+//! Each takes the element's text, already trimmed, and returns the value or a [`Finding`]
+//! whose `at` is the byte offset, within that text, of the offending part.
 #![forbid(unsafe_code)]
 
-use crate::error::Code;
+use crate::error::{Code, Finding};
 use crate::scene::Vec2;
 
-/// Why a text is not a value of its type.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct BadValue {
-    pub code: Code,
-    pub at: usize,
-    pub message: String,
-}
-
-fn bad(code: Code, at: usize, message: impl Into<String>) -> BadValue {
-    BadValue { code, at, message: message.into() }
+fn bad(code: Code, at: usize, message: impl Into<String>) -> Finding {
+    Finding::new(code, at, message)
 }
 
 /// XML white space (not Unicode's), for `trim_*_matches`.
@@ -98,7 +90,7 @@ fn is_float_byte(b: u8) -> bool {
 /// then the standard library's parse. Such text cannot be empty, a non-finite word or a
 /// decimal comma, so a parse error there is simply not a number. Everything else goes to
 /// [`not_a_float`], which works out which mistake it is.
-pub fn float(s: &str) -> Result<f32, BadValue> {
+pub fn float(s: &str) -> Result<f32, Finding> {
     if let Some(value) = exact_float(s) {
         return Ok(value);
     }
@@ -183,7 +175,7 @@ fn exact_float_prefix(bytes: &[u8]) -> Option<(f32, usize)> {
 /// infinity or NaN, a decimal comma, or something else.
 #[cold]
 #[inline(never)]
-fn not_a_float(s: &str) -> BadValue {
+fn not_a_float(s: &str) -> Finding {
     if s.is_empty() {
         return bad(Code::InvalidFloat, 0, "expected a number, found nothing");
     }
@@ -215,7 +207,7 @@ fn not_a_float(s: &str) -> BadValue {
 /// - exactly one comma: the parts are either side of it (each may be padded with white space);
 /// - no comma and exactly two runs: the parts are the runs;
 /// - anything else is not a vector.
-pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
+pub fn vector2(s: &str) -> Result<Vec2, Finding> {
     if let Some(v) = exact_vector2(s.as_bytes()) {
         return Ok(v);
     }
@@ -282,7 +274,7 @@ pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
         if trimmed.is_empty() {
             return Err(bad(Code::InvalidVector2, at, format!("'{s}' has an empty component")));
         }
-        float(trimmed).map_err(|e| BadValue { at: at + lead + e.at, ..e })
+        float(trimmed).map_err(|e| Finding { at: at + lead + e.at, ..e })
     };
     Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
 }
@@ -302,7 +294,7 @@ fn exact_vector2(bytes: &[u8]) -> Option<Vec2> {
 }
 
 /// `true`/`false` in any letter case, or `1`/`0`.
-pub fn boolean(s: &str) -> Result<bool, BadValue> {
+pub fn boolean(s: &str) -> Result<bool, Finding> {
     if s.eq_ignore_ascii_case("true") || s == "1" {
         Ok(true)
     } else if s.eq_ignore_ascii_case("false") || s == "0" {
@@ -316,7 +308,7 @@ pub fn boolean(s: &str) -> Result<bool, BadValue> {
 ///
 /// The standard library's parse accepts exactly that (one optional sign, at least one digit),
 /// so a successful parse is the answer in one pass; only a failure needs telling apart.
-pub fn int(s: &str) -> Result<i32, BadValue> {
+pub fn int(s: &str) -> Result<i32, Finding> {
     if let Ok(value) = s.parse() {
         return Ok(value);
     }
@@ -328,7 +320,7 @@ pub fn int(s: &str) -> Result<i32, BadValue> {
 }
 
 /// A 16-bit signed int (a group index).
-pub fn int16(s: &str) -> Result<i16, BadValue> {
+pub fn int16(s: &str) -> Result<i16, Finding> {
     let value = int(s)?;
     i16::try_from(value)
         .map_err(|_| bad(Code::OutOfRange, 0, format!("{s} is outside -32768..32767")))
@@ -338,7 +330,7 @@ pub fn int16(s: &str) -> Result<i16, BadValue> {
 ///
 /// As for [`int`], the standard library's parse of a `u32` accepts exactly an optional `+` and
 /// digits, so a successful parse (short of the reserved `u32::MAX`) is the answer in one pass.
-pub fn id(s: &str) -> Result<u32, BadValue> {
+pub fn id(s: &str) -> Result<u32, Finding> {
     if let Ok(value @ 0..=0xFFFF_FFFE) = s.parse::<u32>() {
         return Ok(value);
     }
@@ -361,7 +353,7 @@ pub fn id(s: &str) -> Result<u32, BadValue> {
 
 /// Collision bits, decimal or `0x` hexadecimal. Returns the value and whether it had to be
 /// truncated to its low 16 bits.
-pub fn bits(s: &str) -> Result<(u16, bool), BadValue> {
+pub fn bits(s: &str) -> Result<(u16, bool), Finding> {
     let (digits, radix) = match s.strip_prefix("0x").or_else(|| s.strip_prefix("0X")) {
         Some(hex) => (hex, 16),
         None => (s.strip_prefix('+').unwrap_or(s), 10),
@@ -503,7 +495,7 @@ mod tests {
     /// The implementations before the byte-level rewrite, verbatim, as references that the
     /// new ones must match exactly (values, codes, offsets and messages).
     mod old {
-        use super::super::{BadValue, Code, Vec2, bad, is_non_finite_word};
+        use super::super::{Code, Finding, Vec2, bad, is_non_finite_word};
 
         pub fn is_xml_space(c: char) -> bool {
             matches!(c, ' ' | '\t' | '\r' | '\n')
@@ -513,7 +505,7 @@ mod tests {
             s.trim_matches(is_xml_space)
         }
 
-        pub fn float(s: &str) -> Result<f32, BadValue> {
+        pub fn float(s: &str) -> Result<f32, Finding> {
             if s.is_empty() {
                 return Err(bad(Code::InvalidFloat, 0, "expected a number, found nothing"));
             }
@@ -551,7 +543,7 @@ mod tests {
             Ok(value)
         }
 
-        pub fn vector2(s: &str) -> Result<Vec2, BadValue> {
+        pub fn vector2(s: &str) -> Result<Vec2, Finding> {
             if s.is_empty() {
                 return Ok(Vec2::ZERO);
             }
@@ -588,7 +580,7 @@ mod tests {
                         format!("'{s}' has an empty component"),
                     ));
                 }
-                float(part).map_err(|e| BadValue { at: at + lead + e.at, ..e })
+                float(part).map_err(|e| Finding { at: at + lead + e.at, ..e })
             };
             Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
         }
@@ -651,8 +643,8 @@ mod tests {
     fn same<T: PartialEq + std::fmt::Debug>(
         name: &str,
         text: &str,
-        new: Result<T, BadValue>,
-        old: Result<T, BadValue>,
+        new: Result<T, Finding>,
+        old: Result<T, Finding>,
     ) {
         assert_eq!(new, old, "{name}({text:?})");
     }

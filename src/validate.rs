@@ -3,8 +3,8 @@
 //! references are resolved).
 #![forbid(unsafe_code)]
 
-use crate::error::Code;
-use crate::parse::{Parsed, Parser};
+use crate::arena::Arena;
+use crate::error::{Code, Finding, Parsed, problem};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
@@ -12,13 +12,8 @@ pub(crate) const MAX_POLYGON_VERTICES: usize = 8;
 /// Box2D's `b2_linearSlop` (m).
 pub(crate) const LINEAR_SLOP: f32 = 0.005;
 
-/// The outcome of a geometry check that did not fail.
-pub enum Geometry {
-    Fine,
-    Warn(Code, String),
-}
-
-type Checked = Result<Geometry, (Code, String)>;
+/// A geometry check: fine, a warning, or the error, each at the shape's tag `at`.
+type Checked = Result<Option<Finding>, Box<Finding>>;
 
 fn sub(a: Vec2, b: Vec2) -> Vec2 {
     Vec2::new(a.x - b.x, a.y - b.y)
@@ -32,37 +27,61 @@ fn length_squared(a: Vec2) -> f32 {
     a.x * a.x + a.y * a.y
 }
 
+/// `value`, unless it is negative (error `negative-value` naming `what`, which is formatted
+/// only then).
+pub(crate) fn not_negative(what: impl std::fmt::Display, value: f32, at: usize) -> Parsed<f32> {
+    if value < 0.0 {
+        return Err(problem(
+            Code::NegativeValue,
+            at,
+            format!("{what} is {value}, but it cannot be negative"),
+        ));
+    }
+    Ok(value)
+}
+
+/// Every one of `values` (of the element `name`, given by a host) is finite.
+pub(crate) fn finite(name: &str, values: &[f32]) -> Parsed<()> {
+    if values.iter().all(|v| v.is_finite()) {
+        return Ok(());
+    }
+    Err(problem(Code::NonFiniteFloat, 0, format!("<{name}> is not a finite number")))
+}
+
 /// A circle's radius must be positive.
-pub fn circle(radius: f32) -> Checked {
+pub fn circle(radius: f32, at: usize) -> Parsed<()> {
     if radius <= 0.0 {
-        return Err((
+        return Err(problem(
             Code::BadRadius,
+            at,
             format!("a circle's <Radius> must be greater than 0, not {radius}"),
         ));
     }
-    Ok(Geometry::Fine)
+    Ok(())
 }
 
 /// A polygon of 2 (a segment) to 8 vertices, judged the way Box2D 2.4.1's
 /// `b2PolygonShape::Set` will treat it: points closer than half the linear slop are merged,
 /// the convex hull is taken, and a hull of fewer than 3 points or (near) zero area would be
 /// silently replaced by a 1x1 box, so it is an error here.
-pub fn polygon(vertices: &[Vec2]) -> Checked {
+pub fn polygon(vertices: &[Vec2], at: usize) -> Checked {
     match vertices.len() {
         2 => {
             if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
-                return Err((
+                return Err(problem(
                     Code::DegeneratePolygon,
+                    at,
                     format!(
                         "the two points of this segment polygon are closer than Box2D's linear slop ({LINEAR_SLOP} m)"
                     ),
                 ));
             }
-            return Ok(Geometry::Fine);
+            return Ok(None);
         }
         n if !(2..=MAX_POLYGON_VERTICES).contains(&n) => {
-            return Err((
+            return Err(problem(
                 Code::BadVertexCount,
+                at,
                 format!(
                     "a polygon needs 2 to {MAX_POLYGON_VERTICES} vertices, this one has {}",
                     vertices.len()
@@ -76,15 +95,23 @@ pub fn polygon(vertices: &[Vec2]) -> Checked {
     let merged = merge_close_points(vertices, &mut merged);
     let hull = convex_hull(merged, &mut hull);
     if hull.len() < 3 || hull_area(merged, hull) <= f32::EPSILON {
-        return Err((Code::DegeneratePolygon, "the polygon's points are collinear or (nearly) coincide: it has no area, and Box2D would replace it with a 1x1 box".into()));
+        return Err(problem(
+            Code::DegeneratePolygon,
+            at,
+            "the polygon's points are collinear or (nearly) coincide: it has no area, and Box2D would replace it with a 1x1 box",
+        ));
     }
     let kept_in_order = merged.len() == vertices.len()
         && hull.len() == vertices.len()
         && is_rotation_of_identity(hull);
     if kept_in_order {
-        Ok(Geometry::Fine)
+        Ok(None)
     } else {
-        Ok(Geometry::Warn(Code::PolygonNotConvexCcw, "the polygon's vertices are not convex in counter-clockwise order; Box2D will use their convex hull".into()))
+        Ok(Some(Finding::new(
+            Code::PolygonNotConvexCcw,
+            at,
+            "the polygon's vertices are not convex in counter-clockwise order; Box2D will use their convex hull",
+        )))
     }
 }
 
@@ -152,23 +179,25 @@ fn is_rotation_of_identity(hull: &[usize]) -> bool {
 }
 
 /// An edge must have length (at least the linear slop).
-pub fn edge(vertices: &[Vec2]) -> Checked {
+pub fn edge(vertices: &[Vec2], at: usize) -> Checked {
     if length_squared(sub(vertices[1], vertices[0])) < LINEAR_SLOP * LINEAR_SLOP {
-        return Err((
+        return Err(problem(
             Code::DegenerateEdge,
+            at,
             format!("the edge is shorter than Box2D's linear slop ({LINEAR_SLOP} m)"),
         ));
     }
-    Ok(Geometry::Fine)
+    Ok(None)
 }
 
 /// A chain needs 2 vertices (a loop 3), no two consecutive ones closer than the linear slop.
-pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
+pub fn chain(vertices: &[Vec2], is_loop: bool, at: usize) -> Checked {
     let least = if is_loop { 3 } else { 2 };
     if vertices.len() < least {
         let what = if is_loop { "loop" } else { "chain" };
-        return Err((
+        return Err(problem(
             Code::BadVertexCount,
+            at,
             format!("a {what} needs at least {least} vertices, this one has {}", vertices.len()),
         ));
     }
@@ -176,8 +205,9 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
     let pairs = vertices.windows(2).map(|w| [w[0], w[1]]).chain(closing);
     for (i, [a, b]) in pairs.enumerate() {
         if length_squared(sub(b, a)) < LINEAR_SLOP * LINEAR_SLOP {
-            return Err((
+            return Err(problem(
                 Code::DegenerateChain,
+                at,
                 format!(
                     "chain vertices {i} and {} are closer than Box2D's linear slop ({LINEAR_SLOP} m)",
                     (i + 1) % vertices.len()
@@ -185,14 +215,15 @@ pub fn chain(vertices: &[Vec2], is_loop: bool) -> Checked {
             ));
         }
     }
-    Ok(Geometry::Fine)
+    Ok(None)
 }
 
 /// The rules one joint can break on its own (its references are checked elsewhere).
-pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
+pub(crate) fn joint(joint: &Joint, at: usize, body_b_at: usize) -> Parsed<()> {
     if joint.body_a == joint.body_b {
-        return Err((
+        return Err(problem(
             Code::JointSelfReference,
+            body_b_at,
             format!("the joint connects body {} to itself", joint.body_a),
         ));
     }
@@ -202,8 +233,9 @@ pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
             Some(JointKind::Revolute) => ("LowerAngle", "UpperAngle"),
             _ => ("LowerTranslation", "UpperTranslation"),
         };
-        return Err((
+        return Err(problem(
             Code::BadLimit,
+            at,
             format!(
                 "{lower} {} is above {upper} {} with the limit enabled",
                 joint.lower_limit, joint.upper_limit
@@ -212,14 +244,16 @@ pub(crate) fn joint(joint: &Joint) -> Result<(), (Code, String)> {
     }
     let has_axis = matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel));
     if has_axis && joint.local_axis_a == Vec2::ZERO {
-        return Err((
+        return Err(problem(
             Code::ZeroAxis,
-            "<LocalAxisA> is (0, 0): a joint axis needs a direction".into(),
+            at,
+            "<LocalAxisA> is (0, 0): a joint axis needs a direction",
         ));
     }
     if kind == Some(JointKind::Pulley) && joint.ratio <= 0.0 {
-        return Err((
+        return Err(problem(
             Code::BadRatio,
+            at,
             format!("a pulley's <Ratio> must be greater than 0, not {}", joint.ratio),
         ));
     }
@@ -245,16 +279,17 @@ pub(crate) fn zero_density(
 }
 
 /// Warns about every dynamic body that breaks the [`zero_density`] rule.
-pub(crate) fn dynamic_bodies_without_mass(p: &mut Parser) -> Parsed<()> {
-    let s = &p.scene;
-    let found: Vec<(usize, String)> = (s.bodies.iter().enumerate())
+pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
+    let s = &arena.scene;
+    let found: Vec<Finding> = (s.bodies.iter().enumerate())
         .filter_map(|(i, b)| {
             let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
-            Some((p.origins.bodies[i], format!("dynamic body {i} {why}")))
+            let at = arena.origins.bodies[i];
+            Some(Finding::new(Code::DynamicBodyZeroDensity, at, format!("dynamic body {i} {why}")))
         })
         .collect();
-    for (at, message) in found {
-        p.warn(Code::DynamicBodyZeroDensity, at, message)?;
+    for warning in found {
+        arena.note(warning)?;
     }
     Ok(())
 }

@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use crate::LoadOptions;
-use crate::error::{Code, Error, Position};
+use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::input::first_non_char;
 use crate::parse::user_data_fragment;
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE, Object};
@@ -78,10 +78,10 @@ fn unwritable_joint(scene: &Scene) -> Result<(), Error> {
 /// could not be read back from it with the default load options (a scene loaded with
 /// larger limits, or built with a host's records, may have one).
 fn unwritable_texts(scene: &Scene) -> Result<(), Error> {
-    let unwritable = |object: Object, (code, message): (Code, String)| Error {
-        code,
+    let unwritable = |object: Object, why: Problem| Error {
+        code: why.code,
         position: Position::default(),
-        message: format!("{object}: {message}, so the scene cannot be written"),
+        message: format!("{object}: {}, so the scene cannot be written", why.message),
     };
     let index = |i: usize| i as u32;
     let shapes = scene.shapes().iter().enumerate();
@@ -97,8 +97,9 @@ fn unwritable_texts(scene: &Scene) -> Result<(), Error> {
             writable_text("its Name", name).map_err(|e| unwritable(object, e))?;
         }
         if let Some(raw) = scene.user_data_at(user_data).and_then(|u| scene.text(u.raw)) {
-            writable_user_data(raw).map_err(|(code, why)| {
-                unwritable(object, (code, format!("its UserData: {why}")))
+            writable_user_data(raw).map_err(|why| {
+                let message = format!("its UserData: {}", why.message);
+                unwritable(object, Box::new(Finding { message, ..*why }))
             })?;
         }
     }
@@ -107,12 +108,13 @@ fn unwritable_texts(scene: &Scene) -> Result<(), Error> {
 
 /// Whether `text`, written escaped as the text of `field`, reads back: it holds only
 /// characters XML allows, and no more bytes than the loader reads in one text by default.
-pub(crate) fn writable_text(field: &str, text: &str) -> Result<(), (Code, String)> {
+pub(crate) fn writable_text(field: &str, text: &str) -> Parsed<()> {
     if let Some(at) = first_non_char(text.as_bytes()) {
         let c = text[at..].chars().next().unwrap_or_default();
         let c = u32::from(c);
-        return Err((
+        return Err(problem(
             Code::MalformedXml,
+            0,
             format!("{field} holds the character U+{c:04X}, which XML does not allow"),
         ));
     }
@@ -120,8 +122,9 @@ pub(crate) fn writable_text(field: &str, text: &str) -> Result<(), (Code, String
     let mut len = 0;
     escaped(text, |piece| len += piece.len());
     if len as u64 > most {
-        return Err((
+        return Err(problem(
             Code::LimitExceeded,
+            0,
             format!(
                 "{field} is {len} bytes long written, more than a load reads in one text by \
                  default (max_text_bytes = {most})"
@@ -133,7 +136,7 @@ pub(crate) fn writable_text(field: &str, text: &str) -> Result<(), (Code, String
 
 /// Whether the UserData `raw`, written verbatim, reads back with the default load options.
 /// Most is plainly short and shallow; the rest is read as the loader would read it.
-fn writable_user_data(raw: &str) -> Result<(), (Code, String)> {
+fn writable_user_data(raw: &str) -> Parsed<()> {
     let default = LoadOptions::default();
     // A written UserData is the fourth level of its file, and each `<` opens one more at
     // most.

@@ -174,8 +174,8 @@ fn the_text_limit_means_the_same_from_a_path() {
         // The node starts before the first chunk boundary and ends after it.
         let pad = "<!-- -->".repeat(CHUNK / 16);
         let xml = format!("{open}{pad}{node}{close}");
-        let error = same_both_ways_with(xml.as_bytes(), what, &LoadOptions::default())
-            .expect_err(what);
+        let error =
+            same_both_ways_with(xml.as_bytes(), what, &LoadOptions::default()).expect_err(what);
         assert_eq!(error.code, Code::LimitExceeded, "{what}: {error:?}");
         // Where the node starts: its `<`, or its first character for text.
         let within = match what {

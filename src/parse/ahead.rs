@@ -17,6 +17,7 @@ use super::names::{Element, Name};
 use super::world::{CONTAINERS, WorldChild};
 use super::{Parser, Seen, Tag};
 use crate::LoadOptions;
+use crate::arena::Arena;
 use crate::input::Source;
 use crate::text::is_xml_space_byte;
 
@@ -200,9 +201,10 @@ fn read_piece<'a>(
     let root = parser.root().ok()?;
     parser.read_version(&root).ok()?;
     // The calling thread counts, reports and keeps everything before `at`.
-    parser.warnings.clear();
+    let version = parser.arena.version;
+    parser.arena = Arena::new(options.strict);
+    parser.arena.version = version;
     parser.comments.clear();
-    parser.scene.kept.clear();
     parser.elements = 0;
     let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
     parser.open.push(tag.name.clone());
@@ -220,8 +222,7 @@ fn read_piece<'a>(
         Part::Piece { reached, .. } => read.is_ok() && reached,
         _ => read.and_then(|()| parser.epilog()).is_ok(),
     };
-    let clean = ended && parser.warnings.is_empty() && parser.dropped_warnings.0 == 0;
-    clean.then_some(Done { parser, seen })
+    ended.then_some(Done { parser, seen })
 }
 
 impl Caller<'_> {
@@ -329,9 +330,7 @@ impl Parser<'_> {
         for piece in &mut caller.pieces[first..] {
             let Piece::Read(done) = std::mem::replace(piece, Piece::Unusable) else { continue };
             let parser = done.parser;
-            let bodies_before = self.scene.bodies.len() as u32;
-            self.scene.append(parser.scene);
-            self.origins.append(parser.origins, bodies_before);
+            self.arena.append(parser.arena);
             (self.pos, self.started, self.last) = (parser.pos, parser.started, parser.last);
             self.open = parser.open;
         }
@@ -343,11 +342,12 @@ impl Parser<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Parsed;
     use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
-    /// The scene (as its dump, and its records as C sees them but for their string
-    /// pointers) or the error of a load on one thread, or on two with the pieces and the
-    /// helper's first piece of `split`.
+    /// What a read on one thread, or on two with the pieces and the helper's first piece of
+    /// `split`, gives: the arena (the scene's dump, its records as C sees them but for their
+    /// string pointers, the warnings, the origins) or the problem.
     fn outcome(
         bytes: &[u8],
         options: &LoadOptions,
@@ -355,15 +355,20 @@ mod tests {
     ) -> String {
         let threads = if split.is_some() { 2 } else { 1 };
         let options = &LoadOptions { threads, ..*options };
-        shown(
-            Source::memory(bytes, options)
-                .and_then(|source| super::super::parse_split(source, options, split)),
-        )
+        match Source::memory(bytes, options) {
+            Ok(source) => shown(super::super::read_split(source, options, split).1),
+            Err(e) => format!("{e:?}"),
+        }
     }
 
-    fn shown(loaded: Result<Scene, crate::Error>) -> String {
-        match loaded {
-            Ok(scene) => crate::dump::to_json(&scene) + &records(&scene),
+    fn shown(read: Parsed<Arena>) -> String {
+        match read {
+            Ok(mut arena) => {
+                let warnings = format!("warnings: {:?}\n", arena.take_warnings());
+                let origins = format!("version {}, {:?}\n", arena.version, arena.origins);
+                let scene = arena.scene.freeze();
+                crate::dump::to_json(&scene) + &records(&scene) + &warnings + &origins
+            }
             Err(e) => format!("{e:?}"),
         }
     }
@@ -629,18 +634,14 @@ mod tests {
         }
         let options = LoadOptions::default();
         let expected = outcome(bytes, &options, None);
-        assert!(
-            expected.contains("\"diagnostics\": []\n}\n"),
-            "{}",
-            &expected[expected.len() - 500..]
-        );
+        assert!(expected.contains("warnings: []"), "{}", &expected[expected.len() - 500..]);
         for helped in 0..=pieces.len() {
             let got = outcome(bytes, &options, Some((pieces.clone(), helped)));
             assert_same(&got, &expected, format_args!("the helper's from piece {helped}"));
         }
         for _ in 0..20 {
             let source = Source::memory(bytes, &options).unwrap();
-            let got = shown(super::super::parse(source, &options));
+            let got = shown(super::super::read(source, &options).1);
             assert_same(&got, &expected, format_args!("as the two threads met"));
         }
     }
@@ -668,9 +669,9 @@ mod tests {
                 parser.part = start(scope, &second, &options, Some((pieces, first)));
                 parser.document().unwrap();
             });
-            assert_eq!(parser.scene.bodies.len(), 4, "helped from piece {first}");
+            assert_eq!(parser.arena.scene.bodies.len(), 4, "helped from piece {first}");
             assert_eq!(parser.elements, 4 + 4 * 2 + 1);
-            assert_eq!(parser.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
+            assert_eq!(parser.arena.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
         }
     }
 }

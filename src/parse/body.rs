@@ -1,7 +1,8 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
-use crate::error::Code;
+use super::{Element, Parser, Seen, Tag, elements};
+use crate::arena::Pair;
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{Body, BodyKind, MassData, Object, Range};
 
 elements! {
@@ -34,7 +35,7 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
-        self.begin_object(Object::Body(self.scene.bodies.len() as u32));
+        self.begin_object(Object::Body(self.arena.scene.bodies.len() as u32));
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
         while let Some(child) = self.child(&tag)? {
@@ -67,7 +68,7 @@ impl<'a> Parser<'a> {
                 BodyChild::Position => body.position = self.vector(&child)?,
                 BodyChild::InertiaScale => body.inertia_scale = self.float(&child)?,
                 BodyChild::GravityScale => {
-                    self.newer_construct(child.at, "<GravityScale>")?;
+                    self.arena.newer_construct(child.at, "<GravityScale>")?;
                     body.gravity_scale = self.float(&child)?;
                 }
                 BodyChild::MassData => {
@@ -77,22 +78,22 @@ impl<'a> Parser<'a> {
                 BodyChild::Fixtures => body.fixtures = self.fixture_ids(&child)?,
                 BodyChild::Bindings => self.bindings(&child)?,
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
-                BodyChild::Tag => match self.tag_is_user_data() {
+                BodyChild::Tag => match self.arena.tag_is_user_data() {
                     true => body.user_data = self.user_data(&child)?,
                     false => self.unknown(&tag, &child)?,
                 },
             }
         }
         self.end_object();
-        self.origins.bodies.push(tag.at);
-        self.scene.bodies.push(body);
+        self.arena.origins.bodies.push(tag.at);
+        self.arena.scene.bodies.push(body);
         Ok(())
     }
 
     /// A body lists its fixtures as `<Fixtures>` IDs, or in Farseer's Version 3 layout as
     /// `<Bindings>`; the other one is an error, since dropping it would lose fixtures.
     fn layout_mismatch(&self, child: &Tag, name: BodyChild) -> Option<super::Problem> {
-        let why = match (name, self.farseer_layout()) {
+        let why = match (name, self.arena.farseer_layout()) {
             (BodyChild::Fixtures, true) => "a Version 3 body lists its fixtures in <Bindings>",
             (BodyChild::Bindings, false) => {
                 "<Bindings> belongs to Version 3 files; this body lists its fixtures in <Fixtures>"
@@ -105,7 +106,7 @@ impl<'a> Parser<'a> {
     /// Version 3: `<Pair FixtureId="f" ShapeId="s"/>` children, made into fixtures once the
     /// whole file is read. Both are positions in their containers.
     fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
-        let body = self.scene.bodies.len() as u32;
+        let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
             let attrs = p.attributes(&pair)?;
             p.unknown_attributes(&pair, &attrs, &["fixtureid", "shapeid"])?;
@@ -118,14 +119,15 @@ impl<'a> Parser<'a> {
                 )),
             };
             let (fixture, shape) = (id("fixtureid")?, id("shapeid")?);
-            p.origins.pairs.push(super::Pair { body, fixture, shape });
+            p.arena.origins.pairs.push(Pair { body, fixture, shape });
             p.skip(&pair)
         })
     }
 
     fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
         let attrs = self.attributes(tag)?;
-        let known: &[&str] = if self.id_is_informational() { &["type", "id"] } else { &["type"] };
+        let known: &[&str] =
+            if self.arena.id_is_informational() { &["type", "id"] } else { &["type"] };
         self.unknown_attributes(tag, &attrs, known)?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(
@@ -177,13 +179,13 @@ impl<'a> Parser<'a> {
     /// A body's `<Fixtures>`: `ID` children, checked against the fixtures after the whole
     /// file is read.
     fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
-        let first = self.scene.fixture_ids.len();
+        let first = self.arena.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
             let (index, at) = p.id(&id)?;
-            p.scene.fixture_ids.push(index);
-            p.origins.fixture_ids.push(at);
+            p.arena.scene.fixture_ids.push(index);
+            p.arena.origins.fixture_ids.push(at);
             Ok(())
         })?;
-        Ok(Range::between(first, self.scene.fixture_ids.len()))
+        Ok(Range::between(first, self.arena.scene.fixture_ids.len()))
     }
 }

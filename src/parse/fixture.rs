@@ -1,7 +1,7 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Element, Parsed, Parser, Seen, Tag, elements};
-use crate::error::Code;
+use super::{Element, Parser, Seen, Tag, elements};
+use crate::error::{Code, Parsed};
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
@@ -25,9 +25,9 @@ elements! {
 
 impl<'a> Parser<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
-        self.begin_object(Object::Fixture(self.scene.fixtures.len() as u32));
+        self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
         let attrs = self.attributes(&tag)?;
-        let known: &[&str] = if self.id_is_informational() { &["id"] } else { &[] };
+        let known: &[&str] = if self.arena.id_is_informational() { &["id"] } else { &[] };
         self.unknown_attributes(&tag, &attrs, known)?;
         let mut fixture = Fixture::default();
         let mut shape_at = tag.at;
@@ -43,7 +43,7 @@ impl<'a> Parser<'a> {
             match name {
                 // A Version 3 body's Pairs give each of its fixtures a shape, and the shape's
                 // Density attribute its density (spec section 8.2).
-                Shape | Density if self.farseer_layout() => {
+                Shape | Density if self.arena.farseer_layout() => {
                     let message = format!(
                         "<{}> in a Version 3 <Fixture> ignored: a body's <Pair> gives the \
                          fixture its shape, and the shape's Density attribute its density",
@@ -62,19 +62,19 @@ impl<'a> Parser<'a> {
                     self.within(FilterData.name(), |p| p.filter(&child, filter))?
                 }
                 UserData => fixture.user_data = self.user_data(&child)?,
-                FixtureChild::Tag => match self.tag_is_user_data() {
+                FixtureChild::Tag => match self.arena.tag_is_user_data() {
                     true => fixture.user_data = self.user_data(&child)?,
                     false => self.unknown(&tag, &child)?,
                 },
             }
         }
         // In Farseer's layout a fixture is a template: bodies pair it with shapes.
-        if !seen.contains(FixtureChild::Shape) && !self.farseer_layout() {
+        if !seen.contains(FixtureChild::Shape) && !self.arena.farseer_layout() {
             return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
         self.end_object();
-        self.origins.fixture_shapes.push(shape_at);
-        self.scene.fixtures.push(fixture);
+        self.arena.origins.fixture_shapes.push(shape_at);
+        self.arena.scene.fixtures.push(fixture);
         Ok(())
     }
 
@@ -106,7 +106,7 @@ impl<'a> Parser<'a> {
                 "<{}> has more than 16 bits; Box2D keeps the low 16 (0x{bits:04X})",
                 tag.name()
             );
-            self.warn(Code::FilterBitsTruncated, at, message)?;
+            self.arena.warn(Code::FilterBitsTruncated, at, message)?;
         }
         Ok(bits)
     }

@@ -1,8 +1,9 @@
 //! `<Joint Type="...">`: the common fields, then one table that says which element each
 //! joint kind has, where it goes, and what it may hold.
 
-use super::{Element, JointOrigin, Parsed, Parser, Seen, Tag, elements, problem};
-use crate::error::Code;
+use super::{Element, Parser, Seen, Tag, elements};
+use crate::arena::JointOrigin;
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
 use crate::validate;
 
@@ -143,10 +144,10 @@ fn slot(kind: JointKind, name: JointChild) -> Option<Slot> {
 /// The joint as the format can hold it: the defaults of its kind, then every field the
 /// format has for that kind taken from `given` (the common fields included). Fails on a
 /// non-finite value or a negative one where the format forbids it, naming the element.
-pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
-    let kind = given
-        .kind()
-        .ok_or((Code::InvalidArgument, format!("unknown joint kind {}", given.kind)))?;
+pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
+    let kind = given.kind().ok_or_else(|| {
+        problem(Code::InvalidArgument, 0, format!("unknown joint kind {}", given.kind))
+    })?;
     let mut joint = Joint {
         name: given.name,
         user_data: given.user_data,
@@ -159,10 +160,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
         (joint.joint_a, joint.joint_b) = (given.joint_a, given.joint_b);
     }
     let mut source = *given;
-    let finite = |name: &str, v: f32| match v.is_finite() {
-        true => Ok(v),
-        false => Err((Code::NonFiniteFloat, format!("<{name}> is not a finite number"))),
-    };
+    let finite = |name: &str, v: f32| validate::finite(name, &[v]).map(|()| v);
     for &element in JointChild::ALL {
         let name = element.name();
         match slot(kind, element) {
@@ -173,8 +171,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Result<Joint, (Code, String)> {
             Some(Slot::Float(field)) => *field(&mut joint) = finite(name, *field(&mut source))?,
             Some(Slot::NonNegative(field)) => {
                 let v = finite(name, *field(&mut source))?;
-                *field(&mut joint) = super::not_negative(format_args!("<{name}>"), v, 0)
-                    .map_err(|p| (p.code, p.message))?;
+                *field(&mut joint) = validate::not_negative(format_args!("<{name}>"), v, 0)?;
             }
             Some(Slot::Flag(field)) => *field(&mut joint) = *field(&mut source),
             Some(Slot::Ignored) | None => {}
@@ -204,7 +201,7 @@ fn joint_kind(value: &str) -> Option<JointKind> {
 
 impl<'a> Parser<'a> {
     pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
-        self.begin_object(Object::Joint(self.scene.joints.len() as u32));
+        self.begin_object(Object::Joint(self.arena.scene.joints.len() as u32));
         let kind = self.joint_type(&tag)?;
         if kind == JointKind::Unsupported {
             // It has no Box2Scene form: the writer writes back its whole text.
@@ -219,9 +216,9 @@ impl<'a> Parser<'a> {
                 continue;
             };
             use JointChild::*;
-            let legacy = self.version == 0;
+            let legacy = self.arena.version == 0;
             let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected)
-                || (name == Tag && self.tag_is_user_data());
+                || (name == Tag && self.arena.tag_is_user_data());
             let named_joint =
                 matches!(name, JointA | JointB) && (legacy || kind == JointKind::Gear);
             let slot = slot(kind, name);
@@ -235,7 +232,7 @@ impl<'a> Parser<'a> {
                 self.duplicate(&tag, &child)?;
             }
             if kind == JointKind::Weld && matches!(name, FrequencyHz | DampingRatio) {
-                self.newer_construct(child.at, "a soft Weld joint")?;
+                self.arena.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
                 Name => joint.name = self.string(&child)?,
@@ -266,8 +263,8 @@ impl<'a> Parser<'a> {
             self.keep_str(Place::Whole, &text);
         }
         self.end_object();
-        self.origins.joints.push(at);
-        self.scene.joints.push(joint);
+        self.arena.origins.joints.push(at);
+        self.arena.scene.joints.push(joint);
         Ok(())
     }
 
@@ -282,7 +279,7 @@ impl<'a> Parser<'a> {
         if !seen.contains(JointChild::DampingRatio) {
             joint.damping_ratio = wheel.damping_ratio;
         }
-        self.warn(
+        self.arena.warn(
             Code::LineJointIsWheel,
             tag.at,
             "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
@@ -311,10 +308,10 @@ impl<'a> Parser<'a> {
             ));
         };
         if matches!(kind, JointKind::Wheel | JointKind::Rope | JointKind::Motor) {
-            self.newer_construct(ty.at, &format!("a {value} joint"))?;
+            self.arena.newer_construct(ty.at, &format!("a {value} joint"))?;
         }
         if kind == JointKind::Unsupported {
-            self.warn(
+            self.arena.warn(
                 Code::FarseerOnlyJoint,
                 ty.at,
                 format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
@@ -325,7 +322,7 @@ impl<'a> Parser<'a> {
 
     /// The rules one joint can break on its own (cross references come later).
     fn check_joint(&self, tag: &Tag, joint: &Joint, at: &JointOrigin) -> Parsed<()> {
-        let legacy = self.version == 0;
+        let legacy = self.arena.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]
         {
@@ -347,9 +344,6 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        validate::joint(joint).map_err(|(code, message)| {
-            let at = if code == Code::JointSelfReference { at.body_b } else { tag.at };
-            problem(code, at, message)
-        })
+        validate::joint(joint, tag.at, at.body_b)
     }
 }

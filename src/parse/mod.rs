@@ -27,110 +27,47 @@ use names::{Element, elements};
 pub(crate) use user_data::user_data_fragment;
 
 use std::borrow::Cow;
-use std::path::Path;
 
 use quick_xml::errors::{IllFormedError, SyntaxError};
 use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 use quick_xml::parser::{ElementParser, Parser as _};
 
-use crate::error::{Code, Diagnostic, Error, MAX_WARNINGS, Severity};
-use crate::input::{Encoding, Locator, Source};
-use crate::scene::{Kept, KeptText, Object, Place, Scene, SceneBuilder, Vec2};
-use crate::text::{self, BadValue, trim_xml, trim_xml_at};
-use crate::{LoadOptions, resolve, validate};
+use crate::LoadOptions;
+use crate::arena::Arena;
+use crate::error::{Code, Finding, Parsed, Problem, problem};
+use crate::input::{Encoding, Source};
+use crate::scene::{Kept, KeptText, Object, Place, Vec2};
+use crate::text::{self, trim_xml, trim_xml_at};
+use crate::validate;
 use names::{Name, SHORT};
 
-/// Loads a scene from the bytes of a file.
-pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
-    parse(Source::memory(bytes, options)?, options)
+/// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
+/// worth it. The source comes back for what needs the text again.
+pub(crate) fn read<'a>(
+    source: Source<'a>,
+    options: &'a LoadOptions,
+) -> (Source<'a>, Parsed<Arena>) {
+    read_split(source, options, None)
 }
 
-/// Loads a scene from a file, reading it a chunk at a time.
-pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Scene, Error> {
-    parse(Source::path(path, options)?, options)
-}
-
-/// Parses into the arena, checks cross references, freezes; positions are worked out
-/// only when there are diagnostics, by reading the text again.
-fn parse(source: Source<'_>, options: &LoadOptions) -> Result<Scene, Error> {
-    parse_split(source, options, None)
-}
-
-/// [`parse`], with the pieces and the helper's first one forced by `split` (for tests).
-fn parse_split(
-    source: Source<'_>,
-    options: &LoadOptions,
+/// [`read`], with the pieces and the helper's first one forced by `split` (for tests).
+fn read_split<'a>(
+    source: Source<'a>,
+    options: &'a LoadOptions,
     split: Option<(Vec<ahead::Boundary>, usize)>,
-) -> Result<Scene, Error> {
+) -> (Source<'a>, Parsed<Arena>) {
     std::thread::scope(|scope| {
         let part = ahead::start(scope, &source, options, split);
         let mut parser = Parser::new(source, options);
         parser.part = part;
-        finish(parser)
-    })
-}
-
-/// Reads the whole document with `parser` and makes the scene or the error.
-fn finish(mut parser: Parser<'_>) -> Result<Scene, Error> {
-    let outcome = parser
-        .document()
-        .and_then(|()| resolve::resolve(&mut parser))
-        .and_then(|()| validate::dynamic_bodies_without_mass(&mut parser));
-    if let Err(problem) = outcome {
-        let mut locator = Locator::new(&parser.source);
-        return Err(Error {
-            code: problem.code,
-            position: locator.locate(problem.at),
-            message: problem.message,
-        });
-    }
-    let Parser {
-        source, mut scene, mut warnings, dropped_warnings: (dropped, first_dropped), ..
-    } = parser;
-    scene.pool_kept_text(|from, to| source.slice(from, to));
-    warnings.sort_by_key(|w| w.at);
-    if dropped > 0 {
-        let message = format!(
-            "{dropped} more warnings from here on were not kept (a scene keeps {MAX_WARNINGS})"
-        );
-        warnings.push(problem(Code::WarningsTruncated, first_dropped, message));
-    }
-    if !warnings.is_empty() {
-        let mut locator = Locator::new(&source);
-        for w in warnings {
-            let position = locator.locate(w.at);
-            let message = scene.add_str(&w.message);
-            scene.diagnostics.push(Diagnostic {
-                message,
-                byte_offset: position.byte_offset,
-                code: w.code as u32,
-                severity: Severity::Warning as u32,
-                line: position.line,
-                column: position.column,
-            });
+        let read = parser.document();
+        let Parser { source, mut arena, .. } = parser;
+        if read.is_ok() {
+            arena.scene.pool_kept_text(|from, to| source.slice(from, to));
         }
-    }
-    Ok(scene.freeze())
-}
-
-/// An error or warning found while parsing, boxed so that a [`Parsed`] result is no bigger
-/// than its value plus a pointer.
-pub type Problem = Box<Finding>;
-
-/// What a [`Problem`] says, at a byte offset of the decoded text.
-#[derive(Debug)]
-pub struct Finding {
-    pub code: Code,
-    pub at: usize,
-    pub message: String,
-}
-
-pub type Parsed<T> = Result<T, Problem>;
-
-#[cold]
-pub fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
-    Box::new(Finding { code, at, message: message.into() })
+        (source, read.map(|()| arena))
+    })
 }
 
 #[cold]
@@ -275,53 +212,6 @@ impl Seen {
     }
 }
 
-/// The offsets the cross-reference checks need after the whole file is read.
-#[derive(Default)]
-pub(crate) struct Origins {
-    /// Per fixture: its `Shape` value.
-    pub fixture_shapes: Vec<usize>,
-    /// Per body: its tag.
-    pub bodies: Vec<usize>,
-    /// Per entry of the fixture ID pool: its `ID` value.
-    pub fixture_ids: Vec<usize>,
-    pub joints: Vec<JointOrigin>,
-    /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
-    pub shape_densities: Vec<f32>,
-    /// Version 3: every body's `Bindings`, in body order.
-    pub pairs: Vec<Pair>,
-}
-
-impl Origins {
-    /// Appends those of what was read after this one's last object, whose bodies are
-    /// numbered after the `bodies_before` read here.
-    pub fn append(&mut self, other: Origins, bodies_before: u32) {
-        let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs } = other;
-        self.fixture_shapes.extend(fixture_shapes);
-        self.bodies.extend(bodies);
-        self.fixture_ids.extend(fixture_ids);
-        self.joints.extend(joints);
-        self.shape_densities.extend(shape_densities);
-        self.pairs.extend(pairs.into_iter().map(|p| Pair { body: p.body + bodies_before, ..p }));
-    }
-}
-
-/// A Version 3 `<Pair FixtureId="f" ShapeId="s"/>`: one fixture of a body, made of the
-/// f-th fixture template and the s-th shape (positions, with where each is written).
-pub(crate) struct Pair {
-    pub body: u32,
-    pub fixture: (u32, usize),
-    pub shape: (u32, usize),
-}
-
-/// Where a joint's references are.
-#[derive(Clone, Copy)]
-pub(crate) struct JointOrigin {
-    pub body_a: usize,
-    pub body_b: usize,
-    pub joint_a: usize,
-    pub joint_b: usize,
-}
-
 pub struct Parser<'a> {
     source: Source<'a>,
     options: &'a LoadOptions,
@@ -343,13 +233,8 @@ pub struct Parser<'a> {
     /// The names of the open elements, innermost last.
     open: Vec<Name>,
     elements: u64,
-    /// The file's Version; 0 for an unversioned legacy file.
-    pub version: u32,
-    pub scene: SceneBuilder,
-    pub origins: Origins,
-    warnings: Vec<Problem>,
-    /// Warnings past [`MAX_WARNINGS`]: how many, and where the first was.
-    dropped_warnings: (u64, usize),
+    /// What is built from what is read.
+    pub arena: Arena,
     /// Its part in a load on two threads.
     part: ahead::Part<'a>,
 }
@@ -368,71 +253,13 @@ impl<'a> Parser<'a> {
             comments: Vec::new(),
             open: Vec::new(),
             elements: 0,
-            version: 0,
-            scene: SceneBuilder::default(),
-            origins: Origins::default(),
-            warnings: Vec::new(),
-            dropped_warnings: (0, 0),
+            arena: Arena::new(options.strict),
             part: ahead::Part::Whole,
         }
     }
 
     pub fn options(&self) -> &LoadOptions {
         self.options
-    }
-
-    /// Records a warning; in strict mode it is the load's error instead.
-    pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Parsed<()> {
-        let w = problem(code, at, message);
-        if self.options.strict {
-            return Err(Box::new(Finding {
-                message: format!("{} (strict mode)", w.message),
-                ..*w
-            }));
-        }
-        if self.warnings.len() < MAX_WARNINGS {
-            self.warnings.push(w);
-        } else {
-            let (count, first) = &mut self.dropped_warnings;
-            if *count == 0 {
-                *first = w.at;
-            }
-            *count += 1;
-        }
-        Ok(())
-    }
-
-    /// Whether the file uses Farseer's Version 3 layout (spec section 8.2).
-    pub fn farseer_layout(&self) -> bool {
-        self.version >= 3
-    }
-
-    /// Version 3 (Aether.Physics2D's spelling): `<Tag>` is `<UserData>` (spec section 8.2).
-    pub fn tag_is_user_data(&self) -> bool {
-        self.farseer_layout()
-    }
-
-    /// Whether a `<Fixture>` or `<Body>` may carry Farseer's informational `Id` attribute
-    /// (Version 2 from July 2013, and Version 3), which is accepted and kept nowhere (spec
-    /// section 8.2). A Version 3 Pair names its fixture by position, never by this `Id`.
-    pub fn id_is_informational(&self) -> bool {
-        self.version >= 2
-    }
-
-    /// Warns that `what` needs Version 2 when the file says less.
-    pub fn newer_construct(&mut self, at: usize, what: &str) -> Parsed<()> {
-        if self.version >= 2 {
-            return Ok(());
-        }
-        let said = match self.version {
-            0 => "has no Version (legacy)".to_string(),
-            v => format!("says Version {v}"),
-        };
-        self.warn(
-            Code::ConstructNewerThanVersion,
-            at,
-            format!("{what} is a Version 2 construct, but the file {said}"),
-        )
     }
 
     // ---- the tokenizer
@@ -451,7 +278,7 @@ impl<'a> Parser<'a> {
             return Ok(true);
         }
         match self.source.stop() {
-            Some(stop) => Err(problem(stop.code, stop.at, stop.message.clone())),
+            Some(stop) => Err(Box::new(stop.clone())),
             None => Ok(false),
         }
     }
@@ -962,7 +789,7 @@ impl<'a> Parser<'a> {
     pub fn parsed<T>(
         &mut self,
         tag: &Tag,
-        convert: fn(&str) -> Result<T, BadValue>,
+        convert: fn(&str) -> Result<T, Finding>,
     ) -> Parsed<(T, usize)> {
         let value = self.value(tag)?;
         match convert(self.text_of(&value.text)) {
@@ -981,7 +808,7 @@ impl<'a> Parser<'a> {
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.parsed(tag, text::float)?;
-        not_negative(format_args!("<{}>", tag.name), v, at)
+        validate::not_negative(format_args!("<{}>", tag.name), v, at)
     }
 
     pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
@@ -1002,7 +829,7 @@ impl<'a> Parser<'a> {
         &self,
         tag: &Tag,
         attr: &Attr,
-        convert: fn(&str) -> Result<T, BadValue>,
+        convert: fn(&str) -> Result<T, Finding>,
     ) -> Parsed<(T, usize)> {
         let (lead, value) = trim_xml_at(&attr.value);
         match convert(value) {
@@ -1018,7 +845,7 @@ impl<'a> Parser<'a> {
     /// A string value, stored in the scene's string pool.
     pub fn string(&mut self, tag: &Tag) -> Parsed<crate::scene::Str> {
         let value = self.value(tag)?;
-        Ok(self.scene.add_str(value.text.read(&self.source)))
+        Ok(self.arena.scene.add_str(value.text.read(&self.source)))
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
@@ -1116,7 +943,7 @@ impl<'a> Parser<'a> {
     pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             let message = format!("unknown attribute {} on <{}> ignored", attr.key, tag.name());
-            self.warn(Code::UnknownElement, attr.at, message)?;
+            self.arena.warn(Code::UnknownElement, attr.at, message)?;
             self.keep_str(Place::Attribute, &verbatim(tag, attr));
         }
         Ok(())
@@ -1162,7 +989,7 @@ impl<'a> Parser<'a> {
     /// Warns (`unknown-element`, with `message`) and skips `child`, comments inside it
     /// included, keeping nothing: for what the writer writes in another form.
     pub fn discard(&mut self, child: &Tag, message: String) -> Parsed<()> {
-        self.warn(Code::UnknownElement, child.at, message)?;
+        self.arena.warn(Code::UnknownElement, child.at, message)?;
         self.check_attributes(child)?;
         self.pin(child.at);
         self.skip(child)?;
@@ -1175,14 +1002,15 @@ impl<'a> Parser<'a> {
     fn kept_text(&mut self, from: usize, to: usize) -> KeptText {
         match self.source.is_whole() {
             true => KeptText::Span(from, to),
-            false => KeptText::Pooled(self.scene.add_str(self.source.slice(from, to))),
+            false => KeptText::Pooled(self.arena.scene.add_str(self.source.slice(from, to))),
         }
     }
 
     /// Keeps `text` for the writer at `place` in `object`: with the piece before it when
     /// that is at the same place and only white space lies between them.
     fn keep(&mut self, object: Object, place: Place, text: KeptText) {
-        let last = self.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
+        let last =
+            self.arena.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
         if let (Some(last), KeptText::Span(from, to)) = (last, text)
             && let KeptText::Span(first, end) = last.text
             && trim_xml(self.source.slice(end, from)).is_empty()
@@ -1190,14 +1018,14 @@ impl<'a> Parser<'a> {
             last.text = KeptText::Span(first, to);
             return;
         }
-        self.scene.kept.push(Kept { object, place, text });
+        self.arena.scene.kept.push(Kept { object, place, text });
     }
 
     /// Keeps `text` (not from the file's text as it stands) at `place` in the object being
     /// read, unless it is inside text kept whole.
     fn keep_str(&mut self, place: Place, text: &str) {
         if self.pins.is_empty() {
-            let text = KeptText::Pooled(self.scene.add_str(text));
+            let text = KeptText::Pooled(self.arena.scene.add_str(text));
             self.keep(self.object, place, text);
         }
     }
@@ -1262,7 +1090,7 @@ impl<'a> Parser<'a> {
     pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
         let message =
             format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name());
-        self.warn(Code::DuplicateElement, child.at, message)
+        self.arena.warn(Code::DuplicateElement, child.at, message)
     }
 
     /// The error for a repeated container.
@@ -1513,19 +1341,6 @@ fn unknown_entity(name: &str, at: usize) -> Problem {
             "malformed XML: unknown entity &{name}; (only &amp; &lt; &gt; &quot; &apos; and character references are allowed)"
         ),
     )
-}
-
-/// `value`, unless it is negative (error `negative-value` naming `what`, which is formatted
-/// only then).
-pub(crate) fn not_negative(what: impl std::fmt::Display, value: f32, at: usize) -> Parsed<f32> {
-    if value < 0.0 {
-        return Err(problem(
-            Code::NegativeValue,
-            at,
-            format!("{what} is {value}, but it cannot be negative"),
-        ));
-    }
-    Ok(value)
 }
 
 /// `word` in ASCII lower case, made in `buffer` when it fits (the words it is matched

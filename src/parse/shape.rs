@@ -1,7 +1,7 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
-use crate::error::Code;
+use super::{Element, Parser, Seen, Tag, elements};
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{Object, Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
@@ -41,7 +41,7 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
 
 impl<'a> Parser<'a> {
     pub(super) fn shape(&mut self, tag: Tag) -> Parsed<()> {
-        self.begin_object(Object::Shape(self.scene.shapes.len() as u32));
+        self.begin_object(Object::Shape(self.arena.scene.shapes.len() as u32));
         let mut shape = self.shape_type(&tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
@@ -68,7 +68,7 @@ impl<'a> Parser<'a> {
                     if !repeated && !shape.name.is_null() {
                         let message = "<Shape> has both a Name attribute and a <Name> element; \
                                        the element wins";
-                        self.warn(Code::DuplicateElement, child.at, message)?;
+                        self.arena.warn(Code::DuplicateElement, child.at, message)?;
                     }
                     shape.name = self.string(&child)?;
                 }
@@ -96,9 +96,7 @@ impl<'a> Parser<'a> {
                             .missing(&tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
-                if let Err((code, message)) = validate::circle(shape.radius) {
-                    return Err(problem(code, radius_at, message));
-                }
+                validate::circle(shape.radius, radius_at)?;
             }
             ShapeKind::Edge => {
                 for needed in [ShapeChild::Vertex1, ShapeChild::Vertex2] {
@@ -108,8 +106,8 @@ impl<'a> Parser<'a> {
                         );
                     }
                 }
-                let first = self.scene.vertices.len() as u32;
-                self.scene.vertices.extend(edge);
+                let first = self.arena.scene.vertices.len() as u32;
+                self.arena.scene.vertices.extend(edge);
                 shape.vertices = Range { first, count: 2 };
             }
             ShapeKind::Polygon | ShapeKind::Chain => {
@@ -120,7 +118,7 @@ impl<'a> Parser<'a> {
         }
         self.check_geometry(&tag, &shape)?;
         self.end_object();
-        self.scene.shapes.push(shape);
+        self.arena.scene.shapes.push(shape);
         Ok(())
     }
 
@@ -128,17 +126,20 @@ impl<'a> Parser<'a> {
     /// the `Density` of the fixtures made with it).
     fn shape_type(&mut self, tag: &Tag) -> Parsed<Shape> {
         let attrs = self.attributes(tag)?;
-        let known: &[&str] =
-            if self.farseer_layout() { &["type", "name", "density"] } else { &["type", "name"] };
-        self.unknown_attributes(tag, &attrs, known)?;
-        let density = match attrs.iter().find(|a| a.is("density")).filter(|_| self.farseer_layout())
-        {
-            Some(attr) => self
-                .attribute(tag, attr, crate::text::float)
-                .and_then(|(d, at)| super::not_negative("the shape's Density", d, at))?,
-            None => 0.0,
+        let known: &[&str] = if self.arena.farseer_layout() {
+            &["type", "name", "density"]
+        } else {
+            &["type", "name"]
         };
-        self.origins.shape_densities.push(density);
+        self.unknown_attributes(tag, &attrs, known)?;
+        let density =
+            match attrs.iter().find(|a| a.is("density")).filter(|_| self.arena.farseer_layout()) {
+                Some(attr) => self
+                    .attribute(tag, attr, crate::text::float)
+                    .and_then(|(d, at)| validate::not_negative("the shape's Density", d, at))?,
+                None => 0.0,
+            };
+        self.arena.origins.shape_densities.push(density);
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(
                 Code::MissingAttribute,
@@ -165,25 +166,25 @@ impl<'a> Parser<'a> {
             }
         };
         if matches!(kind, ShapeKind::Edge | ShapeKind::Chain) {
-            self.newer_construct(ty.at, &format!("a {value} shape"))?;
+            self.arena.newer_construct(ty.at, &format!("a {value} shape"))?;
         }
         let mut shape = Shape::new(kind);
         shape.is_loop = is_loop;
         if let Some(name) = attrs.iter().find(|a| a.is("name")) {
-            shape.name = self.scene.add_str(super::trim_xml(&name.value));
+            shape.name = self.arena.scene.add_str(super::trim_xml(&name.value));
         }
         Ok(shape)
     }
 
     /// `<Vertices>` of a polygon (at most 8) or a chain (at most the chain limit).
     fn vertices(&mut self, tag: &Tag, kind: ShapeKind) -> Parsed<Range> {
-        let first = self.scene.vertices.len();
+        let first = self.arena.scene.vertices.len();
         let most = match kind {
             ShapeKind::Polygon => validate::MAX_POLYGON_VERTICES,
             _ => self.options().max_chain_vertices as usize,
         };
         self.items(tag, "Vertex", |p, vertex| {
-            if p.scene.vertices.len() - first == most {
+            if p.arena.scene.vertices.len() - first == most {
                 return Err(match kind {
                     ShapeKind::Polygon => problem(
                         Code::BadVertexCount,
@@ -194,24 +195,23 @@ impl<'a> Parser<'a> {
                 });
             }
             let v = p.vector(&vertex)?;
-            p.scene.vertices.push(v);
+            p.arena.scene.vertices.push(v);
             Ok(())
         })?;
-        Ok(Range::between(first, self.scene.vertices.len()))
+        Ok(Range::between(first, self.arena.scene.vertices.len()))
     }
 
     fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Parsed<()> {
-        let vertices = &self.scene.vertices[shape.vertices.indices()];
-        let checked = match shape.kind() {
-            Some(ShapeKind::Polygon) => validate::polygon(vertices),
-            Some(ShapeKind::Edge) => validate::edge(vertices),
-            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop),
-            _ => Ok(validate::Geometry::Fine),
+        let vertices = &self.arena.scene.vertices[shape.vertices.indices()];
+        let warning = match shape.kind() {
+            Some(ShapeKind::Polygon) => validate::polygon(vertices, tag.at)?,
+            Some(ShapeKind::Edge) => validate::edge(vertices, tag.at)?,
+            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop, tag.at)?,
+            _ => None,
         };
-        match checked {
-            Ok(validate::Geometry::Fine) => Ok(()),
-            Ok(validate::Geometry::Warn(code, message)) => self.warn(code, tag.at, message),
-            Err((code, message)) => Err(problem(code, tag.at, message)),
+        match warning {
+            Some(warning) => self.arena.note(warning),
+            None => Ok(()),
         }
     }
 }

@@ -1,9 +1,9 @@
 //! `<UserData>`: kept verbatim, never interpreted, plus the type name and value text when
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (spec section 7).
 
-use super::{Node, Parsed, Parser, Tag, trim_xml};
+use super::{Node, Parser, Tag, trim_xml};
 use crate::LoadOptions;
-use crate::error::Code;
+use crate::error::{Code, Parsed, problem};
 use crate::input::Source;
 use crate::scene::{Str, UserData};
 
@@ -11,15 +11,14 @@ use crate::scene::{Str, UserData};
 /// it from a written file with the default options: the type name and value text when it
 /// has the editor's form. Fails when `raw` is not well-formed XML content, or when the
 /// loader would refuse it.
-pub(crate) fn user_data_fragment(
-    raw: &str,
-) -> Result<(Option<String>, Option<String>), (Code, String)> {
+pub(crate) fn user_data_fragment(raw: &str) -> Parsed<(Option<String>, Option<String>)> {
     let document = format!("<UserData>{raw}</UserData>");
     // A written UserData lies inside <World>, a container and an item: three levels
     // deeper than here.
     let default = LoadOptions::default();
     let options = LoadOptions { max_depth: default.max_depth - 3, ..default };
-    let source = Source::memory(document.as_bytes(), &options).map_err(|e| (e.code, e.message))?;
+    let source =
+        Source::memory(document.as_bytes(), &options).map_err(|e| problem(e.code, 0, e.message))?;
     let mut parser = Parser::new(source, &options);
     let read = |p: &mut Parser| -> Parsed<EditorForm> {
         let Node::Open(tag) = p.next_node()? else {
@@ -28,11 +27,11 @@ pub(crate) fn user_data_fragment(
         let (_, form) = p.walk_user_data(&tag)?;
         match p.next_node()? {
             Node::Eof => Ok(form),
-            _ => Err(super::problem(Code::MalformedXml, 0, "closes <UserData> early")),
+            _ => Err(problem(Code::MalformedXml, 0, "closes <UserData> early")),
         }
     };
     let form = read(&mut parser).map_err(|p| {
-        (p.code, format!("the UserData is not well-formed XML content: {}", p.message))
+        problem(p.code, 0, format!("the UserData is not well-formed XML content: {}", p.message))
     })?;
     Ok(form.texts())
 }
@@ -83,11 +82,11 @@ impl<'a> Parser<'a> {
             false => self.walk_user_data(tag)?,
         };
         let (type_name, value) = form.texts();
-        let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.scene.add_str(&s));
+        let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.arena.scene.add_str(&s));
         let (type_name, value) = (add(type_name), add(value));
-        let raw = self.scene.add_str(&raw);
-        self.scene.user_data.push(UserData { raw, type_name, value });
-        Ok((self.scene.user_data.len() - 1) as u32)
+        let raw = self.arena.scene.add_str(&raw);
+        self.arena.scene.user_data.push(UserData { raw, type_name, value });
+        Ok((self.arena.scene.user_data.len() - 1) as u32)
     }
 
     /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.

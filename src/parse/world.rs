@@ -1,7 +1,7 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Element, Parsed, Parser, Seen, Tag, elements, problem};
-use crate::error::Code;
+use super::{Element, Parser, Seen, Tag, elements};
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{Object, Place};
 
 elements! {
@@ -114,7 +114,7 @@ impl<'a> Parser<'a> {
         for container in CONTAINERS {
             if !seen.contains(container) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
-                self.warn(Code::MissingContainer, root.at, message)?;
+                self.arena.warn(Code::MissingContainer, root.at, message)?;
             }
         }
         Ok(())
@@ -131,7 +131,7 @@ impl<'a> Parser<'a> {
                 if repeated {
                     self.duplicate(root, &child)?;
                 }
-                self.scene.gravity = Some(self.vector(&child)?);
+                self.arena.scene.gravity = Some(self.vector(&child)?);
                 continue;
             }
             if repeated {
@@ -174,14 +174,14 @@ impl<'a> Parser<'a> {
         let attrs = self.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
-            return self.warn(
+            return self.arena.warn(
                 Code::LegacyUnversioned,
                 root.at,
                 "the file has no Version: read as a legacy (2010) editor file, whose joints name \
                  their bodies with JointA and JointB",
             );
         };
-        self.version = match super::trim_xml(&version.value) {
+        self.arena.version = match super::trim_xml(&version.value) {
             "1" => 1,
             "2" => 2,
             "3" => 3,
@@ -196,7 +196,7 @@ impl<'a> Parser<'a> {
                 ));
             }
         };
-        self.scene.version = self.version;
+        self.arena.scene.version = self.arena.version;
         Ok(())
     }
 }
