@@ -342,7 +342,7 @@ impl Parser<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::Parsed;
+    use crate::error::{Code, Parsed};
     use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
     /// What a read on one thread, or on two with the pieces and the helper's first piece of
@@ -672,6 +672,55 @@ mod tests {
             assert_eq!(parser.arena.scene.bodies.len(), 4, "helped from piece {first}");
             assert_eq!(parser.elements, 4 + 4 * 2 + 1);
             assert_eq!(parser.arena.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
+        }
+    }
+
+    /// Pieces with warnings are taken, their warnings kept as one thread keeps them: given
+    /// a text whose last bodies carry an unknown element, the calling thread ends with the
+    /// helper's warnings; and a scene with more warnings than a scene keeps gives the same
+    /// warnings, the count of the rest included, however the pieces fall.
+    #[test]
+    fn pieces_with_warnings_are_taken_and_kept_in_order() {
+        let scene = |odd: &str| {
+            let body = "<Body Type=\"Static\"><Fixtures /></Body>";
+            format!(
+                "<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{body}{body}{}</Bodies><Joints /></World>",
+                format!("<Body Type=\"Static\">{odd}<Fixtures /></Body>").repeat(2)
+            )
+        };
+        let (mine, theirs) = (scene(""), scene("<Wind/>"));
+        let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
+        let options = LoadOptions::default();
+        let mut parser = Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
+        let second = Source::memory(theirs.as_bytes(), &options).unwrap();
+        // One piece: the helper's text matches the caller's up to its start.
+        let pieces = vec![(starts[2], WorldChild::Bodies)];
+        std::thread::scope(|scope| {
+            parser.part = start(scope, &second, &options, Some((pieces, 0)));
+            parser.document().unwrap();
+        });
+        let warnings = parser.arena.take_warnings();
+        let wind: Vec<_> = theirs.match_indices("<Wind/>").map(|(at, _)| at).collect();
+        let found: Vec<_> = warnings.iter().map(|w| (w.code, w.at)).collect();
+        assert_eq!(found, wind.iter().map(|&at| (Code::UnknownElement, at)).collect::<Vec<_>>());
+
+        let body = |i: usize| {
+            let odd = if i % 3 == 0 { "<Wind/>" } else { "" };
+            format!("<Body Type=\"Static\">{odd}<Position>{i} 0</Position></Body>\n")
+        };
+        for bodies in [600, 2_400, 20_000] {
+            let text = format!(
+                "<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{}</Bodies><Joints /></World>",
+                (0..bodies).map(body).collect::<String>()
+            );
+            let bytes = text.as_bytes();
+            let expected = outcome(bytes, &options, None);
+            let twins = twins(bytes);
+            let pieces: Vec<_> = (1..8).map(|k| twins[k * twins.len() / 8]).collect();
+            for first in 0..=pieces.len() {
+                let got = outcome(bytes, &options, Some((pieces.clone(), first)));
+                assert_same(&got, &expected, format_args!("{bodies} bodies, helped from {first}"));
+            }
         }
     }
 }
