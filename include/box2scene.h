@@ -1097,10 +1097,8 @@ typedef struct b2s_write_options {
    */
   bool all_fields;
   /**
-   * Threads one write may use. 0 (the default) lets box2scene choose: a scene whose
-   * text comes to about 1 MiB or more is written on two threads, each writing half
-   * of it, everything else on the calling thread. 1 never starts a thread; more than
-   * 2 is read as 2. The text is the same however many threads write it.
+   * Kept so that the struct's layout stays as it was: a write runs on the calling
+   * thread, whatever this says, as one thread writes faster than a load reads.
    */
   uint32_t threads;
 } b2s_write_options;
@@ -1195,7 +1193,7 @@ uint32_t b2s_scene_find_joint(const struct b2s_scene *scene, const char *name);
 
 /**
  * The write options with every field at its default (defaults omitted, as the editor
- * wrote; threads chosen by box2scene).
+ * wrote).
  */
 struct b2s_write_options b2s_write_options_default(void);
 

@@ -398,7 +398,7 @@ pub unsafe extern "C" fn b2s_scene_find_joint(
 }
 
 /// The write options with every field at its default (defaults omitted, as the editor
-/// wrote; threads chosen by box2scene).
+/// wrote).
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_write_options_default() -> WriteOptions {
     WriteOptions::default()

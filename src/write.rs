@@ -18,10 +18,8 @@ pub struct WriteOptions {
     /// Write every field of the file's version, even those equal to their defaults.
     /// Default false: omit them, as the original editor did.
     pub all_fields: bool,
-    /// Threads one write may use. 0 (the default) lets box2scene choose: a scene whose
-    /// text comes to about 1 MiB or more is written on two threads, each writing half
-    /// of it, everything else on the calling thread. 1 never starts a thread; more than
-    /// 2 is read as 2. The text is the same however many threads write it.
+    /// Kept so that the struct's layout stays as it was: a write runs on the calling
+    /// thread, whatever this says, as one thread writes faster than a load reads.
     pub threads: u32,
 }
 
@@ -40,16 +38,21 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> Result<String, Error> {
 /// [`write`]'s text, as the bytes it is made of (for the C text and files, which need
 /// no `String`).
 pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8>, Error> {
-    let text = Text::new(scene, options)?;
-    let cut = match options.threads {
-        1 => None,
-        _ if text.size < MIN_BYTES_FOR_TWO_THREADS => None,
-        _ => text.half_way(),
+    unwritable_joint(scene)?;
+    clashing_attributes(scene)?;
+    unwritable_texts(scene)?;
+    let size = estimated_size(scene);
+    let mut writer = Writer {
+        out: String::with_capacity(size + size / 8 + 4096),
+        depth: 0,
+        scene,
+        all: options.all_fields,
+        version: if needs_version_2(scene) { 2 } else { 1 },
+        world: Scope::new(scene.kept(Object::World), 1),
+        item: None,
     };
-    Ok(match cut {
-        Some((cut, before)) => text.write(Some(cut), [room(before), room(text.size - before)]),
-        None => text.write(None, [room(text.size), 0]),
-    })
+    writer.document();
+    Ok(writer.out.into_bytes())
 }
 
 /// The error for the first joint of the unsupported kind that has no text of its own.
@@ -184,161 +187,14 @@ fn clashing_attributes(scene: &Scene) -> Result<(), Error> {
     Ok(())
 }
 
-/// The room given to a part of the text estimated at `size` bytes: estimates are of
-/// typical files, and a part that outgrows its room goes on in memory of its own.
-fn room(size: usize) -> usize {
-    size + size / 8 + 4096
+/// About how many bytes a scene's text takes, from what is typical of the editor's files:
+/// room enough that the text is rarely moved while it grows.
+fn estimated_size(scene: &Scene) -> usize {
+    let shapes: usize = scene.shapes().iter().map(|s| 100 + 40 * s.vertices.count as usize).sum();
+    let bodies: usize = scene.bodies().iter().map(|b| 300 + 30 * b.fixtures.count as usize).sum();
+    shapes + 200 * scene.fixtures().len() + bodies + 270 * scene.joints().len()
 }
 
-/// What a scene's text is made from.
-struct Text<'s> {
-    scene: &'s Scene,
-    all: bool,
-    version: u32,
-    /// The estimated size of the whole text.
-    size: usize,
-}
-
-impl<'s> Text<'s> {
-    fn new(scene: &'s Scene, options: &WriteOptions) -> Result<Text<'s>, Error> {
-        unwritable_joint(scene)?;
-        clashing_attributes(scene)?;
-        unwritable_texts(scene)?;
-        let version = if needs_version_2(scene) { 2 } else { 1 };
-        let mut text = Text { scene, all: options.all_fields, version, size: 0 };
-        text.size =
-            text.items().map(|(container, item)| text.estimated_size(container, item)).sum();
-        Ok(text)
-    }
-
-    /// Every item, as (container, index).
-    fn items(&self) -> impl Iterator<Item = Place> + '_ {
-        let counts = counts(self.scene);
-        (0..4).flat_map(move |container| (0..counts[container]).map(move |item| (container, item)))
-    }
-
-    /// About how many bytes an item's text takes, from what is typical of the editor's
-    /// files: enough to cut the text in two parts of nearly the length wanted.
-    fn estimated_size(&self, container: usize, item: usize) -> usize {
-        match container {
-            0 => 100 + 40 * self.scene.shapes()[item].vertices.count as usize,
-            1 => 200,
-            2 => 300 + 30 * self.scene.bodies()[item].fixtures.count as usize,
-            _ => 270,
-        }
-    }
-
-    /// The item where half of the estimated text is written, when it lies inside a
-    /// container (not at its first item), where two parts of the text can meet; with the
-    /// estimated size of the text before it.
-    fn half_way(&self) -> Option<(Place, usize)> {
-        let mut written = 0;
-        for (container, item) in self.items() {
-            if written >= self.size / 2 {
-                return (item > 0).then_some(((container, item), written));
-            }
-            written += self.estimated_size(container, item);
-        }
-        None
-    }
-
-    /// The whole text, on one thread or, given a place to cut it, on two. The parts are
-    /// written into two regions of one buffer, `rooms` bytes long, so the second needs no
-    /// copy into memory the system has yet to hand out (a third of a large write): once
-    /// both are done, it moves down to meet the first.
-    fn write(&self, cut: Option<Place>, rooms: [usize; 2]) -> Vec<u8> {
-        let mut buffer = vec![0; rooms[0] + rooms[1]];
-        let (first, second) = buffer.split_at_mut(rooms[0]);
-        let (first, second) = match cut {
-            None => (self.part(first, START, END), Written::default()),
-            Some(cut) => std::thread::scope(|threads| {
-                let second = threads.spawn(|| self.part(second, cut, END));
-                let first = self.part(first, START, cut);
-                let second = second.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-                (first, second)
-            }),
-        };
-        joined(buffer, rooms[0], first, second)
-    }
-
-    /// The text from place `from` to place `to`, written into `room`.
-    fn part(&self, room: &mut [u8], from: Place, to: Place) -> Written {
-        let mut writer = Writer {
-            out: Out { room, written: Written::default() },
-            depth: if from == START { 0 } else { 2 },
-            scene: self.scene,
-            all: self.all,
-            version: self.version,
-            world: Scope::new(self.scene.kept(Object::World), 1),
-            item: None,
-        };
-        writer.part(from, to);
-        writer.out.written
-    }
-}
-
-/// What a part of the text wrote: `len` bytes into its room, then whatever did not fit.
-#[derive(Default)]
-struct Written {
-    len: usize,
-    more: Vec<u8>,
-}
-
-/// A part of the text, written into its room of the buffer and on into memory of its own
-/// once that is full.
-struct Out<'b> {
-    room: &'b mut [u8],
-    written: Written,
-}
-
-impl Out<'_> {
-    fn push_str(&mut self, text: &str) {
-        let end = self.written.len + text.len();
-        match self.room.get_mut(self.written.len..end) {
-            Some(free) => {
-                free.copy_from_slice(text.as_bytes());
-                self.written.len = end;
-            }
-            None => {
-                // Full: everything from here on follows in order in `more`.
-                self.room = &mut [];
-                self.written.more.extend_from_slice(text.as_bytes());
-            }
-        }
-    }
-}
-
-impl std::fmt::Write for Out<'_> {
-    fn write_str(&mut self, text: &str) -> std::fmt::Result {
-        self.push_str(text);
-        Ok(())
-    }
-}
-
-/// The text of two parts written into `buffer`, the second from `second_at` on: the
-/// second moved down to follow the first, unless the first outgrew its room.
-fn joined(mut buffer: Vec<u8>, second_at: usize, first: Written, second: Written) -> Vec<u8> {
-    if first.more.is_empty() {
-        buffer.copy_within(second_at..second_at + second.len, first.len);
-        buffer.truncate(first.len + second.len);
-    } else {
-        let second_text = buffer[second_at..second_at + second.len].to_vec();
-        buffer.truncate(first.len);
-        buffer.extend_from_slice(&first.more);
-        buffer.extend_from_slice(&second_text);
-    }
-    buffer.extend_from_slice(&second.more);
-    buffer
-}
-
-/// The smallest text worth a second thread.
-const MIN_BYTES_FOR_TWO_THREADS: usize = 1 << 20;
-
-/// A place in the text: before item `.1` of the world's container `.0` (0 to 3, in the
-/// order they are written); [`END`] after the last.
-type Place = (usize, usize);
-const START: Place = (0, 0);
-const END: Place = (4, 0);
 const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
 
 /// How many items each container holds, in the order they are written.
@@ -366,16 +222,16 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
 /// decimals for ordinary magnitudes, an exponent for tiny and huge ones (as .NET wrote
 /// `8.369571E-36`). That is the text `Display` gives for the first and `{:e}` for the
 /// others, laid out from ryu's shortest digits, which cost a fraction of `core::fmt`'s.
-fn push_float(out: &mut Out, value: f32) {
+fn push_float(out: &mut String, value: f32) {
     if !value.is_finite() {
         let _ = write!(out, "{value}");
         return;
     }
     if value.is_sign_negative() {
-        out.push_str("-");
+        out.push('-');
     }
     if value == 0.0 {
-        out.push_str("0");
+        out.push('0');
         return;
     }
     let mut buffer = ryu::Buffer::new();
@@ -409,17 +265,17 @@ fn push_float(out: &mut Out, value: f32) {
         let (first, rest) = digits.split_at(1);
         out.push_str(first);
         if !rest.is_empty() {
-            out.push_str(".");
+            out.push('.');
             out.push_str(rest);
         }
-        out.push_str("e");
+        out.push('e');
         out.push_str(integer_text(i64::from(point - 1), &mut [0; 20]));
     }
 }
 
-fn push_zeros(out: &mut Out, count: i32) {
+fn push_zeros(out: &mut String, count: i32) {
     for _ in 0..count {
-        out.push_str("0");
+        out.push('0');
     }
 }
 
@@ -561,8 +417,8 @@ fn escaped(mut text: &str, mut push: impl FnMut(&str)) {
     push(text);
 }
 
-struct Writer<'s, 'b> {
-    out: Out<'b>,
+struct Writer<'s> {
+    out: String,
     depth: usize,
     scene: &'s Scene,
     all: bool,
@@ -595,7 +451,7 @@ impl<'s> Scope<'s> {
     }
 }
 
-impl<'s> Writer<'s, '_> {
+impl<'s> Writer<'s> {
     fn scope(&mut self) -> &mut Scope<'s> {
         self.item.as_mut().unwrap_or(&mut self.world)
     }
@@ -615,7 +471,7 @@ impl<'s> Writer<'s, '_> {
             }
             self.out.push_str(text);
             if k.place != KeptAt::Attribute {
-                self.out.push_str("\n");
+                self.out.push('\n');
             }
         }
     }
@@ -648,31 +504,24 @@ impl<'s> Writer<'s, '_> {
         self.item = None;
     }
 
-    /// The text from place `from` to place `to`, with the start and end tags of the world
-    /// and of the containers that begin or end between them.
-    fn part(&mut self, from: Place, to: Place) {
-        if from == START {
-            self.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
-            self.put(|at| at == KeptAt::Before);
-            self.open_typed("World", "Version", if self.version == 2 { "2" } else { "1" });
-            if let Some(gravity) = self.scene.gravity() {
-                self.vector("Gravity", gravity);
-            }
+    /// The whole text: the world's start tag, its gravity, its containers and their
+    /// items, and its end tag, each with the kept text around it.
+    fn document(&mut self) {
+        self.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
+        self.put(|at| at == KeptAt::Before);
+        self.open_typed("World", "Version", if self.version == 2 { "2" } else { "1" });
+        if let Some(gravity) = self.scene.gravity() {
+            self.vector("Gravity", gravity);
         }
         let scene = self.scene;
-        let counts = counts(scene);
-        for (container, &count) in counts.iter().enumerate().take(to.0 + 1).skip(from.0) {
+        for (container, count) in counts(scene).into_iter().enumerate() {
             let name = CONTAINERS[container];
-            let first = if container == from.0 { from.1 } else { 0 };
-            let end = if container == to.0 { to.1 } else { count };
             if count == 0 && !self.world.has_within(name) {
                 self.element(name, "");
                 continue;
             }
-            if first == 0 {
-                self.open(name);
-            }
-            for i in first..end {
+            self.open(name);
+            for i in 0..count {
                 let index = i as u32;
                 match container {
                     0 => self.item(Object::Shape(index), |w| w.shape(&scene.shapes()[i])),
@@ -681,14 +530,10 @@ impl<'s> Writer<'s, '_> {
                     _ => self.item(Object::Joint(index), |w| w.joint(&scene.joints()[i])),
                 }
             }
-            if end == count {
-                self.close(name);
-            }
+            self.close(name);
         }
-        if to == END {
-            self.close("World");
-            self.put(|at| at == KeptAt::After);
-        }
+        self.close("World");
+        self.put(|at| at == KeptAt::After);
     }
 
     fn indent(&mut self) {
@@ -717,10 +562,10 @@ impl<'s> Writer<'s, '_> {
 
     /// `<name ...>` on its own line; the object's own start tag gets its kept attributes,
     /// and a child of the object is the one open now.
-    fn open_with(&mut self, name: &'static str, attributes: impl FnOnce(&mut Out<'_>)) {
+    fn open_with(&mut self, name: &'static str, attributes: impl FnOnce(&mut String)) {
         self.before(name);
         self.indent();
-        self.out.push_str("<");
+        self.out.push('<');
         self.out.push_str(name);
         attributes(&mut self.out);
         if self.depth + 1 == self.scope().depth {
@@ -768,7 +613,7 @@ impl<'s> Writer<'s, '_> {
     }
 
     /// `<name>text</name>` on its own line, `text` written straight into the output.
-    fn element_with(&mut self, name: &str, text: impl FnOnce(&mut Out<'_>)) {
+    fn element_with(&mut self, name: &str, text: impl FnOnce(&mut String)) {
         self.before(name);
         self.indent();
         for piece in ["<", name, ">"] {
@@ -783,7 +628,7 @@ impl<'s> Writer<'s, '_> {
     fn vector(&mut self, name: &str, v: Vec2) {
         self.element_with(name, |out| {
             push_float(out, v.x);
-            out.push_str(" ");
+            out.push(' ');
             push_float(out, v.y);
         });
     }
@@ -1063,11 +908,9 @@ mod tests {
     use super::*;
 
     fn float_text(value: f32) -> String {
-        let mut room = [0; 64];
-        let mut out = Out { room: &mut room, written: Written::default() };
+        let mut out = String::new();
         push_float(&mut out, value);
-        let len = out.written.len;
-        String::from_utf8(room[..len].to_vec()).unwrap()
+        out
     }
 
     #[test]
@@ -1132,65 +975,6 @@ mod tests {
                 });
             }
         });
-    }
-
-    /// Rooms that each part fills to the end, falls short of in the middle of a piece,
-    /// or has plenty of, for a text of `len` bytes.
-    fn rooms(len: usize) -> [[usize; 2]; 5] {
-        [[0, 0], [len, 0], [0, len], [len / 3, len / 5 + 1], [room(len), room(len)]]
-    }
-
-    #[test]
-    fn a_text_in_any_room_is_the_text_written_with_room_to_spare() {
-        for (name, bytes) in crate::scene_files() {
-            let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
-            let options = WriteOptions { threads: 1, ..WriteOptions::default() };
-            let text = Text::new(&scene, &options).unwrap();
-            let expected = write(&scene, &options).unwrap();
-            for rooms in rooms(expected.len()) {
-                assert_eq!(text.write(None, rooms), expected.as_bytes(), "{name} in {rooms:?}");
-            }
-        }
-    }
-
-    #[test]
-    fn a_text_cut_anywhere_is_the_text_of_one_thread() {
-        for (name, bytes) in crate::scene_files() {
-            let scene = crate::load(&bytes, &crate::LoadOptions::default()).unwrap();
-            for all_fields in [false, true] {
-                let options = WriteOptions { all_fields, threads: 1 };
-                let expected = write(&scene, &options).unwrap();
-                let text = Text::new(&scene, &options).unwrap();
-                for (container, count) in counts(&scene).into_iter().enumerate() {
-                    for item in 1..count {
-                        for rooms in rooms(expected.len()) {
-                            let cut = text.write(Some((container, item)), rooms);
-                            let place = format!("{name} cut at {container}, {item} in {rooms:?}");
-                            assert_eq!(cut, expected.as_bytes(), "{place}");
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn a_large_scene_is_cut_half_way_and_written_as_on_one_thread() {
-        let body = "<Body Type=\"Dynamic\"><Position>1.5 -2.25</Position><Fixtures /></Body>";
-        let xml = format!(
-            "<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{}</Bodies><Joints /></World>",
-            body.repeat(5000)
-        );
-        let scene = crate::load(xml.as_bytes(), &crate::LoadOptions::default()).unwrap();
-        let text = Text::new(&scene, &WriteOptions::default()).unwrap();
-        assert!(text.size >= MIN_BYTES_FOR_TWO_THREADS, "{}", text.size);
-        assert_eq!(text.half_way(), Some(((2, 2500), 2500 * 300)));
-        let one = write(&scene, &WriteOptions { threads: 1, ..WriteOptions::default() }).unwrap();
-        assert_eq!(write(&scene, &WriteOptions::default()).unwrap(), one);
-        assert_eq!(
-            crate::load(one.as_bytes(), &crate::LoadOptions::default()).unwrap().bodies().len(),
-            5000
-        );
     }
 
     #[test]
