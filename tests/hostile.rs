@@ -627,6 +627,10 @@ fn markup_xml_forbids_in_values_is_malformed() {
     expect_in_both(unquoted.as_bytes(), "unquoted", Code::MalformedXml, 2, 1);
     let twice = "<World Version=\"1\"><Shapes>\n<Shape Type=\"Circle\"><Oddity a=\"1\" a=\"2\"/>";
     expect_in_both(twice.as_bytes(), "ignored-twice", Code::DuplicateAttribute, 2, 36);
+    let farseer = "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+                   <Body Type=\"Static\"/></Bodies><Joints>\n<Joint Type=\"Angle\"><BodyA>0</BodyA>\
+                   <BodyB>1</BodyB><Name>a]]>b</Name></Joint></Joints></World>";
+    expect_in_both(farseer.as_bytes(), "kept-whole", Code::MalformedXml, 2, 60);
     let fine = SCENE.replace(
         "<Shapes/>",
         "<UserData><Value a=\"1\" A=\"&lt;\"><![CDATA[]]>]]]]&gt;</Value></UserData><Shapes/>",

@@ -916,7 +916,9 @@ impl<'a> Parser<'a> {
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
-        if tag.empty {
+        // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
+        // nodes' path checks.
+        if tag.empty || !self.pins.is_empty() {
             return None;
         }
         let at = self.pos;
