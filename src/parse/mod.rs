@@ -24,7 +24,7 @@ mod world;
 
 pub(crate) use joint::canonical_joint;
 use names::{Element, elements};
-pub(crate) use user_data::user_data_fragment;
+pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 
 use std::borrow::Cow;
 use std::path::Path;
