@@ -13,7 +13,7 @@
 
 use crate::LoadOptions;
 use crate::error::{Code, Error, Finding, Parsed, Position, Severity, problem};
-use crate::parse::{canonical_joint, user_data_fragment};
+use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
 use crate::scene::{Body, Diagnostic, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
@@ -114,8 +114,8 @@ impl Builder {
             }
             (None, None) => String::new(),
         };
-        let (type_name, value) =
-            user_data_fragment(&raw).map_err(|e| refused("user data", index, &e))?;
+        let (type_name, value) = user_data_fragment(&raw, USER_DATA_DEPTH)
+            .map_err(|e| refused("user data", index, &e))?;
         let user_data = UserData {
             raw: self.scene.add_str(&raw),
             type_name: type_name.map_or(Str::NULL, |t| self.scene.add_str(&t)),

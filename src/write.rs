@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use crate::LoadOptions;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::input::first_non_char;
-use crate::parse::user_data_fragment;
+use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE, Object};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
@@ -41,6 +41,7 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     unwritable_joint(scene)?;
     clashing_attributes(scene)?;
     unwritable_texts(scene)?;
+    unreadable_kept_text(scene)?;
     let size = estimated_size(scene);
     let mut writer = Writer {
         out: String::with_capacity(size + size / 8 + 4096),
@@ -100,7 +101,7 @@ fn unwritable_texts(scene: &Scene) -> Result<(), Error> {
             writable_text("its Name", name).map_err(|e| unwritable(object, e))?;
         }
         if let Some(raw) = scene.user_data_at(user_data).and_then(|u| scene.text(u.raw)) {
-            writable_user_data(raw).map_err(|why| {
+            writable_content(raw, USER_DATA_DEPTH).map_err(|why| {
                 let message = format!("its UserData: {}", why.message);
                 unwritable(object, Box::new(Finding { message, ..*why }))
             })?;
@@ -137,20 +138,49 @@ pub(crate) fn writable_text(field: &str, text: &str) -> Parsed<()> {
     Ok(())
 }
 
-/// Whether the UserData `raw`, written verbatim, reads back with the default load options.
-/// Most is plainly short and shallow; the rest is read as the loader would read it.
-fn writable_user_data(raw: &str) -> Parsed<()> {
+/// Whether `raw`, XML content written verbatim inside `depth` open elements, reads back
+/// with the default load options. Most is plainly short and shallow; the rest is read as
+/// the loader would read it there.
+fn writable_content(raw: &str, depth: u32) -> Parsed<()> {
     let default = LoadOptions::default();
-    // A written UserData is the fourth level of its file, and each `<` opens one more at
-    // most.
+    // Each `<` opens one more element at most.
     let tags = memchr::memchr_iter(b'<', raw.as_bytes()).count() as u64;
     let plain = first_non_char(raw.as_bytes()).is_none()
         && raw.len() as u64 <= default.max_text_bytes
-        && 4 + tags <= u64::from(default.max_depth);
+        && u64::from(depth) + tags <= u64::from(default.max_depth);
     match plain {
         true => Ok(()),
-        false => user_data_fragment(raw).map(|_| ()),
+        false => user_data_fragment(raw, depth).map(|_| ()),
     }
+}
+
+/// The error for the first text kept from a loaded file that a load with the default
+/// options would refuse from the written file (a scene loaded with larger limits may hold
+/// a long comment, or an unknown element nested deep).
+fn unreadable_kept_text(scene: &Scene) -> Result<(), Error> {
+    for kept in &scene.kept {
+        // How many elements are open where the text is written.
+        let depth = match (kept.object, kept.place) {
+            (_, KeptAt::Attribute) => continue,
+            (Object::World, KeptAt::Before | KeptAt::After) => 0,
+            (Object::World, KeptAt::Inside { within: "", .. }) => 1,
+            (Object::World, _) => 2,
+            (_, KeptAt::Before | KeptAt::After | KeptAt::Whole) => 2,
+            (_, KeptAt::Inside { within: "", .. }) => 3,
+            (_, KeptAt::Inside { .. }) => 4,
+        };
+        let text = scene.text(kept.text).unwrap_or_default();
+        writable_content(text, depth).map_err(|why| Error {
+            code: why.code,
+            position: Position::default(),
+            message: format!(
+                "{}: what its file held beyond the records: {}, so the scene cannot be \
+                 written",
+                kept.object, why.message
+            ),
+        })?;
+    }
+    Ok(())
 }
 
 /// The error for the first object whose start tag would carry one attribute name twice

@@ -857,6 +857,15 @@ fn a_position_after_crlf_in_a_value_is_on_its_line() {
     expect_marked_error_in_both(&density("\r\n ⌖-1"), Code::NegativeValue);
 }
 
+/// A CR LF cut by the end of a 64 KiB piece of the file is one line end all the same.
+#[test]
+fn a_crlf_across_a_piece_of_the_file_is_one_line_end() {
+    // 27 bytes before the first CR LF: the one at 65535 is cut.
+    let xml =
+        format!("<World Version=\"1\"><Shapes>{}<Shape Type=\"Nope\"/>", "\r\n".repeat(40_000));
+    expect_error_in_both(xml.as_bytes(), Code::UnknownType, 40_001, 14);
+}
+
 /// A lone CR (old Mac line ends) ends a line too.
 #[test]
 fn a_lone_cr_starts_a_line() {

@@ -577,6 +577,23 @@ fn double_hyphens_inside_a_comment_are_malformed() {
     expect_in_both(in_user_data.as_bytes(), "user-data", Code::MalformedXml, 1, 55);
     let fine = format!("<!---->{SCENE}<!-- - -->");
     load_bytes(fine.as_bytes()).expect("single hyphens and an empty comment are allowed");
+    // Across the end of the first 64 KiB read from a file, `--` still counts, and `-->`
+    // still ends the comment.
+    for shift in 0..4 {
+        let pad = " ".repeat((1 << 16) - 20 - 9 - shift);
+        let cut = format!("<World Version=\"1\">\n{pad}<!-- ab -- c -->");
+        expect_in_both(
+            cut.as_bytes(),
+            &format!("cut-{shift}"),
+            Code::MalformedXml,
+            2,
+            pad.len() as u32 + 9,
+        );
+        let head = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>\n";
+        let pad = " ".repeat((1 << 16) - 1 - shift - head.len() - 12);
+        let ends = format!("{head}{pad}<!-- ab - c -->\n</World>");
+        load_from_a_file(ends.as_bytes(), &format!("cut-end-{shift}")).expect("the comment ends");
+    }
 }
 
 /// A file has one XML declaration, at its very start (after a byte-order mark at most).
@@ -610,6 +627,10 @@ fn markup_xml_forbids_in_values_is_malformed() {
     expect_in_both(unquoted.as_bytes(), "unquoted", Code::MalformedXml, 2, 1);
     let twice = "<World Version=\"1\"><Shapes>\n<Shape Type=\"Circle\"><Oddity a=\"1\" a=\"2\"/>";
     expect_in_both(twice.as_bytes(), "ignored-twice", Code::DuplicateAttribute, 2, 36);
+    let farseer = "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+                   <Body Type=\"Static\"/></Bodies><Joints>\n<Joint Type=\"Angle\"><BodyA>0</BodyA>\
+                   <BodyB>1</BodyB><Name>a]]>b</Name></Joint></Joints></World>";
+    expect_in_both(farseer.as_bytes(), "kept-whole", Code::MalformedXml, 2, 60);
     let fine = SCENE.replace(
         "<Shapes/>",
         "<UserData><Value a=\"1\" A=\"&lt;\"><![CDATA[]]>]]]]&gt;</Value></UserData><Shapes/>",

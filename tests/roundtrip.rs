@@ -310,14 +310,22 @@ fn what_a_default_load_would_refuse_is_not_written() {
          <BodyA>0</BodyA><BodyB>1</BodyB><UserData>{deep}</UserData></Joint></Joints></World>"
     )
     .replace("<Bodies/>", "<Bodies><Body Type=\"Static\"/><Body Type=\"Static\"/></Bodies>");
+    // <World>, <Odd> and 63 more: one level past the limit.
+    let deep_unknown = format!(
+        "<World Version=\"1\"><Odd>{}</Odd><Shapes/><Fixtures/><Bodies/><Joints/></World>",
+        "<a>".repeat(63) + &"</a>".repeat(63)
+    );
     let cases = [
         (long_name, Code::LimitExceeded, "body 1: its Name is 1048577 bytes long written"),
         (deep_user_data, Code::LimitExceeded, "joint 0: its UserData: "),
+        (deep_unknown, Code::LimitExceeded, "the world: what its file held beyond the records: "),
     ];
     for (xml, code, start) in cases {
         let scene = load(xml.as_bytes(), &generous).unwrap();
         for options in MODES {
-            let error = write(&scene, &options).unwrap_err();
+            let Err(error) = write(&scene, &options) else {
+                panic!("{start}... is written");
+            };
             assert_eq!(error.code, code, "{}", error.message);
             assert!(error.message.starts_with(start), "{}", error.message);
             assert!(error.message.ends_with("so the scene cannot be written"), "{}", error.message);
@@ -329,6 +337,10 @@ fn what_a_default_load_would_refuse_is_not_written() {
          <Name>{}</Name><UserData>{}</UserData></Body></Bodies><Joints/></World>",
         "n".repeat(most),
         "<a>".repeat(60) + &"</a>".repeat(60)
+    )
+    .replace(
+        "<Shapes/>",
+        &format!("<Odd>{}</Odd><Shapes/>", "<a>".repeat(62) + &"</a>".repeat(62)),
     );
     assert_round_trip(
         &load(at_limit.as_bytes(), &generous).unwrap(),

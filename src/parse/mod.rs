@@ -24,7 +24,7 @@ mod world;
 
 pub(crate) use joint::canonical_joint;
 use names::{Element, elements};
-pub(crate) use user_data::user_data_fragment;
+pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 
 use std::borrow::Cow;
 
@@ -767,7 +767,9 @@ impl<'a> Parser<'a> {
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
-        if tag.empty {
+        // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
+        // nodes' path checks.
+        if tag.empty || !self.pins.is_empty() {
             return None;
         }
         let at = self.pos;

@@ -1,5 +1,5 @@
 //! `<UserData>`: kept verbatim, never interpreted, plus the type name and value text when
-//! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (spec section 7).
+//! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (docs/format.md, "UserData").
 
 use super::{Node, Parser, Tag, trim_xml};
 use crate::LoadOptions;
@@ -7,16 +7,22 @@ use crate::error::{Code, Parsed, problem};
 use crate::input::Source;
 use crate::scene::{Str, UserData};
 
+/// Where a UserData is written: inside `<World>`, a container, an item and `<UserData>`.
+pub(crate) const USER_DATA_DEPTH: u32 = 4;
+
 /// Reads `raw` as the content of a `<UserData>` element, exactly as the loader would read
-/// it from a written file with the default options: the type name and value text when it
-/// has the editor's form. Fails when `raw` is not well-formed XML content, or when the
-/// loader would refuse it.
-pub(crate) fn user_data_fragment(raw: &str) -> Parsed<(Option<String>, Option<String>)> {
+/// it from a written file with the default options, inside `depth` open elements
+/// ([`USER_DATA_DEPTH`] for UserData): the type name and value text when it has the
+/// editor's form. Fails when `raw` is not well-formed XML content, or when the loader
+/// would refuse it there.
+pub(crate) fn user_data_fragment(
+    raw: &str,
+    depth: u32,
+) -> Parsed<(Option<String>, Option<String>)> {
     let document = format!("<UserData>{raw}</UserData>");
-    // A written UserData lies inside <World>, a container and an item: three levels
-    // deeper than here.
+    // Here it lies inside one element, `<UserData>`.
     let default = LoadOptions::default();
-    let options = LoadOptions { max_depth: default.max_depth - 3, ..default };
+    let options = LoadOptions { max_depth: default.max_depth + 1 - depth, ..default };
     let source =
         Source::memory(document.as_bytes(), &options).map_err(|e| problem(e.code, 0, e.message))?;
     let mut parser = Parser::new(source, &options);
