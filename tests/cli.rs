@@ -5,6 +5,8 @@ use std::fs;
 use std::path::PathBuf;
 use std::process::Command;
 
+use serde_json::{Value, json};
+
 /// A valid scene with no warnings: one circle on one dynamic body. The variants below each
 /// change one line of it, so that every test differs from it in exactly one way.
 const CLEAN: &str = r#"<?xml version="1.0" encoding="utf-8"?>
@@ -278,6 +280,22 @@ fn version_prints_the_crate_version() {
     assert_eq!(run.stdout, format!("box2scene {}\n", env!("CARGO_PKG_VERSION")));
 }
 
+/// A JSON number as the dump spelled it (serde_json keeps the text), so that a test can
+/// assert the exact shortest float form.
+fn number(value: &Value) -> String {
+    value.as_number().unwrap_or_else(|| panic!("expected a number, got {value}")).to_string()
+}
+
+/// The spellings of an array of numbers (a vector, a list of indices).
+fn numbers(value: &Value) -> Vec<String> {
+    value
+        .as_array()
+        .unwrap_or_else(|| panic!("expected an array, got {value}"))
+        .iter()
+        .map(number)
+        .collect()
+}
+
 /// Every kind of record, a name with characters JSON must escape, editor-style user data,
 /// and the editor's garbage gravity, whose shortest float text is known.
 const DUMPED: &str = r#"<?xml version="1.0" encoding="utf-8"?>
@@ -336,53 +354,53 @@ fn dump_prints_the_scene_as_json() {
     let run = sandbox.write("level.xml", DUMPED).run(&["dump", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
     assert!(run.stdout.ends_with("}\n"), "the dump is a text file: {:?}", run.stdout);
-    let scene = json::parse(&run.stdout);
+    let scene: Value = serde_json::from_str(&run.stdout).expect("the dump is JSON");
 
-    assert_eq!(scene["version"].number(), "1");
-    assert_eq!(scene["gravity"].numbers(), ["8.369571e-36", "1.001022e-38"]);
+    assert_eq!(number(&scene["version"]), "1");
+    assert_eq!(numbers(&scene["gravity"]), ["8.369571e-36", "1.001022e-38"]);
 
     let wheel = &scene["shapes"][0];
-    assert_eq!(wheel["kind"].string(), "circle");
-    assert_eq!(wheel["name"].string(), "wheel \"A\" & tab\tend");
-    assert_eq!(wheel["radius"].number(), "0.5");
-    assert_eq!(wheel["position"].numbers(), ["0.0", "0.25"]);
-    assert_eq!(wheel["vertices"].items().len(), 0);
+    assert_eq!(wheel["kind"], "circle");
+    assert_eq!(wheel["name"], "wheel \"A\" & tab\tend");
+    assert_eq!(number(&wheel["radius"]), "0.5");
+    assert_eq!(numbers(&wheel["position"]), ["0.0", "0.25"]);
+    assert_eq!(wheel["vertices"], json!([]));
     let ground = &scene["shapes"][1];
-    assert_eq!(ground["kind"].string(), "polygon");
+    assert_eq!(ground["kind"], "polygon");
     assert!(ground["name"].is_null());
-    assert_eq!(ground["vertices"][0].numbers(), ["-40.0", "0.0"]);
-    assert_eq!(ground["vertices"][1].numbers(), ["40.0", "0.0"]);
+    assert_eq!(numbers(&ground["vertices"][0]), ["-40.0", "0.0"]);
+    assert_eq!(numbers(&ground["vertices"][1]), ["40.0", "0.0"]);
     assert!(ground["centroid"].is_null(), "an absent centroid is not (0, 0)");
 
     let fixture = &scene["fixtures"][0];
-    assert_eq!(fixture["shape"].number(), "0");
-    assert_eq!(fixture["density"].number(), "5.0");
-    assert_eq!(fixture["friction"].number(), "0.2");
-    assert_eq!(fixture["filter"]["mask_bits"].number(), "65535");
-    assert_eq!(scene["fixtures"][1]["friction"].number(), "0.2", "the default friction");
+    assert_eq!(number(&fixture["shape"]), "0");
+    assert_eq!(number(&fixture["density"]), "5.0");
+    assert_eq!(number(&fixture["friction"]), "0.2");
+    assert_eq!(number(&fixture["filter"]["mask_bits"]), "65535");
+    assert_eq!(number(&scene["fixtures"][1]["friction"]), "0.2", "the default friction");
 
     let wagon = &scene["bodies"][0];
-    assert_eq!(wagon["kind"].string(), "dynamic");
-    assert_eq!(wagon["position"].numbers(), ["0.0", "20.0"]);
-    assert_eq!(wagon["fixtures"].numbers(), ["0"]);
+    assert_eq!(wagon["kind"], "dynamic");
+    assert_eq!(numbers(&wagon["position"]), ["0.0", "20.0"]);
+    assert_eq!(numbers(&wagon["fixtures"]), ["0"]);
     assert!(wagon["mass_data"]["mass"].is_null());
     assert!(wagon["user_data"].is_null());
     let user_data = &scene["bodies"][1]["user_data"];
     assert_eq!(
-        user_data["raw"].string(),
+        user_data["raw"],
         "<Type>System.String</Type><Value><string>Ground</string></Value>"
     );
-    assert_eq!(user_data["type_name"].string(), "System.String");
-    assert_eq!(user_data["value"].string(), "Ground");
+    assert_eq!(user_data["type_name"], "System.String");
+    assert_eq!(user_data["value"], "Ground");
 
     let hinge = &scene["joints"][0];
-    assert_eq!(hinge["kind"].string(), "revolute");
-    assert_eq!((hinge["body_a"].number(), hinge["body_b"].number()), ("1", "0"));
+    assert_eq!(hinge["kind"], "revolute");
+    assert_eq!((number(&hinge["body_a"]), number(&hinge["body_b"])), ("1".into(), "0".into()));
     assert!(hinge["joint_a"].is_null(), "NONE is null");
-    assert_eq!(hinge["local_anchor_a"].numbers(), ["0.0", "12.0"]);
-    assert_eq!(hinge["collide_connected"], json::Value::Bool(false));
+    assert_eq!(numbers(&hinge["local_anchor_a"]), ["0.0", "12.0"]);
+    assert_eq!(hinge["collide_connected"], false);
 
-    assert_eq!(scene["diagnostics"].items().len(), 0);
+    assert_eq!(scene["diagnostics"], json!([]));
 }
 
 #[test]
@@ -391,15 +409,17 @@ fn dump_includes_the_warnings() {
     let sandbox = Sandbox::new("dump-warning");
     let run = sandbox.write("level.xml", &xml).run(&["dump", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
-    let scene = json::parse(&run.stdout);
+    let scene: Value = serde_json::from_str(&run.stdout).expect("the dump is JSON");
     let (line, column) = locate(&xml, "<Foo/>");
-    let [warning] = scene["diagnostics"].items() else { panic!("one diagnostic expected") };
-    assert_eq!(warning["severity"].string(), "warning");
-    assert_eq!(warning["code"].string(), "unknown-element");
-    assert_eq!(warning["line"].number(), line.to_string());
-    assert_eq!(warning["column"].number(), column.to_string());
+    let [warning] = &scene["diagnostics"].as_array().expect("an array")[..] else {
+        panic!("one diagnostic expected")
+    };
+    assert_eq!(warning["severity"], "warning");
+    assert_eq!(warning["code"], "unknown-element");
+    assert_eq!(warning["line"], line);
+    assert_eq!(warning["column"], column);
     let byte_offset = xml.find("<Foo/>").expect("the element is there");
-    assert_eq!(warning["byte_offset"].number(), byte_offset.to_string());
+    assert_eq!(warning["byte_offset"], byte_offset);
 }
 
 #[test]
@@ -426,234 +446,6 @@ fn dump_of_a_missing_file_exits_2() {
     let run = Sandbox::new("dump-missing").run(&["dump", "absent.xml"]);
     assert_eq!((run.status, run.stdout.as_str()), (2, ""));
     assert_report(run.stderr.trim_end(), "absent.xml: error[io-error]: ", "absent.xml");
-}
-
-/// Just enough JSON to check a dump: a strict reader of RFC 8259 text that keeps numbers
-/// as their text, so that tests can assert the exact (shortest) float form.
-mod json {
-    use std::ops::Index;
-
-    #[derive(Debug, PartialEq)]
-    pub enum Value {
-        Null,
-        Bool(bool),
-        Number(String),
-        String(String),
-        Array(Vec<Value>),
-        Object(Vec<(String, Value)>),
-    }
-
-    /// Parses a whole document; panics with the offset on anything that is not JSON.
-    pub fn parse(text: &str) -> Value {
-        let mut reader = Reader { text, at: 0 };
-        let value = reader.value();
-        reader.skip_blanks();
-        assert_eq!(reader.at, text.len(), "text after the JSON value");
-        value
-    }
-
-    impl Value {
-        pub fn is_null(&self) -> bool {
-            *self == Value::Null
-        }
-        pub fn number(&self) -> &str {
-            match self {
-                Value::Number(text) => text,
-                other => panic!("expected a number, got {other:?}"),
-            }
-        }
-        pub fn string(&self) -> &str {
-            match self {
-                Value::String(text) => text,
-                other => panic!("expected a string, got {other:?}"),
-            }
-        }
-        pub fn items(&self) -> &[Value] {
-            match self {
-                Value::Array(items) => items,
-                other => panic!("expected an array, got {other:?}"),
-            }
-        }
-        /// The texts of an array of numbers (a vector, a list of indices).
-        pub fn numbers(&self) -> Vec<&str> {
-            self.items().iter().map(Value::number).collect()
-        }
-    }
-
-    impl Index<usize> for Value {
-        type Output = Value;
-        fn index(&self, i: usize) -> &Value {
-            self.items().get(i).unwrap_or_else(|| panic!("no item {i} in {self:?}"))
-        }
-    }
-
-    impl Index<&str> for Value {
-        type Output = Value;
-        fn index(&self, key: &str) -> &Value {
-            let Value::Object(fields) = self else { panic!("expected an object, got {self:?}") };
-            let found = fields.iter().find(|(k, _)| k == key);
-            &found.unwrap_or_else(|| panic!("no key {key:?} in {self:?}")).1
-        }
-    }
-
-    struct Reader<'t> {
-        text: &'t str,
-        at: usize,
-    }
-
-    impl Reader<'_> {
-        fn value(&mut self) -> Value {
-            self.skip_blanks();
-            match self.peek() {
-                Some('{') => self.object(),
-                Some('[') => self.array(),
-                Some('"') => Value::String(self.string()),
-                Some('t') => self.word("true", Value::Bool(true)),
-                Some('f') => self.word("false", Value::Bool(false)),
-                Some('n') => self.word("null", Value::Null),
-                _ => self.number(),
-            }
-        }
-
-        fn object(&mut self) -> Value {
-            let mut fields = Vec::new();
-            self.expect('{');
-            if !self.closes('}') {
-                loop {
-                    self.skip_blanks();
-                    let key = self.string();
-                    self.skip_blanks();
-                    self.expect(':');
-                    fields.push((key, self.value()));
-                    if self.closes('}') {
-                        break;
-                    }
-                    self.expect(',');
-                }
-            }
-            Value::Object(fields)
-        }
-
-        fn array(&mut self) -> Value {
-            let mut items = Vec::new();
-            self.expect('[');
-            if !self.closes(']') {
-                loop {
-                    items.push(self.value());
-                    if self.closes(']') {
-                        break;
-                    }
-                    self.expect(',');
-                }
-            }
-            Value::Array(items)
-        }
-
-        fn string(&mut self) -> String {
-            self.expect('"');
-            let mut out = String::new();
-            loop {
-                match self.take_char() {
-                    '"' => return out,
-                    '\\' => out.push(self.escape()),
-                    c if u32::from(c) < 0x20 => self.fail("a raw control character in a string"),
-                    c => out.push(c),
-                }
-            }
-        }
-
-        fn escape(&mut self) -> char {
-            match self.take_char() {
-                c @ ('"' | '\\' | '/') => c,
-                'b' => '\u{8}',
-                'f' => '\u{c}',
-                'n' => '\n',
-                'r' => '\r',
-                't' => '\t',
-                'u' => {
-                    let hex = self.text.get(self.at..self.at + 4).unwrap_or("");
-                    let code = u32::from_str_radix(hex, 16).unwrap_or_else(|_| self.fail("\\u"));
-                    self.at += 4;
-                    // The dump escapes only control characters, never a surrogate pair.
-                    char::from_u32(code).unwrap_or_else(|| self.fail("a surrogate escape"))
-                }
-                _ => self.fail("an unknown escape"),
-            }
-        }
-
-        /// `-? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?`, kept as text.
-        fn number(&mut self) -> Value {
-            let start = self.at;
-            self.eat('-');
-            if !self.eat('0') {
-                self.digits();
-            }
-            if self.eat('.') {
-                self.digits();
-            }
-            if self.eat('e') || self.eat('E') {
-                let _ = self.eat('+') || self.eat('-');
-                self.digits();
-            }
-            Value::Number(self.text[start..self.at].to_owned())
-        }
-
-        fn digits(&mut self) {
-            let count = self.text[self.at..].chars().take_while(char::is_ascii_digit).count();
-            if count == 0 {
-                self.fail("a digit");
-            }
-            self.at += count;
-        }
-
-        fn word(&mut self, word: &str, value: Value) -> Value {
-            if !self.text[self.at..].starts_with(word) {
-                self.fail(word);
-            }
-            self.at += word.len();
-            value
-        }
-
-        /// Consumes `close` if it comes next, after blanks.
-        fn closes(&mut self, close: char) -> bool {
-            self.skip_blanks();
-            self.eat(close)
-        }
-
-        fn expect(&mut self, c: char) {
-            self.skip_blanks();
-            if !self.eat(c) {
-                self.fail(&format!("{c:?}"));
-            }
-        }
-
-        fn eat(&mut self, c: char) -> bool {
-            let here = self.peek() == Some(c);
-            if here {
-                self.at += c.len_utf8();
-            }
-            here
-        }
-
-        fn take_char(&mut self) -> char {
-            let c = self.peek().unwrap_or_else(|| self.fail("more text"));
-            self.at += c.len_utf8();
-            c
-        }
-
-        fn peek(&self) -> Option<char> {
-            self.text[self.at..].chars().next()
-        }
-
-        fn skip_blanks(&mut self) {
-            let rest = &self.text[self.at..];
-            self.at += rest.len() - rest.trim_start_matches([' ', '\t', '\n', '\r']).len();
-        }
-
-        fn fail(&self, expected: &str) -> ! {
-            panic!("not JSON at byte {}: expected {expected}", self.at)
-        }
-    }
 }
 
 #[test]
