@@ -2,8 +2,9 @@
 //! directory, exact output lines and exit statuses.
 
 use std::fs;
+use std::io::Write;
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 use serde_json::{Value, json};
 
@@ -128,6 +129,27 @@ fn lines(text: &str) -> Vec<&str> {
     text.lines().collect()
 }
 
+/// `check`'s report of one diagnostic: the `FILE:LINE:COLUMN: ...` line, the line of the
+/// file it points at, and the caret line.
+fn one_report(stdout: &str) -> [&str; 3] {
+    match lines(stdout)[..] {
+        [report, shown, caret] => [report, shown, caret],
+        _ => panic!("one report of three lines expected:\n{stdout}"),
+    }
+}
+
+/// Asserts that `shown` is the line of `text` holding `needle` and that `caret` puts its
+/// `^` under the needle's first character, with the line's tabs kept before it.
+fn assert_points_at(shown: &str, caret: &str, text: &str, needle: &str) {
+    let at = text.find(needle).unwrap_or_else(|| panic!("{needle:?} not in the text"));
+    let start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    assert_eq!(shown, &text[start..end]);
+    let lead: String =
+        text[start..at].chars().map(|c| if c == '\t' { '\t' } else { ' ' }).collect();
+    assert_eq!(caret, format!("{lead}^"));
+}
+
 #[test]
 fn check_prints_nothing_for_a_clean_file_and_exits_0() {
     let sandbox = Sandbox::new("clean");
@@ -142,8 +164,9 @@ fn check_reports_an_unknown_element_as_a_warning_and_exits_0() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "<Foo/>");
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: warning[unknown-element]: "), "Foo");
+    assert_eq!((shown, caret), ("      <Foo/>", "      ^"));
 }
 
 #[test]
@@ -153,12 +176,13 @@ fn check_reports_a_missing_container_at_the_world_element() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "<World");
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(
         report,
         &format!("level.xml:{line}:{column}: warning[missing-container]: "),
         "Joints",
     );
+    assert_points_at(shown, caret, &xml, "<World");
 }
 
 #[test]
@@ -168,8 +192,9 @@ fn strict_check_turns_a_warning_into_an_error_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "--strict", "level.xml"]);
     let (line, column) = locate(&xml, "<Foo/>");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[unknown-element]: "), "Foo");
+    assert_points_at(shown, caret, &xml, "<Foo/>");
 }
 
 #[test]
@@ -186,8 +211,9 @@ fn check_reports_an_invalid_float_at_its_value_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_eq!((shown, caret), ("      <Density>abc</Density>", "               ^"));
 }
 
 #[test]
@@ -197,19 +223,50 @@ fn a_value_is_located_at_its_first_non_blank_character() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
 }
 
 #[test]
-fn columns_count_characters_not_bytes() {
-    let xml = clean_with("<Bullet>False</Bullet>", "<Name>Kiste für Äpfel</Name><Foo/>");
-    assert_eq!(locate(&xml, "<Foo/>"), (19, 35), "the test's own arithmetic");
+fn the_caret_counts_characters_not_bytes_and_keeps_tabs() {
+    let xml =
+        clean_with("      <Bullet>False</Bullet>", "\t\t<Name>Kiste für Äpfel</Name>\t<Foo/>");
+    assert_eq!(locate(&xml, "<Foo/>"), (19, 32), "the test's own arithmetic");
     let sandbox = Sandbox::new("columns");
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
-    assert_report(report, "level.xml:19:35: warning[unknown-element]: ", "Foo");
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, "level.xml:19:32: warning[unknown-element]: ", "Foo");
+    assert_eq!(shown, "\t\t<Name>Kiste für Äpfel</Name>\t<Foo/>");
+    assert_eq!(caret, format!("\t\t{}\t^", " ".repeat(28)));
+}
+
+#[test]
+fn a_long_line_is_shown_around_the_column() {
+    let (before, after) = ("x".repeat(300), "z".repeat(300));
+    let long = format!("<Name>{before}</Name><Foo/><!-- {after} -->");
+    let xml = clean_with("<Bullet>False</Bullet>", &long);
+    let sandbox = Sandbox::new("long-line");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, "level.xml:19:320: warning[unknown-element]: ", "Foo");
+    // 120 characters of the line, the column in the middle, "..." where it was cut.
+    assert_eq!(caret, format!("{}^", " ".repeat(63)));
+    let expected = format!("...{}</Name><Foo/><!-- {}...", "x".repeat(53), "z".repeat(49));
+    assert_eq!(shown, expected);
+    assert!(shown[63..].starts_with("<Foo/>"));
+}
+
+#[test]
+fn a_crlf_file_shows_its_lines_without_the_carriage_return() {
+    let xml = with_unknown_element();
+    let sandbox = Sandbox::new("crlf");
+    let run = sandbox.write("level.xml", &xml.replace('\n', "\r\n")).run(&["check", "level.xml"]);
+    let (line, column) = locate(&xml, "<Foo/>");
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, &format!("level.xml:{line}:{column}: warning[unknown-element]: "), "Foo");
+    assert_points_at(shown, caret, &xml, "<Foo/>");
 }
 
 #[test]
@@ -218,8 +275,9 @@ fn check_goes_on_after_an_unreadable_file_and_exits_2() {
     sandbox.write("level.xml", &with_unknown_element()).write("bad.xml", &with_bad_density());
     let run = sandbox.run(&["check", "absent.xml", "level.xml", "bad.xml"]);
     assert_eq!(run.status, 2, "{}", run.stderr);
-    let [absent, warning, error] = lines(&run.stdout)[..] else {
-        panic!("three lines expected:\n{}", run.stdout)
+    // A report without a position has no line to show.
+    let [absent, warning, _, _, error, _, _] = lines(&run.stdout)[..] else {
+        panic!("one line and two reports of three lines expected:\n{}", run.stdout)
     };
     assert_report(absent, "absent.xml: error[io-error]: ", "absent.xml");
     assert!(warning.starts_with("level.xml:"), "{warning}");
@@ -232,52 +290,225 @@ fn check_exits_1_when_any_file_has_an_error() {
     sandbox.write("bad.xml", &with_bad_density()).write("clean.xml", CLEAN);
     let run = sandbox.run(&["check", "bad.xml", "clean.xml"]);
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [error] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [error, _, _] = one_report(&run.stdout);
     assert!(error.starts_with("bad.xml:"), "{error}");
 }
 
 #[test]
-fn usage_errors_exit_2_with_the_usage_on_stderr() {
+fn check_json_prints_one_object_a_line_per_diagnostic() {
+    let sandbox = Sandbox::new("json");
+    let (warned, bad) = (with_unknown_element(), with_bad_density());
+    sandbox.write("level.xml", &warned).write("bad.xml", &bad).write("clean.xml", CLEAN);
+    let run =
+        sandbox.run(&["check", "--format=json", "absent.xml", "level.xml", "clean.xml", "bad.xml"]);
+    assert_eq!((run.status, run.stderr.as_str()), (2, ""));
+    let [absent, warning, error] = lines(&run.stdout)[..] else {
+        panic!("three lines expected:\n{}", run.stdout)
+    };
+    let position = |xml: &str, needle: &str| {
+        let (line, column) = locate(xml, needle);
+        (line, column, xml.find(needle).expect("the needle is there"))
+    };
+    let expected = [
+        (absent, "absent.xml", (0, 0, 0), "error", "io-error", "absent.xml"),
+        (warning, "level.xml", position(&warned, "<Foo/>"), "warning", "unknown-element", "Foo"),
+        (error, "bad.xml", position(&bad, "abc"), "error", "invalid-float", "abc"),
+    ];
+    for (text, file, (line, column, byte_offset), severity, code, culprit) in expected {
+        let mut report: Value = serde_json::from_str(text).expect("each line is JSON");
+        let message = report["message"].take();
+        assert!(message.as_str().is_some_and(|m| m.contains(culprit)), "{text}");
+        let fields = json!({
+            "file": file, "line": line, "column": column, "byte_offset": byte_offset,
+            "severity": severity, "code": code, "message": null,
+        });
+        assert_eq!(report, fields);
+    }
+}
+
+#[test]
+fn check_json_escapes_what_json_must() {
+    let sandbox = Sandbox::new("json-escape");
+    let name = "a \"tricky\"\\name.xml";
+    let run = sandbox.run(&["check", "--format", "json", name]);
+    assert_eq!(run.status, 2);
+    let report: Value = serde_json::from_str(&run.stdout).expect("one line of JSON");
+    assert_eq!(report["file"], name);
+    assert!(report["message"].as_str().is_some_and(|m| m.contains(name)), "{}", run.stdout);
+}
+
+/// `ARGS` with `input` on standard input.
+fn run_with_input(sandbox: &Sandbox, args: &[&str], input: &str) -> Run {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_box2scene"))
+        .args(args)
+        .current_dir(&sandbox.dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let mut stdin = child.stdin.take().expect("standard input is piped");
+    stdin.write_all(input.as_bytes()).expect("the binary reads its input");
+    drop(stdin);
+    let output = child.wait_with_output().expect("the binary ends");
+    Run {
+        status: output.status.code().expect("the binary exits rather than being killed"),
+        stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),
+        stderr: String::from_utf8(output.stderr).expect("stderr is UTF-8"),
+    }
+}
+
+#[test]
+fn a_dash_reads_standard_input_for_every_command() {
+    let xml = with_unknown_element();
+    let sandbox = Sandbox::new("stdin");
+    sandbox.write("level.xml", &xml);
+    for command in [&["check"][..], &["check", "--format=json"], &["dump"], &["fmt"]] {
+        let from_file = sandbox.run(&[command, &["level.xml"]].concat());
+        let from_stdin = run_with_input(&sandbox, &[command, &["-"]].concat(), &xml);
+        assert_eq!((from_stdin.status, from_stdin.stderr.as_str()), (0, ""), "{command:?}");
+        assert!(!from_stdin.stdout.is_empty(), "{command:?}");
+        assert_eq!(from_stdin.stdout, from_file.stdout.replace("level.xml", "<stdin>"));
+    }
+}
+
+#[test]
+fn an_error_on_standard_input_is_reported_as_stdin() {
+    let xml = with_bad_density();
+    let run = run_with_input(&Sandbox::new("stdin-error"), &["dump", "-"], &xml);
+    let (line, column) = locate(&xml, "abc");
+    assert_eq!((run.status, run.stdout.as_str()), (1, ""));
+    let [report, shown, caret] = one_report(&run.stderr);
+    assert_report(report, &format!("<stdin>:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
+}
+
+#[test]
+fn a_usage_slip_prints_one_line_and_where_to_read_more() {
     let sandbox = Sandbox::new("usage");
     sandbox.write("clean.xml", CLEAN);
-    let mistakes: &[&[&str]] = &[
-        &[],
-        &["frobnicate", "clean.xml"],
-        &["check"],
-        &["check", "--bogus", "clean.xml"],
-        &["check", "-s", "clean.xml"],
-        &["dump"],
-        &["dump", "clean.xml", "clean.xml"],
-        &["dump", "--pretty", "clean.xml"],
-        &["fmt"],
-        &["fmt", "clean.xml", "-o"],
-        &["fmt", "clean.xml", "clean.xml"],
+    let mistakes: &[(&[&str], &str)] = &[
+        (&[], "no command given; see 'box2scene help'"),
+        (&["frobnicate", "clean.xml"], "unknown command 'frobnicate'; see 'box2scene help'"),
+        (&["help", "frobnicate"], "unknown command 'frobnicate'; see 'box2scene help'"),
+        (&["help", "check", "dump"], "unexpected 'dump'; see 'box2scene help'"),
+        (&["--version", "clean.xml"], "unexpected 'clean.xml'; see 'box2scene help'"),
+        (&["check"], "check needs at least one FILE; see 'box2scene check --help'"),
+        (
+            &["check", "--x", "clean.xml"],
+            "unknown option '--x' for check; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "-s", "clean.xml"],
+            "unknown option '-s' for check; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "--format=xml", "clean.xml"],
+            "unknown format 'xml' (text or json); see 'box2scene check --help'",
+        ),
+        (
+            &["check", "clean.xml", "--format"],
+            "--format needs text or json; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "-", "clean.xml", "-"],
+            "standard input ('-') can be read only once; see 'box2scene check --help'",
+        ),
+        (&["dump"], "dump needs a FILE; see 'box2scene dump --help'"),
+        (&["dump", "clean.xml", "clean.xml"], "dump takes one FILE; see 'box2scene dump --help'"),
+        (
+            &["dump", "--pretty", "clean.xml"],
+            "unknown option '--pretty' for dump; see 'box2scene dump --help'",
+        ),
+        (
+            &["dump", "-o", "x", "clean.xml"],
+            "unknown option '-o' for dump; see 'box2scene dump --help'",
+        ),
+        (&["fmt"], "fmt needs a FILE; see 'box2scene fmt --help'"),
+        (&["fmt", "clean.xml", "-o"], "-o needs a file name; see 'box2scene fmt --help'"),
+        (&["fmt", "clean.xml", "clean.xml"], "fmt takes one FILE; see 'box2scene fmt --help'"),
+        (
+            &["fmt", "--format=json", "clean.xml"],
+            "unknown option '--format=json' for fmt; see 'box2scene fmt --help'",
+        ),
     ];
-    for args in mistakes {
+    for (args, problem) in mistakes {
         let run = sandbox.run(args);
         assert_eq!(run.status, 2, "box2scene {args:?}");
         assert_eq!(run.stdout, "", "box2scene {args:?}");
-        assert!(run.stderr.starts_with("box2scene: "), "box2scene {args:?}: {}", run.stderr);
-        assert!(run.stderr.contains("Usage:"), "box2scene {args:?}: {}", run.stderr);
+        assert_eq!(run.stderr, format!("box2scene: {problem}\n"), "box2scene {args:?}");
     }
 }
 
 #[test]
-fn help_prints_the_usage_and_exits_0() {
+fn a_file_after_a_double_dash_may_start_with_a_dash() {
+    let sandbox = Sandbox::new("double-dash");
+    let run =
+        sandbox.write("-level.xml", &with_unknown_element()).run(&["check", "--", "-level.xml"]);
+    assert_eq!(run.status, 0, "{}", run.stderr);
+    assert!(run.stdout.starts_with("-level.xml:"), "{}", run.stdout);
+}
+
+#[test]
+fn help_lists_every_command_and_exits_0() {
     let sandbox = Sandbox::new("help");
-    for flag in ["--help", "-h"] {
-        let run = sandbox.run(&[flag]);
-        assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{flag}");
-        assert!(run.stdout.starts_with("Usage:"), "{flag}: {}", run.stdout);
-        assert!(run.stdout.contains("box2scene check [--strict] FILE..."), "{}", run.stdout);
+    let help = sandbox.run(&["help"]);
+    assert_eq!((help.status, help.stderr.as_str()), (0, ""));
+    for command in ["check", "dump", "fmt", "help"] {
+        assert!(help.stdout.contains(&format!("\n  {command}  ")), "{command}: {}", help.stdout);
+    }
+    for same in [&["--help"][..], &["-h"], &["help", "help"]] {
+        let run = sandbox.run(same);
+        assert_eq!(
+            (run.status, &run.stdout, run.stderr.as_str()),
+            (0, &help.stdout, ""),
+            "{same:?}"
+        );
     }
 }
 
 #[test]
-fn version_prints_the_crate_version() {
+fn each_command_has_its_own_help() {
+    let sandbox = Sandbox::new("command-help");
+    let mut seen = Vec::new();
+    for command in ["check", "dump", "fmt"] {
+        let help = sandbox.run(&["help", command]);
+        assert_eq!((help.status, help.stderr.as_str()), (0, ""), "{command}");
+        let usage = format!("Usage: box2scene {command} [--strict] ");
+        assert!(help.stdout.starts_with(&usage), "{command}: {}", help.stdout);
+        // --help wins wherever it is and whatever else is wrong with the command line.
+        let asked: [&[&str]; 4] = [
+            &[command, "--help"],
+            &[command, "-h"],
+            &[command, "level.xml", "--bogus", "--help"],
+            &[command, "a.xml", "b.xml", "-h"],
+        ];
+        for args in asked {
+            let run = sandbox.run(args);
+            assert_eq!(
+                (run.status, &run.stdout, run.stderr.as_str()),
+                (0, &help.stdout, ""),
+                "{args:?}"
+            );
+        }
+        assert!(!seen.contains(&help.stdout), "{command}'s help is its own");
+        seen.push(help.stdout);
+    }
+}
+
+#[test]
+fn version_is_the_one_in_cargo_toml() {
+    let manifest = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"))
+        .expect("Cargo.toml is readable");
+    // The first `version` of the manifest is the package's: [package] comes first.
+    let version = manifest
+        .lines()
+        .find_map(|line| line.strip_prefix("version = \""))
+        .and_then(|rest| rest.strip_suffix('"'))
+        .expect("Cargo.toml has a version");
     let run = Sandbox::new("version").run(&["--version"]);
-    assert_eq!(run.status, 0);
-    assert_eq!(run.stdout, format!("box2scene {}\n", env!("CARGO_PKG_VERSION")));
+    assert_eq!((run.status, run.stderr.as_str()), (0, ""));
+    assert_eq!(run.stdout, format!("box2scene {version}\n"));
 }
 
 /// A JSON number as the dump spelled it (serde_json keeps the text), so that a test can
@@ -429,8 +660,9 @@ fn dump_of_a_bad_file_prints_the_error_on_stderr_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["dump", "--strict", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!((run.status, run.stdout.as_str()), (1, ""));
-    let [report] = lines(&run.stderr)[..] else { panic!("one line expected:\n{}", run.stderr) };
+    let [report, shown, caret] = one_report(&run.stderr);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
 }
 
 #[test]
