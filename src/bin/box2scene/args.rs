@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use box2scene::{LoadOptions, WriteOptions};
 
 const HELP: &str = "\
-box2scene: check, dump and format Box2Scene physics scenes.
+box2scene: check, dump, format and draw Box2Scene physics scenes.
 
 Usage: box2scene COMMAND [OPTIONS] FILE...
 
@@ -16,6 +16,7 @@ Commands:
   check    print every warning and error of each file, with the line it points at
   dump     print the loaded scene as JSON
   fmt      write a file in canonical form
+  render   draw the scene as it starts, as SVG
   help     print this help, or a command's (box2scene help COMMAND)
 
 Options:
@@ -75,12 +76,30 @@ Exit status: 0 when the file loads and is written, 1 when it has an error, 2 on 
 I/O error.
 ";
 
+const RENDER_HELP: &str = "\
+Usage: box2scene render [--strict] [-o OUT.svg] FILE
+
+Draws the scene as it starts, as SVG, y up: every shape of every fixture where its body
+puts it, coloured by body type (static grey, kinematic green, dynamic blue), and each
+joint's anchors and the link between them in red. Names show as tooltips.
+
+Options:
+  --strict       treat every warning as an error
+  -o OUT.svg     write to OUT.svg instead of standard output
+  -h, --help     print this help
+
+A FILE named '-' is standard input.
+Exit status: 0 when the file loads and is drawn, 1 when it has an error, 2 on a usage or
+I/O error.
+";
+
 /// The commands that read scene files.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Verb {
     Check,
     Dump,
     Fmt,
+    Render,
 }
 
 impl Verb {
@@ -89,6 +108,7 @@ impl Verb {
             "check" => Some(Verb::Check),
             "dump" => Some(Verb::Dump),
             "fmt" => Some(Verb::Fmt),
+            "render" => Some(Verb::Render),
             _ => None,
         }
     }
@@ -98,6 +118,7 @@ impl Verb {
             Verb::Check => "check",
             Verb::Dump => "dump",
             Verb::Fmt => "fmt",
+            Verb::Render => "render",
         }
     }
 
@@ -106,6 +127,7 @@ impl Verb {
             Verb::Check => CHECK_HELP,
             Verb::Dump => DUMP_HELP,
             Verb::Fmt => FMT_HELP,
+            Verb::Render => RENDER_HELP,
         }
     }
 }
@@ -234,7 +256,7 @@ fn parse_run(verb: Verb, all: &[OsString]) -> Result<Command, Slip> {
         match text {
             "--strict" => run.load.strict = true,
             "--all-fields" if verb == Verb::Fmt => run.write.all_fields = true,
-            "-o" if verb == Verb::Fmt => {
+            "-o" if matches!(verb, Verb::Fmt | Verb::Render) => {
                 let out = args.next().ok_or_else(|| slip("-o needs a file name".to_owned()))?;
                 run.out = Some(PathBuf::from(out));
             }

@@ -1,12 +1,13 @@
-//! `box2scene`: check, dump and format Box2Scene files in a level pipeline.
+//! `box2scene`: check, dump, format and draw Box2Scene files in a level pipeline.
 //!
 //! `check` prints each diagnostic as compilers do (`FILE:LINE:COLUMN: warning[CODE]:
 //! message`, the line, a caret under the column) so that editors and CI logs can jump to
 //! it, or as JSON lines; `dump` prints the scene as JSON; `fmt` rewrites a file in
-//! canonical form. The exit status tells a build script what happened without parsing the
-//! output.
+//! canonical form; `render` draws the scene as SVG. The exit status tells a build script
+//! what happened without parsing the output.
 
 mod args;
+mod render;
 mod report;
 
 use std::ffi::OsString;
@@ -35,6 +36,7 @@ fn main() -> ExitCode {
             Verb::Check => check(&run),
             Verb::Dump => dump(&run),
             Verb::Fmt => fmt(&run),
+            Verb::Render => render(&run),
         },
         Err(slip) => {
             eprintln!("box2scene: {slip}");
@@ -143,6 +145,23 @@ fn fmt(run: &Run) -> Status {
         eprint!("{}", Report::of_error(&error).text(&name, &Source::new(&[])));
         status_of(&error)
     })
+}
+
+/// Draws the scene to `-o` or standard output.
+fn render(run: &Run) -> Status {
+    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let svg = match loaded.scene_or_report() {
+        Ok(scene) => render::svg(scene),
+        Err(status) => return status,
+    };
+    let Some(out) = &run.out else { return emit(&svg) };
+    match std::fs::write(out, svg) {
+        Ok(()) => Status::Clean,
+        Err(e) => {
+            eprintln!("box2scene: cannot write {}: {e}", out.display());
+            Status::UsageOrIo
+        }
+    }
 }
 
 /// A file that cannot be read is the environment's problem, not the file's: status 2.
