@@ -23,7 +23,7 @@ Options:
   -h, --help   print this help; after a command, that command's help
   --version    print the version
 
-A FILE named '-' is standard input.
+A FILE named '-' is standard input; after '--', every argument is a FILE.
 Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
 ";
 
@@ -41,7 +41,8 @@ Options:
                     code and message (line and column 0 when unknown)
   -h, --help        print this help
 
-A FILE named '-' is standard input. Lines and columns count from 1, columns in characters.
+A FILE named '-' is standard input; after '--', every argument is a FILE.
+Lines and columns count from 1, columns in characters.
 Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
 ";
 
@@ -55,7 +56,7 @@ Options:
   --strict     treat every warning as an error
   -h, --help   print this help
 
-A FILE named '-' is standard input.
+A FILE named '-' is standard input; after '--', every argument is a FILE.
 Exit status: 0 when the file loads, 1 when it has an error, 2 on a usage or I/O error.
 ";
 
@@ -71,7 +72,7 @@ Options:
   -o OUT         write to OUT instead of standard output
   -h, --help     print this help
 
-A FILE named '-' is standard input.
+A FILE named '-' is standard input; after '--', every argument is a FILE.
 Exit status: 0 when the file loads and is written, 1 when it has an error, 2 on a usage or
 I/O error.
 ";
@@ -88,7 +89,7 @@ Options:
   -o OUT.svg     write to OUT.svg instead of standard output
   -h, --help     print this help
 
-A FILE named '-' is standard input.
+A FILE named '-' is standard input; after '--', every argument is a FILE.
 Exit status: 0 when the file loads and is drawn, 1 when it has an error, 2 on a usage or
 I/O error.
 ";
