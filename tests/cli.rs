@@ -2,8 +2,11 @@
 //! directory, exact output lines and exit statuses.
 
 use std::fs;
+use std::io::Write;
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Stdio};
+
+use serde_json::{Value, json};
 
 /// A valid scene with no warnings: one circle on one dynamic body. The variants below each
 /// change one line of it, so that every test differs from it in exactly one way.
@@ -126,6 +129,27 @@ fn lines(text: &str) -> Vec<&str> {
     text.lines().collect()
 }
 
+/// `check`'s report of one diagnostic: the `FILE:LINE:COLUMN: ...` line, the line of the
+/// file it points at, and the caret line.
+fn one_report(stdout: &str) -> [&str; 3] {
+    match lines(stdout)[..] {
+        [report, shown, caret] => [report, shown, caret],
+        _ => panic!("one report of three lines expected:\n{stdout}"),
+    }
+}
+
+/// Asserts that `shown` is the line of `text` holding `needle` and that `caret` puts its
+/// `^` under the needle's first character, with the line's tabs kept before it.
+fn assert_points_at(shown: &str, caret: &str, text: &str, needle: &str) {
+    let at = text.find(needle).unwrap_or_else(|| panic!("{needle:?} not in the text"));
+    let start = text[..at].rfind('\n').map_or(0, |i| i + 1);
+    let end = text[at..].find('\n').map_or(text.len(), |i| at + i);
+    assert_eq!(shown, &text[start..end]);
+    let lead: String =
+        text[start..at].chars().map(|c| if c == '\t' { '\t' } else { ' ' }).collect();
+    assert_eq!(caret, format!("{lead}^"));
+}
+
 #[test]
 fn check_prints_nothing_for_a_clean_file_and_exits_0() {
     let sandbox = Sandbox::new("clean");
@@ -140,8 +164,9 @@ fn check_reports_an_unknown_element_as_a_warning_and_exits_0() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "<Foo/>");
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: warning[unknown-element]: "), "Foo");
+    assert_eq!((shown, caret), ("      <Foo/>", "      ^"));
 }
 
 #[test]
@@ -151,12 +176,13 @@ fn check_reports_a_missing_container_at_the_world_element() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "<World");
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(
         report,
         &format!("level.xml:{line}:{column}: warning[missing-container]: "),
         "Joints",
     );
+    assert_points_at(shown, caret, &xml, "<World");
 }
 
 #[test]
@@ -166,8 +192,9 @@ fn strict_check_turns_a_warning_into_an_error_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "--strict", "level.xml"]);
     let (line, column) = locate(&xml, "<Foo/>");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[unknown-element]: "), "Foo");
+    assert_points_at(shown, caret, &xml, "<Foo/>");
 }
 
 #[test]
@@ -184,8 +211,9 @@ fn check_reports_an_invalid_float_at_its_value_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_eq!((shown, caret), ("      <Density>abc</Density>", "               ^"));
 }
 
 #[test]
@@ -195,19 +223,50 @@ fn a_value_is_located_at_its_first_non_blank_character() {
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [report, shown, caret] = one_report(&run.stdout);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
 }
 
 #[test]
-fn columns_count_characters_not_bytes() {
-    let xml = clean_with("<Bullet>False</Bullet>", "<Name>Kiste für Äpfel</Name><Foo/>");
-    assert_eq!(locate(&xml, "<Foo/>"), (19, 35), "the test's own arithmetic");
+fn the_caret_counts_characters_not_bytes_and_keeps_tabs() {
+    let xml =
+        clean_with("      <Bullet>False</Bullet>", "\t\t<Name>Kiste für Äpfel</Name>\t<Foo/>");
+    assert_eq!(locate(&xml, "<Foo/>"), (19, 32), "the test's own arithmetic");
     let sandbox = Sandbox::new("columns");
     let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
     assert_eq!(run.status, 0, "{}", run.stderr);
-    let [report] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
-    assert_report(report, "level.xml:19:35: warning[unknown-element]: ", "Foo");
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, "level.xml:19:32: warning[unknown-element]: ", "Foo");
+    assert_eq!(shown, "\t\t<Name>Kiste für Äpfel</Name>\t<Foo/>");
+    assert_eq!(caret, format!("\t\t{}\t^", " ".repeat(28)));
+}
+
+#[test]
+fn a_long_line_is_shown_around_the_column() {
+    let (before, after) = ("x".repeat(300), "z".repeat(300));
+    let long = format!("<Name>{before}</Name><Foo/><!-- {after} -->");
+    let xml = clean_with("<Bullet>False</Bullet>", &long);
+    let sandbox = Sandbox::new("long-line");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, "level.xml:19:320: warning[unknown-element]: ", "Foo");
+    // 120 characters of the line, the column in the middle, "..." where it was cut.
+    assert_eq!(caret, format!("{}^", " ".repeat(63)));
+    let expected = format!("...{}</Name><Foo/><!-- {}...", "x".repeat(53), "z".repeat(49));
+    assert_eq!(shown, expected);
+    assert!(shown[63..].starts_with("<Foo/>"));
+}
+
+#[test]
+fn a_crlf_file_shows_its_lines_without_the_carriage_return() {
+    let xml = with_unknown_element();
+    let sandbox = Sandbox::new("crlf");
+    let run = sandbox.write("level.xml", &xml.replace('\n', "\r\n")).run(&["check", "level.xml"]);
+    let (line, column) = locate(&xml, "<Foo/>");
+    let [report, shown, caret] = one_report(&run.stdout);
+    assert_report(report, &format!("level.xml:{line}:{column}: warning[unknown-element]: "), "Foo");
+    assert_points_at(shown, caret, &xml, "<Foo/>");
 }
 
 #[test]
@@ -216,8 +275,9 @@ fn check_goes_on_after_an_unreadable_file_and_exits_2() {
     sandbox.write("level.xml", &with_unknown_element()).write("bad.xml", &with_bad_density());
     let run = sandbox.run(&["check", "absent.xml", "level.xml", "bad.xml"]);
     assert_eq!(run.status, 2, "{}", run.stderr);
-    let [absent, warning, error] = lines(&run.stdout)[..] else {
-        panic!("three lines expected:\n{}", run.stdout)
+    // A report without a position has no line to show.
+    let [absent, warning, _, _, error, _, _] = lines(&run.stdout)[..] else {
+        panic!("one line and two reports of three lines expected:\n{}", run.stdout)
     };
     assert_report(absent, "absent.xml: error[io-error]: ", "absent.xml");
     assert!(warning.starts_with("level.xml:"), "{warning}");
@@ -230,52 +290,246 @@ fn check_exits_1_when_any_file_has_an_error() {
     sandbox.write("bad.xml", &with_bad_density()).write("clean.xml", CLEAN);
     let run = sandbox.run(&["check", "bad.xml", "clean.xml"]);
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [error] = lines(&run.stdout)[..] else { panic!("one line expected:\n{}", run.stdout) };
+    let [error, _, _] = one_report(&run.stdout);
     assert!(error.starts_with("bad.xml:"), "{error}");
 }
 
 #[test]
-fn usage_errors_exit_2_with_the_usage_on_stderr() {
+fn check_json_prints_one_object_a_line_per_diagnostic() {
+    let sandbox = Sandbox::new("json");
+    let (warned, bad) = (with_unknown_element(), with_bad_density());
+    sandbox.write("level.xml", &warned).write("bad.xml", &bad).write("clean.xml", CLEAN);
+    let run =
+        sandbox.run(&["check", "--format=json", "absent.xml", "level.xml", "clean.xml", "bad.xml"]);
+    assert_eq!((run.status, run.stderr.as_str()), (2, ""));
+    let [absent, warning, error] = lines(&run.stdout)[..] else {
+        panic!("three lines expected:\n{}", run.stdout)
+    };
+    let position = |xml: &str, needle: &str| {
+        let (line, column) = locate(xml, needle);
+        (line, column, xml.find(needle).expect("the needle is there"))
+    };
+    let expected = [
+        (absent, "absent.xml", (0, 0, 0), "error", "io-error", "absent.xml"),
+        (warning, "level.xml", position(&warned, "<Foo/>"), "warning", "unknown-element", "Foo"),
+        (error, "bad.xml", position(&bad, "abc"), "error", "invalid-float", "abc"),
+    ];
+    for (text, file, (line, column, byte_offset), severity, code, culprit) in expected {
+        let mut report: Value = serde_json::from_str(text).expect("each line is JSON");
+        let message = report["message"].take();
+        assert!(message.as_str().is_some_and(|m| m.contains(culprit)), "{text}");
+        let fields = json!({
+            "file": file, "line": line, "column": column, "byte_offset": byte_offset,
+            "severity": severity, "code": code, "message": null,
+        });
+        assert_eq!(report, fields);
+    }
+}
+
+#[test]
+fn check_json_escapes_what_json_must() {
+    let sandbox = Sandbox::new("json-escape");
+    let name = "a \"tricky\"\\name.xml";
+    let run = sandbox.run(&["check", "--format", "json", name]);
+    assert_eq!(run.status, 2);
+    let report: Value = serde_json::from_str(&run.stdout).expect("one line of JSON");
+    assert_eq!(report["file"], name);
+    assert!(report["message"].as_str().is_some_and(|m| m.contains(name)), "{}", run.stdout);
+}
+
+/// `ARGS` with `input` on standard input.
+fn run_with_input(sandbox: &Sandbox, args: &[&str], input: &str) -> Run {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_box2scene"))
+        .args(args)
+        .current_dir(&sandbox.dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let mut stdin = child.stdin.take().expect("standard input is piped");
+    stdin.write_all(input.as_bytes()).expect("the binary reads its input");
+    drop(stdin);
+    let output = child.wait_with_output().expect("the binary ends");
+    Run {
+        status: output.status.code().expect("the binary exits rather than being killed"),
+        stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),
+        stderr: String::from_utf8(output.stderr).expect("stderr is UTF-8"),
+    }
+}
+
+#[test]
+fn a_dash_reads_standard_input_for_every_command() {
+    let xml = with_unknown_element();
+    let sandbox = Sandbox::new("stdin");
+    sandbox.write("level.xml", &xml);
+    for command in [&["check"][..], &["check", "--format=json"], &["dump"], &["fmt"], &["render"]] {
+        let from_file = sandbox.run(&[command, &["level.xml"]].concat());
+        let from_stdin = run_with_input(&sandbox, &[command, &["-"]].concat(), &xml);
+        assert_eq!((from_stdin.status, from_stdin.stderr.as_str()), (0, ""), "{command:?}");
+        assert!(!from_stdin.stdout.is_empty(), "{command:?}");
+        assert_eq!(from_stdin.stdout, from_file.stdout.replace("level.xml", "<stdin>"));
+    }
+}
+
+#[test]
+fn an_error_on_standard_input_is_reported_as_stdin() {
+    let xml = with_bad_density();
+    let run = run_with_input(&Sandbox::new("stdin-error"), &["dump", "-"], &xml);
+    let (line, column) = locate(&xml, "abc");
+    assert_eq!((run.status, run.stdout.as_str()), (1, ""));
+    let [report, shown, caret] = one_report(&run.stderr);
+    assert_report(report, &format!("<stdin>:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
+}
+
+#[test]
+fn a_usage_slip_prints_one_line_and_where_to_read_more() {
     let sandbox = Sandbox::new("usage");
     sandbox.write("clean.xml", CLEAN);
-    let mistakes: &[&[&str]] = &[
-        &[],
-        &["frobnicate", "clean.xml"],
-        &["check"],
-        &["check", "--bogus", "clean.xml"],
-        &["check", "-s", "clean.xml"],
-        &["dump"],
-        &["dump", "clean.xml", "clean.xml"],
-        &["dump", "--pretty", "clean.xml"],
-        &["fmt"],
-        &["fmt", "clean.xml", "-o"],
-        &["fmt", "clean.xml", "clean.xml"],
+    let mistakes: &[(&[&str], &str)] = &[
+        (&[], "no command given; see 'box2scene help'"),
+        (&["frobnicate", "clean.xml"], "unknown command 'frobnicate'; see 'box2scene help'"),
+        (&["help", "frobnicate"], "unknown command 'frobnicate'; see 'box2scene help'"),
+        (&["help", "check", "dump"], "unexpected 'dump'; see 'box2scene help'"),
+        (&["--version", "clean.xml"], "unexpected 'clean.xml'; see 'box2scene help'"),
+        (&["check"], "check needs at least one FILE; see 'box2scene check --help'"),
+        (
+            &["check", "--x", "clean.xml"],
+            "unknown option '--x' for check; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "-s", "clean.xml"],
+            "unknown option '-s' for check; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "--format=xml", "clean.xml"],
+            "unknown format 'xml' (text or json); see 'box2scene check --help'",
+        ),
+        (
+            &["check", "clean.xml", "--format"],
+            "--format needs text or json; see 'box2scene check --help'",
+        ),
+        (
+            &["check", "-", "clean.xml", "-"],
+            "standard input ('-') can be read only once; see 'box2scene check --help'",
+        ),
+        (&["dump"], "dump needs a FILE; see 'box2scene dump --help'"),
+        (&["dump", "clean.xml", "clean.xml"], "dump takes one FILE; see 'box2scene dump --help'"),
+        (
+            &["dump", "--pretty", "clean.xml"],
+            "unknown option '--pretty' for dump; see 'box2scene dump --help'",
+        ),
+        (
+            &["dump", "-o", "x", "clean.xml"],
+            "unknown option '-o' for dump; see 'box2scene dump --help'",
+        ),
+        (&["fmt"], "fmt needs a FILE; see 'box2scene fmt --help'"),
+        (&["fmt", "clean.xml", "-o"], "-o needs a file name; see 'box2scene fmt --help'"),
+        (&["fmt", "clean.xml", "clean.xml"], "fmt takes one FILE; see 'box2scene fmt --help'"),
+        (
+            &["fmt", "--format=json", "clean.xml"],
+            "unknown option '--format=json' for fmt; see 'box2scene fmt --help'",
+        ),
+        (&["render"], "render needs a FILE; see 'box2scene render --help'"),
+        (
+            &["render", "--all-fields", "clean.xml"],
+            "unknown option '--all-fields' for render; see 'box2scene render --help'",
+        ),
     ];
-    for args in mistakes {
+    for (args, problem) in mistakes {
         let run = sandbox.run(args);
         assert_eq!(run.status, 2, "box2scene {args:?}");
         assert_eq!(run.stdout, "", "box2scene {args:?}");
-        assert!(run.stderr.starts_with("box2scene: "), "box2scene {args:?}: {}", run.stderr);
-        assert!(run.stderr.contains("Usage:"), "box2scene {args:?}: {}", run.stderr);
+        assert_eq!(run.stderr, format!("box2scene: {problem}\n"), "box2scene {args:?}");
     }
 }
 
 #[test]
-fn help_prints_the_usage_and_exits_0() {
+fn a_file_after_a_double_dash_may_start_with_a_dash() {
+    let sandbox = Sandbox::new("double-dash");
+    let run =
+        sandbox.write("-level.xml", &with_unknown_element()).run(&["check", "--", "-level.xml"]);
+    assert_eq!(run.status, 0, "{}", run.stderr);
+    assert!(run.stdout.starts_with("-level.xml:"), "{}", run.stdout);
+}
+
+#[test]
+fn help_lists_every_command_and_exits_0() {
     let sandbox = Sandbox::new("help");
-    for flag in ["--help", "-h"] {
-        let run = sandbox.run(&[flag]);
-        assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{flag}");
-        assert!(run.stdout.starts_with("Usage:"), "{flag}: {}", run.stdout);
-        assert!(run.stdout.contains("box2scene check [--strict] FILE..."), "{}", run.stdout);
+    let help = sandbox.run(&["help"]);
+    assert_eq!((help.status, help.stderr.as_str()), (0, ""));
+    for command in ["check", "dump", "fmt", "render", "help"] {
+        assert!(help.stdout.contains(&format!("\n  {command}  ")), "{command}: {}", help.stdout);
+    }
+    for same in [&["--help"][..], &["-h"], &["help", "help"]] {
+        let run = sandbox.run(same);
+        assert_eq!(
+            (run.status, &run.stdout, run.stderr.as_str()),
+            (0, &help.stdout, ""),
+            "{same:?}"
+        );
     }
 }
 
 #[test]
-fn version_prints_the_crate_version() {
+fn each_command_has_its_own_help() {
+    let sandbox = Sandbox::new("command-help");
+    let mut seen = Vec::new();
+    for command in ["check", "dump", "fmt", "render"] {
+        let help = sandbox.run(&["help", command]);
+        assert_eq!((help.status, help.stderr.as_str()), (0, ""), "{command}");
+        let usage = format!("Usage: box2scene {command} [--strict] ");
+        assert!(help.stdout.starts_with(&usage), "{command}: {}", help.stdout);
+        // --help wins wherever it is and whatever else is wrong with the command line.
+        let asked: [&[&str]; 4] = [
+            &[command, "--help"],
+            &[command, "-h"],
+            &[command, "level.xml", "--bogus", "--help"],
+            &[command, "a.xml", "b.xml", "-h"],
+        ];
+        for args in asked {
+            let run = sandbox.run(args);
+            assert_eq!(
+                (run.status, &run.stdout, run.stderr.as_str()),
+                (0, &help.stdout, ""),
+                "{args:?}"
+            );
+        }
+        assert!(!seen.contains(&help.stdout), "{command}'s help is its own");
+        seen.push(help.stdout);
+    }
+}
+
+#[test]
+fn version_is_the_one_in_cargo_toml() {
+    let manifest = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"))
+        .expect("Cargo.toml is readable");
+    // The first `version` of the manifest is the package's: [package] comes first.
+    let version = manifest
+        .lines()
+        .find_map(|line| line.strip_prefix("version = \""))
+        .and_then(|rest| rest.strip_suffix('"'))
+        .expect("Cargo.toml has a version");
     let run = Sandbox::new("version").run(&["--version"]);
-    assert_eq!(run.status, 0);
-    assert_eq!(run.stdout, format!("box2scene {}\n", env!("CARGO_PKG_VERSION")));
+    assert_eq!((run.status, run.stderr.as_str()), (0, ""));
+    assert_eq!(run.stdout, format!("box2scene {version}\n"));
+}
+
+/// A JSON number as the dump spelled it (serde_json keeps the text), so that a test can
+/// assert the exact shortest float form.
+fn number(value: &Value) -> String {
+    value.as_number().unwrap_or_else(|| panic!("expected a number, got {value}")).to_string()
+}
+
+/// The spellings of an array of numbers (a vector, a list of indices).
+fn numbers(value: &Value) -> Vec<String> {
+    value
+        .as_array()
+        .unwrap_or_else(|| panic!("expected an array, got {value}"))
+        .iter()
+        .map(number)
+        .collect()
 }
 
 /// Every kind of record, a name with characters JSON must escape, editor-style user data,
@@ -336,53 +590,53 @@ fn dump_prints_the_scene_as_json() {
     let run = sandbox.write("level.xml", DUMPED).run(&["dump", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
     assert!(run.stdout.ends_with("}\n"), "the dump is a text file: {:?}", run.stdout);
-    let scene = json::parse(&run.stdout);
+    let scene: Value = serde_json::from_str(&run.stdout).expect("the dump is JSON");
 
-    assert_eq!(scene["version"].number(), "1");
-    assert_eq!(scene["gravity"].numbers(), ["8.369571e-36", "1.001022e-38"]);
+    assert_eq!(number(&scene["version"]), "1");
+    assert_eq!(numbers(&scene["gravity"]), ["8.369571e-36", "1.001022e-38"]);
 
     let wheel = &scene["shapes"][0];
-    assert_eq!(wheel["kind"].string(), "circle");
-    assert_eq!(wheel["name"].string(), "wheel \"A\" & tab\tend");
-    assert_eq!(wheel["radius"].number(), "0.5");
-    assert_eq!(wheel["position"].numbers(), ["0.0", "0.25"]);
-    assert_eq!(wheel["vertices"].items().len(), 0);
+    assert_eq!(wheel["kind"], "circle");
+    assert_eq!(wheel["name"], "wheel \"A\" & tab\tend");
+    assert_eq!(number(&wheel["radius"]), "0.5");
+    assert_eq!(numbers(&wheel["position"]), ["0.0", "0.25"]);
+    assert_eq!(wheel["vertices"], json!([]));
     let ground = &scene["shapes"][1];
-    assert_eq!(ground["kind"].string(), "polygon");
+    assert_eq!(ground["kind"], "polygon");
     assert!(ground["name"].is_null());
-    assert_eq!(ground["vertices"][0].numbers(), ["-40.0", "0.0"]);
-    assert_eq!(ground["vertices"][1].numbers(), ["40.0", "0.0"]);
+    assert_eq!(numbers(&ground["vertices"][0]), ["-40.0", "0.0"]);
+    assert_eq!(numbers(&ground["vertices"][1]), ["40.0", "0.0"]);
     assert!(ground["centroid"].is_null(), "an absent centroid is not (0, 0)");
 
     let fixture = &scene["fixtures"][0];
-    assert_eq!(fixture["shape"].number(), "0");
-    assert_eq!(fixture["density"].number(), "5.0");
-    assert_eq!(fixture["friction"].number(), "0.2");
-    assert_eq!(fixture["filter"]["mask_bits"].number(), "65535");
-    assert_eq!(scene["fixtures"][1]["friction"].number(), "0.2", "the default friction");
+    assert_eq!(number(&fixture["shape"]), "0");
+    assert_eq!(number(&fixture["density"]), "5.0");
+    assert_eq!(number(&fixture["friction"]), "0.2");
+    assert_eq!(number(&fixture["filter"]["mask_bits"]), "65535");
+    assert_eq!(number(&scene["fixtures"][1]["friction"]), "0.2", "the default friction");
 
     let wagon = &scene["bodies"][0];
-    assert_eq!(wagon["kind"].string(), "dynamic");
-    assert_eq!(wagon["position"].numbers(), ["0.0", "20.0"]);
-    assert_eq!(wagon["fixtures"].numbers(), ["0"]);
+    assert_eq!(wagon["kind"], "dynamic");
+    assert_eq!(numbers(&wagon["position"]), ["0.0", "20.0"]);
+    assert_eq!(numbers(&wagon["fixtures"]), ["0"]);
     assert!(wagon["mass_data"]["mass"].is_null());
     assert!(wagon["user_data"].is_null());
     let user_data = &scene["bodies"][1]["user_data"];
     assert_eq!(
-        user_data["raw"].string(),
+        user_data["raw"],
         "<Type>System.String</Type><Value><string>Ground</string></Value>"
     );
-    assert_eq!(user_data["type_name"].string(), "System.String");
-    assert_eq!(user_data["value"].string(), "Ground");
+    assert_eq!(user_data["type_name"], "System.String");
+    assert_eq!(user_data["value"], "Ground");
 
     let hinge = &scene["joints"][0];
-    assert_eq!(hinge["kind"].string(), "revolute");
-    assert_eq!((hinge["body_a"].number(), hinge["body_b"].number()), ("1", "0"));
+    assert_eq!(hinge["kind"], "revolute");
+    assert_eq!((number(&hinge["body_a"]), number(&hinge["body_b"])), ("1".into(), "0".into()));
     assert!(hinge["joint_a"].is_null(), "NONE is null");
-    assert_eq!(hinge["local_anchor_a"].numbers(), ["0.0", "12.0"]);
-    assert_eq!(hinge["collide_connected"], json::Value::Bool(false));
+    assert_eq!(numbers(&hinge["local_anchor_a"]), ["0.0", "12.0"]);
+    assert_eq!(hinge["collide_connected"], false);
 
-    assert_eq!(scene["diagnostics"].items().len(), 0);
+    assert_eq!(scene["diagnostics"], json!([]));
 }
 
 #[test]
@@ -391,15 +645,17 @@ fn dump_includes_the_warnings() {
     let sandbox = Sandbox::new("dump-warning");
     let run = sandbox.write("level.xml", &xml).run(&["dump", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
-    let scene = json::parse(&run.stdout);
+    let scene: Value = serde_json::from_str(&run.stdout).expect("the dump is JSON");
     let (line, column) = locate(&xml, "<Foo/>");
-    let [warning] = scene["diagnostics"].items() else { panic!("one diagnostic expected") };
-    assert_eq!(warning["severity"].string(), "warning");
-    assert_eq!(warning["code"].string(), "unknown-element");
-    assert_eq!(warning["line"].number(), line.to_string());
-    assert_eq!(warning["column"].number(), column.to_string());
+    let [warning] = &scene["diagnostics"].as_array().expect("an array")[..] else {
+        panic!("one diagnostic expected")
+    };
+    assert_eq!(warning["severity"], "warning");
+    assert_eq!(warning["code"], "unknown-element");
+    assert_eq!(warning["line"], line);
+    assert_eq!(warning["column"], column);
     let byte_offset = xml.find("<Foo/>").expect("the element is there");
-    assert_eq!(warning["byte_offset"].number(), byte_offset.to_string());
+    assert_eq!(warning["byte_offset"], byte_offset);
 }
 
 #[test]
@@ -409,8 +665,9 @@ fn dump_of_a_bad_file_prints_the_error_on_stderr_and_exits_1() {
     let run = sandbox.write("level.xml", &xml).run(&["dump", "--strict", "level.xml"]);
     let (line, column) = locate(&xml, "abc");
     assert_eq!((run.status, run.stdout.as_str()), (1, ""));
-    let [report] = lines(&run.stderr)[..] else { panic!("one line expected:\n{}", run.stderr) };
+    let [report, shown, caret] = one_report(&run.stderr);
     assert_report(report, &format!("level.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
 }
 
 #[test]
@@ -426,234 +683,6 @@ fn dump_of_a_missing_file_exits_2() {
     let run = Sandbox::new("dump-missing").run(&["dump", "absent.xml"]);
     assert_eq!((run.status, run.stdout.as_str()), (2, ""));
     assert_report(run.stderr.trim_end(), "absent.xml: error[io-error]: ", "absent.xml");
-}
-
-/// Just enough JSON to check a dump: a strict reader of RFC 8259 text that keeps numbers
-/// as their text, so that tests can assert the exact (shortest) float form.
-mod json {
-    use std::ops::Index;
-
-    #[derive(Debug, PartialEq)]
-    pub enum Value {
-        Null,
-        Bool(bool),
-        Number(String),
-        String(String),
-        Array(Vec<Value>),
-        Object(Vec<(String, Value)>),
-    }
-
-    /// Parses a whole document; panics with the offset on anything that is not JSON.
-    pub fn parse(text: &str) -> Value {
-        let mut reader = Reader { text, at: 0 };
-        let value = reader.value();
-        reader.skip_blanks();
-        assert_eq!(reader.at, text.len(), "text after the JSON value");
-        value
-    }
-
-    impl Value {
-        pub fn is_null(&self) -> bool {
-            *self == Value::Null
-        }
-        pub fn number(&self) -> &str {
-            match self {
-                Value::Number(text) => text,
-                other => panic!("expected a number, got {other:?}"),
-            }
-        }
-        pub fn string(&self) -> &str {
-            match self {
-                Value::String(text) => text,
-                other => panic!("expected a string, got {other:?}"),
-            }
-        }
-        pub fn items(&self) -> &[Value] {
-            match self {
-                Value::Array(items) => items,
-                other => panic!("expected an array, got {other:?}"),
-            }
-        }
-        /// The texts of an array of numbers (a vector, a list of indices).
-        pub fn numbers(&self) -> Vec<&str> {
-            self.items().iter().map(Value::number).collect()
-        }
-    }
-
-    impl Index<usize> for Value {
-        type Output = Value;
-        fn index(&self, i: usize) -> &Value {
-            self.items().get(i).unwrap_or_else(|| panic!("no item {i} in {self:?}"))
-        }
-    }
-
-    impl Index<&str> for Value {
-        type Output = Value;
-        fn index(&self, key: &str) -> &Value {
-            let Value::Object(fields) = self else { panic!("expected an object, got {self:?}") };
-            let found = fields.iter().find(|(k, _)| k == key);
-            &found.unwrap_or_else(|| panic!("no key {key:?} in {self:?}")).1
-        }
-    }
-
-    struct Reader<'t> {
-        text: &'t str,
-        at: usize,
-    }
-
-    impl Reader<'_> {
-        fn value(&mut self) -> Value {
-            self.skip_blanks();
-            match self.peek() {
-                Some('{') => self.object(),
-                Some('[') => self.array(),
-                Some('"') => Value::String(self.string()),
-                Some('t') => self.word("true", Value::Bool(true)),
-                Some('f') => self.word("false", Value::Bool(false)),
-                Some('n') => self.word("null", Value::Null),
-                _ => self.number(),
-            }
-        }
-
-        fn object(&mut self) -> Value {
-            let mut fields = Vec::new();
-            self.expect('{');
-            if !self.closes('}') {
-                loop {
-                    self.skip_blanks();
-                    let key = self.string();
-                    self.skip_blanks();
-                    self.expect(':');
-                    fields.push((key, self.value()));
-                    if self.closes('}') {
-                        break;
-                    }
-                    self.expect(',');
-                }
-            }
-            Value::Object(fields)
-        }
-
-        fn array(&mut self) -> Value {
-            let mut items = Vec::new();
-            self.expect('[');
-            if !self.closes(']') {
-                loop {
-                    items.push(self.value());
-                    if self.closes(']') {
-                        break;
-                    }
-                    self.expect(',');
-                }
-            }
-            Value::Array(items)
-        }
-
-        fn string(&mut self) -> String {
-            self.expect('"');
-            let mut out = String::new();
-            loop {
-                match self.take_char() {
-                    '"' => return out,
-                    '\\' => out.push(self.escape()),
-                    c if u32::from(c) < 0x20 => self.fail("a raw control character in a string"),
-                    c => out.push(c),
-                }
-            }
-        }
-
-        fn escape(&mut self) -> char {
-            match self.take_char() {
-                c @ ('"' | '\\' | '/') => c,
-                'b' => '\u{8}',
-                'f' => '\u{c}',
-                'n' => '\n',
-                'r' => '\r',
-                't' => '\t',
-                'u' => {
-                    let hex = self.text.get(self.at..self.at + 4).unwrap_or("");
-                    let code = u32::from_str_radix(hex, 16).unwrap_or_else(|_| self.fail("\\u"));
-                    self.at += 4;
-                    // The dump escapes only control characters, never a surrogate pair.
-                    char::from_u32(code).unwrap_or_else(|| self.fail("a surrogate escape"))
-                }
-                _ => self.fail("an unknown escape"),
-            }
-        }
-
-        /// `-? (0 | [1-9][0-9]*) (. [0-9]+)? ([eE] [+-]? [0-9]+)?`, kept as text.
-        fn number(&mut self) -> Value {
-            let start = self.at;
-            self.eat('-');
-            if !self.eat('0') {
-                self.digits();
-            }
-            if self.eat('.') {
-                self.digits();
-            }
-            if self.eat('e') || self.eat('E') {
-                let _ = self.eat('+') || self.eat('-');
-                self.digits();
-            }
-            Value::Number(self.text[start..self.at].to_owned())
-        }
-
-        fn digits(&mut self) {
-            let count = self.text[self.at..].chars().take_while(char::is_ascii_digit).count();
-            if count == 0 {
-                self.fail("a digit");
-            }
-            self.at += count;
-        }
-
-        fn word(&mut self, word: &str, value: Value) -> Value {
-            if !self.text[self.at..].starts_with(word) {
-                self.fail(word);
-            }
-            self.at += word.len();
-            value
-        }
-
-        /// Consumes `close` if it comes next, after blanks.
-        fn closes(&mut self, close: char) -> bool {
-            self.skip_blanks();
-            self.eat(close)
-        }
-
-        fn expect(&mut self, c: char) {
-            self.skip_blanks();
-            if !self.eat(c) {
-                self.fail(&format!("{c:?}"));
-            }
-        }
-
-        fn eat(&mut self, c: char) -> bool {
-            let here = self.peek() == Some(c);
-            if here {
-                self.at += c.len_utf8();
-            }
-            here
-        }
-
-        fn take_char(&mut self) -> char {
-            let c = self.peek().unwrap_or_else(|| self.fail("more text"));
-            self.at += c.len_utf8();
-            c
-        }
-
-        fn peek(&self) -> Option<char> {
-            self.text[self.at..].chars().next()
-        }
-
-        fn skip_blanks(&mut self) {
-            let rest = &self.text[self.at..];
-            self.at += rest.len() - rest.trim_start_matches([' ', '\t', '\n', '\r']).len();
-        }
-
-        fn fail(&self, expected: &str) -> ! {
-            panic!("not JSON at byte {}: expected {expected}", self.at)
-        }
-    }
 }
 
 #[test]
@@ -710,4 +739,354 @@ fn fmt_of_a_bad_file_writes_nothing_and_exits_1() {
         run.stderr
     );
     assert!(!sandbox.dir.join("out.xml").exists());
+}
+
+/// Every kind of shape on bodies of every type, one of them turned a quarter turn, and two
+/// joints, one a pulley. Everything drawn lies within x -10..10 and y 0..10.
+const DRAWN: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<World Version="2">
+  <Gravity>0 -10</Gravity>
+  <Shapes>
+    <Shape Type="Polygon">
+      <Name>floor</Name>
+      <Vertices><Vertex>-10 0</Vertex><Vertex>10 0</Vertex><Vertex>10 1</Vertex><Vertex>-10 1</Vertex></Vertices>
+    </Shape>
+    <Shape Type="Circle">
+      <Name>wheel</Name>
+      <Radius>0.5</Radius>
+      <Position>1 0</Position>
+    </Shape>
+    <Shape Type="Edge">
+      <Vertex1>-10 10</Vertex1>
+      <Vertex2>-9 10</Vertex2>
+    </Shape>
+    <Shape Type="Chain">
+      <Vertices><Vertex>6 6</Vertex><Vertex>8 6</Vertex><Vertex>7 8</Vertex></Vertices>
+      <Loop>true</Loop>
+    </Shape>
+    <Shape Type="Chain">
+      <Vertices><Vertex>-8 2</Vertex><Vertex>-6 3</Vertex></Vertices>
+    </Shape>
+    <Shape Type="Polygon">
+      <Vertices><Vertex>0 0</Vertex><Vertex>2 0</Vertex><Vertex>2 1</Vertex><Vertex>0 1</Vertex></Vertices>
+    </Shape>
+  </Shapes>
+  <Fixtures>
+    <Fixture><Shape>0</Shape><Density>1</Density></Fixture>
+    <Fixture><Name>rim</Name><Shape>1</Shape><Density>1</Density></Fixture>
+    <Fixture><Shape>2</Shape><Density>1</Density></Fixture>
+    <Fixture><Shape>3</Shape><Density>1</Density></Fixture>
+    <Fixture><Shape>4</Shape><Density>1</Density></Fixture>
+    <Fixture><Shape>5</Shape><Density>1</Density></Fixture>
+  </Fixtures>
+  <Bodies>
+    <Body Type="Static">
+      <Name>ground</Name>
+      <Fixtures><ID>0</ID><ID>2</ID><ID>3</ID><ID>4</ID></Fixtures>
+    </Body>
+    <Body Type="Dynamic">
+      <Name>cart</Name>
+      <Position>3 4</Position>
+      <Fixtures><ID>1</ID></Fixtures>
+    </Body>
+    <Body Type="Kinematic">
+      <Position>-5 6</Position>
+      <Angle>1.5707964</Angle>
+      <Fixtures><ID>5</ID></Fixtures>
+    </Body>
+  </Bodies>
+  <Joints>
+    <Joint Type="Distance">
+      <Name>strut</Name>
+      <BodyA>0</BodyA>
+      <BodyB>1</BodyB>
+      <LocalAnchorA>0 1</LocalAnchorA>
+      <LocalAnchorB>1 0</LocalAnchorB>
+    </Joint>
+    <Joint Type="Pulley">
+      <BodyA>1</BodyA>
+      <BodyB>2</BodyB>
+      <GroundAnchorA>3 9</GroundAnchorA>
+      <GroundAnchorB>-5 9</GroundAnchorB>
+      <LocalAnchorA>0 0</LocalAnchorA>
+      <LocalAnchorB>0 0</LocalAnchorB>
+    </Joint>
+  </Joints>
+</World>
+"#;
+
+/// An element of a parsed drawing, its text the concatenation of its text children.
+#[derive(Debug)]
+struct Element {
+    name: String,
+    attributes: Vec<(String, String)>,
+    text: String,
+    children: Vec<Element>,
+}
+
+impl Element {
+    fn attribute(&self, name: &str) -> &str {
+        let found = self.attributes.iter().find(|(key, _)| key == name);
+        &found.unwrap_or_else(|| panic!("<{}> has no {name}", self.name)).1
+    }
+
+    fn number(&self, name: &str) -> f32 {
+        self.attribute(name).parse().unwrap_or_else(|_| panic!("{name} is not a number"))
+    }
+
+    /// The children other than `<title>`: what is drawn.
+    fn drawn(&self) -> Vec<&Element> {
+        self.children.iter().filter(|c| c.name != "title").collect()
+    }
+
+    fn title(&self) -> &str {
+        let title = self.children.iter().find(|c| c.name == "title");
+        &title.unwrap_or_else(|| panic!("<{}> has no title", self.name)).text
+    }
+
+    /// Every element below this one, depth first.
+    fn descendants(&self) -> Vec<&Element> {
+        self.children.iter().flat_map(|c| std::iter::once(c).chain(c.descendants())).collect()
+    }
+
+    fn count(&self, name: &str) -> usize {
+        self.descendants().iter().filter(|e| e.name == name).count()
+    }
+}
+
+/// The drawing as a tree; panics on anything that is not well-formed XML: an unclosed or
+/// mismatched tag, a repeated attribute, an unknown entity, a raw `&` or `<`, text or a
+/// second element outside the root.
+fn parse_xml(text: &str) -> Element {
+    use quick_xml::XmlVersion::Implicit1_0;
+    use quick_xml::events::{BytesStart, Event};
+
+    fn element(start: &BytesStart) -> Element {
+        let attributes = start.attributes().map(|attribute| {
+            let attribute = attribute.expect("a well-formed, unrepeated attribute");
+            let value = attribute.normalized_value(Implicit1_0).expect("escaped attribute text");
+            (attribute.key.as_ref().to_owned(), value.into_owned())
+        });
+        Element {
+            name: start.name().as_ref().to_owned(),
+            attributes: attributes.collect(),
+            text: String::new(),
+            children: Vec::new(),
+        }
+    }
+
+    let mut reader = quick_xml::Reader::from_str(text);
+    let mut open: Vec<Element> = Vec::new();
+    let mut root = None;
+    loop {
+        let event = reader.read_event();
+        let at = reader.buffer_position();
+        let finished = match event.unwrap_or_else(|e| panic!("not well-formed at {at}: {e}")) {
+            Event::Decl(_) | Event::Comment(_) => None,
+            Event::Start(start) => {
+                open.push(element(&start));
+                None
+            }
+            Event::Empty(start) => Some(element(&start)),
+            Event::End(_) => Some(open.pop().expect("an end tag closes an open element")),
+            Event::Text(text) => {
+                let text = text.xml10_content();
+                match open.last_mut() {
+                    Some(parent) => parent.text.push_str(&text),
+                    None => assert!(text.trim().is_empty(), "text outside the root at {at}"),
+                }
+                None
+            }
+            Event::GeneralRef(reference) => {
+                let character = match reference.resolve_char_ref().expect("a valid reference") {
+                    Some(c) => c,
+                    None => match &*reference {
+                        "amp" => '&',
+                        "lt" => '<',
+                        "gt" => '>',
+                        "quot" => '"',
+                        "apos" => '\'',
+                        other => panic!("unknown entity &{other}; at {at}"),
+                    },
+                };
+                open.last_mut().expect("a reference inside the root").text.push(character);
+                None
+            }
+            Event::Eof => break,
+            other => panic!("unexpected {other:?} at {at}"),
+        };
+        if let Some(done) = finished {
+            match open.last_mut() {
+                Some(parent) => parent.children.push(done),
+                None => assert!(root.replace(done).is_none(), "a second root element at {at}"),
+            }
+        }
+    }
+    assert!(open.is_empty(), "unclosed elements: {open:?}");
+    root.expect("a root element")
+}
+
+/// The `points` of a polygon or polyline, as (x, y) pairs.
+fn points(element: &Element) -> Vec<(f32, f32)> {
+    let pair = |p: &str| {
+        let (x, y) = p.split_once(',').expect("x,y");
+        (x.parse().expect("a number"), y.parse().expect("a number"))
+    };
+    element.attribute("points").split(' ').map(pair).collect()
+}
+
+/// Renders `xml` and parses the drawing.
+fn render(test: &str, xml: &str) -> Element {
+    let sandbox = Sandbox::new(test);
+    let run = sandbox.write("level.xml", xml).run(&["render", "level.xml"]);
+    assert_eq!((run.status, run.stderr.as_str()), (0, ""));
+    parse_xml(&run.stdout)
+}
+
+#[test]
+fn render_draws_every_shape_where_its_body_puts_it() {
+    let check = Sandbox::new("render-check").write("level.xml", DRAWN).run(&["check", "level.xml"]);
+    assert_eq!((check.status, check.stdout.as_str()), (0, ""), "the scene is clean");
+    let svg = render("render-shapes", DRAWN);
+    assert_eq!(svg.name, "svg");
+    assert_eq!(svg.attribute("xmlns"), "http://www.w3.org/2000/svg");
+    // y up: the drawing is turned over, so the view box is the bounds (x -10..10, y 0..10)
+    // turned over, with a margin of a twentieth of their larger side.
+    assert_eq!(svg.attribute("viewBox"), "-11 -11 22 12");
+    let [background, world] = &svg.children[..] else { panic!("a background and the world") };
+    assert_eq!((background.name.as_str(), background.attribute("fill")), ("rect", "white"));
+    assert_eq!(world.attribute("transform"), "scale(1,-1)");
+
+    let [ground, cart, turned, joints] = &world.children[..] else {
+        panic!("three bodies and the joints: {world:?}")
+    };
+    assert_eq!(ground.title(), "body 0 \"ground\" (static)");
+    let [floor, edge, looped, chain] = &ground.drawn()[..] else { panic!("four shapes") };
+    assert_eq!((floor.name.as_str(), floor.title()), ("polygon", "fixture 0, shape 0 \"floor\""));
+    assert_eq!(floor.attribute("points"), "-10,0 10,0 10,1 -10,1");
+    assert_eq!((edge.name.as_str(), edge.attribute("points")), ("polyline", "-10,10 -9,10"));
+    assert_eq!(edge.attribute("fill"), "none");
+    assert_eq!(looped.name, "polygon", "a loop is closed");
+    assert_eq!((looped.attribute("points"), looped.attribute("fill")), ("6,6 8,6 7,8", "none"));
+    assert_eq!((chain.name.as_str(), chain.attribute("points")), ("polyline", "-8,2 -6,3"));
+
+    assert_eq!(cart.title(), "body 1 \"cart\" (dynamic)");
+    let [wheel, radius] = &cart.drawn()[..] else { panic!("a circle and its radius") };
+    assert_eq!(wheel.title(), "fixture 1 \"rim\", shape 1 \"wheel\"");
+    let centre = (wheel.number("cx"), wheel.number("cy"), wheel.number("r"));
+    assert_eq!(centre, (4.0, 4.0, 0.5), "(1, 0) on a body at (3, 4)");
+    let ends = ["x1", "y1", "x2", "y2"].map(|end| radius.number(end));
+    assert_eq!(ends, [4.0, 4.0, 4.5, 4.0], "the radius along the body's x axis");
+
+    assert_eq!(turned.title(), "body 2 (kinematic)");
+    let [square] = &turned.drawn()[..] else { panic!("one shape") };
+    let expected = [(-5.0, 6.0), (-5.0, 8.0), (-6.0, 8.0), (-6.0, 6.0)];
+    for ((x, y), (ex, ey)) in points(square).into_iter().zip(expected) {
+        assert!((x - ex).abs() < 1e-6 && (y - ey).abs() < 1e-6, "{square:?}");
+    }
+
+    let [strut, pulley] = &joints.children[..] else { panic!("two joints") };
+    assert_eq!(strut.title(), "joint 0 \"strut\" (distance)");
+    let [link, a, b] = &strut.drawn()[..] else { panic!("a link and two anchors") };
+    assert_eq!((link.name.as_str(), link.attribute("points")), ("polyline", "0,1 4,4"));
+    assert_eq!(
+        [a.number("cx"), a.number("cy"), b.number("cx"), b.number("cy")],
+        [0.0, 1.0, 4.0, 4.0]
+    );
+    assert_eq!(pulley.title(), "joint 1 (pulley)");
+    assert_eq!(
+        pulley.drawn()[0].attribute("points"),
+        "3,4 3,9 -5,9 -5,6",
+        "through the ground anchors"
+    );
+
+    let counts = ["g", "title", "circle", "line", "polygon", "polyline"].map(|e| world.count(e));
+    assert_eq!(counts, [6, 11, 5, 1, 3, 4]);
+}
+
+#[test]
+fn render_colours_each_body_type_its_own_way() {
+    let svg = render("render-colours", DRAWN);
+    let bodies = &svg.children[1].children[..3];
+    let colours: Vec<(&str, &str, &str)> = bodies
+        .iter()
+        .map(|body| (body.attribute("class"), body.attribute("fill"), body.attribute("stroke")))
+        .collect();
+    assert_eq!(
+        colours,
+        [
+            ("static", "#c8c8c8", "#606060"),
+            ("dynamic", "#a8c8f0", "#2a5a9a"),
+            ("kinematic", "#b8e0b0", "#3a7a30"),
+        ]
+    );
+    let joints = &svg.children[1].children[3];
+    assert_eq!((joints.attribute("fill"), joints.attribute("stroke")), ("#d03030", "#d03030"));
+}
+
+#[test]
+fn render_escapes_names_and_stays_well_formed() {
+    let name = r#"a<b & "c" ]]> </title>"#;
+    let xml = clean_with(
+        "<Bullet>False</Bullet>",
+        "<Name>a&lt;b &amp; \"c\" ]]&gt; &lt;/title&gt;</Name>",
+    );
+    let sandbox = Sandbox::new("render-names");
+    let run = sandbox.write("level.xml", &xml).run(&["render", "level.xml"]);
+    assert_eq!((run.status, run.stderr.as_str()), (0, ""));
+    assert!(run.stdout.contains("a&lt;b &amp; \"c\" ]]&gt; &lt;/title&gt;"), "{}", run.stdout);
+    let svg = parse_xml(&run.stdout);
+    let body = &svg.children[1].children[0];
+    assert_eq!(body.title(), format!("body 0 \"{name}\" (dynamic)"));
+}
+
+#[test]
+fn render_of_an_empty_scene_draws_a_view_around_the_origin() {
+    let svg = render(
+        "render-empty",
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>",
+    );
+    assert_eq!(svg.attribute("viewBox"), "-1 -1 2 2");
+    assert_eq!(svg.children[1].count("title"), 0);
+}
+
+#[test]
+fn render_writes_to_a_file_when_asked() {
+    let sandbox = Sandbox::new("render-out");
+    sandbox.write("level.xml", DRAWN);
+    let printed = sandbox.run(&["render", "level.xml"]).stdout;
+    let run = sandbox.run(&["render", "-o", "level.svg", "level.xml"]);
+    assert_eq!((run.status, run.stdout.as_str(), run.stderr.as_str()), (0, "", ""));
+    assert_eq!(fs::read_to_string(sandbox.dir.join("level.svg")).unwrap(), printed);
+}
+
+#[test]
+fn render_of_a_bad_file_writes_nothing_and_exits_1() {
+    let xml = with_bad_density();
+    let sandbox = Sandbox::new("render-bad");
+    let run = sandbox.write("bad.xml", &xml).run(&["render", "-o", "bad.svg", "bad.xml"]);
+    assert_eq!((run.status, run.stdout.as_str()), (1, ""));
+    let [report, shown, caret] = one_report(&run.stderr);
+    let (line, column) = locate(&xml, "abc");
+    assert_report(report, &format!("bad.xml:{line}:{column}: error[invalid-float]: "), "abc");
+    assert_points_at(shown, caret, &xml, "abc");
+    assert!(!sandbox.dir.join("bad.svg").exists());
+}
+
+#[test]
+fn strict_render_of_a_file_with_a_warning_exits_1() {
+    let sandbox = Sandbox::new("render-strict");
+    let run =
+        sandbox.write("level.xml", &without_joints()).run(&["render", "--strict", "level.xml"]);
+    assert_eq!((run.status, run.stdout.as_str()), (1, ""));
+    assert!(run.stderr.contains(": error[missing-container]: "), "{}", run.stderr);
+}
+
+#[test]
+fn render_reports_an_output_it_cannot_write_and_exits_2() {
+    let sandbox = Sandbox::new("render-unwritable");
+    let run =
+        sandbox.write("level.xml", CLEAN).run(&["render", "-o", "absent/level.svg", "level.xml"]);
+    assert_eq!((run.status, run.stdout.as_str()), (2, ""));
+    assert!(run.stderr.starts_with("box2scene: cannot write absent/level.svg: "), "{}", run.stderr);
 }
