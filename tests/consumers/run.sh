@@ -6,7 +6,8 @@
 set -euo pipefail
 
 : "${CMAKE:?}" "${RUSTC:?}" "${BOX2SCENE_SOURCE_DIR:?}" "${BOX2SCENE_BUILD_DIR:?}"
-: "${BOX2SCENE_CARGO_TARGET_DIR:?}" "${PREFIX:?}" "${LIBDIR:?}" "${VERSION:?}" "${ABI_VERSION:?}"
+: "${BOX2SCENE_CARGO_TARGET_DIR:?}" "${CARGO_PROFILE_DIR:?}" "${PREFIX:?}" "${LIBDIR:?}"
+: "${VERSION:?}" "${ABI_VERSION:?}"
 
 here=$(cd "$(dirname "$0")" && pwd)
 libdir=$PREFIX/$LIBDIR
@@ -60,13 +61,13 @@ expect_static() {
   if needed "$1" | grep -q libbox2scene; then fail "$1 loads libbox2scene"; fi
 }
 
-# `rustc --print native-static-libs` for a static library of the crate as built, its
-# dependencies included: "-lgcc_s -lutil ...".
+# `rustc --print native-static-libs` for a static library of the crate as built (in cargo's
+# CARGO_PROFILE_DIR, debug or release), its dependencies included: "-lgcc_s -lutil ...".
 rust_native_libs() {
-  local release=$BOX2SCENE_CARGO_TARGET_DIR/release
+  local built=$BOX2SCENE_CARGO_TARGET_DIR/$CARGO_PROFILE_DIR
   echo 'extern crate box2scene;' >"$work/probe.rs"
   "$RUSTC" --edition 2021 --crate-type staticlib --crate-name probe \
-    --extern box2scene="$release/libbox2scene.rlib" -L dependency="$release/deps" \
+    --extern box2scene="$built/libbox2scene.rlib" -L dependency="$built/deps" \
     --print native-static-libs -o "$work/libprobe.a" "$work/probe.rs" 2>&1 |
     sed -n 's/.*native-static-libs: //p'
 }
@@ -83,7 +84,7 @@ check_layout() {
     "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
     "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
     "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \
-    "$LIBDIR/pkgconfig/box2scene.pc" share/doc/box2scene/LICENSE; do
+    "$LIBDIR/pkgconfig/box2scene.pc" share/doc/box2scene/LICENSE bin/box2scene; do
     [ -f "$PREFIX/$file" ] && [ ! -L "$PREFIX/$file" ] || fail "no file $PREFIX/$file"
   done
   [ "$(readlink "$libdir/$soname")" = "libbox2scene.so.$VERSION" ] ||
@@ -106,6 +107,19 @@ check_symbols() {
   [ "$exported" = "$declared" ] ||
     fail "exported (<) and declared (>) differ:" "$(diff <(echo "$exported") <(echo "$declared"))"
   echo "exports the $(echo "$exported" | wc -l) functions of box2scene.h and nothing else"
+}
+
+# The package's box2scene::cli is the installed command, and it runs.
+check_cli() {
+  local cli
+  build_consumer cli
+  cli=$(cat "$work/build/cli-path.txt")
+  [ "$cli" = "$PREFIX/bin/box2scene" ] || fail "box2scene::cli is $cli, not $PREFIX/bin/box2scene"
+  [ -x "$cli" ] || fail "$cli is not an executable"
+  "$cli" --version | head -n 1 | grep -qx "box2scene $VERSION" ||
+    fail "$cli --version does not print box2scene $VERSION" "$("$cli" --version)"
+  grep -q "box2scene $VERSION" "$work/log" || fail "the build did not run box2scene --version"
+  echo "box2scene::cli is $cli: $("$cli" --version | head -n 1)"
 }
 
 check_c_shared() {
