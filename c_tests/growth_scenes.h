@@ -146,7 +146,7 @@ static inline b2s_scene* growth_many_joints(uint32_t count) {
         body.position.x = (float)i;
         b = growth_check(b, b2s_builder_add_body(b, &body, &id, 1, NULL, NULL));
     }
-    static const uint32_t kinds[3] = {B2S_JOINT_KIND_REVOLUTE, B2S_JOINT_KIND_DISTANCE,
+    static const b2s_joint_kind kinds[3] = {B2S_JOINT_KIND_REVOLUTE, B2S_JOINT_KIND_DISTANCE,
                                       B2S_JOINT_KIND_WELD};
     for (uint32_t i = 0; i < count && b != NULL; ++i) {
         b2s_joint joint;
