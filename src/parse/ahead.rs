@@ -4,10 +4,10 @@
 //! the next one begins; the calling thread reads from the start on, taking the pieces
 //! the helper has not begun as it reaches them, until the two meet. Then the calling
 //! thread checks the assumptions: it is at the next piece's item, in its container,
-//! spelled as assumed; each of the helper's pieces read cleanly (no problem, no warning)
-//! and ended where the next one begins; the limits still hold; and no world element was
-//! read twice. If all hold it takes what the helper read and is done; otherwise it reads
-//! on itself. Either way the scene, the warnings and the first error are those of one
+//! spelled as assumed; each of the helper's pieces read without a problem (warnings are
+//! fine: they are appended in the order one reader finds them) and ended where the next
+//! one begins; the limits still hold; and no world element was read twice. If all hold it
+//! takes what the helper read and is done; otherwise it reads on itself. Either way the scene, the warnings and the first error are those of one
 //! parser reading the whole file; a busy core only moves where the two meet.
 
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
@@ -69,7 +69,7 @@ enum Piece<'a> {
     /// Not read by the helper, or not yet received.
     Waiting,
     Read(Box<Done<'a>>),
-    /// Read with a problem or a warning, or not where the next piece begins.
+    /// Read with a problem, or not where the next piece begins.
     Unusable,
 }
 
