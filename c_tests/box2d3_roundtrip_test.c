@@ -222,6 +222,44 @@ static int capture_refuses_bodies_it_cannot_name(void) {
     return 0;
 }
 
+/* The message of a capture of `bodies` refused as an invalid argument, or "" when it is not. */
+static const char* refusal(b2WorldId world, const b2BodyId* bodies, uint32_t count,
+                           b2s_error* error) {
+    b2s_scene* scene = NULL;
+    b2s_box2d3_reports reports;
+    if (b2s_box2d3_capture_world(world, bodies, count, &scene, &reports, error) !=
+        B2S_CODE_INVALID_ARGUMENT) {
+        b2s_box2d3_reports_free(&reports);
+        b2s_scene_free(scene);
+        return "";
+    }
+    return error->message;
+}
+
+/* Of several bodies named twice or not live, the host hears of the first a pass in its own
+ * order meets, paired with the first index that named the same body. */
+static int capture_names_the_first_body_it_refuses(void) {
+    b2WorldDef world_def = b2DefaultWorldDef();
+    b2WorldId world = b2CreateWorld(&world_def);
+    b2BodyDef body_def = b2DefaultBodyDef();
+    b2BodyId a = b2CreateBody(world, &body_def), b = b2CreateBody(world, &body_def);
+    b2BodyId c = b2CreateBody(world, &body_def), gone = b2CreateBody(world, &body_def);
+    b2DestroyBody(gone);
+    b2s_error error;
+    const b2BodyId crossed[4] = {a, b, b, a};
+    ENSURE_STR(refusal(world, crossed, 4, &error), "bodies 1 and 2 are the same body");
+    const b2BodyId thrice[5] = {c, a, c, b, c};
+    ENSURE_STR(refusal(world, thrice, 5, &error), "bodies 0 and 2 are the same body");
+    const b2BodyId late[5] = {c, a, b, a, c};
+    ENSURE_STR(refusal(world, late, 5, &error), "bodies 1 and 3 are the same body");
+    const b2BodyId dead_first[4] = {a, gone, b, a};
+    ENSURE_STR(refusal(world, dead_first, 4, &error), "body 1 is not a live body of this world");
+    const b2BodyId twice_first[4] = {a, b, a, gone};
+    ENSURE_STR(refusal(world, twice_first, 4, &error), "bodies 0 and 2 are the same body");
+    b2DestroyWorld(world);
+    return 0;
+}
+
 /* A dynamic body given MassData keeps it through the round trip; a rotated body keeps its
  * rotation exactly. */
 static int mass_data_and_rotation_survive_capture(void) {
@@ -261,6 +299,7 @@ int main(void) {
     failed += RUN_TEST(every_scene_file_round_trips_bit_for_bit);
     failed += RUN_TEST(what_the_format_cannot_hold_is_reported);
     failed += RUN_TEST(capture_refuses_bodies_it_cannot_name);
+    failed += RUN_TEST(capture_names_the_first_body_it_refuses);
     failed += RUN_TEST(mass_data_and_rotation_survive_capture);
     return failed;
 }

@@ -124,9 +124,9 @@ static inline b2s_scene* growth_many_bodies(uint32_t count) {
 
 #define GROWTH_JOINED_BODIES 64u
 
-/* `count` joints (revolute, spring distance and weld in turn) among a ring of 64 dynamic
- * balls: the joints grow, the bodies do not. */
-static inline b2s_scene* growth_many_joints(uint32_t count) {
+/* `count` joints (revolute, spring distance and weld in turn) among a ring of `bodies`
+ * dynamic balls in a grid, joint i from ball i to the next. */
+static inline b2s_scene* growth_joints_among(uint32_t count, uint32_t bodies) {
     b2s_builder* b = b2s_builder_new();
     b2s_shape shape;
     b2s_shape_default(B2S_SHAPE_KIND_CIRCLE, &shape);
@@ -140,19 +140,20 @@ static inline b2s_scene* growth_many_joints(uint32_t count) {
     if (b != NULL) {
         b = growth_check(b, b2s_builder_add_fixture(b, &fixture, &id, NULL));
     }
-    for (uint32_t i = 0; i < GROWTH_JOINED_BODIES && b != NULL; ++i) {
+    for (uint32_t i = 0; i < bodies && b != NULL; ++i) {
         b2s_body body;
         b2s_body_default(B2S_BODY_KIND_DYNAMIC, &body);
-        body.position.x = (float)i;
+        body.position.x = (float)(i % 128u);
+        body.position.y = (float)(i / 128u);
         b = growth_check(b, b2s_builder_add_body(b, &body, &id, 1, NULL, NULL));
     }
     static const b2s_joint_kind kinds[3] = {B2S_JOINT_KIND_REVOLUTE, B2S_JOINT_KIND_DISTANCE,
-                                      B2S_JOINT_KIND_WELD};
+                                            B2S_JOINT_KIND_WELD};
     for (uint32_t i = 0; i < count && b != NULL; ++i) {
         b2s_joint joint;
         b2s_joint_default(kinds[i % 3u], &joint);
-        joint.body_a = i % GROWTH_JOINED_BODIES;
-        joint.body_b = (i + 1u) % GROWTH_JOINED_BODIES;
+        joint.body_a = i % bodies;
+        joint.body_b = (i + 1u) % bodies;
         joint.local_anchor_a.x = 0.5f;
         joint.local_anchor_b.x = -0.5f;
         if (joint.kind == B2S_JOINT_KIND_DISTANCE) {
@@ -161,6 +162,51 @@ static inline b2s_scene* growth_many_joints(uint32_t count) {
             joint.damping_ratio = 0.5f;
         }
         b = growth_check(b, b2s_builder_add_joint(b, &joint, NULL, NULL));
+    }
+    return b != NULL ? growth_finish(b) : NULL;
+}
+
+/* `count` joints among 64 balls: the joints grow, the bodies do not. */
+static inline b2s_scene* growth_many_joints(uint32_t count) {
+    return growth_joints_among(count, GROWTH_JOINED_BODIES);
+}
+
+/* `count` joints among `count` balls: joints and bodies grow together, so that work per
+ * joint that grows with the bodies shows. */
+static inline b2s_scene* growth_joined_bodies(uint32_t count) {
+    return growth_joints_among(count, count);
+}
+
+/* One static body holding `count` square chain loops in a grid, each its own shape. */
+static inline b2s_scene* growth_chains(uint32_t count) {
+    b2s_builder* b = b2s_builder_new();
+    uint32_t* ids = (uint32_t*)malloc(count * sizeof(uint32_t));
+    for (uint32_t i = 0; i < count && b != NULL && ids != NULL; ++i) {
+        float x = (float)(i % 128u), y = (float)(i / 128u);
+        const b2s_vec2 square[4] = {
+            {x - 0.4f, y - 0.4f}, {x + 0.4f, y - 0.4f}, {x + 0.4f, y + 0.4f}, {x - 0.4f, y + 0.4f}};
+        b2s_shape shape;
+        b2s_shape_default(B2S_SHAPE_KIND_CHAIN, &shape);
+        shape.is_loop = true;
+        uint32_t index = 0;
+        b = growth_check(b, b2s_builder_add_shape(b, &shape, square, 4, &index, NULL));
+        if (b == NULL) {
+            break;
+        }
+        b2s_fixture fixture;
+        b2s_fixture_default(&fixture);
+        fixture.shape = index;
+        b = growth_check(b, b2s_builder_add_fixture(b, &fixture, &ids[i], NULL));
+    }
+    if (b != NULL && ids != NULL) {
+        b2s_body body;
+        b2s_body_default(B2S_BODY_KIND_STATIC, &body);
+        b = growth_check(b, b2s_builder_add_body(b, &body, ids, count, NULL, NULL));
+    }
+    free(ids);
+    if (ids == NULL) {
+        b2s_builder_free(b);
+        return NULL;
     }
     return b != NULL ? growth_finish(b) : NULL;
 }

@@ -138,9 +138,11 @@ void b2s_box2d3_built_free(b2s_box2d3_built* built);
  *  rotation. Stores in `reports` what the scene cannot hold (capsules, mouse and filter
  *  joints, joints to bodies not named: not written) or holds only approximately
  *  (B2S_CODE_LOSSY_CAPTURE); free them with b2s_box2d3_reports_free. The world is not
- *  changed. Returns B2S_CODE_OK and the scene in `*out_scene` (free it with
- *  b2s_scene_free), or an error code (an invalid body id: B2S_CODE_INVALID_ARGUMENT) with
- *  `error` filled when not NULL. */
+ *  changed. Takes time proportional to n log n for n bodies, shapes and joints. Returns
+ *  B2S_CODE_OK and the scene in `*out_scene` (free it with b2s_scene_free), or an error
+ *  code with `error` filled when not NULL: B2S_CODE_INVALID_ARGUMENT names the first body,
+ *  in the host's order, that is not a live body of `world` or that names a body named
+ *  before it. */
 b2s_code b2s_box2d3_capture_world(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
                                   b2s_scene** out_scene, b2s_box2d3_reports* reports,
                                   b2s_error* error);

@@ -1356,10 +1356,19 @@ b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world
 
 /* ---- capture */
 
+/* A body the host named and the index it gave it. */
+typedef struct b2s3_named {
+    b2BodyId id;
+    uint32_t index;
+} b2s3_named;
+
 typedef struct b2s3_capture {
     b2WorldId world;
     const b2BodyId* bodies;
     uint32_t body_count;
+    /* the named bodies sorted by id, so that finding a joint's bodies among them is a binary
+     * search rather than a pass over all of them for every joint end */
+    const b2s3_named* named;
     b2s_builder* builder;
     b2s3_list list;
     b2s_error* error;
@@ -1367,18 +1376,39 @@ typedef struct b2s3_capture {
     uint32_t shape_count, fixture_count, joint_count;
 } b2s3_capture;
 
+/* Bodies in an order of their own (negative, zero or positive): zero for the same body. */
+static int b2s3_body_order(b2BodyId a, b2BodyId b) {
+    if (a.index1 != b.index1) {
+        return a.index1 < b.index1 ? -1 : 1;
+    }
+    if (a.world0 != b.world0) {
+        return a.world0 < b.world0 ? -1 : 1;
+    }
+    return (a.generation > b.generation) - (a.generation < b.generation);
+}
+
 static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
-    return a.index1 == b.index1 && a.world0 == b.world0 && a.generation == b.generation;
+    return b2s3_body_order(a, b) == 0;
+}
+
+static int b2s3_named_by_body(const void* a, const void* b) {
+    return b2s3_body_order(((const b2s3_named*)a)->id, ((const b2s3_named*)b)->id);
+}
+
+/* By body, one body's entries by the host's index: the first two of a body named more than
+ * once are the pair a pass in the host's order meets first. */
+static int b2s3_named_order(const void* a, const void* b) {
+    int order = b2s3_named_by_body(a, b);
+    uint32_t x = ((const b2s3_named*)a)->index, y = ((const b2s3_named*)b)->index;
+    return order != 0 ? order : (x > y) - (x < y);
 }
 
 /* The index the host gave `body`, or B2S_NONE. */
 static uint32_t b2s3_captured_index(const b2s3_capture* c, b2BodyId body) {
-    for (uint32_t i = 0; i < c->body_count; ++i) {
-        if (b2s3_same_body(c->bodies[i], body)) {
-            return i;
-        }
-    }
-    return B2S_NONE;
+    b2s3_named key = {body, 0};
+    const b2s3_named* found = (const b2s3_named*)bsearch(&key, c->named, c->body_count,
+                                                         sizeof(b2s3_named), b2s3_named_by_body);
+    return found != NULL ? found->index : B2S_NONE;
 }
 
 static bool b2s3_builder_ok(b2s3_capture* c, b2s_code code) {
@@ -1609,13 +1639,28 @@ static int b2s3_by_index(const void* a, const void* b) {
     return (x > y) - (x < y);
 }
 
+/* A chain among a body's shapes, and whether its fixture has been made. */
+typedef struct b2s3_chain_seen {
+    b2ChainId id;
+    bool captured;
+} b2s3_chain_seen;
+
+static int b2s3_chain_order(const void* a, const void* b) {
+    b2ChainId x = ((const b2s3_chain_seen*)a)->id, y = ((const b2s3_chain_seen*)b)->id;
+    if (x.index1 != y.index1) {
+        return x.index1 < y.index1 ? -1 : 1;
+    }
+    return (x.generation > y.generation) - (x.generation < y.generation);
+}
+
 /* The fixtures of one body, in the order its shapes were created (a chain where its first
  * segment stands), with the masses their densities give. */
 static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fixtures,
                                   uint32_t* count, b2MassData* computed) {
     int capacity = b2Body_GetShapeCount(body);
     b2ShapeId* shapes = (b2ShapeId*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2ShapeId));
-    b2ChainId* chains = (b2ChainId*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2ChainId));
+    b2s3_chain_seen* chains =
+        (b2s3_chain_seen*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2s3_chain_seen));
     b2MassData* masses = (b2MassData*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(b2MassData));
     float* densities = (float*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(float));
     *fixtures = (uint32_t*)malloc((size_t)(capacity > 0 ? capacity : 1) * sizeof(uint32_t));
@@ -1627,23 +1672,36 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
     }
     int shape_count = ok ? b2Body_GetShapes(body, shapes, capacity) : 0;
     qsort(shapes, (size_t)shape_count, sizeof(b2ShapeId), b2s3_by_index);
-    int chain_count = 0;
+    /* the body's chains, each once and sorted, so that a segment finds its chain's entry by
+     * a binary search however many chains the body holds */
+    size_t chain_count = 0;
+    for (int i = 0; i < shape_count; ++i) {
+        if (b2Shape_GetType(shapes[i]) == b2_chainSegmentShape) {
+            chains[chain_count].id = b2Shape_GetParentChain(shapes[i]);
+            chains[chain_count].captured = false;
+            chain_count += 1;
+        }
+    }
+    qsort(chains, chain_count, sizeof(b2s3_chain_seen), b2s3_chain_order);
+    size_t distinct = 0;
+    for (size_t k = 0; k < chain_count; ++k) {
+        if (distinct == 0 || b2s3_chain_order(&chains[distinct - 1], &chains[k]) != 0) {
+            chains[distinct++] = chains[k];
+        }
+    }
     size_t massive = 0;
     for (int i = 0; i < shape_count && ok; ++i) {
         b2ShapeId id = shapes[i];
         uint32_t fixture = 0;
         if (b2Shape_GetType(id) == b2_chainSegmentShape) {
-            b2ChainId chain = b2Shape_GetParentChain(id);
-            bool seen = false;
-            for (int k = 0; k < chain_count; ++k) {
-                seen = seen || (chains[k].index1 == chain.index1 &&
-                                chains[k].generation == chain.generation);
-            }
-            if (seen) {
+            b2s3_chain_seen key = {b2Shape_GetParentChain(id), false};
+            b2s3_chain_seen* chain = (b2s3_chain_seen*)bsearch(
+                &key, chains, distinct, sizeof(b2s3_chain_seen), b2s3_chain_order);
+            if (chain->captured) {
                 continue;
             }
-            chains[chain_count++] = chain;
-            if (!b2s3_capture_chain(c, chain, id, &fixture)) {
+            chain->captured = true;
+            if (!b2s3_capture_chain(c, chain->id, id, &fixture)) {
                 ok = c->failure == B2S_CODE_OK && !c->list.out_of_memory;
                 continue;
             }
@@ -1936,27 +1994,51 @@ b2s_code b2s_box2d3_capture_world(b2WorldId world, const b2BodyId* bodies, uint3
     if (!b2World_IsValid(world)) {
         return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, "the world is not valid");
     }
-    for (uint32_t i = 0; i < body_count; ++i) {
-        if (!b2Body_IsValid(bodies[i]) || bodies[i].world0 != world.index1 - 1) {
-            char message[96];
-            snprintf(message, sizeof message, "body %u is not a live body of this world",
-                     (unsigned)i);
-            return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+    uint32_t live = 0;
+    while (live < body_count && b2Body_IsValid(bodies[live]) &&
+           bodies[live].world0 == world.index1 - 1) {
+        live += 1;
+    }
+    /* Sorted, a body named twice stands beside itself. The host hears of whichever comes
+     * first in its order, a body not live or a body named twice, so only the bodies before
+     * the first not live are looked at. */
+    b2s3_named* named =
+        (b2s3_named*)malloc((size_t)(live > 0 ? live : 1) * sizeof(b2s3_named));
+    if (named == NULL) {
+        return b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    }
+    for (uint32_t i = 0; i < live; ++i) {
+        named[i].id = bodies[i];
+        named[i].index = i;
+    }
+    qsort(named, live, sizeof(b2s3_named), b2s3_named_order);
+    uint32_t first = B2S_NONE, twice = live;
+    for (uint32_t i = 1; i < live; ++i) {
+        if (b2s3_same_body(named[i - 1].id, named[i].id) && named[i].index < twice) {
+            first = named[i - 1].index;
+            twice = named[i].index;
         }
-        for (uint32_t k = 0; k < i; ++k) {
-            if (b2s3_same_body(bodies[k], bodies[i])) {
-                char message[96];
-                snprintf(message, sizeof message, "bodies %u and %u are the same body",
-                         (unsigned)k, (unsigned)i);
-                return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
-            }
-        }
+    }
+    if (twice < live) {
+        free(named);
+        char message[96];
+        snprintf(message, sizeof message, "bodies %u and %u are the same body",
+                 (unsigned)first, (unsigned)twice);
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+    }
+    if (live < body_count) {
+        free(named);
+        char message[96];
+        snprintf(message, sizeof message, "body %u is not a live body of this world",
+                 (unsigned)live);
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
     }
     b2s3_capture c;
     memset(&c, 0, sizeof c);
     c.world = world;
     c.bodies = bodies;
     c.body_count = body_count;
+    c.named = named;
     c.builder = b2s_builder_new();
     c.list.reports = reports;
     c.error = error;
@@ -1967,6 +2049,7 @@ b2s_code b2s_box2d3_capture_world(b2WorldId world, const b2BodyId* bodies, uint3
         ok = b2s3_capture_body(&c, i);
     }
     ok = ok && b2s3_capture_joints(&c);
+    free(named);
     if (c.list.out_of_memory) {
         b2s_builder_free(c.builder);
         b2s_box2d3_reports_free(reports);
