@@ -28,6 +28,7 @@
 
 typedef struct b2s3_list {
     b2s_box2d3_reports* reports;
+    uint32_t capacity; /* of reports->items, which grows by doubling: linear in reports */
     bool out_of_memory;
 } b2s3_list;
 
@@ -52,14 +53,18 @@ static void b2s3_report(b2s3_list* list, b2s_code code, const char* object, uint
     va_end(args);
 
     b2s_box2d3_reports* reports = list->reports;
-    b2s_box2d3_report* items = (b2s_box2d3_report*)realloc(
-        reports->items, (reports->count + 1) * sizeof(b2s_box2d3_report));
-    if (items == NULL) {
-        list->out_of_memory = true;
-        return;
+    if (reports->count == list->capacity) {
+        uint32_t capacity = list->capacity < 8u ? 8u : 2u * list->capacity;
+        b2s_box2d3_report* items =
+            (b2s_box2d3_report*)realloc(reports->items, capacity * sizeof(b2s_box2d3_report));
+        if (items == NULL) {
+            list->out_of_memory = true;
+            return;
+        }
+        reports->items = items;
+        list->capacity = capacity;
     }
-    reports->items = items;
-    b2s_box2d3_report* report = &items[reports->count];
+    b2s_box2d3_report* report = &reports->items[reports->count];
     report->code = code;
     report->object = object;
     report->index = index;
