@@ -11,7 +11,7 @@
 
 use std::borrow::Cow;
 use std::fs::File;
-use std::io::Read;
+use std::io::{Read, Seek, SeekFrom};
 use std::path::Path;
 
 use crate::LoadOptions;
@@ -52,6 +52,9 @@ enum Origin<'a> {
 /// A UTF-8 file being read.
 struct Stream {
     file: File,
+    /// Its size when it was opened, and the bytes of its byte-order mark.
+    len: u64,
+    bom: u64,
     /// The bytes of a character split by the end of the last chunk.
     pending: Vec<u8>,
     /// Bytes read so far, against the input limit.
@@ -81,18 +84,16 @@ impl<'a> Source<'a> {
         Ok(Source { text, base: 0, file: None, stop, encoding, origin: Origin::Memory })
     }
 
-    /// A second reader of this text, when it is a whole UTF-8 text in memory that ends
-    /// with the file: what a second thread may read.
-    pub fn shared(&self) -> Option<Source<'a>> {
-        // Only a UTF-8 file in memory is borrowed; the others are decoded or streamed.
-        match (&self.text, &self.stop) {
-            (Cow::Borrowed(text), None) => Some(Source {
-                text: Cow::Borrowed(text),
-                base: 0,
+    /// Where a second reader may read pieces of this text: a UTF-8 text in memory that is
+    /// valid to its end, or a UTF-8 file being read (whose pieces are read from it anew).
+    pub fn pieces(&self) -> Option<Pieces<'a>> {
+        match (&self.text, &self.stop, &self.file, &self.origin) {
+            (Cow::Borrowed(text), None, None, _) => Some(Pieces::Memory(text)),
+            (Cow::Owned(_), None, Some(stream), Origin::Path(path)) => Some(Pieces::File {
+                path,
+                bom: stream.bom,
+                len: usize::try_from(stream.len - stream.bom).ok()?,
                 file: None,
-                stop: None,
-                encoding: self.encoding,
-                origin: Origin::Memory,
             }),
             _ => None,
         }
@@ -130,6 +131,8 @@ impl<'a> Source<'a> {
             text: Cow::Owned(String::new()),
             base: 0,
             file: Some(Stream {
+                len: file.metadata().map_err(io)?.len(),
+                bom: if bom { UTF8_BOM.len() as u64 } else { 0 },
                 file,
                 pending: Vec::new(),
                 read: head.len() as u64,
@@ -214,6 +217,25 @@ impl<'a> Source<'a> {
         }
     }
 
+    /// Goes on reading a file at `offset`, past the text at hand, as if what lies between
+    /// had been read (another reader read it); false when that cannot be done. A text that
+    /// is all at hand has nothing to skip.
+    pub fn skip_to(&mut self, offset: usize) -> bool {
+        let end = self.end();
+        let Some(stream) = &mut self.file else {
+            return true;
+        };
+        let at = stream.bom + offset as u64;
+        if offset < end || stream.file.seek(SeekFrom::Start(at)).is_err() {
+            return false;
+        }
+        stream.pending.clear();
+        stream.read = at;
+        self.text.to_mut().clear();
+        self.base = offset;
+        true
+    }
+
     /// Appends the valid text of `bytes`; `last` says the file ends with them.
     fn append(&mut self, bytes: &[u8], last: bool) {
         let at = self.end();
@@ -262,6 +284,60 @@ impl<'a> Source<'a> {
             }
             Origin::Memory => unreachable!("a source in memory is whole"),
         }
+    }
+}
+
+/// The text of a file as a second reader reads it: whole in memory, or a piece at a time
+/// from the file, with a handle of its own.
+pub enum Pieces<'a> {
+    Memory(&'a str),
+    File { path: &'a Path, bom: u64, len: usize, file: Option<File> },
+}
+
+impl<'a> Pieces<'a> {
+    /// The length of the text.
+    pub fn len(&self) -> usize {
+        match self {
+            Pieces::Memory(text) => text.len(),
+            Pieces::File { len, .. } => *len,
+        }
+    }
+
+    /// The bytes of the text from `from` to `to` (within it), which may cut a character.
+    pub fn bytes(&mut self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
+        match self {
+            Pieces::Memory(text) => text.as_bytes().get(from..to).map(Cow::Borrowed),
+            Pieces::File { path, bom, file, .. } => {
+                let file = match file {
+                    Some(file) => file,
+                    None => file.insert(File::open(path).ok()?),
+                };
+                file.seek(SeekFrom::Start(*bom + from as u64)).ok()?;
+                let mut bytes = vec![0; to.checked_sub(from)?];
+                file.read_exact(&mut bytes).ok()?;
+                Some(Cow::Owned(bytes))
+            }
+        }
+    }
+
+    /// A source that holds the text from `from` to `to`, at its offsets in the whole (a text
+    /// in memory, checked already, all of it up to `to`); None unless that is all text
+    /// (valid UTF-8, only characters XML allows).
+    pub fn source(&mut self, from: usize, to: usize) -> Option<Source<'a>> {
+        let (text, base, encoding, origin) = match self {
+            Pieces::Memory(text) => {
+                (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: false }, Origin::Memory)
+            }
+            Pieces::File { path, bom, .. } => {
+                let (path, bom) = (*path, *bom > 0);
+                let text = String::from_utf8(self.bytes(from, to)?.into_owned()).ok()?;
+                if first_non_char(text.as_bytes()).is_some() {
+                    return None;
+                }
+                (Cow::Owned(text), from, Encoding::Utf8 { bom }, Origin::Path(path))
+            }
+        };
+        Some(Source { text, base, file: None, stop: None, encoding, origin })
     }
 }
 

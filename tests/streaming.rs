@@ -29,6 +29,9 @@ fn same_both_ways_with(bytes: &[u8], what: &str, options: &LoadOptions) -> Resul
     let from_path = load_path(&file, &options).map(|s| s.to_json());
     std::fs::remove_file(&file).unwrap();
     let from_memory = load(bytes, &options).map(|s| s.to_json());
+    // The reference: memory, one thread.
+    let one = load(bytes, &LoadOptions { threads: 1, ..options }).map(|s| s.to_json());
+    assert!(one == from_memory, "{what}: memory on one thread and on two differ");
     match (from_memory, from_path) {
         (Ok(memory), Ok(path)) => {
             if memory != path {
@@ -220,4 +223,34 @@ fn a_small_text_limit_refuses_the_same_nodes_both_ways() {
             }
         }
     }
+}
+
+/// A file large enough for two threads loads from its path as from memory on one thread:
+/// clean, with warnings in the pieces the second thread reads, with an error there, with
+/// a byte that is not text there, and cut short.
+#[test]
+fn a_large_file_loads_from_its_path_on_two_threads_as_on_one() {
+    let xml = scene(4000, 3);
+    assert!(xml.len() > 1 << 20, "{} bytes: too small for two threads", xml.len());
+    assert!(same_both_ways(xml.as_bytes(), "large"));
+    let late = xml.len() * 3 / 4;
+    let name = late + xml[late..].find("<Name>").unwrap() + "<Name>".len();
+    let warned =
+        xml.replace("<AllowSleep>true</AllowSleep>", "<AllowSleep>true</AllowSleep><Wind/>");
+    same_both_ways_with(warned.as_bytes(), "large-warnings", &LoadOptions::default()).unwrap();
+    let strict = LoadOptions { strict: true, ..LoadOptions::default() };
+    let error = same_both_ways_with(warned.as_bytes(), "large-strict", &strict).unwrap_err();
+    assert_eq!(error.code, Code::UnknownElement);
+    let mut bytes = xml.clone().into_bytes();
+    bytes[name + 2] = 0xFF;
+    let error = same_both_ways_with(&bytes, "large-utf8", &LoadOptions::default()).unwrap_err();
+    assert_eq!(error.code, Code::InvalidUtf8);
+    let mut mismatched = xml.clone();
+    let at = late + xml[late..].find("</Position>").unwrap();
+    mismatched.replace_range(at..at + "</Position>".len(), "</Positio>");
+    let options = LoadOptions::default();
+    let error = same_both_ways_with(mismatched.as_bytes(), "large-mismatched", &options);
+    // The byte offset counts the byte-order mark.
+    assert_eq!(error.unwrap_err().position.byte_offset as usize, at);
+    assert!(!same_both_ways(&xml.as_bytes()[..late], "large-truncated"));
 }

@@ -18,7 +18,7 @@ use super::world::{CONTAINERS, WorldChild};
 use super::{Parser, Seen, Tag};
 use crate::LoadOptions;
 use crate::arena::Arena;
-use crate::input::Source;
+use crate::input::{Pieces, Source};
 use crate::text::is_xml_space_byte;
 
 /// The smallest text worth a second thread: below it, starting one costs more than it
@@ -36,25 +36,25 @@ const MAX_PIECES: usize = 64;
 pub(super) type Boundary = (usize, WorldChild);
 
 /// A parser's part in a load.
-pub(super) enum Part<'a> {
+pub(super) enum Part {
     /// It reads the whole file, or the rest of it.
     Whole,
     /// The calling thread, with a helper reading the pieces from the last one back.
-    Caller(Caller<'a>),
+    Caller(Caller),
     /// A piece the helper reads: it ends at `end`, where the next piece begins, and
     /// `reached` says whether it ended there as that piece assumes.
     Piece { end: Boundary, reached: bool },
 }
 
 /// The helper, as the calling thread sees it.
-pub(super) struct Caller<'a> {
+pub(super) struct Caller {
     boundaries: Vec<Boundary>,
     /// The first boundary the calling thread has not reached.
     next: usize,
     claims: Arc<Mutex<Claims>>,
-    done: mpsc::Receiver<(usize, Option<Done<'a>>)>,
+    done: mpsc::Receiver<(usize, Option<Done>)>,
     /// What the helper read, by piece.
-    pieces: Vec<Piece<'a>>,
+    pieces: Vec<Piece>,
 }
 
 /// Who reads which piece: the calling thread those before `caller`, the helper those from
@@ -65,42 +65,51 @@ struct Claims {
     helper: usize,
 }
 
-enum Piece<'a> {
+enum Piece {
     /// Not read by the helper, or not yet received.
     Waiting,
-    Read(Box<Done<'a>>),
+    Read(Box<Done>),
     /// Read with a problem, or not where the next piece begins.
     Unusable,
 }
 
-/// What the helper read of one piece, when it read it without a problem.
-struct Done<'a> {
-    parser: Parser<'a>,
+/// What the helper read of one piece, when it read it without a problem: what it built
+/// (its kept text copied out of the piece's text, which is let go) and where its reader
+/// stopped.
+struct Done {
+    arena: Arena,
+    /// The reader's offsets and open elements at the end of the piece, and the elements it
+    /// counted.
+    pos: usize,
+    started: usize,
+    last: usize,
+    open: Vec<Name>,
+    elements: u64,
     /// The world's elements it read, its own container among them.
     seen: Seen,
 }
 
-/// Starts the helper on `scope`, when the options allow a thread and `source` is a text
-/// in memory large enough to be worth it. For tests, `split` forces the boundaries and
-/// a first piece that is the helper's from the start, from which on it reads them
-/// whatever the timing.
+/// Starts the helper on `scope`, when the options allow a thread and the text, whose
+/// `pieces` a second reader may read (see [`Source::pieces`]), is large enough to be worth
+/// it. For tests, `split` forces the boundaries and a first piece that is the helper's from
+/// the start, from which on it reads them whatever the timing.
 pub(super) fn start<'a, 'scope>(
     scope: &'scope Scope<'scope, '_>,
-    source: &Source<'a>,
+    pieces: Option<Pieces<'a>>,
     options: &'a LoadOptions,
     split: Option<(Vec<Boundary>, usize)>,
-) -> Part<'a>
+) -> Part
 where
     'a: 'scope,
 {
     if options.threads == 1 {
         return Part::Whole;
     }
-    let Some(shared) = source.shared() else { return Part::Whole };
+    let Some(mut pieces) = pieces else { return Part::Whole };
     let (boundaries, helped) = match split {
         Some(split) => split,
-        None if shared.text().len() >= MIN_BYTES => {
-            let boundaries = boundaries(shared.text().as_bytes());
+        None if pieces.len() >= MIN_BYTES => {
+            let boundaries = boundaries(&mut pieces);
             let last = boundaries.len();
             (boundaries, last)
         }
@@ -112,20 +121,30 @@ where
     let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped.min(boundaries.len()) }));
     let (sender, done) = mpsc::channel();
     let (their_boundaries, their_claims) = (boundaries.clone(), Arc::clone(&claims));
-    scope.spawn(move || help(shared, options, &their_boundaries, &their_claims, &sender));
+    scope.spawn(move || help(pieces, options, &their_boundaries, &their_claims, &sender));
     let pieces = boundaries.iter().map(|_| Piece::Waiting).collect();
     Part::Caller(Caller { boundaries, next: 0, claims, done, pieces })
 }
 
-/// Where the pieces of `text` begin: the first item after its twin from every
-/// [`PIECE_BYTES`] or so on.
-fn boundaries(text: &[u8]) -> Vec<Boundary> {
-    let pieces = (text.len() / PIECE_BYTES).clamp(2, MAX_PIECES);
-    let step = text.len() / pieces;
+/// How far from where a piece should begin its item is looked for, and how far before it
+/// the end tag of its twin may lie.
+const SEARCH_BYTES: usize = 16 << 10;
+const LOOK_BACK_BYTES: usize = 1 << 10;
+
+/// Where the pieces of the text begin: the first item after its twin from every
+/// [`PIECE_BYTES`] or so on, when one lies near.
+fn boundaries(text: &mut Pieces) -> Vec<Boundary> {
+    let len = text.len();
+    let pieces = (len / PIECE_BYTES).clamp(2, MAX_PIECES);
+    let step = len / pieces;
     let mut boundaries: Vec<Boundary> = Vec::with_capacity(pieces);
     for k in 1..pieces {
         let from = boundaries.last().map_or(0, |&(at, _)| at + 1).max(step * k);
-        boundaries.extend(item_after_a_twin(text, from, step * (k + 1)));
+        let to = (step * (k + 1)).min(from + SEARCH_BYTES).min(len);
+        let back = from.saturating_sub(LOOK_BACK_BYTES);
+        let Some(bytes) = text.bytes(back, to) else { break };
+        let found = item_after_a_twin(&bytes, from - back, to - back);
+        boundaries.extend(found.map(|(at, container)| (back + at, container)));
     }
     boundaries
 }
@@ -161,16 +180,18 @@ fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
     twin.then_some(container)
 }
 
-/// The helper: claims and reads the pieces from the last one back until it reaches one
-/// the calling thread has claimed, or one it cannot use (the pieces before it could not
-/// be used either: the calling thread takes the pieces from one on to the end).
-fn help<'a>(
-    source: Source<'a>,
-    options: &'a LoadOptions,
+/// The helper: reads the root's start tag, then claims and reads the pieces from the last
+/// one back until it reaches one the calling thread has claimed, or one it cannot use (the
+/// pieces before it could not be used either: the calling thread takes the pieces from one
+/// on to the end).
+fn help(
+    mut text: Pieces<'_>,
+    options: &LoadOptions,
     boundaries: &[Boundary],
     claims: &Mutex<Claims>,
-    sender: &mpsc::Sender<(usize, Option<Done<'a>>)>,
+    sender: &mpsc::Sender<(usize, Option<Done>)>,
 ) {
+    let Some((root, version)) = root(&mut text, options, boundaries[0].0) else { return };
     for piece in (0..boundaries.len()).rev() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
@@ -179,9 +200,11 @@ fn help<'a>(
             }
             claims.helper = claims.helper.min(piece);
         }
-        let Some(source) = source.shared() else { return };
         let end = boundaries.get(piece + 1).copied();
-        let done = read_piece(source, options, boundaries[piece], end);
+        let at = boundaries[piece].0;
+        let done = text
+            .source(at, end.map_or(text.len(), |(end, _)| end))
+            .and_then(|source| read_piece(source, options, &root, version, boundaries[piece], end));
         let usable = done.is_some();
         if sender.send((piece, done)).is_err() || !usable {
             return;
@@ -189,25 +212,31 @@ fn help<'a>(
     }
 }
 
-/// Reads the root's start tag for the Version, then from `start` on as if it began an
-/// item of its container, up to `end` (the next piece) or to the end of the file.
-fn read_piece<'a>(
-    source: Source<'a>,
-    options: &'a LoadOptions,
-    (at, container): Boundary,
-    end: Option<Boundary>,
-) -> Option<Done<'a>> {
-    let mut parser = Parser::new(source, options);
+/// The root's start tag and the Version it says, read from the start of the text (before
+/// `first`, the first piece's start, and its last `<` within the first [`SEARCH_BYTES`]).
+fn root(text: &mut Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)> {
+    let head = text.bytes(0, first.min(SEARCH_BYTES))?;
+    let end = memchr::memrchr(b'<', &head)?;
+    let mut parser = Parser::new(text.source(0, end)?, options);
     let root = parser.root().ok()?;
     parser.read_version(&root).ok()?;
-    // The calling thread counts, reports and keeps everything before `at`.
-    let version = parser.arena.version;
-    parser.arena = Arena::new(options.strict);
+    Some((root, parser.arena.version))
+}
+
+/// Reads `source`, the text of one piece, from its start on as if it began an item of its
+/// container, up to `end` (the next piece) or to the end of the file.
+fn read_piece(
+    source: Source<'_>,
+    options: &LoadOptions,
+    root: &Tag,
+    version: u32,
+    (at, container): Boundary,
+    end: Option<Boundary>,
+) -> Option<Done> {
+    let mut parser = Parser::new(source, options);
     parser.arena.version = version;
-    parser.comments.clear();
-    parser.elements = 0;
     let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
-    parser.open.push(tag.name.clone());
+    parser.open = vec![root.name.clone(), tag.name.clone()];
     (parser.pos, parser.started, parser.last) = (at, at, at);
     if let Some(end) = end {
         parser.part = Part::Piece { end, reached: false };
@@ -215,17 +244,22 @@ fn read_piece<'a>(
     let mut seen = Seen::default();
     seen.bits |= 1 << container.index();
     let read = match parser.container(&tag, container, &mut seen) {
-        Ok(false) => parser.world_children(&root, &mut seen),
+        Ok(false) => parser.world_children(root, &mut seen),
         done => done.map(drop),
     };
     let ended = match parser.part {
         Part::Piece { reached, .. } => read.is_ok() && reached,
         _ => read.and_then(|()| parser.epilog()).is_ok(),
     };
-    ended.then_some(Done { parser, seen })
+    if !ended {
+        return None;
+    }
+    let Parser { source, mut arena, pos, started, last, open, elements, .. } = parser;
+    arena.scene.pool_kept_text(|from, to| source.slice(from, to));
+    Some(Done { arena, pos, started, last, open, elements, seen })
 }
 
-impl Caller<'_> {
+impl Caller {
     /// Claims `piece` for the calling thread, which has reached or passed where it begins,
     /// and keeps the helper from those before it; whether the helper had not claimed it.
     fn claim(&self, piece: usize) -> bool {
@@ -250,7 +284,7 @@ impl Caller<'_> {
     }
 }
 
-impl Drop for Caller<'_> {
+impl Drop for Caller {
     /// The helper starts no piece once the calling thread is done with them.
     fn drop(&mut self) {
         self.claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
@@ -321,18 +355,25 @@ impl Parser<'_> {
                 return false;
             }
             bits |= done.seen.bits;
-            elements += done.parser.elements;
+            elements += done.elements;
         }
         if elements > self.options.max_elements {
+            return false;
+        }
+        let end = match caller.pieces.last() {
+            Some(Piece::Read(done)) => done.pos,
+            _ => return false,
+        };
+        // A file is read on from where the last piece ends.
+        if !self.source.skip_to(end) {
             return false;
         }
         // Every piece from `first` on was read, as checked above.
         for piece in &mut caller.pieces[first..] {
             let Piece::Read(done) = std::mem::replace(piece, Piece::Unusable) else { continue };
-            let parser = done.parser;
-            self.arena.append(parser.arena);
-            (self.pos, self.started, self.last) = (parser.pos, parser.started, parser.last);
-            self.open = parser.open;
+            let Done { arena, pos, started, last, open, .. } = *done;
+            self.arena.append(arena);
+            (self.pos, self.started, self.last, self.open) = (pos, started, last, open);
         }
         (seen.bits, self.elements) = (bits, elements);
         true
@@ -440,7 +481,7 @@ mod tests {
         for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
             let text =
                 format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-            let found = boundaries(text.as_bytes());
+            let found = boundaries(&mut Pieces::Memory(&text));
             assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
             let step = text.len() / pieces;
             for (k, &(at, container)) in (1..).zip(&found) {
@@ -449,7 +490,7 @@ mod tests {
                 assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
             }
         }
-        assert_eq!(boundaries(b"<World><Bodies></Bodies></World>"), []);
+        assert_eq!(boundaries(&mut Pieces::Memory("<World><Bodies></Bodies></World>")), []);
     }
 
     /// One piece from every tag, assuming each container: what the helper reads is taken
@@ -626,7 +667,7 @@ mod tests {
         text += "</Joints></World>";
         let bytes = text.as_bytes();
         assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-        let pieces = boundaries(bytes);
+        let pieces = boundaries(&mut Pieces::Memory(&text));
         assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
         let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
         for container in CONTAINERS {
@@ -660,19 +701,29 @@ mod tests {
         let (mine, theirs) = (scene(3), scene(4));
         let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
         let options = LoadOptions::default();
-        for first in 0..2 {
-            let mut parser =
-                Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
-            let second = Source::memory(theirs.as_bytes(), &options).unwrap();
-            let pieces = vec![(starts[1], WorldChild::Bodies), (starts[2], WorldChild::Bodies)];
-            std::thread::scope(|scope| {
-                parser.part = start(scope, &second, &options, Some((pieces, first)));
-                parser.document().unwrap();
-            });
-            assert_eq!(parser.arena.scene.bodies.len(), 4, "helped from piece {first}");
-            assert_eq!(parser.elements, 4 + 4 * 2 + 1);
-            assert_eq!(parser.arena.origins.bodies.last(), Some(&theirs.rfind("<Body ").unwrap()));
+        let file = std::env::temp_dir().join(format!("box2scene-ahead-{}.xml", std::process::id()));
+        std::fs::write(&file, &theirs).unwrap();
+        for in_file in [false, true] {
+            for first in 0..2 {
+                let mut parser =
+                    Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
+                let second = match in_file {
+                    false => Pieces::Memory(&theirs),
+                    true => Pieces::File { path: &file, bom: 0, len: theirs.len(), file: None },
+                };
+                let pieces = vec![(starts[1], WorldChild::Bodies), (starts[2], WorldChild::Bodies)];
+                std::thread::scope(|scope| {
+                    parser.part = start(scope, Some(second), &options, Some((pieces, first)));
+                    parser.document().unwrap();
+                });
+                let what = format!("helped from piece {first}, from a file: {in_file}");
+                assert_eq!(parser.arena.scene.bodies.len(), 4, "{what}");
+                assert_eq!(parser.elements, 4 + 4 * 2 + 1, "{what}");
+                let last = theirs.rfind("<Body ").unwrap();
+                assert_eq!(parser.arena.origins.bodies.last(), Some(&last), "{what}");
+            }
         }
+        std::fs::remove_file(&file).unwrap();
     }
 
     /// Pieces with warnings are taken, their warnings kept as one thread keeps them: given
@@ -692,11 +743,10 @@ mod tests {
         let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
         let options = LoadOptions::default();
         let mut parser = Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
-        let second = Source::memory(theirs.as_bytes(), &options).unwrap();
         // One piece: the helper's text matches the caller's up to its start.
         let pieces = vec![(starts[2], WorldChild::Bodies)];
         std::thread::scope(|scope| {
-            parser.part = start(scope, &second, &options, Some((pieces, 0)));
+            parser.part = start(scope, Some(Pieces::Memory(&theirs)), &options, Some((pieces, 0)));
             parser.document().unwrap();
         });
         let warnings = parser.arena.take_warnings();

@@ -58,7 +58,7 @@ fn read_split<'a>(
     split: Option<(Vec<ahead::Boundary>, usize)>,
 ) -> (Source<'a>, Parsed<Arena>) {
     std::thread::scope(|scope| {
-        let part = ahead::start(scope, &source, options, split);
+        let part = ahead::start(scope, source.pieces(), options, split);
         let mut parser = Parser::new(source, options);
         parser.part = part;
         let read = parser.document();
@@ -236,7 +236,7 @@ pub struct Parser<'a> {
     /// What is built from what is read.
     pub arena: Arena,
     /// Its part in a load on two threads.
-    part: ahead::Part<'a>,
+    part: ahead::Part,
 }
 
 impl<'a> Parser<'a> {
