@@ -90,8 +90,8 @@ b2s_scene* box2scene_from_memory(const char* bytes, size_t size, uint32_t thread
     return scene;
 }
 
-/// On one thread, said so: the peer reads on one, and so does the host that does not know
-/// to ask for more.
+/// With threads = 1 said outright, so that this stays a one-thread load whatever
+/// box2scene's default for paths becomes: the peer reads on one thread too.
 b2s_scene* box2scene_from_path(const char* path) {
     b2s_scene* scene = nullptr;
     b2s_error error;

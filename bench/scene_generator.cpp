@@ -319,7 +319,8 @@ private:
     }
 
     /// Every fixture has a positive density: a dynamic body with a zero-density fixture
-    /// and no MassData would be a warning, and the files load without one.
+    /// and no MassData would be a warning, and the files load without one unless
+    /// omit_densities takes some out.
     void fixture(uint32_t index, int depth) {
         parts_.clear();
         part(depth + 1, "Shape", id(random_.below(shape_count_)));
