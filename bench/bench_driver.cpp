@@ -1,15 +1,20 @@
 // The measurements bench/run makes, one mode per kind of measurement:
 //
 //   bench_driver time RUNS FILE... box2scene and the pugixml peer, interleaved, in RUNS
-//                                  rounds over every FILE: parsing it already in memory,
-//                                  loading it from its path; box2scene writing it back and
-//                                  building its b2World. Prints "FILE name value" lines,
-//                                  medians in seconds.
+//                                  rounds over every FILE: parsing it already in memory
+//                                  (box2scene with its default options), loading it from its
+//                                  path (box2scene with threads = 1); box2scene writing it
+//                                  back and building its b2World. Prints "FILE name value"
+//                                  lines, medians in seconds.
 //   bench_driver rss LOADER FILE   loads FILE from its path once (a fresh process per
 //                                  measurement) and prints the peak RSS in KiB before the
 //                                  load (the process itself) and after it.
-//   bench_driver once LOADER FILE  reads FILE into memory and loads it once, for callgrind;
-//                                  LOADER `read` only reads, the baseline to subtract.
+//   bench_driver once LOADER FILE [THREADS]
+//                                  reads FILE into memory and loads it once, for callgrind;
+//                                  LOADER `read` only reads, the baseline to subtract, and
+//                                  `write` loads and then writes the scene back (callgrind
+//                                  counts only b2s_write_memory there). THREADS is
+//                                  box2scene's `threads` option, 0 (its choice) by default.
 //
 // LOADER is box2scene or pugixml.
 #include <box2d/box2d.h>
@@ -68,20 +73,30 @@ std::unique_ptr<char[]> copy_of(const char* bytes, size_t size) {
     return copy;
 }
 
-b2s_scene* box2scene_from_memory(const char* bytes, size_t size) {
+b2s_load_options with_threads(uint32_t threads) {
+    b2s_load_options options = b2s_load_options_default();
+    options.threads = threads;
+    return options;
+}
+
+b2s_scene* box2scene_from_memory(const char* bytes, size_t size, uint32_t threads = 0) {
     b2s_scene* scene = nullptr;
     b2s_error error;
-    if (b2s_load_memory(reinterpret_cast<const uint8_t*>(bytes), size, nullptr, &scene,
+    b2s_load_options options = with_threads(threads);
+    if (b2s_load_memory(reinterpret_cast<const uint8_t*>(bytes), size, &options, &scene,
                         &error) != B2S_CODE_OK) {
         die(std::string("box2scene: ") + error.message);
     }
     return scene;
 }
 
+/// With threads = 1 said outright, so that this stays a one-thread load whatever
+/// box2scene's default for paths becomes: the peer reads on one thread too.
 b2s_scene* box2scene_from_path(const char* path) {
     b2s_scene* scene = nullptr;
     b2s_error error;
-    if (b2s_load_file(path, nullptr, &scene, &error) != B2S_CODE_OK) {
+    b2s_load_options options = with_threads(1);
+    if (b2s_load_file(path, &options, &scene, &error) != B2S_CODE_OK) {
         die(std::string("box2scene: ") + error.message);
     }
     return scene;
@@ -229,11 +244,21 @@ int peak_rss(const std::string& loader, const char* path) {
     return 0;
 }
 
-int load_once(const std::string& loader, const char* path) {
+int load_once(const std::string& loader, const char* path, uint32_t threads) {
     size_t size = 0;
     std::unique_ptr<char[]> bytes = file_bytes(path, size);
     if (loader == "box2scene") {
-        b2s_scene_free(box2scene_from_memory(bytes.get(), size));
+        b2s_scene_free(box2scene_from_memory(bytes.get(), size, threads));
+    } else if (loader == "write") {
+        b2s_scene* scene = box2scene_from_memory(bytes.get(), size, threads);
+        char* text = nullptr;
+        size_t written = 0;
+        if (b2s_write_memory(scene, nullptr, &text, &written, nullptr) != B2S_CODE_OK) {
+            die("box2scene could not write the scene");
+        }
+        std::printf("%zu\n", written);
+        b2s_text_free(text);
+        b2s_scene_free(scene);
     } else if (loader == "pugixml") {
         bench::PugiScene scene;
         peer_from_memory(std::move(bytes), size, scene);
@@ -241,8 +266,9 @@ int load_once(const std::string& loader, const char* path) {
     return 0;
 }
 
-bool is_loader(const std::string& name, bool or_read) {
-    return name == "box2scene" || name == "pugixml" || (or_read && name == "read");
+bool is_loader(const std::string& name, bool or_others) {
+    return name == "box2scene" || name == "pugixml" ||
+           (or_others && (name == "read" || name == "write"));
 }
 
 } // namespace
@@ -255,12 +281,13 @@ int main(int argc, char** argv) {
     if (mode == "rss" && argc == 4 && is_loader(argv[2], false)) {
         return peak_rss(argv[2], argv[3]);
     }
-    if (mode == "once" && argc == 4 && is_loader(argv[2], true)) {
-        return load_once(argv[2], argv[3]);
+    if (mode == "once" && (argc == 4 || argc == 5) && is_loader(argv[2], true)) {
+        uint32_t threads = argc == 5 ? static_cast<uint32_t>(std::atoi(argv[4])) : 0;
+        return load_once(argv[2], argv[3], threads);
     }
     std::fprintf(stderr,
                  "usage: %s time RUNS FILE... | rss box2scene|pugixml FILE | "
-                 "once read|box2scene|pugixml FILE\n",
+                 "once read|box2scene|pugixml|write FILE [THREADS]\n",
                  argv[0]);
     return 2;
 }

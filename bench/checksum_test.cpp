@@ -1,10 +1,12 @@
-// bench/checksum_test [FILE...]: box2scene and the pugixml peer load each FILE (from
-// bench/generate), and small generated scenes of many sizes and seeds, to the same counts
-// and the same checksum of every value; box2scene without a warning, since the files are
-// meant to load cleanly. And the peer refuses what box2scene refuses, for each check it
-// makes.
+// bench/checksum_test [FILE...] [--warnings FILE...]: box2scene and the pugixml peer load
+// each FILE (from bench/generate), and small generated scenes of many sizes and seeds, to
+// the same counts and the same checksum of every value; box2scene without a warning, since
+// the files are meant to load cleanly, except for files after --warnings (from
+// bench/generate --warnings), which must give exactly the warnings the generator promises.
+// And the peer refuses what box2scene refuses, for each check it makes.
 #include <box2scene.h>
 
+#include <algorithm>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -35,12 +37,32 @@ void print_parts(const char* who, const bench::SceneChecksum& c) {
                 c.fixture_ids);
 }
 
+/// Whether box2scene gives the warnings the generator promises: none, or one
+/// `dynamic-body-zero-density` for each of a tenth of the bodies, capped as every scene's
+/// warnings are; says what differs when it does not.
+bool expected_warnings(const std::string& what, const b2s_scene_view& view,
+                       bench::Warnings warnings) {
+    uint32_t warned = warnings == bench::Warnings::none ? 0 : view.body_count / 10;
+    uint32_t kept = std::min<uint32_t>(warned, B2S_MAX_WARNINGS);
+    uint32_t count = kept + (warned > kept ? 1 : 0); // and one warnings-truncated
+    bool as_promised = view.diagnostic_count == count;
+    for (uint32_t i = 0; as_promised && i < count; ++i) {
+        uint32_t code = i < kept ? B2S_CODE_DYNAMIC_BODY_ZERO_DENSITY : B2S_CODE_WARNINGS_TRUNCATED;
+        as_promised = view.diagnostics[i].code == code;
+    }
+    if (!as_promised) {
+        std::printf("FAIL %s: box2scene gives %u warnings, not %u; first: %s\n", what.c_str(),
+                    view.diagnostic_count, count,
+                    view.diagnostic_count > 0 ? view.diagnostics[0].message : "none");
+    }
+    return as_promised;
+}
+
 /// Whether the two loads agree; says what differs when they do not.
-bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PugiScene& peer) {
+bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PugiScene& peer,
+                bench::Warnings warnings) {
     const b2s_scene_view& view = *b2s_scene_get_view(scene);
-    if (view.diagnostic_count != 0) {
-        std::printf("FAIL %s: box2scene warns (%u warnings), first: %s\n", what.c_str(),
-                    view.diagnostic_count, view.diagnostics[0].message);
+    if (!expected_warnings(what, view, warnings)) {
         return false;
     }
     bench::SceneChecksum ours = bench::checksum(view), theirs = bench::checksum(peer.view());
@@ -58,7 +80,7 @@ bool same_scene(const std::string& what, const b2s_scene* scene, const bench::Pu
 /// Whether loading `bytes`, the text of `path`, from memory with `threads` gives the scene
 /// `peer` holds.
 bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, size_t size,
-                      uint32_t threads, const bench::PugiScene& peer) {
+                      uint32_t threads, const bench::PugiScene& peer, bench::Warnings warnings) {
     b2s_load_options options = b2s_load_options_default();
     options.threads = threads;
     b2s_scene* scene = nullptr;
@@ -69,14 +91,14 @@ bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, si
         return false;
     }
     std::string what = std::string(path) + " from memory, threads " + std::to_string(threads);
-    bool same = same_scene(what, scene, peer);
+    bool same = same_scene(what, scene, peer, warnings);
     b2s_scene_free(scene);
     return same;
 }
 
 /// The file loads alike from its path (a chunk at a time), and from memory on one thread
 /// and, ten times, on as many as box2scene chooses (two from 1 MiB on).
-bool check_file(const char* path) {
+bool check_file(const char* path, bench::Warnings warnings) {
     b2s_scene* scene = nullptr;
     b2s_error error;
     if (b2s_load_file(path, nullptr, &scene, &error) != B2S_CODE_OK) {
@@ -89,20 +111,20 @@ bool check_file(const char* path) {
     bool loaded = bench::pugi_load_file(path, peer, why);
     size_t size = 0;
     std::unique_ptr<char[]> bytes = bench::read_file(path, size);
-    bool same = loaded && same_scene(path, scene, peer) &&
-                same_from_memory(path, bytes, size, 1, peer);
+    bool same = loaded && same_scene(path, scene, peer, warnings) &&
+                same_from_memory(path, bytes, size, 1, peer, warnings);
     // Where the two threads meet depends on timing; wherever they meet, the scene is one.
     for (int run = 0; same && run < 10; ++run) {
-        same = same_from_memory(path, bytes, size, 0, peer);
+        same = same_from_memory(path, bytes, size, 0, peer, warnings);
     }
     if (!loaded) {
         std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
     } else if (same) {
         const b2s_scene_view& v = *b2s_scene_get_view(scene);
-        std::printf("ok   %s: %u shapes, %u fixtures, %u bodies, %u joints; checksum %016" PRIx64
-                    "\n",
+        std::printf("ok   %s: %u shapes, %u fixtures, %u bodies, %u joints, %u warnings; "
+                    "checksum %016" PRIx64 "\n",
                     path, v.shape_count, v.fixture_count, v.body_count, v.joint_count,
-                    bench::checksum(v).combined());
+                    v.diagnostic_count, bench::checksum(v).combined());
     }
     b2s_scene_free(scene);
     return same;
@@ -119,8 +141,9 @@ bool peer_load(const std::string& text, bench::PugiScene& peer, std::string& why
     return bench::pugi_load(std::move(copy), text.size(), peer, why);
 }
 
-/// Whether both loaders load `text` alike.
-bool check_text(const std::string& what, const std::string& text) {
+/// Whether both loaders load `text` alike, box2scene with `warnings`.
+bool check_text(const std::string& what, const std::string& text,
+                bench::Warnings warnings = bench::Warnings::none) {
     b2s_scene* scene = nullptr;
     b2s_error error;
     if (box2scene_load(text, &scene, error) != B2S_CODE_OK) {
@@ -134,7 +157,7 @@ bool check_text(const std::string& what, const std::string& text) {
     if (!loaded) {
         std::printf("FAIL %s: pugixml peer: %s\n", what.c_str(), why.c_str());
     }
-    bool same = loaded && same_scene(what, scene, peer);
+    bool same = loaded && same_scene(what, scene, peer, warnings);
     b2s_scene_free(scene);
     return same;
 }
@@ -255,15 +278,26 @@ int check_refusals() {
 
 int main(int argc, char** argv) {
     int failures = 0;
+    bench::Warnings warnings = bench::Warnings::none;
     for (int i = 1; i < argc; ++i) {
-        failures += check_file(argv[i]) ? 0 : 1;
+        if (std::strcmp(argv[i], "--warnings") == 0) {
+            warnings = bench::Warnings::tenth_of_bodies;
+        } else {
+            failures += check_file(argv[i], warnings) ? 0 : 1;
+        }
     }
-    // Small scenes reach the corners: no joints, empty containers, a lone gear's fallback.
+    // Small scenes reach the corners: no joints, empty containers, a lone gear's fallback,
+    // too few fixtures to make exactly a tenth of the bodies warn.
     int generated = 0;
     for (uint32_t bodies = 0; bodies <= 60; ++bodies) {
-        for (uint64_t seed = 1; seed <= 8; ++seed, ++generated) {
+        for (uint64_t seed = 1; seed <= 8; ++seed, generated += 2) {
             std::string what = std::to_string(bodies) + " bodies, seed " + std::to_string(seed);
             failures += check_text(what, bench::generate_scene(bodies, seed)) ? 0 : 1;
+            bench::Warnings tenth = bench::Warnings::tenth_of_bodies;
+            failures += check_text(what + ", with warnings",
+                                   bench::generate_scene(bodies, seed, tenth), tenth)
+                            ? 0
+                            : 1;
         }
     }
     std::printf("%s %d generated scenes of 0 to 60 bodies\n", failures == 0 ? "ok  " : "FAIL",

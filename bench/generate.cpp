@@ -1,6 +1,7 @@
-// bench/generate BODIES OUT.xml [SEED]: writes the benchmark scene of BODIES bodies
-// (about 1 KB each: 1 000 give about 1 MB), seed 1 by default. The same arguments give the
-// same file.
+// bench/generate [--warnings] BODIES OUT.xml [SEED]: writes the benchmark scene of BODIES
+// bodies (about 1 KB each: 1 000 give about 1 MB), seed 1 by default. The same arguments
+// give the same file. With --warnings a tenth of the bodies give a warning and the scene is
+// otherwise the same (bench::Warnings::tenth_of_bodies).
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -17,19 +18,27 @@ static bool parse_count(const char* text, unsigned long long most, unsigned long
 }
 
 int main(int argc, char** argv) {
+    const char* program = argv[0];
+    bench::Warnings warnings = bench::Warnings::none;
+    if (argc > 1 && std::strcmp(argv[1], "--warnings") == 0) {
+        warnings = bench::Warnings::tenth_of_bodies;
+        --argc;
+        ++argv;
+    }
     unsigned long long bodies = 0, seed = 1;
     if ((argc != 3 && argc != 4) || !parse_count(argv[1], 1000000, bodies) ||
         (argc == 4 && !parse_count(argv[3], UINT64_MAX, seed))) {
         std::fprintf(stderr,
-                     "usage: %s BODIES OUT.xml [SEED]   (BODIES up to 1 000 000: about 1 GB)\n",
-                     argv[0]);
+                     "usage: %s [--warnings] BODIES OUT.xml [SEED]   (BODIES up to 1 000 000: "
+                     "about 1 GB)\n",
+                     program);
         return 2;
     }
-    std::string scene = bench::generate_scene(static_cast<uint32_t>(bodies), seed);
+    std::string scene = bench::generate_scene(static_cast<uint32_t>(bodies), seed, warnings);
     std::FILE* file = std::fopen(argv[2], "wb");
     if (file == nullptr || std::fwrite(scene.data(), 1, scene.size(), file) != scene.size() ||
         std::fclose(file) != 0) {
-        std::fprintf(stderr, "%s: cannot write %s: %s\n", argv[0], argv[2], std::strerror(errno));
+        std::fprintf(stderr, "%s: cannot write %s: %s\n", program, argv[2], std::strerror(errno));
         return 1;
     }
     return 0;

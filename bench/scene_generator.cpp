@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -97,7 +98,8 @@ std::string upper_case(std::string text) {
 /// list them out of the usual order (the format lets elements come in any order).
 class SceneWriter {
 public:
-    SceneWriter(uint32_t bodies, uint64_t seed) : random_(seed), body_count_(bodies) {
+    SceneWriter(uint32_t bodies, uint64_t seed, Warnings warnings)
+        : random_(seed), seed_(seed), warnings_(warnings), body_count_(bodies) {
         shape_count_ = bodies * 7 / 10 + 1;
         fixture_count_ = bodies * 9 / 10 + 1;
     }
@@ -118,6 +120,9 @@ public:
         container(1, "Bodies", body_count_, &SceneWriter::body);
         container(1, "Joints", static_cast<uint32_t>(joints_.size()), &SceneWriter::joint);
         out_ += "\n</World>\n";
+        if (warnings_ == Warnings::tenth_of_bodies) {
+            omit_densities();
+        }
         return std::move(out_);
     }
 
@@ -205,6 +210,52 @@ private:
         return false;
     }
 
+    /// Drops the `Density` element of fixtures, taken in an order of their own (so that
+    /// the scene's other bytes stay as they are), each only if the massless dynamic bodies
+    /// it newly makes warn keep the count at most bodies / 10, until it is exactly that.
+    void omit_densities() {
+        uint32_t wanted = body_count_ / 10;
+        std::vector<std::vector<uint32_t>> holders(fixture_count_);
+        for (const auto& [fixture, body] : massless_holders_) {
+            holders[fixture].push_back(body);
+        }
+        std::vector<uint32_t> order(fixture_count_);
+        std::iota(order.begin(), order.end(), 0u);
+        Random choice(seed_ ^ 0x5741524E494E4753u); // "WARNINGS"
+        choice.shuffle(order);
+        std::vector<bool> warns(body_count_, false), omitted(fixture_count_, false);
+        uint32_t warning = 0;
+        for (uint32_t f = 0; f < fixture_count_ && warning < wanted; ++f) {
+            std::vector<uint32_t>& bodies = holders[order[f]];
+            std::sort(bodies.begin(), bodies.end());
+            bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+            uint32_t fresh = 0;
+            for (uint32_t b : bodies) {
+                fresh += warns[b] ? 0 : 1;
+            }
+            if (fresh == 0 || warning + fresh > wanted) {
+                continue;
+            }
+            for (uint32_t b : bodies) {
+                warns[b] = true;
+            }
+            warning += fresh;
+            omitted[order[f]] = true;
+        }
+        // Fixtures were written in order, so their densities lie in order in the text.
+        std::string kept;
+        kept.reserve(out_.size());
+        size_t from = 0;
+        for (uint32_t f = 0; f < fixture_count_; ++f) {
+            if (omitted[f]) {
+                kept.append(out_, from, densities_[f].first - from);
+                from = densities_[f].first + densities_[f].second;
+            }
+        }
+        kept.append(out_, from, std::string::npos);
+        out_ = std::move(kept);
+    }
+
     // ---- objects
 
     void container(int depth, const char* name, uint32_t count,
@@ -268,7 +319,8 @@ private:
     }
 
     /// Every fixture has a positive density: a dynamic body with a zero-density fixture
-    /// and no MassData would be a warning, and the files load without one.
+    /// and no MassData would be a warning, and the files load without one unless
+    /// omit_densities takes some out.
     void fixture(uint32_t index, int depth) {
         parts_.clear();
         part(depth + 1, "Shape", id(random_.below(shape_count_)));
@@ -276,6 +328,7 @@ private:
             name_part(depth + 1, "fixture", index);
         }
         part(depth + 1, "Density", number(random_.between(0.5, 5), Precision::fine));
+        std::string density = parts_.back();
         if (random_.chance(80)) {
             part(depth + 1, "Friction", number(random_.between(0, 1), Precision::coarse));
         }
@@ -288,7 +341,9 @@ private:
         if (random_.chance(60)) {
             filter(depth + 1);
         }
+        size_t start = out_.size();
         object(depth, "Fixture", "");
+        densities_.push_back({out_.find(density, start), density.size()});
     }
 
     void filter(int depth) {
@@ -330,10 +385,11 @@ private:
         part(depth + 1, "Position", vector(position.x, position.y, Precision::coarse));
         optional_number(depth + 1, "InertiaScale", 50, 0.5, 2);
         optional_number(depth + 1, "GravityScale", 70, 0, 2);
-        if (random_.chance(10)) {
+        bool mass = random_.chance(10);
+        if (mass) {
             mass_data(depth + 1);
         }
-        fixture_ids(depth + 1);
+        fixture_ids(depth + 1, body_kinds_[index] == BodyKind::dynamic && !mass ? index : kNone);
         object(depth, "Body", type_attribute(kTypes[static_cast<int>(body_kinds_[index])]));
     }
 
@@ -351,10 +407,16 @@ private:
         parts_.push_back(std::move(data));
     }
 
-    void fixture_ids(int depth) {
+    /// `massless`: the index of the body, if it is dynamic without a MassData mass (any
+    /// fixture of zero density makes it warn), else kNone.
+    void fixture_ids(int depth, uint32_t massless) {
         std::string ids = indent(depth) + "<Fixtures>";
         for (uint32_t k = 1 + random_.below(3); k > 0; --k) {
-            ids += indent(depth + 1) + value_element("ID", id(random_.below(fixture_count_)));
+            uint32_t fixture = random_.below(fixture_count_);
+            ids += indent(depth + 1) + value_element("ID", id(fixture));
+            if (massless != kNone) {
+                massless_holders_.push_back({fixture, massless});
+            }
         }
         ids += indent(depth) + "</Fixtures>";
         parts_.push_back(std::move(ids));
@@ -663,7 +725,11 @@ private:
         out_ += value_element(name, text);
     }
 
+    static constexpr uint32_t kNone = UINT32_MAX;
+
     Random random_;
+    uint64_t seed_;
+    Warnings warnings_;
     uint32_t body_count_;
     uint32_t shape_count_;
     uint32_t fixture_count_;
@@ -671,13 +737,17 @@ private:
     std::vector<uint32_t> dynamic_bodies_;
     std::vector<JointPlan> joints_;
     std::vector<std::string> parts_;
+    /// Where each fixture's `Density` element lies in out_: offset, length.
+    std::vector<std::pair<size_t, size_t>> densities_;
+    /// (fixture, body) for every fixture ID of a dynamic body without a MassData mass.
+    std::vector<std::pair<uint32_t, uint32_t>> massless_holders_;
     std::string out_;
 };
 
 } // namespace
 
-std::string generate_scene(uint32_t bodies, uint64_t seed) {
-    return SceneWriter(bodies, seed).write();
+std::string generate_scene(uint32_t bodies, uint64_t seed, Warnings warnings) {
+    return SceneWriter(bodies, seed, warnings).write();
 }
 
 } // namespace bench
