@@ -736,6 +736,21 @@ impl SceneBuilder {
     /// Appends what `other` read after this builder's last object: its objects after
     /// these, their pool ranges, user data indices and strings moved along. A gravity
     /// is taken only when this builder has none.
+    /// Lets go of the room its arrays hold beyond what they hold (a piece read on the second
+    /// thread waits with only what it needs until it is appended).
+    pub fn shrink_to_fit(&mut self) {
+        self.shapes.shrink_to_fit();
+        self.fixtures.shrink_to_fit();
+        self.bodies.shrink_to_fit();
+        self.joints.shrink_to_fit();
+        self.vertices.shrink_to_fit();
+        self.fixture_ids.shrink_to_fit();
+        self.user_data.shrink_to_fit();
+        self.diagnostics.shrink_to_fit();
+        self.kept.shrink_to_fit();
+        self.strings.shrink_to_fit();
+    }
+
     pub fn append(&mut self, other: SceneBuilder) {
         let SceneBuilder {
             version: _,

@@ -7,8 +7,10 @@
 //! spelled as assumed; each of the helper's pieces read without a problem (warnings are
 //! fine: they are appended in the order one reader finds them) and ended where the next
 //! one begins; the limits still hold; and no world element was read twice. If all hold it
-//! takes what the helper read and is done; otherwise it reads on itself. Either way the scene, the warnings and the first error are those of one
-//! parser reading the whole file; a busy core only moves where the two meet.
+//! takes what the helper read and is done; otherwise it reads on itself. Either way the
+//! scene, the warnings and the first error are those of one parser reading the whole file;
+//! a busy core only moves where the two meet. The text may be in memory or in a file: the
+//! helper reads a file's pieces with a handle of its own, one piece at a time.
 
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
@@ -256,6 +258,7 @@ fn read_piece(
     }
     let Parser { source, mut arena, pos, started, last, open, elements, .. } = parser;
     arena.scene.pool_kept_text(|from, to| source.slice(from, to));
+    arena.scene.shrink_to_fit();
     Some(Done { arena, pos, started, last, open, elements, seen })
 }
 
