@@ -3,12 +3,14 @@
 //   bench_driver time RUNS FILE... box2scene and the pugixml peer, interleaved, in RUNS
 //                                  rounds over every FILE: parsing it already in memory
 //                                  (box2scene with its default options), loading it from its
-//                                  path (box2scene with threads = 1); box2scene writing it
-//                                  back and building its b2World. Prints "FILE name value"
-//                                  lines, medians in seconds.
-//   bench_driver rss LOADER FILE   loads FILE from its path once (a fresh process per
-//                                  measurement) and prints the peak RSS in KiB before the
-//                                  load (the process itself) and after it.
+//                                  path (box2scene with its default options, and with
+//                                  threads = 1); box2scene writing it back and building its
+//                                  b2World. Prints "FILE name value" lines, medians in
+//                                  seconds.
+//   bench_driver rss LOADER FILE   loads FILE from its path once, box2scene with its default
+//                                  options (a fresh process per measurement), and prints the
+//                                  peak RSS in KiB before the load (the process itself) and
+//                                  after it.
 //   bench_driver once LOADER FILE [THREADS]
 //                                  reads FILE into memory and loads it once, for callgrind;
 //                                  LOADER `read` only reads, the baseline to subtract, and
@@ -90,12 +92,12 @@ b2s_scene* box2scene_from_memory(const char* bytes, size_t size, uint32_t thread
     return scene;
 }
 
-/// With threads = 1 said outright, so that this stays a one-thread load whatever
-/// box2scene's default for paths becomes: the peer reads on one thread too.
-b2s_scene* box2scene_from_path(const char* path) {
+/// `b2s_load_file` as a host calls it (threads = 0: two threads from 1 MiB), or on one
+/// thread, as the peer reads.
+b2s_scene* box2scene_from_path(const char* path, uint32_t threads = 0) {
     b2s_scene* scene = nullptr;
     b2s_error error;
-    b2s_load_options options = with_threads(1);
+    b2s_load_options options = with_threads(threads);
     if (b2s_load_file(path, &options, &scene, &error) != B2S_CODE_OK) {
         die(std::string("box2scene: ") + error.message);
     }
@@ -118,7 +120,8 @@ void peer_from_path(const char* path, bench::PugiScene& scene) {
 
 /// What the timing mode collects, one sample per run.
 struct Samples {
-    std::vector<double> box2scene_parse, pugixml_parse, box2scene_path, pugixml_path;
+    std::vector<double> box2scene_parse, pugixml_parse, box2scene_path, box2scene_path1,
+        pugixml_path;
     std::vector<double> write, build;
 };
 
@@ -150,6 +153,9 @@ void measure_once(Subject& s) {
     auto box2scene_path = [&] {
         b2s_scene* scene = nullptr;
         samples.box2scene_path.push_back(seconds([&] { scene = box2scene_from_path(s.path); }));
+        b2s_scene_free(scene);
+        samples.box2scene_path1.push_back(
+            seconds([&] { scene = box2scene_from_path(s.path, 1); }));
         b2s_scene_free(scene);
     };
     auto pugixml_path = [&] {
@@ -195,6 +201,7 @@ void report(const Subject& s) {
     std::printf("%s box2scene.parse %.9f\n", path, median(m.box2scene_parse));
     std::printf("%s pugixml.parse %.9f\n", path, median(m.pugixml_parse));
     std::printf("%s box2scene.path %.9f\n", path, median(m.box2scene_path));
+    std::printf("%s box2scene.path1 %.9f\n", path, median(m.box2scene_path1));
     std::printf("%s pugixml.path %.9f\n", path, median(m.pugixml_path));
     std::printf("%s box2scene.write %.9f\n", path, median(m.write));
     std::printf("%s box2scene.written %zu\n", path, written);
