@@ -131,7 +131,8 @@ impl Arena {
         self.dropped.0 += count;
     }
 
-    /// Whether the file uses Farseer's Version 3 layout (format: Version 3).
+    /// Whether the file uses Farseer's Version 3 layout (docs/format.md, "Farseer spellings
+    /// and the Version 3 layout").
     pub fn farseer_layout(&self) -> bool {
         self.version >= 3
     }
