@@ -89,11 +89,10 @@ impl<'a> Source<'a> {
     pub fn pieces(&self) -> Option<Pieces<'a>> {
         match (&self.text, &self.stop, &self.file, &self.origin) {
             (Cow::Borrowed(text), None, None, _) => Some(Pieces::Memory(text)),
-            (Cow::Owned(_), None, Some(stream), Origin::Path(path)) => Some(Pieces::File {
-                path,
+            (Cow::Owned(_), None, Some(stream), Origin::Path(_)) => Some(Pieces::File {
+                file: second_handle(&stream.file)?,
                 bom: stream.bom,
                 len: usize::try_from(stream.len - stream.bom).ok()?,
-                file: None,
             }),
             _ => None,
         }
@@ -288,10 +287,10 @@ impl<'a> Source<'a> {
 }
 
 /// The text of a file as a second reader reads it: whole in memory, or a piece at a time
-/// from the file, with a handle of its own.
+/// from the file that is being read, through a handle of its own.
 pub enum Pieces<'a> {
     Memory(&'a str),
-    File { path: &'a Path, bom: u64, len: usize, file: Option<File> },
+    File { file: File, bom: u64, len: usize },
 }
 
 impl<'a> Pieces<'a> {
@@ -304,17 +303,12 @@ impl<'a> Pieces<'a> {
     }
 
     /// The bytes of the text from `from` to `to` (within it), which may cut a character.
-    pub fn bytes(&mut self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
+    pub fn bytes(&self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
         match self {
             Pieces::Memory(text) => text.as_bytes().get(from..to).map(Cow::Borrowed),
-            Pieces::File { path, bom, file, .. } => {
-                let file = match file {
-                    Some(file) => file,
-                    None => file.insert(File::open(path).ok()?),
-                };
-                file.seek(SeekFrom::Start(*bom + from as u64)).ok()?;
+            Pieces::File { file, bom, .. } => {
                 let mut bytes = vec![0; to.checked_sub(from)?];
-                file.read_exact(&mut bytes).ok()?;
+                read_exact_at(file, &mut bytes, bom + from as u64).ok()?;
                 Some(Cow::Owned(bytes))
             }
         }
@@ -323,22 +317,47 @@ impl<'a> Pieces<'a> {
     /// A source that holds the text from `from` to `to`, at its offsets in the whole (a text
     /// in memory, checked already, all of it up to `to`); None unless that is all text
     /// (valid UTF-8, only characters XML allows).
-    pub fn source(&mut self, from: usize, to: usize) -> Option<Source<'a>> {
-        let (text, base, encoding, origin) = match self {
+    pub fn source(&self, from: usize, to: usize) -> Option<Source<'a>> {
+        let (text, base, encoding) = match self {
             Pieces::Memory(text) => {
-                (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: false }, Origin::Memory)
+                (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: false })
             }
-            Pieces::File { path, bom, .. } => {
-                let (path, bom) = (*path, *bom > 0);
+            Pieces::File { bom, .. } => {
                 let text = String::from_utf8(self.bytes(from, to)?.into_owned()).ok()?;
                 if first_non_char(text.as_bytes()).is_some() {
                     return None;
                 }
-                (Cow::Owned(text), from, Encoding::Utf8 { bom }, Origin::Path(path))
+                (Cow::Owned(text), from, Encoding::Utf8 { bom: *bom > 0 })
             }
         };
-        Some(Source { text, base, file: None, stop: None, encoding, origin })
+        // A piece is read whole and never placed (its reader reports offsets), so it has no
+        // file to read again.
+        Some(Source { text, base, file: None, stop: None, encoding, origin: Origin::Memory })
     }
+}
+
+/// A second handle on `file`, for the second thread: the very file the first reads (not
+/// one opened anew by its path, which may have been replaced since), read at offsets of
+/// its own that leave the first handle's position alone. Unix's positional reads promise
+/// that; elsewhere a file is read on one thread.
+#[cfg(unix)]
+fn second_handle(file: &File) -> Option<File> {
+    file.try_clone().ok()
+}
+
+#[cfg(not(unix))]
+fn second_handle(_: &File) -> Option<File> {
+    None
+}
+
+#[cfg(unix)]
+fn read_exact_at(file: &File, bytes: &mut [u8], offset: u64) -> std::io::Result<()> {
+    std::os::unix::fs::FileExt::read_exact_at(file, bytes, offset)
+}
+
+#[cfg(not(unix))]
+fn read_exact_at(_: &File, _: &mut [u8], _: u64) -> std::io::Result<()> {
+    Err(std::io::ErrorKind::Unsupported.into())
 }
 
 /// Whether `tail` is the start of a multi-byte UTF-8 character.
@@ -610,4 +629,36 @@ fn advance(
     // Characters: every byte that does not continue a multi-byte sequence.
     *column += last_line.iter().filter(|&&b| b & 0xC0 != 0x80).count() as u64;
     *after_cr = bytes.last() == Some(&b'\r');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Pieces, Source};
+    use crate::LoadOptions;
+
+    /// The second thread reads the file the first one opened, even when another file has
+    /// been renamed over its path since (as editors save).
+    #[cfg(unix)]
+    #[test]
+    fn pieces_of_a_file_come_from_the_file_opened_not_its_path() {
+        let dir = std::env::temp_dir();
+        let (path, other) = (
+            dir.join(format!("box2scene-pieces-{}.xml", std::process::id())),
+            dir.join(format!("box2scene-pieces-{}-new.xml", std::process::id())),
+        );
+        let text = |c: &str| format!("<World>{}</World>", c.repeat(200_000));
+        std::fs::write(&path, text("a")).unwrap();
+        std::fs::write(&other, text("b")).unwrap();
+        let options = LoadOptions::default();
+        let source = Source::path(&path, &options).unwrap();
+        std::fs::rename(&other, &path).unwrap();
+        let Some(pieces @ Pieces::File { .. }) = source.pieces() else {
+            panic!("a UTF-8 file being read has pieces")
+        };
+        assert_eq!(pieces.len(), text("a").len());
+        assert_eq!(&*pieces.bytes(150_000, 150_004).unwrap(), b"aaaa");
+        let piece = pieces.source(100_000, 100_010).unwrap();
+        assert_eq!(piece.slice(100_000, 100_010), "aaaaaaaaaa");
+        std::fs::remove_file(&path).unwrap();
+    }
 }

@@ -107,11 +107,11 @@ where
     if options.threads == 1 {
         return Part::Whole;
     }
-    let Some(mut pieces) = pieces else { return Part::Whole };
+    let Some(pieces) = pieces else { return Part::Whole };
     let (boundaries, helped) = match split {
         Some(split) => split,
         None if pieces.len() >= MIN_BYTES => {
-            let boundaries = boundaries(&mut pieces);
+            let boundaries = boundaries(&pieces);
             let last = boundaries.len();
             (boundaries, last)
         }
@@ -135,7 +135,7 @@ const LOOK_BACK_BYTES: usize = 1 << 10;
 
 /// Where the pieces of the text begin: the first item after its twin from every
 /// [`PIECE_BYTES`] or so on, when one lies near.
-fn boundaries(text: &mut Pieces) -> Vec<Boundary> {
+fn boundaries(text: &Pieces) -> Vec<Boundary> {
     let len = text.len();
     let pieces = (len / PIECE_BYTES).clamp(2, MAX_PIECES);
     let step = len / pieces;
@@ -187,13 +187,13 @@ fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
 /// pieces before it could not be used either: the calling thread takes the pieces from one
 /// on to the end).
 fn help(
-    mut text: Pieces<'_>,
+    text: Pieces<'_>,
     options: &LoadOptions,
     boundaries: &[Boundary],
     claims: &Mutex<Claims>,
     sender: &mpsc::Sender<(usize, Option<Done>)>,
 ) {
-    let Some((root, version)) = root(&mut text, options, boundaries[0].0) else { return };
+    let Some((root, version)) = root(&text, options, boundaries[0].0) else { return };
     for piece in (0..boundaries.len()).rev() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
@@ -216,7 +216,7 @@ fn help(
 
 /// The root's start tag and the Version it says, read from the start of the text (before
 /// `first`, the first piece's start, and its last `<` within the first [`SEARCH_BYTES`]).
-fn root(text: &mut Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)> {
+fn root(text: &Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)> {
     let head = text.bytes(0, first.min(SEARCH_BYTES))?;
     let end = memchr::memrchr(b'<', &head)?;
     let mut parser = Parser::new(text.source(0, end)?, options);
@@ -484,7 +484,7 @@ mod tests {
         for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
             let text =
                 format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-            let found = boundaries(&mut Pieces::Memory(&text));
+            let found = boundaries(&Pieces::Memory(&text));
             assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
             let step = text.len() / pieces;
             for (k, &(at, container)) in (1..).zip(&found) {
@@ -493,7 +493,7 @@ mod tests {
                 assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
             }
         }
-        assert_eq!(boundaries(&mut Pieces::Memory("<World><Bodies></Bodies></World>")), []);
+        assert_eq!(boundaries(&Pieces::Memory("<World><Bodies></Bodies></World>")), []);
     }
 
     /// One piece from every tag, assuming each container: what the helper reads is taken
@@ -670,7 +670,7 @@ mod tests {
         text += "</Joints></World>";
         let bytes = text.as_bytes();
         assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-        let pieces = boundaries(&mut Pieces::Memory(&text));
+        let pieces = boundaries(&Pieces::Memory(&text));
         assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
         let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
         for container in CONTAINERS {
@@ -712,7 +712,10 @@ mod tests {
                     Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
                 let second = match in_file {
                     false => Pieces::Memory(&theirs),
-                    true => Pieces::File { path: &file, bom: 0, len: theirs.len(), file: None },
+                    true => {
+                        let file = std::fs::File::open(&file).unwrap();
+                        Pieces::File { file, bom: 0, len: theirs.len() }
+                    }
                 };
                 let pieces = vec![(starts[1], WorldChild::Bodies), (starts[2], WorldChild::Bodies)];
                 std::thread::scope(|scope| {
