@@ -516,8 +516,8 @@ typedef struct b2s_load_options {
   bool strict;
   /**
    * Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
-   * 1 MiB or more, in memory or read from its path, is read on two threads, everything
-   * else on the calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
+   * 1 MiB or more, in memory or read from its path (on Unix), is read on two threads,
+   * everything else on the calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
    * its warnings and any error are the same however many threads read it.
    */
   uint32_t threads;
