@@ -85,11 +85,11 @@ impl<'a> Source<'a> {
     }
 
     /// Where a second reader may read pieces of this text: a UTF-8 text in memory that is
-    /// valid to its end, or a UTF-8 file being read (whose pieces are read from it anew).
+    /// valid to its end, or a UTF-8 file being read (through a second handle on it).
     pub fn pieces(&self) -> Option<Pieces<'a>> {
-        match (&self.text, &self.stop, &self.file, &self.origin) {
-            (Cow::Borrowed(text), None, None, _) => Some(Pieces::Memory(text)),
-            (Cow::Owned(_), None, Some(stream), Origin::Path(_)) => Some(Pieces::File {
+        match (&self.text, &self.stop, &self.file) {
+            (Cow::Borrowed(text), None, None) => Some(Pieces::Memory(text)),
+            (_, None, Some(stream)) => Some(Pieces::File {
                 file: second_handle(&stream.file)?,
                 bom: stream.bom,
                 len: usize::try_from(stream.len - stream.bom).ok()?,
