@@ -60,6 +60,21 @@ static inline b2s_builder* growth_check(b2s_builder* builder, b2s_code code) {
     return builder;
 }
 
+/* Adds `body` holding the `count` fixtures of `ids` (NULL when they could not be kept),
+ * frees `ids` and finishes the scene; NULL when anything failed. */
+static inline b2s_scene* growth_finish_with_body(b2s_builder* b, const b2s_body* body,
+                                                 uint32_t* ids, uint32_t count) {
+    if (b != NULL && ids != NULL) {
+        b = growth_check(b, b2s_builder_add_body(b, body, ids, count, NULL, NULL));
+    }
+    free(ids);
+    if (ids == NULL) {
+        b2s_builder_free(b);
+        return NULL;
+    }
+    return b != NULL ? growth_finish(b) : NULL;
+}
+
 /* One spinning dynamic body at (3, 4) holding `count` fixtures, each on one of the circles. */
 static inline b2s_scene* growth_one_body(uint32_t count) {
     b2s_builder* b = b2s_builder_new();
@@ -79,21 +94,13 @@ static inline b2s_scene* growth_one_body(uint32_t count) {
         fixture.density = growth_density(i);
         b = growth_check(b, b2s_builder_add_fixture(b, &fixture, &ids[i], NULL));
     }
-    if (b != NULL && ids != NULL) {
-        b2s_body body;
-        b2s_body_default(B2S_BODY_KIND_DYNAMIC, &body);
-        body.position.x = 3.0f;
-        body.position.y = 4.0f;
-        body.linear_velocity.x = 1.0f;
-        body.angular_velocity = 2.0f;
-        b = growth_check(b, b2s_builder_add_body(b, &body, ids, count, NULL, NULL));
-    }
-    free(ids);
-    if (ids == NULL) {
-        b2s_builder_free(b);
-        return NULL;
-    }
-    return b != NULL ? growth_finish(b) : NULL;
+    b2s_body body;
+    b2s_body_default(B2S_BODY_KIND_DYNAMIC, &body);
+    body.position.x = 3.0f;
+    body.position.y = 4.0f;
+    body.linear_velocity.x = 1.0f;
+    body.angular_velocity = 2.0f;
+    return growth_finish_with_body(b, &body, ids, count);
 }
 
 /* `count` dynamic bodies in a grid, each with its own fixture on one shared box. */
@@ -198,17 +205,9 @@ static inline b2s_scene* growth_chains(uint32_t count) {
         fixture.shape = index;
         b = growth_check(b, b2s_builder_add_fixture(b, &fixture, &ids[i], NULL));
     }
-    if (b != NULL && ids != NULL) {
-        b2s_body body;
-        b2s_body_default(B2S_BODY_KIND_STATIC, &body);
-        b = growth_check(b, b2s_builder_add_body(b, &body, ids, count, NULL, NULL));
-    }
-    free(ids);
-    if (ids == NULL) {
-        b2s_builder_free(b);
-        return NULL;
-    }
-    return b != NULL ? growth_finish(b) : NULL;
+    b2s_body body;
+    b2s_body_default(B2S_BODY_KIND_STATIC, &body);
+    return growth_finish_with_body(b, &body, ids, count);
 }
 
 /* Seconds of this process's CPU time. */
