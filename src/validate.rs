@@ -131,7 +131,9 @@ fn merge_close_points<'k>(vertices: &[Vec2], kept: &'k mut [Vec2]) -> &'k [Vec2]
 
 /// Indices of the convex hull, counter-clockwise from the rightmost (then lowest) point:
 /// the gift wrapping of Box2D 2.4.1, collinear points dropped. Made in `hull`, which has
-/// room for one more index than there are points.
+/// room for one more index than there are points. The candidate's edge `r` is kept as
+/// the candidate changes rather than computed again for every point: the same values,
+/// from the same subtractions.
 fn convex_hull<'h>(points: &[Vec2], hull: &'h mut [usize]) -> &'h [usize] {
     let rightmost = (0..points.len()).fold(0, |best, i| {
         let (p, b) = (points[i], points[best]);
@@ -142,17 +144,17 @@ fn convex_hull<'h>(points: &[Vec2], hull: &'h mut [usize]) -> &'h [usize] {
     loop {
         hull[len] = current;
         len += 1;
-        let mut next = 0;
-        for j in 1..points.len() {
+        let from = points[current];
+        let (mut next, mut r) = (0, sub(points[0], from));
+        for (j, &point) in points.iter().enumerate().skip(1) {
+            let v = sub(point, from);
             if next == current {
-                next = j;
+                (next, r) = (j, v);
                 continue;
             }
-            let r = sub(points[next], points[current]);
-            let v = sub(points[j], points[current]);
             let c = cross(r, v);
             if c < 0.0 || (c == 0.0 && length_squared(v) > length_squared(r)) {
-                next = j;
+                (next, r) = (j, v);
             }
         }
         current = next;
@@ -292,4 +294,68 @@ pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
         arena.note(warning)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The gift wrapping as it was before it kept the candidate's edge.
+    fn old_convex_hull<'h>(points: &[Vec2], hull: &'h mut [usize]) -> &'h [usize] {
+        let rightmost = (0..points.len()).fold(0, |best, i| {
+            let (p, b) = (points[i], points[best]);
+            if p.x > b.x || (p.x == b.x && p.y < b.y) { i } else { best }
+        });
+        let mut len = 0;
+        let mut current = rightmost;
+        loop {
+            hull[len] = current;
+            len += 1;
+            let mut next = 0;
+            for j in 1..points.len() {
+                if next == current {
+                    next = j;
+                    continue;
+                }
+                let r = sub(points[next], points[current]);
+                let v = sub(points[j], points[current]);
+                let c = cross(r, v);
+                if c < 0.0 || (c == 0.0 && length_squared(v) > length_squared(r)) {
+                    next = j;
+                }
+            }
+            current = next;
+            if current == rightmost || len > points.len() {
+                return &hull[..len];
+            }
+        }
+    }
+
+    /// The same hull as before on random sets of 1 to 8 points: on a small grid (so that
+    /// points coincide, line up and tie for rightmost) and anywhere.
+    #[test]
+    fn the_hull_is_the_one_it_was() {
+        let mut state = 0x243F6A8885A308D3u64;
+        let mut next = |n: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % n
+        };
+        for round in 0..300_000 {
+            let count = 1 + next(MAX_POLYGON_VERTICES as u64) as usize;
+            let points: Vec<Vec2> = (0..count)
+                .map(|_| match round % 2 {
+                    0 => Vec2::new(next(4) as f32, next(4) as f32),
+                    _ => Vec2::new(next(2001) as f32 / 1000.0 - 1.0, next(2001) as f32 / 1000.0),
+                })
+                .collect();
+            let (mut new, mut old) = ([0; MAX_POLYGON_VERTICES + 1], [0; MAX_POLYGON_VERTICES + 1]);
+            assert_eq!(
+                convex_hull(&points, &mut new),
+                old_convex_hull(&points, &mut old),
+                "{points:?}"
+            );
+        }
+    }
 }
