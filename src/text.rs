@@ -308,13 +308,24 @@ fn exact_vector2(bytes: &[u8]) -> Option<Vec2> {
 }
 
 /// `true`/`false` in any letter case, or `1`/`0`.
+///
+/// Both words are letters only, and the two cases of an ASCII letter differ in bit 5
+/// alone (no other byte becomes a lower-case letter with that bit set): so a four-byte
+/// text with bit 5 set in every byte is `true` exactly when the text is `true` in some
+/// letter case. One comparison, and one more for `false`.
 pub fn boolean(s: &str) -> Result<bool, Finding> {
-    if s.eq_ignore_ascii_case("true") || s == "1" {
-        Ok(true)
-    } else if s.eq_ignore_ascii_case("false") || s == "0" {
-        Ok(false)
-    } else {
-        Err(bad(Code::InvalidBool, 0, format!("'{s}' is not a boolean: expected true or false")))
+    const LOWER: u32 = 0x2020_2020;
+    let word = |four: [u8; 4]| u32::from_le_bytes(four) | LOWER;
+    match *s.as_bytes() {
+        [b'1'] => Ok(true),
+        [b'0'] => Ok(false),
+        [a, b, c, d] if word([a, b, c, d]) == word(*b"true") => Ok(true),
+        [a, b, c, d, e] if word([a, b, c, d]) == word(*b"fals") && e | 0x20 == b'e' => Ok(false),
+        _ => Err(bad(
+            Code::InvalidBool,
+            0,
+            format!("'{s}' is not a boolean: expected true or false"),
+        )),
     }
 }
 
@@ -657,6 +668,20 @@ mod tests {
             Some((if negative { -value } else { value }, i))
         }
 
+        pub fn boolean(s: &str) -> Result<bool, Finding> {
+            if s.eq_ignore_ascii_case("true") || s == "1" {
+                Ok(true)
+            } else if s.eq_ignore_ascii_case("false") || s == "0" {
+                Ok(false)
+            } else {
+                Err(bad(
+                    Code::InvalidBool,
+                    0,
+                    format!("'{s}' is not a boolean: expected true or false"),
+                ))
+            }
+        }
+
         fn pieces(s: &str, is_separator: fn(char) -> bool) -> impl Iterator<Item = (usize, &str)> {
             let mut next = 0;
             s.split(is_separator).map(move |part| {
@@ -783,6 +808,18 @@ mod tests {
                 ["", " 1", ",2", "x", "\t-0.5", ".", ".5", "e-1", "E+05"][next(9) as usize],
             );
             same_prefix(text.as_bytes());
+        }
+    }
+
+    #[test]
+    fn booleans_match_the_old_ones() {
+        let same_bool = |text: &str| same("boolean", text, boolean(text), old::boolean(text));
+        let alphabet =
+            ["t", "T", "r", "R", "u", "U", "e", "E", "f", "F", "a", "A", "l", "L", "s", "S", "1"];
+        for_all_strings(&alphabet, 5, same_bool);
+        for_all_strings(&["4", "\u{14}", "T", "e", "é", " ", "true"], 4, same_bool);
+        for &text in HAND_PICKED {
+            same_bool(text);
         }
     }
 
