@@ -686,8 +686,27 @@ fn advance(
 
 #[cfg(test)]
 mod tests {
-    use super::{Pieces, Source};
+    use super::{CHUNK, Pieces, Source};
     use crate::LoadOptions;
+    use crate::error::Code;
+
+    /// A file that grows past the input limit while it is read stops the text after the
+    /// last chunk read within the limit.
+    #[test]
+    fn a_file_that_grows_past_the_limit_stops_the_text() {
+        let path = std::env::temp_dir().join(format!("box2scene-grows-{}.xml", std::process::id()));
+        std::fs::write(&path, "a".repeat(CHUNK + 100)).unwrap();
+        let options = LoadOptions { max_input_bytes: 3 * CHUNK as u64, ..LoadOptions::default() };
+        let mut source = Source::path(&path, &options).unwrap();
+        let mut file = std::fs::OpenOptions::new().append(true).open(&path).unwrap();
+        std::io::Write::write_all(&mut file, "b".repeat(3 * CHUNK).as_bytes()).unwrap();
+        while source.more(source.end()) {}
+        std::fs::remove_file(&path).unwrap();
+        // Three chunks were read within the limit; the fourth passed it.
+        let stop = source.stop().expect("the limit stops the text");
+        assert_eq!((stop.code, stop.at), (Code::LimitExceeded, 3 * CHUNK));
+        assert_eq!(source.end(), 3 * CHUNK);
+    }
 
     /// The second thread reads the file the first one opened, even when another file has
     /// been renamed over its path since (as editors save).
