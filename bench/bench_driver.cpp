@@ -15,8 +15,10 @@
 //                                  reads FILE into memory and loads it once, for callgrind;
 //                                  LOADER `read` only reads, the baseline to subtract, and
 //                                  `write` loads and then writes the scene back (callgrind
-//                                  counts only b2s_write_memory there). THREADS is
-//                                  box2scene's `threads` option, 0 (its choice) by default.
+//                                  counts only b2s_write_memory there), and `path` loads
+//                                  FILE with box2scene from its path instead, as
+//                                  b2s_load_file reads it. THREADS is box2scene's `threads`
+//                                  option, 0 (its choice) by default.
 //
 // LOADER is box2scene or pugixml.
 #include <box2d/box2d.h>
@@ -252,6 +254,10 @@ int peak_rss(const std::string& loader, const char* path) {
 }
 
 int load_once(const std::string& loader, const char* path, uint32_t threads) {
+    if (loader == "path") {
+        b2s_scene_free(box2scene_from_path(path, threads));
+        return 0;
+    }
     size_t size = 0;
     std::unique_ptr<char[]> bytes = file_bytes(path, size);
     if (loader == "box2scene") {
@@ -275,7 +281,7 @@ int load_once(const std::string& loader, const char* path, uint32_t threads) {
 
 bool is_loader(const std::string& name, bool or_others) {
     return name == "box2scene" || name == "pugixml" ||
-           (or_others && (name == "read" || name == "write"));
+           (or_others && (name == "read" || name == "write" || name == "path"));
 }
 
 } // namespace
@@ -294,7 +300,7 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr,
                  "usage: %s time RUNS FILE... | rss box2scene|pugixml FILE | "
-                 "once read|box2scene|pugixml|write FILE [THREADS]\n",
+                 "once read|box2scene|pugixml|write|path FILE [THREADS]\n",
                  argv[0]);
     return 2;
 }

@@ -29,6 +29,9 @@ const CHUNK: usize = 1 << 16;
 
 const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
 
+/// The most bytes a character takes in UTF-8.
+const MAX_CHAR: usize = 4;
+
 /// The decoded text of a file (the byte-order mark removed), whole or a moving window.
 pub struct Source<'a> {
     /// The text from `base` on that is at hand.
@@ -55,11 +58,31 @@ struct Stream {
     /// Its size when it was opened, and the bytes of its byte-order mark.
     len: u64,
     bom: u64,
-    /// The bytes of a character split by the end of the last chunk.
-    pending: Vec<u8>,
     /// Bytes read so far, against the input limit.
     read: u64,
     max: u64,
+}
+
+impl Stream {
+    /// Reads `want` bytes of the file onto the end of `bytes`, straight into its spare
+    /// room, and then the rest of a character they cut, so that the bytes end where a
+    /// character ends (or where the file does). True when the file ended.
+    fn read_onto(&mut self, bytes: &mut Vec<u8>, want: usize) -> std::io::Result<bool> {
+        bytes.reserve(want + MAX_CHAR - 1);
+        let before = bytes.len();
+        let mut read_to_end = |bytes: &mut Vec<u8>, n: usize| {
+            let got = (&mut self.file).take(n as u64).read_to_end(bytes)?;
+            // `read_to_end` stops short only at the end of the file.
+            Ok::<_, std::io::Error>(got < n)
+        };
+        let mut ended = read_to_end(bytes, want)?;
+        let missing = missing_of_last_char(&bytes[before..]);
+        if !ended && missing > 0 {
+            ended = read_to_end(bytes, missing)?;
+        }
+        self.read += (bytes.len() - before) as u64;
+        Ok(ended)
+    }
 }
 
 impl<'a> Source<'a> {
@@ -106,10 +129,11 @@ impl<'a> Source<'a> {
         if file.metadata().map_err(io)?.len() > options.max_input_bytes {
             return Err(too_big(options.max_input_bytes));
         }
-        let mut head = Vec::with_capacity(CHUNK);
-        (&mut file).take(CHUNK as u64).read_to_end(&mut head).map_err(io)?;
-        if head.starts_with(&[0xFF, 0xFE]) || head.starts_with(&[0xFE, 0xFF]) {
-            let mut bytes = head;
+        // The byte-order mark alone first, so that the text is read in place after it; room
+        // for a chunk and what is kept of the one before, so the buffer seldom grows.
+        let mut bytes = Vec::with_capacity(2 * CHUNK);
+        (&mut file).take(UTF8_BOM.len() as u64).read_to_end(&mut bytes).map_err(io)?;
+        if bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]) {
             file.read_to_end(&mut bytes).map_err(io)?;
             let source = Source::memory(&bytes, options)?;
             let (text, stop) = (Cow::Owned(source.text.into_owned()), source.stop);
@@ -123,25 +147,29 @@ impl<'a> Source<'a> {
                 origin,
             });
         }
-        let bom = head.starts_with(UTF8_BOM);
-        let body = if bom { &head[UTF8_BOM.len()..] } else { &head[..] };
-        check_utf16_without_bom(body)?;
+        let bom = bytes == UTF8_BOM;
+        let mut stream = Stream {
+            len: file.metadata().map_err(io)?.len(),
+            bom: if bom { UTF8_BOM.len() as u64 } else { 0 },
+            file,
+            read: bytes.len() as u64,
+            max: options.max_input_bytes,
+        };
+        if bom {
+            bytes.clear();
+        }
+        // The first chunk ends CHUNK bytes into the file, byte-order mark or not.
+        let last = stream.read_onto(&mut bytes, CHUNK - stream.read as usize).map_err(io)?;
+        check_utf16_without_bom(&bytes)?;
         let mut source = Source {
             text: Cow::Owned(String::new()),
             base: 0,
-            file: Some(Stream {
-                len: file.metadata().map_err(io)?.len(),
-                bom: if bom { UTF8_BOM.len() as u64 } else { 0 },
-                file,
-                pending: Vec::new(),
-                read: head.len() as u64,
-                max: options.max_input_bytes,
-            }),
+            file: Some(stream),
             stop: None,
             encoding: Encoding::Utf8 { bom },
             origin: Origin::Path(path),
         };
-        source.append(body, head.len() < CHUNK);
+        source.take_in(bytes, 0, last);
         Ok(source)
     }
 
@@ -176,44 +204,46 @@ impl<'a> Source<'a> {
 
     /// Reads more of the file, letting go of the text before offset `keep`. Returns false
     /// when the text at hand is all there is.
+    ///
+    /// The file's bytes are read into the very buffer of the text, after what is kept; a
+    /// byte is moved again only while it is kept, to the front when half the text can go.
     pub fn more(&mut self, keep: usize) -> bool {
-        let end = self.end();
         let Some(stream) = &mut self.file else {
             return false;
         };
-        let text = self.text.to_mut();
-        let drop = keep.saturating_sub(self.base).min(text.len());
-        if drop >= text.len() / 2 {
-            text.drain(..drop);
+        let mut bytes = std::mem::take(self.text.to_mut()).into_bytes();
+        let drop = keep.saturating_sub(self.base).min(bytes.len());
+        if drop >= bytes.len() / 2 {
+            bytes.drain(..drop);
             self.base += drop;
         }
-        let mut chunk = std::mem::take(&mut stream.pending);
-        let had = chunk.len();
-        let read = (&mut stream.file).take(CHUNK as u64).read_to_end(&mut chunk);
-        match read {
-            Ok(n) => {
-                stream.read += n as u64;
-                if stream.read > stream.max {
-                    // The file grew past the limit since its size was checked.
-                    let message = too_big(stream.max).message;
-                    self.stop = Some(Finding { code: Code::LimitExceeded, at: end, message });
-                    self.file = None;
-                    return false;
-                }
-                let before = self.end();
-                self.append(&chunk, n == 0 && had == chunk.len());
-                self.end() > before || self.file.is_some() && self.more(keep)
+        let kept = bytes.len();
+        let end = self.base + kept;
+        // At least as much as is kept, so that a long node that holds the text is checked
+        // again at most as many times over as it is long.
+        let read = stream.read_onto(&mut bytes, CHUNK.max(kept));
+        let stop = match read {
+            Ok(last) if stream.read <= stream.max => {
+                self.take_in(bytes, kept, last);
+                return self.end() > end;
+            }
+            // The file grew past the limit since its size was checked.
+            Ok(_) => {
+                let message = too_big(stream.max).message;
+                Finding { code: Code::LimitExceeded, at: end, message }
             }
             Err(e) => {
                 let message = match &self.origin {
                     Origin::Path(path) => io_error(path, &e).message,
                     Origin::Memory => e.to_string(),
                 };
-                self.stop = Some(Finding { code: Code::Io, at: end, message });
-                self.file = None;
-                false
+                Finding { code: Code::Io, at: end, message }
             }
-        }
+        };
+        bytes.truncate(kept);
+        self.take_in(bytes, kept, true);
+        self.stop = Some(stop);
+        false
     }
 
     /// Goes on reading a file at `offset`, past the text at hand, as if what lies between
@@ -228,27 +258,35 @@ impl<'a> Source<'a> {
         if offset < end || stream.file.seek(SeekFrom::Start(at)).is_err() {
             return false;
         }
-        stream.pending.clear();
         stream.read = at;
         self.text.to_mut().clear();
         self.base = offset;
         true
     }
 
-    /// Appends the valid text of `bytes`; `last` says the file ends with them.
-    fn append(&mut self, bytes: &[u8], last: bool) {
-        let at = self.end();
-        let (valid, mut stop) = valid_prefix(bytes, at);
-        // A character cut by the end of the chunk is completed by the next one.
-        let tail = &bytes[valid.len()..];
-        if stop.is_some() && !last && could_continue(tail) {
-            if let Some(stream) = &mut self.file {
-                stream.pending = tail.to_vec();
+    /// Makes `bytes` the text at hand, the first `kept` of which were the text at hand
+    /// already: the rest is checked, once, to be UTF-8 of characters XML allows, and the
+    /// text stops before the first problem. `last` says the file ends with them.
+    fn take_in(&mut self, bytes: Vec<u8>, kept: usize, last: bool) {
+        // Owning the bytes, the check makes them a string without copying them; it goes
+        // over the kept bytes again, which the window keeps few (see `more`).
+        let (mut text, mut stop) = match String::from_utf8(bytes) {
+            Ok(text) => (text, None),
+            Err(e) => {
+                let valid = e.utf8_error().valid_up_to();
+                let mut bytes = e.into_bytes();
+                bytes.truncate(valid);
+                (
+                    String::from_utf8(bytes).unwrap_or_default(),
+                    Some(invalid_utf8(self.base + valid)),
+                )
             }
-            stop = None;
+        };
+        if let Some(at) = first_non_char(&text.as_bytes()[kept..]) {
+            stop = Some(non_char(&text, kept + at, self.base));
+            text.truncate(kept + at);
         }
-        let (valid, stop) = cut_at_non_char(Cow::Borrowed(valid), at, stop);
-        self.text.to_mut().push_str(&valid);
+        self.text = Cow::Owned(text);
         if stop.is_some() || last {
             self.stop = stop;
             self.file = None;
@@ -360,15 +398,20 @@ fn read_exact_at(_: &File, _: &mut [u8], _: u64) -> std::io::Result<()> {
     Err(std::io::ErrorKind::Unsupported.into())
 }
 
-/// Whether `tail` is the start of a multi-byte UTF-8 character.
-fn could_continue(tail: &[u8]) -> bool {
-    let need = match tail.first() {
-        Some(b) if b & 0xE0 == 0xC0 => 2,
-        Some(b) if b & 0xF0 == 0xE0 => 3,
-        Some(b) if b & 0xF8 == 0xF0 => 4,
-        _ => return false,
+/// How many bytes the character that `bytes` ends with lacks: none when they end with a
+/// whole one, or with bytes that begin none (which the UTF-8 check reports).
+fn missing_of_last_char(bytes: &[u8]) -> usize {
+    let tail = &bytes[bytes.len().saturating_sub(MAX_CHAR - 1)..];
+    let Some(first) = tail.iter().rposition(|b| b & 0xC0 != 0x80) else {
+        return 0;
     };
-    tail.len() < need && tail[1..].iter().all(|b| b & 0xC0 == 0x80)
+    let need: usize = match tail[first] {
+        b if b & 0xE0 == 0xC0 => 2,
+        b if b & 0xF0 == 0xE0 => 3,
+        b if b & 0xF8 == 0xF0 => 4,
+        _ => 1,
+    };
+    need.saturating_sub(tail.len() - first)
 }
 
 /// The longest valid UTF-8 prefix of `bytes`, and the `invalid-utf8` stop after it.
@@ -377,15 +420,19 @@ fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Finding>) {
         Ok(text) => (text, None),
         Err(e) => {
             let valid = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
-            let stop = Finding {
-                code: Code::InvalidUtf8,
-                at: base + valid.len(),
-                message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy \
-                          code page must be converted)"
-                    .into(),
-            };
-            (valid, Some(stop))
+            (valid, Some(invalid_utf8(base + valid.len())))
         }
+    }
+}
+
+/// The `invalid-utf8` stop at offset `at`.
+fn invalid_utf8(at: usize) -> Finding {
+    Finding {
+        code: Code::InvalidUtf8,
+        at,
+        message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy code \
+                  page must be converted)"
+            .into(),
     }
 }
 
@@ -401,7 +448,21 @@ fn cut_at_non_char(
     let Some(at) = first_non_char(text.as_bytes()) else {
         return (text, stop);
     };
-    let stop = match text.as_bytes()[at] {
+    let stop = non_char(&text, at, base);
+    let text = match text {
+        Cow::Borrowed(t) => Cow::Borrowed(&t[..at]),
+        Cow::Owned(mut t) => {
+            t.truncate(at);
+            Cow::Owned(t)
+        }
+    };
+    (text, Some(stop))
+}
+
+/// The stop at the character at `at` in `text` (`base` is the offset of `text`), which
+/// XML does not allow.
+fn non_char(text: &str, at: usize, base: usize) -> Finding {
+    match text.as_bytes()[at] {
         0 => Finding {
             code: Code::NulByte,
             at: base + at,
@@ -420,15 +481,7 @@ fn cut_at_non_char(
                 ),
             }
         }
-    };
-    let text = match text {
-        Cow::Borrowed(t) => Cow::Borrowed(&t[..at]),
-        Cow::Owned(mut t) => {
-            t.truncate(at);
-            Cow::Owned(t)
-        }
-    };
-    (text, Some(stop))
+    }
 }
 
 /// The offset of the first character of `text` outside XML's Char production (the writer
@@ -638,8 +691,27 @@ fn advance(
 
 #[cfg(test)]
 mod tests {
-    use super::{Pieces, Source, first_non_char};
+    use super::{CHUNK, Pieces, Source, first_non_char};
     use crate::LoadOptions;
+    use crate::error::Code;
+
+    /// A file that grows past the input limit while it is read stops the text after the
+    /// last chunk read within the limit.
+    #[test]
+    fn a_file_that_grows_past_the_limit_stops_the_text() {
+        let path = std::env::temp_dir().join(format!("box2scene-grows-{}.xml", std::process::id()));
+        std::fs::write(&path, "a".repeat(CHUNK + 100)).unwrap();
+        let options = LoadOptions { max_input_bytes: 3 * CHUNK as u64, ..LoadOptions::default() };
+        let mut source = Source::path(&path, &options).unwrap();
+        let mut file = std::fs::OpenOptions::new().append(true).open(&path).unwrap();
+        std::io::Write::write_all(&mut file, "b".repeat(3 * CHUNK).as_bytes()).unwrap();
+        while source.more(source.end()) {}
+        std::fs::remove_file(&path).unwrap();
+        // Three chunks were read within the limit; the fourth passed it.
+        let stop = source.stop().expect("the limit stops the text");
+        assert_eq!((stop.code, stop.at), (Code::LimitExceeded, 3 * CHUNK));
+        assert_eq!(source.end(), 3 * CHUNK);
+    }
 
     /// Every character that XML forbids, at every offset of texts of what it allows (plain
     /// lines; tabs and carriage returns; characters past ASCII; those from U+F000 on next

@@ -18,6 +18,7 @@
 
 mod arena;
 mod builder;
+mod containers;
 mod dump;
 pub mod error;
 pub mod ffi;

@@ -4,6 +4,7 @@
 #![forbid(unsafe_code)]
 
 use crate::arena::Arena;
+use crate::containers::Container;
 use crate::error::{Code, Parsed, Problem, problem};
 use crate::scene::{JointKind, NONE, Object, Place, Range};
 
@@ -63,7 +64,10 @@ fn move_kept_of_templates(p: &mut Arena, templates: usize) {
         (kept.object, kept.place) = match (first_made[template as usize], kept.place) {
             (Some(made), place) => (Object::Fixture(made), place),
             (None, Place::Attribute) => (Object::World, Place::Attribute),
-            (None, _) => (Object::World, Place::Inside { within: "Fixtures", before: "" }),
+            (None, _) => {
+                let within = Container::Fixtures.name();
+                (Object::World, Place::Inside { within, before: "" })
+            }
         };
     }
 }

@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 
 use crate::LoadOptions;
+use crate::containers::Container;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::input::first_non_char;
 use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
@@ -225,11 +226,14 @@ fn estimated_size(scene: &Scene) -> usize {
     shapes + 200 * scene.fixtures().len() + bodies + 270 * scene.joints().len()
 }
 
-const CONTAINERS: [&str; 4] = ["Shapes", "Fixtures", "Bodies", "Joints"];
-
-/// How many items each container holds, in the order they are written.
-fn counts(scene: &Scene) -> [usize; 4] {
-    [scene.shapes().len(), scene.fixtures().len(), scene.bodies().len(), scene.joints().len()]
+/// How many items `container` holds.
+fn count(scene: &Scene, container: Container) -> usize {
+    match container {
+        Container::Shapes => scene.shapes().len(),
+        Container::Fixtures => scene.fixtures().len(),
+        Container::Bodies => scene.bodies().len(),
+        Container::Joints => scene.joints().len(),
+    }
 }
 
 pub(crate) fn needs_version_2(scene: &Scene) -> bool {
@@ -544,8 +548,8 @@ impl<'s> Writer<'s> {
             self.vector("Gravity", gravity);
         }
         let scene = self.scene;
-        for (container, count) in counts(scene).into_iter().enumerate() {
-            let name = CONTAINERS[container];
+        for container in Container::ALL {
+            let (name, count) = (container.name(), count(scene, container));
             if count == 0 && !self.world.has_within(name) {
                 self.element(name, "");
                 continue;
@@ -554,10 +558,18 @@ impl<'s> Writer<'s> {
             for i in 0..count {
                 let index = i as u32;
                 match container {
-                    0 => self.item(Object::Shape(index), |w| w.shape(&scene.shapes()[i])),
-                    1 => self.item(Object::Fixture(index), |w| w.fixture(&scene.fixtures()[i])),
-                    2 => self.item(Object::Body(index), |w| w.body(&scene.bodies()[i])),
-                    _ => self.item(Object::Joint(index), |w| w.joint(&scene.joints()[i])),
+                    Container::Shapes => {
+                        self.item(Object::Shape(index), |w| w.shape(&scene.shapes()[i]))
+                    }
+                    Container::Fixtures => {
+                        self.item(Object::Fixture(index), |w| w.fixture(&scene.fixtures()[i]))
+                    }
+                    Container::Bodies => {
+                        self.item(Object::Body(index), |w| w.body(&scene.bodies()[i]))
+                    }
+                    Container::Joints => {
+                        self.item(Object::Joint(index), |w| w.joint(&scene.joints()[i]))
+                    }
                 }
             }
             self.close(name);

@@ -142,6 +142,16 @@ fn a_character_cut_by_a_boundary_is_joined() {
         assert!(same_both_ways(xml.as_bytes(), &format!("cut-character-{offset}")));
         let json = load(xml.as_bytes(), &LoadOptions::default()).unwrap().to_json();
         assert!(json.contains("€😀"));
+        // The file ends inside the character that the boundary cuts: that character is
+        // where the text stops, both ways.
+        let character = CHUNK - offset;
+        for end in character + 1..character + 3 {
+            let what = format!("cut-character-{offset}-ends-at-{end}");
+            let options = LoadOptions::default();
+            let error = same_both_ways_with(&xml.as_bytes()[..end], &what, &options).unwrap_err();
+            assert_eq!(error.code, Code::InvalidUtf8, "{what}");
+            assert_eq!(error.position.byte_offset as usize, character, "{what}");
+        }
     }
 }
 

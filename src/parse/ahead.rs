@@ -16,10 +16,11 @@ use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
 
 use super::names::{Element, Name};
-use super::world::{CONTAINERS, WorldChild};
+use super::world::WorldChild;
 use super::{Parser, Seen, Tag};
 use crate::LoadOptions;
 use crate::arena::Arena;
+use crate::containers::Container;
 use crate::input::{Pieces, Source};
 use crate::text::is_xml_space_byte;
 
@@ -35,7 +36,7 @@ const PIECE_BYTES: usize = 256 << 10;
 const MAX_PIECES: usize = 64;
 
 /// Where a piece begins: the `<` of an item, and the container it is assumed to be in.
-pub(super) type Boundary = (usize, WorldChild);
+pub(super) type Boundary = (usize, Container);
 
 /// A parser's part in a load.
 pub(super) enum Part {
@@ -166,9 +167,9 @@ fn item_after_a_twin(text: &[u8], mut from: usize, to: usize) -> Option<Boundary
 
 /// The container of the item whose start tag begins at `at`, when the tag before it is the
 /// end tag of an item of the same name.
-fn item_after_its_twin(text: &[u8], at: usize) -> Option<WorldChild> {
+fn item_after_its_twin(text: &[u8], at: usize) -> Option<Container> {
     let after = &text[at + 1..];
-    let container = CONTAINERS.into_iter().find(|c| {
+    let container = Container::ALL.into_iter().find(|c| {
         let name = c.item().as_bytes();
         after.starts_with(name)
             && after
@@ -244,7 +245,7 @@ fn read_piece(
         parser.part = Part::Piece { end, reached: false };
     }
     let mut seen = Seen::default();
-    seen.bits |= 1 << container.index();
+    seen.bits |= 1 << WorldChild::of(container).index();
     let read = match parser.container(&tag, container, &mut seen) {
         Ok(false) => parser.world_children(root, &mut seen),
         done => done.map(drop),
@@ -299,7 +300,7 @@ impl Parser<'_> {
     /// done at its end; the calling thread is done when it has taken the helper's pieces
     /// from here to the end of the file. `seen` has the world's elements read so far and
     /// gets those of the pieces taken.
-    pub(super) fn take_over(&mut self, container: WorldChild, seen: &mut Seen) -> bool {
+    pub(super) fn take_over(&mut self, container: Container, seen: &mut Seen) -> bool {
         let at = match &self.part {
             Part::Whole => return false,
             Part::Caller(caller) => caller.boundaries[caller.next].0,
@@ -354,7 +355,7 @@ impl Parser<'_> {
         {
             let Piece::Read(done) = piece else { return false };
             // Each piece has the container it begins in, as does the one before it.
-            if bits & done.seen.bits & !(1 << container.index()) != 0 {
+            if bits & done.seen.bits & !(1 << WorldChild::of(container).index()) != 0 {
                 return false;
             }
             bits |= done.seen.bits;
@@ -471,10 +472,10 @@ mod tests {
     fn a_piece_begins_at_an_item_after_its_twin() {
         let text = b"<Bodies><Body/>\n  </Body>\r\n\t<Body Type=\"Static\">";
         let at = text.len() - 20;
-        assert_eq!(item_after_its_twin(text, at), Some(WorldChild::Bodies));
+        assert_eq!(item_after_its_twin(text, at), Some(Container::Bodies));
         assert_eq!(item_after_its_twin(b"</Body><Bodies>", 7), None);
         assert_eq!(item_after_its_twin(b"</Joint> <Body>", 9), None);
-        assert_eq!(item_after_its_twin(b"</Shape><Shape>", 8), Some(WorldChild::Shapes));
+        assert_eq!(item_after_its_twin(b"</Shape><Shape>", 8), Some(Container::Shapes));
         assert_eq!(item_after_its_twin(b"<Shape>", 0), None);
     }
 
@@ -488,7 +489,7 @@ mod tests {
             assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
             let step = text.len() / pieces;
             for (k, &(at, container)) in (1..).zip(&found) {
-                assert_eq!(container, WorldChild::Bodies);
+                assert_eq!(container, Container::Bodies);
                 assert!(text[at..].starts_with("<Body "), "{}", &text[at..at + 10]);
                 assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
             }
@@ -504,7 +505,7 @@ mod tests {
         for (name, bytes) in crate::scene_files() {
             let expected = outcome(&bytes, &options, None);
             for at in tags(&bytes) {
-                for container in CONTAINERS {
+                for container in Container::ALL {
                     let split = outcome(&bytes, &options, Some((vec![(at, container)], 0)));
                     assert_same(
                         &split,
@@ -534,7 +535,7 @@ mod tests {
             }
             let (Some(&first), Some(&last)) = (twins.first(), twins.last()) else { continue };
             for at in tags(&bytes).filter(|&at| first.0 < at && at < last.0) {
-                for container in CONTAINERS {
+                for container in Container::ALL {
                     for helped in 0..3 {
                         let split = (vec![first, (at, container), last], helped);
                         let got = outcome(&bytes, &options, Some(split));
@@ -611,7 +612,7 @@ mod tests {
                 let options = LoadOptions { max_elements, ..LoadOptions::default() };
                 let expected = outcome(bytes, &options, None);
                 for at in tags(bytes) {
-                    let got = outcome(bytes, &options, Some((vec![(at, WorldChild::Bodies)], 0)));
+                    let got = outcome(bytes, &options, Some((vec![(at, Container::Bodies)], 0)));
                     assert_same(
                         &got,
                         &expected,
@@ -673,7 +674,7 @@ mod tests {
         let pieces = boundaries(&Pieces::Memory(&text));
         assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
         let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
-        for container in CONTAINERS {
+        for container in Container::ALL {
             assert!(containers.contains(&container), "no piece begins in {container:?}");
         }
         let options = LoadOptions::default();
@@ -717,7 +718,7 @@ mod tests {
                         Pieces::File { file, bom: 0, len: theirs.len() }
                     }
                 };
-                let pieces = vec![(starts[1], WorldChild::Bodies), (starts[2], WorldChild::Bodies)];
+                let pieces = vec![(starts[1], Container::Bodies), (starts[2], Container::Bodies)];
                 std::thread::scope(|scope| {
                     parser.part = start(scope, Some(second), &options, Some((pieces, first)));
                     parser.document().unwrap();
@@ -750,7 +751,7 @@ mod tests {
         let options = LoadOptions::default();
         let mut parser = Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
         // One piece: the helper's text matches the caller's up to its start.
-        let pieces = vec![(starts[2], WorldChild::Bodies)];
+        let pieces = vec![(starts[2], Container::Bodies)];
         std::thread::scope(|scope| {
             parser.part = start(scope, Some(Pieces::Memory(&theirs)), &options, Some((pieces, 0)));
             parser.document().unwrap();

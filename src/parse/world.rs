@@ -1,6 +1,7 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
 use super::{Element, Parser, Seen, Tag, elements};
+use crate::containers::Container;
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Object, Place};
 
@@ -8,21 +9,16 @@ elements! {
     pub(super) enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
 }
 
-/// The world's containers, in the order writers list them.
-pub(super) const CONTAINERS: [WorldChild; 4] =
-    [WorldChild::Shapes, WorldChild::Fixtures, WorldChild::Bodies, WorldChild::Joints];
-
 impl WorldChild {
-    /// The element each item of this container is, as the editor spells it (none for
-    /// Gravity, which is a value).
-    pub(super) fn item(self) -> &'static str {
-        match self {
-            WorldChild::Gravity => "",
-            WorldChild::Shapes => "Shape",
-            WorldChild::Fixtures => "Fixture",
-            WorldChild::Bodies => "Body",
-            WorldChild::Joints => "Joint",
-        }
+    /// The container this child is, by its name (none for Gravity, which is a value).
+    fn container(self) -> Option<Container> {
+        Container::ALL.into_iter().find(|c| c.name() == self.name())
+    }
+
+    /// The child that is `container` (every container is one: see the test below).
+    pub(super) fn of(container: Container) -> WorldChild {
+        let is = |child: &&WorldChild| child.container() == Some(container);
+        WorldChild::ALL.iter().find(is).copied().unwrap_or(WorldChild::Gravity)
     }
 }
 
@@ -111,8 +107,8 @@ impl<'a> Parser<'a> {
         self.read_version(root)?;
         let mut seen = Seen::default();
         self.world_children(root, &mut seen)?;
-        for container in CONTAINERS {
-            if !seen.contains(container) {
+        for container in Container::ALL {
+            if !seen.contains(WorldChild::of(container)) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
                 self.arena.warn(Code::MissingContainer, root.at, message)?;
             }
@@ -124,20 +120,20 @@ impl<'a> Parser<'a> {
     /// before an item (see [`super::ahead`]).
     pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
         while let Some(child) = self.child(root)? {
-            let Some((name, repeated)) = self.known(root, &child, seen)? else {
+            let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
                 continue;
             };
-            if name == WorldChild::Gravity {
+            let Some(container) = name.container() else {
                 if repeated {
                     self.duplicate(root, &child)?;
                 }
                 self.arena.scene.gravity = Some(self.vector(&child)?);
                 continue;
-            }
+            };
             if repeated {
                 return Err(self.duplicate_container(root, &child));
             }
-            if self.container(&child, name, seen)? {
+            if self.container(&child, container, seen)? {
                 return Ok(());
             }
         }
@@ -150,14 +146,14 @@ impl<'a> Parser<'a> {
     pub(super) fn container(
         &mut self,
         tag: &Tag,
-        name: WorldChild,
+        name: Container,
         seen: &mut Seen,
     ) -> Parsed<bool> {
         let each: fn(&mut Self, Tag) -> Parsed<()> = match name {
-            WorldChild::Shapes => Self::shape,
-            WorldChild::Fixtures => Self::fixture,
-            WorldChild::Bodies => Self::body,
-            _ => Self::joint,
+            Container::Shapes => Self::shape,
+            Container::Fixtures => Self::fixture,
+            Container::Bodies => Self::body,
+            Container::Joints => Self::joint,
         };
         let mut taken_over = false;
         self.items_until(tag, name.item(), each, |p| {
@@ -198,5 +194,22 @@ impl<'a> Parser<'a> {
         };
         self.arena.scene.version = self.arena.version;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::WorldChild;
+    use crate::containers::Container;
+    use crate::parse::names::Element;
+
+    /// The reader knows every container of the list by its name, and Gravity is none.
+    #[test]
+    fn every_container_is_a_child_of_the_world() {
+        for container in Container::ALL {
+            assert_eq!(WorldChild::of(container).name(), container.name());
+            assert_eq!(WorldChild::of(container).container(), Some(container));
+        }
+        assert_eq!(WorldChild::Gravity.container(), None);
     }
 }
