@@ -3,7 +3,7 @@
 //! builds; the reader fills it, and resolve and validate finish it.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Finding, MAX_WARNINGS, Parsed};
+use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot};
 use crate::scene::SceneBuilder;
 
 /// A scene under construction, with what the later stages need to check it.
@@ -14,21 +14,21 @@ pub(crate) struct Arena {
     pub origins: Origins,
     /// Every warning becomes the load's error.
     strict: bool,
-    /// The warnings kept, at most [`MAX_WARNINGS`], in the order found.
+    /// The warnings kept, at most [`MAX_WARNINGS`], in the order found, each placed.
     warnings: Vec<Finding>,
-    /// Warnings past [`MAX_WARNINGS`]: how many, and where the first was.
-    dropped: (u64, usize),
+    /// Warnings past [`MAX_WARNINGS`]: how many, and the first.
+    dropped: (u64, Option<Finding>),
 }
 
-/// The offsets the cross-reference checks need after the whole file is read.
+/// Where the checks made after the whole file is read point.
 #[derive(Debug, Default)]
 pub(crate) struct Origins {
     /// Per fixture: its `Shape` value.
-    pub fixture_shapes: Vec<usize>,
+    pub fixture_shapes: Vec<Spot>,
     /// Per body: its tag.
-    pub bodies: Vec<usize>,
+    pub bodies: Vec<Spot>,
     /// Per entry of the fixture ID pool: its `ID` value.
-    pub fixture_ids: Vec<usize>,
+    pub fixture_ids: Vec<Spot>,
     pub joints: Vec<JointOrigin>,
     /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
     pub shape_densities: Vec<f32>,
@@ -41,17 +41,17 @@ pub(crate) struct Origins {
 #[derive(Debug)]
 pub(crate) struct Pair {
     pub body: u32,
-    pub fixture: (u32, usize),
-    pub shape: (u32, usize),
+    pub fixture: (u32, Spot),
+    pub shape: (u32, Spot),
 }
 
 /// Where a joint's references are.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct JointOrigin {
-    pub body_a: usize,
-    pub body_b: usize,
-    pub joint_a: usize,
-    pub joint_b: usize,
+    pub body_a: Spot,
+    pub body_b: Spot,
+    pub joint_a: Spot,
+    pub joint_b: Spot,
 }
 
 impl Arena {
@@ -62,16 +62,11 @@ impl Arena {
             origins: Origins::default(),
             strict,
             warnings: Vec::new(),
-            dropped: (0, 0),
+            dropped: (0, None),
         }
     }
 
-    /// Records a warning; in strict mode it is the load's error instead.
-    pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Parsed<()> {
-        self.note(Finding::new(code, at, message))
-    }
-
-    /// Records `warning` (see [`Arena::warn`]).
+    /// Records `warning`; in strict mode it is the load's error instead.
     pub fn note(&mut self, warning: Finding) -> Parsed<()> {
         if self.strict {
             let message = format!("{} (strict mode)", warning.message);
@@ -87,46 +82,40 @@ impl Arena {
             self.warnings.push(warning);
         } else {
             let (count, first) = &mut self.dropped;
-            if *count == 0 {
-                *first = warning.at;
-            }
+            first.get_or_insert(warning);
             *count += 1;
         }
-    }
-
-    /// Whether a warning was recorded.
-    pub fn has_warnings(&self) -> bool {
-        !self.warnings.is_empty()
     }
 
     /// The warnings in the order of the file, the last a `warnings-truncated` one when some
     /// were not kept.
     pub fn take_warnings(&mut self) -> Vec<Finding> {
         let mut warnings = std::mem::take(&mut self.warnings);
-        warnings.sort_by_key(|w| w.at);
-        let (dropped, first) = self.dropped;
-        if dropped > 0 {
+        warnings.sort_by_key(Finding::order);
+        if let (dropped @ 1.., Some(first)) = std::mem::take(&mut self.dropped) {
             let message = format!(
                 "{dropped} more warnings from here on were not kept (a scene keeps {MAX_WARNINGS})"
             );
-            warnings.push(Finding::new(Code::WarningsTruncated, first, message));
+            warnings.push(Finding { code: Code::WarningsTruncated, message, ..first });
         }
         warnings
     }
 
-    /// Appends `other`, what was read right after what this arena holds: its bodies are
-    /// numbered after these, and its warnings were found after these, so the warnings
-    /// kept and counted are those one arena reading both would have.
-    pub fn append(&mut self, other: Arena) {
+    /// Appends `other`, what was read right after what this arena holds, from the text at
+    /// `start` on: its bodies are numbered after these, its positions counted from `start`,
+    /// and its warnings were found after these, so the warnings kept and counted are those
+    /// one arena reading both would have.
+    pub fn append(&mut self, other: Arena, start: Position) {
         let bodies_before = self.scene.bodies.len() as u32;
         self.scene.append(other.scene);
-        self.origins.append(other.origins, bodies_before);
+        self.origins.append(other.origins, bodies_before, start);
+        let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
         for warning in other.warnings {
-            self.keep(warning);
+            self.keep(after(warning));
         }
         let (count, first) = other.dropped;
-        if count > 0 && self.dropped.0 == 0 {
-            self.dropped.1 = first;
+        if self.dropped.1.is_none() {
+            self.dropped.1 = first.map(after);
         }
         self.dropped.0 += count;
     }
@@ -148,34 +137,29 @@ impl Arena {
     pub fn id_is_informational(&self) -> bool {
         self.version >= 2
     }
-
-    /// Warns that `what` needs Version 2 when the file says less.
-    pub fn newer_construct(&mut self, at: usize, what: &str) -> Parsed<()> {
-        if self.version >= 2 {
-            return Ok(());
-        }
-        let said = match self.version {
-            0 => "has no Version (legacy)".to_string(),
-            v => format!("says Version {v}"),
-        };
-        self.warn(
-            Code::ConstructNewerThanVersion,
-            at,
-            format!("{what} is a Version 2 construct, but the file {said}"),
-        )
-    }
 }
 
 impl Origins {
     /// Appends those of what was read after this one's last object, whose bodies are
-    /// numbered after the `bodies_before` read here.
-    fn append(&mut self, other: Origins, bodies_before: u32) {
+    /// numbered after the `bodies_before` read here and whose positions are counted from
+    /// `start`.
+    fn append(&mut self, other: Origins, bodies_before: u32, start: Position) {
         let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs } = other;
-        self.fixture_shapes.extend(fixture_shapes);
-        self.bodies.extend(bodies);
-        self.fixture_ids.extend(fixture_ids);
-        self.joints.extend(joints);
+        let after = |s: Spot| s.after(start);
+        self.fixture_shapes.extend(fixture_shapes.into_iter().map(after));
+        self.bodies.extend(bodies.into_iter().map(after));
+        self.fixture_ids.extend(fixture_ids.into_iter().map(after));
+        self.joints.extend(joints.into_iter().map(|j| JointOrigin {
+            body_a: after(j.body_a),
+            body_b: after(j.body_b),
+            joint_a: after(j.joint_a),
+            joint_b: after(j.joint_b),
+        }));
         self.shape_densities.extend(shape_densities);
-        self.pairs.extend(pairs.into_iter().map(|p| Pair { body: p.body + bodies_before, ..p }));
+        self.pairs.extend(pairs.into_iter().map(|p| Pair {
+            body: p.body + bodies_before,
+            fixture: (p.fixture.0, after(p.fixture.1)),
+            shape: (p.shape.0, after(p.shape.1)),
+        }));
     }
 }

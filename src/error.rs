@@ -347,6 +347,19 @@ pub struct Position {
     pub byte_offset: u64,
 }
 
+impl Position {
+    /// This position, counted from the start of a piece of the text as line 1, column 1,
+    /// placed in the whole text where the piece begins at `start`. Its byte offset is the
+    /// file's already.
+    pub(crate) fn after(self, start: Position) -> Position {
+        let column = match self.line {
+            1 => start.column.saturating_add(self.column - 1),
+            _ => self.column,
+        };
+        Position { line: start.line.saturating_add(self.line - 1), column, ..self }
+    }
+}
+
 /// Why a load failed: the code, where, and a message a level designer understands.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
@@ -367,12 +380,15 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// A coded finding of any load stage, a warning or an error alike: what, and where as a byte
-/// offset of the decoded text (a position is worked out only for what is reported).
+/// A coded finding of any load stage, a warning or an error alike: what, and where, as a
+/// byte offset of the decoded text and, once the reader has placed it, as a position in the
+/// file (worked out while its text was at hand).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Finding {
     pub code: Code,
+    /// The offset in the decoded text; 0 for a finding placed from a [`Spot`].
     pub at: usize,
+    pub position: Option<Position>,
     pub message: String,
 }
 
@@ -385,7 +401,23 @@ pub(crate) type Parsed<T> = Result<T, Problem>;
 
 impl Finding {
     pub fn new(code: Code, at: usize, message: impl Into<String>) -> Finding {
-        Finding { code, at, message: message.into() }
+        Finding { code, at, position: None, message: message.into() }
+    }
+
+    /// Where it is in the file, to put findings in order: a load's findings are all placed,
+    /// or all not (see [`Spot`]), and offsets and byte offsets grow together.
+    pub fn order(&self) -> u64 {
+        self.position.map_or(self.at as u64, |p| p.byte_offset)
+    }
+
+    /// A finding at `position`, the place of offset `at`.
+    pub fn placed(
+        code: Code,
+        at: usize,
+        position: Position,
+        message: impl Into<String>,
+    ) -> Finding {
+        Finding { code, at, position: Some(position), message: message.into() }
     }
 }
 
@@ -393,4 +425,39 @@ impl Finding {
 #[cold]
 pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
     Box::new(Finding::new(code, at, message))
+}
+
+/// Where something a later stage may report is: its position, placed while its text was
+/// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
+/// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Spot(Position);
+
+impl Spot {
+    /// Offset `at` of a text that stays in memory.
+    pub fn offset(at: usize) -> Spot {
+        Spot(Position { line: 0, column: 0, byte_offset: at as u64 })
+    }
+
+    pub fn placed(position: Position) -> Spot {
+        Spot(position)
+    }
+
+    /// This spot, counted from the start of a piece of the text, placed in the whole text
+    /// where the piece begins at `start` (see [`Position::after`]); offsets are the whole
+    /// text's already.
+    pub fn after(self, start: Position) -> Spot {
+        match self.0.line {
+            0 => self,
+            _ => Spot(self.0.after(start)),
+        }
+    }
+
+    /// A finding here.
+    pub fn finding(self, code: Code, message: impl Into<String>) -> Finding {
+        match self.0.line {
+            0 => Finding::new(code, self.0.byte_offset as usize, message),
+            _ => Finding::placed(code, 0, self.0, message),
+        }
+    }
 }

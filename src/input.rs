@@ -42,7 +42,7 @@ pub struct Source<'a> {
     /// Why the text ends early; None when it ends with the file.
     stop: Option<Finding>,
     encoding: Encoding,
-    /// Where the text came from, to read it again for positions.
+    /// Where the text came from, for the message of a read error.
     origin: Origin<'a>,
 }
 
@@ -111,7 +111,10 @@ impl<'a> Source<'a> {
     /// valid to its end, or a UTF-8 file being read (through a second handle on it).
     pub fn pieces(&self) -> Option<Pieces<'a>> {
         match (&self.text, &self.stop, &self.file) {
-            (Cow::Borrowed(text), None, None) => Some(Pieces::Memory(text)),
+            (Cow::Borrowed(text), None, None) => {
+                let bom = matches!(self.encoding, Encoding::Utf8 { bom: true });
+                Some(Pieces::Memory { text, bom })
+            }
             (_, None, Some(stream)) => Some(Pieces::File {
                 file: second_handle(&stream.file)?,
                 bom: stream.bom,
@@ -230,14 +233,14 @@ impl<'a> Source<'a> {
             // The file grew past the limit since its size was checked.
             Ok(_) => {
                 let message = too_big(stream.max).message;
-                Finding { code: Code::LimitExceeded, at: end, message }
+                Finding::new(Code::LimitExceeded, end, message)
             }
             Err(e) => {
                 let message = match &self.origin {
                     Origin::Path(path) => io_error(path, &e).message,
                     Origin::Memory => e.to_string(),
                 };
-                Finding { code: Code::Io, at: end, message }
+                Finding::new(Code::Io, end, message)
             }
         };
         bytes.truncate(kept);
@@ -297,45 +300,28 @@ impl<'a> Source<'a> {
     pub fn is_whole(&self) -> bool {
         self.base == 0 && self.file.is_none()
     }
-
-    /// The same text from its start again, for [`Locator`]: borrowed when it is whole,
-    /// read again from its file otherwise.
-    fn reopen(&self) -> Result<Source<'_>, Error> {
-        if !self.is_whole() {
-            return self.read_again();
-        }
-        Ok(Source {
-            text: Cow::Borrowed(&self.text),
-            base: 0,
-            file: None,
-            stop: self.stop.clone(),
-            encoding: self.encoding,
-            origin: self.origin.clone(),
-        })
-    }
-
-    fn read_again(&self) -> Result<Source<'a>, Error> {
-        match self.origin {
-            Origin::Path(path) => {
-                Source::path(path, &LoadOptions { max_input_bytes: u64::MAX, ..Default::default() })
-            }
-            Origin::Memory => unreachable!("a source in memory is whole"),
-        }
-    }
 }
 
 /// The text of a file as a second reader reads it: whole in memory, or a piece at a time
 /// from the file that is being read, through a handle of its own.
 pub enum Pieces<'a> {
-    Memory(&'a str),
-    File { file: File, bom: u64, len: usize },
+    /// A text in memory, and whether its file began with a byte-order mark (for positions).
+    Memory {
+        text: &'a str,
+        bom: bool,
+    },
+    File {
+        file: File,
+        bom: u64,
+        len: usize,
+    },
 }
 
 impl<'a> Pieces<'a> {
     /// The length of the text.
     pub fn len(&self) -> usize {
         match self {
-            Pieces::Memory(text) => text.len(),
+            Pieces::Memory { text, .. } => text.len(),
             Pieces::File { len, .. } => *len,
         }
     }
@@ -343,7 +329,7 @@ impl<'a> Pieces<'a> {
     /// The bytes of the text from `from` to `to` (within it), which may cut a character.
     pub fn bytes(&self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
         match self {
-            Pieces::Memory(text) => text.as_bytes().get(from..to).map(Cow::Borrowed),
+            Pieces::Memory { text, .. } => text.as_bytes().get(from..to).map(Cow::Borrowed),
             Pieces::File { file, bom, .. } => {
                 let mut bytes = vec![0; to.checked_sub(from)?];
                 read_exact_at(file, &mut bytes, bom + from as u64).ok()?;
@@ -357,8 +343,8 @@ impl<'a> Pieces<'a> {
     /// (valid UTF-8, only characters XML allows).
     pub fn source(&self, from: usize, to: usize) -> Option<Source<'a>> {
         let (text, base, encoding) = match self {
-            Pieces::Memory(text) => {
-                (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: false })
+            Pieces::Memory { text, bom } => {
+                (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: *bom })
             }
             Pieces::File { bom, .. } => {
                 let text = String::from_utf8(self.bytes(from, to)?.into_owned()).ok()?;
@@ -368,8 +354,7 @@ impl<'a> Pieces<'a> {
                 (Cow::Owned(text), from, Encoding::Utf8 { bom: *bom > 0 })
             }
         };
-        // A piece is read whole and never placed (its reader reports offsets), so it has no
-        // file to read again.
+        // A piece is read whole: it has no file to read on from.
         Some(Source { text, base, file: None, stop: None, encoding, origin: Origin::Memory })
     }
 }
@@ -427,13 +412,12 @@ fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Finding>) {
 
 /// The `invalid-utf8` stop at offset `at`.
 fn invalid_utf8(at: usize) -> Finding {
-    Finding {
-        code: Code::InvalidUtf8,
+    Finding::new(
+        Code::InvalidUtf8,
         at,
-        message: "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy code \
-                  page must be converted)"
-            .into(),
-    }
+        "the file is not valid UTF-8 here: save it as UTF-8 (a file in a legacy code page must \
+         be converted)",
+    )
 }
 
 /// `text` up to its first character that XML does not allow (outside the Char production
@@ -464,6 +448,7 @@ fn cut_at_non_char(
 fn non_char(text: &str, at: usize, base: usize) -> Finding {
     match text.as_bytes()[at] {
         0 => Finding {
+            position: None,
             code: Code::NulByte,
             at: base + at,
             message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
@@ -473,6 +458,7 @@ fn non_char(text: &str, at: usize, base: usize) -> Finding {
         _ => {
             let c = text[at..].chars().next().unwrap_or_default();
             Finding {
+                position: None,
                 code: Code::MalformedXml,
                 at: base + at,
                 message: format!(
@@ -545,6 +531,7 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding,
         }
     }
     let stop = (!valid).then(|| Finding {
+        position: None,
         code: Code::InvalidUtf8,
         at: text.len(),
         message: "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of \
@@ -569,124 +556,6 @@ pub fn io_error(path: &Path, e: &std::io::Error) -> Error {
         position: Position::default(),
         message: format!("cannot read {}: {e}", path.display()),
     }
-}
-
-/// Turns offsets in the decoded text into positions in the file, reading the text again
-/// from its start. Offsets in increasing order take one pass; an earlier one starts over.
-pub struct Locator<'a> {
-    source: Option<Source<'a>>,
-    encoding: Encoding,
-    /// The offset reached, its line, its column (in characters, from 1), and its UTF-16
-    /// code units from the start (for UTF-16 files), and whether the text before it ended
-    /// with a carriage return.
-    offset: usize,
-    line: u32,
-    column: u64,
-    units: u64,
-    after_cr: bool,
-}
-
-impl<'a> Locator<'a> {
-    pub fn new(source: &'a Source<'_>) -> Locator<'a> {
-        Locator {
-            source: source.reopen().ok(),
-            encoding: source.encoding,
-            offset: 0,
-            line: 1,
-            column: 1,
-            units: 0,
-            after_cr: false,
-        }
-    }
-
-    pub fn locate(&mut self, offset: usize) -> Position {
-        if offset < self.offset {
-            // Back to the start (a warnings-truncated warning points before the last
-            // warning kept).
-            if let Some(source) = self.source.as_ref().filter(|s| !s.is_whole()) {
-                self.source = source.read_again().ok();
-            }
-            (self.offset, self.line, self.column, self.units) = (0, 1, 1, 0);
-            self.after_cr = false;
-        }
-        while let Some(source) = &mut self.source {
-            let to = offset.min(source.end());
-            let text = source.slice(self.offset.max(source.base()), to);
-            advance(
-                &mut self.line,
-                &mut self.column,
-                &mut self.units,
-                &mut self.after_cr,
-                self.encoding,
-                text,
-            );
-            self.offset = to;
-            if to == offset || !source.more(to) {
-                break;
-            }
-        }
-        Position {
-            line: self.line,
-            column: u32::try_from(self.column).unwrap_or(u32::MAX - 1),
-            byte_offset: self.file_offset(),
-        }
-    }
-
-    /// The offset in the file of the offset reached.
-    fn file_offset(&self) -> u64 {
-        match self.encoding {
-            Encoding::Utf8 { bom } => (self.offset + if bom { UTF8_BOM.len() } else { 0 }) as u64,
-            Encoding::Utf16 { .. } => 2 + 2 * self.units,
-        }
-    }
-}
-
-/// How many bytes of `bytes` are `byte`. Lines are short, so a search per line costs more
-/// than a count, which the compiler vectorises: 255 bytes at a time, each counted in a byte.
-fn count_byte(bytes: &[u8], byte: u8) -> usize {
-    let count_in = |chunk: &[u8]| chunk.iter().fold(0u8, |n, &b| n + u8::from(b == byte));
-    bytes.chunks(255).map(|chunk| usize::from(count_in(chunk))).sum()
-}
-
-/// Moves a line, column and UTF-16 unit count past `text`. Lines end as editors end them:
-/// at LF, at CR LF and at a lone CR. `after_cr` says the text before `text` ended with a CR,
-/// so that an LF starting `text` ends no second line.
-fn advance(
-    line: &mut u32,
-    column: &mut u64,
-    units: &mut u64,
-    after_cr: &mut bool,
-    encoding: Encoding,
-    text: &str,
-) {
-    if let Encoding::Utf16 { .. } = encoding {
-        *units += text.chars().map(char::len_utf16).sum::<usize>() as u64;
-    }
-    let mut bytes = text.as_bytes();
-    if *after_cr && bytes.first() == Some(&b'\n') {
-        bytes = &bytes[1..];
-    }
-    if bytes.is_empty() {
-        *after_cr &= text.is_empty();
-        return;
-    }
-    let count = |byte: u8| count_byte(bytes, byte);
-    let mut line_ends = count(b'\n');
-    let returns = count(b'\r');
-    if returns > 0 {
-        line_ends += returns - memchr::memmem::find_iter(bytes, b"\r\n").count();
-    }
-    *line = line.saturating_add(u32::try_from(line_ends).unwrap_or(u32::MAX));
-    let last_line = match memchr::memrchr2(b'\n', b'\r', bytes) {
-        Some(end) => {
-            *column = 1;
-            &bytes[end + 1..]
-        }
-        None => bytes,
-    };
-    // Characters: every byte that does not continue a multi-byte sequence.
-    *column += last_line.iter().filter(|&&b| b & 0xC0 != 0x80).count() as u64;
-    *after_cr = bytes.last() == Some(&b'\r');
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, Problem, problem};
+use crate::error::{Code, Parsed, Problem, Spot};
 use crate::scene::{JointKind, NONE, Object, Place, Range};
 
 pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
@@ -31,7 +31,7 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
                 pair.body,
                 has(templates.len(), "fixture", "fixtures")
             );
-            return Err(problem(Code::IdOutOfRange, template_at, why));
+            return Err(placed(Code::IdOutOfRange, template_at, why));
         };
         let (shape, shape_at) = pair.shape;
         let mut fixture = template;
@@ -89,7 +89,7 @@ fn check_references(p: &Arena) -> Parsed<()> {
                 f.shape,
                 has(s.shapes.len(), "shape", "shapes")
             );
-            errors.push(problem(Code::IdOutOfRange, at, why));
+            errors.push(placed(Code::IdOutOfRange, at, why));
         }
     }
     for (i, b) in s.bodies.iter().enumerate() {
@@ -100,7 +100,7 @@ fn check_references(p: &Arena) -> Parsed<()> {
                     "body {i} names fixture {id}, but {}",
                     has(s.fixtures.len(), "fixture", "fixtures")
                 );
-                errors.push(problem(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
+                errors.push(placed(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
             }
         }
     }
@@ -111,7 +111,7 @@ fn check_references(p: &Arena) -> Parsed<()> {
                     "joint {i} names body {body} as {side}, but {}",
                     has(s.bodies.len(), "body", "bodies")
                 );
-                errors.push(problem(Code::IdOutOfRange, at, why));
+                errors.push(placed(Code::IdOutOfRange, at, why));
             }
         }
         if j.kind() != Some(JointKind::Gear) {
@@ -128,13 +128,19 @@ fn check_references(p: &Arena) -> Parsed<()> {
                 Some(JointKind::Revolute | JointKind::Prismatic) | None => continue,
                 Some(other) => format!("joint {target}, a {other:?} joint"),
             };
-            errors.push(problem(Code::BadGearJoint, at, format!(
+            errors.push(placed(Code::BadGearJoint, at, format!(
                 "gear joint {i} names {why} as {side}; a gear couples two revolute or prismatic joints"
             )));
         }
     }
-    match errors.into_iter().min_by_key(|e| e.at) {
+    match errors.into_iter().min_by_key(|e| e.order()) {
         Some(first) => Err(first),
         None => Ok(()),
     }
+}
+
+/// A problem at `spot`.
+#[cold]
+fn placed(code: Code, spot: Spot, why: String) -> Problem {
+    Box::new(spot.finding(code, why))
 }

@@ -286,8 +286,8 @@ pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
     let found: Vec<Finding> = (s.bodies.iter().enumerate())
         .filter_map(|(i, b)| {
             let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
-            let at = arena.origins.bodies[i];
-            Some(Finding::new(Code::DynamicBodyZeroDensity, at, format!("dynamic body {i} {why}")))
+            let message = format!("dynamic body {i} {why}");
+            Some(arena.origins.bodies[i].finding(Code::DynamicBodyZeroDensity, message))
         })
         .collect();
     for warning in found {

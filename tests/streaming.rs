@@ -31,6 +31,10 @@ fn same_both_ways_with(bytes: &[u8], what: &str, options: &LoadOptions) -> Resul
     let from_memory = load(bytes, &options).map(|s| s.to_json());
     // The reference: memory, one thread.
     let one = load(bytes, &LoadOptions { threads: 1, ..options }).map(|s| s.to_json());
+    if let (Ok(a), Ok(b)) = (&one, &from_memory) {
+        let line = a.lines().zip(b.lines()).find(|(m, p)| m != p);
+        assert!(line.is_none(), "{what}: one thread and two differ: {line:?}");
+    }
     assert!(one == from_memory, "{what}: memory on one thread and on two differ");
     match (from_memory, from_path) {
         (Ok(memory), Ok(path)) => {

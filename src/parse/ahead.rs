@@ -8,7 +8,7 @@
 //! fine: they are appended in the order one reader finds them) and ended where the next
 //! one begins; the limits still hold; and no world element was read twice. If all hold it
 //! takes what the helper read and is done; otherwise it reads on itself. Either way the
-//! scene, the warnings and the first error are those of one parser reading the whole file;
+//! scene, the warnings and the first error are those of one reader reading the whole file;
 //! a busy core only moves where the two meet. The text may be in memory or in a file: the
 //! helper reads a file's pieces with a handle of its own, one piece at a time.
 
@@ -16,8 +16,9 @@ use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
 
 use super::names::{Element, Name};
+use super::tokenizer::{Stop, Tokenizer};
 use super::world::WorldChild;
-use super::{Parser, Seen, Tag};
+use super::{Reader, Seen, Tag};
 use crate::LoadOptions;
 use crate::arena::Arena;
 use crate::containers::Container;
@@ -29,7 +30,7 @@ use crate::text::is_xml_space_byte;
 const MIN_BYTES: usize = 1 << 20;
 
 /// About how long a piece is. The calling thread may wait for the piece the helper is
-/// reading when they meet, so pieces are short; each costs a parser and a merge.
+/// reading when they meet, so pieces are short; each costs a reader and a merge.
 const PIECE_BYTES: usize = 256 << 10;
 
 /// At most this many pieces, however large the text.
@@ -38,7 +39,7 @@ const MAX_PIECES: usize = 64;
 /// Where a piece begins: the `<` of an item, and the container it is assumed to be in.
 pub(super) type Boundary = (usize, Container);
 
-/// A parser's part in a load.
+/// A reader's part in a load.
 pub(super) enum Part {
     /// It reads the whole file, or the rest of it.
     Whole,
@@ -77,17 +78,11 @@ enum Piece {
 }
 
 /// What the helper read of one piece, when it read it without a problem: what it built
-/// (its kept text copied out of the piece's text, which is let go) and where its reader
-/// stopped.
+/// (its kept text copied out of the piece's text, which is let go; its positions counted
+/// from the piece's start) and where its tokenizer stopped.
 struct Done {
     arena: Arena,
-    /// The reader's offsets and open elements at the end of the piece, and the elements it
-    /// counted.
-    pos: usize,
-    started: usize,
-    last: usize,
-    open: Vec<Name>,
-    elements: u64,
+    stop: Stop,
     /// The world's elements it read, its own container among them.
     seen: Seen,
 }
@@ -220,10 +215,10 @@ fn help(
 fn root(text: &Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)> {
     let head = text.bytes(0, first.min(SEARCH_BYTES))?;
     let end = memchr::memrchr(b'<', &head)?;
-    let mut parser = Parser::new(text.source(0, end)?, options);
-    let root = parser.root().ok()?;
-    parser.read_version(&root).ok()?;
-    Some((root, parser.arena.version))
+    let mut reader = Reader::new(Tokenizer::new(text.source(0, end)?, options));
+    let root = reader.root().ok()?;
+    reader.read_version(&root).ok()?;
+    Some((root, reader.arena.version))
 }
 
 /// Reads `source`, the text of one piece, from its start on as if it began an item of its
@@ -236,31 +231,30 @@ fn read_piece(
     (at, container): Boundary,
     end: Option<Boundary>,
 ) -> Option<Done> {
-    let mut parser = Parser::new(source, options);
-    parser.arena.version = version;
-    let tag = Tag { name: Name::new(container.name()), content: None, at, empty: false };
-    parser.open = vec![root.name.clone(), tag.name.clone()];
-    (parser.pos, parser.started, parser.last) = (at, at, at);
+    let mut reader = Reader::new(Tokenizer::new(source, options));
+    reader.arena.version = version;
+    let tag = Tag::item(Name::new(container.name()), at);
+    reader.tok.start_item(at, vec![(root.name.clone(), root.at), (tag.name.clone(), at)]);
     if let Some(end) = end {
-        parser.part = Part::Piece { end, reached: false };
+        reader.part = Part::Piece { end, reached: false };
     }
     let mut seen = Seen::default();
     seen.bits |= 1 << WorldChild::of(container).index();
-    let read = match parser.container(&tag, container, &mut seen) {
-        Ok(false) => parser.world_children(root, &mut seen),
+    let read = match reader.container(&tag, container, &mut seen) {
+        Ok(false) => reader.world_children(root, &mut seen),
         done => done.map(drop),
     };
-    let ended = match parser.part {
+    let ended = match reader.part {
         Part::Piece { reached, .. } => read.is_ok() && reached,
-        _ => read.and_then(|()| parser.epilog()).is_ok(),
+        _ => read.and_then(|()| reader.epilog()).is_ok(),
     };
     if !ended {
         return None;
     }
-    let Parser { source, mut arena, pos, started, last, open, elements, .. } = parser;
-    arena.scene.pool_kept_text(|from, to| source.slice(from, to));
+    let Reader { tok, mut arena, .. } = reader;
+    arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
     arena.scene.shrink_to_fit();
-    Some(Done { arena, pos, started, last, open, elements, seen })
+    Some(Done { arena, stop: tok.stop(), seen })
 }
 
 impl Caller {
@@ -295,8 +289,8 @@ impl Drop for Caller {
     }
 }
 
-impl Parser<'_> {
-    /// Before the next item of `container`: whether this parser is done here. A piece is
+impl Reader<'_> {
+    /// Before the next item of `container`: whether this reader is done here. A piece is
     /// done at its end; the calling thread is done when it has taken the helper's pieces
     /// from here to the end of the file. `seen` has the world's elements read so far and
     /// gets those of the pieces taken.
@@ -306,16 +300,18 @@ impl Parser<'_> {
             Part::Caller(caller) => caller.boundaries[caller.next].0,
             Part::Piece { end, .. } => end.0,
         };
-        if self.open.len() != 2 {
+        if self.tok.open().len() != 2 {
             return false;
         }
         // A problem here is found again by the ordinary reading, which goes on.
-        if self.skip_space().is_err() || self.pos < at {
+        if self.tok.skip_space().is_err() || self.tok.position() < at {
             return false;
         }
         // At or past the boundary.
-        let here = |(at, assumed): Boundary, parser: &Parser| {
-            parser.pos == at && container == assumed && parser.open[1].as_str() == container.name()
+        let here = |(at, assumed): Boundary, reader: &Reader| {
+            reader.tok.position() == at
+                && container == assumed
+                && reader.tok.open().nth(1).is_some_and(|name| name.as_str() == container.name())
         };
         match std::mem::replace(&mut self.part, Part::Whole) {
             Part::Whole => false,
@@ -326,7 +322,7 @@ impl Parser<'_> {
             }
             Part::Caller(mut caller) => {
                 while let Some(&boundary) = caller.boundaries.get(caller.next) {
-                    if self.pos < boundary.0 {
+                    if self.tok.position() < boundary.0 {
                         self.part = Part::Caller(caller);
                         return false;
                     }
@@ -349,7 +345,7 @@ impl Parser<'_> {
     /// piece of it is usable and all of it together keeps the limits; whether it did.
     fn take(&mut self, caller: &mut Caller, first: usize, seen: &mut Seen) -> bool {
         caller.receive(first);
-        let (mut bits, mut elements) = (seen.bits, self.elements);
+        let (mut bits, mut elements) = (seen.bits, self.tok.elements());
         for (piece, &(_, container)) in
             caller.pieces[first..].iter().zip(&caller.boundaries[first..])
         {
@@ -359,27 +355,35 @@ impl Parser<'_> {
                 return false;
             }
             bits |= done.seen.bits;
-            elements += done.elements;
+            elements += done.stop.elements();
         }
-        if elements > self.options.max_elements {
+        if elements > self.tok.options().max_elements {
             return false;
         }
-        let end = match caller.pieces.last() {
-            Some(Piece::Read(done)) => done.pos,
-            _ => return false,
-        };
+        // Where each piece starts: the first here, each next where the one before ends.
+        let mut start = self.tok.locate(self.tok.position());
+        let mut starts = Vec::with_capacity(caller.pieces.len() - first);
+        for piece in &caller.pieces[first..] {
+            let Piece::Read(done) = piece else { return false };
+            starts.push(start);
+            start = done.stop.end().after(start);
+        }
         // A file is read on from where the last piece ends.
-        if !self.source.skip_to(end) {
+        let taken =
+            caller.pieces[first..].iter_mut().map(|p| std::mem::replace(p, Piece::Unusable));
+        let mut done: Vec<Done> = taken
+            .filter_map(|p| if let Piece::Read(done) = p { Some(*done) } else { None })
+            .collect();
+        let Some(last) = done.pop() else { return false };
+        let last_start = starts[done.len()];
+        if !self.tok.resume(last.stop, last_start, elements) {
             return false;
         }
-        // Every piece from `first` on was read, as checked above.
-        for piece in &mut caller.pieces[first..] {
-            let Piece::Read(done) = std::mem::replace(piece, Piece::Unusable) else { continue };
-            let Done { arena, pos, started, last, open, .. } = *done;
-            self.arena.append(arena);
-            (self.pos, self.started, self.last, self.open) = (pos, started, last, open);
+        for (piece, &start) in done.into_iter().zip(&starts) {
+            self.arena.append(piece.arena, start);
         }
-        (seen.bits, self.elements) = (bits, elements);
+        self.arena.append(last.arena, last_start);
+        seen.bits = bits;
         true
     }
 }
@@ -387,7 +391,7 @@ impl Parser<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::{Code, Parsed};
+    use crate::error::{Code, Parsed, Position, Spot};
     use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
     /// What a read on one thread, or on two with the pieces and the helper's first piece of
@@ -401,7 +405,7 @@ mod tests {
         let threads = if split.is_some() { 2 } else { 1 };
         let options = &LoadOptions { threads, ..*options };
         match Source::memory(bytes, options) {
-            Ok(source) => shown(super::super::read_split(source, options, split).1),
+            Ok(source) => shown(super::super::read_split(source, options, split).0),
             Err(e) => format!("{e:?}"),
         }
     }
@@ -485,7 +489,7 @@ mod tests {
         for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
             let text =
                 format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-            let found = boundaries(&Pieces::Memory(&text));
+            let found = boundaries(&Pieces::Memory { text: &text, bom: false });
             assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
             let step = text.len() / pieces;
             for (k, &(at, container)) in (1..).zip(&found) {
@@ -494,7 +498,10 @@ mod tests {
                 assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
             }
         }
-        assert_eq!(boundaries(&Pieces::Memory("<World><Bodies></Bodies></World>")), []);
+        assert_eq!(
+            boundaries(&Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false }),
+            []
+        );
     }
 
     /// One piece from every tag, assuming each container: what the helper reads is taken
@@ -671,7 +678,7 @@ mod tests {
         text += "</Joints></World>";
         let bytes = text.as_bytes();
         assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-        let pieces = boundaries(&Pieces::Memory(&text));
+        let pieces = boundaries(&Pieces::Memory { text: &text, bom: false });
         assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
         let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
         for container in Container::ALL {
@@ -686,7 +693,7 @@ mod tests {
         }
         for _ in 0..20 {
             let source = Source::memory(bytes, &options).unwrap();
-            let got = shown(super::super::read(source, &options).1);
+            let got = shown(super::super::read(source, &options).0);
             assert_same(&got, &expected, format_args!("as the two threads met"));
         }
     }
@@ -709,10 +716,10 @@ mod tests {
         std::fs::write(&file, &theirs).unwrap();
         for in_file in [false, true] {
             for first in 0..2 {
-                let mut parser =
-                    Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
+                let source = Source::memory(mine.as_bytes(), &options).unwrap();
+                let mut reader = Reader::new(Tokenizer::new(source, &options));
                 let second = match in_file {
-                    false => Pieces::Memory(&theirs),
+                    false => Pieces::Memory { text: &theirs, bom: false },
                     true => {
                         let file = std::fs::File::open(&file).unwrap();
                         Pieces::File { file, bom: 0, len: theirs.len() }
@@ -720,14 +727,23 @@ mod tests {
                 };
                 let pieces = vec![(starts[1], Container::Bodies), (starts[2], Container::Bodies)];
                 std::thread::scope(|scope| {
-                    parser.part = start(scope, Some(second), &options, Some((pieces, first)));
-                    parser.document().unwrap();
+                    reader.part = start(scope, Some(second), &options, Some((pieces, first)));
+                    reader.document().unwrap();
                 });
                 let what = format!("helped from piece {first}, from a file: {in_file}");
-                assert_eq!(parser.arena.scene.bodies.len(), 4, "{what}");
-                assert_eq!(parser.elements, 4 + 4 * 2 + 1, "{what}");
+                assert_eq!(reader.arena.scene.bodies.len(), 4, "{what}");
+                assert_eq!(reader.tok.elements(), 4 + 4 * 2 + 1, "{what}");
+                // A piece read from a file is placed as it is read (the text is one line).
                 let last = theirs.rfind("<Body ").unwrap();
-                assert_eq!(parser.arena.origins.bodies.last(), Some(&last), "{what}");
+                let last = match in_file {
+                    false => Spot::offset(last),
+                    true => Spot::placed(Position {
+                        line: 1,
+                        column: last as u32 + 1,
+                        byte_offset: last as u64,
+                    }),
+                };
+                assert_eq!(reader.arena.origins.bodies.last(), Some(&last), "{what}");
             }
         }
         std::fs::remove_file(&file).unwrap();
@@ -749,14 +765,20 @@ mod tests {
         let (mine, theirs) = (scene(""), scene("<Wind/>"));
         let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
         let options = LoadOptions::default();
-        let mut parser = Parser::new(Source::memory(mine.as_bytes(), &options).unwrap(), &options);
+        let source = Source::memory(mine.as_bytes(), &options).unwrap();
+        let mut reader = Reader::new(Tokenizer::new(source, &options));
         // One piece: the helper's text matches the caller's up to its start.
         let pieces = vec![(starts[2], Container::Bodies)];
         std::thread::scope(|scope| {
-            parser.part = start(scope, Some(Pieces::Memory(&theirs)), &options, Some((pieces, 0)));
-            parser.document().unwrap();
+            reader.part = start(
+                scope,
+                Some(Pieces::Memory { text: &theirs, bom: false }),
+                &options,
+                Some((pieces, 0)),
+            );
+            reader.document().unwrap();
         });
-        let warnings = parser.arena.take_warnings();
+        let warnings = reader.arena.take_warnings();
         let wind: Vec<_> = theirs.match_indices("<Wind/>").map(|(at, _)| at).collect();
         let found: Vec<_> = warnings.iter().map(|w| (w.code, w.at)).collect();
         assert_eq!(found, wind.iter().map(|&at| (Code::UnknownElement, at)).collect::<Vec<_>>());

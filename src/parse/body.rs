@@ -1,6 +1,6 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Element, Parser, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::arena::Pair;
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Body, BodyKind, MassData, Object, Range};
@@ -33,17 +33,18 @@ elements! {
     enum MassChild { Mass, Center, Inertia }
 }
 
-impl<'a> Parser<'a> {
+impl<'a> Reader<'a> {
     pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
         self.begin_object(Object::Body(self.arena.scene.bodies.len() as u32));
+        let origin = self.spot(tag.at);
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
-        while let Some(child) = self.child(&tag)? {
+        while let Some(child) = self.tok.child(&tag)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated && matches!(name, BodyChild::Fixtures | BodyChild::Bindings) {
-                return Err(self.duplicate_container(&tag, &child));
+                return Err(self.tok.duplicate_container(&tag, &child));
             }
             if let Some(problem) = self.layout_mismatch(&child, name) {
                 return Err(problem);
@@ -53,23 +54,23 @@ impl<'a> Parser<'a> {
             }
             match name {
                 BodyChild::Name => body.name = self.string(&child)?,
-                BodyChild::Active => body.active = self.boolean(&child)?,
-                BodyChild::AllowSleep => body.allow_sleep = self.boolean(&child)?,
-                BodyChild::Awake => body.awake = self.boolean(&child)?,
-                BodyChild::Bullet => body.bullet = self.boolean(&child)?,
-                BodyChild::FixedRotation => body.fixed_rotation = self.boolean(&child)?,
-                BodyChild::Angle => body.angle = self.float(&child)?,
+                BodyChild::Active => body.active = self.tok.boolean(&child)?,
+                BodyChild::AllowSleep => body.allow_sleep = self.tok.boolean(&child)?,
+                BodyChild::Awake => body.awake = self.tok.boolean(&child)?,
+                BodyChild::Bullet => body.bullet = self.tok.boolean(&child)?,
+                BodyChild::FixedRotation => body.fixed_rotation = self.tok.boolean(&child)?,
+                BodyChild::Angle => body.angle = self.tok.float(&child)?,
                 // Negative damping is not an error of the format; the Box2D adapter, whose
                 // engine asserts against it, reports it and uses 0.
-                BodyChild::AngularDamping => body.angular_damping = self.float(&child)?,
-                BodyChild::AngularVelocity => body.angular_velocity = self.float(&child)?,
-                BodyChild::LinearDamping => body.linear_damping = self.float(&child)?,
-                BodyChild::LinearVelocity => body.linear_velocity = self.vector(&child)?,
-                BodyChild::Position => body.position = self.vector(&child)?,
-                BodyChild::InertiaScale => body.inertia_scale = self.float(&child)?,
+                BodyChild::AngularDamping => body.angular_damping = self.tok.float(&child)?,
+                BodyChild::AngularVelocity => body.angular_velocity = self.tok.float(&child)?,
+                BodyChild::LinearDamping => body.linear_damping = self.tok.float(&child)?,
+                BodyChild::LinearVelocity => body.linear_velocity = self.tok.vector(&child)?,
+                BodyChild::Position => body.position = self.tok.vector(&child)?,
+                BodyChild::InertiaScale => body.inertia_scale = self.tok.float(&child)?,
                 BodyChild::GravityScale => {
-                    self.arena.newer_construct(child.at, "<GravityScale>")?;
-                    body.gravity_scale = self.float(&child)?;
+                    self.newer_construct(child.at, "<GravityScale>")?;
+                    body.gravity_scale = self.tok.float(&child)?;
                 }
                 BodyChild::MassData => {
                     let mass = &mut body.mass_data;
@@ -85,7 +86,7 @@ impl<'a> Parser<'a> {
             }
         }
         self.end_object();
-        self.arena.origins.bodies.push(tag.at);
+        self.arena.origins.bodies.push(origin);
         self.arena.scene.bodies.push(body);
         Ok(())
     }
@@ -108,10 +109,10 @@ impl<'a> Parser<'a> {
     fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
-            let attrs = p.attributes(&pair)?;
+            let attrs = p.tok.attributes(&pair)?;
             p.unknown_attributes(&pair, &attrs, &["fixtureid", "shapeid"])?;
             let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
-                Some(attr) => p.attribute(&pair, attr, crate::text::id),
+                Some(attr) => p.tok.attribute(&pair, attr, crate::text::id),
                 None => Err(problem(
                     Code::MissingAttribute,
                     pair.at,
@@ -119,13 +120,14 @@ impl<'a> Parser<'a> {
                 )),
             };
             let (fixture, shape) = (id("fixtureid")?, id("shapeid")?);
+            let (fixture, shape) = ((fixture.0, p.spot(fixture.1)), (shape.0, p.spot(shape.1)));
             p.arena.origins.pairs.push(Pair { body, fixture, shape });
-            p.skip(&pair)
+            p.tok.skip(&pair)
         })
     }
 
     fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
-        let attrs = self.attributes(tag)?;
+        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] =
             if self.arena.id_is_informational() { &["type", "id"] } else { &["type"] };
         self.unknown_attributes(tag, &attrs, known)?;
@@ -154,7 +156,7 @@ impl<'a> Parser<'a> {
 
     fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
-        while let Some(child) = self.child(tag)? {
+        while let Some(child) = self.tok.child(tag)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
@@ -166,7 +168,7 @@ impl<'a> Parser<'a> {
                     (mass.mass, mass.mass_given) = (self.non_negative(&child)?, true)
                 }
                 MassChild::Center => {
-                    (mass.center, mass.center_given) = (self.vector(&child)?, true)
+                    (mass.center, mass.center_given) = (self.tok.vector(&child)?, true)
                 }
                 MassChild::Inertia => {
                     (mass.inertia, mass.inertia_given) = (self.non_negative(&child)?, true)
@@ -181,9 +183,10 @@ impl<'a> Parser<'a> {
     fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
         let first = self.arena.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
-            let (index, at) = p.id(&id)?;
+            let (index, at) = p.tok.id(&id)?;
             p.arena.scene.fixture_ids.push(index);
-            p.arena.origins.fixture_ids.push(at);
+            let origin = p.spot(at);
+            p.arena.origins.fixture_ids.push(origin);
             Ok(())
         })?;
         Ok(Range::between(first, self.arena.scene.fixture_ids.len()))

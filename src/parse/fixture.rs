@@ -1,6 +1,6 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Element, Parser, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::error::{Code, Parsed};
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
@@ -23,16 +23,16 @@ elements! {
     enum FilterChild { CategoryBits, MaskBits, GroupIndex, CollisionIgnores }
 }
 
-impl<'a> Parser<'a> {
+impl<'a> Reader<'a> {
     pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
-        let attrs = self.attributes(&tag)?;
+        let attrs = self.tok.attributes(&tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["id"] } else { &[] };
         self.unknown_attributes(&tag, &attrs, known)?;
         let mut fixture = Fixture::default();
-        let mut shape_at = tag.at;
+        let mut shape_at = None;
         let mut seen = Seen::default();
-        while let Some(child) = self.child(&tag)? {
+        while let Some(child) = self.tok.child(&tag)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
@@ -51,12 +51,15 @@ impl<'a> Parser<'a> {
                     );
                     self.discard(&child, message)?;
                 }
-                Shape => (fixture.shape, shape_at) = self.id(&child)?,
+                Shape => {
+                    let (shape, at) = self.tok.id(&child)?;
+                    (fixture.shape, shape_at) = (shape, Some(self.spot(at)));
+                }
                 Name => fixture.name = self.string(&child)?,
                 Density => fixture.density = self.non_negative(&child)?,
                 Friction => fixture.friction = self.non_negative(&child)?,
                 Restitution => fixture.restitution = self.non_negative(&child)?,
-                IsSensor => fixture.is_sensor = self.boolean(&child)?,
+                IsSensor => fixture.is_sensor = self.tok.boolean(&child)?,
                 FilterData => {
                     let filter = &mut fixture.filter;
                     self.within(FilterData.name(), |p| p.filter(&child, filter))?
@@ -70,17 +73,19 @@ impl<'a> Parser<'a> {
         }
         // In Farseer's layout a fixture is a template: bodies pair it with shapes.
         if !seen.contains(FixtureChild::Shape) && !self.arena.farseer_layout() {
-            return Err(self.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
+            return Err(self.tok.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
         }
         self.end_object();
-        self.arena.origins.fixture_shapes.push(shape_at);
+        // A Version 3 template has none: its bodies' Pairs give it one.
+        let origin = shape_at.unwrap_or_else(|| self.spot(tag.at));
+        self.arena.origins.fixture_shapes.push(origin);
         self.arena.scene.fixtures.push(fixture);
         Ok(())
     }
 
     fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
-        while let Some(child) = self.child(tag)? {
+        while let Some(child) = self.tok.child(tag)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
@@ -90,9 +95,11 @@ impl<'a> Parser<'a> {
             match name {
                 FilterChild::CategoryBits => filter.category_bits = self.bits(&child)?,
                 FilterChild::MaskBits => filter.mask_bits = self.bits(&child)?,
-                FilterChild::GroupIndex => filter.group_index = self.parsed(&child, text::int16)?.0,
+                FilterChild::GroupIndex => {
+                    filter.group_index = self.tok.parsed(&child, text::int16)?.0
+                }
                 // Farseer's per-body collision exceptions: Box2D has no such thing.
-                FilterChild::CollisionIgnores => self.skip(&child)?,
+                FilterChild::CollisionIgnores => self.tok.skip(&child)?,
             }
         }
         Ok(())
@@ -100,13 +107,13 @@ impl<'a> Parser<'a> {
 
     /// Collision bits; above 16 bits only the low 16 are kept, with a warning.
     fn bits(&mut self, tag: &Tag) -> Parsed<u16> {
-        let ((bits, truncated), at) = self.parsed(tag, text::bits)?;
+        let ((bits, truncated), at) = self.tok.parsed(tag, text::bits)?;
         if truncated {
             let message = format!(
                 "<{}> has more than 16 bits; Box2D keeps the low 16 (0x{bits:04X})",
                 tag.name()
             );
-            self.arena.warn(Code::FilterBitsTruncated, at, message)?;
+            self.warn(Code::FilterBitsTruncated, at, message)?;
         }
         Ok(bits)
     }

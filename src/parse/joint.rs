@@ -1,7 +1,7 @@
 //! `<Joint Type="...">`: the common fields, then one table that says which element each
 //! joint kind has, where it goes, and what it may hold.
 
-use super::{Element, Parser, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::arena::JointOrigin;
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
@@ -199,19 +199,26 @@ fn joint_kind(value: &str) -> Option<JointKind> {
     })
 }
 
-impl<'a> Parser<'a> {
+/// Where a joint's references are written, while it is read.
+struct Refs {
+    body_a: usize,
+    body_b: usize,
+    joint_a: usize,
+    joint_b: usize,
+}
+
+impl<'a> Reader<'a> {
     pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
         self.begin_object(Object::Joint(self.arena.scene.joints.len() as u32));
         let kind = self.joint_type(&tag)?;
         if kind == JointKind::Unsupported {
             // It has no Box2Scene form: the writer writes back its whole text.
-            self.pin(tag.at);
+            self.tok.pin(tag.at);
         }
         let mut joint = Joint::new(kind);
-        let mut at =
-            JointOrigin { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
+        let mut at = Refs { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
-        while let Some(child) = self.child(&tag)? {
+        while let Some(child) = self.tok.child(&tag)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
@@ -232,25 +239,25 @@ impl<'a> Parser<'a> {
                 self.duplicate(&tag, &child)?;
             }
             if kind == JointKind::Weld && matches!(name, FrequencyHz | DampingRatio) {
-                self.arena.newer_construct(child.at, "a soft Weld joint")?;
+                self.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
                 Name => joint.name = self.string(&child)?,
                 UserData | Tag => joint.user_data = self.user_data(&child)?,
-                CollideConnected => joint.collide_connected = self.boolean(&child)?,
-                BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
-                BodyB => (joint.body_b, at.body_b) = self.id(&child)?,
+                CollideConnected => joint.collide_connected = self.tok.boolean(&child)?,
+                BodyA => (joint.body_a, at.body_a) = self.tok.id(&child)?,
+                BodyB => (joint.body_b, at.body_b) = self.tok.id(&child)?,
                 // Legacy files name the bodies JointA and JointB.
-                JointA if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
-                JointB if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
-                JointA => (joint.joint_a, at.joint_a) = self.id(&child)?,
-                JointB => (joint.joint_b, at.joint_b) = self.id(&child)?,
+                JointA if legacy => (joint.body_a, at.body_a) = self.tok.id(&child)?,
+                JointB if legacy => (joint.body_b, at.body_b) = self.tok.id(&child)?,
+                JointA => (joint.joint_a, at.joint_a) = self.tok.id(&child)?,
+                JointB => (joint.joint_b, at.joint_b) = self.tok.id(&child)?,
                 _ => match slot.expect("elements without a slot were skipped above") {
-                    Slot::Vector(field) => *field(&mut joint) = self.vector(&child)?,
-                    Slot::Float(field) => *field(&mut joint) = self.float(&child)?,
+                    Slot::Vector(field) => *field(&mut joint) = self.tok.vector(&child)?,
+                    Slot::Float(field) => *field(&mut joint) = self.tok.float(&child)?,
                     Slot::NonNegative(field) => *field(&mut joint) = self.non_negative(&child)?,
-                    Slot::Flag(field) => *field(&mut joint) = self.boolean(&child)?,
-                    Slot::Ignored => self.skip(&child)?,
+                    Slot::Flag(field) => *field(&mut joint) = self.tok.boolean(&child)?,
+                    Slot::Ignored => self.tok.skip(&child)?,
                 },
             }
         }
@@ -259,11 +266,17 @@ impl<'a> Parser<'a> {
         }
         self.check_joint(&tag, &joint, &at)?;
         if kind == JointKind::Unsupported {
-            let text = self.unpin(self.position());
+            let text = self.tok.unpin(self.tok.position());
             self.keep_str(Place::Whole, &text);
         }
         self.end_object();
-        self.arena.origins.joints.push(at);
+        let origin = JointOrigin {
+            body_a: self.spot(at.body_a),
+            body_b: self.spot(at.body_b),
+            joint_a: self.spot(at.joint_a),
+            joint_b: self.spot(at.joint_b),
+        };
+        self.arena.origins.joints.push(origin);
         self.arena.scene.joints.push(joint);
         Ok(())
     }
@@ -279,7 +292,7 @@ impl<'a> Parser<'a> {
         if !seen.contains(JointChild::DampingRatio) {
             joint.damping_ratio = wheel.damping_ratio;
         }
-        self.arena.warn(
+        self.warn(
             Code::LineJointIsWheel,
             tag.at,
             "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
@@ -287,7 +300,7 @@ impl<'a> Parser<'a> {
     }
 
     fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
-        let attrs = self.attributes(tag)?;
+        let attrs = self.tok.attributes(tag)?;
         self.unknown_attributes(tag, &attrs, &["type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(Code::MissingAttribute, tag.at, "<Joint> has no Type attribute"));
@@ -308,10 +321,10 @@ impl<'a> Parser<'a> {
             ));
         };
         if matches!(kind, JointKind::Wheel | JointKind::Rope | JointKind::Motor) {
-            self.arena.newer_construct(ty.at, &format!("a {value} joint"))?;
+            self.newer_construct(ty.at, &format!("a {value} joint"))?;
         }
         if kind == JointKind::Unsupported {
-            self.arena.warn(
+            self.warn(
                 Code::FarseerOnlyJoint,
                 ty.at,
                 format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
@@ -321,23 +334,23 @@ impl<'a> Parser<'a> {
     }
 
     /// The rules one joint can break on its own (cross references come later).
-    fn check_joint(&self, tag: &Tag, joint: &Joint, at: &JointOrigin) -> Parsed<()> {
+    fn check_joint(&self, tag: &Tag, joint: &Joint, at: &Refs) -> Parsed<()> {
         let legacy = self.arena.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]
         {
             if index == NONE {
                 let name = if legacy { legacy_name } else { name };
-                return Err(
-                    self.missing(tag, &format!("<{name}>: a joint names both of its bodies"))
-                );
+                return Err(self
+                    .tok
+                    .missing(tag, &format!("<{name}>: a joint names both of its bodies")));
             }
         }
         let kind = joint.kind();
         if kind == Some(JointKind::Gear) {
             for (index, name) in [(joint.joint_a, "JointA"), (joint.joint_b, "JointB")] {
                 if index == NONE {
-                    return Err(self.missing(
+                    return Err(self.tok.missing(
                         tag,
                         &format!("<{name}>: a gear joint names the two joints it couples"),
                     ));

@@ -1,6 +1,6 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Element, Parser, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Object, Range, Shape, ShapeKind, Vec2};
 use crate::validate;
@@ -39,14 +39,14 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
     }
 }
 
-impl<'a> Parser<'a> {
+impl<'a> Reader<'a> {
     pub(super) fn shape(&mut self, tag: Tag) -> Parsed<()> {
         self.begin_object(Object::Shape(self.arena.scene.shapes.len() as u32));
         let mut shape = self.shape_type(&tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
         let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
-        while let Some(child) = self.child(&tag)? {
+        while let Some(child) = self.tok.child(&tag)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
@@ -57,7 +57,7 @@ impl<'a> Parser<'a> {
                 continue;
             }
             if repeated && name == ShapeChild::Vertices {
-                return Err(self.duplicate_container(&tag, &child));
+                return Err(self.tok.duplicate_container(&tag, &child));
             }
             if repeated {
                 self.duplicate(&tag, &child)?;
@@ -68,24 +68,26 @@ impl<'a> Parser<'a> {
                     if !repeated && !shape.name.is_null() {
                         let message = "<Shape> has both a Name attribute and a <Name> element; \
                                        the element wins";
-                        self.arena.warn(Code::DuplicateElement, child.at, message)?;
+                        self.warn(Code::DuplicateElement, child.at, message)?;
                     }
                     shape.name = self.string(&child)?;
                 }
-                Radius => (shape.radius, radius_at) = self.parsed(&child, crate::text::float)?,
-                Position => shape.position = self.vector(&child)?,
+                Radius => {
+                    (shape.radius, radius_at) = self.tok.parsed(&child, crate::text::float)?
+                }
+                Position => shape.position = self.tok.vector(&child)?,
                 Vertices => shape.vertices = self.vertices(&child, kind)?,
                 Centroid => {
-                    shape.centroid = self.vector(&child)?;
+                    shape.centroid = self.tok.vector(&child)?;
                     shape.centroid_given = true;
                 }
-                Vertex0 | PrevVertex => shape.prev_vertex = self.vector(&child)?,
-                Vertex1 => edge[0] = self.vector(&child)?,
-                Vertex2 => edge[1] = self.vector(&child)?,
-                Vertex3 | NextVertex => shape.next_vertex = self.vector(&child)?,
-                HasVertex0 | HasPrevVertex => shape.has_prev_vertex = self.boolean(&child)?,
-                HasVertex3 | HasNextVertex => shape.has_next_vertex = self.boolean(&child)?,
-                Loop => shape.is_loop |= self.boolean(&child)?,
+                Vertex0 | PrevVertex => shape.prev_vertex = self.tok.vector(&child)?,
+                Vertex1 => edge[0] = self.tok.vector(&child)?,
+                Vertex2 => edge[1] = self.tok.vector(&child)?,
+                Vertex3 | NextVertex => shape.next_vertex = self.tok.vector(&child)?,
+                HasVertex0 | HasPrevVertex => shape.has_prev_vertex = self.tok.boolean(&child)?,
+                HasVertex3 | HasNextVertex => shape.has_next_vertex = self.tok.boolean(&child)?,
+                Loop => shape.is_loop |= self.tok.boolean(&child)?,
             }
         }
         match kind {
@@ -93,6 +95,7 @@ impl<'a> Parser<'a> {
                 for needed in [ShapeChild::Radius, ShapeChild::Position] {
                     if !seen.contains(needed) {
                         return Err(self
+                            .tok
                             .missing(&tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
@@ -101,9 +104,9 @@ impl<'a> Parser<'a> {
             ShapeKind::Edge => {
                 for needed in [ShapeChild::Vertex1, ShapeChild::Vertex2] {
                     if !seen.contains(needed) {
-                        return Err(
-                            self.missing(&tag, &format!("<{}> (an Edge needs one)", needed.name()))
-                        );
+                        return Err(self
+                            .tok
+                            .missing(&tag, &format!("<{}> (an Edge needs one)", needed.name())));
                     }
                 }
                 let first = self.arena.scene.vertices.len() as u32;
@@ -112,7 +115,7 @@ impl<'a> Parser<'a> {
             }
             ShapeKind::Polygon | ShapeKind::Chain => {
                 if !seen.contains(ShapeChild::Vertices) {
-                    return Err(self.missing(&tag, "<Vertices>"));
+                    return Err(self.tok.missing(&tag, "<Vertices>"));
                 }
             }
         }
@@ -125,7 +128,7 @@ impl<'a> Parser<'a> {
     /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
     /// the `Density` of the fixtures made with it).
     fn shape_type(&mut self, tag: &Tag) -> Parsed<Shape> {
-        let attrs = self.attributes(tag)?;
+        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.farseer_layout() {
             &["type", "name", "density"]
         } else {
@@ -135,6 +138,7 @@ impl<'a> Parser<'a> {
         let density =
             match attrs.iter().find(|a| a.is("density")).filter(|_| self.arena.farseer_layout()) {
                 Some(attr) => self
+                    .tok
                     .attribute(tag, attr, crate::text::float)
                     .and_then(|(d, at)| validate::not_negative("the shape's Density", d, at))?,
                 None => 0.0,
@@ -166,7 +170,7 @@ impl<'a> Parser<'a> {
             }
         };
         if matches!(kind, ShapeKind::Edge | ShapeKind::Chain) {
-            self.arena.newer_construct(ty.at, &format!("a {value} shape"))?;
+            self.newer_construct(ty.at, &format!("a {value} shape"))?;
         }
         let mut shape = Shape::new(kind);
         shape.is_loop = is_loop;
@@ -181,7 +185,7 @@ impl<'a> Parser<'a> {
         let first = self.arena.scene.vertices.len();
         let most = match kind {
             ShapeKind::Polygon => validate::MAX_POLYGON_VERTICES,
-            _ => self.options().max_chain_vertices as usize,
+            _ => self.tok.options().max_chain_vertices as usize,
         };
         self.items(tag, "Vertex", |p, vertex| {
             if p.arena.scene.vertices.len() - first == most {
@@ -191,10 +195,10 @@ impl<'a> Parser<'a> {
                         vertex.at,
                         format!("a polygon has at most {most} vertices (Box2D's b2_maxPolygonVertices); this is the {}th", most + 1),
                     ),
-                    _ => p.limit(vertex.at, "max_chain_vertices", most as u64),
+                    _ => p.tok.limit(vertex.at, "max_chain_vertices", most as u64),
                 });
             }
-            let v = p.vector(&vertex)?;
+            let v = p.tok.vector(&vertex)?;
             p.arena.scene.vertices.push(v);
             Ok(())
         })?;
@@ -210,7 +214,7 @@ impl<'a> Parser<'a> {
             _ => None,
         };
         match warning {
-            Some(warning) => self.arena.note(warning),
+            Some(warning) => self.note(warning),
             None => Ok(()),
         }
     }

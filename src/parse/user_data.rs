@@ -1,7 +1,7 @@
 //! `<UserData>`: kept verbatim, never interpreted, plus the type name and value text when
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (docs/format.md, "UserData").
 
-use super::{Node, Parser, Tag, trim_xml};
+use super::{Node, Reader, Tag, Tokenizer, trim_xml};
 use crate::LoadOptions;
 use crate::error::{Code, Parsed, problem};
 use crate::input::Source;
@@ -25,18 +25,18 @@ pub(crate) fn user_data_fragment(
     let options = LoadOptions { max_depth: default.max_depth + 1 - depth, ..default };
     let source =
         Source::memory(document.as_bytes(), &options).map_err(|e| problem(e.code, 0, e.message))?;
-    let mut parser = Parser::new(source, &options);
-    let read = |p: &mut Parser| -> Parsed<EditorForm> {
-        let Node::Open(tag) = p.next_node()? else {
+    let mut tok = Tokenizer::new(source, &options);
+    let read = |tok: &mut Tokenizer| -> Parsed<EditorForm> {
+        let Node::Open(tag) = tok.next_node()? else {
             unreachable!("the document starts with <UserData>")
         };
-        let (_, form) = p.walk_user_data(&tag)?;
-        match p.next_node()? {
+        let (_, form) = walk_user_data(tok, &tag)?;
+        match tok.next_node()? {
             Node::Eof => Ok(form),
             _ => Err(problem(Code::MalformedXml, 0, "closes <UserData> early")),
         }
     };
-    let form = read(&mut parser).map_err(|p| {
+    let form = read(&mut tok).map_err(|p| {
         problem(p.code, 0, format!("the UserData is not well-formed XML content: {}", p.message))
     })?;
     Ok(form.texts())
@@ -80,12 +80,12 @@ enum Inside {
     Other,
 }
 
-impl<'a> Parser<'a> {
+impl<'a> Reader<'a> {
     /// Stores the user data of `tag` and returns its index.
     pub(super) fn user_data(&mut self, tag: &Tag) -> Parsed<u32> {
         let (raw, form) = match tag.empty {
             true => (String::new(), EditorForm::default()),
-            false => self.walk_user_data(tag)?,
+            false => walk_user_data(&mut self.tok, tag)?,
         };
         let (type_name, value) = form.texts();
         let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.arena.scene.add_str(&s));
@@ -94,59 +94,59 @@ impl<'a> Parser<'a> {
         self.arena.scene.user_data.push(UserData { raw, type_name, value });
         Ok((self.arena.scene.user_data.len() - 1) as u32)
     }
+}
 
-    /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
-    fn walk_user_data(&mut self, tag: &Tag) -> Parsed<(String, EditorForm)> {
-        self.pin(self.position());
-        let mut form = EditorForm::default();
-        let mut path: Vec<Inside> = Vec::new();
-        loop {
-            match self.next_node()? {
-                Node::Open(child) => {
-                    self.check_attributes(&child)?;
-                    let inside = match path.as_slice() {
-                        [] if child.is("type") => {
-                            form.types += 1;
-                            form.type_name.get_or_insert_with(String::new);
-                            Inside::Type
-                        }
-                        [] if child.is("value") => {
-                            form.values += 1;
-                            Inside::Value
-                        }
-                        [Inside::Value] => {
-                            form.value_children += 1;
-                            form.value.get_or_insert_with(String::new);
-                            Inside::ValueChild
-                        }
-                        _ => {
-                            form.other = true;
-                            Inside::Other
-                        }
-                    };
-                    if !child.empty {
-                        path.push(inside);
+/// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
+fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Parsed<(String, EditorForm)> {
+    tok.pin(tok.position());
+    let mut form = EditorForm::default();
+    let mut path: Vec<Inside> = Vec::new();
+    loop {
+        match tok.next_node()? {
+            Node::Open(child) => {
+                tok.check_attributes(&child)?;
+                let inside = match path.as_slice() {
+                    [] if child.is("type") => {
+                        form.types += 1;
+                        form.type_name.get_or_insert_with(String::new);
+                        Inside::Type
                     }
-                }
-                Node::Text(t) => {
-                    let t = self.text_of(&t);
-                    match path.last() {
-                        Some(Inside::Type) => {
-                            form.type_name.get_or_insert_with(String::new).push_str(t)
-                        }
-                        Some(Inside::ValueChild) => {
-                            form.value.get_or_insert_with(String::new).push_str(t)
-                        }
-                        _ => form.other |= !trim_xml(t).is_empty(),
+                    [] if child.is("value") => {
+                        form.values += 1;
+                        Inside::Value
                     }
-                }
-                Node::Close(at) => {
-                    if path.pop().is_none() {
-                        return Ok((self.unpin(at), form));
+                    [Inside::Value] => {
+                        form.value_children += 1;
+                        form.value.get_or_insert_with(String::new);
+                        Inside::ValueChild
                     }
+                    _ => {
+                        form.other = true;
+                        Inside::Other
+                    }
+                };
+                if !child.empty {
+                    path.push(inside);
                 }
-                Node::Eof => return Err(self.unclosed(tag)),
             }
+            Node::Text(t) => {
+                let t = tok.text_of(&t);
+                match path.last() {
+                    Some(Inside::Type) => {
+                        form.type_name.get_or_insert_with(String::new).push_str(t)
+                    }
+                    Some(Inside::ValueChild) => {
+                        form.value.get_or_insert_with(String::new).push_str(t)
+                    }
+                    _ => form.other |= !trim_xml(t).is_empty(),
+                }
+            }
+            Node::Close(at) => {
+                if path.pop().is_none() {
+                    return Ok((tok.unpin(at), form));
+                }
+            }
+            Node::Eof => return Err(tok.unclosed(tag)),
         }
     }
 }

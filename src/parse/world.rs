@@ -1,6 +1,6 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Element, Parser, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::containers::Container;
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Object, Place};
@@ -22,7 +22,7 @@ impl WorldChild {
     }
 }
 
-impl<'a> Parser<'a> {
+impl<'a> Reader<'a> {
     /// The whole document: prolog, `<World>`, epilog.
     pub(super) fn document(&mut self) -> Parsed<()> {
         let root = self.root()?;
@@ -34,9 +34,9 @@ impl<'a> Parser<'a> {
     /// The prolog and the root's start tag, which must be `<World>`.
     pub(super) fn root(&mut self) -> Parsed<Tag> {
         let root = loop {
-            match self.next_node()? {
+            match self.tok.next_node()? {
                 super::Node::Open(tag) => break tag,
-                super::Node::Text(t) if !self.is_blank(&t) => {
+                super::Node::Text(t) if !self.tok.is_blank(&t) => {
                     return Err(problem(
                         Code::MalformedXml,
                         t.at,
@@ -76,12 +76,12 @@ impl<'a> Parser<'a> {
     /// What follows `</World>`: blank text, comments and processing instructions only.
     pub(super) fn epilog(&mut self) -> Parsed<()> {
         loop {
-            match self.next_node()? {
+            match self.tok.next_node()? {
                 super::Node::Eof => {
                     self.place_comments(Object::World, Place::After);
                     return Ok(());
                 }
-                super::Node::Text(t) if self.is_blank(&t) => {}
+                super::Node::Text(t) if self.tok.is_blank(&t) => {}
                 super::Node::Open(tag) => {
                     return Err(problem(
                         Code::MalformedXml,
@@ -104,22 +104,24 @@ impl<'a> Parser<'a> {
     }
 
     fn world(&mut self, root: &Tag) -> Parsed<()> {
+        // Placed now: the warnings about it come once the file is read.
+        let root_spot = self.spot(root.at);
         self.read_version(root)?;
         let mut seen = Seen::default();
         self.world_children(root, &mut seen)?;
         for container in Container::ALL {
             if !seen.contains(WorldChild::of(container)) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
-                self.arena.warn(Code::MissingContainer, root.at, message)?;
+                self.arena.note(root_spot.finding(Code::MissingContainer, message))?;
             }
         }
         Ok(())
     }
 
-    /// The root's children up to `</World>`, or until this parser is done with the file
+    /// The root's children up to `</World>`, or until this reader is done with the file
     /// before an item (see [`super::ahead`]).
     pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
-        while let Some(child) = self.child(root)? {
+        while let Some(child) = self.tok.child(root)? {
             let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
                 continue;
             };
@@ -127,11 +129,11 @@ impl<'a> Parser<'a> {
                 if repeated {
                     self.duplicate(root, &child)?;
                 }
-                self.arena.scene.gravity = Some(self.vector(&child)?);
+                self.arena.scene.gravity = Some(self.tok.vector(&child)?);
                 continue;
             };
             if repeated {
-                return Err(self.duplicate_container(root, &child));
+                return Err(self.tok.duplicate_container(root, &child));
             }
             if self.container(&child, container, seen)? {
                 return Ok(());
@@ -141,7 +143,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// The items of a container; true when this parser is done with the file before one
+    /// The items of a container; true when this reader is done with the file before one
     /// (see [`super::ahead`]).
     pub(super) fn container(
         &mut self,
@@ -167,10 +169,10 @@ impl<'a> Parser<'a> {
     }
 
     pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
-        let attrs = self.attributes(root)?;
+        let attrs = self.tok.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
-            return self.arena.warn(
+            return self.warn(
                 Code::LegacyUnversioned,
                 root.at,
                 "the file has no Version: read as a legacy (2010) editor file, whose joints name \
