@@ -36,7 +36,7 @@ pub fn write(scene: &Scene, options: &WriteOptions) -> Result<String, Error> {
     Ok(String::from_utf8(bytes).expect("the text is written from str pieces"))
 }
 
-/// [`write`]'s text, as the bytes it is made of (for the C text and files, which need
+/// [`write`](fn@write)'s text, as the bytes it is made of (for the C text and files, which need
 /// no `String`).
 pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8>, Error> {
     unwritable_joint(scene)?;
