@@ -761,20 +761,26 @@ impl<'a> Tokenizer<'a> {
         Some(Value { text: Text { at, end, resolved: None }, at })
     }
 
-    /// Reads a value element and converts its text with `convert`.
+    /// Reads a value element and converts its text with `convert`. Generic, not a `fn`
+    /// pointer, so that the usual conversions are inlined into their readers.
+    #[inline]
     pub fn parsed<T>(
         &mut self,
         tag: &Tag,
-        convert: fn(&str) -> Result<T, Finding>,
+        convert: impl FnOnce(&str) -> Result<T, Finding>,
     ) -> Parsed<(T, usize)> {
         let value = self.value(tag)?;
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
-            Err(e) => {
-                let at = value.text.written_at(e.at);
-                Err(problem(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
-            }
+            Err(e) => Err(self.bad_value(tag, &value, e)),
         }
+    }
+
+    /// The error for the value of `tag`, which `convert` refused with `e`.
+    #[cold]
+    fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
+        let at = value.text.written_at(e.at);
+        problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
     }
 
     pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
@@ -1152,18 +1158,38 @@ const ENDS_NAME: [bool; 256] = {
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
 /// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
 /// rest.
+#[inline]
 fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
     let mut i = 0;
     while let Some(eight) = hay[i..].first_chunk::<8>().filter(|_| i < 32) {
         let word = u64::from_le_bytes(*eight);
-        let found =
-            text::bytes_equal(word, a) | text::bytes_equal(word, b) | text::bytes_equal(word, c);
+        let found = first_equal(word, a) | first_equal(word, b) | first_equal(word, c);
         if found != 0 {
             return Some(i + (found.trailing_zeros() / 8) as usize);
         }
         i += 8;
     }
     memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
+}
+
+/// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little
+/// endian) of `word` that is `b`; 0 when no byte is. Bits above that one may be set too.
+///
+/// With `x = word ^ [b; 8]`, the bytes equal to `b` are the zero bytes of `x`, and
+/// `(x - 0x01..01) & !x & 0x80..80` flags the lowest of them exactly. Going up from the
+/// lowest byte, as long as no borrow comes in: a byte `x_i` that is not zero borrows
+/// nothing from the next, and `x_i - 1` has its high bit set only when `x_i` is 0x81 or
+/// more, when `!x_i` has not, so it is not flagged; the first zero byte becomes 0xFF, high
+/// bit set, with `!x_i` high bit set: flagged. Only past it can a borrow flag a byte that is
+/// not zero (0x01 becomes 0xFF). So OR-ing the masks of several bytes keeps the first byte
+/// equal to any of them as the lowest set bit, which is all [`find3`] looks at; the exact
+/// test ([`text::bytes_equal`]) takes more instructions for every byte.
+#[inline(always)]
+fn first_equal(word: u64, b: u8) -> u64 {
+    const ONES: u64 = u64::from_le_bytes([0x01; 8]);
+    const HIGH: u64 = u64::from_le_bytes([0x80; 8]);
+    let x = word ^ u64::from_le_bytes([b; 8]);
+    x.wrapping_sub(ONES) & !x & HIGH
 }
 
 /// Text with references or carriage returns, written from `at` on: references resolved
@@ -1252,6 +1278,39 @@ mod tests {
                     let expected = hay.iter().position(|&x| matches!(x, b'<' | b'&' | b'\r'));
                     assert_eq!(super::find3(&hay, b'<', b'&', b'\r'), expected, "{hay:?}");
                 }
+            }
+        }
+    }
+
+    /// The lowest flag of `first_equal` is the first byte equal to the one looked for, and
+    /// there is none when no byte is, whatever the bytes after it: in particular those a
+    /// borrow goes through (one above it, 0x80, 0x81, 0xFF...).
+    #[test]
+    fn first_equal_flags_the_first_equal_byte_first() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for b in [0u8, 1, b'\r', b'&', b'<', b'>', 0x7F, 0x80, 0x81, 0xFE, 0xFF] {
+            let near = [
+                b,
+                b ^ 1,
+                b ^ 0x80,
+                b ^ 0x81,
+                b ^ 0x7F,
+                b ^ 0xFF,
+                b.wrapping_add(1),
+                b.wrapping_sub(1),
+                0,
+                0xFF,
+            ];
+            for _ in 0..100_000 {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                let bytes: [u8; 8] =
+                    std::array::from_fn(|i| near[(state >> (6 * i)) as usize % 10]);
+                let expected = bytes.iter().position(|&x| x == b);
+                let mask = super::first_equal(u64::from_le_bytes(bytes), b);
+                let found = (mask != 0).then(|| (mask.trailing_zeros() / 8) as usize);
+                assert_eq!(found, expected, "{bytes:02x?} looking for {b:#04x}");
             }
         }
     }
