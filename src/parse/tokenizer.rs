@@ -232,6 +232,7 @@ impl<'a> Tokenizer<'a> {
     // ---- the tokenizer
 
     /// The text at hand from offset `from` on (empty when `from` is past it).
+    #[inline(always)]
     fn rest(&self, from: usize) -> &[u8] {
         let text = self.source.text().as_bytes();
         text.get(from - self.source.base()..).unwrap_or_default()
@@ -311,6 +312,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// A node begins at `at`: the one before it stays at hand (see [`Tokenizer::started`]).
+    #[inline(always)]
     fn begin_node(&mut self, at: usize) {
         (self.last, self.started) = (self.started, at);
     }
@@ -447,7 +449,7 @@ impl<'a> Tokenizer<'a> {
 
     /// How long the usual end tag of the innermost open element is, when `text` starts
     /// with it.
-    #[inline]
+    #[inline(always)]
     fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
         let (expected, _) = self.open.last()?;
         let len = match text {
@@ -459,7 +461,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Counts a start tag just read against the limits and opens its element.
-    #[inline]
+    #[inline(always)]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
         self.elements += 1;
@@ -477,6 +479,7 @@ impl<'a> Tokenizer<'a> {
 
     /// `<Name>` or `<Name/>` with a short name, the usual tags, read without looking
     /// for quotes. None for any other tag, or when too little text is at hand to tell.
+    #[inline(always)]
     fn short_tag(&mut self, at: usize) -> Option<Tag> {
         let [b'<', head @ ..] = self.rest(at).first_chunk::<{ SHORT + 3 }>()? else {
             return None;
@@ -740,6 +743,7 @@ impl<'a> Tokenizer<'a> {
 
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
+    #[inline(always)]
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
         // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
         // nodes' path checks.
