@@ -303,7 +303,7 @@ impl<'a> Tokenizer<'a> {
     pub fn skip_space(&mut self) -> Parsed<()> {
         loop {
             let rest = self.rest(self.pos);
-            let (space, all) = (text::leading_space(rest), rest.len());
+            let (space, all) = (space_len(rest), rest.len());
             self.pos += space;
             if space < all || !self.more()? {
                 return Ok(());
@@ -452,10 +452,7 @@ impl<'a> Tokenizer<'a> {
     #[inline(always)]
     fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
         let (expected, _) = self.open.last()?;
-        let len = match text {
-            [b'<', b'/', after @ ..] if expected.ends(after) => 3 + expected.len(),
-            _ => return None,
-        };
+        let len = expected.end_tag_len(text)?;
         // Longer than the limit (measured up to its `>`): the ordinary reading refuses it.
         ((len - 1) as u64 <= self.options.max_text_bytes).then_some(len)
     }
@@ -745,6 +742,13 @@ impl<'a> Tokenizer<'a> {
     /// carriage returns, then the end tag of `tag`. None for anything else.
     #[inline(always)]
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
+        let (at, end) = self.plain_span(tag)?;
+        Some(Value { text: Text { at, end, resolved: None }, at })
+    }
+
+    /// Where the text of [`Tokenizer::plain_value`] starts and ends.
+    #[inline(always)]
+    fn plain_span(&mut self, tag: &Tag) -> Option<(usize, usize)> {
         // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
         // nodes' path checks.
         if tag.empty || !self.pins.is_empty() {
@@ -757,12 +761,11 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        let (start, end) = text::trimmed_span(&rest[..len]);
+        let (start, end) = trimmed_span(&rest[..len]);
         self.pos = at + len + end_tag;
         self.open.pop();
         // `<X></X>` has its value at its tag.
-        let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) };
-        Some(Value { text: Text { at, end, resolved: None }, at })
+        Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
     }
 
     /// Reads a value element and converts its text with `convert`. Generic, not a `fn`
@@ -773,6 +776,16 @@ impl<'a> Tokenizer<'a> {
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
     ) -> Parsed<(T, usize)> {
+        // The usual value converted where it is written, without a Value to carry it.
+        if let Some((at, end)) = self.plain_span(tag) {
+            return match convert(self.source.slice(at, end)) {
+                Ok(v) => Ok((v, at)),
+                Err(e) => {
+                    let value = Value { text: Text { at, end, resolved: None }, at };
+                    Err(self.bad_value(tag, &value, e))
+                }
+            };
+        }
         let value = self.value(tag)?;
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
@@ -1159,6 +1172,40 @@ const ENDS_NAME: [bool; 256] = {
     ends
 };
 
+/// How many bytes of white space the text at hand `text` starts with. Every byte of it up to
+/// 0x20 is white space, as the source stops before any other control character: so the
+/// test is one comparison a byte, made eight at a time.
+#[inline(always)]
+fn space_len(text: &[u8]) -> usize {
+    if text.first().is_none_or(|&b| b > b' ') {
+        return 0;
+    }
+    const HIGH: u64 = u64::from_le_bytes([0x80; 8]);
+    const OVER_SPACE: u64 = u64::from_le_bytes([0x80 - 0x21; 8]);
+    let mut i = 0;
+    while let Some(eight) = text[i..].first_chunk::<8>() {
+        let word = u64::from_le_bytes(*eight);
+        // The high bit of each byte above 0x20: the low seven bits plus 0x5F reach 0x80
+        // from 0x21 on and never carry out of their byte (0x7F + 0x5F < 0x100); a byte of
+        // 0x80 or more has it already.
+        let other = (((word & !HIGH) + OVER_SPACE) | word) & HIGH;
+        if other != 0 {
+            return i + (other.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
+    i + text[i..].iter().position(|&b| b > b' ').unwrap_or(text.len() - i)
+}
+
+/// Where the text at hand `text` without leading and trailing white space starts and ends
+/// (see [`space_len`]).
+#[inline(always)]
+fn trimmed_span(text: &[u8]) -> (usize, usize) {
+    let start = space_len(text);
+    let end = text.iter().rposition(|&b| b > b' ').map_or(start, |i| i + 1);
+    (start, end)
+}
+
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
 /// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
 /// rest.
@@ -1315,6 +1362,34 @@ mod tests {
                 let mask = super::first_equal(u64::from_le_bytes(bytes), b);
                 let found = (mask != 0).then(|| (mask.trailing_zeros() / 8) as usize);
                 assert_eq!(found, expected, "{bytes:02x?} looking for {b:#04x}");
+            }
+        }
+    }
+
+    /// The white space of the text at hand is skipped and trimmed as XML white space is, in
+    /// text without the control characters the source stops before.
+    #[test]
+    fn space_len_and_trimmed_span_agree_with_xml_white_space() {
+        let pieces: [&[u8]; 9] =
+            [b" ", b"\t", b"\n", b"\r", b"a", b"<", b"\xC3\xA9", b"!", b"\x7F"];
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        for len in 0..40 {
+            for _ in 0..500 {
+                let mut text = Vec::new();
+                for _ in 0..len {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    // Mostly white space, so that runs of it cross the eight-byte words.
+                    let pick = (state % 16) as usize;
+                    text.extend_from_slice(pieces[if pick < 8 { pick % 4 } else { pick - 7 }]);
+                }
+                assert_eq!(super::space_len(&text), crate::text::leading_space(&text), "{text:?}");
+                assert_eq!(
+                    super::trimmed_span(&text),
+                    crate::text::trimmed_span(&text),
+                    "{text:?}"
+                );
             }
         }
     }
