@@ -300,15 +300,31 @@ impl<'a> Tokenizer<'a> {
     /// Skips the white space before the next node, reading on when it reaches the end of
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
+    #[inline(always)]
     pub fn skip_space(&mut self) -> Parsed<()> {
-        loop {
+        let rest = self.rest(self.pos);
+        let (space, all) = (space_len(rest), rest.len());
+        self.pos += space;
+        match space < all {
+            true => Ok(()),
+            false => self.skip_space_on(),
+        }
+    }
+
+    /// [`Tokenizer::skip_space`] once the white space reaches the end of the text at hand:
+    /// apart, so that the usual skip is a few instructions where it is inlined.
+    #[cold]
+    #[inline(never)]
+    fn skip_space_on(&mut self) -> Parsed<()> {
+        while self.more()? {
             let rest = self.rest(self.pos);
             let (space, all) = (space_len(rest), rest.len());
             self.pos += space;
-            if space < all || !self.more()? {
-                return Ok(());
+            if space < all {
+                break;
             }
         }
+        Ok(())
     }
 
     /// A node begins at `at`: the one before it stays at hand (see [`Tokenizer::started`]).
@@ -643,6 +659,13 @@ impl<'a> Tokenizer<'a> {
         if self.closes_parent() {
             return Ok(None);
         }
+        self.other_child(parent)
+    }
+
+    /// [`Tokenizer::child`] when the next node is not the usual start or end tag: apart,
+    /// so that the usual child costs no more than it needs.
+    #[inline(never)]
+    fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         loop {
             self.skip_space()?;
             match self.next_node()? {
