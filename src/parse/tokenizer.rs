@@ -1059,6 +1059,12 @@ impl<'a> Tokenizer<'a> {
         !self.pins.is_empty()
     }
 
+    /// Whether comments were read since [`Tokenizer::take_comments`] was last called.
+    #[inline(always)]
+    pub fn has_comments(&self) -> bool {
+        !self.comments.is_empty()
+    }
+
     /// The comments read since the last call, as spans of the text at hand; None when
     /// there are none, as between most elements.
     pub fn take_comments(&mut self) -> Option<Vec<(usize, usize)>> {
