@@ -69,9 +69,7 @@ impl Name {
     pub fn end_tag_len(&self, text: &[u8]) -> Option<usize> {
         if let (Name::Short(len @ ..=13, bytes), Some(head)) = (self, text.first_chunk::<SHORT>()) {
             let len = usize::from(*len);
-            let end_tag = u128::from_le_bytes(*bytes) << 16
-                | u128::from(u16::from_le_bytes(*b"</"))
-                | u128::from(b'>') << (8 * (len + 2));
+            let end_tag = u128::from_le_bytes(*bytes) << 16 | END_TAGS[len];
             return (u128::from_le_bytes(*head) & low_bytes(len + 3) == end_tag).then_some(len + 3);
         }
         match text {
@@ -127,6 +125,18 @@ const fn fold(bytes: u128, len: usize) -> u128 {
 const fn low_bytes(len: usize) -> u128 {
     LOW_BYTES[len]
 }
+
+/// The end tag of a name of each length up to 13 without the name: `</`, then zeros where
+/// the name goes, then `>`.
+const END_TAGS: [u128; SHORT - 2] = {
+    let mut tags = [0; SHORT - 2];
+    let mut len = 0;
+    while len < SHORT - 2 {
+        tags[len] = (b'<' as u128) | (b'/' as u128) << 8 | (b'>' as u128) << (8 * (len + 2));
+        len += 1;
+    }
+    tags
+};
 
 const LOW_BYTES: [u128; SHORT + 1] = {
     let mut masks = [u128::MAX; SHORT + 1];
