@@ -100,6 +100,7 @@ impl std::fmt::Display for Name {
 
 /// The key of a known element's name, as [`Name::key`] gives it for that name in any case.
 /// Known names are ASCII letters and digits, at most [`SHORT`] of them.
+#[inline]
 pub(super) const fn key(name: &str) -> u128 {
     let bytes = name.as_bytes();
     assert!(bytes.len() <= SHORT, "a known element name has at most 16 bytes");

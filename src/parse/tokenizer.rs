@@ -56,6 +56,7 @@ impl Tag {
     }
 
     /// Names compare case-insensitively (spec section 2).
+    #[inline]
     pub fn is(&self, name: &str) -> bool {
         self.name.key() == super::names::key(name)
     }
@@ -454,6 +455,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Reads the end tag at `at` when it is the usual `</Name>` of the innermost open
     /// element, closing it; whether it was.
+    #[inline(always)]
     fn usual_end_tag(&mut self, at: usize) -> bool {
         let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
             return false;
