@@ -444,6 +444,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Reads the usual end tag of the innermost open element, if it is next; whether it
     /// was.
+    #[inline(always)]
     fn closes_parent(&mut self) -> bool {
         let at = self.pos;
         let closed = self.usual_end_tag(at);
