@@ -1133,7 +1133,8 @@ fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Att
     let mut attrs: Vec<Attr> = Vec::new();
     let mut i = name_len;
     loop {
-        let space = text::leading_space(&bytes[i..]);
+        // The tag's text is the source's, so white space is every byte up to 0x20.
+        let space = space_len(&bytes[i..]);
         i += space;
         if i == bytes.len() {
             return Some(attrs);
