@@ -147,6 +147,8 @@ pub(super) struct Attr<'t> {
 }
 
 impl Attr<'_> {
+    /// Inlined: it is called with a literal name, against which the comparison folds.
+    #[inline]
     pub fn is(&self, lowercase_name: &str) -> bool {
         self.key.eq_ignore_ascii_case(lowercase_name)
     }
@@ -1130,7 +1132,8 @@ impl<'a> Tokenizer<'a> {
 /// None for anything else: quick-xml reads that, and tells what is malformed.
 fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
     let bytes = content.as_bytes();
-    let mut attrs: Vec<Attr> = Vec::new();
+    // A tag with more than its name has an attribute or two: one allocation, no growing.
+    let mut attrs: Vec<Attr> = Vec::with_capacity(2);
     let mut i = name_len;
     loop {
         // The tag's text is the source's, so white space is every byte up to 0x20.
