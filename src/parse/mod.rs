@@ -242,8 +242,18 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// Gives the comments read since the last element to `object`, at `place`.
+    /// Gives the comments read since the last element to `object`, at `place`. Inlined: it
+    /// runs for nearly every element, and there are comments before few.
+    #[inline(always)]
     pub fn place_comments(&mut self, object: Object, place: Place) {
+        if self.tok.has_comments() {
+            self.keep_comments(object, place);
+        }
+    }
+
+    /// [`Reader::place_comments`] when there are some.
+    #[inline(never)]
+    fn keep_comments(&mut self, object: Object, place: Place) {
         let Some(comments) = self.tok.take_comments() else { return };
         for (from, to) in comments {
             let text = self.kept_text(from, to);
@@ -287,8 +297,10 @@ impl<'a> Reader<'a> {
         seen: &mut Seen,
     ) -> Parsed<Option<(E, bool)>> {
         let found = E::NAMES.find(child.name.key(), seen.next);
-        let before = found.map_or("", |index| E::ALL[index].name());
-        self.place_comments(self.object, Place::Inside { within: self.within, before });
+        if self.tok.has_comments() {
+            let before = found.map_or("", |index| E::ALL[index].name());
+            self.keep_comments(self.object, Place::Inside { within: self.within, before });
+        }
         let Some(index) = found else {
             self.unknown(parent, child)?;
             return Ok(None);

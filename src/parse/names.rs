@@ -63,6 +63,21 @@ impl Name {
         }
     }
 
+    /// How long this name's usual end tag `</Name>` is, when `text` starts with it. A short
+    /// name of at most 13 bytes has its end tag in 16 bytes: one comparison of a number.
+    #[inline(always)]
+    pub fn end_tag_len(&self, text: &[u8]) -> Option<usize> {
+        if let (Name::Short(len @ ..=13, bytes), Some(head)) = (self, text.first_chunk::<SHORT>()) {
+            let len = usize::from(*len);
+            let end_tag = u128::from_le_bytes(*bytes) << 16 | END_TAGS[len];
+            return (u128::from_le_bytes(*head) & low_bytes(len + 3) == end_tag).then_some(len + 3);
+        }
+        match text {
+            [b'<', b'/', after @ ..] if self.ends(after) => Some(3 + self.len()),
+            _ => None,
+        }
+    }
+
     /// Whether `after_slash`, the text after `</`, is this name and `>`: the usual end tag.
     #[inline]
     pub fn ends(&self, after_slash: &[u8]) -> bool {
@@ -85,6 +100,7 @@ impl std::fmt::Display for Name {
 
 /// The key of a known element's name, as [`Name::key`] gives it for that name in any case.
 /// Known names are ASCII letters and digits, at most [`SHORT`] of them.
+#[inline]
 pub(super) const fn key(name: &str) -> u128 {
     let bytes = name.as_bytes();
     assert!(bytes.len() <= SHORT, "a known element name has at most 16 bytes");
@@ -110,6 +126,18 @@ const fn fold(bytes: u128, len: usize) -> u128 {
 const fn low_bytes(len: usize) -> u128 {
     LOW_BYTES[len]
 }
+
+/// The end tag of a name of each length up to 13 without the name: `</`, then zeros where
+/// the name goes, then `>`.
+const END_TAGS: [u128; SHORT - 2] = {
+    let mut tags = [0; SHORT - 2];
+    let mut len = 0;
+    while len < SHORT - 2 {
+        tags[len] = (b'<' as u128) | (b'/' as u128) << 8 | (b'>' as u128) << (8 * (len + 2));
+        len += 1;
+    }
+    tags
+};
 
 const LOW_BYTES: [u128; SHORT + 1] = {
     let mut masks = [u128::MAX; SHORT + 1];
@@ -263,5 +291,42 @@ mod tests {
             }
         }
         assert!(!Name::new("Vertex").ends(b"vertex>                 "));
+    }
+
+    /// The end tag read as one number is the end tag read byte by byte, for names around
+    /// the length where the number no longer holds it, before text of every length.
+    #[test]
+    fn end_tag_len_agrees_with_reading_the_end_tag() {
+        let names = ["A", "Vertex", "Restitution", "LocalAnchorA", "ReferenceAngle", "MotorSpeeds"];
+        let names =
+            names.iter().chain(&["CollideConnected", "CollideConnectedX", "名前", "abcdefghijklm"]);
+        for name in names {
+            let n = Name::new(name);
+            let bytes = name.as_bytes();
+            let mut texts: Vec<Vec<u8>> = Vec::new();
+            let end_tag = [b"</", bytes, b">"].concat();
+            for cut in 0..=end_tag.len() {
+                texts.push(end_tag[..cut].to_vec());
+                for i in 0..cut {
+                    for b in [b'>', b' ', b'a', b'A', 0x80, bytes[i % bytes.len()] ^ 0x20] {
+                        let mut changed = end_tag[..cut].to_vec();
+                        changed[i] = b;
+                        texts.push(changed);
+                    }
+                }
+            }
+            for tail in [&b""[..], b"x", b"  \n    <Next>", b"                  "] {
+                for text in &texts {
+                    let text = [text, tail].concat();
+                    let expected = match &text[..] {
+                        [b'<', b'/', after @ ..] if n.ends(after) => Some(3 + n.len()),
+                        _ => None,
+                    };
+                    let expected_bytes = text.starts_with(&end_tag).then_some(end_tag.len());
+                    assert_eq!(expected, expected_bytes, "{name} {text:?}");
+                    assert_eq!(n.end_tag_len(&text), expected, "{name} {text:?}");
+                }
+            }
+        }
     }
 }

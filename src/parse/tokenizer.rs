@@ -56,6 +56,7 @@ impl Tag {
     }
 
     /// Names compare case-insensitively (spec section 2).
+    #[inline]
     pub fn is(&self, name: &str) -> bool {
         self.name.key() == super::names::key(name)
     }
@@ -146,6 +147,8 @@ pub(super) struct Attr<'t> {
 }
 
 impl Attr<'_> {
+    /// Inlined: it is called with a literal name, against which the comparison folds.
+    #[inline]
     pub fn is(&self, lowercase_name: &str) -> bool {
         self.key.eq_ignore_ascii_case(lowercase_name)
     }
@@ -232,6 +235,7 @@ impl<'a> Tokenizer<'a> {
     // ---- the tokenizer
 
     /// The text at hand from offset `from` on (empty when `from` is past it).
+    #[inline(always)]
     fn rest(&self, from: usize) -> &[u8] {
         let text = self.source.text().as_bytes();
         text.get(from - self.source.base()..).unwrap_or_default()
@@ -299,18 +303,35 @@ impl<'a> Tokenizer<'a> {
     /// Skips the white space before the next node, reading on when it reaches the end of
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
+    #[inline(always)]
     pub fn skip_space(&mut self) -> Parsed<()> {
-        loop {
-            let rest = self.rest(self.pos);
-            let (space, all) = (text::leading_space(rest), rest.len());
-            self.pos += space;
-            if space < all || !self.more()? {
-                return Ok(());
-            }
+        let rest = self.rest(self.pos);
+        let (space, all) = (space_len(rest), rest.len());
+        self.pos += space;
+        match space < all {
+            true => Ok(()),
+            false => self.skip_space_on(),
         }
     }
 
+    /// [`Tokenizer::skip_space`] once the white space reaches the end of the text at hand:
+    /// apart, so that the usual skip is a few instructions where it is inlined.
+    #[cold]
+    #[inline(never)]
+    fn skip_space_on(&mut self) -> Parsed<()> {
+        while self.more()? {
+            let rest = self.rest(self.pos);
+            let (space, all) = (space_len(rest), rest.len());
+            self.pos += space;
+            if space < all {
+                break;
+            }
+        }
+        Ok(())
+    }
+
     /// A node begins at `at`: the one before it stays at hand (see [`Tokenizer::started`]).
+    #[inline(always)]
     fn begin_node(&mut self, at: usize) {
         (self.last, self.started) = (self.started, at);
     }
@@ -425,6 +446,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Reads the usual end tag of the innermost open element, if it is next; whether it
     /// was.
+    #[inline(always)]
     fn closes_parent(&mut self) -> bool {
         let at = self.pos;
         let closed = self.usual_end_tag(at);
@@ -436,6 +458,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Reads the end tag at `at` when it is the usual `</Name>` of the innermost open
     /// element, closing it; whether it was.
+    #[inline(always)]
     fn usual_end_tag(&mut self, at: usize) -> bool {
         let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
             return false;
@@ -447,19 +470,16 @@ impl<'a> Tokenizer<'a> {
 
     /// How long the usual end tag of the innermost open element is, when `text` starts
     /// with it.
-    #[inline]
+    #[inline(always)]
     fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
         let (expected, _) = self.open.last()?;
-        let len = match text {
-            [b'<', b'/', after @ ..] if expected.ends(after) => 3 + expected.len(),
-            _ => return None,
-        };
+        let len = expected.end_tag_len(text)?;
         // Longer than the limit (measured up to its `>`): the ordinary reading refuses it.
         ((len - 1) as u64 <= self.options.max_text_bytes).then_some(len)
     }
 
     /// Counts a start tag just read against the limits and opens its element.
-    #[inline]
+    #[inline(always)]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
         self.elements += 1;
@@ -477,6 +497,7 @@ impl<'a> Tokenizer<'a> {
 
     /// `<Name>` or `<Name/>` with a short name, the usual tags, read without looking
     /// for quotes. None for any other tag, or when too little text is at hand to tell.
+    #[inline(always)]
     fn short_tag(&mut self, at: usize) -> Option<Tag> {
         let [b'<', head @ ..] = self.rest(at).first_chunk::<{ SHORT + 3 }>()? else {
             return None;
@@ -629,7 +650,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The next child element of `parent`, or None at its end. Blank text and comments are
-    /// skipped; other text is an error.
+    /// skipped; other text is an error. Inlined into the handlers' loops, so that the tag
+    /// is made where the handler holds it rather than copied out of a result.
+    #[inline(always)]
     pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         if parent.empty {
             return Ok(None);
@@ -643,6 +666,13 @@ impl<'a> Tokenizer<'a> {
         if self.closes_parent() {
             return Ok(None);
         }
+        self.other_child(parent)
+    }
+
+    /// [`Tokenizer::child`] when the next node is not the usual start or end tag: apart,
+    /// so that the usual child costs no more than it needs.
+    #[inline(never)]
+    fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         loop {
             self.skip_space()?;
             match self.next_node()? {
@@ -740,7 +770,15 @@ impl<'a> Tokenizer<'a> {
 
     /// The usual value, read without nodes: text at hand with no markup, references or
     /// carriage returns, then the end tag of `tag`. None for anything else.
+    #[inline(always)]
     fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
+        let (at, end) = self.plain_span(tag)?;
+        Some(Value { text: Text { at, end, resolved: None }, at })
+    }
+
+    /// Where the text of [`Tokenizer::plain_value`] starts and ends.
+    #[inline(always)]
+    fn plain_span(&mut self, tag: &Tag) -> Option<(usize, usize)> {
         // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
         // nodes' path checks.
         if tag.empty || !self.pins.is_empty() {
@@ -753,28 +791,43 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        let (start, end) = text::trimmed_span(&rest[..len]);
+        let (start, end) = trimmed_span(&rest[..len]);
         self.pos = at + len + end_tag;
         self.open.pop();
         // `<X></X>` has its value at its tag.
-        let (at, end) = if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) };
-        Some(Value { text: Text { at, end, resolved: None }, at })
+        Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
     }
 
-    /// Reads a value element and converts its text with `convert`.
+    /// Reads a value element and converts its text with `convert`. Generic, not a `fn`
+    /// pointer, so that the usual conversions are inlined into their readers.
+    #[inline]
     pub fn parsed<T>(
         &mut self,
         tag: &Tag,
-        convert: fn(&str) -> Result<T, Finding>,
+        convert: impl FnOnce(&str) -> Result<T, Finding>,
     ) -> Parsed<(T, usize)> {
+        // The usual value converted where it is written, without a Value to carry it.
+        if let Some((at, end)) = self.plain_span(tag) {
+            return match convert(self.source.slice(at, end)) {
+                Ok(v) => Ok((v, at)),
+                Err(e) => {
+                    let value = Value { text: Text { at, end, resolved: None }, at };
+                    Err(self.bad_value(tag, &value, e))
+                }
+            };
+        }
         let value = self.value(tag)?;
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
-            Err(e) => {
-                let at = value.text.written_at(e.at);
-                Err(problem(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
-            }
+            Err(e) => Err(self.bad_value(tag, &value, e)),
         }
+    }
+
+    /// The error for the value of `tag`, which `convert` refused with `e`.
+    #[cold]
+    fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
+        let at = value.text.written_at(e.at);
+        problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
     }
 
     pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
@@ -1013,6 +1066,12 @@ impl<'a> Tokenizer<'a> {
         !self.pins.is_empty()
     }
 
+    /// Whether comments were read since [`Tokenizer::take_comments`] was last called.
+    #[inline(always)]
+    pub fn has_comments(&self) -> bool {
+        !self.comments.is_empty()
+    }
+
     /// The comments read since the last call, as spans of the text at hand; None when
     /// there are none, as between most elements.
     pub fn take_comments(&mut self) -> Option<Vec<(usize, usize)>> {
@@ -1073,10 +1132,12 @@ impl<'a> Tokenizer<'a> {
 /// None for anything else: quick-xml reads that, and tells what is malformed.
 fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
     let bytes = content.as_bytes();
-    let mut attrs: Vec<Attr> = Vec::new();
+    // A tag with more than its name has an attribute or two: one allocation, no growing.
+    let mut attrs: Vec<Attr> = Vec::with_capacity(2);
     let mut i = name_len;
     loop {
-        let space = text::leading_space(&bytes[i..]);
+        // The tag's text is the source's, so white space is every byte up to 0x20.
+        let space = space_len(&bytes[i..]);
         i += space;
         if i == bytes.len() {
             return Some(attrs);
@@ -1149,21 +1210,75 @@ const ENDS_NAME: [bool; 256] = {
     ends
 };
 
+/// How many bytes of white space the text at hand `text` starts with. Every byte of it up to
+/// 0x20 is white space, as the source stops before any other control character: so the
+/// test is one comparison a byte, made eight at a time.
+#[inline(always)]
+fn space_len(text: &[u8]) -> usize {
+    if text.first().is_none_or(|&b| b > b' ') {
+        return 0;
+    }
+    const HIGH: u64 = u64::from_le_bytes([0x80; 8]);
+    const OVER_SPACE: u64 = u64::from_le_bytes([0x80 - 0x21; 8]);
+    let mut i = 0;
+    while let Some(eight) = text[i..].first_chunk::<8>() {
+        let word = u64::from_le_bytes(*eight);
+        // The high bit of each byte above 0x20: the low seven bits plus 0x5F reach 0x80
+        // from 0x21 on and never carry out of their byte (0x7F + 0x5F < 0x100); a byte of
+        // 0x80 or more has it already.
+        let other = (((word & !HIGH) + OVER_SPACE) | word) & HIGH;
+        if other != 0 {
+            return i + (other.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
+    i + text[i..].iter().position(|&b| b > b' ').unwrap_or(text.len() - i)
+}
+
+/// Where the text at hand `text` without leading and trailing white space starts and ends
+/// (see [`space_len`]).
+#[inline(always)]
+fn trimmed_span(text: &[u8]) -> (usize, usize) {
+    let start = space_len(text);
+    let end = text.iter().rposition(|&b| b > b' ').map_or(start, |i| i + 1);
+    (start, end)
+}
+
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
 /// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
 /// rest.
+#[inline]
 fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
     let mut i = 0;
     while let Some(eight) = hay[i..].first_chunk::<8>().filter(|_| i < 32) {
         let word = u64::from_le_bytes(*eight);
-        let found =
-            text::bytes_equal(word, a) | text::bytes_equal(word, b) | text::bytes_equal(word, c);
+        let found = first_equal(word, a) | first_equal(word, b) | first_equal(word, c);
         if found != 0 {
             return Some(i + (found.trailing_zeros() / 8) as usize);
         }
         i += 8;
     }
     memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
+}
+
+/// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little
+/// endian) of `word` that is `b`; 0 when no byte is. Bits above that one may be set too.
+///
+/// With `x = word ^ [b; 8]`, the bytes equal to `b` are the zero bytes of `x`, and
+/// `(x - 0x01..01) & !x & 0x80..80` flags the lowest of them exactly. Going up from the
+/// lowest byte, as long as no borrow comes in: a byte `x_i` that is not zero borrows
+/// nothing from the next, and `x_i - 1` has its high bit set only when `x_i` is 0x81 or
+/// more, when `!x_i` has not, so it is not flagged; the first zero byte becomes 0xFF, high
+/// bit set, with `!x_i` high bit set: flagged. Only past it can a borrow flag a byte that is
+/// not zero (0x01 becomes 0xFF). So OR-ing the masks of several bytes keeps the first byte
+/// equal to any of them as the lowest set bit, which is all [`find3`] looks at; the exact
+/// test ([`text::bytes_equal`]) takes more instructions for every byte.
+#[inline(always)]
+fn first_equal(word: u64, b: u8) -> u64 {
+    const ONES: u64 = u64::from_le_bytes([0x01; 8]);
+    const HIGH: u64 = u64::from_le_bytes([0x80; 8]);
+    let x = word ^ u64::from_le_bytes([b; 8]);
+    x.wrapping_sub(ONES) & !x & HIGH
 }
 
 /// Text with references or carriage returns, written from `at` on: references resolved
@@ -1252,6 +1367,67 @@ mod tests {
                     let expected = hay.iter().position(|&x| matches!(x, b'<' | b'&' | b'\r'));
                     assert_eq!(super::find3(&hay, b'<', b'&', b'\r'), expected, "{hay:?}");
                 }
+            }
+        }
+    }
+
+    /// The lowest flag of `first_equal` is the first byte equal to the one looked for, and
+    /// there is none when no byte is, whatever the bytes after it: in particular those a
+    /// borrow goes through (one above it, 0x80, 0x81, 0xFF...).
+    #[test]
+    fn first_equal_flags_the_first_equal_byte_first() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for b in [0u8, 1, b'\r', b'&', b'<', b'>', 0x7F, 0x80, 0x81, 0xFE, 0xFF] {
+            let near = [
+                b,
+                b ^ 1,
+                b ^ 0x80,
+                b ^ 0x81,
+                b ^ 0x7F,
+                b ^ 0xFF,
+                b.wrapping_add(1),
+                b.wrapping_sub(1),
+                0,
+                0xFF,
+            ];
+            for _ in 0..100_000 {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                let bytes: [u8; 8] =
+                    std::array::from_fn(|i| near[(state >> (6 * i)) as usize % 10]);
+                let expected = bytes.iter().position(|&x| x == b);
+                let mask = super::first_equal(u64::from_le_bytes(bytes), b);
+                let found = (mask != 0).then(|| (mask.trailing_zeros() / 8) as usize);
+                assert_eq!(found, expected, "{bytes:02x?} looking for {b:#04x}");
+            }
+        }
+    }
+
+    /// The white space of the text at hand is skipped and trimmed as XML white space is, in
+    /// text without the control characters the source stops before.
+    #[test]
+    fn space_len_and_trimmed_span_agree_with_xml_white_space() {
+        let pieces: [&[u8]; 9] =
+            [b" ", b"\t", b"\n", b"\r", b"a", b"<", b"\xC3\xA9", b"!", b"\x7F"];
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        for len in 0..40 {
+            for _ in 0..500 {
+                let mut text = Vec::new();
+                for _ in 0..len {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    // Mostly white space, so that runs of it cross the eight-byte words.
+                    let pick = (state % 16) as usize;
+                    text.extend_from_slice(pieces[if pick < 8 { pick % 4 } else { pick - 7 }]);
+                }
+                assert_eq!(super::space_len(&text), crate::text::leading_space(&text), "{text:?}");
+                assert_eq!(
+                    super::trimmed_span(&text),
+                    crate::text::trimmed_span(&text),
+                    "{text:?}"
+                );
             }
         }
     }
