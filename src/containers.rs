@@ -1,6 +1,7 @@
 //! The world's four containers and the item each holds, in the order writers list them:
 //! the one list the reader, the cutting of a file into pieces and the writer all follow.
 //! It imports nothing, so that any of them may use it.
+#![forbid(unsafe_code)]
 
 /// One of the containers in `<World>`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
