@@ -14,7 +14,7 @@ pub(crate) enum Container {
 
 impl Container {
     /// Every container, in the order writers list them.
-    pub const ALL: [Container; 4] =
+    pub(crate) const ALL: [Container; 4] =
         [Container::Shapes, Container::Fixtures, Container::Bodies, Container::Joints];
 
     /// The container's element.
