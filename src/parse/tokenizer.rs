@@ -699,9 +699,14 @@ impl<'a> Tokenizer<'a> {
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
     pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
-        if let Some(value) = self.plain_value(tag) {
-            return Ok(value);
+        match self.plain_value(tag) {
+            Some(value) => Ok(value),
+            None => self.value_of_nodes(tag),
         }
+    }
+
+    /// [`Tokenizer::value`] when it is not the usual one: read node by node.
+    fn value_of_nodes(&mut self, tag: &Tag) -> Parsed<Value> {
         let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
@@ -816,7 +821,7 @@ impl<'a> Tokenizer<'a> {
                 }
             };
         }
-        let value = self.value(tag)?;
+        let value = self.value_of_nodes(tag)?;
         match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
             Err(e) => Err(self.bad_value(tag, &value, e)),
@@ -832,6 +837,14 @@ impl<'a> Tokenizer<'a> {
 
     pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
         Ok(self.parsed(tag, text::float)?.0)
+    }
+
+    pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
+        Ok(self.parsed(tag, text::vector2)?.0)
+    }
+
+    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
+        Ok(self.parsed(tag, text::boolean)?.0)
     }
 
     /// An ID value and its offset.
@@ -1116,13 +1129,6 @@ impl<'a> Tokenizer<'a> {
             true => Spot::offset(at),
             false => Spot::placed(self.locate(at)),
         }
-    }
-    pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
-        Ok(self.parsed(tag, text::vector2)?.0)
-    }
-
-    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
-        Ok(self.parsed(tag, text::boolean)?.0)
     }
 }
 
