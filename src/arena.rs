@@ -23,6 +23,8 @@ pub(crate) struct Arena {
 /// Where the checks made after the whole file is read point.
 #[derive(Debug, Default)]
 pub(crate) struct Origins {
+    /// The root's start tag.
+    pub world: Spot,
     /// Per fixture: its `Shape` value.
     pub fixture_shapes: Vec<Spot>,
     /// Per body: its tag.
@@ -140,11 +142,13 @@ impl Arena {
 }
 
 impl Origins {
-    /// Appends those of what was read after this one's last object, whose bodies are
+    /// Appends those of what was read after this one's last object (not the root), whose
+    /// bodies are
     /// numbered after the `bodies_before` read here and whose positions are counted from
     /// `start`.
     fn append(&mut self, other: Origins, bodies_before: u32, start: Position) {
-        let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs } = other;
+        let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs, .. } =
+            other;
         let after = |s: Spot| s.after(start);
         self.fixture_shapes.extend(fixture_shapes.into_iter().map(after));
         self.bodies.extend(bodies.into_iter().map(after));

@@ -430,7 +430,7 @@ pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Prob
 /// Where something a later stage may report is: its position, placed while its text was
 /// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
 /// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Spot(Position);
 
 impl Spot {

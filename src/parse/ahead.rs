@@ -1,27 +1,29 @@
 //! Reading a large file on two threads. The text is cut into pieces at items (a `<Body>`
 //! just after a `</Body>`, say), each assumed to lie directly in its container in
-//! `<World>`. A helper thread reads the pieces from the last one back, each up to where
-//! the next one begins; the calling thread reads from the start on, taking the pieces
-//! the helper has not begun as it reaches them, until the two meet. Then the calling
-//! thread checks the assumptions: it is at the next piece's item, in its container,
-//! spelled as assumed; each of the helper's pieces read without a problem (warnings are
-//! fine: they are appended in the order one reader finds them) and ended where the next
-//! one begins; the limits still hold; and no world element was read twice. If all hold it
-//! takes what the helper read and is done; otherwise it reads on itself. Either way the
-//! scene, the warnings and the first error are those of one reader reading the whole file;
-//! a busy core only moves where the two meet. The text may be in memory or in a file: the
-//! helper reads a file's pieces with a handle of its own, one piece at a time.
+//! `<World>`. A helper thread reads the pieces from the last one back, each with the
+//! ordinary reader into an arena of its own, from its item up to the next piece's; the
+//! calling thread reads from the start on. Each reading ends before the next piece's item
+//! where it can (see [`Tokenizer::end_before`]): there the calling thread reads the piece
+//! itself while the helper has not begun it, or else takes what the helper read from
+//! there to the end of the file, when it can use all of it: each of those pieces read
+//! without a problem (warnings are fine: they are appended in the order one reader finds
+//! them) up to where the next one begins, the limits still hold and no world element was
+//! read twice. Otherwise it reads on itself. Either way the scene, the warnings and the
+//! first error are those of one reader reading the whole file; a busy core only moves
+//! where the two meet. The text may be in memory or in a file: the helper reads a file's
+//! pieces with a handle of its own, one piece at a time.
 
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
 
 use super::names::{Element, Name};
-use super::tokenizer::{Stop, Tokenizer};
+use super::tokenizer::{Stop, Tokenizer, is_end_of_piece};
 use super::world::WorldChild;
 use super::{Reader, Seen, Tag};
 use crate::LoadOptions;
 use crate::arena::Arena;
 use crate::containers::Container;
+use crate::error::{Code, Parsed, problem};
 use crate::input::{Pieces, Source};
 use crate::text::is_xml_space_byte;
 
@@ -39,22 +41,9 @@ const MAX_PIECES: usize = 64;
 /// Where a piece begins: the `<` of an item, and the container it is assumed to be in.
 pub(super) type Boundary = (usize, Container);
 
-/// A reader's part in a load.
-pub(super) enum Part {
-    /// It reads the whole file, or the rest of it.
-    Whole,
-    /// The calling thread, with a helper reading the pieces from the last one back.
-    Caller(Caller),
-    /// A piece the helper reads: it ends at `end`, where the next piece begins, and
-    /// `reached` says whether it ended there as that piece assumes.
-    Piece { end: Boundary, reached: bool },
-}
-
 /// The helper, as the calling thread sees it.
 pub(super) struct Caller {
     boundaries: Vec<Boundary>,
-    /// The first boundary the calling thread has not reached.
-    next: usize,
     claims: Arc<Mutex<Claims>>,
     done: mpsc::Receiver<(usize, Option<Done>)>,
     /// What the helper read, by piece.
@@ -96,14 +85,14 @@ pub(super) fn start<'a, 'scope>(
     pieces: Option<Pieces<'a>>,
     options: &'a LoadOptions,
     split: Option<(Vec<Boundary>, usize)>,
-) -> Part
+) -> Option<Caller>
 where
     'a: 'scope,
 {
     if options.threads == 1 {
-        return Part::Whole;
+        return None;
     }
-    let Some(pieces) = pieces else { return Part::Whole };
+    let pieces = pieces?;
     let (boundaries, helped) = match split {
         Some(split) => split,
         None if pieces.len() >= MIN_BYTES => {
@@ -111,17 +100,49 @@ where
             let last = boundaries.len();
             (boundaries, last)
         }
-        None => return Part::Whole,
+        None => return None,
     };
     if boundaries.is_empty() {
-        return Part::Whole;
+        return None;
     }
     let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped.min(boundaries.len()) }));
     let (sender, done) = mpsc::channel();
     let (their_boundaries, their_claims) = (boundaries.clone(), Arc::clone(&claims));
     scope.spawn(move || help(pieces, options, &their_boundaries, &their_claims, &sender));
     let pieces = boundaries.iter().map(|_| Piece::Waiting).collect();
-    Part::Caller(Caller { boundaries, next: 0, claims, done, pieces })
+    Some(Caller { boundaries, claims, done, pieces })
+}
+
+/// Reads the whole document with `reader`, the calling thread's, taking what the helper
+/// read (when there is one) where the two meet.
+pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Parsed<()> {
+    let mut seen = Seen::default();
+    let Some(mut helper) = helper else {
+        reader.document(&mut seen)?;
+        return reader.end_world(&seen);
+    };
+    reader.tok.end_before(ends(&helper.boundaries));
+    let mut read = reader.document(&mut seen);
+    // Where the reading stopped before a piece's item.
+    while read.as_ref().is_err_and(is_end_of_piece) {
+        let piece = reader.tok.pass_end();
+        if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
+            read = Ok(());
+            break;
+        }
+        let Some((root, tag)) = reader.tok.open_item() else {
+            return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
+        };
+        read = reader.from_item((&root, &tag), helper.boundaries[piece].1, &mut seen);
+    }
+    drop(helper);
+    read?;
+    reader.end_world(&seen)
+}
+
+/// Where the readings end: before the item of each boundary, in its container.
+fn ends(boundaries: &[Boundary]) -> Vec<(usize, Name)> {
+    boundaries.iter().map(|&(at, container)| (at, Name::new(container.name()))).collect()
 }
 
 /// How far from where a piece should begin its item is looked for, and how far before it
@@ -201,7 +222,7 @@ fn help(
         let end = boundaries.get(piece + 1).copied();
         let at = boundaries[piece].0;
         let done = text
-            .source(at, end.map_or(text.len(), |(end, _)| end))
+            .source(at, end.map_or(text.len(), |end| past_start_tag(&text, end)))
             .and_then(|source| read_piece(source, options, &root, version, boundaries[piece], end));
         let usable = done.is_some();
         if sender.send((piece, done)).is_err() || !usable {
@@ -221,8 +242,21 @@ fn root(text: &Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)
     Some((root, reader.arena.version))
 }
 
+/// How far past where a piece ends its text goes, at most, for its reader to see the next
+/// piece's start tag whole.
+const TAG_BYTES: usize = 1 << 10;
+
+/// Where a piece that ends before the item at `end` has its text end: past that item's
+/// start tag (its first `>`), so that its reader sees that tag and stops before it; at
+/// `end` when that is not near, and the reader cannot stop there.
+fn past_start_tag(text: &Pieces, (end, _): Boundary) -> usize {
+    let to = (end + TAG_BYTES).min(text.len());
+    let tag = text.bytes(end, to).and_then(|bytes| memchr::memchr(b'>', &bytes));
+    tag.map_or(end, |i| end + i + 1)
+}
+
 /// Reads `source`, the text of one piece, from its start on as if it began an item of its
-/// container, up to `end` (the next piece) or to the end of the file.
+/// container, up to the item of `end` (the next piece) or to the end of the file.
 fn read_piece(
     source: Source<'_>,
     options: &LoadOptions,
@@ -235,18 +269,14 @@ fn read_piece(
     reader.arena.version = version;
     let tag = Tag::item(Name::new(container.name()), at);
     reader.tok.start_item(at, vec![(root.name.clone(), root.at), (tag.name.clone(), at)]);
-    if let Some(end) = end {
-        reader.part = Part::Piece { end, reached: false };
-    }
+    reader.tok.end_before(ends(end.as_slice()));
     let mut seen = Seen::default();
     seen.bits |= 1 << WorldChild::of(container).index();
-    let read = match reader.container(&tag, container, &mut seen) {
-        Ok(false) => reader.world_children(root, &mut seen),
-        done => done.map(drop),
-    };
-    let ended = match reader.part {
-        Part::Piece { reached, .. } => read.is_ok() && reached,
-        _ => read.and_then(|()| reader.epilog()).is_ok(),
+    let read = reader.from_item((root, &tag), container, &mut seen);
+    let ended = match read {
+        // To the end of the file: the last piece.
+        Ok(()) => end.is_none(),
+        Err(stopped) => is_end_of_piece(&stopped),
     };
     if !ended {
         return None;
@@ -280,75 +310,13 @@ impl Caller {
             self.pieces[piece] = done.map_or(Piece::Unusable, |done| Piece::Read(Box::new(done)));
         }
     }
-}
 
-impl Drop for Caller {
-    /// The helper starts no piece once the calling thread is done with them.
-    fn drop(&mut self) {
-        self.claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
-    }
-}
-
-impl Reader<'_> {
-    /// Before the next item of `container`: whether this reader is done here. A piece is
-    /// done at its end; the calling thread is done when it has taken the helper's pieces
-    /// from here to the end of the file. `seen` has the world's elements read so far and
-    /// gets those of the pieces taken.
-    pub(super) fn take_over(&mut self, container: Container, seen: &mut Seen) -> bool {
-        let at = match &self.part {
-            Part::Whole => return false,
-            Part::Caller(caller) => caller.boundaries[caller.next].0,
-            Part::Piece { end, .. } => end.0,
-        };
-        if self.tok.open().len() != 2 {
-            return false;
-        }
-        // A problem here is found again by the ordinary reading, which goes on.
-        if self.tok.skip_space().is_err() || self.tok.position() < at {
-            return false;
-        }
-        // At or past the boundary.
-        let here = |(at, assumed): Boundary, reader: &Reader| {
-            reader.tok.position() == at
-                && container == assumed
-                && reader.tok.open().nth(1).is_some_and(|name| name.as_str() == container.name())
-        };
-        match std::mem::replace(&mut self.part, Part::Whole) {
-            Part::Whole => false,
-            Part::Piece { end, .. } => {
-                let reached = here(end, self);
-                self.part = Part::Piece { end, reached };
-                true
-            }
-            Part::Caller(mut caller) => {
-                while let Some(&boundary) = caller.boundaries.get(caller.next) {
-                    if self.tok.position() < boundary.0 {
-                        self.part = Part::Caller(caller);
-                        return false;
-                    }
-                    let piece = caller.next;
-                    caller.next += 1;
-                    if !caller.claim(piece)
-                        && here(boundary, self)
-                        && self.take(&mut caller, piece, seen)
-                    {
-                        return true;
-                    }
-                }
-                // Past every piece: the rest is read here.
-                false
-            }
-        }
-    }
-
-    /// Appends what the helper read from `first` on, to the end of the file, when every
-    /// piece of it is usable and all of it together keeps the limits; whether it did.
-    fn take(&mut self, caller: &mut Caller, first: usize, seen: &mut Seen) -> bool {
-        caller.receive(first);
-        let (mut bits, mut elements) = (seen.bits, self.tok.elements());
-        for (piece, &(_, container)) in
-            caller.pieces[first..].iter().zip(&caller.boundaries[first..])
-        {
+    /// Appends to `reader`'s arena what the helper read from `first` on, to the end of the
+    /// file, and goes on reading where it ends, when every piece of it is usable and all of it together keeps the limits; whether it did.
+    fn take(&mut self, reader: &mut Reader, first: usize, seen: &mut Seen) -> bool {
+        self.receive(first);
+        let (mut bits, mut elements) = (seen.bits, reader.tok.elements());
+        for (piece, &(_, container)) in self.pieces[first..].iter().zip(&self.boundaries[first..]) {
             let Piece::Read(done) = piece else { return false };
             // Each piece has the container it begins in, as does the one before it.
             if bits & done.seen.bits & !(1 << WorldChild::of(container).index()) != 0 {
@@ -357,34 +325,40 @@ impl Reader<'_> {
             bits |= done.seen.bits;
             elements += done.stop.elements();
         }
-        if elements > self.tok.options().max_elements {
+        if elements > reader.tok.options().max_elements {
             return false;
         }
         // Where each piece starts: the first here, each next where the one before ends.
-        let mut start = self.tok.locate(self.tok.position());
-        let mut starts = Vec::with_capacity(caller.pieces.len() - first);
-        for piece in &caller.pieces[first..] {
+        let mut start = reader.tok.locate(reader.tok.position());
+        let mut starts = Vec::with_capacity(self.pieces.len() - first);
+        for piece in &self.pieces[first..] {
             let Piece::Read(done) = piece else { return false };
             starts.push(start);
             start = done.stop.end().after(start);
         }
         // A file is read on from where the last piece ends.
-        let taken =
-            caller.pieces[first..].iter_mut().map(|p| std::mem::replace(p, Piece::Unusable));
+        let taken = self.pieces[first..].iter_mut().map(|p| std::mem::replace(p, Piece::Unusable));
         let mut done: Vec<Done> = taken
             .filter_map(|p| if let Piece::Read(done) = p { Some(*done) } else { None })
             .collect();
         let Some(last) = done.pop() else { return false };
         let last_start = starts[done.len()];
-        if !self.tok.resume(last.stop, last_start, elements) {
+        if !reader.tok.resume(last.stop, last_start, elements) {
             return false;
         }
         for (piece, &start) in done.into_iter().zip(&starts) {
-            self.arena.append(piece.arena, start);
+            reader.arena.append(piece.arena, start);
         }
-        self.arena.append(last.arena, last_start);
+        reader.arena.append(last.arena, last_start);
         seen.bits = bits;
         true
+    }
+}
+
+impl Drop for Caller {
+    /// The helper starts no piece once the calling thread is done with them.
+    fn drop(&mut self) {
+        self.claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
     }
 }
 
@@ -727,8 +701,8 @@ mod tests {
                 };
                 let pieces = vec![(starts[1], Container::Bodies), (starts[2], Container::Bodies)];
                 std::thread::scope(|scope| {
-                    reader.part = start(scope, Some(second), &options, Some((pieces, first)));
-                    reader.document().unwrap();
+                    let helper = start(scope, Some(second), &options, Some((pieces, first)));
+                    read(&mut reader, helper).unwrap();
                 });
                 let what = format!("helped from piece {first}, from a file: {in_file}");
                 assert_eq!(reader.arena.scene.bodies.len(), 4, "{what}");
@@ -770,13 +744,13 @@ mod tests {
         // One piece: the helper's text matches the caller's up to its start.
         let pieces = vec![(starts[2], Container::Bodies)];
         std::thread::scope(|scope| {
-            reader.part = start(
+            let helper = start(
                 scope,
                 Some(Pieces::Memory { text: &theirs, bom: false }),
                 &options,
                 Some((pieces, 0)),
             );
-            reader.document().unwrap();
+            read(&mut reader, helper).unwrap();
         });
         let warnings = reader.arena.take_warnings();
         let wind: Vec<_> = theirs.match_indices("<Wind/>").map(|(at, _)| at).collect();

@@ -49,10 +49,9 @@ fn read_split<'a>(
     split: Option<(Vec<ahead::Boundary>, usize)>,
 ) -> (Parsed<Arena>, Placer<'a>) {
     std::thread::scope(|scope| {
-        let part = ahead::start(scope, source.pieces(), options, split);
+        let helper = ahead::start(scope, source.pieces(), options, split);
         let mut reader = Reader::new(Tokenizer::new(source, options));
-        reader.part = part;
-        let read = reader.document();
+        let read = ahead::read(&mut reader, helper);
         let Reader { mut tok, mut arena, .. } = reader;
         let read = match read {
             Ok(()) => {
@@ -115,14 +114,12 @@ struct Reader<'a> {
     /// comments and ignored elements read go.
     object: Object,
     within: &'static str,
-    /// Its part in a load on two threads.
-    part: ahead::Part,
 }
 
 impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict);
-        Reader { tok, arena, object: Object::World, within: "", part: ahead::Part::Whole }
+        Reader { tok, arena, object: Object::World, within: "" }
     }
 
     /// Records a warning at `at`, placed at its line and column while its text is at hand.
@@ -325,22 +322,10 @@ impl<'a> Reader<'a> {
         &mut self,
         container: &Tag,
         item: &str,
-        each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
-    ) -> Parsed<()> {
-        self.items_until(container, item, each, |_| false)
-    }
-
-    /// [`Reader::items`], stopping early before an item where `stop` says so.
-    pub fn items_until(
-        &mut self,
-        container: &Tag,
-        item: &str,
         mut each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
-        mut stop: impl FnMut(&mut Self) -> bool,
     ) -> Parsed<()> {
         let key = names::key(item);
-        while !stop(self) {
-            let Some(child) = self.tok.child(container)? else { break };
+        while let Some(child) = self.tok.child(container)? {
             if child.name.key() != key {
                 return Err(crate::error::problem(
                     Code::UnexpectedElement,

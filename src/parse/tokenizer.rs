@@ -28,6 +28,18 @@ use crate::input::{Encoding, Source};
 use crate::scene::Vec2;
 use crate::text::{self, trim_xml, trim_xml_at};
 
+/// How a reading stops where its text ends before an item (see
+/// [`Tokenizer::end_before`]): not a finding of the file, so it has the code of none.
+#[cold]
+pub(super) fn end_of_piece() -> Problem {
+    problem(Code::Ok, 0, "the reading ends before an item here")
+}
+
+/// Whether a reading stopped with [`end_of_piece`].
+pub(super) fn is_end_of_piece(problem: &Problem) -> bool {
+    problem.code == Code::Ok
+}
+
 #[cold]
 fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
     problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
@@ -46,7 +58,8 @@ pub(super) struct Tag {
 }
 
 impl Tag {
-    /// The start tag of an item of a container, as a piece's reader assumes it.
+    /// A start tag with its name alone, open: as a reading that goes on from inside the
+    /// element assumes it.
     pub fn item(name: Name, at: usize) -> Tag {
         Tag { name, content: None, at, empty: false }
     }
@@ -186,6 +199,13 @@ pub(super) struct Tokenizer<'a> {
     elements: u64,
     /// Lines and columns, counted over the text as it is passed.
     lines: Lines,
+    /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
+    /// items' offsets in order, with the names of the containers they are assumed to be
+    /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
+    /// none).
+    ends: Vec<(usize, Name)>,
+    next_end: usize,
+    end_at: usize,
 }
 
 /// Where a tokenizer stopped, for another to go on from there (see [`Tokenizer::resume`]).
@@ -225,6 +245,9 @@ impl<'a> Tokenizer<'a> {
             open: Vec::new(),
             elements: 0,
             lines,
+            ends: Vec::new(),
+            next_end: 0,
+            end_at: usize::MAX,
         }
     }
 
@@ -482,6 +505,9 @@ impl<'a> Tokenizer<'a> {
     #[inline(always)]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
+        if at >= self.end_at {
+            self.reach_end(tag)?;
+        }
         self.elements += 1;
         if self.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
@@ -492,6 +518,27 @@ impl<'a> Tokenizer<'a> {
             }
             self.open.push((tag.name.clone(), at));
         }
+        Ok(())
+    }
+
+    /// A start tag at or past the next end: the reading ends before it when it is that
+    /// end's item, directly in the container assumed, in the root, with no text being kept
+    /// verbatim and no comment waiting for the reader to take it (which would go before
+    /// the item); the ends it passed otherwise are left behind.
+    #[cold]
+    #[inline(never)]
+    fn reach_end(&mut self, tag: &Tag) -> Parsed<()> {
+        let (at, container) = &self.ends[self.next_end];
+        let in_container =
+            matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes());
+        if tag.at == *at && in_container && self.pins.is_empty() && self.comments.is_empty() {
+            self.pos = tag.at;
+            return Err(end_of_piece());
+        }
+        while self.ends.get(self.next_end).is_some_and(|&(end, _)| end <= tag.at) {
+            self.next_end += 1;
+        }
+        self.end_at = self.ends.get(self.next_end).map_or(usize::MAX, |&(end, _)| end);
         Ok(())
     }
 
@@ -1059,14 +1106,36 @@ impl<'a> Tokenizer<'a> {
         true
     }
 
+    /// Ends the reading before the items at `ends` (offsets in order, each with the name
+    /// of the container it is assumed to be in) where it can: a start tag at one of them,
+    /// directly in that container in the root, with nothing read waiting (text kept
+    /// verbatim, comments), is not read, and the reading stops there with
+    /// [`end_of_piece`]. Where one does not hold, the reading goes on past it.
+    pub fn end_before(&mut self, ends: Vec<(usize, Name)>) {
+        self.end_at = ends.first().map_or(usize::MAX, |&(at, _)| at);
+        (self.ends, self.next_end) = (ends, 0);
+    }
+
+    /// The end the reading stopped at, by its index among them; the reading goes on past
+    /// it.
+    pub fn pass_end(&mut self) -> usize {
+        let passed = self.next_end;
+        self.next_end += 1;
+        self.end_at = self.ends.get(self.next_end).map_or(usize::MAX, |&(end, _)| end);
+        passed
+    }
+
+    /// The start tags of the root and of the container open in it, when those two are
+    /// open (as where the reading stopped before an item), as a reading that goes on from
+    /// there assumes them.
+    pub fn open_item(&self) -> Option<(Tag, Tag)> {
+        let [(root, root_at), (container, at)] = &self.open[..] else { return None };
+        Some((Tag::item(root.clone(), *root_at), Tag::item(container.clone(), *at)))
+    }
+
     /// The elements read so far.
     pub fn elements(&self) -> u64 {
         self.elements
-    }
-
-    /// The names of the open elements, outermost first.
-    pub fn open(&self) -> impl ExactSizeIterator<Item = &Name> {
-        self.open.iter().map(|(name, _)| name)
     }
 
     /// Lets go of the last pinned offset, keeping nothing.

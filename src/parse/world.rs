@@ -23,12 +23,44 @@ impl WorldChild {
 }
 
 impl<'a> Reader<'a> {
-    /// The whole document: prolog, `<World>`, epilog.
-    pub(super) fn document(&mut self) -> Parsed<()> {
+    /// The document from its start: prolog, `<World>`, epilog. `seen` gets the world's
+    /// elements read; [`Reader::end_world`] ends the reading.
+    pub(super) fn document(&mut self, seen: &mut Seen) -> Parsed<()> {
         let root = self.root()?;
         self.place_comments(Object::World, Place::Before);
-        self.world(&root)?;
+        // Placed now: the warnings about the world come once the file is read.
+        self.arena.origins.world = self.spot(root.at);
+        self.read_version(&root)?;
+        self.world_children(&root, seen)?;
         self.epilog()
+    }
+
+    /// The document from the item at the tokenizer's offset on, in `container` (open, with
+    /// its start tag `tag`) in `root` (as where another reading stopped, or where a piece of
+    /// the text begins). `seen` has the world's elements read before and gets those read
+    /// now.
+    pub(super) fn from_item(
+        &mut self,
+        (root, tag): (&Tag, &Tag),
+        container: Container,
+        seen: &mut Seen,
+    ) -> Parsed<()> {
+        self.container(tag, container)?;
+        self.world_children(root, seen)?;
+        self.epilog()
+    }
+
+    /// Once the whole document is read, with `seen` the world's elements: warns of each
+    /// container the world did not have.
+    pub(super) fn end_world(&mut self, seen: &Seen) -> Parsed<()> {
+        for container in Container::ALL {
+            if !seen.contains(WorldChild::of(container)) {
+                let message = format!("the file has no <{}>; read as empty", container.name());
+                let missing = self.arena.origins.world.finding(Code::MissingContainer, message);
+                self.arena.note(missing)?;
+            }
+        }
+        Ok(())
     }
 
     /// The prolog and the root's start tag, which must be `<World>`.
@@ -103,23 +135,7 @@ impl<'a> Reader<'a> {
         }
     }
 
-    fn world(&mut self, root: &Tag) -> Parsed<()> {
-        // Placed now: the warnings about it come once the file is read.
-        let root_spot = self.spot(root.at);
-        self.read_version(root)?;
-        let mut seen = Seen::default();
-        self.world_children(root, &mut seen)?;
-        for container in Container::ALL {
-            if !seen.contains(WorldChild::of(container)) {
-                let message = format!("the file has no <{}>; read as empty", container.name());
-                self.arena.note(root_spot.finding(Code::MissingContainer, message))?;
-            }
-        }
-        Ok(())
-    }
-
-    /// The root's children up to `</World>`, or until this reader is done with the file
-    /// before an item (see [`super::ahead`]).
+    /// The root's children up to `</World>`.
     pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
         while let Some(child) = self.tok.child(root)? {
             let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
@@ -135,37 +151,23 @@ impl<'a> Reader<'a> {
             if repeated {
                 return Err(self.tok.duplicate_container(root, &child));
             }
-            if self.container(&child, container, seen)? {
-                return Ok(());
-            }
+            self.container(&child, container)?;
         }
         self.place_comments(Object::World, Place::Inside { within: "", before: "" });
         Ok(())
     }
 
-    /// The items of a container; true when this reader is done with the file before one
-    /// (see [`super::ahead`]).
-    pub(super) fn container(
-        &mut self,
-        tag: &Tag,
-        name: Container,
-        seen: &mut Seen,
-    ) -> Parsed<bool> {
+    /// The items of a container, to its end.
+    fn container(&mut self, tag: &Tag, name: Container) -> Parsed<()> {
         let each: fn(&mut Self, Tag) -> Parsed<()> = match name {
             Container::Shapes => Self::shape,
             Container::Fixtures => Self::fixture,
             Container::Bodies => Self::body,
             Container::Joints => Self::joint,
         };
-        let mut taken_over = false;
-        self.items_until(tag, name.item(), each, |p| {
-            taken_over = p.take_over(name, seen);
-            taken_over
-        })?;
-        if !taken_over {
-            self.place_comments(Object::World, Place::Inside { within: name.name(), before: "" });
-        }
-        Ok(taken_over)
+        self.items(tag, name.item(), each)?;
+        self.place_comments(Object::World, Place::Inside { within: name.name(), before: "" });
+        Ok(())
     }
 
     pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
