@@ -37,6 +37,11 @@ pub struct Source<'a> {
     /// The text from `base` on that is at hand.
     text: Cow<'a, str>,
     base: usize,
+    /// A text in memory that is borrowed: all of it, of which `text` is what lies before
+    /// `limit`.
+    whole: Option<&'a str>,
+    /// The text at hand goes no further than this offset, for now (see [`Source::end_at`]).
+    limit: usize,
     /// The rest of a file read from a path.
     file: Option<Stream>,
     /// Why the text ends early; None when it ends with the file.
@@ -104,14 +109,14 @@ impl<'a> Source<'a> {
             }
         };
         let (text, stop) = cut_at_non_char(text, 0, stop);
-        Ok(Source { text, base: 0, file: None, stop, encoding, origin: Origin::Memory })
+        Ok(Source::in_memory(text, 0, stop, encoding))
     }
 
     /// Where a second reader may read pieces of this text: a UTF-8 text in memory that is
     /// valid to its end, or a UTF-8 file being read (through a second handle on it).
     pub fn pieces(&self) -> Option<Pieces<'a>> {
-        match (&self.text, &self.stop, &self.file) {
-            (Cow::Borrowed(text), None, None) => {
+        match (self.whole, &self.stop, &self.file) {
+            (Some(text), None, None) => {
                 let bom = matches!(self.encoding, Encoding::Utf8 { bom: true });
                 Some(Pieces::Memory { text, bom })
             }
@@ -139,15 +144,11 @@ impl<'a> Source<'a> {
         if bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]) {
             file.read_to_end(&mut bytes).map_err(io)?;
             let source = Source::memory(&bytes, options)?;
-            let (text, stop) = (Cow::Owned(source.text.into_owned()), source.stop);
+            let text = Cow::Owned(source.text.into_owned());
             let origin = Origin::Path(path);
             return Ok(Source {
-                text,
-                base: 0,
-                file: None,
-                stop,
-                encoding: source.encoding,
                 origin,
+                ..Source::in_memory(text, 0, source.stop, source.encoding)
             });
         }
         let bom = bytes == UTF8_BOM;
@@ -165,19 +166,43 @@ impl<'a> Source<'a> {
         let last = stream.read_onto(&mut bytes, CHUNK - stream.read as usize).map_err(io)?;
         check_utf16_without_bom(&bytes)?;
         let mut source = Source {
-            text: Cow::Owned(String::new()),
-            base: 0,
             file: Some(stream),
-            stop: None,
-            encoding: Encoding::Utf8 { bom },
             origin: Origin::Path(path),
+            ..Source::in_memory(Cow::Owned(String::new()), 0, None, Encoding::Utf8 { bom })
         };
         source.take_in(bytes, 0, last);
         Ok(source)
     }
 
+    /// A text all in memory, from `base` on, that ends early for the reason `stop`.
+    fn in_memory(
+        text: Cow<'a, str>,
+        base: usize,
+        stop: Option<Finding>,
+        encoding: Encoding,
+    ) -> Source<'a> {
+        let whole = match text {
+            Cow::Borrowed(text) => Some(text),
+            Cow::Owned(_) => None,
+        };
+        let (file, origin, limit) = (None, Origin::Memory, usize::MAX);
+        Source { text, base, whole, limit, file, stop, encoding, origin }
+    }
+
     pub fn encoding(&self) -> Encoding {
         self.encoding
+    }
+
+    /// Makes the text at hand go no further than offset `limit` (a character boundary),
+    /// until it is set again: a reader reading to there finds the text at hand ending
+    /// there, and [`Source::more`] gives nothing past it. A text at hand that reaches past
+    /// `limit` already is left as it is.
+    pub fn end_at(&mut self, limit: usize) {
+        self.limit = limit;
+        if let Some(whole) = self.whole {
+            let cut = limit.checked_sub(self.base).and_then(|cut| whole.get(..cut));
+            self.text = Cow::Borrowed(cut.unwrap_or(whole));
+        }
     }
 
     /// The text at hand, which starts at offset [`Source::base`].
@@ -211,8 +236,15 @@ impl<'a> Source<'a> {
     /// The file's bytes are read into the very buffer of the text, after what is kept; a
     /// byte is moved again only while it is kept, to the front when half the text can go.
     pub fn more(&mut self, keep: usize) -> bool {
+        let end = self.end();
         let Some(stream) = &mut self.file else {
             return false;
+        };
+        // Up to the limit, when it lies ahead.
+        let room = match self.limit.checked_sub(end) {
+            Some(0) => return false,
+            Some(room) => room,
+            None => usize::MAX,
         };
         let mut bytes = std::mem::take(self.text.to_mut()).into_bytes();
         let drop = keep.saturating_sub(self.base).min(bytes.len());
@@ -224,7 +256,7 @@ impl<'a> Source<'a> {
         let end = self.base + kept;
         // At least as much as is kept, so that a long node that holds the text is checked
         // again at most as many times over as it is long.
-        let read = stream.read_onto(&mut bytes, CHUNK.max(kept));
+        let read = stream.read_onto(&mut bytes, CHUNK.max(kept).min(room));
         let stop = match read {
             Ok(last) if stream.read <= stream.max => {
                 self.take_in(bytes, kept, last);
@@ -355,7 +387,7 @@ impl<'a> Pieces<'a> {
             }
         };
         // A piece is read whole: it has no file to read on from.
-        Some(Source { text, base, file: None, stop: None, encoding, origin: Origin::Memory })
+        Some(Source::in_memory(text, base, None, encoding))
     }
 }
 

@@ -2,8 +2,8 @@
 //! just after a `</Body>`, say), each assumed to lie directly in its container in
 //! `<World>`. A helper thread reads the pieces from the last one back, each with the
 //! ordinary reader into an arena of its own, from its item up to the next piece's; the
-//! calling thread reads from the start on. Each reading ends before the next piece's item
-//! where it can (see [`Tokenizer::end_before`]): there the calling thread reads the piece
+//! calling thread reads from the start on. Each reading's text ends before the next
+//! piece's item, where the reading stops if it can (see [`Tokenizer::end_before`]): there the calling thread reads the piece
 //! itself while the helper has not begun it, or else takes what the helper read from
 //! there to the end of the file, when it can use all of it: each of those pieces read
 //! without a problem (warnings are fine: they are appended in the order one reader finds
@@ -222,7 +222,7 @@ fn help(
         let end = boundaries.get(piece + 1).copied();
         let at = boundaries[piece].0;
         let done = text
-            .source(at, end.map_or(text.len(), |end| past_start_tag(&text, end)))
+            .source(at, end.map_or(text.len(), |(end, _)| end))
             .and_then(|source| read_piece(source, options, &root, version, boundaries[piece], end));
         let usable = done.is_some();
         if sender.send((piece, done)).is_err() || !usable {
@@ -240,19 +240,6 @@ fn root(text: &Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)
     let root = reader.root().ok()?;
     reader.read_version(&root).ok()?;
     Some((root, reader.arena.version))
-}
-
-/// How far past where a piece ends its text goes, at most, for its reader to see the next
-/// piece's start tag whole.
-const TAG_BYTES: usize = 1 << 10;
-
-/// Where a piece that ends before the item at `end` has its text end: past that item's
-/// start tag (its first `>`), so that its reader sees that tag and stops before it; at
-/// `end` when that is not near, and the reader cannot stop there.
-fn past_start_tag(text: &Pieces, (end, _): Boundary) -> usize {
-    let to = (end + TAG_BYTES).min(text.len());
-    let tag = text.bytes(end, to).and_then(|bytes| memchr::memchr(b'>', &bytes));
-    tag.map_or(end, |i| end + i + 1)
 }
 
 /// Reads `source`, the text of one piece, from its start on as if it began an item of its
@@ -566,6 +553,66 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A reading stops before an item only where a reading that goes on from there reads
+    /// what it would have read: directly in the container assumed, with nothing read
+    /// waiting. Elsewhere it reads on to the next end, past the last to the end of the
+    /// text; from memory and from a path (whose text at hand is a window) alike.
+    #[test]
+    fn a_reading_ends_before_an_item_only_where_another_can_go_on() {
+        let bodies = [
+            // An item after its twin inside UserData, which is kept verbatim.
+            "<Body Type=\"Static\"><UserData><Body/>\n<Body/></UserData></Body>\n",
+            // After a comment, which goes before the item.
+            "<!-- c --><Body Type=\"Static\"/>\n",
+            // Assumed in another container.
+            "<Body Type=\"Static\"/>\n",
+            "<Body Type=\"Static\"/>\n",
+            "<Body Type=\"Static\"/>\n",
+        ];
+        // A prolog longer than a window, so that a path's ends lie past its first one.
+        let text = format!(
+            "<!--{}-->\n<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{}</Bodies><Joints /></World>",
+            " ".repeat(100_000),
+            bodies.concat()
+        );
+        let at: Vec<usize> = text.match_indices("<Body Type").map(|(at, _)| at).collect();
+        let inner = text.find("<Body/>\n<Body/>").unwrap() + "<Body/>\n".len();
+        let name = |container: Container| Name::new(container.name());
+        let ends = vec![
+            (inner, name(Container::Bodies)),
+            (at[1], name(Container::Bodies)),
+            (at[2], name(Container::Shapes)),
+            (at[3], name(Container::Bodies)),
+            (at[4], name(Container::Bodies)),
+        ];
+        let options = LoadOptions::default();
+        let file = std::env::temp_dir().join(format!("box2scene-ends-{}.xml", std::process::id()));
+        std::fs::write(&file, &text).unwrap();
+        for from_path in [false, true] {
+            let source = match from_path {
+                false => Source::memory(text.as_bytes(), &options).unwrap(),
+                true => Source::path(&file, &options).unwrap(),
+            };
+            let mut reader = Reader::new(Tokenizer::new(source, &options));
+            reader.tok.end_before(ends.clone());
+            let mut seen = Seen::default();
+            let mut read = reader.document(&mut seen);
+            let mut stops = Vec::new();
+            while read.as_ref().is_err_and(is_end_of_piece) {
+                let end = reader.tok.pass_end();
+                stops.push((end, reader.tok.position(), reader.arena.scene.bodies.len()));
+                let (root, tag) = reader.tok.open_item().unwrap();
+                read = reader.from_item((&root, &tag), Container::Bodies, &mut seen);
+            }
+            assert!(read.is_ok(), "from a path: {from_path}");
+            assert_eq!(stops, [(3, at[3], 3), (4, at[4], 4)], "from a path: {from_path}");
+            assert_eq!(reader.arena.scene.bodies.len(), 5);
+            // Each item after an end was read once.
+            assert_eq!(reader.tok.elements(), 1 + 4 + 1 + 2 + 5);
+        }
+        std::fs::remove_file(&file).unwrap();
     }
 
     #[test]

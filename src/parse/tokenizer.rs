@@ -202,7 +202,7 @@ pub(super) struct Tokenizer<'a> {
     /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
     /// items' offsets in order, with the names of the containers they are assumed to be
     /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
-    /// none).
+    /// none), where the text at hand ends.
     ends: Vec<(usize, Name)>,
     next_end: usize,
     end_at: usize,
@@ -265,7 +265,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
-    /// at the end of the file; the problem that ends the text early, when that is why.
+    /// at the end of the file; the problem that ends the text early, when that is why;
+    /// [`end_of_piece`] where the reading ends before an item (see
+    /// [`Tokenizer::end_before`]).
     fn more(&mut self) -> Parsed<bool> {
         let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
             .into_iter()
@@ -276,13 +278,34 @@ impl<'a> Tokenizer<'a> {
         if !self.source.is_whole() {
             self.lines.release(self.source.text(), self.source.base(), keep);
         }
-        if self.source.more(keep) {
-            return Ok(true);
+        let end = self.source.end();
+        while !self.source.more(keep) {
+            if self.source.end() != self.end_at {
+                return match self.source.stop() {
+                    Some(stop) => Err(Box::new(stop.clone())),
+                    None => Ok(false),
+                };
+            }
+            if self.pos == self.end_at && self.may_end() {
+                return Err(end_of_piece());
+            }
+            self.pass_end();
+            // A text in memory is at hand past the end at once.
+            if self.source.end() > end {
+                break;
+            }
         }
-        match self.source.stop() {
-            Some(stop) => Err(Box::new(stop.clone())),
-            None => Ok(false),
-        }
+        Ok(true)
+    }
+
+    /// Whether the reading, at the next end, may end there: directly in the container
+    /// assumed, in the root, with nothing read waiting for the reader (text kept
+    /// verbatim, comments, which would go before the item).
+    fn may_end(&self) -> bool {
+        let container = &self.ends[self.next_end].1;
+        matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes())
+            && self.pins.is_empty()
+            && self.comments.is_empty()
     }
 
     /// The offset at which `find` first succeeds on the text from `from` on, reading more
@@ -505,9 +528,6 @@ impl<'a> Tokenizer<'a> {
     #[inline(always)]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
-        if at >= self.end_at {
-            self.reach_end(tag)?;
-        }
         self.elements += 1;
         if self.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
@@ -518,27 +538,6 @@ impl<'a> Tokenizer<'a> {
             }
             self.open.push((tag.name.clone(), at));
         }
-        Ok(())
-    }
-
-    /// A start tag at or past the next end: the reading ends before it when it is that
-    /// end's item, directly in the container assumed, in the root, with no text being kept
-    /// verbatim and no comment waiting for the reader to take it (which would go before
-    /// the item); the ends it passed otherwise are left behind.
-    #[cold]
-    #[inline(never)]
-    fn reach_end(&mut self, tag: &Tag) -> Parsed<()> {
-        let (at, container) = &self.ends[self.next_end];
-        let in_container =
-            matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes());
-        if tag.at == *at && in_container && self.pins.is_empty() && self.comments.is_empty() {
-            self.pos = tag.at;
-            return Err(end_of_piece());
-        }
-        while self.ends.get(self.next_end).is_some_and(|&(end, _)| end <= tag.at) {
-            self.next_end += 1;
-        }
-        self.end_at = self.ends.get(self.next_end).map_or(usize::MAX, |&(end, _)| end);
         Ok(())
     }
 
@@ -1102,18 +1101,21 @@ impl<'a> Tokenizer<'a> {
         let Stop { pos, started, last, open, end, .. } = stop;
         (self.pos, self.started, self.last, self.open) = (pos, started, last, open);
         self.elements = elements;
+        // The other reading went past every end.
+        self.next_end = self.ends.len();
+        self.aim();
         self.lines.resume(Cursor::at(pos, end.after(start)));
         true
     }
 
     /// Ends the reading before the items at `ends` (offsets in order, each with the name
-    /// of the container it is assumed to be in) where it can: a start tag at one of them,
-    /// directly in that container in the root, with nothing read waiting (text kept
-    /// verbatim, comments), is not read, and the reading stops there with
-    /// [`end_of_piece`]. Where one does not hold, the reading goes on past it.
+    /// of the container it is assumed to be in) where it can: the text at hand ends at each
+    /// in turn, and where the reading reaches it directly in that container in the root,
+    /// with nothing read waiting, it stops there with [`end_of_piece`] before the item.
+    /// Where it cannot, the reading goes on past it.
     pub fn end_before(&mut self, ends: Vec<(usize, Name)>) {
-        self.end_at = ends.first().map_or(usize::MAX, |&(at, _)| at);
         (self.ends, self.next_end) = (ends, 0);
+        self.aim();
     }
 
     /// The end the reading stopped at, by its index among them; the reading goes on past
@@ -1121,8 +1123,20 @@ impl<'a> Tokenizer<'a> {
     pub fn pass_end(&mut self) -> usize {
         let passed = self.next_end;
         self.next_end += 1;
-        self.end_at = self.ends.get(self.next_end).map_or(usize::MAX, |&(end, _)| end);
+        self.aim();
         passed
+    }
+
+    /// Ends the text at hand at the next end, passing those it reaches past already.
+    fn aim(&mut self) {
+        loop {
+            self.end_at = self.ends.get(self.next_end).map_or(usize::MAX, |&(at, _)| at);
+            self.source.end_at(self.end_at);
+            if self.source.end() <= self.end_at {
+                return;
+            }
+            self.next_end += 1;
+        }
     }
 
     /// The start tags of the root and of the container open in it, when those two are
@@ -1160,8 +1174,9 @@ impl<'a> Tokenizer<'a> {
         (!self.comments.is_empty()).then(|| std::mem::take(&mut self.comments))
     }
 
-    /// The source it read.
-    pub fn into_source(self) -> Source<'a> {
+    /// The source it read, all of it at hand again.
+    pub fn into_source(mut self) -> Source<'a> {
+        self.source.end_at(usize::MAX);
         self.source
     }
 
