@@ -133,7 +133,7 @@ pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Parsed<()> {
         let Some((root, tag)) = reader.tok.open_item() else {
             return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
         };
-        read = reader.from_item((&root, &tag), helper.boundaries[piece].1, &mut seen);
+        read = reader.document_from_item((&root, &tag), helper.boundaries[piece].1, &mut seen);
     }
     drop(helper);
     read?;
@@ -259,7 +259,7 @@ fn read_piece(
     reader.tok.end_before(ends(end.as_slice()));
     let mut seen = Seen::default();
     seen.bits |= 1 << WorldChild::of(container).index();
-    let read = reader.from_item((root, &tag), container, &mut seen);
+    let read = reader.document_from_item((root, &tag), container, &mut seen);
     let ended = match read {
         // To the end of the file: the last piece.
         Ok(()) => end.is_none(),
@@ -604,7 +604,7 @@ mod tests {
                 let end = reader.tok.pass_end();
                 stops.push((end, reader.tok.position(), reader.arena.scene.bodies.len()));
                 let (root, tag) = reader.tok.open_item().unwrap();
-                read = reader.from_item((&root, &tag), Container::Bodies, &mut seen);
+                read = reader.document_from_item((&root, &tag), Container::Bodies, &mut seen);
             }
             assert!(read.is_ok(), "from a path: {from_path}");
             assert_eq!(stops, [(3, at[3], 3), (4, at[4], 4)], "from a path: {from_path}");

@@ -39,7 +39,7 @@ impl<'a> Reader<'a> {
     /// its start tag `tag`) in `root` (as where another reading stopped, or where a piece of
     /// the text begins). `seen` has the world's elements read before and gets those read
     /// now.
-    pub(super) fn from_item(
+    pub(super) fn document_from_item(
         &mut self,
         (root, tag): (&Tag, &Tag),
         container: Container,
