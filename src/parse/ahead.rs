@@ -3,15 +3,15 @@
 //! `<World>`. A helper thread reads the pieces from the last one back, each with the
 //! ordinary reader into an arena of its own, from its item up to the next piece's; the
 //! calling thread reads from the start on. Each reading's text ends before the next
-//! piece's item, where the reading stops if it can (see [`Tokenizer::end_before`]): there the calling thread reads the piece
-//! itself while the helper has not begun it, or else takes what the helper read from
-//! there to the end of the file, when it can use all of it: each of those pieces read
-//! without a problem (warnings are fine: they are appended in the order one reader finds
-//! them) up to where the next one begins, the limits still hold and no world element was
-//! read twice. Otherwise it reads on itself. Either way the scene, the warnings and the
-//! first error are those of one reader reading the whole file; a busy core only moves
-//! where the two meet. The text may be in memory or in a file: the helper reads a file's
-//! pieces with a handle of its own, one piece at a time.
+//! piece's item, where the reading stops if it can (see [`Tokenizer::end_before`]). There
+//! the calling thread reads the piece itself while the helper has not begun it, or else
+//! takes what the helper read from there to the end of the file, when it can use all of
+//! it: each of those pieces read without a problem (warnings are fine: they are appended
+//! in the order one reader finds them) up to where the next one begins, the limits still
+//! hold and no world element was read twice. Otherwise it reads on itself. Either way the
+//! scene, the warnings and the first error are those of one reader reading the whole
+//! file; a busy core only moves where the two meet. The text may be in memory or in a
+//! file: the helper reads a file's pieces with a handle of its own, one piece at a time.
 
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::Scope;
