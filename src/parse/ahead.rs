@@ -23,7 +23,7 @@ use super::{Reader, Seen, Tag};
 use crate::LoadOptions;
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, problem};
+use crate::error::{Code, Parsed, Position, problem};
 use crate::input::{Pieces, Source};
 use crate::text::is_xml_space_byte;
 
@@ -315,13 +315,21 @@ impl Caller {
         if elements > reader.tok.options().max_elements {
             return false;
         }
-        // Where each piece starts: the first here, each next where the one before ends.
-        let mut start = reader.tok.locate(reader.tok.position());
+        // Where each piece starts, for what the pieces of a file placed as they were read:
+        // the first here, each next where the one before ends. Pieces of a text in memory
+        // placed nothing, and counting its lines here would be wasted.
+        let placed = self.pieces[first..]
+            .iter()
+            .any(|p| matches!(p, Piece::Read(done) if done.stop.end().is_some()));
+        let mut start = match placed {
+            true => reader.tok.locate(reader.tok.position()),
+            false => Position::default(),
+        };
         let mut starts = Vec::with_capacity(self.pieces.len() - first);
         for piece in &self.pieces[first..] {
             let Piece::Read(done) = piece else { return false };
             starts.push(start);
-            start = done.stop.end().after(start);
+            start = done.stop.end().map_or(start, |end| end.after(start));
         }
         // A file is read on from where the last piece ends.
         let taken = self.pieces[first..].iter_mut().map(|p| std::mem::replace(p, Piece::Unusable));

@@ -215,8 +215,10 @@ pub(super) struct Stop {
     last: usize,
     open: Vec<(Name, usize)>,
     elements: u64,
-    /// The position of `pos`, counted from where the tokenizer started.
-    end: Position,
+    /// The position of `pos`, counted from where the tokenizer started, when it placed
+    /// what it found as it read; None for a text that stays in memory, whose findings are
+    /// placed once the whole is read.
+    end: Option<Position>,
 }
 
 impl Stop {
@@ -225,8 +227,9 @@ impl Stop {
         self.elements
     }
 
-    /// The position where it stopped, counted from where it started.
-    pub fn end(&self) -> Position {
+    /// The position where it stopped, counted from where it started, when it placed what
+    /// it found as it read.
+    pub fn end(&self) -> Option<Position> {
         self.end
     }
 }
@@ -1084,9 +1087,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Where this tokenizer stands, at the end of a piece it read: the position of its offset
-    /// counted from the piece's start.
+    /// counted from the piece's start, when it placed what it found (see [`Stop::end`]).
     pub fn stop(mut self) -> Stop {
-        let end = self.locate(self.pos);
+        let end = (!self.is_whole()).then(|| self.locate(self.pos));
         let Tokenizer { pos, started, last, open, elements, .. } = self;
         Stop { pos, started, last, open, elements, end }
     }
@@ -1104,7 +1107,10 @@ impl<'a> Tokenizer<'a> {
         // The other reading went past every end.
         self.next_end = self.ends.len();
         self.aim();
-        self.lines.resume(Cursor::at(pos, end.after(start)));
+        // Positions are counted on from there; a text in memory counts its own.
+        if let Some(end) = end {
+            self.lines.resume(Cursor::at(pos, end.after(start)));
+        }
         true
     }
 
