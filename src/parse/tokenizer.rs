@@ -424,7 +424,9 @@ impl<'a> Tokenizer<'a> {
             if rest[i] == b'>' {
                 return self.within_text_limit(at, at + 1 + i);
             }
-            match memchr::memchr(rest[i], &rest[i + 1..]) {
+            // Values are short: the same byte three times is found eight bytes at a time.
+            let quote = rest[i];
+            match find3(&rest[i + 1..], quote, quote, quote) {
                 Some(len) => from = i + 2 + len,
                 None => break,
             }
