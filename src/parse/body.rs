@@ -39,7 +39,8 @@ impl<'a> Reader<'a> {
         let origin = self.spot(tag.at);
         let mut body = Body::new(self.body_type(&tag)?);
         let mut seen = Seen::default();
-        while let Some(child) = self.tok.child(&tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(&tag, &mut child)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
@@ -156,7 +157,8 @@ impl<'a> Reader<'a> {
 
     fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
-        while let Some(child) = self.tok.child(tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };

@@ -32,7 +32,8 @@ impl<'a> Reader<'a> {
         let mut fixture = Fixture::default();
         let mut shape_at = None;
         let mut seen = Seen::default();
-        while let Some(child) = self.tok.child(&tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(&tag, &mut child)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };
@@ -85,7 +86,8 @@ impl<'a> Reader<'a> {
 
     fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
-        while let Some(child) = self.tok.child(tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };

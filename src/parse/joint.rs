@@ -218,7 +218,8 @@ impl<'a> Reader<'a> {
         let mut joint = Joint::new(kind);
         let mut at = Refs { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
-        while let Some(child) = self.tok.child(&tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(&tag, &mut child)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };

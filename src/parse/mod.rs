@@ -92,9 +92,6 @@ impl<'a> Placer<'a> {
 #[derive(Default)]
 pub(crate) struct Seen {
     bits: u64,
-    /// Where to start looking for the next element: after the last one found, since
-    /// writers list an object's elements in the same order every time.
-    next: usize,
 }
 
 impl Seen {
@@ -293,7 +290,7 @@ impl<'a> Reader<'a> {
         child: &Tag,
         seen: &mut Seen,
     ) -> Parsed<Option<(E, bool)>> {
-        let found = E::NAMES.find(child.name.key(), seen.next);
+        let found = E::NAMES.find(child.name.key());
         if self.tok.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
             self.keep_comments(self.object, Place::Inside { within: self.within, before });
@@ -305,7 +302,6 @@ impl<'a> Reader<'a> {
         let bit = 1u64 << index;
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;
-        seen.next = index + 1;
         Ok(Some((E::ALL[index], repeated)))
     }
 

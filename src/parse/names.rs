@@ -187,15 +187,23 @@ macro_rules! elements {
 }
 pub(super) use elements;
 
-/// The known elements of an object, in the order writers list them, with their keys.
+/// The known elements of an object, in the order writers list them, with their keys, and a
+/// table that finds an element from its key in one probe.
 pub(crate) struct Names {
     pub names: &'static [&'static str],
     keys: [u128; Names::MOST],
+    /// The multiplier of [`Names::slot`] under which no two keys share a slot.
+    multiplier: u64,
+    /// For each slot, the index of the key hashed to it plus one; 0 for none.
+    slots: [u8; Names::SLOTS],
 }
 
 impl Names {
     /// The most elements an object has (a joint's, with Farseer's spellings).
     const MOST: usize = 64;
+    /// Slots of the table: with 64 keys at most in 1024 slots, a multiplier without
+    /// collisions is found within a few tries.
+    const SLOTS: usize = 1024;
 
     pub const fn new(names: &'static [&'static str]) -> Names {
         assert!(names.len() <= Names::MOST);
@@ -203,25 +211,54 @@ impl Names {
         let mut i = 0;
         while i < names.len() {
             keys[i] = key(names[i]);
+            // Distinct keys: an element is then the same wherever the search starts.
+            let mut j = 0;
+            while j < i {
+                assert!(keys[j] != keys[i], "two known elements differ only in case");
+                j += 1;
+            }
             i += 1;
         }
-        Names { names, keys }
+        // Odd multipliers from a fixed sequence, until one spreads the keys apart.
+        let mut multiplier = 0x9E37_79B9_7F4A_7C15u64;
+        loop {
+            let mut slots = [0u8; Names::SLOTS];
+            let mut i = 0;
+            while i < names.len() {
+                let slot = Names::slot(keys[i], multiplier);
+                if slots[slot] != 0 {
+                    break;
+                }
+                slots[slot] = i as u8 + 1;
+                i += 1;
+            }
+            if i == names.len() {
+                return Names { names, keys, multiplier, slots };
+            }
+            multiplier =
+                multiplier.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407) | 1;
+        }
     }
 
-    /// The index of the element whose key is `key`, looking from `start` on first.
+    /// The slot of `key` under `multiplier`: the top bits of the product of the key's two
+    /// halves folded together.
+    #[inline(always)]
+    const fn slot(key: u128, multiplier: u64) -> usize {
+        let folded = key as u64 ^ (key >> 64) as u64;
+        (folded.wrapping_mul(multiplier) >> (64 - Names::SLOTS.trailing_zeros())) as usize
+    }
+
+    /// The index of the element whose key is `key`.
     #[inline]
-    pub fn find(&self, key: u128, start: usize) -> Option<usize> {
-        let keys = &self.keys[..self.names.len()];
-        let start = start.min(keys.len());
-        let (before, after) = keys.split_at(start);
-        (after.iter().position(|&k| k == key).map(|i| start + i))
-            .or_else(|| before.iter().position(|&k| k == key))
+    pub fn find(&self, key: u128) -> Option<usize> {
+        let index = usize::from(self.slots[Names::slot(key, self.multiplier)]).checked_sub(1)?;
+        (self.keys[index] == key).then_some(index)
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Name, key};
+    use super::{Name, Names, key};
 
     /// Case-insensitive ASCII equality, the rule for element names (spec section 2).
     fn same(a: &[u8], b: &[u8]) -> bool {
@@ -257,6 +294,37 @@ mod tests {
                     same(text.as_bytes(), k.as_bytes()),
                     "{text:?} {k}"
                 );
+            }
+        }
+    }
+
+    /// The table finds each known name, in any case, and nothing else: checked on lists
+    /// of every size up to the most an object has, against every other list's names.
+    #[test]
+    fn find_gives_the_index_of_the_name_in_any_case_and_nothing_else() {
+        let pool: Vec<String> = (0..Names::MOST)
+            .map(|i| match i % 4 {
+                0 => format!("Element{i}"),
+                1 => format!("LocalAnchorA{i}"),
+                2 => format!("X{}", i * 7919),
+                _ => format!("MaxMotorTorque{i}"),
+            })
+            .collect();
+        let pool: &'static [&'static str] =
+            Vec::leak(pool.into_iter().map(|n| &*n.leak()).collect());
+        let others = ["Vertex", "vertex1", "ID", "", "CollideConnectedX", "名前"];
+        for size in 1..=Names::MOST {
+            let names = Names::new(&pool[..size]);
+            for (i, name) in pool.iter().enumerate() {
+                let expected = (i < size).then_some(i);
+                for spelling in [name.to_string(), name.to_ascii_uppercase(), name.to_lowercase()] {
+                    assert_eq!(names.find(Name::new(&spelling).key()), expected, "{spelling}");
+                }
+                let near = format!("{name}x");
+                assert_eq!(names.find(Name::new(&near).key()), None, "{near}");
+            }
+            for other in others {
+                assert_eq!(names.find(Name::new(other).key()), None, "{other}");
             }
         }
     }

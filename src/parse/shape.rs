@@ -46,7 +46,8 @@ impl<'a> Reader<'a> {
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
         let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
-        while let Some(child) = self.tok.child(&tag)? {
+        let mut child = Tag::slot();
+        while self.tok.child_into(&tag, &mut child)? {
             let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
                 continue;
             };

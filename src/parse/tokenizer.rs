@@ -64,6 +64,12 @@ impl Tag {
         Tag { name, content: None, at, empty: false }
     }
 
+    /// A tag that names no element, for a reader's loop to read its children into (see
+    /// [`Tokenizer::child_into`]).
+    pub fn slot() -> Tag {
+        Tag { name: Name::Short(0, [0; SHORT]), content: None, at: 0, empty: true }
+    }
+
     pub fn name(&self) -> &str {
         self.name.as_str()
     }
@@ -349,6 +355,14 @@ impl<'a> Tokenizer<'a> {
         Ok(end)
     }
 
+    /// The text at hand from offset `from` to `to`: [`Source::slice`], inlined where a value
+    /// is converted.
+    #[inline(always)]
+    fn at_hand(&self, from: usize, to: usize) -> &str {
+        let base = self.source.base();
+        self.source.text().get(from - base..to - base).unwrap_or_default()
+    }
+
     /// Skips the white space before the next node, reading on when it reaches the end of
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
@@ -459,7 +473,9 @@ impl<'a> Tokenizer<'a> {
             if rest[i] == b'>' {
                 return self.within_text_limit(at, at + 1 + i);
             }
-            match memchr::memchr(rest[i], &rest[i + 1..]) {
+            // Values are short: the same byte three times is found eight bytes at a time.
+            let quote = rest[i];
+            match find3(&rest[i + 1..], quote, quote, quote) {
                 Some(len) => from = i + 2 + len,
                 None => break,
             }
@@ -699,8 +715,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The next child element of `parent`, or None at its end. Blank text and comments are
-    /// skipped; other text is an error. Inlined into the handlers' loops, so that the tag
-    /// is made where the handler holds it rather than copied out of a result.
+    /// skipped; other text is an error. Inlined into the loops over containers' items; the
+    /// handlers' loops use [`Tokenizer::child_into`] (this as a wrapper of that one costs the
+    /// items' loops more instructions than it saves).
     #[inline(always)]
     pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         if parent.empty {
@@ -716,6 +733,33 @@ impl<'a> Tokenizer<'a> {
             return Ok(None);
         }
         self.other_child(parent)
+    }
+
+    /// [`Tokenizer::child`] into `child`, which the reader keeps over its loop, so that the
+    /// tag is made where the reader holds it rather than moved out of a result: whether
+    /// there was one. Inlined into the readers' loops.
+    #[inline(always)]
+    pub fn child_into(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
+        if parent.empty {
+            return Ok(false);
+        }
+        self.skip_space()?;
+        if let Some(tag) = self.short_tag(self.pos) {
+            self.begin_node(tag.at);
+            self.opened(&tag)?;
+            *child = tag;
+            return Ok(true);
+        }
+        if self.closes_parent() {
+            return Ok(false);
+        }
+        match self.other_child(parent)? {
+            Some(tag) => {
+                *child = tag;
+                Ok(true)
+            }
+            None => Ok(false),
+        }
     }
 
     /// [`Tokenizer::child`] when the next node is not the usual start or end tag: apart,
@@ -862,7 +906,7 @@ impl<'a> Tokenizer<'a> {
     ) -> Parsed<(T, usize)> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
-            return match convert(self.source.slice(at, end)) {
+            return match convert(self.at_hand(at, end)) {
                 Ok(v) => Ok((v, at)),
                 Err(e) => {
                     let value = Value { text: Text { at, end, resolved: None }, at };
@@ -1526,6 +1570,92 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// What a reader sees of the children of the first element of `xml`, read with `child`
+    /// or with `child_into`: each child's name, offset, emptiness and attributes, and where
+    /// the tokenizer stands after it; then the end, or the error that stops the reading.
+    fn children(xml: &str, into: bool, limits: &LoadOptions) -> Vec<String> {
+        let mut seen = Vec::new();
+        let source = Source::memory(xml.as_bytes(), limits).unwrap();
+        let mut tok = Tokenizer::new(source, limits);
+        let parent = match tok.next_node() {
+            Ok(super::Node::Open(parent)) => parent,
+            _ => return seen,
+        };
+        let mut slot = Tag::slot();
+        loop {
+            let next = match into {
+                true => tok.child_into(&parent, &mut slot).map(|more| more.then_some(&slot)),
+                false => match tok.child(&parent) {
+                    Ok(Some(tag)) => {
+                        slot = tag;
+                        Ok(Some(&slot))
+                    }
+                    Ok(None) => Ok(None),
+                    Err(e) => Err(e),
+                },
+            };
+            match next {
+                Ok(Some(tag)) => {
+                    let attrs = tok.attributes(tag).map(|a| read(&a)).map_err(|e| e.at);
+                    seen.push(format!("{} {} {} {attrs:?}", tag.name(), tag.at, tag.empty));
+                    let (pos, skipped) = (tok.position(), tok.skip(tag).map_err(|e| e.at));
+                    seen.push(format!("at {pos}, skipped {skipped:?} to {}", tok.position()));
+                    if skipped.is_err() {
+                        return seen;
+                    }
+                }
+                Ok(None) => {
+                    seen.push(format!("end at {}", tok.position()));
+                    return seen;
+                }
+                Err(e) => {
+                    seen.push(format!("{:?} at {}: {}", e.code, e.at, e.message));
+                    return seen;
+                }
+            }
+        }
+    }
+
+    /// Reading children into a reader's slot gives what reading them out of a result gives,
+    /// on every mix of the usual and unusual markup, including the limits' errors.
+    #[test]
+    fn child_into_reads_what_child_reads() {
+        let pieces = [
+            "<A>1</A>",
+            "<Bb/>",
+            "<Cc x='1'>2</Cc>",
+            "<VeryLongElementName>3</VeryLongElementName>",
+            "\n  ",
+            "<!-- c -->",
+            "text",
+            "<D><E>4</E></D>",
+            "<F",
+            "</Other>",
+            "<?pi x?>",
+            "<![CDATA[ ]]>",
+        ];
+        let mut limits = LoadOptions::default();
+        let defaults = limits;
+        let mut tried = 0;
+        for first in 0..pieces.len() {
+            for second in 0..pieces.len() {
+                for third in [0, 1, 4, 5] {
+                    let inner = [pieces[first], pieces[third], pieces[second]].concat();
+                    for xml in [format!("<Root>{inner}</Root>"), format!("<Root>{inner}")] {
+                        for (elements, depth) in [(u64::MAX, u32::MAX), (3, u32::MAX), (99, 2)] {
+                            limits.max_elements = elements.min(defaults.max_elements);
+                            limits.max_depth = depth.min(defaults.max_depth);
+                            let by_result = children(&xml, false, &limits);
+                            assert_eq!(children(&xml, true, &limits), by_result, "{xml}");
+                            tried += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(tried > 1000);
     }
 
     /// The plain reading of attributes gives what quick-xml gives, or leaves the tag to it.
