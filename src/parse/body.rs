@@ -34,24 +34,24 @@ elements! {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn body(&mut self, tag: Tag) -> Parsed<()> {
+    pub(super) fn body(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Body(self.arena.scene.bodies.len() as u32));
         let origin = self.spot(tag.at);
-        let mut body = Body::new(self.body_type(&tag)?);
+        let mut body = Body::new(self.body_type(tag)?);
         let mut seen = Seen::default();
         let mut child = Tag::slot();
-        while self.tok.child_into(&tag, &mut child)? {
-            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
+        while self.tok.child(tag, &mut child)? {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated && matches!(name, BodyChild::Fixtures | BodyChild::Bindings) {
-                return Err(self.tok.duplicate_container(&tag, &child));
+                return Err(self.tok.duplicate_container(tag, &child));
             }
             if let Some(problem) = self.layout_mismatch(&child, name) {
                 return Err(problem);
             }
             if repeated {
-                self.duplicate(&tag, &child)?;
+                self.duplicate(tag, &child)?;
             }
             match name {
                 BodyChild::Name => body.name = self.string(&child)?,
@@ -82,7 +82,7 @@ impl<'a> Reader<'a> {
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
                 BodyChild::Tag => match self.arena.tag_is_user_data() {
                     true => body.user_data = self.user_data(&child)?,
-                    false => self.unknown(&tag, &child)?,
+                    false => self.unknown(tag, &child)?,
                 },
             }
         }
@@ -110,10 +110,10 @@ impl<'a> Reader<'a> {
     fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
-            let attrs = p.tok.attributes(&pair)?;
-            p.unknown_attributes(&pair, &attrs, &["fixtureid", "shapeid"])?;
+            let attrs = p.tok.attributes(pair)?;
+            p.unknown_attributes(pair, &attrs, &["fixtureid", "shapeid"])?;
             let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
-                Some(attr) => p.tok.attribute(&pair, attr, crate::text::id),
+                Some(attr) => p.tok.attribute(pair, attr, crate::text::id),
                 None => Err(problem(
                     Code::MissingAttribute,
                     pair.at,
@@ -123,7 +123,7 @@ impl<'a> Reader<'a> {
             let (fixture, shape) = (id("fixtureid")?, id("shapeid")?);
             let (fixture, shape) = ((fixture.0, p.spot(fixture.1)), (shape.0, p.spot(shape.1)));
             p.arena.origins.pairs.push(Pair { body, fixture, shape });
-            p.tok.skip(&pair)
+            p.tok.skip(pair)
         })
     }
 
@@ -158,7 +158,7 @@ impl<'a> Reader<'a> {
     fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
         let mut child = Tag::slot();
-        while self.tok.child_into(tag, &mut child)? {
+        while self.tok.child(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
@@ -185,7 +185,7 @@ impl<'a> Reader<'a> {
     fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
         let first = self.arena.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
-            let (index, at) = p.tok.id(&id)?;
+            let (index, at) = p.tok.id(id)?;
             p.arena.scene.fixture_ids.push(index);
             let origin = p.spot(at);
             p.arena.origins.fixture_ids.push(origin);

@@ -24,21 +24,21 @@ elements! {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn fixture(&mut self, tag: Tag) -> Parsed<()> {
+    pub(super) fn fixture(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
-        let attrs = self.tok.attributes(&tag)?;
+        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["id"] } else { &[] };
-        self.unknown_attributes(&tag, &attrs, known)?;
+        self.unknown_attributes(tag, &attrs, known)?;
         let mut fixture = Fixture::default();
         let mut shape_at = None;
         let mut seen = Seen::default();
         let mut child = Tag::slot();
-        while self.tok.child_into(&tag, &mut child)? {
-            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
+        while self.tok.child(tag, &mut child)? {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             if repeated {
-                self.duplicate(&tag, &child)?;
+                self.duplicate(tag, &child)?;
             }
             use FixtureChild::*;
             match name {
@@ -68,13 +68,13 @@ impl<'a> Reader<'a> {
                 UserData => fixture.user_data = self.user_data(&child)?,
                 FixtureChild::Tag => match self.arena.tag_is_user_data() {
                     true => fixture.user_data = self.user_data(&child)?,
-                    false => self.unknown(&tag, &child)?,
+                    false => self.unknown(tag, &child)?,
                 },
             }
         }
         // In Farseer's layout a fixture is a template: bodies pair it with shapes.
         if !seen.contains(FixtureChild::Shape) && !self.arena.farseer_layout() {
-            return Err(self.tok.missing(&tag, "<Shape>: a fixture with no shape is malformed"));
+            return Err(self.tok.missing(tag, "<Shape>: a fixture with no shape is malformed"));
         }
         self.end_object();
         // A Version 3 template has none: its bodies' Pairs give it one.
@@ -87,7 +87,7 @@ impl<'a> Reader<'a> {
     fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
         let mut child = Tag::slot();
-        while self.tok.child_into(tag, &mut child)? {
+        while self.tok.child(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };

@@ -208,9 +208,9 @@ struct Refs {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn joint(&mut self, tag: Tag) -> Parsed<()> {
+    pub(super) fn joint(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Joint(self.arena.scene.joints.len() as u32));
-        let kind = self.joint_type(&tag)?;
+        let kind = self.joint_type(tag)?;
         if kind == JointKind::Unsupported {
             // It has no Box2Scene form: the writer writes back its whole text.
             self.tok.pin(tag.at);
@@ -219,8 +219,8 @@ impl<'a> Reader<'a> {
         let mut at = Refs { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
         let mut child = Tag::slot();
-        while self.tok.child_into(&tag, &mut child)? {
-            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
+        while self.tok.child(tag, &mut child)? {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             use JointChild::*;
@@ -237,7 +237,7 @@ impl<'a> Reader<'a> {
                 continue;
             }
             if repeated {
-                self.duplicate(&tag, &child)?;
+                self.duplicate(tag, &child)?;
             }
             if kind == JointKind::Weld && matches!(name, FrequencyHz | DampingRatio) {
                 self.newer_construct(child.at, "a soft Weld joint")?;
@@ -263,9 +263,9 @@ impl<'a> Reader<'a> {
             }
         }
         if kind == JointKind::Line && WHEEL_ONLY.into_iter().any(|element| seen.contains(element)) {
-            self.line_is_wheel(&tag, &mut joint, &seen)?;
+            self.line_is_wheel(tag, &mut joint, &seen)?;
         }
-        self.check_joint(&tag, &joint, &at)?;
+        self.check_joint(tag, &joint, &at)?;
         if kind == JointKind::Unsupported {
             let text = self.tok.unpin(self.tok.position());
             self.keep_str(Place::Whole, &text);

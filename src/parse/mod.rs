@@ -318,10 +318,11 @@ impl<'a> Reader<'a> {
         &mut self,
         container: &Tag,
         item: &str,
-        mut each: impl FnMut(&mut Self, Tag) -> Parsed<()>,
+        mut each: impl FnMut(&mut Self, &Tag) -> Parsed<()>,
     ) -> Parsed<()> {
         let key = names::key(item);
-        while let Some(child) = self.tok.child(container)? {
+        let mut child = Tag::slot();
+        while self.tok.child(container, &mut child)? {
             if child.name.key() != key {
                 return Err(crate::error::problem(
                     Code::UnexpectedElement,
@@ -333,7 +334,7 @@ impl<'a> Reader<'a> {
                     ),
                 ));
             }
-            each(self, child)?;
+            each(self, &child)?;
         }
         Ok(())
     }

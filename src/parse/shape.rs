@@ -40,15 +40,15 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn shape(&mut self, tag: Tag) -> Parsed<()> {
+    pub(super) fn shape(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Shape(self.arena.scene.shapes.len() as u32));
-        let mut shape = self.shape_type(&tag)?;
+        let mut shape = self.shape_type(tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
         let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
         let mut child = Tag::slot();
-        while self.tok.child_into(&tag, &mut child)? {
-            let Some((name, repeated)) = self.known(&tag, &child, &mut seen)? else {
+        while self.tok.child(tag, &mut child)? {
+            let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
                 continue;
             };
             if !belongs(kind, name) {
@@ -58,10 +58,10 @@ impl<'a> Reader<'a> {
                 continue;
             }
             if repeated && name == ShapeChild::Vertices {
-                return Err(self.tok.duplicate_container(&tag, &child));
+                return Err(self.tok.duplicate_container(tag, &child));
             }
             if repeated {
-                self.duplicate(&tag, &child)?;
+                self.duplicate(tag, &child)?;
             }
             use ShapeChild::*;
             match name {
@@ -97,7 +97,7 @@ impl<'a> Reader<'a> {
                     if !seen.contains(needed) {
                         return Err(self
                             .tok
-                            .missing(&tag, &format!("<{}> (a Circle needs one)", needed.name())));
+                            .missing(tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
                 validate::circle(shape.radius, radius_at)?;
@@ -107,7 +107,7 @@ impl<'a> Reader<'a> {
                     if !seen.contains(needed) {
                         return Err(self
                             .tok
-                            .missing(&tag, &format!("<{}> (an Edge needs one)", needed.name())));
+                            .missing(tag, &format!("<{}> (an Edge needs one)", needed.name())));
                     }
                 }
                 let first = self.arena.scene.vertices.len() as u32;
@@ -116,11 +116,11 @@ impl<'a> Reader<'a> {
             }
             ShapeKind::Polygon | ShapeKind::Chain => {
                 if !seen.contains(ShapeChild::Vertices) {
-                    return Err(self.tok.missing(&tag, "<Vertices>"));
+                    return Err(self.tok.missing(tag, "<Vertices>"));
                 }
             }
         }
-        self.check_geometry(&tag, &shape)?;
+        self.check_geometry(tag, &shape)?;
         self.end_object();
         self.arena.scene.shapes.push(shape);
         Ok(())
@@ -199,7 +199,7 @@ impl<'a> Reader<'a> {
                     _ => p.tok.limit(vertex.at, "max_chain_vertices", most as u64),
                 });
             }
-            let v = p.tok.vector(&vertex)?;
+            let v = p.tok.vector(vertex)?;
             p.arena.scene.vertices.push(v);
             Ok(())
         })?;

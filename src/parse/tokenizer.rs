@@ -65,7 +65,7 @@ impl Tag {
     }
 
     /// A tag that names no element, for a reader's loop to read its children into (see
-    /// [`Tokenizer::child_into`]).
+    /// [`Tokenizer::child`]).
     pub fn slot() -> Tag {
         Tag { name: Name::Short(0, [0; SHORT]), content: None, at: 0, empty: true }
     }
@@ -714,32 +714,13 @@ impl<'a> Tokenizer<'a> {
         ))
     }
 
-    /// The next child element of `parent`, or None at its end. Blank text and comments are
-    /// skipped; other text is an error. Inlined into the loops over containers' items; the
-    /// handlers' loops use [`Tokenizer::child_into`] (this as a wrapper of that one costs the
-    /// items' loops more instructions than it saves).
+    /// Reads the next child element of `parent` into `child`, which the reader keeps over
+    /// its loop, so that the tag is made where the reader holds it rather than moved out of
+    /// a result: whether there was one (false at the end of `parent`). Blank text and
+    /// comments are skipped; other text is an error. Inlined into the readers' loops, so
+    /// that the usual child costs no more than it needs.
     #[inline(always)]
-    pub fn child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
-        if parent.empty {
-            return Ok(None);
-        }
-        self.skip_space()?;
-        if let Some(tag) = self.short_tag(self.pos) {
-            self.begin_node(tag.at);
-            self.opened(&tag)?;
-            return Ok(Some(tag));
-        }
-        if self.closes_parent() {
-            return Ok(None);
-        }
-        self.other_child(parent)
-    }
-
-    /// [`Tokenizer::child`] into `child`, which the reader keeps over its loop, so that the
-    /// tag is made where the reader holds it rather than moved out of a result: whether
-    /// there was one. Inlined into the readers' loops.
-    #[inline(always)]
-    pub fn child_into(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
+    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
         if parent.empty {
             return Ok(false);
         }
@@ -762,8 +743,9 @@ impl<'a> Tokenizer<'a> {
         }
     }
 
-    /// [`Tokenizer::child`] when the next node is not the usual start or end tag: apart,
-    /// so that the usual child costs no more than it needs.
+    /// [`Tokenizer::child`] when the next node is not the usual start or end tag, and the
+    /// general reading of a child: apart, so that the usual child costs no more than it
+    /// needs.
     #[inline(never)]
     fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         loop {
@@ -1573,9 +1555,10 @@ mod tests {
     }
 
     /// What a reader sees of the children of the first element of `xml`, read with `child`
-    /// or with `child_into`: each child's name, offset, emptiness and attributes, and where
-    /// the tokenizer stands after it; then the end, or the error that stops the reading.
-    fn children(xml: &str, into: bool, limits: &LoadOptions) -> Vec<String> {
+    /// (`usual`) or node by node: each child's name, offset, emptiness and attributes, and
+    /// where the tokenizer stands after it; then the end, or the error that stops the
+    /// reading.
+    fn children(xml: &str, usual: bool, limits: &LoadOptions) -> Vec<String> {
         let mut seen = Vec::new();
         let source = Source::memory(xml.as_bytes(), limits).unwrap();
         let mut tok = Tokenizer::new(source, limits);
@@ -1585,9 +1568,10 @@ mod tests {
         };
         let mut slot = Tag::slot();
         loop {
-            let next = match into {
-                true => tok.child_into(&parent, &mut slot).map(|more| more.then_some(&slot)),
-                false => match tok.child(&parent) {
+            let next = match (usual, parent.empty) {
+                (true, _) => tok.child(&parent, &mut slot).map(|more| more.then_some(&slot)),
+                (false, true) => Ok(None),
+                (false, false) => match tok.other_child(&parent) {
                     Ok(Some(tag)) => {
                         slot = tag;
                         Ok(Some(&slot))
@@ -1618,10 +1602,10 @@ mod tests {
         }
     }
 
-    /// Reading children into a reader's slot gives what reading them out of a result gives,
-    /// on every mix of the usual and unusual markup, including the limits' errors.
+    /// Reading children the usual way gives what reading them node by node gives, on every
+    /// mix of the usual and unusual markup, including the limits' errors.
     #[test]
-    fn child_into_reads_what_child_reads() {
+    fn child_reads_what_the_nodes_give() {
         let pieces = [
             "<A>1</A>",
             "<Bb/>",
@@ -1647,8 +1631,8 @@ mod tests {
                         for (elements, depth) in [(u64::MAX, u32::MAX), (3, u32::MAX), (99, 2)] {
                             limits.max_elements = elements.min(defaults.max_elements);
                             limits.max_depth = depth.min(defaults.max_depth);
-                            let by_result = children(&xml, false, &limits);
-                            assert_eq!(children(&xml, true, &limits), by_result, "{xml}");
+                            let by_nodes = children(&xml, false, &limits);
+                            assert_eq!(children(&xml, true, &limits), by_nodes, "{xml}");
                             tried += 1;
                         }
                     }

@@ -137,7 +137,8 @@ impl<'a> Reader<'a> {
 
     /// The root's children up to `</World>`.
     pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
-        while let Some(child) = self.tok.child(root)? {
+        let mut child = Tag::slot();
+        while self.tok.child(root, &mut child)? {
             let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
                 continue;
             };
@@ -159,7 +160,7 @@ impl<'a> Reader<'a> {
 
     /// The items of a container, to its end.
     fn container(&mut self, tag: &Tag, name: Container) -> Parsed<()> {
-        let each: fn(&mut Self, Tag) -> Parsed<()> = match name {
+        let each: fn(&mut Self, &Tag) -> Parsed<()> = match name {
             Container::Shapes => Self::shape,
             Container::Fixtures => Self::fixture,
             Container::Bodies => Self::body,
