@@ -24,12 +24,12 @@ pub(crate) struct Arena {
 #[derive(Debug, Default)]
 pub(crate) struct Origins {
     /// Per fixture: its `Shape` value.
-    pub fixture_shapes: Vec<Spot>,
+    pub fixture_shapes: Spots,
     /// Per body: its tag.
-    pub bodies: Vec<Spot>,
+    pub bodies: Spots,
     /// Per entry of the fixture ID pool: its `ID` value.
-    pub fixture_ids: Vec<Spot>,
-    pub joints: Vec<JointOrigin>,
+    pub fixture_ids: Spots,
+    pub joints: JointOrigins,
     /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
     pub shape_densities: Vec<f32>,
     /// Version 3: every body's `Bindings`, in body order.
@@ -52,6 +52,95 @@ pub(crate) struct JointOrigin {
     pub body_b: Spot,
     pub joint_a: Spot,
     pub joint_b: Spot,
+}
+
+/// Spots in a quarter less memory than a `Vec<Spot>`: there is one per object and per
+/// reference, and a load holds them all until it is checked. Each is three 32-bit numbers
+/// (see [`Spot::packed`]), which hold every spot of a file under 4 GiB; one they do not
+/// hold is kept whole aside, its numbers the mark `u32::MAX` and its index there.
+#[derive(Default)]
+pub(crate) struct Spots {
+    packed: Vec<[u32; 3]>,
+    aside: Vec<Spot>,
+}
+
+/// The line of a [`Spots`] entry kept aside.
+const ASIDE: u32 = u32::MAX;
+
+impl Spots {
+    pub fn push(&mut self, spot: Spot) {
+        let numbers = spot.packed().unwrap_or_else(|| {
+            let index = self.aside.len() as u64;
+            self.aside.push(spot);
+            [ASIDE, (index >> 32) as u32, index as u32]
+        });
+        self.packed.push(numbers);
+    }
+
+    /// The `k`-th spot.
+    pub fn get(&self, k: usize) -> Spot {
+        self.unpacked(self.packed[k])
+    }
+
+    pub fn len(&self) -> usize {
+        self.packed.len()
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
+        self.packed.iter().map(|&numbers| self.unpacked(numbers))
+    }
+
+    pub fn clear(&mut self) {
+        self.packed.clear();
+        self.aside.clear();
+    }
+
+    fn unpacked(&self, numbers: [u32; 3]) -> Spot {
+        match numbers {
+            [ASIDE, high, low] => self.aside[((u64::from(high) << 32) | u64::from(low)) as usize],
+            numbers => Spot::unpacked(numbers),
+        }
+    }
+}
+
+impl Extend<Spot> for Spots {
+    fn extend<I: IntoIterator<Item = Spot>>(&mut self, spots: I) {
+        for spot in spots {
+            self.push(spot);
+        }
+    }
+}
+
+impl std::fmt::Debug for Spots {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+/// The [`JointOrigin`]s, in [`Spots`]: four per joint.
+#[derive(Default)]
+pub(crate) struct JointOrigins(Spots);
+
+impl JointOrigins {
+    pub fn push(&mut self, origin: JointOrigin) {
+        let JointOrigin { body_a, body_b, joint_a, joint_b } = origin;
+        self.0.extend([body_a, body_b, joint_a, joint_b]);
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = JointOrigin> + '_ {
+        (0..self.0.len() / 4).map(|k| JointOrigin {
+            body_a: self.0.get(4 * k),
+            body_b: self.0.get(4 * k + 1),
+            joint_a: self.0.get(4 * k + 2),
+            joint_b: self.0.get(4 * k + 3),
+        })
+    }
+}
+
+impl std::fmt::Debug for JointOrigins {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
 }
 
 impl Arena {
@@ -146,20 +235,66 @@ impl Origins {
     fn append(&mut self, other: Origins, bodies_before: u32, start: Position) {
         let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs } = other;
         let after = |s: Spot| s.after(start);
-        self.fixture_shapes.extend(fixture_shapes.into_iter().map(after));
-        self.bodies.extend(bodies.into_iter().map(after));
-        self.fixture_ids.extend(fixture_ids.into_iter().map(after));
-        self.joints.extend(joints.into_iter().map(|j| JointOrigin {
-            body_a: after(j.body_a),
-            body_b: after(j.body_b),
-            joint_a: after(j.joint_a),
-            joint_b: after(j.joint_b),
-        }));
+        self.fixture_shapes.extend(fixture_shapes.iter().map(after));
+        self.bodies.extend(bodies.iter().map(after));
+        self.fixture_ids.extend(fixture_ids.iter().map(after));
+        for j in joints.iter() {
+            self.joints.push(JointOrigin {
+                body_a: after(j.body_a),
+                body_b: after(j.body_b),
+                joint_a: after(j.joint_a),
+                joint_b: after(j.joint_b),
+            });
+        }
         self.shape_densities.extend(shape_densities);
         self.pairs.extend(pairs.into_iter().map(|p| Pair {
             body: p.body + bodies_before,
             fixture: (p.fixture.0, after(p.fixture.1)),
             shape: (p.shape.0, after(p.shape.1)),
         }));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every spot comes back as it went in, whether three 32-bit numbers hold it or it is
+    /// kept aside (a byte offset past 4 GiB, a line of `u32::MAX`), in any order.
+    #[test]
+    fn spots_come_back_as_they_went_in() {
+        let at = |line, column, byte_offset| Spot::placed(Position { line, column, byte_offset });
+        let big = u64::from(u32::MAX);
+        let spots = [
+            Spot::offset(0),
+            Spot::offset(u32::MAX as usize),
+            at(0, 0, big + 1),
+            at(1, 1, 0),
+            at(7, 3, big),
+            at(7, 4, big + 1),
+            at(u32::MAX, 2, 9),
+            at(u32::MAX - 1, u32::MAX, 1 << 40),
+            at(2, 5, 40),
+        ];
+        let mut kept = Spots::default();
+        kept.extend(spots);
+        assert_eq!(kept.aside, [spots[2], spots[5], spots[6], spots[7]]);
+        assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
+        assert_eq!((0..spots.len()).map(|k| kept.get(k)).collect::<Vec<_>>(), spots);
+        assert_eq!(format!("{kept:?}"), format!("{spots:?}"));
+
+        let mut joints = JointOrigins::default();
+        let origins: Vec<_> = spots
+            .windows(4)
+            .map(|w| JointOrigin { body_a: w[0], body_b: w[1], joint_a: w[2], joint_b: w[3] })
+            .collect();
+        for &origin in &origins {
+            joints.push(origin);
+        }
+        assert_eq!(format!("{joints:?}"), format!("{origins:?}"));
+        kept.clear();
+        assert_eq!(kept.iter().count(), 0);
+        kept.push(spots[6]);
+        assert_eq!(kept.get(0), spots[6]);
     }
 }

@@ -453,6 +453,20 @@ impl Spot {
         }
     }
 
+    /// This spot as three 32-bit numbers (line, column, byte offset), when they hold it:
+    /// a line below `u32::MAX` (the mark of a spot kept aside, see
+    /// [`crate::arena::Spots`]) and a byte offset that fits.
+    pub fn packed(self) -> Option<[u32; 3]> {
+        let Position { line, column, byte_offset } = self.0;
+        let offset = u32::try_from(byte_offset).ok()?;
+        (line != u32::MAX).then_some([line, column, offset])
+    }
+
+    /// The spot of [`Spot::packed`] numbers.
+    pub fn unpacked([line, column, offset]: [u32; 3]) -> Spot {
+        Spot(Position { line, column, byte_offset: offset.into() })
+    }
+
     /// A finding here.
     pub fn finding(self, code: Code, message: impl Into<String>) -> Finding {
         match self.0.line {

@@ -82,7 +82,7 @@ fn has(n: usize, one: &str, many: &str) -> String {
 fn check_references(p: &Arena) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
-    for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
+    for (i, (f, at)) in s.fixtures.iter().zip(p.origins.fixture_shapes.iter()).enumerate() {
         if f.shape as usize >= s.shapes.len() {
             let why = format!(
                 "fixture {i} names shape {}, but {}",
@@ -100,11 +100,11 @@ fn check_references(p: &Arena) -> Parsed<()> {
                     "body {i} names fixture {id}, but {}",
                     has(s.fixtures.len(), "fixture", "fixtures")
                 );
-                errors.push(placed(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
+                errors.push(placed(Code::IdOutOfRange, p.origins.fixture_ids.get(k), why));
             }
         }
     }
-    for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
+    for (i, (j, at)) in s.joints.iter().zip(p.origins.joints.iter()).enumerate() {
         for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
             if body as usize >= s.bodies.len() {
                 let why = format!(

@@ -287,7 +287,7 @@ pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
         .filter_map(|(i, b)| {
             let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
             let message = format!("dynamic body {i} {why}");
-            Some(arena.origins.bodies[i].finding(Code::DynamicBodyZeroDensity, message))
+            Some(arena.origins.bodies.get(i).finding(Code::DynamicBodyZeroDensity, message))
         })
         .collect();
     for warning in found {

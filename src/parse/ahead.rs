@@ -756,7 +756,7 @@ mod tests {
                         byte_offset: last as u64,
                     }),
                 };
-                assert_eq!(reader.arena.origins.bodies.last(), Some(&last), "{what}");
+                assert_eq!(reader.arena.origins.bodies.iter().last(), Some(last), "{what}");
             }
         }
         std::fs::remove_file(&file).unwrap();
