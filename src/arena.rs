@@ -3,7 +3,7 @@
 //! builds; the reader fills it, and resolve and validate finish it.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot};
+use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot, Step};
 use crate::scene::SceneBuilder;
 
 /// A scene under construction, with what the later stages need to check it.
@@ -54,51 +54,69 @@ pub(crate) struct JointOrigin {
     pub joint_b: Spot,
 }
 
-/// Spots in a quarter less memory than a `Vec<Spot>`: there is one per object and per
-/// reference, and a load holds them all until it is checked. Each is three 32-bit numbers
-/// (see [`Spot::packed`]), which hold every spot of a file under 4 GiB; one they do not
-/// hold is kept whole aside, its numbers the mark `u32::MAX` and its index there.
+/// Spots in half the memory of a `Vec<Spot>`: a load holds one per object and per
+/// reference until it is checked. Each is the [`Step`] to it from the one before, in 8
+/// bytes, as a file's spots go, a few lines and bytes apart and in short lines; one no
+/// step holds is kept whole aside. Every [`Spots::EVERY`]-th spot is also kept whole, so
+/// that finding one goes over fewer than that many steps.
 #[derive(Default)]
 pub(crate) struct Spots {
-    packed: Vec<[u32; 3]>,
+    steps: Vec<Step>,
+    /// The spots at indices 0, [`Spots::EVERY`], twice that, ...
+    marks: Vec<Spot>,
     aside: Vec<Spot>,
+    /// The last spot, which the next is a step from.
+    last: Option<Spot>,
 }
 
-/// The line of a [`Spots`] entry kept aside.
-const ASIDE: u32 = u32::MAX;
-
 impl Spots {
+    const EVERY: usize = 32;
+
+    /// What the first spot is a step from.
+    const START: Spot = Spot::offset(0);
+
     pub fn push(&mut self, spot: Spot) {
-        let numbers = spot.packed().unwrap_or_else(|| {
-            let index = self.aside.len() as u64;
+        let before = self.last.replace(spot).unwrap_or(Spots::START);
+        if self.steps.len() % Spots::EVERY == 0 {
+            self.marks.push(spot);
+        }
+        let step = spot.step_from(before).unwrap_or_else(|| {
             self.aside.push(spot);
-            [ASIDE, (index >> 32) as u32, index as u32]
+            Step::aside(self.aside.len() - 1)
         });
-        self.packed.push(numbers);
+        self.steps.push(step);
     }
 
     /// The `k`-th spot.
     pub fn get(&self, k: usize) -> Spot {
-        self.unpacked(self.packed[k])
+        let first = k / Spots::EVERY * Spots::EVERY;
+        let mark = self.marks[k / Spots::EVERY];
+        self.steps[first + 1..=k].iter().fold(mark, |spot, &step| self.step(spot, step))
     }
 
     pub fn len(&self) -> usize {
-        self.packed.len()
+        self.steps.len()
     }
 
     pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
-        self.packed.iter().map(|&numbers| self.unpacked(numbers))
+        self.steps.iter().scan(Spots::START, |spot, &step| {
+            *spot = self.step(*spot, step);
+            Some(*spot)
+        })
     }
 
     pub fn clear(&mut self) {
-        self.packed.clear();
+        self.steps.clear();
+        self.marks.clear();
         self.aside.clear();
+        self.last = None;
     }
 
-    fn unpacked(&self, numbers: [u32; 3]) -> Spot {
-        match numbers {
-            [ASIDE, high, low] => self.aside[((u64::from(high) << 32) | u64::from(low)) as usize],
-            numbers => Spot::unpacked(numbers),
+    /// The spot `step` leads to from `spot`.
+    fn step(&self, spot: Spot, step: Step) -> Spot {
+        match step.aside_index() {
+            Some(index) => self.aside[index],
+            None => spot.stepped(step),
         }
     }
 }
@@ -259,26 +277,42 @@ impl Origins {
 mod tests {
     use super::*;
 
-    /// Every spot comes back as it went in, whether three 32-bit numbers hold it or it is
-    /// kept aside (a byte offset past 4 GiB, a line of `u32::MAX`), in any order.
+    /// Every spot comes back as it went in, whether a step from the one before holds it or
+    /// it is kept aside: far apart in lines or bytes, back in the file, past 4 GiB, on a
+    /// long line, on line `u32::MAX`; found one by one, from every index, and in order.
     #[test]
     fn spots_come_back_as_they_went_in() {
         let at = |line, column, byte_offset| Spot::placed(Position { line, column, byte_offset });
         let big = u64::from(u32::MAX);
-        let spots = [
+        let odd = [
             Spot::offset(0),
             Spot::offset(u32::MAX as usize),
             at(0, 0, big + 1),
             at(1, 1, 0),
             at(7, 3, big),
-            at(7, 4, big + 1),
+            at(7, 4, big + (1 << 31)),
+            at(7, 4, 1),
             at(u32::MAX, 2, 9),
             at(u32::MAX - 1, u32::MAX, 1 << 40),
+            at(40_000, 65_535, 1 << 40),
+            at(40_000, 65_536, (1 << 40) + 1),
+            at(2, 5, 40),
+            at(2 + 32_767, 5, 40 + (1 << 31) - 1),
             at(2, 5, 40),
         ];
+        // Ordinary spots a few lines apart, with the odd ones among them.
+        let spots: Vec<Spot> = (0..200)
+            .flat_map(|i: u32| {
+                let ordinary = at(3 * i + 1, i % 90 + 1, u64::from(i) * 97);
+                std::iter::once(ordinary).chain(odd.get(i as usize % 20).copied())
+            })
+            .collect();
         let mut kept = Spots::default();
-        kept.extend(spots);
-        assert_eq!(kept.aside, [spots[2], spots[5], spots[6], spots[7]]);
+        kept.extend(spots.iter().copied().filter(|s| !odd.contains(s)));
+        assert!(kept.aside.is_empty(), "{} aside", kept.aside.len());
+        kept.clear();
+        kept.extend(spots.iter().copied());
+        assert_eq!(kept.len(), spots.len());
         assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
         assert_eq!((0..spots.len()).map(|k| kept.get(k)).collect::<Vec<_>>(), spots);
         assert_eq!(format!("{kept:?}"), format!("{spots:?}"));
@@ -292,9 +326,10 @@ mod tests {
             joints.push(origin);
         }
         assert_eq!(format!("{joints:?}"), format!("{origins:?}"));
+
         kept.clear();
         assert_eq!(kept.iter().count(), 0);
-        kept.push(spots[6]);
-        assert_eq!(kept.get(0), spots[6]);
+        kept.extend(odd);
+        assert_eq!(kept.iter().collect::<Vec<_>>(), odd);
     }
 }

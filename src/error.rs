@@ -427,6 +427,33 @@ pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Prob
     Box::new(Finding::new(code, at, message))
 }
 
+/// A [`Spot`] in 8 bytes, as the step to it from the spot before it: how many lines on,
+/// its column, how many bytes on (see [`crate::arena::Spots`]). Or, for a spot no step
+/// holds, the mark that it is kept aside, with its index there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Step {
+    lines: i16,
+    column: u16,
+    bytes: i32,
+}
+
+impl Step {
+    /// The `lines` of the mark of a spot kept aside, which no step has.
+    const ASIDE: i16 = i16::MIN;
+
+    /// The mark of the spot kept aside at `index` (below 2^48).
+    pub fn aside(index: usize) -> Step {
+        let index = index as u64;
+        Step { lines: Step::ASIDE, column: (index >> 32) as u16, bytes: index as u32 as i32 }
+    }
+
+    /// The index of the spot kept aside that this step marks.
+    pub fn aside_index(self) -> Option<usize> {
+        let index = (u64::from(self.column) << 32) | u64::from(self.bytes as u32);
+        (self.lines == Step::ASIDE).then_some(index as usize)
+    }
+}
+
 /// Where something a later stage may report is: its position, placed while its text was
 /// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
 /// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
@@ -435,7 +462,7 @@ pub(crate) struct Spot(Position);
 
 impl Spot {
     /// Offset `at` of a text that stays in memory.
-    pub fn offset(at: usize) -> Spot {
+    pub const fn offset(at: usize) -> Spot {
         Spot(Position { line: 0, column: 0, byte_offset: at as u64 })
     }
 
@@ -453,18 +480,25 @@ impl Spot {
         }
     }
 
-    /// This spot as three 32-bit numbers (line, column, byte offset), when they hold it:
-    /// a line below `u32::MAX` (the mark of a spot kept aside, see
-    /// [`crate::arena::Spots`]) and a byte offset that fits.
-    pub fn packed(self) -> Option<[u32; 3]> {
-        let Position { line, column, byte_offset } = self.0;
-        let offset = u32::try_from(byte_offset).ok()?;
-        (line != u32::MAX).then_some([line, column, offset])
+    /// This spot as a step from `before`, when a [`Step`] holds it.
+    pub fn step_from(self, before: Spot) -> Option<Step> {
+        let (this, before) = (self.0, before.0);
+        let lines = i16::try_from(i64::from(this.line) - i64::from(before.line)).ok()?;
+        let bytes = i128::from(this.byte_offset) - i128::from(before.byte_offset);
+        Some(Step {
+            lines: Some(lines).filter(|&lines| lines != Step::ASIDE)?,
+            column: u16::try_from(this.column).ok()?,
+            bytes: i32::try_from(bytes).ok()?,
+        })
     }
 
-    /// The spot of [`Spot::packed`] numbers.
-    pub fn unpacked([line, column, offset]: [u32; 3]) -> Spot {
-        Spot(Position { line, column, byte_offset: offset.into() })
+    /// The spot `step` leads to from this one.
+    pub fn stepped(self, step: Step) -> Spot {
+        Spot(Position {
+            line: self.0.line.wrapping_add_signed(step.lines.into()),
+            column: step.column.into(),
+            byte_offset: self.0.byte_offset.wrapping_add_signed(step.bytes.into()),
+        })
     }
 
     /// A finding here.
