@@ -59,14 +59,19 @@ pub(crate) struct JointOrigin {
 /// bytes, as a file's spots go, a few lines and bytes apart and in short lines; one no
 /// step holds is kept whole aside. Every [`Spots::EVERY`]-th spot is also kept whole, so
 /// that finding one goes over fewer than that many steps.
-#[derive(Default)]
 pub(crate) struct Spots {
     steps: Vec<Step>,
     /// The spots at indices 0, [`Spots::EVERY`], twice that, ...
     marks: Vec<Spot>,
     aside: Vec<Spot>,
     /// The last spot, which the next is a step from.
-    last: Option<Spot>,
+    last: Spot,
+}
+
+impl Default for Spots {
+    fn default() -> Spots {
+        Spots { steps: Vec::new(), marks: Vec::new(), aside: Vec::new(), last: Spots::START }
+    }
 }
 
 impl Spots {
@@ -75,11 +80,12 @@ impl Spots {
     /// What the first spot is a step from.
     const START: Spot = Spot::offset(0);
 
+    #[inline]
     pub fn push(&mut self, spot: Spot) {
-        let before = self.last.replace(spot).unwrap_or(Spots::START);
         if self.steps.len() % Spots::EVERY == 0 {
             self.marks.push(spot);
         }
+        let before = std::mem::replace(&mut self.last, spot);
         let step = spot.step_from(before).unwrap_or_else(|| {
             self.aside.push(spot);
             Step::aside(self.aside.len() - 1)
@@ -94,10 +100,6 @@ impl Spots {
         self.steps[first + 1..=k].iter().fold(mark, |spot, &step| self.step(spot, step))
     }
 
-    pub fn len(&self) -> usize {
-        self.steps.len()
-    }
-
     pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
         self.steps.iter().scan(Spots::START, |spot, &step| {
             *spot = self.step(*spot, step);
@@ -109,7 +111,7 @@ impl Spots {
         self.steps.clear();
         self.marks.clear();
         self.aside.clear();
-        self.last = None;
+        self.last = Spots::START;
     }
 
     /// The spot `step` leads to from `spot`.
@@ -146,11 +148,14 @@ impl JointOrigins {
     }
 
     pub fn iter(&self) -> impl Iterator<Item = JointOrigin> + '_ {
-        (0..self.0.len() / 4).map(|k| JointOrigin {
-            body_a: self.0.get(4 * k),
-            body_b: self.0.get(4 * k + 1),
-            joint_a: self.0.get(4 * k + 2),
-            joint_b: self.0.get(4 * k + 3),
+        let mut spots = self.0.iter();
+        std::iter::from_fn(move || {
+            Some(JointOrigin {
+                body_a: spots.next()?,
+                body_b: spots.next()?,
+                joint_a: spots.next()?,
+                joint_b: spots.next()?,
+            })
         })
     }
 }
@@ -312,7 +317,6 @@ mod tests {
         assert!(kept.aside.is_empty(), "{} aside", kept.aside.len());
         kept.clear();
         kept.extend(spots.iter().copied());
-        assert_eq!(kept.len(), spots.len());
         assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
         assert_eq!((0..spots.len()).map(|k| kept.get(k)).collect::<Vec<_>>(), spots);
         assert_eq!(format!("{kept:?}"), format!("{spots:?}"));

@@ -480,19 +480,21 @@ impl Spot {
         }
     }
 
-    /// This spot as a step from `before`, when a [`Step`] holds it.
+    /// This spot as a step from `before`, when a [`Step`] holds it. (Offsets differ by
+    /// less than 2^63: a text is at most `isize::MAX` bytes.)
+    #[inline]
     pub fn step_from(self, before: Spot) -> Option<Step> {
         let (this, before) = (self.0, before.0);
         let lines = i16::try_from(i64::from(this.line) - i64::from(before.line)).ok()?;
-        let bytes = i128::from(this.byte_offset) - i128::from(before.byte_offset);
-        Some(Step {
-            lines: Some(lines).filter(|&lines| lines != Step::ASIDE)?,
-            column: u16::try_from(this.column).ok()?,
-            bytes: i32::try_from(bytes).ok()?,
-        })
+        let bytes = this.byte_offset.wrapping_sub(before.byte_offset) as i64;
+        match (lines, u16::try_from(this.column), i32::try_from(bytes)) {
+            (Step::ASIDE, ..) | (_, Err(_), _) | (.., Err(_)) => None,
+            (lines, Ok(column), Ok(bytes)) => Some(Step { lines, column, bytes }),
+        }
     }
 
     /// The spot `step` leads to from this one.
+    #[inline]
     pub fn stepped(self, step: Step) -> Spot {
         Spot(Position {
             line: self.0.line.wrapping_add_signed(step.lines.into()),
