@@ -57,12 +57,12 @@ pub(crate) struct JointOrigin {
 /// Spots in half the memory of a `Vec<Spot>`: a load holds one per object and per
 /// reference until it is checked. Each is the [`Step`] to it from the one before, in 8
 /// bytes, as a file's spots go, a few lines and bytes apart and in short lines; one no
-/// step holds is kept whole aside. Every [`Spots::EVERY`]-th spot is also kept whole, so
-/// that finding one goes over fewer than that many steps.
+/// step holds is kept whole aside. They are read in order (a check looks up the few it
+/// reports in one pass, see [`Spots::at`]): a piece of the file read on the second thread
+/// then carries no small block beside its steps, which the calling thread would let go
+/// and keep in its cache of small blocks, high in the helper's heap.
 pub(crate) struct Spots {
     steps: Vec<Step>,
-    /// The spots at indices 0, [`Spots::EVERY`], twice that, ...
-    marks: Vec<Spot>,
     aside: Vec<Spot>,
     /// The last spot, which the next is a step from.
     last: Spot,
@@ -70,21 +70,16 @@ pub(crate) struct Spots {
 
 impl Default for Spots {
     fn default() -> Spots {
-        Spots { steps: Vec::new(), marks: Vec::new(), aside: Vec::new(), last: Spots::START }
+        Spots { steps: Vec::new(), aside: Vec::new(), last: Spots::START }
     }
 }
 
 impl Spots {
-    const EVERY: usize = 32;
-
     /// What the first spot is a step from.
     const START: Spot = Spot::offset(0);
 
     #[inline]
     pub fn push(&mut self, spot: Spot) {
-        if self.steps.len() % Spots::EVERY == 0 {
-            self.marks.push(spot);
-        }
         let before = std::mem::replace(&mut self.last, spot);
         let step = spot.step_from(before).unwrap_or_else(|| {
             self.aside.push(spot);
@@ -93,33 +88,37 @@ impl Spots {
         self.steps.push(step);
     }
 
-    /// The `k`-th spot.
-    pub fn get(&self, k: usize) -> Spot {
-        let first = k / Spots::EVERY * Spots::EVERY;
-        let mark = self.marks[k / Spots::EVERY];
-        self.steps[first + 1..=k].iter().fold(mark, |spot, &step| self.step(spot, step))
-    }
-
     pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
         self.steps.iter().scan(Spots::START, |spot, &step| {
-            *spot = self.step(*spot, step);
+            *spot = match step.aside_index() {
+                Some(index) => self.aside[index],
+                None => spot.stepped(step),
+            };
             Some(*spot)
         })
     }
 
-    pub fn clear(&mut self) {
-        self.steps.clear();
-        self.marks.clear();
-        self.aside.clear();
-        self.last = Spots::START;
+    /// The spots at `indices` (each below the number of spots), in their order, found in
+    /// one pass over the steps.
+    pub fn at(&self, indices: &[usize]) -> Vec<Spot> {
+        let mut order: Vec<usize> = (0..indices.len()).collect();
+        order.sort_by_key(|&i| indices[i]);
+        let mut found = vec![Spots::START; indices.len()];
+        let (mut spots, mut next, mut spot) = (self.iter(), 0, Spots::START);
+        for i in order {
+            while next <= indices[i] {
+                spot = spots.next().expect("an index below the number of spots");
+                next += 1;
+            }
+            found[i] = spot;
+        }
+        found
     }
 
-    /// The spot `step` leads to from `spot`.
-    fn step(&self, spot: Spot, step: Step) -> Spot {
-        match step.aside_index() {
-            Some(index) => self.aside[index],
-            None => spot.stepped(step),
-        }
+    pub fn clear(&mut self) {
+        self.steps.clear();
+        self.aside.clear();
+        self.last = Spots::START;
     }
 }
 
@@ -284,7 +283,7 @@ mod tests {
 
     /// Every spot comes back as it went in, whether a step from the one before holds it or
     /// it is kept aside: far apart in lines or bytes, back in the file, past 4 GiB, on a
-    /// long line, on line `u32::MAX`; found one by one, from every index, and in order.
+    /// long line, on line `u32::MAX`; in order, and picked in any order.
     #[test]
     fn spots_come_back_as_they_went_in() {
         let at = |line, column, byte_offset| Spot::placed(Position { line, column, byte_offset });
@@ -318,7 +317,9 @@ mod tests {
         kept.clear();
         kept.extend(spots.iter().copied());
         assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
-        assert_eq!((0..spots.len()).map(|k| kept.get(k)).collect::<Vec<_>>(), spots);
+        let picked = [spots.len() - 1, 3, 0, 3, 200, 17];
+        assert_eq!(kept.at(&picked), picked.map(|k| spots[k]));
+        assert_eq!(kept.at(&[]), []);
         assert_eq!(format!("{kept:?}"), format!("{spots:?}"));
 
         let mut joints = JointOrigins::default();
