@@ -3,7 +3,7 @@
 //! builds; the reader fills it, and resolve and validate finish it.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot};
+use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot, Step};
 use crate::scene::SceneBuilder;
 
 /// A scene under construction, with what the later stages need to check it.
@@ -26,12 +26,12 @@ pub(crate) struct Origins {
     /// The root's start tag.
     pub world: Spot,
     /// Per fixture: its `Shape` value.
-    pub fixture_shapes: Vec<Spot>,
+    pub fixture_shapes: Spots,
     /// Per body: its tag.
-    pub bodies: Vec<Spot>,
+    pub bodies: Spots,
     /// Per entry of the fixture ID pool: its `ID` value.
-    pub fixture_ids: Vec<Spot>,
-    pub joints: Vec<JointOrigin>,
+    pub fixture_ids: Spots,
+    pub joints: JointOrigins,
     /// Version 3 (Farseer): per shape, its `Density` attribute (0 when absent).
     pub shape_densities: Vec<f32>,
     /// Version 3: every body's `Bindings`, in body order.
@@ -54,6 +54,117 @@ pub(crate) struct JointOrigin {
     pub body_b: Spot,
     pub joint_a: Spot,
     pub joint_b: Spot,
+}
+
+/// Spots in half the memory of a `Vec<Spot>`: a load holds one per object and per
+/// reference until it is checked. Each is the [`Step`] to it from the one before, in 8
+/// bytes, as a file's spots go, a few lines and bytes apart and in short lines; one no
+/// step holds is kept whole aside. They are read in order (a check looks up the few it
+/// reports in one pass, see [`Spots::at`]): a piece of the file read on the second thread
+/// then carries no small block beside its steps, which the calling thread would let go
+/// and keep in its cache of small blocks, high in the helper's heap.
+pub(crate) struct Spots {
+    steps: Vec<Step>,
+    aside: Vec<Spot>,
+    /// The last spot, which the next is a step from.
+    last: Spot,
+}
+
+impl Default for Spots {
+    fn default() -> Spots {
+        Spots { steps: Vec::new(), aside: Vec::new(), last: Spots::START }
+    }
+}
+
+impl Spots {
+    /// What the first spot is a step from.
+    const START: Spot = Spot::offset(0);
+
+    #[inline]
+    pub fn push(&mut self, spot: Spot) {
+        let before = std::mem::replace(&mut self.last, spot);
+        let step = spot.step_from(before).unwrap_or_else(|| {
+            self.aside.push(spot);
+            Step::aside(self.aside.len() - 1)
+        });
+        self.steps.push(step);
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
+        self.steps.iter().scan(Spots::START, |spot, &step| {
+            *spot = match step.aside_index() {
+                Some(index) => self.aside[index],
+                None => spot.stepped(step),
+            };
+            Some(*spot)
+        })
+    }
+
+    /// The spots at `indices` (each below the number of spots), in their order, found in
+    /// one pass over the steps.
+    pub fn at(&self, indices: &[usize]) -> Vec<Spot> {
+        let mut order: Vec<usize> = (0..indices.len()).collect();
+        order.sort_by_key(|&i| indices[i]);
+        let mut found = vec![Spots::START; indices.len()];
+        let (mut spots, mut next, mut spot) = (self.iter(), 0, Spots::START);
+        for i in order {
+            while next <= indices[i] {
+                spot = spots.next().expect("an index below the number of spots");
+                next += 1;
+            }
+            found[i] = spot;
+        }
+        found
+    }
+
+    pub fn clear(&mut self) {
+        self.steps.clear();
+        self.aside.clear();
+        self.last = Spots::START;
+    }
+}
+
+impl Extend<Spot> for Spots {
+    fn extend<I: IntoIterator<Item = Spot>>(&mut self, spots: I) {
+        for spot in spots {
+            self.push(spot);
+        }
+    }
+}
+
+impl std::fmt::Debug for Spots {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+/// The [`JointOrigin`]s, in [`Spots`]: four per joint.
+#[derive(Default)]
+pub(crate) struct JointOrigins(Spots);
+
+impl JointOrigins {
+    pub fn push(&mut self, origin: JointOrigin) {
+        let JointOrigin { body_a, body_b, joint_a, joint_b } = origin;
+        self.0.extend([body_a, body_b, joint_a, joint_b]);
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = JointOrigin> + '_ {
+        let mut spots = self.0.iter();
+        std::iter::from_fn(move || {
+            Some(JointOrigin {
+                body_a: spots.next()?,
+                body_b: spots.next()?,
+                joint_a: spots.next()?,
+                joint_b: spots.next()?,
+            })
+        })
+    }
+}
+
+impl std::fmt::Debug for JointOrigins {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
 }
 
 impl Arena {
@@ -150,20 +261,84 @@ impl Origins {
         let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs, .. } =
             other;
         let after = |s: Spot| s.after(start);
-        self.fixture_shapes.extend(fixture_shapes.into_iter().map(after));
-        self.bodies.extend(bodies.into_iter().map(after));
-        self.fixture_ids.extend(fixture_ids.into_iter().map(after));
-        self.joints.extend(joints.into_iter().map(|j| JointOrigin {
-            body_a: after(j.body_a),
-            body_b: after(j.body_b),
-            joint_a: after(j.joint_a),
-            joint_b: after(j.joint_b),
-        }));
+        self.fixture_shapes.extend(fixture_shapes.iter().map(after));
+        self.bodies.extend(bodies.iter().map(after));
+        self.fixture_ids.extend(fixture_ids.iter().map(after));
+        for j in joints.iter() {
+            self.joints.push(JointOrigin {
+                body_a: after(j.body_a),
+                body_b: after(j.body_b),
+                joint_a: after(j.joint_a),
+                joint_b: after(j.joint_b),
+            });
+        }
         self.shape_densities.extend(shape_densities);
         self.pairs.extend(pairs.into_iter().map(|p| Pair {
             body: p.body + bodies_before,
             fixture: (p.fixture.0, after(p.fixture.1)),
             shape: (p.shape.0, after(p.shape.1)),
         }));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every spot comes back as it went in, whether a step from the one before holds it or
+    /// it is kept aside: far apart in lines or bytes, back in the file, past 4 GiB, on a
+    /// long line, on line `u32::MAX`; in order, and picked in any order.
+    #[test]
+    fn spots_come_back_as_they_went_in() {
+        let at = |line, column, byte_offset| Spot::placed(Position { line, column, byte_offset });
+        let big = u64::from(u32::MAX);
+        let odd = [
+            Spot::offset(0),
+            Spot::offset(u32::MAX as usize),
+            at(0, 0, big + 1),
+            at(1, 1, 0),
+            at(7, 3, big),
+            at(7, 4, big + (1 << 31)),
+            at(7, 4, 1),
+            at(u32::MAX, 2, 9),
+            at(u32::MAX - 1, u32::MAX, 1 << 40),
+            at(40_000, 65_535, 1 << 40),
+            at(40_000, 65_536, (1 << 40) + 1),
+            at(2, 5, 40),
+            at(2 + 32_767, 5, 40 + (1 << 31) - 1),
+            at(2, 5, 40),
+        ];
+        // Ordinary spots a few lines apart, with the odd ones among them.
+        let spots: Vec<Spot> = (0..200)
+            .flat_map(|i: u32| {
+                let ordinary = at(3 * i + 1, i % 90 + 1, u64::from(i) * 97);
+                std::iter::once(ordinary).chain(odd.get(i as usize % 20).copied())
+            })
+            .collect();
+        let mut kept = Spots::default();
+        kept.extend(spots.iter().copied().filter(|s| !odd.contains(s)));
+        assert!(kept.aside.is_empty(), "{} aside", kept.aside.len());
+        kept.clear();
+        kept.extend(spots.iter().copied());
+        assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
+        let picked = [spots.len() - 1, 3, 0, 3, 200, 17];
+        assert_eq!(kept.at(&picked), picked.map(|k| spots[k]));
+        assert_eq!(kept.at(&[]), []);
+        assert_eq!(format!("{kept:?}"), format!("{spots:?}"));
+
+        let mut joints = JointOrigins::default();
+        let origins: Vec<_> = spots
+            .windows(4)
+            .map(|w| JointOrigin { body_a: w[0], body_b: w[1], joint_a: w[2], joint_b: w[3] })
+            .collect();
+        for &origin in &origins {
+            joints.push(origin);
+        }
+        assert_eq!(format!("{joints:?}"), format!("{origins:?}"));
+
+        kept.clear();
+        assert_eq!(kept.iter().count(), 0);
+        kept.extend(odd);
+        assert_eq!(kept.iter().collect::<Vec<_>>(), odd);
     }
 }

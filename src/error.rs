@@ -427,6 +427,33 @@ pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Prob
     Box::new(Finding::new(code, at, message))
 }
 
+/// A [`Spot`] in 8 bytes, as the step to it from the spot before it: how many lines on,
+/// its column, how many bytes on (see [`crate::arena::Spots`]). Or, for a spot no step
+/// holds, the mark that it is kept aside, with its index there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Step {
+    lines: i16,
+    column: u16,
+    bytes: i32,
+}
+
+impl Step {
+    /// The `lines` of the mark of a spot kept aside, which no step has.
+    const ASIDE: i16 = i16::MIN;
+
+    /// The mark of the spot kept aside at `index` (below 2^48).
+    pub fn aside(index: usize) -> Step {
+        let index = index as u64;
+        Step { lines: Step::ASIDE, column: (index >> 32) as u16, bytes: index as u32 as i32 }
+    }
+
+    /// The index of the spot kept aside that this step marks.
+    pub fn aside_index(self) -> Option<usize> {
+        let index = (u64::from(self.column) << 32) | u64::from(self.bytes as u32);
+        (self.lines == Step::ASIDE).then_some(index as usize)
+    }
+}
+
 /// Where something a later stage may report is: its position, placed while its text was
 /// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
 /// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
@@ -435,7 +462,7 @@ pub(crate) struct Spot(Position);
 
 impl Spot {
     /// Offset `at` of a text that stays in memory.
-    pub fn offset(at: usize) -> Spot {
+    pub const fn offset(at: usize) -> Spot {
         Spot(Position { line: 0, column: 0, byte_offset: at as u64 })
     }
 
@@ -451,6 +478,29 @@ impl Spot {
             0 => self,
             _ => Spot(self.0.after(start)),
         }
+    }
+
+    /// This spot as a step from `before`, when a [`Step`] holds it. (Offsets differ by
+    /// less than 2^63: a text is at most `isize::MAX` bytes.)
+    #[inline]
+    pub fn step_from(self, before: Spot) -> Option<Step> {
+        let (this, before) = (self.0, before.0);
+        let lines = i16::try_from(i64::from(this.line) - i64::from(before.line)).ok()?;
+        let bytes = this.byte_offset.wrapping_sub(before.byte_offset) as i64;
+        match (lines, u16::try_from(this.column), i32::try_from(bytes)) {
+            (Step::ASIDE, ..) | (_, Err(_), _) | (.., Err(_)) => None,
+            (lines, Ok(column), Ok(bytes)) => Some(Step { lines, column, bytes }),
+        }
+    }
+
+    /// The spot `step` leads to from this one.
+    #[inline]
+    pub fn stepped(self, step: Step) -> Spot {
+        Spot(Position {
+            line: self.0.line.wrapping_add_signed(step.lines.into()),
+            column: step.column.into(),
+            byte_offset: self.0.byte_offset.wrapping_add_signed(step.bytes.into()),
+        })
     }
 
     /// A finding here.

@@ -82,7 +82,7 @@ fn has(n: usize, one: &str, many: &str) -> String {
 fn check_references(p: &Arena) -> Parsed<()> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
-    for (i, (f, &at)) in s.fixtures.iter().zip(&p.origins.fixture_shapes).enumerate() {
+    for (i, (f, at)) in s.fixtures.iter().zip(p.origins.fixture_shapes.iter()).enumerate() {
         if f.shape as usize >= s.shapes.len() {
             let why = format!(
                 "fixture {i} names shape {}, but {}",
@@ -92,6 +92,8 @@ fn check_references(p: &Arena) -> Parsed<()> {
             errors.push(placed(Code::IdOutOfRange, at, why));
         }
     }
+    // Each unknown fixture ID by its index in the pool: their spots are found together.
+    let mut unknown_fixtures = Vec::new();
     for (i, b) in s.bodies.iter().enumerate() {
         for k in b.fixtures.indices() {
             let id = s.fixture_ids[k];
@@ -100,11 +102,15 @@ fn check_references(p: &Arena) -> Parsed<()> {
                     "body {i} names fixture {id}, but {}",
                     has(s.fixtures.len(), "fixture", "fixtures")
                 );
-                errors.push(placed(Code::IdOutOfRange, p.origins.fixture_ids[k], why));
+                unknown_fixtures.push((k, why));
             }
         }
     }
-    for (i, (j, at)) in s.joints.iter().zip(&p.origins.joints).enumerate() {
+    let (pool_indices, whys): (Vec<usize>, Vec<String>) = unknown_fixtures.into_iter().unzip();
+    for (at, why) in p.origins.fixture_ids.at(&pool_indices).into_iter().zip(whys) {
+        errors.push(placed(Code::IdOutOfRange, at, why));
+    }
+    for (i, (j, at)) in s.joints.iter().zip(p.origins.joints.iter()).enumerate() {
         for (body, side, at) in [(j.body_a, "BodyA", at.body_a), (j.body_b, "BodyB", at.body_b)] {
             if body as usize >= s.bodies.len() {
                 let why = format!(

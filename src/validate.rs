@@ -283,11 +283,11 @@ pub(crate) fn zero_density(
 /// Warns about every dynamic body that breaks the [`zero_density`] rule.
 pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
     let s = &arena.scene;
-    let found: Vec<Finding> = (s.bodies.iter().enumerate())
-        .filter_map(|(i, b)| {
+    let found: Vec<Finding> = (s.bodies.iter().zip(arena.origins.bodies.iter()).enumerate())
+        .filter_map(|(i, (b, at))| {
             let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
             let message = format!("dynamic body {i} {why}");
-            Some(arena.origins.bodies[i].finding(Code::DynamicBodyZeroDensity, message))
+            Some(at.finding(Code::DynamicBodyZeroDensity, message))
         })
         .collect();
     for warning in found {
