@@ -100,8 +100,8 @@ impl Spots {
         })
     }
 
-    /// The spots at `indices` (each below the number of spots), in their order, found in
-    /// one pass over the steps.
+    /// The spots at `indices`, in their order, found in one pass over the steps (the start
+    /// of the text for an index past the last).
     pub fn at(&self, indices: &[usize]) -> Vec<Spot> {
         let mut order: Vec<usize> = (0..indices.len()).collect();
         order.sort_by_key(|&i| indices[i]);
@@ -109,8 +109,8 @@ impl Spots {
         let (mut spots, mut next, mut spot) = (self.iter(), 0, Spots::START);
         for i in order {
             while next <= indices[i] {
-                spot = spots.next().expect("an index below the number of spots");
-                next += 1;
+                let Some(following) = spots.next() else { return found };
+                (spot, next) = (following, next + 1);
             }
             found[i] = spot;
         }
