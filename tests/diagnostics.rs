@@ -593,6 +593,16 @@ fn missing_container() {
     );
 }
 
+/// The world is checked as it ends, before what follows it is read: in strict mode its
+/// missing container is the error, though text after `</World>` is malformed too.
+#[test]
+fn a_missing_container_is_found_before_what_follows_the_world() {
+    let strict = LoadOptions { strict: true, ..LoadOptions::default() };
+    let xml = "⌖<World Version=\"1\"><Shapes/><Fixtures/><Bodies/></World>x";
+    expect_error_with(xml, Code::MissingContainer, &strict);
+    expect_error(&xml.replace('⌖', "").replace("</World>x", "</World>⌖x"), Code::MalformedXml);
+}
+
 #[test]
 fn filter_bits_truncated() {
     let xml = world(

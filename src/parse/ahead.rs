@@ -127,27 +127,29 @@ where
 /// read (when there is one) where the two meet.
 pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Parsed<()> {
     let mut seen = Seen::default();
-    let Some(mut helper) = helper else {
-        reader.document(&mut seen)?;
-        return reader.end_world(&seen);
-    };
-    reader.tok.end_before(ends(&helper.boundaries));
-    let mut read = reader.document(&mut seen);
-    // Where the reading stopped before a piece's item.
-    while read.as_ref().is_err_and(is_end_of_piece) {
-        let piece = reader.tok.pass_end();
-        if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
-            read = Ok(());
-            break;
-        }
-        let Some((root, tag)) = reader.tok.open_item() else {
-            return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
-        };
-        read = reader.document_from_item((&root, &tag), helper.boundaries[piece].1, &mut seen);
+    if let Some(helper) = &helper {
+        reader.tok.end_before(ends(&helper.boundaries));
     }
-    drop(helper);
+    let mut read = reader.document(&mut seen);
+    if let Some(mut helper) = helper {
+        // Where the reading stopped before a piece's item.
+        while read.as_ref().is_err_and(is_end_of_piece) {
+            let piece = reader.tok.pass_end();
+            if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
+                read = Ok(());
+                break;
+            }
+            let Some((root, tag)) = reader.tok.open_item() else {
+                return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
+            };
+            let container = helper.boundaries[piece].1;
+            read = reader.document_from_item((&root, &tag), container, &mut seen);
+        }
+    }
     read?;
-    reader.end_world(&seen)
+    reader.end_world(&seen)?;
+    // Read already when the helper's pieces were taken: the last one read it.
+    reader.epilog()
 }
 
 /// Where the readings end: before the item of each boundary, in its container.
@@ -272,7 +274,7 @@ fn read_piece(
     let read = reader.document_from_item((root, &tag), container, &mut seen);
     let ended = match read {
         // To the end of the file: the last piece.
-        Ok(()) => end.is_none(),
+        Ok(()) => end.is_none() && reader.epilog().is_ok(),
         Err(stopped) => is_end_of_piece(&stopped),
     };
     if !ended {

@@ -23,22 +23,21 @@ impl WorldChild {
 }
 
 impl<'a> Reader<'a> {
-    /// The document from its start: prolog, `<World>`, epilog. `seen` gets the world's
-    /// elements read; [`Reader::end_world`] ends the reading.
+    /// The document from its start to `</World>`: prolog and world. `seen` gets the world's
+    /// elements read; [`Reader::end_world`] and [`Reader::epilog`] end the reading.
     pub(super) fn document(&mut self, seen: &mut Seen) -> Parsed<()> {
         let root = self.root()?;
         self.place_comments(Object::World, Place::Before);
         // Placed now: the warnings about the world come once the file is read.
         self.arena.origins.world = self.spot(root.at);
         self.read_version(&root)?;
-        self.world_children(&root, seen)?;
-        self.epilog()
+        self.world_children(&root, seen)
     }
 
-    /// The document from the item at the tokenizer's offset on, in `container` (open, with
-    /// its start tag `tag`) in `root` (as where another reading stopped, or where a piece of
-    /// the text begins). `seen` has the world's elements read before and gets those read
-    /// now.
+    /// The document from the item at the tokenizer's offset on to `</World>`, in
+    /// `container` (open, with its start tag `tag`) in `root` (as where another reading
+    /// stopped, or where a piece of the text begins). `seen` has the world's elements read
+    /// before and gets those read now.
     pub(super) fn document_from_item(
         &mut self,
         (root, tag): (&Tag, &Tag),
@@ -46,12 +45,11 @@ impl<'a> Reader<'a> {
         seen: &mut Seen,
     ) -> Parsed<()> {
         self.container(tag, container)?;
-        self.world_children(root, seen)?;
-        self.epilog()
+        self.world_children(root, seen)
     }
 
-    /// Once the whole document is read, with `seen` the world's elements: warns of each
-    /// container the world did not have.
+    /// Once the world is read, with `seen` its elements: warns of each container it did not
+    /// have.
     pub(super) fn end_world(&mut self, seen: &Seen) -> Parsed<()> {
         for container in Container::ALL {
             if !seen.contains(WorldChild::of(container)) {
@@ -105,7 +103,8 @@ impl<'a> Reader<'a> {
         Ok(root)
     }
 
-    /// What follows `</World>`: blank text, comments and processing instructions only.
+    /// What follows `</World>`: blank text, comments and processing instructions only (once
+    /// read, nothing).
     pub(super) fn epilog(&mut self) -> Parsed<()> {
         loop {
             match self.tok.next_node()? {
