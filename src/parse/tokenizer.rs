@@ -355,14 +355,6 @@ impl<'a> Tokenizer<'a> {
         Ok(end)
     }
 
-    /// The text at hand from offset `from` to `to`: [`Source::slice`], inlined where a value
-    /// is converted.
-    #[inline(always)]
-    fn at_hand(&self, from: usize, to: usize) -> &str {
-        let base = self.source.base();
-        self.source.text().get(from - base..to - base).unwrap_or_default()
-    }
-
     /// Skips the white space before the next node, reading on when it reaches the end of
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
@@ -888,7 +880,7 @@ impl<'a> Tokenizer<'a> {
     ) -> Parsed<(T, usize)> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
-            return match convert(self.at_hand(at, end)) {
+            return match convert(self.source.slice(at, end)) {
                 Ok(v) => Ok((v, at)),
                 Err(e) => {
                     let value = Value { text: Text { at, end, resolved: None }, at };
