@@ -109,7 +109,7 @@ impl<'a> Source<'a> {
             }
         };
         let (text, stop) = cut_at_non_char(text, 0, stop);
-        Ok(Source::in_memory(text, 0, stop, encoding))
+        Ok(Source::holding(text, 0, stop, encoding))
     }
 
     /// Where a second reader may read pieces of this text: a UTF-8 text in memory that is
@@ -146,10 +146,7 @@ impl<'a> Source<'a> {
             let source = Source::memory(&bytes, options)?;
             let text = Cow::Owned(source.text.into_owned());
             let origin = Origin::Path(path);
-            return Ok(Source {
-                origin,
-                ..Source::in_memory(text, 0, source.stop, source.encoding)
-            });
+            return Ok(Source { origin, ..Source::holding(text, 0, source.stop, source.encoding) });
         }
         let bom = bytes == UTF8_BOM;
         let mut stream = Stream {
@@ -168,14 +165,15 @@ impl<'a> Source<'a> {
         let mut source = Source {
             file: Some(stream),
             origin: Origin::Path(path),
-            ..Source::in_memory(Cow::Owned(String::new()), 0, None, Encoding::Utf8 { bom })
+            ..Source::holding(Cow::Owned(String::new()), 0, None, Encoding::Utf8 { bom })
         };
         source.take_in(bytes, 0, last);
         Ok(source)
     }
 
-    /// A text all in memory, from `base` on, that ends early for the reason `stop`.
-    fn in_memory(
+    /// A source whose text at hand is `text`, from offset `base` on, ending early for the
+    /// reason `stop`; a text in memory, unless the caller gives it a file to read on from.
+    fn holding(
         text: Cow<'a, str>,
         base: usize,
         stop: Option<Finding>,
@@ -390,7 +388,7 @@ impl<'a> Pieces<'a> {
             }
         };
         // A piece is read whole: it has no file to read on from.
-        Some(Source::in_memory(text, base, None, encoding))
+        Some(Source::holding(text, base, None, encoding))
     }
 }
 

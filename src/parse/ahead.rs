@@ -313,7 +313,8 @@ impl Caller {
     }
 
     /// Appends to `reader`'s arena what the helper read from `first` on, to the end of the
-    /// file, and goes on reading where it ends, when every piece of it is usable and all of it together keeps the limits; whether it did.
+    /// file, and goes on reading where it ends, when every piece of it is usable and all
+    /// of it together keeps the limits; whether it did.
     fn take(&mut self, reader: &mut Reader, first: usize, seen: &mut Seen) -> bool {
         self.receive(first);
         let (mut bits, mut elements) = (seen.bits, reader.tok.elements());
