@@ -267,6 +267,37 @@ fn fuzz_warnings_truncated_before_the_last_kept_warning() {
     }
 }
 
+/// Fuzz finding (roundtrip target): a character reference may only name a character XML
+/// allows. `&#23;` in a body's Name loaded as U+0017, which the writer then refused; in an
+/// attribute kept verbatim, it was written back as a file no XML parser reads. Every such
+/// reference stops the load where it is written, in text and in attributes alike.
+#[test]
+fn fuzz_roundtrip_a_reference_to_a_character_xml_does_not_allow() {
+    let body = |inside: &str| world("", "", &format!("<Body Type=\"Static\"{inside}</Body>"), "");
+    for reference in ["&#23;", "&#x17;", "&#0;", "&#xD800;", "&#xFFFE;", "&#xFFFF;", "&#x110000;"] {
+        let marked = |at: &str| at.replace('@', &format!("⌖{reference}"));
+        for case in [
+            "><Name>a@b</Name>",
+            " Type2=\"a@\">",
+            "><UserData><a b=\"@\"/></UserData>",
+            "><UserData><a>x@</a></UserData>",
+            "><Unknown>@</Unknown>",
+        ] {
+            let error = expect_at(&body(&marked(case)), Code::MalformedXml);
+            assert!(error.message.contains("which XML does not allow"), "{}", error.message);
+        }
+    }
+    for reference in ["&#;", "&#x;", "&#-1;", "&#99999999999;", "&#1a;"] {
+        let error = expect_at(&body(&format!("><Name>a⌖{reference}</Name>")), Code::MalformedXml);
+        assert!(error.message.contains("is not a character reference"), "{}", error.message);
+    }
+    // The edges of what XML allows load, as the characters they name.
+    let allowed = "a&#9;&#xA;&#13;&#x20;&#xD7FF;&#xE000;&#xFFFD;&#x10000;&#x10FFFF;";
+    let scene = load_bytes(body(&format!("><Name>{allowed}</Name>")).as_bytes()).unwrap();
+    let name = scene.text(scene.bodies()[0].name).unwrap();
+    assert_eq!(name, "a\t\n\r \u{D7FF}\u{E000}\u{FFFD}\u{10000}\u{10FFFF}");
+}
+
 /// Loads `bytes` through a file of their own, with the default options.
 fn load_from_a_file(bytes: &[u8], name: &str) -> Result<Scene, Error> {
     let file = std::env::temp_dir().join(format!("box2scene-{name}-{}.xml", std::process::id()));

@@ -24,7 +24,7 @@ use super::names::{Name, SHORT};
 use super::shorten;
 use crate::LoadOptions;
 use crate::error::{Code, Finding, Parsed, Position, Problem, Spot, problem};
-use crate::input::{Encoding, Source};
+use crate::input::{Encoding, Source, first_non_char};
 use crate::scene::Vec2;
 use crate::text::{self, trim_xml, trim_xml_at};
 
@@ -999,6 +999,11 @@ impl<'a> Tokenizer<'a> {
                     "malformed XML: `<` in an attribute value (write `&lt;`)",
                 ));
             }
+            if let Some((_, raw)) = raw.filter(|(_, raw)| raw.contains('&')) {
+                // quick-xml resolves a reference to any character; ours to those XML allows,
+                // with the position of the first that names another.
+                resolve_text(raw, at)?;
+            }
             let value = match (attr.normalized_value(quick_xml::XmlVersion::Implicit1_0), raw) {
                 // Unchanged by normalisation: the text as written.
                 (Ok(Cow::Borrowed(_)), Some((_, raw))) => Cow::Borrowed(raw),
@@ -1408,10 +1413,9 @@ fn resolve_text(raw: &str, at: usize) -> Parsed<Resolved> {
             Some(semi) if after.as_bytes()[semi] == b';' => &after[..semi],
             _ => return Err(malformed(offset + amp, IllFormedError::UnclosedReference)),
         };
-        let reference = BytesRef::new(name);
-        match reference.resolve_char_ref() {
-            Ok(Some(c)) => out.text.push(c),
-            _ => match quick_xml::escape::resolve_predefined_entity(name) {
+        match name.starts_with('#') {
+            true => out.text.push(char_reference(name, offset + amp)?),
+            false => match quick_xml::escape::resolve_predefined_entity(name) {
                 Some(resolved) => out.text.push_str(resolved),
                 None => return Err(unknown_entity(name, offset + amp)),
             },
@@ -1445,6 +1449,25 @@ fn push_normalised(out: &mut Resolved, text: &str, at: usize) {
             offset += piece.len();
         }
     }
+}
+
+/// The character that the reference `&{name};` at `at` names (`name` begins with `#`):
+/// one of those XML allows, as a reference may not name any other (XML 1.0, section 4.1).
+fn char_reference(name: &str, at: usize) -> Parsed<char> {
+    use quick_xml::escape::{EscapeError::InvalidCharRef, ParseCharRefError as Number};
+    let bad =
+        |why: String| problem(Code::MalformedXml, at, format!("malformed XML: &{name}; {why}"));
+    let code = match BytesRef::new(name).resolve_char_ref() {
+        Ok(Some(c)) => u32::from(c),
+        Err(quick_xml::Error::Escape(InvalidCharRef(
+            Number::InvalidCodepoint(code) | Number::IllegalCharacter(code),
+        ))) => code,
+        _ => return Err(bad("is not a character reference (&#DIGITS; or &#xHEX;)".into())),
+    };
+    let allowed = |c: &char| first_non_char(c.encode_utf8(&mut [0; 4]).as_bytes()).is_none();
+    char::from_u32(code)
+        .filter(allowed)
+        .ok_or_else(|| bad(format!("names the character U+{code:04X}, which XML does not allow")))
 }
 
 #[cold]
