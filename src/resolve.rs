@@ -52,8 +52,10 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
 }
 
 /// What the file held beyond a template's records goes with the first fixture made from
-/// it; that of a template no Pair names, to the end of `<Fixtures>` (its attributes to
-/// `<World>`), so the writer still has it.
+/// it, so the writer still has it. That of a template no Pair names goes to the world:
+/// its unknown attributes to `<World>`, what it held inside to the world's end, as a
+/// container holds nothing but its items; the comments around it stay at the end of
+/// `<Fixtures>`.
 fn move_kept_of_templates(p: &mut Arena, templates: usize) {
     let mut first_made = vec![None; templates];
     for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
@@ -64,6 +66,9 @@ fn move_kept_of_templates(p: &mut Arena, templates: usize) {
         (kept.object, kept.place) = match (first_made[template as usize], kept.place) {
             (Some(made), place) => (Object::Fixture(made), place),
             (None, Place::Attribute) => (Object::World, Place::Attribute),
+            (None, Place::Inside { .. }) => {
+                (Object::World, Place::Inside { within: "", before: "" })
+            }
             (None, _) => {
                 let within = Container::Fixtures.name();
                 (Object::World, Place::Inside { within, before: "" })

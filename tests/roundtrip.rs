@@ -271,6 +271,45 @@ fn pair_attributes_go_onto_their_body_and_never_twice() {
     }
 }
 
+/// Fuzz finding (roundtrip target): what a Version 3 fixture template that no Pair names
+/// held beyond its records has no fixture to go back into. Its unknown elements went to
+/// the end of `<Fixtures>`, where a container allows nothing but its items, so the file
+/// written did not load; they go to the end of the world now, its unknown attributes onto
+/// `<World>` and the comments around it to the end of `<Fixtures>`, and all of it reads
+/// back there.
+#[test]
+fn fuzz_roundtrip_what_an_unnamed_template_held_is_written_where_it_reads_back() {
+    let xml = r#"<World Version="3">
+  <Shapes><Shape Type="Circle" Density="1"><Radius>1</Radius><Position>0 0</Position></Shape></Shapes>
+  <Fixtures>
+    <!-- the unnamed one -->
+    <Fixture Id="1" Layer="back"><FilterData><Ignores/></FilterData><Sound>thud</Sound></Fixture>
+    <Fixture Id="2"><Hint>a</Hint></Fixture>
+  </Fixtures>
+  <Bodies><Body Type="Dynamic"><Bindings><Pair FixtureId="1" ShapeId="0"/></Bindings></Body></Bodies>
+  <Joints/>
+</World>"#;
+    let scene = load_text(xml);
+    assert_eq!(scene.fixtures().len(), 1);
+    let written = assert_round_trip(&scene, "an unnamed template's content");
+    for (before, after) in [
+        ("<World Version=\"1\" Layer=\"back\">", "<Shapes>"),
+        ("<Hint>a</Hint>", "</Fixture>"),
+        ("<!-- the unnamed one -->", "</Fixtures>"),
+        ("<Joints />", "<Ignores/>"),
+        ("<Ignores/>", "<Sound>thud</Sound>"),
+        ("<Sound>thud</Sound>", "</World>"),
+    ] {
+        let (b, a) = (written.find(before), written.find(after));
+        assert!(
+            b.zip(a).is_some_and(|(b, a)| b < a && written[b + before.len()..a].trim().is_empty()),
+            "{before} is not just before {after}:\n{written}"
+        );
+    }
+    let again = load_text(&written);
+    assert_eq!(unknown_content(&again).len(), unknown_content(&scene).len());
+}
+
 /// Fuzz finding: a `<Centroid>` on a circle or an edge is ignored with a warning, so it must
 /// not mark the centroid as given, or the scene written reads back differently.
 #[test]
