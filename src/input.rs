@@ -1,12 +1,13 @@
 //! From the bytes of a file to UTF-8 text, and from offsets in that text back to lines,
 //! columns and byte offsets in the file.
 //!
-//! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory;
-//! a window that moves forward in chunks for a UTF-8 file read from a path, so a load never
-//! holds the whole file. Either way the text stops at the first byte that cannot be text
-//! (invalid UTF-8, a NUL or another character XML does not allow, an unpaired UTF-16
-//! surrogate, a read error) and the source says why, so a load reports the first problem
-//! in the file whichever way it was read.
+//! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory
+//! (at hand as far as it was checked for characters XML does not allow, a chunk at a time
+//! as it is read); a window that moves forward in chunks for a UTF-8 file read from a path,
+//! so a load never holds the whole file. Either way the text stops at the first byte that
+//! cannot be text (invalid UTF-8, a NUL or another character XML does not allow, an
+//! unpaired UTF-16 surrogate, a read error) and the source says why, so a load reports the
+//! first problem in the file whichever way it was read.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
@@ -38,10 +39,14 @@ pub struct Source<'a> {
     text: Cow<'a, str>,
     base: usize,
     /// A text in memory that is borrowed: all of it, of which `text` is what lies before
-    /// `limit`.
+    /// `limit` and `checked`.
     whole: Option<&'a str>,
     /// The text at hand goes no further than this offset, for now (see [`Source::end_at`]).
     limit: usize,
+    /// How far a text in memory was checked for characters XML does not allow: it is
+    /// checked as it is read, a chunk at a time, by the reader that reads it (see
+    /// [`Source::more`]), so that each of two threads checks what it reads.
+    checked: usize,
     /// The rest of a file read from a path.
     file: Option<Stream>,
     /// Why the text ends early; None when it ends with the file.
@@ -105,7 +110,12 @@ impl<'a> Source<'a> {
                 let body = if bom { &bytes[UTF8_BOM.len()..] } else { bytes };
                 check_utf16_without_bom(body)?;
                 let (text, stop) = valid_prefix(body, 0);
-                (Cow::Borrowed(text), Encoding::Utf8 { bom }, stop)
+                let mut source =
+                    Source::holding(Cow::Borrowed(text), 0, stop, Encoding::Utf8 { bom });
+                // Checked as it is read, from the first chunk on.
+                source.checked = 0;
+                source.check_on(0);
+                return Ok(source);
             }
         };
         let (text, stop) = cut_at_non_char(text, 0, stop);
@@ -171,8 +181,9 @@ impl<'a> Source<'a> {
         Ok(source)
     }
 
-    /// A source whose text at hand is `text`, from offset `base` on, ending early for the
-    /// reason `stop`; a text in memory, unless the caller gives it a file to read on from.
+    /// A source whose text at hand is `text`, from offset `base` on, checked, ending early
+    /// for the reason `stop`; a text in memory, unless the caller gives it a file to read on
+    /// from.
     fn holding(
         text: Cow<'a, str>,
         base: usize,
@@ -183,8 +194,8 @@ impl<'a> Source<'a> {
             Cow::Borrowed(text) => Some(text),
             Cow::Owned(_) => None,
         };
-        let (file, origin, limit) = (None, Origin::Memory, usize::MAX);
-        Source { text, base, whole, limit, file, stop, encoding, origin }
+        let (file, origin, limit, checked) = (None, Origin::Memory, usize::MAX, usize::MAX);
+        Source { text, base, whole, limit, checked, file, stop, encoding, origin }
     }
 
     pub fn encoding(&self) -> Encoding {
@@ -197,9 +208,14 @@ impl<'a> Source<'a> {
     /// `limit` already is left as it is.
     pub fn end_at(&mut self, limit: usize) {
         self.limit = limit;
+        self.cut_whole();
+    }
+
+    /// A text in memory at hand up to the limit, or to where it is checked.
+    fn cut_whole(&mut self) {
         if let Some(whole) = self.whole {
-            let cut = limit.checked_sub(self.base).and_then(|cut| whole.get(..cut));
-            self.text = Cow::Borrowed(cut.unwrap_or(whole));
+            let cut = self.limit.min(self.checked).checked_sub(self.base);
+            self.text = Cow::Borrowed(cut.and_then(|cut| whole.get(..cut)).unwrap_or(whole));
         }
     }
 
@@ -239,7 +255,7 @@ impl<'a> Source<'a> {
     pub fn more(&mut self, keep: usize) -> bool {
         let end = self.end();
         let Some(stream) = &mut self.file else {
-            return false;
+            return self.check_on(keep);
         };
         // Up to the limit, when it lies ahead.
         let room = match self.limit.checked_sub(end) {
@@ -282,12 +298,43 @@ impl<'a> Source<'a> {
         false
     }
 
-    /// Goes on reading a file at `offset`, past the text at hand, as if what lies between
-    /// had been read (another reader read it); false when that cannot be done. A text that
-    /// is all at hand has nothing to skip.
+    /// Checks more of a text in memory, up to the limit, for characters XML does not
+    /// allow: at least a chunk, and at least as much as is kept from `keep` on (as
+    /// [`Source::more`] reads a file). The text at hand stops before the first one found,
+    /// for that reason. Returns false when no more text came to hand.
+    fn check_on(&mut self, keep: usize) -> bool {
+        let Some(whole) = self.whole else {
+            return false;
+        };
+        let (from, end) = (self.checked, self.end());
+        if from >= whole.len() || from >= self.limit {
+            return false;
+        }
+        let mut to = from.saturating_add(CHUNK.max(from.saturating_sub(keep))).min(whole.len());
+        while !whole.is_char_boundary(to) {
+            to += 1;
+        }
+        self.checked = match first_non_char(&whole.as_bytes()[from..to]) {
+            Some(at) => {
+                self.stop = Some(non_char(whole, from + at, 0));
+                from + at
+            }
+            None => to,
+        };
+        self.cut_whole();
+        self.end() > end
+    }
+
+    /// Goes on reading at `offset`, past the text at hand, as if what lies between had
+    /// been read (another reader read it, and checked it); false when a file cannot be
+    /// read on from there.
     pub fn skip_to(&mut self, offset: usize) -> bool {
         let end = self.end();
         let Some(stream) = &mut self.file else {
+            if self.whole.is_some() {
+                self.checked = self.checked.max(offset);
+                self.cut_whole();
+            }
             return true;
         };
         let at = stream.bom + offset as u64;
@@ -376,7 +423,11 @@ impl<'a> Pieces<'a> {
     /// (valid UTF-8, only characters XML allows).
     pub fn source(&self, from: usize, to: usize) -> Option<Source<'a>> {
         let (text, base, encoding) = match self {
+            // Checked here, as the reader of a text in memory checks what it reads.
             Pieces::Memory { text, bom } => {
+                if first_non_char(text.as_bytes().get(from..to)?).is_some() {
+                    return None;
+                }
                 (Cow::Borrowed(text.get(..to)?), 0, Encoding::Utf8 { bom: *bom })
             }
             Pieces::File { bom, .. } => {
@@ -643,6 +694,48 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A text in memory is checked a chunk at a time as it is read (the longer the text
+    /// kept, the more at once): the text at hand stops before the first character XML does
+    /// not allow, or the first byte that is not UTF-8, whichever comes first, and only
+    /// once it is reached; a piece is a text only when it is checked all through.
+    #[test]
+    fn a_text_in_memory_is_checked_as_it_is_read() {
+        let text = "a".repeat(5 * CHUNK);
+        let options = LoadOptions::default();
+        let read_keeping = |bytes: &[u8], all: bool| {
+            let mut source = Source::memory(bytes, &options).unwrap();
+            assert_eq!(source.end(), CHUNK.min(bytes.len()));
+            let mut ends = vec![source.end()];
+            while source.more(if all { 0 } else { source.end() }) {
+                ends.push(source.end());
+            }
+            let stop = source.stop().map(|s| (s.code, s.at));
+            (ends, stop)
+        };
+        let read = |bytes: &[u8]| read_keeping(bytes, false);
+        assert_eq!(read(text.as_bytes()), ((1..=5).map(|k| k * CHUNK).collect(), None));
+        let doubling = vec![CHUNK, 2 * CHUNK, 4 * CHUNK, 5 * CHUNK];
+        assert_eq!(read_keeping(text.as_bytes(), true), (doubling, None));
+        let mut bytes = text.clone().into_bytes();
+        bytes[4 * CHUNK + 9] = 0x01;
+        let ends = vec![CHUNK, 2 * CHUNK, 3 * CHUNK, 4 * CHUNK, 4 * CHUNK + 9];
+        assert_eq!(read(&bytes), (ends, Some((Code::MalformedXml, 4 * CHUNK + 9))));
+        bytes[4 * CHUNK + 10] = 0xFF;
+        assert_eq!(read(&bytes).1, Some((Code::MalformedXml, 4 * CHUNK + 9)));
+        bytes[3 * CHUNK] = 0xFF;
+        assert_eq!(read(&bytes).1, Some((Code::InvalidUtf8, 3 * CHUNK)));
+        bytes[3 * CHUNK] = 0;
+        assert_eq!(read(&bytes).1, Some((Code::NulByte, 3 * CHUNK)));
+
+        let mut bytes = text.into_bytes();
+        bytes[2 * CHUNK] = 0x0B;
+        let source = Source::memory(&bytes, &options).unwrap();
+        let pieces = source.pieces().expect("a text in memory has pieces");
+        assert!(pieces.source(CHUNK, 2 * CHUNK).is_some());
+        assert!(pieces.source(2 * CHUNK, 3 * CHUNK).is_none());
+        assert!(pieces.source(2 * CHUNK + 1, 3 * CHUNK).is_some());
     }
 
     /// The second thread reads the file the first one opened, even when another file has

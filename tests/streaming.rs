@@ -259,6 +259,22 @@ fn a_large_file_loads_from_its_path_on_two_threads_as_on_one() {
     bytes[name + 2] = 0xFF;
     let error = same_both_ways_with(&bytes, "large-utf8", &LoadOptions::default()).unwrap_err();
     assert_eq!(error.code, Code::InvalidUtf8);
+    // Characters XML does not allow are found by the reader that reads them, on either
+    // thread, early or late in the file, the first one first.
+    let early = xml.len() / 8 + xml[xml.len() / 8..].find("<Name>").unwrap() + "<Name>".len();
+    for (what, at, byte, code) in [
+        ("large-control", name + 2, 0x01, Code::MalformedXml),
+        ("large-nul", name + 2, 0, Code::NulByte),
+        ("large-early-control", early, 0x1F, Code::MalformedXml),
+    ] {
+        let mut bytes = xml.clone().into_bytes();
+        bytes[at] = byte;
+        let error = same_both_ways_with(&bytes, what, &LoadOptions::default()).unwrap_err();
+        assert_eq!((error.code, error.position.byte_offset as usize), (code, at), "{what}");
+        bytes[name + 3] = 0xFF;
+        let error = same_both_ways_with(&bytes, what, &LoadOptions::default()).unwrap_err();
+        assert_eq!((error.code, error.position.byte_offset as usize), (code, at), "{what}");
+    }
     let mut mismatched = xml.clone();
     let at = late + xml[late..].find("</Position>").unwrap();
     mismatched.replace_range(at..at + "</Position>".len(), "</Positio>");

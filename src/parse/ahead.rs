@@ -741,6 +741,18 @@ mod tests {
             let got = shown(super::super::read(source, &options).0);
             assert_same(&got, &expected, format_args!("as the two threads met"));
         }
+        // A character XML does not allow, in a comment in each piece: whoever reads it
+        // stops there, the helper included, which leaves the piece to the calling thread.
+        for (k, &(at, _)) in pieces.iter().enumerate() {
+            let mut bad = text.clone();
+            bad.insert_str(at + text[at..].find('\n').unwrap(), "<!-- \u{1} -->");
+            let expected = outcome(bad.as_bytes(), &options, None);
+            assert!(expected.contains("U+0001"), "{}", &expected[..200]);
+            for helped in [0, k, k + 1] {
+                let got = outcome(bad.as_bytes(), &options, Some((pieces.clone(), helped)));
+                assert_same(&got, &expected, format_args!("piece {k} bad, helped from {helped}"));
+            }
+        }
     }
 
     /// The helper's pieces are used where the assumptions hold: given a text with one more

@@ -8,8 +8,8 @@
 //! attribute iterator reads and checks the other attributes, its reference and declaration
 //! types resolve entities and read the XML declaration, and its errors are the messages.
 //! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
-//! again; the text here was checked once, as a whole, and slices of it at ASCII markup are
-//! text by construction.
+//! again; the text here was checked once by its source, and slices of it at ASCII markup
+//! are text by construction.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
