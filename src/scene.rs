@@ -733,9 +733,6 @@ impl SceneBuilder {
         Str::pending(offset)
     }
 
-    /// Appends what `other` read after this builder's last object: its objects after
-    /// these, their pool ranges, user data indices and strings moved along. A gravity
-    /// is taken only when this builder has none.
     /// Lets go of the room its arrays hold beyond what they hold (a piece read on the second
     /// thread waits with only what it needs until it is appended).
     pub fn shrink_to_fit(&mut self) {
@@ -751,6 +748,9 @@ impl SceneBuilder {
         self.strings.shrink_to_fit();
     }
 
+    /// Appends what `other` read after this builder's last object: its objects after
+    /// these, their pool ranges, user data indices and strings moved along. A gravity
+    /// is taken only when this builder has none.
     pub fn append(&mut self, other: SceneBuilder) {
         let SceneBuilder {
             version: _,
