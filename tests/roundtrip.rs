@@ -184,34 +184,44 @@ fn fmt_of_every_scene_file_loses_nothing_the_file_said() {
     }
 }
 
-#[test]
-fn kept_content_goes_back_where_it_was() {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let scene =
-        load_path(root.join("tests/scenes/kept-content.xml"), &LoadOptions::default()).unwrap();
-    let written = write(&scene, &WriteOptions::default()).unwrap();
-    for (before, after) in [
-        ("<!-- before the world -->", "<World Version=\"2\">"),
-        ("<Body Type=\"Static\" Author=\"level-tool\">", "<Fixtures />"),
-        ("<!-- before the gravity -->", "<Gravity>"),
-        ("<!-- the first shape -->", "<Shape Type=\"Circle\" Layer=\"front\">"),
-        ("<!-- before the position -->", "<Position>"),
-        ("<!-- between shapes -->", "<Shape Type=\"Polygon\">"),
-        ("<!-- before the end of the shapes -->", "</Shapes>"),
-        ("<!-- inside the filter -->", "<Priority>2</Priority>"),
-        ("<Priority>2</Priority>", "</FilterData>"),
-        ("<Spin>1</Spin>", "</MassData>"),
-        ("<!-- at the end of the body -->", "</Body>"),
-        ("<Wind Strength=\"3\">east</Wind>", "<!-- before the end of the world -->"),
-        ("<!-- before the end of the world -->", "</World>"),
-        ("</World>", "<!-- after the world -->"),
-    ] {
+/// Panics unless each `(before, after)` of `pairs` is written in `written` with only white
+/// space between them.
+#[track_caller]
+fn assert_just_before(written: &str, pairs: &[(&str, &str)]) {
+    for &(before, after) in pairs {
         let (b, a) = (written.find(before), written.find(after));
         assert!(
             b.zip(a).is_some_and(|(b, a)| b < a && written[b + before.len()..a].trim().is_empty()),
             "{before} is not just before {after}:\n{written}"
         );
     }
+}
+
+#[test]
+fn kept_content_goes_back_where_it_was() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let scene =
+        load_path(root.join("tests/scenes/kept-content.xml"), &LoadOptions::default()).unwrap();
+    let written = write(&scene, &WriteOptions::default()).unwrap();
+    assert_just_before(
+        &written,
+        &[
+            ("<!-- before the world -->", "<World Version=\"2\">"),
+            ("<Body Type=\"Static\" Author=\"level-tool\">", "<Fixtures />"),
+            ("<!-- before the gravity -->", "<Gravity>"),
+            ("<!-- the first shape -->", "<Shape Type=\"Circle\" Layer=\"front\">"),
+            ("<!-- before the position -->", "<Position>"),
+            ("<!-- between shapes -->", "<Shape Type=\"Polygon\">"),
+            ("<!-- before the end of the shapes -->", "</Shapes>"),
+            ("<!-- inside the filter -->", "<Priority>2</Priority>"),
+            ("<Priority>2</Priority>", "</FilterData>"),
+            ("<Spin>1</Spin>", "</MassData>"),
+            ("<!-- at the end of the body -->", "</Body>"),
+            ("<Wind Strength=\"3\">east</Wind>", "<!-- before the end of the world -->"),
+            ("<!-- before the end of the world -->", "</World>"),
+            ("</World>", "<!-- after the world -->"),
+        ],
+    );
     let angle = "<TargetAngle>0.5</TargetAngle>\n    </Joint>\n    <Joint Type=\"Revolute\">";
     assert!(written.contains(angle), "the Angle joint in its place:\n{written}");
     let gear = scene.joints()[3];
@@ -292,20 +302,17 @@ fn fuzz_roundtrip_what_an_unnamed_template_held_is_written_where_it_reads_back()
     let scene = load_text(xml);
     assert_eq!(scene.fixtures().len(), 1);
     let written = assert_round_trip(&scene, "an unnamed template's content");
-    for (before, after) in [
-        ("<World Version=\"1\" Layer=\"back\">", "<Shapes>"),
-        ("<Hint>a</Hint>", "</Fixture>"),
-        ("<!-- the unnamed one -->", "</Fixtures>"),
-        ("<Joints />", "<Ignores/>"),
-        ("<Ignores/>", "<Sound>thud</Sound>"),
-        ("<Sound>thud</Sound>", "</World>"),
-    ] {
-        let (b, a) = (written.find(before), written.find(after));
-        assert!(
-            b.zip(a).is_some_and(|(b, a)| b < a && written[b + before.len()..a].trim().is_empty()),
-            "{before} is not just before {after}:\n{written}"
-        );
-    }
+    assert_just_before(
+        &written,
+        &[
+            ("<World Version=\"1\" Layer=\"back\">", "<Shapes>"),
+            ("<Hint>a</Hint>", "</Fixture>"),
+            ("<!-- the unnamed one -->", "</Fixtures>"),
+            ("<Joints />", "<Ignores/>"),
+            ("<Ignores/>", "<Sound>thud</Sound>"),
+            ("<Sound>thud</Sound>", "</World>"),
+        ],
+    );
     let again = load_text(&written);
     assert_eq!(unknown_content(&again).len(), unknown_content(&scene).len());
 }
