@@ -14,7 +14,7 @@
 //! file: the helper reads a file's pieces with a handle of its own, one piece at a time.
 
 use std::sync::{Arc, Mutex, PoisonError, mpsc};
-use std::thread::Scope;
+use std::thread::{Scope, ScopedJoinHandle};
 
 use super::names::{Element, Name};
 use super::tokenizer::{Stop, Tokenizer, is_end_of_piece};
@@ -42,12 +42,15 @@ const MAX_PIECES: usize = 64;
 pub(super) type Boundary = (usize, Container);
 
 /// The helper, as the calling thread sees it.
-pub(super) struct Caller {
+pub(super) struct Caller<'scope> {
     boundaries: Vec<Boundary>,
     claims: Arc<Mutex<Claims>>,
     done: mpsc::Receiver<(usize, Option<Done>)>,
     /// What the helper read, by piece.
     pieces: Vec<Piece>,
+    /// The helper's thread, which ends with the buffer it read a file's pieces into: that
+    /// is let go here, with this, once the pieces are taken (see [`Pieces::source`]).
+    _thread: ScopedJoinHandle<'scope, Vec<u8>>,
 }
 
 /// Who reads which piece: the calling thread those before `caller`, the helper those from
@@ -95,7 +98,7 @@ pub(super) fn start<'a, 'scope>(
     pieces: Option<Pieces<'a>>,
     options: &'a LoadOptions,
     split: Option<(Vec<Boundary>, usize)>,
-) -> Option<Caller>
+) -> Option<Caller<'scope>>
 where
     'a: 'scope,
 {
@@ -118,9 +121,10 @@ where
     let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped.min(boundaries.len()) }));
     let (sender, done) = mpsc::channel();
     let (their_boundaries, their_claims) = (boundaries.clone(), Arc::clone(&claims));
-    scope.spawn(move || help(pieces, options, &their_boundaries, &their_claims, &sender));
+    let thread =
+        scope.spawn(move || help(pieces, options, &their_boundaries, &their_claims, &sender));
     let pieces = boundaries.iter().map(|_| Piece::Waiting).collect();
-    Some(Caller { boundaries, claims, done, pieces })
+    Some(Caller { boundaries, claims, done, pieces, _thread: thread })
 }
 
 /// Reads the whole document with `reader`, the calling thread's, taking what the helper
@@ -214,41 +218,51 @@ fn item_after_its_twin(text: &[u8], at: usize) -> Option<Container> {
 /// The helper: reads the root's start tag, then claims and reads the pieces from the last
 /// one back until it reaches one the calling thread has claimed, or one it cannot use (the
 /// pieces before it could not be used either: the calling thread takes the pieces from one
-/// on to the end).
+/// on to the end). Returns the buffer it read a file's pieces into.
 fn help(
     text: Pieces<'_>,
     options: &LoadOptions,
     boundaries: &[Boundary],
     claims: &Mutex<Claims>,
     sender: &mpsc::Sender<(usize, Option<Done>)>,
-) {
-    let Some((root, version)) = root(&text, options, boundaries[0].0) else { return };
+) -> Vec<u8> {
+    let mut buffer = Vec::new();
+    let Some((root, version)) = root(&text, options, boundaries[0].0, &mut buffer) else {
+        return buffer;
+    };
     for piece in (0..boundaries.len()).rev() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
             if piece < claims.helper.min(claims.caller) {
-                return;
+                break;
             }
             claims.helper = claims.helper.min(piece);
         }
         let end = boundaries.get(piece + 1).copied();
         let at = boundaries[piece].0;
         let done = text
-            .source(at, end.map_or(text.len(), |(end, _)| end))
+            .source(at, end.map_or(text.len(), |(end, _)| end), &mut buffer)
             .and_then(|source| read_piece(source, options, &root, version, boundaries[piece], end));
         let usable = done.is_some();
         if sender.send((piece, done)).is_err() || !usable {
-            return;
+            break;
         }
     }
+    buffer
 }
 
 /// The root's start tag and the Version it says, read from the start of the text (before
-/// `first`, the first piece's start, and its last `<` within the first [`SEARCH_BYTES`]).
-fn root(text: &Pieces, options: &LoadOptions, first: usize) -> Option<(Tag, u32)> {
+/// `first`, the first piece's start, and its last `<` within the first [`SEARCH_BYTES`]),
+/// a file's into `buffer`.
+fn root(
+    text: &Pieces,
+    options: &LoadOptions,
+    first: usize,
+    buffer: &mut Vec<u8>,
+) -> Option<(Tag, u32)> {
     let head = text.bytes(0, first.min(SEARCH_BYTES))?;
     let end = memchr::memrchr(b'<', &head)?;
-    let mut reader = Reader::new(Tokenizer::new(text.source(0, end)?, options));
+    let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options));
     let root = reader.root().ok()?;
     reader.read_version(&root).ok()?;
     Some((root, reader.arena.version))
@@ -288,7 +302,7 @@ fn read_piece(
     Some(Done { arena, elements, end: stopped, stop: end.is_none().then_some(stop), seen })
 }
 
-impl Caller {
+impl Caller<'_> {
     /// Claims `piece` for the calling thread, which has reached or passed where it begins,
     /// and keeps the helper from those before it; whether the helper had not claimed it.
     fn claim(&self, piece: usize) -> bool {
@@ -366,7 +380,7 @@ impl Caller {
     }
 }
 
-impl Drop for Caller {
+impl Drop for Caller<'_> {
     /// The helper starts no piece once the calling thread is done with them.
     fn drop(&mut self) {
         self.claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
