@@ -356,6 +356,8 @@ fn unwritable_user_data_is_refused() {
         ("<?xml version=\"1.0\"?><Type>x</Type>", Code::MalformedXml),
         ("<Type>a\u{1}</Type>", Code::MalformedXml),
         ("<Type>\u{FFFF}</Type>", Code::MalformedXml),
+        ("<Type>a&#x1;</Type>", Code::MalformedXml),
+        ("<Value at=\"&#0;\"/>", Code::MalformedXml),
         ("<!DOCTYPE x>", Code::DoctypeForbidden),
         (long.as_str(), Code::LimitExceeded),
         // A written UserData is the fourth level of its file, which may have 64.
