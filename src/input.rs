@@ -38,8 +38,8 @@ pub struct Source<'a> {
     /// The text from `base` on that is at hand.
     text: Cow<'a, str>,
     base: usize,
-    /// A text in memory that is borrowed: all of it, of which `text` is what lies before
-    /// `limit` and `checked`.
+    /// A text that is borrowed (in memory, or a piece read into a reader's buffer): all of
+    /// it from `base` on, of which `text` is what lies before `limit` and `checked`.
     whole: Option<&'a str>,
     /// The text at hand goes no further than this offset, for now (see [`Source::end_at`]).
     limit: usize,
@@ -410,9 +410,9 @@ impl<'a> Pieces<'a> {
     pub fn bytes(&self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
         match self {
             Pieces::Memory { text, .. } => text.as_bytes().get(from..to).map(Cow::Borrowed),
-            Pieces::File { file, bom, .. } => {
-                let mut bytes = vec![0; to.checked_sub(from)?];
-                read_exact_at(file, &mut bytes, bom + from as u64).ok()?;
+            Pieces::File { .. } => {
+                let mut bytes = Vec::new();
+                self.read_into(from, to, &mut bytes)?;
                 Some(Cow::Owned(bytes))
             }
         }
@@ -424,8 +424,8 @@ impl<'a> Pieces<'a> {
     ///
     /// One buffer serves all the pieces a reader reads, so that no block the size of a
     /// piece is let go after each: glibc would take that as a sign to serve every block up
-    /// to that size from its heaps, where the blocks of a load let go stay resident (the
-    /// peak of a 100 MB load from a path was a fifth higher).
+    /// to that size from its heaps, where the blocks of a load let go stay resident (a fifth
+    /// more at the peak of a 100 MB load from a path).
     pub fn source<'s>(
         &'s self,
         from: usize,
@@ -440,10 +440,8 @@ impl<'a> Pieces<'a> {
                 }
                 (text.get(..to)?, 0, Encoding::Utf8 { bom: *bom })
             }
-            Pieces::File { file, bom, .. } => {
-                buffer.clear();
-                buffer.resize(to.checked_sub(from)?, 0);
-                read_exact_at(file, buffer, bom + from as u64).ok()?;
+            Pieces::File { bom, .. } => {
+                self.read_into(from, to, buffer)?;
                 let text = std::str::from_utf8(buffer).ok()?;
                 if first_non_char(text.as_bytes()).is_some() {
                     return None;
@@ -453,6 +451,15 @@ impl<'a> Pieces<'a> {
         };
         // A piece is read whole: it has no file to read on from.
         Some(Source::holding(Cow::Borrowed(text), base, None, encoding))
+    }
+
+    /// Reads the bytes of a file's text from `from` to `to` into `buffer`, in place of what
+    /// it held.
+    fn read_into(&self, from: usize, to: usize, buffer: &mut Vec<u8>) -> Option<()> {
+        let Pieces::File { file, bom, .. } = self else { return None };
+        buffer.clear();
+        buffer.resize(to.checked_sub(from)?, 0);
+        read_exact_at(file, buffer, bom + from as u64).ok()
     }
 }
 
