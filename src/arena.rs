@@ -264,14 +264,7 @@ impl Origins {
         self.fixture_shapes.extend(fixture_shapes.iter().map(after));
         self.bodies.extend(bodies.iter().map(after));
         self.fixture_ids.extend(fixture_ids.iter().map(after));
-        for j in joints.iter() {
-            self.joints.push(JointOrigin {
-                body_a: after(j.body_a),
-                body_b: after(j.body_b),
-                joint_a: after(j.joint_a),
-                joint_b: after(j.joint_b),
-            });
-        }
+        self.joints.0.extend(joints.0.iter().map(after));
         self.shape_densities.extend(shape_densities);
         self.pairs.extend(pairs.into_iter().map(|p| Pair {
             body: p.body + bodies_before,

@@ -110,10 +110,12 @@ impl<'a> Source<'a> {
                 let body = if bom { &bytes[UTF8_BOM.len()..] } else { bytes };
                 check_utf16_without_bom(body)?;
                 let (text, stop) = valid_prefix(body, 0);
-                let mut source =
-                    Source::holding(Cow::Borrowed(text), 0, stop, Encoding::Utf8 { bom });
                 // Checked as it is read, from the first chunk on.
-                source.checked = 0;
+                let encoding = Encoding::Utf8 { bom };
+                let mut source = Source {
+                    checked: 0,
+                    ..Source::holding(Cow::Borrowed(text), 0, stop, encoding)
+                };
                 source.check_on(0);
                 return Ok(source);
             }
