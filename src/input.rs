@@ -444,7 +444,7 @@ impl<'a> Pieces<'a> {
             }
             Pieces::File { bom, .. } => {
                 self.read_into(from, to, buffer)?;
-                let text = std::str::from_utf8(buffer).ok()?;
+                let text = utf8(buffer).ok()?;
                 if first_non_char(text.as_bytes()).is_some() {
                     return None;
                 }
@@ -507,6 +507,10 @@ fn missing_of_last_char(bytes: &[u8]) -> usize {
 
 /// The longest valid UTF-8 prefix of `bytes`, and the `invalid-utf8` stop after it.
 fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Finding>) {
+    if let Ok(text) = utf8(bytes) {
+        return (text, None);
+    }
+    // simdutf8 says only that the text goes wrong; the standard library says where.
     match std::str::from_utf8(bytes) {
         Ok(text) => (text, None),
         Err(e) => {
@@ -514,6 +518,14 @@ fn valid_prefix(bytes: &[u8], base: usize) -> (&str, Option<Finding>) {
             (valid, Some(invalid_utf8(base + valid.len())))
         }
     }
+}
+
+/// `bytes` as a `str`, when they are UTF-8, checked by simdutf8 with the vector
+/// instructions the machine has. The whole text of a load from memory is checked before a
+/// second thread can begin: on the 10 MB benchmark scene, the standard library's check
+/// takes 2.5 times the instructions and 1.7 times the time.
+fn utf8(bytes: &[u8]) -> Result<&str, simdutf8::basic::Utf8Error> {
+    simdutf8::basic::from_utf8(bytes)
 }
 
 /// The `invalid-utf8` stop at offset `at`.
