@@ -122,7 +122,9 @@ impl Lines {
     fn units(&self, bytes: &[u8]) -> u64 {
         match self.encoding {
             // A character of four UTF-8 bytes is two units; every other is one.
-            Encoding::Utf16 { .. } => characters(bytes) + count(bytes, |b| b >= 0xF0),
+            Encoding::Utf16 { .. } => {
+                characters(bytes) + bytes.iter().filter(|&&b| b >= 0xF0).count() as u64
+            }
             Encoding::Utf8 { .. } => 0,
         }
     }
@@ -152,55 +154,18 @@ fn line_ends(bytes: &[u8], after_cr: bool) -> u32 {
     u32::try_from(ends).unwrap_or(u32::MAX)
 }
 
-/// How many bytes of `bytes` are line feeds and carriage returns, in one pass the compiler
-/// vectorises (see [`BLOCK`]). A load from a path counts every byte it lets go this way.
+/// How many bytes of `bytes` are line feeds and carriage returns. A load from a path counts
+/// every byte it lets go this way, and a load from memory with warnings every byte up to
+/// the last one: bytecount counts them with the vector instructions the machine has (32
+/// bytes at a time where a byte-by-byte loop the compiler vectorises took 16), which the
+/// crate's own code may not use without unsafe.
 fn feeds_and_returns(bytes: &[u8]) -> (u64, u64) {
-    let in_block = |block: &[u8; BLOCK]| {
-        let (mut feeds, mut returns) = (0u8, 0u8);
-        for &b in block {
-            feeds += u8::from(b == b'\n');
-            returns += u8::from(b == b'\r');
-        }
-        (u64::from(feeds), u64::from(returns))
-    };
-    let mut blocks = bytes.chunks_exact(BLOCK);
-    let mut counts = in_block(&last_block(blocks.remainder()));
-    for block in &mut blocks {
-        let (feeds, returns) = in_block(block.first_chunk().unwrap_or(&[0; BLOCK]));
-        counts = (counts.0 + feeds, counts.1 + returns);
-    }
-    counts
-}
-
-/// The bytes counted at a time, each count in a byte: a length the compiler knows, so that
-/// it compares whole vectors of them (over a length it does not know, its loop took four
-/// bytes at a time).
-const BLOCK: usize = 64;
-
-/// The bytes after the last whole block, then zeros, which no count counts: a block of the
-/// length the compiler knows costs fewer instructions than a loop over the bytes left.
-fn last_block(rest: &[u8]) -> [u8; BLOCK] {
-    let mut block = [0; BLOCK];
-    block[..rest.len()].copy_from_slice(rest);
-    block
+    (bytecount::count(bytes, b'\n') as u64, bytecount::count(bytes, b'\r') as u64)
 }
 
 /// The characters of UTF-8 `bytes`: every byte that does not continue a sequence.
 fn characters(bytes: &[u8]) -> u64 {
-    bytes.len() as u64 - count(bytes, |b| b & 0xC0 == 0x80)
-}
-
-/// How many bytes of `bytes` are `wanted`, which a zero byte is not (see [`last_block`]).
-/// Lines are short, so a search per byte found costs more than a count, which the
-/// compiler vectorises (see [`BLOCK`]).
-fn count(bytes: &[u8], wanted: impl Fn(u8) -> bool) -> u64 {
-    debug_assert!(!wanted(0), "the last block is padded with zeros");
-    let count_in =
-        |block: &[u8; BLOCK]| u64::from(block.iter().fold(0u8, |n, &b| n + u8::from(wanted(b))));
-    let mut blocks = bytes.chunks_exact(BLOCK);
-    let rest = count_in(&last_block(blocks.remainder()));
-    let blocks = (&mut blocks).map(|block| count_in(block.first_chunk().unwrap_or(&[0; BLOCK])));
-    rest + blocks.sum::<u64>()
+    bytecount::num_chars(bytes) as u64
 }
 
 #[cfg(test)]
@@ -266,12 +231,13 @@ mod tests {
         }
     }
 
-    /// The counts by blocks are the counts byte by byte, for every length around a block.
+    /// The counts are the counts byte by byte, for every length around the widths of the
+    /// vectors they are counted by.
     #[test]
-    fn counts_by_blocks_are_counts_byte_by_byte() {
+    fn counts_are_counts_byte_by_byte() {
         let mut state = 0x2545_F491_4F6C_DD1Du64;
         let alphabet = [b'\n', b'\r', b'a', 0x80, 0xBF, 0xC3, 0xF0, b' '];
-        for len in 0..4 * BLOCK + 3 {
+        for len in 0..4 * 64 + 3 {
             let bytes: Vec<u8> = (0..len)
                 .map(|_| {
                     state ^= state << 13;
@@ -283,7 +249,7 @@ mod tests {
             let naive = |wanted: u8| bytes.iter().filter(|&&b| b == wanted).count() as u64;
             assert_eq!(feeds_and_returns(&bytes), (naive(b'\n'), naive(b'\r')), "{len}");
             let continuing = bytes.iter().filter(|&&b| b & 0xC0 == 0x80).count() as u64;
-            assert_eq!(count(&bytes, |b| b & 0xC0 == 0x80), continuing, "{len}");
+            assert_eq!(characters(&bytes), len as u64 - continuing, "{len}");
         }
     }
 
