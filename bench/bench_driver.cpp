@@ -18,7 +18,9 @@
 //                                  counts only b2s_write_memory there), and `path` loads
 //                                  FILE with box2scene from its path instead, as
 //                                  b2s_load_file reads it. THREADS is box2scene's `threads`
-//                                  option, 0 (its choice) by default.
+//                                  option, 0 (its choice) by default. LOADER `floor` only
+//                                  finds the markup and converts the numbers
+//                                  (bench/floor_scan.hpp): a floor under both loaders' counts.
 //
 // LOADER is box2scene or pugixml.
 #include <box2d/box2d.h>
@@ -37,6 +39,7 @@
 #include <vector>
 
 #include "file_bytes.hpp"
+#include "floor_scan.hpp"
 #include "pugi_loader.hpp"
 
 namespace {
@@ -272,6 +275,11 @@ int load_once(const std::string& loader, const char* path, uint32_t threads) {
         std::printf("%zu\n", written);
         b2s_text_free(text);
         b2s_scene_free(scene);
+    } else if (loader == "floor") {
+        bench::FloorCount count = bench::floor_scan(bytes.get(), size);
+        std::printf("%llu start tags, %llu numbers adding up to %g\n",
+                    static_cast<unsigned long long>(count.start_tags),
+                    static_cast<unsigned long long>(count.numbers), count.sum);
     } else if (loader == "pugixml") {
         bench::PugiScene scene;
         peer_from_memory(std::move(bytes), size, scene);
@@ -281,7 +289,7 @@ int load_once(const std::string& loader, const char* path, uint32_t threads) {
 
 bool is_loader(const std::string& name, bool or_others) {
     return name == "box2scene" || name == "pugixml" ||
-           (or_others && (name == "read" || name == "write" || name == "path"));
+           (or_others && (name == "read" || name == "write" || name == "path" || name == "floor"));
 }
 
 } // namespace
@@ -300,7 +308,7 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr,
                  "usage: %s time RUNS FILE... | rss box2scene|pugixml FILE | "
-                 "once read|box2scene|pugixml|write|path FILE [THREADS]\n",
+                 "once read|box2scene|pugixml|write|path|floor FILE [THREADS]\n",
                  argv[0]);
     return 2;
 }
