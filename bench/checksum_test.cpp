@@ -39,21 +39,28 @@ void print_parts(const char* who, const bench::SceneChecksum& c) {
 
 /// Whether box2scene gives the warnings the generator promises: none, or one
 /// `dynamic-body-zero-density` for each of a tenth of the bodies, capped as every scene's
-/// warnings are; says what differs when it does not.
+/// warnings are; says what differs when it does not. The generator places the bodies of a
+/// joint at random, so its joints start violated: `joint-starts-violated`, which comes
+/// after the others, says so of the level, not of what was read, and is not counted.
 bool expected_warnings(const std::string& what, const b2s_scene_view& view,
                        bench::Warnings warnings) {
     uint32_t warned = warnings == bench::Warnings::none ? 0 : view.body_count / 10;
     uint32_t kept = std::min<uint32_t>(warned, B2S_MAX_WARNINGS);
     uint32_t count = kept + (warned > kept ? 1 : 0); // and one warnings-truncated
-    bool as_promised = view.diagnostic_count == count;
+    uint32_t given = view.diagnostic_count;
+    while (given > count && view.diagnostics[given - 1].code != B2S_CODE_DYNAMIC_BODY_ZERO_DENSITY &&
+           (view.diagnostics[given - 1].code == B2S_CODE_JOINT_STARTS_VIOLATED ||
+            view.diagnostics[given - 1].code == B2S_CODE_WARNINGS_TRUNCATED)) {
+        given -= 1;
+    }
+    bool as_promised = given == count;
     for (uint32_t i = 0; as_promised && i < count; ++i) {
         uint32_t code = i < kept ? B2S_CODE_DYNAMIC_BODY_ZERO_DENSITY : B2S_CODE_WARNINGS_TRUNCATED;
         as_promised = view.diagnostics[i].code == code;
     }
     if (!as_promised) {
         std::printf("FAIL %s: box2scene gives %u warnings, not %u; first: %s\n", what.c_str(),
-                    view.diagnostic_count, count,
-                    view.diagnostic_count > 0 ? view.diagnostics[0].message : "none");
+                    given, count, given > 0 ? view.diagnostics[0].message : "none");
     }
     return as_promised;
 }

@@ -306,6 +306,16 @@ enum b2s_code
    * angle past its range, a length under its minimum, a friction joint's anchors.
    */
   B2S_CODE_LOSSY_JOINT = 207,
+  /**
+   * A joint whose bodies the file places further from satisfied than Box2D's slop
+   * (0.005 m, 2 degrees): the message says how far, in metres or radians.
+   */
+  B2S_CODE_JOINT_STARTS_VIOLATED = 208,
+  /**
+   * A body state Box2D v3 cannot hold as the file gives it: `Awake` false with
+   * `AllowSleep` false (v3 creates such a body awake).
+   */
+  B2S_CODE_LOSSY_BODY = 209,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L

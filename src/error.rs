@@ -158,6 +158,12 @@ pub enum Code {
     /// A joint value Box2D v3 clamps or has no field for: a revolute limit or reference
     /// angle past its range, a length under its minimum, a friction joint's anchors.
     LossyJoint = 207,
+    /// A joint whose bodies the file places further from satisfied than Box2D's slop
+    /// (0.005 m, 2 degrees): the message says how far, in metres or radians.
+    JointStartsViolated = 208,
+    /// A body state Box2D v3 cannot hold as the file gives it: `Awake` false with
+    /// `AllowSleep` false (v3 creates such a body awake).
+    LossyBody = 209,
 }
 
 impl Code {
@@ -225,6 +231,8 @@ impl Code {
         Code::LossyCapture,
         Code::LossyShape,
         Code::LossyJoint,
+        Code::JointStartsViolated,
+        Code::LossyBody,
     ];
 
     /// The kebab-case name of the code (`"id-out-of-range"`).
@@ -297,6 +305,8 @@ impl Code {
             Code::LossyCapture => c"lossy-capture",
             Code::LossyShape => c"lossy-shape",
             Code::LossyJoint => c"lossy-joint",
+            Code::JointStartsViolated => c"joint-starts-violated",
+            Code::LossyBody => c"lossy-body",
         }
     }
 

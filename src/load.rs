@@ -28,6 +28,7 @@ fn finish((read, placer): (Parsed<Arena>, parse::Placer<'_>)) -> Result<Scene, E
     let checked = read.and_then(|mut arena| {
         resolve::resolve(&mut arena)?;
         validate::dynamic_bodies_without_mass(&mut arena)?;
+        validate::joints_start_satisfied(&mut arena)?;
         Ok(arena)
     });
     let mut arena = match checked {

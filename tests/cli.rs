@@ -198,6 +198,24 @@ fn strict_check_turns_a_warning_into_an_error_and_exits_1() {
 }
 
 #[test]
+fn check_warns_of_a_joint_that_starts_violated() {
+    // The hinge holds the ball 12 m up; the file puts it 2 m up.
+    let xml = clean_with(
+        "  </Bodies>\n  <Joints />",
+        "    <Body Type=\"Static\"/>\n  </Bodies>\n  <Joints><Joint Type=\"Revolute\">\
+         <BodyA>1</BodyA><BodyB>0</BodyB><LocalAnchorA>0 12</LocalAnchorA></Joint></Joints>",
+    );
+    let sandbox = Sandbox::new("violated");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    assert_eq!(run.status, 0, "{}", run.stderr);
+    assert!(
+        run.stdout.contains("warning[joint-starts-violated]: joint 0 starts "),
+        "{}",
+        run.stdout
+    );
+}
+
+#[test]
 fn strict_check_of_a_clean_file_exits_0() {
     let sandbox = Sandbox::new("strict-clean");
     let run = sandbox.write("clean.xml", CLEAN).run(&["check", "clean.xml", "--strict"]);
@@ -562,7 +580,7 @@ const DUMPED: &str = r#"<?xml version="1.0" encoding="utf-8"?>
   </Fixtures>
   <Bodies>
     <Body Type="Dynamic">
-      <Position>0 20</Position>
+      <Position>0 12</Position>
       <Fixtures>
         <ID>0</ID>
       </Fixtures>
@@ -617,7 +635,7 @@ fn dump_prints_the_scene_as_json() {
 
     let wagon = &scene["bodies"][0];
     assert_eq!(wagon["kind"], "dynamic");
-    assert_eq!(numbers(&wagon["position"]), ["0.0", "20.0"]);
+    assert_eq!(numbers(&wagon["position"]), ["0.0", "12.0"]);
     assert_eq!(numbers(&wagon["fixtures"]), ["0"]);
     assert!(wagon["mass_data"]["mass"].is_null());
     assert!(wagon["user_data"].is_null());
@@ -802,6 +820,7 @@ const DRAWN: &str = r#"<?xml version="1.0" encoding="utf-8"?>
       <BodyB>1</BodyB>
       <LocalAnchorA>0 1</LocalAnchorA>
       <LocalAnchorB>1 0</LocalAnchorB>
+      <Length>5</Length>
     </Joint>
     <Joint Type="Pulley">
       <BodyA>1</BodyA>
@@ -810,6 +829,8 @@ const DRAWN: &str = r#"<?xml version="1.0" encoding="utf-8"?>
       <GroundAnchorB>-5 9</GroundAnchorB>
       <LocalAnchorA>0 0</LocalAnchorA>
       <LocalAnchorB>0 0</LocalAnchorB>
+      <LengthA>5</LengthA>
+      <LengthB>3</LengthB>
     </Joint>
   </Joints>
 </World>

@@ -624,6 +624,66 @@ fn polygon_not_convex_ccw() {
     );
 }
 
+/// Two dynamic circles, the second at `position`, and one joint between them.
+fn pair(position: &str, joint: &str) -> String {
+    let bodies = format!(
+        "<Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>\
+         <Body Type=\"Dynamic\"><Position>{position}</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+    );
+    world(CIRCLE, FIXTURE, &bodies, joint)
+}
+
+fn violation_message(marked: &str) -> String {
+    expect_warning(marked, Code::JointStartsViolated);
+    let scene = load(unmark(marked).0.as_bytes(), &LoadOptions::default()).unwrap();
+    let d = &scene.diagnostics()[0];
+    scene.text(d.message).unwrap().to_string()
+}
+
+#[test]
+fn joint_starts_violated() {
+    let hinge = pair("3 4", "<Joint Type=\"Revolute\"><BodyA>⌖0</BodyA><BodyB>1</BodyB></Joint>");
+    assert!(violation_message(&hinge).contains("starts 5.000 m from satisfied"));
+    let rod = pair(
+        "3 0",
+        "<Joint Type=\"Distance\"><BodyA>⌖0</BodyA><BodyB>1</BodyB><Length>2.5</Length></Joint>",
+    );
+    assert!(violation_message(&rod).contains("starts 0.500 m from"));
+    let turned = pair(
+        "0 0",
+        "<Joint Type=\"Weld\"><BodyA>⌖0</BodyA><BodyB>1</BodyB>\
+         <ReferenceAngle>0.3</ReferenceAngle></Joint>",
+    );
+    assert!(violation_message(&turned).contains("starts 0.300 rad from"));
+    // Off its axis by 2 m, and 1 m past the upper end of its limit.
+    let slider = pair(
+        "3 2",
+        "<Joint Type=\"Line\"><BodyA>⌖0</BodyA><BodyB>1</BodyB><EnableLimit>true</EnableLimit>\
+         <UpperTranslation>2</UpperTranslation></Joint>",
+    );
+    assert!(violation_message(&slider).contains("starts 2.000 m from"));
+}
+
+#[test]
+fn satisfied_joints_and_springs_give_no_violation() {
+    let satisfied = [
+        "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>3 4</LocalAnchorA></Joint>",
+        "<Joint Type=\"Distance\"><BodyA>0</BodyA><BodyB>1</BodyB><Length>5</Length></Joint>",
+        "<Joint Type=\"Distance\"><BodyA>0</BodyA><BodyB>1</BodyB><FrequencyHz>2</FrequencyHz></Joint>",
+        "<Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>3 4</LocalAxisA></Joint>",
+        "<Joint Type=\"Wheel\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAxisA>0.6 0.8</LocalAxisA></Joint>",
+        "<Joint Type=\"Rope\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0 0</LocalAnchorA>\
+         <LocalAnchorB>0 0</LocalAnchorB><MaxLength>6</MaxLength></Joint>",
+        "<Joint Type=\"Friction\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>",
+        "<Joint Type=\"Motor\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>",
+    ];
+    for joint in satisfied {
+        let xml = pair("3 4", joint).replace("Version=\"1\"", "Version=\"2\"");
+        let scene = load(xml.as_bytes(), &LoadOptions::default()).unwrap();
+        assert!(scene.diagnostics().is_empty(), "{joint}");
+    }
+}
+
 #[test]
 fn dynamic_body_zero_density() {
     let xml = world(

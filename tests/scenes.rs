@@ -191,8 +191,10 @@ fn all_24_container_orders_give_identical_scenes() {
             order.iter().map(|&i| parts[i].as_str()).collect::<Vec<_>>().join("\n  ");
         let reordered = format!("{head}{body}{tail}");
         let scene = load(reordered.as_bytes(), &LoadOptions::default()).unwrap();
-        assert!(scene.diagnostics().is_empty(), "{order:?}");
-        assert_eq!(scene.to_json(), expected, "order {order:?}");
+        assert_eq!(violated_joints(&scene), 4, "{order:?}");
+        // The warnings are placed where each order puts the joints.
+        let values = |json: &str| json[..json.find("\"diagnostics\"").unwrap()].to_string();
+        assert_eq!(values(&scene.to_json()), values(&expected), "order {order:?}");
     }
 }
 
@@ -254,10 +256,20 @@ fn an_empty_range_is_zero_zero() {
     assert_eq!(scene.bodies()[1].fixtures, empty);
 }
 
+/// How many joints the scene warns start violated; 0 when it has any other warning.
+fn violated_joints(scene: &Scene) -> usize {
+    let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code()).collect();
+    match codes.iter().all(|&c| c == Some(Code::JointStartsViolated)) {
+        true => codes.len(),
+        false => 0,
+    }
+}
+
 #[test]
 fn every_v1_field_is_read() {
     let scene = load_file(&root().join("tests/scenes/every-v1-field.xml"));
-    assert!(scene.diagnostics().is_empty());
+    // The axle, the slider, the pulley and the suspension start apart.
+    assert_eq!(violated_joints(&scene), 4);
     let cart = &scene.bodies()[scene.find_body("cart").unwrap() as usize];
     let m = cart.mass_data;
     assert_eq!((m.mass, m.center, m.inertia), (12.0, Vec2::new(0.1, -0.2), 4.5));
@@ -351,6 +363,7 @@ fn farseer_version_2_spellings_are_read() {
         [
             Code::FilterBitsTruncated,
             Code::FilterBitsTruncated,
+            Code::JointStartsViolated, // the prismatic slider starts 1 m off its axis
             Code::LineJointIsWheel,
             Code::FarseerOnlyJoint,
             Code::FarseerOnlyJoint
