@@ -219,6 +219,18 @@ static b2Joint* add_revolute(b2World& world, b2Body* a, b2Body* b, b2Vec2 anchor
     return world.CreateJoint(&def);
 }
 
+static void add_rope(b2World& world, b2Body* ground, b2Body* body, b2Vec2 ground_anchor,
+                     b2Vec2 anchor, float max_length) {
+    b2DistanceJointDef rope;
+    rope.bodyA = ground;
+    rope.bodyB = body;
+    rope.localAnchorA = ground_anchor;
+    rope.localAnchorB = anchor;
+    rope.length = rope.maxLength = max_length;
+    rope.minLength = 0.0f;
+    world.CreateJoint(&rope);
+}
+
 static void add_joints(b2World& world, const std::vector<b2Body*>& body) {
     b2RevoluteJointDef left;
     left.bodyA = body[1];
@@ -287,6 +299,11 @@ static void add_joints(b2World& world, const std::vector<b2Body*>& body) {
     pulley.lengthB = 3.5f;
     pulley.ratio = 1.5f;
     world.CreateJoint(&pulley);
+    // Box2D 2.1.2's MaxLengthA/B: ropes from the ground anchors, on the static body 0. Side
+    // A keeps its 6 m; side B is cut to (LengthA + Ratio * LengthB - 2 m) / Ratio.
+    add_rope(world, body[0], body[9], pulley.groundAnchorA, pulley.localAnchorA, 6.0f);
+    add_rope(world, body[0], body[10], pulley.groundAnchorB, pulley.localAnchorB,
+             (9.0f - 2.0f) / 1.5f);
 
     b2Joint* gear_axle_1 = add_revolute(world, body[0], body[14], b2Vec2(12.0f, 5.0f));
     b2Joint* gear_axle_2 = add_revolute(world, body[0], body[15], b2Vec2(14.0f, 5.0f));

@@ -104,7 +104,8 @@ static int farseer_v2_line_with_a_spring_is_a_wheel() {
     ENSURE_EQ(w.joint(4)->GetType(), e_wheelJoint);
     auto* wheel = static_cast<b2WheelJoint*>(w.joint(4));
     float stiffness, damping;
-    b2LinearStiffness(stiffness, damping, 5.0f, 0.8f, w.body(1), w.body(2));
+    wheel_spring_22(5.0f, 0.8f, w.body(1), w.body(2), wheel->GetLocalAnchorA(),
+                    wheel->GetLocalAnchorB(), wheel->GetLocalAxisA(), stiffness, damping);
     ENSURE_FLOAT(wheel->GetStiffness(), stiffness);
     ENSURE_FLOAT(wheel->GetDamping(), damping);
     ENSURE(stiffness > 0.0f);
@@ -241,18 +242,21 @@ static int car_settles_on_its_wheel_springs_at_the_predicted_sag() {
     </World>)");
     ENSURE(w.ok());
     b2Body* chassis = w.body(1);
-    // The prediction. b2LinearStiffness(f, zeta, chassis, wheel) turns the frequency into
-    // k = m_eff * (2 pi f)^2 with m_eff = M m / (M + m), the pair's reduced mass (M the
-    // chassis, 4 x 0.5 x 1 = 2 kg; m a wheel, pi 0.4^2 = 0.503 kg): k = 63.5 N/m.
-    // At rest each wheel stands on the ground and each spring holds half the chassis weight,
-    // M g / 2 = 10 N (the chassis is symmetric about its centre and the wheels sit at +-1.5;
-    // a wheel's own weight goes straight into the ground, not through its spring). Box2D's
-    // soft constraint applies exactly k * C once at rest, so each spring compresses by
-    // sag = (M g / 2) / k = 0.158 m. A stiffness from the chassis mass alone would give 0.032.
+    // The prediction. Box2D 2.2's wheel spring turns the frequency into k = m_eff (2 pi f)^2
+    // with m_eff the effective mass along the axis, 1 / (1/M + 1/m + sAx^2 / I): M the
+    // chassis, 4 x 0.5 x 1 = 2 kg, I = M (4^2 + 0.5^2) / 12 = 2.71 kg m^2; m a wheel,
+    // pi 0.4^2 = 0.503 kg; sAx = 1.5 m the anchor's lever across the vertical axis:
+    // m_eff = 0.301 kg, k = 47.6 N/m (b2LinearStiffness's reduced mass M m / (M + m) would
+    // give 63.5). At rest each wheel stands on the ground and each spring holds half the
+    // chassis weight, M g / 2 = 10 N (the chassis is symmetric about its centre and the
+    // wheels sit at +-1.5; a wheel's own weight goes straight into the ground, not through
+    // its spring). Box2D's soft constraint applies exactly k * C once at rest, so each spring
+    // compresses by sag = (M g / 2) / k = 0.21 m.
     const float M = chassis->GetMass();
     const float m = w.body(2)->GetMass();
+    const float I = M * (16.0f + 0.25f) / 12.0f;
     const float omega = 2.0f * b2_pi * 2.0f;
-    const float k = M * m / (M + m) * omega * omega;
+    const float k = omega * omega / (1.0f / M + 1.0f / m + 1.5f * 1.5f / I);
     ENSURE_NEAR(static_cast<b2WheelJoint*>(w.joint(0))->GetStiffness(), k, 1e-4 * k);
     const float predicted = M * 10.0f / 2.0f / k;
 

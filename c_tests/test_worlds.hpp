@@ -75,5 +75,47 @@ inline int ensure_same_state(size_t index, const b2Body* rebuilt, const b2Body* 
     return 0;
 }
 
+/// 1/m and 1/I about the centre of mass (b2Body::GetInertia is about the origin) of `body`;
+/// 0 where it has none.
+inline float inverse_mass_of(const b2Body* body) {
+    return body->GetMass() > 0.0f ? 1.0f / body->GetMass() : 0.0f;
+}
+
+inline float inverse_central_inertia_of(const b2Body* body) {
+    b2Vec2 c = body->GetLocalCenter();
+    float inertia = body->GetInertia() - body->GetMass() * b2Dot(c, c);
+    return inertia > 0.0f ? 1.0f / inertia : 0.0f;
+}
+
+/// Box2D 2.2's springs (docs/format.md, "Onto Box2D 2.4.1"): k = m w^2, c = 2 m zeta w.
+inline void spring_22(float hz, float zeta, float mass, float& stiffness, float& damping) {
+    float omega = 2.0f * b2_pi * hz;
+    stiffness = mass * omega * omega;
+    damping = 2.0f * mass * zeta * omega;
+}
+
+/// Box2D 2.2's wheel spring: the effective mass along the (unit) axis as the joint starts,
+/// 1 / (1/mA + 1/mB + sAx^2/IA + sBx^2/IB), from the bodies as they are.
+inline void wheel_spring_22(float hz, float zeta, const b2Body* a, const b2Body* b,
+                            b2Vec2 anchor_a, b2Vec2 anchor_b, b2Vec2 unit_axis,
+                            float& stiffness, float& damping) {
+    b2Rot qA = a->GetTransform().q, qB = b->GetTransform().q;
+    b2Vec2 rA = b2Mul(qA, anchor_a - a->GetLocalCenter());
+    b2Vec2 rB = b2Mul(qB, anchor_b - b->GetLocalCenter());
+    b2Vec2 d = b->GetWorldCenter() + rB - a->GetWorldCenter() - rA;
+    b2Vec2 ax = b2Mul(qA, unit_axis);
+    float sAx = b2Cross(d + rA, ax), sBx = b2Cross(rB, ax);
+    float inverse = inverse_mass_of(a) + inverse_mass_of(b) +
+                    inverse_central_inertia_of(a) * sAx * sAx +
+                    inverse_central_inertia_of(b) * sBx * sBx;
+    spring_22(hz, zeta, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
+}
+
+/// Box2D 2.2's soft weld: the angular mass 1 / (1/IA + 1/IB), inertias about the centres.
+inline void weld_spring_22(float hz, float zeta, const b2Body* a, const b2Body* b,
+                           float& stiffness, float& damping) {
+    float inverse = inverse_central_inertia_of(a) + inverse_central_inertia_of(b);
+    spring_22(hz, zeta, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
+}
 
 #endif // BOX2SCENE_TEST_WORLDS_HPP

@@ -642,8 +642,12 @@ private:
         const b2Body* b = built_.bodies[joint.body_b];
         float stiffness = 0.0f, damping = 0.0f;
         bool angular = joint.kind == B2S_JOINT_KIND_WELD;
-        (angular ? b2AngularStiffness : b2LinearStiffness)(stiffness, damping, joint.frequency_hz,
-                                                           joint.damping_ratio, a, b);
+        switch (joint.kind) {
+        case B2S_JOINT_KIND_WELD: weld_spring(joint, a, b, stiffness, damping); break;
+        case B2S_JOINT_KIND_WHEEL: wheel_spring(joint, a, b, stiffness, damping); break;
+        default:
+            b2LinearStiffness(stiffness, damping, joint.frequency_hz, joint.damping_ratio, a, b);
+        }
         if (stiffness != 0.0f && !(stiffness >= working_range::min_stiffness)) {
             check.fail("FrequencyHz " + decimal(joint.frequency_hz) + " gives a stiffness of " +
                        decimal(stiffness) + (angular ? " N m/rad" : " N/m") +
@@ -703,6 +707,58 @@ private:
                        " radii of gyration out, beyond Box2D 2.4's working range for this "
                        "joint (at most " + rounded(lever) + ")");
         }
+    }
+
+    /// Box2D 2.2's springs: stiffness m w^2 and damping 2 m zeta w, w = 2 pi FrequencyHz,
+    /// for the mass `m` the spring moves (b2LinearStiffness's arithmetic).
+    static void spring(const b2s_joint& joint, float mass, float& stiffness, float& damping) {
+        float omega = 2.0f * b2_pi * joint.frequency_hz;
+        stiffness = mass * omega * omega;
+        damping = 2.0f * mass * joint.damping_ratio * omega;
+    }
+
+    /// 1/I about the centre of mass (b2Body::GetInertia is about the origin), 0 for a body
+    /// that does not turn.
+    static float inverse_central_inertia(const b2Body* body) {
+        b2Vec2 c = body->GetLocalCenter();
+        float inertia = body->GetInertia() - body->GetMass() * b2Dot(c, c);
+        return inertia > 0.0f ? 1.0f / inertia : 0.0f;
+    }
+
+    static float inverse_mass(const b2Body* body) {
+        float mass = body->GetMass();
+        return mass > 0.0f ? 1.0f / mass : 0.0f;
+    }
+
+    /// Box2D 2.2's soft weld: the angular mass 1/(1/IA + 1/IB) from the inertias about the
+    /// centres of mass (b2AngularStiffness takes those about the origins).
+    static void weld_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
+                            float& stiffness, float& damping) {
+        float inverse = inverse_central_inertia(a) + inverse_central_inertia(b);
+        spring(joint, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
+    }
+
+    /// Box2D 2.2's wheel spring: the effective mass along the axis as the joint starts,
+    /// 1/(1/mA + 1/mB + sAx^2/IA + sBx^2/IB), as 2.2's InitVelocityConstraints computes it
+    /// (b2LinearStiffness takes mA mB/(mA + mB)).
+    static void wheel_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
+                             float& stiffness, float& damping) {
+        if (!(joint.frequency_hz > 0.0f)) {
+            stiffness = damping = 0.0f;
+            return;
+        }
+        b2Vec2 axis = to_b2(joint.local_axis_a);
+        axis.Normalize();
+        b2Rot qA = a->GetTransform().q, qB = b->GetTransform().q;
+        b2Vec2 rA = b2Mul(qA, to_b2(joint.local_anchor_a) - a->GetLocalCenter());
+        b2Vec2 rB = b2Mul(qB, to_b2(joint.local_anchor_b) - b->GetLocalCenter());
+        b2Vec2 d = b->GetWorldCenter() + rB - a->GetWorldCenter() - rA;
+        b2Vec2 ax = b2Mul(qA, axis);
+        float sAx = b2Cross(d + rA, ax), sBx = b2Cross(rB, ax);
+        float inverse = inverse_mass(a) + inverse_mass(b) +
+                        inverse_central_inertia(a) * sAx * sAx +
+                        inverse_central_inertia(b) * sBx * sBx;
+        spring(joint, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
     }
 
     void make_revolute(uint32_t index, const b2s_joint& joint) {
@@ -785,7 +841,8 @@ private:
         create(index, def);
     }
 
-    /// MaxLengthA/B (Box2D 2.1 only) have no 2.4 field and are dropped.
+    /// MaxLengthA/B (Box2D 2.1 only) have no 2.4 field: each side's limit becomes a rope
+    /// from its ground anchor, held by a static body, right after the pulley.
     void make_pulley(uint32_t index, const b2s_joint& joint) {
         b2PulleyJointDef def;
         if (!connect(index, joint, def)) {
@@ -799,6 +856,53 @@ private:
         def.lengthB = joint.length_b;
         def.ratio = joint.ratio;
         create(index, def);
+        // Box2D 2.1.2's limits: the side's maximum, but no longer than leaves the other side
+        // its b2_minPulleyLength of 2 m.
+        float constant = joint.length_a + joint.ratio * joint.length_b;
+        limit_pulley_side(index, joint, "MaxLengthA", joint.max_length_a,
+                          constant - joint.ratio * 2.0f, def.groundAnchorA, def.bodyA,
+                          def.localAnchorA);
+        limit_pulley_side(index, joint, "MaxLengthB", joint.max_length_b,
+                          (constant - 2.0f) / joint.ratio, def.groundAnchorB, def.bodyB,
+                          def.localAnchorB);
+    }
+
+    void limit_pulley_side(uint32_t index, const b2s_joint& joint, const char* field,
+                           float given, float longest, b2Vec2 ground, b2Body* body,
+                           b2Vec2 anchor) {
+        if (!(given > 0.0f)) { // absent or 0: no limit
+            return;
+        }
+        float limit = std::min(given, longest);
+        b2Body* holder = static_body();
+        if (holder == nullptr || !(limit >= b2_linearSlop)) {
+            report(B2S_CODE_LOSSY_JOINT, "joint", index, joint.name,
+                   std::string(field) + " " + decimal(given) + " gives a limit of " +
+                       decimal(limit) + " m, which Box2D 2.4 cannot hold " +
+                       (holder == nullptr ? "without a static body in the scene"
+                                          : "(it is shorter than the linear slop)") +
+                       "; the side is unlimited");
+            return;
+        }
+        b2DistanceJointDef rope;
+        rope.bodyA = holder;
+        rope.bodyB = body;
+        rope.localAnchorA = holder->GetLocalPoint(ground);
+        rope.localAnchorB = anchor;
+        rope.length = limit;
+        rope.minLength = 0.0f;
+        rope.maxLength = limit;
+        world_.CreateJoint(&rope);
+    }
+
+    /// The first static body of the scene that was created, or nullptr.
+    b2Body* static_body() const {
+        for (b2Body* body : built_.bodies) {
+            if (body != nullptr && body->GetType() == b2_staticBody) {
+                return body;
+            }
+        }
+        return nullptr;
     }
 
     /// Box2D 2.4's wheel joint, unlike its prismatic joint, does not normalise its axis,
@@ -841,8 +945,7 @@ private:
         def.enableMotor = joint.enable_motor;
         def.maxMotorTorque = joint.max_motor_torque;
         def.motorSpeed = joint.motor_speed;
-        b2LinearStiffness(def.stiffness, def.damping, joint.frequency_hz, joint.damping_ratio,
-                          def.bodyA, def.bodyB);
+        wheel_spring(joint, def.bodyA, def.bodyB, def.stiffness, def.damping);
         create(index, def);
     }
 
@@ -855,8 +958,7 @@ private:
         def.localAnchorB = to_b2(joint.local_anchor_b);
         def.referenceAngle = joint.reference_angle;
         if (joint.frequency_hz > 0.0f) {
-            b2AngularStiffness(def.stiffness, def.damping, joint.frequency_hz,
-                               joint.damping_ratio, def.bodyA, def.bodyB);
+            weld_spring(joint, def.bodyA, def.bodyB, def.stiffness, def.damping);
         }
         create(index, def);
     }
