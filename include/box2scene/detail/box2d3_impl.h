@@ -568,6 +568,15 @@ static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* d
     return body;
 }
 
+/* Box2D 2.x, which the format's files were made for, gives a dynamic body without mass
+ * 1 kg at its origin; v3 would leave it at 0, unmoved by gravity. */
+static b2MassData b2s3_positive_mass(b2MassData m) {
+    if (!(m.mass > 0.0f)) {
+        m.mass = 1.0f;
+    }
+    return m;
+}
+
 /* A dynamic body's final mass data: from its shapes, then what its MassData gives. The
  * file's inertia is about the body origin, v3's about the centre of mass. */
 static b2MassData b2s3_with_mass_data(b2MassData computed, const b2s_body* body) {
@@ -581,6 +590,8 @@ static b2MassData b2s3_with_mass_data(b2MassData computed, const b2s_body* body)
     if (given->mass_given) {
         out.mass = given->mass;
     }
+    /* Box2D 2.x counts a mass of 0 as 1 kg before it moves the inertia to the centre. */
+    out = b2s3_positive_mass(out);
     if (given->center_given) {
         out.center = b2s3_to_b2(given->center);
     }
@@ -591,15 +602,6 @@ static b2MassData b2s3_with_mass_data(b2MassData computed, const b2s_body* body)
                                 ? 0.0f
                                 : origin_inertia - out.mass * b2Dot(out.center, out.center);
     return out;
-}
-
-/* Box2D 2.x, which the format's files were made for, gives a dynamic body without mass
- * 1 kg at its origin; v3 would leave it at 0, unmoved by gravity. */
-static b2MassData b2s3_positive_mass(b2MassData m) {
-    if (!(m.mass > 0.0f)) {
-        m.mass = 1.0f;
-    }
-    return m;
 }
 
 /* The mass data the adapter gives a dynamic body, or false (with `check` failed) when v3
@@ -816,6 +818,30 @@ static void b2s3_make_fixture(b2s3_builder* b, uint32_t body_index, uint32_t slo
     }
 }
 
+/* b2Body_SetMassData moves the centre of mass without carrying the velocity with it, so a
+ * spinning body's origin would start to drift: the centre's velocity gains w x (how far it
+ * moved), as Box2D 2.x's SetMassData does, which keeps the origin's velocity the file's.
+ * (A body that is not awake has no velocity to carry; setting one would wake it.) */
+static void b2s3_set_mass_data(b2BodyId body, b2MassData mass) {
+    b2Vec2 old_center = b2Body_GetWorldCenterOfMass(body);
+    b2Body_SetMassData(body, mass);
+    float w = b2Body_GetAngularVelocity(body);
+    if (w == 0.0f || !b2Body_IsAwake(body)) {
+        return;
+    }
+    b2Vec2 shift = b2CrossSV(w, b2Sub(b2Body_GetWorldCenterOfMass(body), old_center));
+    b2Body_SetLinearVelocity(body, b2Add(b2Body_GetLinearVelocity(body), shift));
+}
+
+/* v3 creates a body awake when it may not sleep; Box2D 2.x kept it asleep until touched. */
+static void b2s3_check_sleep(b2s3_builder* b, uint32_t index, const b2s_body* body) {
+    if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
+                    "Awake is false and AllowSleep false: Box2D v3 creates a body that may not "
+                    "sleep awake, so it moves from the first step");
+    }
+}
+
 static void b2s3_make_body(b2s3_builder* b, uint32_t index) {
     const b2s_body* body = &b->view->bodies[index];
     if (body->kind > B2S_BODY_KIND_DYNAMIC) {
@@ -848,6 +874,7 @@ static void b2s3_make_body(b2s3_builder* b, uint32_t index) {
                     "are lost, and a capture writes it within +-pi",
                     (double)body->angle);
     }
+    b2s3_check_sleep(b, index, body);
     b2BodyDef def = b2s3_body_def(b, index, body);
     b2BodyId created = b2CreateBody(b->world, &def);
     b->built->bodies[index] = created;
@@ -858,7 +885,7 @@ static void b2s3_make_body(b2s3_builder* b, uint32_t index) {
         b2Body_ApplyMassFromShapes(created);
         b2MassData applied = b2Body_GetMassData(created);
         if (b2s3_mass_data_given(&body->mass_data) || !(applied.mass > 0.0f)) {
-            b2Body_SetMassData(created, mass);
+            b2s3_set_mass_data(created, mass);
         }
         b->masses[index] = mass;
     }
@@ -1230,13 +1257,36 @@ static b2JointId b2s3_make_friction(b2s3_builder* b, uint32_t index, const b2s_j
     return b2CreateMotorJoint(b->world, &def);
 }
 
+/* The file's LinearOffset is in body A's frame (as Box2D 2.x and v3's types.h say), but
+ * v3.1.1's solver subtracts it from the centres' separation in world axes: it is passed
+ * turned by body A's rotation, which holds only while A cannot turn. */
+static b2Vec2 b2s3_motor_offset(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                b2BodyId a) {
+    b2Vec2 offset = b2s3_to_b2(joint->linear_offset);
+    if (b2s3_is_zero(joint->linear_offset)) {
+        return offset;
+    }
+    b2BodyType type = b2Body_GetType(a);
+    bool fixed = type == b2_staticBody ||
+                 (type == b2_kinematicBody && b2Body_GetAngularVelocity(a) == 0.0f) ||
+                 (type == b2_dynamicBody && b2Body_IsFixedRotation(a));
+    if (!fixed) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
+                    "Box2D v3.1 holds LinearOffset (%.9g, %.9g) in world axes, not in body A's "
+                    "frame: it was turned by body A's angle as the joint starts, and stays so "
+                    "as body A turns",
+                    (double)offset.x, (double)offset.y);
+    }
+    return b2RotateVector(b2Body_GetRotation(a), offset);
+}
+
 static b2JointId b2s3_make_motor(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
                                  b2BodyId a, b2BodyId bb) {
     b2MotorJointDef def = b2DefaultMotorJointDef();
     def.bodyIdA = a;
     def.bodyIdB = bb;
     def.collideConnected = joint->collide_connected;
-    def.linearOffset = b2s3_to_b2(joint->linear_offset);
+    def.linearOffset = b2s3_motor_offset(b, index, joint, a);
     def.angularOffset = joint->angular_offset;
     def.maxForce = joint->max_force;
     def.maxTorque = joint->max_torque;
@@ -1489,15 +1539,21 @@ static float b2s3_before_shift(float target, float shift) {
     return before;
 }
 
-/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
- * of mass's, which b2Body_ApplyMassFromShapes moved by w x (R local_center), computed as v3
- * computes it. */
-static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center, float w,
-                                     b2s_vec2 velocity) {
-    b2Vec2 center = b2TransformPoint(transform, local_center);
-    b2Vec2 shift = b2CrossSV(w, b2Sub(center, transform.p));
+static b2s_vec2 b2s3_before_shifts(b2s_vec2 velocity, b2Vec2 shift) {
     b2s_vec2 out = {b2s3_before_shift(velocity.x, shift.x), b2s3_before_shift(velocity.y, shift.y)};
     return out;
+}
+
+/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
+ * of mass's, which b2Body_ApplyMassFromShapes moved by w x (the shapes' centre - origin), and
+ * the build's b2s3_set_mass_data then by w x (the final centre - the shapes'), each computed
+ * as the build computes it; undone in the reverse order. */
+static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 shapes_center,
+                                     b2Vec2 final_center, float w, b2s_vec2 velocity) {
+    b2Vec2 from_shapes = b2TransformPoint(transform, shapes_center);
+    b2Vec2 moved = b2CrossSV(w, b2Sub(b2TransformPoint(transform, final_center), from_shapes));
+    b2s_vec2 before = w != 0.0f ? b2s3_before_shifts(velocity, moved) : velocity;
+    return b2s3_before_shifts(before, b2CrossSV(w, b2Sub(from_shapes, transform.p)));
 }
 
 static bool b2s3_wide_bits(uint64_t bits) {
@@ -1756,9 +1812,9 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     }
     body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
     if (type == b2_dynamicBody) {
-        body.linear_velocity = b2s3_origin_velocity(b2Body_GetTransform(id), computed.center,
-                                                    b2Body_GetAngularVelocity(id),
-                                                    body.linear_velocity);
+        body.linear_velocity = b2s3_origin_velocity(
+            b2Body_GetTransform(id), computed.center, b2Body_GetMassData(id).center,
+            b2Body_GetAngularVelocity(id), body.linear_velocity);
     }
     body.angular_velocity = b2Body_GetAngularVelocity(id);
     body.linear_damping = b2Body_GetLinearDamping(id);
