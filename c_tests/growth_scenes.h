@@ -103,6 +103,12 @@ static inline b2s_scene* growth_one_body(uint32_t count) {
     return growth_finish_with_body(b, &body, ids, count);
 }
 
+/* Where the grids of bodies put body i: rows of 128, 1 m apart. */
+static inline b2s_vec2 growth_grid_at(uint32_t i) {
+    b2s_vec2 at = {(float)(i % 128u), (float)(i / 128u)};
+    return at;
+}
+
 /* `count` dynamic bodies in a grid, each with its own fixture on one shared box. */
 static inline b2s_scene* growth_many_bodies(uint32_t count) {
     b2s_builder* b = b2s_builder_new();
@@ -122,8 +128,7 @@ static inline b2s_scene* growth_many_bodies(uint32_t count) {
         }
         b2s_body body;
         b2s_body_default(B2S_BODY_KIND_DYNAMIC, &body);
-        body.position.x = (float)(i % 128u);
-        body.position.y = (float)(i / 128u);
+        body.position = growth_grid_at(i);
         b = growth_check(b, b2s_builder_add_body(b, &body, &id, 1, NULL, NULL));
     }
     return b != NULL ? growth_finish(b) : NULL;
@@ -131,8 +136,9 @@ static inline b2s_scene* growth_many_bodies(uint32_t count) {
 
 #define GROWTH_JOINED_BODIES 64u
 
-/* `count` joints (revolute, spring distance and weld in turn) among a ring of `bodies`
- * dynamic balls in a grid, joint i from ball i to the next. */
+/* `count` joints (revolute, spring distance and weld in turn) among `bodies` dynamic balls
+ * in a grid, joint i from ball i (modulo `bodies`) to its neighbour in the row, each
+ * satisfied where the balls start: halfway between them. */
 static inline b2s_scene* growth_joints_among(uint32_t count, uint32_t bodies) {
     b2s_builder* b = b2s_builder_new();
     b2s_shape shape;
@@ -150,8 +156,7 @@ static inline b2s_scene* growth_joints_among(uint32_t count, uint32_t bodies) {
     for (uint32_t i = 0; i < bodies && b != NULL; ++i) {
         b2s_body body;
         b2s_body_default(B2S_BODY_KIND_DYNAMIC, &body);
-        body.position.x = (float)(i % 128u);
-        body.position.y = (float)(i / 128u);
+        body.position = growth_grid_at(i);
         b = growth_check(b, b2s_builder_add_body(b, &body, &id, 1, NULL, NULL));
     }
     static const b2s_joint_kind kinds[3] = {B2S_JOINT_KIND_REVOLUTE, B2S_JOINT_KIND_DISTANCE,
@@ -159,10 +164,13 @@ static inline b2s_scene* growth_joints_among(uint32_t count, uint32_t bodies) {
     for (uint32_t i = 0; i < count && b != NULL; ++i) {
         b2s_joint joint;
         b2s_joint_default(kinds[i % 3u], &joint);
-        joint.body_a = i % bodies;
-        joint.body_b = (i + 1u) % bodies;
-        joint.local_anchor_a.x = 0.5f;
-        joint.local_anchor_b.x = -0.5f;
+        uint32_t a = i % bodies;
+        bool row_end = a % 128u == 127u || a + 1u == bodies;
+        joint.body_a = a;
+        joint.body_b = row_end ? a - 1u : a + 1u;
+        float side = row_end ? -0.5f : 0.5f; /* the point halfway to the neighbour */
+        joint.local_anchor_a.x = side;
+        joint.local_anchor_b.x = -side;
         if (joint.kind == B2S_JOINT_KIND_DISTANCE) {
             joint.length = 1.0f;
             joint.frequency_hz = 2.0f;

@@ -7,6 +7,7 @@
 #include <box2scene.h>
 #include <box2scene/box2d.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -29,6 +30,20 @@ struct World {
     b2Body* body(size_t i) const { return built.bodies.at(i); }
     b2Joint* joint(size_t i) const { return built.joints.at(i); }
 };
+
+/// Whether every created body's position and angle are finite.
+inline bool bodies_finite(const World& w) {
+    for (const b2Body* body : w.built.bodies) {
+        if (body == nullptr) {
+            continue;
+        }
+        b2Vec2 p = body->GetPosition();
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(body->GetAngle())) {
+            return false;
+        }
+    }
+    return true;
+}
 
 /// One step of 1/60 s, with Box2D's customary 8 velocity and 3 position iterations.
 inline void step_once(b2World& world) {

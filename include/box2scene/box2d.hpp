@@ -104,15 +104,21 @@ inline constexpr float force = 1e20f;        ///< N and N m: force and torque ma
 inline constexpr float min_axis = 1e-6f;     ///< m: the shortest joint axis
 inline constexpr float mass_min = 1e-20f;    ///< kg: a dynamic body's mass, unless 0
 inline constexpr float mass_max = 1e10f;
-inline constexpr float inertia_min = 1e-20f; ///< kg m^2, about the centre of mass, unless 0
+/// kg m^2, about the centre of mass, unless 0: a 1 m ball with 1e-16 on a prismatic joint
+/// 0.001 rad from satisfied goes NaN, with 1e-12 it holds.
+inline constexpr float inertia_min = 1e-12f;
 inline constexpr float inertia_max = 1e12f;
 /// 1/kg: 1/m + r^2/I of a body at a joint's anchor.
 inline constexpr float compliance = 1e12f;
 /// A joint's anchor's distance from its body's centre of mass, in radii of gyration
 /// sqrt(I/m), where Box2D inverts a 2x2 matrix for it (revolute, friction and motor joints:
-/// a 10 cm ball can hang 70 m out) or a 3x3 one (prismatic and weld joints).
+/// a 10 cm ball can hang 70 m out) or a 3x3 one (prismatic and weld joints: the sweep's
+/// farthest, a 20 cm ball 10 m out, 71 radii, holds).
 inline constexpr float lever_2x2 = 1e3f;
-inline constexpr float lever_3x3 = 30.0f;
+inline constexpr float lever_3x3 = 75.0f;
+/// m: how far from satisfied a second joint may start on a body that another joint starting
+/// that far already pulls (docs/working-range.md, measured by the sweep).
+inline constexpr float violation = 0.5f;
 } // namespace working_range
 
 // ---- capture: a live b2World back into a scene, so that a host can save its level

@@ -96,14 +96,21 @@ typedef struct b2s_box2d3_built {
 #define B2S_BOX2D3_MIN_AXIS 1e-6f          /**< m: the shortest joint axis */
 #define B2S_BOX2D3_MIN_MASS 1e-20f         /**< kg: a dynamic body's mass */
 #define B2S_BOX2D3_MAX_MASS 1e10f
-#define B2S_BOX2D3_MIN_INERTIA 1e-20f      /**< kg m^2 about the centre of mass, unless 0 */
+#define B2S_BOX2D3_MIN_INERTIA 1e-12f      /**< kg m^2 about the centre of mass, unless 0 */
 #define B2S_BOX2D3_MAX_INERTIA 1e12f
 #define B2S_BOX2D3_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
 /** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
- *  for a revolute joint (a pendulum: a 10 cm ball can hang 70 m out) and for every other
- *  kind, whose solvers in v3 diverge far sooner on a light body held far out. */
+ *  as measured by the working-range sweep (docs/working-range.md): for a revolute joint (a
+ *  pendulum: a 10 cm ball can hang 70 m out); for line and wheel joints to a body that does
+ *  not move, whose free turn v3 cannot hold on a small body far out; and for every other kind, whose farthest lever in
+ *  the sweep (a 20 cm ball 10 m out, 71 radii) holds. A prismatic joint's axis reaches body
+ *  B's anchor, which is body A's lever too. A friction joint's anchors play no part. */
 #define B2S_BOX2D3_MAX_LEVER_REVOLUTE 1e3f
-#define B2S_BOX2D3_MAX_LEVER 5.0f
+#define B2S_BOX2D3_MAX_LEVER_WHEEL 5.0f
+#define B2S_BOX2D3_MAX_LEVER 75.0f
+/** m: how far from satisfied a line or wheel joint may start, and a second joint on a body
+ *  another already pulls (docs/working-range.md has the measured table). */
+#define B2S_BOX2D3_MAX_VIOLATION 0.5f
 /** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies.
  *  v3, unlike 2.4, does not bound how far a body moves in a step: a stronger motor throws
  *  a light body past B2_HUGE. */

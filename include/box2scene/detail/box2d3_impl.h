@@ -218,6 +218,7 @@ typedef struct b2s3_builder {
     b2s3_list list;
     b2s3_geometry* geometries; /* indexed like the scene's shapes */
     b2MassData* masses;        /* each created dynamic body's, inertia about its centre */
+    uint32_t* pulled;          /* per body: 1 + the joint that starts it violated, or 0 */
 } b2s3_builder;
 
 /* A report of a build or a capture: both keep their list as `list`. */
@@ -953,6 +954,16 @@ static float b2s3_drive_force(const b2s_joint* joint) {
     }
 }
 
+/* The farthest lever of one body of a joint whose other body is `other`: a line or wheel
+ * joint to a body that does not move leaves the body free to turn about an anchor that v3
+ * cannot hold far out (the sweep of docs/working-range.md). */
+static float b2s3_lever(const b2s3_builder* b, const b2s_joint* joint, uint32_t other,
+                        float lever) {
+    bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
+    bool fixed = b2Body_GetType(b->built->bodies[other]) != b2_dynamicBody;
+    return wheel && fixed ? B2S_BOX2D3_MAX_LEVER_WHEEL : lever;
+}
+
 static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint) {
     b2s3_check check = {{0}};
     float length = B2S_BOX2D3_MAX_LENGTH;
@@ -1025,19 +1036,96 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
                               "against");
         }
     }
-    if (b2s3_passed(&check) && anchored) {
+    /* v3's friction (motor) joint acts at the body origins: its anchors play no part. */
+    if (b2s3_passed(&check) && anchored && joint->kind != B2S_JOINT_KIND_FRICTION) {
         float lever = joint->kind == B2S_JOINT_KIND_REVOLUTE ? B2S_BOX2D3_MAX_LEVER_REVOLUTE
                                                              : B2S_BOX2D3_MAX_LEVER;
         b2s3_check_anchor(b, &check, "LocalAnchorA", joint->body_a,
-                          b2s3_to_b2(joint->local_anchor_a), lever);
+                          b2s3_to_b2(joint->local_anchor_a),
+                          b2s3_lever(b, joint, joint->body_b, lever));
         b2s3_check_anchor(b, &check, "LocalAnchorB", joint->body_b,
-                          b2s3_to_b2(joint->local_anchor_b), lever);
+                          b2s3_to_b2(joint->local_anchor_b),
+                          b2s3_lever(b, joint, joint->body_a, lever));
+        if (joint->kind == B2S_JOINT_KIND_PRISMATIC) {
+            /* Its axis reaches body B's anchor: that is body A's lever too. */
+            b2Vec2 b_anchor = b2Body_GetWorldPoint(b->built->bodies[joint->body_b],
+                                                   b2s3_to_b2(joint->local_anchor_b));
+            b2s3_check_anchor(b, &check, "LocalAnchorB, as body A's lever", joint->body_a,
+                              b2Body_GetLocalPoint(b->built->bodies[joint->body_a], b_anchor),
+                              lever);
+        }
     }
     if (b2s3_passed(&check)) {
         b2s3_check_drive(b, &check, joint->body_a, b2s3_drive_force(joint));
         b2s3_check_drive(b, &check, joint->body_b, b2s3_drive_force(joint));
     }
     return check;
+}
+
+/* How far the joint starts from satisfied, in metres, along what its kind holds rigidly,
+ * with its bodies as created: what the load warning joint-starts-violated measures. */
+static float b2s3_starting_violation(const b2s3_builder* b, const b2s_joint* joint) {
+    b2BodyId a = b->built->bodies[joint->body_a], bb = b->built->bodies[joint->body_b];
+    b2Vec2 pa = b2Body_GetWorldPoint(a, b2s3_to_b2(joint->local_anchor_a));
+    b2Vec2 pb = b2Body_GetWorldPoint(bb, b2s3_to_b2(joint->local_anchor_b));
+    b2Vec2 d = b2Sub(pb, pa);
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+    case B2S_JOINT_KIND_WELD: return b2Length(d);
+    case B2S_JOINT_KIND_PRISMATIC:
+    case B2S_JOINT_KIND_LINE:
+    case B2S_JOINT_KIND_WHEEL: {
+        b2Vec2 axis = b2Normalize(b2Body_GetWorldVector(a, b2s3_to_b2(joint->local_axis_a)));
+        float across = fabsf(b2Cross(axis, d)), along = b2Dot(axis, d);
+        float beyond = 0.0f;
+        if (joint->enable_limit && joint->kind != B2S_JOINT_KIND_WHEEL) {
+            beyond = b2MaxFloat(b2MaxFloat(joint->lower_limit - along, along - joint->upper_limit),
+                                0.0f);
+        }
+        return b2MaxFloat(across, beyond);
+    }
+    case B2S_JOINT_KIND_DISTANCE:
+        return joint->frequency_hz > 0.0f ? 0.0f : fabsf(b2Length(d) - joint->length);
+    case B2S_JOINT_KIND_ROPE: return b2MaxFloat(b2Length(d) - joint->max_length, 0.0f);
+    default: return 0.0f; /* springs, motors and friction hold nothing in place */
+    }
+}
+
+/* What the sweep of docs/working-range.md measured: v3 flies a line or wheel joint that
+ * starts more than B2S_BOX2D3_MAX_VIOLATION from satisfied off to 1e20 m within steps, and a
+ * body pulled by two joints that start that far from satisfied asserts in the solver. The
+ * first such joint of any other kind on a body is built, the later ones are not. */
+static void b2s3_check_violation(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                 b2s3_check* check) {
+    float violation = b2s3_starting_violation(b, joint);
+    if (!(violation > B2S_BOX2D3_MAX_VIOLATION)) {
+        return;
+    }
+    if (joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL) {
+        b2s3_fail(check,
+                  "it starts %.9g m from satisfied: a line or wheel joint further than %g m from "
+                  "satisfied lies beyond Box2D v3's working range (its solver flings the bodies "
+                  "apart)",
+                  (double)violation, (double)B2S_BOX2D3_MAX_VIOLATION);
+        return;
+    }
+    uint32_t bodies[2] = {joint->body_a, joint->body_b};
+    for (int i = 0; i < 2; ++i) {
+        if (b->pulled[bodies[i]] != 0) {
+            b2s3_fail(check,
+                      "it starts %.9g m from satisfied, and joint %u already pulls body %u from "
+                      "further than %g m: two such joints on one body lie beyond Box2D v3's "
+                      "working range (its solver asserts)",
+                      (double)violation, (unsigned)(b->pulled[bodies[i]] - 1),
+                      (unsigned)bodies[i], (double)B2S_BOX2D3_MAX_VIOLATION);
+            return;
+        }
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (b2Body_GetType(b->built->bodies[bodies[i]]) == b2_dynamicBody) {
+            b->pulled[bodies[i]] = index + 1;
+        }
+    }
 }
 
 /* The bodies every joint def has; false (and a report) when one is missing. */
@@ -1323,6 +1411,9 @@ static void b2s3_make_joint(b2s3_builder* b, uint32_t index) {
         return;
     }
     b2s3_check check = b2s3_joint_check(b, joint);
+    if (b2s3_passed(&check)) {
+        b2s3_check_violation(b, index, joint, &check);
+    }
     if (!b2s3_passed(&check)) {
         b2s3_beyond(b, &check, "joint", index, joint->name, "");
         return;
@@ -1381,7 +1472,9 @@ b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world
     b.list.reports = &built->reports;
     b.geometries = (b2s3_geometry*)calloc(view->shape_count + 1, sizeof(b2s3_geometry));
     b.masses = (b2MassData*)calloc(view->body_count + 1, sizeof(b2MassData));
-    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL;
+    b.pulled = (uint32_t*)calloc(view->body_count + 1, sizeof(uint32_t));
+    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL &&
+              b.pulled != NULL;
     if (ok) {
         b2s3_check_gravity(&b);
         for (uint32_t i = 0; i < view->shape_count && !b.list.out_of_memory; ++i) {
@@ -1402,6 +1495,7 @@ b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world
     }
     free(b.geometries);
     free(b.masses);
+    free(b.pulled);
     if (!ok || b.list.out_of_memory) {
         b2s_box2d3_built_free(built);
         return NULL;

@@ -49,6 +49,7 @@ public:
         // Joints come after every body has its final mass (spring stiffness depends on it),
         // and gears after the joints they couple, which may come later in the file.
         built_.joints.assign(view_.joint_count, nullptr);
+        pulled_.assign(view_.body_count, nullptr);
         for (uint32_t i = 0; i < view_.joint_count; ++i) {
             if (view_.joints[i].kind != B2S_JOINT_KIND_GEAR) {
                 make_joint(i);
@@ -517,7 +518,9 @@ private:
         // A joint on a body that was not created is reported as its dependent by connect.
         bool bodies_created = created_body(joint.body_a) != nullptr &&
                               created_body(joint.body_b) != nullptr;
-        if (bodies_created && !within_range(joint_check(joint), "joint", index, joint.name)) {
+        if (bodies_created && (!within_range(joint_check(joint), "joint", index, joint.name) ||
+                               !within_range(violation_check(joint), "joint", index,
+                                             joint.name))) {
             return;
         }
         switch (joint.kind) {
@@ -537,6 +540,72 @@ private:
                                : "unknown joint kind " + std::to_string(joint.kind);
         report(B2S_CODE_SKIPPED_JOINT, "joint", index, joint.name,
                what + " has no Box2D 2.4 equivalent; joint skipped");
+    }
+
+    /// How far the joint starts from satisfied, in metres, along what its kind holds
+    /// rigidly, with its bodies as created: what the load warning joint-starts-violated
+    /// measures.
+    float starting_violation(const b2s_joint& joint) const {
+        const b2Body* a = built_.bodies[joint.body_a];
+        const b2Body* b = built_.bodies[joint.body_b];
+        b2Vec2 pa = a->GetWorldPoint(to_b2(joint.local_anchor_a));
+        b2Vec2 pb = b->GetWorldPoint(to_b2(joint.local_anchor_b));
+        b2Vec2 d = pb - pa;
+        switch (joint.kind) {
+        case B2S_JOINT_KIND_REVOLUTE:
+        case B2S_JOINT_KIND_WELD: return d.Length();
+        case B2S_JOINT_KIND_PRISMATIC:
+        case B2S_JOINT_KIND_LINE:
+        case B2S_JOINT_KIND_WHEEL: {
+            b2Vec2 axis = a->GetWorldVector(to_b2(joint.local_axis_a));
+            axis.Normalize();
+            float across = std::fabs(b2Cross(axis, d));
+            float along = b2Dot(axis, d);
+            bool limited = joint.enable_limit && joint.kind != B2S_JOINT_KIND_WHEEL;
+            float beyond = limited ? std::max({joint.lower_limit - along,
+                                               along - joint.upper_limit, 0.0f})
+                                   : 0.0f;
+            return std::max(across, beyond);
+        }
+        case B2S_JOINT_KIND_DISTANCE:
+            return joint.frequency_hz > 0.0f ? 0.0f : std::fabs(d.Length() - joint.length);
+        case B2S_JOINT_KIND_ROPE: return std::max(d.Length() - joint.max_length, 0.0f);
+        case B2S_JOINT_KIND_PULLEY: {
+            float now = b2Distance(pa, to_b2(joint.ground_anchor_a)) +
+                        joint.ratio * b2Distance(pb, to_b2(joint.ground_anchor_b));
+            return std::fabs(now - (joint.length_a + joint.ratio * joint.length_b));
+        }
+        default: return 0.0f; // springs, motors and friction hold nothing in place
+        }
+    }
+
+    /// What the sweep of docs/working-range.md measured: Box2D 2.4 holds any one joint that
+    /// starts up to 50 m from satisfied, but a body pulled by two joints that start more
+    /// than working_range::violation from satisfied can be torn to NaN by its position
+    /// solver. The first such joint on a body is built, the later ones are not.
+    RangeCheck violation_check(const b2s_joint& joint) {
+        RangeCheck check;
+        float violation = starting_violation(joint);
+        if (!(violation > working_range::violation)) {
+            return check;
+        }
+        for (uint32_t body : {joint.body_a, joint.body_b}) {
+            if (pulled_[body] != nullptr) {
+                check.fail("it starts " + decimal(violation) + " m from satisfied, and joint " +
+                           std::to_string(pulled_[body] - view_.joints) + " already pulls body " +
+                           std::to_string(body) + " from further than " +
+                           rounded(working_range::violation) +
+                           " m: two such joints on one body lie beyond Box2D 2.4's working "
+                           "range (its position solver can tear the body to NaN)");
+                return check;
+            }
+        }
+        for (uint32_t body : {joint.body_a, joint.body_b}) {
+            if (built_.bodies[body]->GetType() == b2_dynamicBody) {
+                pulled_[body] = &joint;
+            }
+        }
+        return check;
     }
 
     /// The fields Box2D gets of the joint's kind, then how hard its bodies are to move at
@@ -1035,6 +1104,7 @@ private:
     b2World& world_;
     std::vector<std::unique_ptr<b2Shape>> shapes_; // indexed like the scene's shapes
     std::vector<b2MassData> masses_; // each dynamic body's, I about its centre of mass
+    std::vector<const b2s_joint*> pulled_; // per body: the joint that starts it violated
     Built built_;
 };
 

@@ -1,0 +1,144 @@
+/*
+ * The measured working range of Box2D v3 (docs/working-range.md): every case of
+ * range_sweep.h, each run in a child process, since v3 is built with its assertions on.
+ * Once built satisfied and moved through v3's own API, which measures what the engine holds;
+ * once built by the adapter from the file that places body B there, which must hold whatever
+ * it builds (finite, within 1e4 m, no assertion, for 600 steps) and report what it leaves out
+ * as beyond-box2d-range. v3 has no pulley joint. Prints the table the docs show.
+ */
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "box2d3_support.h"
+#include "range_sweep.h"
+
+static bool world_holds(const v3_world* w) {
+    for (int i = 0; i < SWEEP_STEPS; ++i) {
+        step_v3(w, 1);
+        for (uint32_t k = 0; k < w->built->body_count; ++k) {
+            b2BodyId body = w->built->bodies[k];
+            if (B2_IS_NULL(body)) {
+                continue;
+            }
+            b2Vec2 p = b2Body_GetPosition(body);
+            b2Rot q = b2Body_GetRotation(body);
+            if (!(fabsf(p.x) < SWEEP_BOUND && fabsf(p.y) < SWEEP_BOUND && isfinite(q.c) &&
+                  isfinite(q.s))) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+static bool refused(const b2s_box2d3_built* built) {
+    for (uint32_t i = 0; i < built->reports.count; ++i) {
+        const b2s_box2d3_report* r = &built->reports.items[i];
+        if (r->code == B2S_CODE_BEYOND_BOX2D_RANGE && strcmp(r->object, "joint") == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* In a child: the case built satisfied, body B moved by b2Body_SetTransform. */
+static void run_moved(const sweep_case* c) {
+    static char xml[4096];
+    sweep_scene_xml(c, 0.0f, 0.0f, xml, sizeof xml);
+    b2s_scene* scene = load_text(xml);
+    if (scene == NULL) {
+        _exit(4);
+    }
+    v3_world w = build_v3(scene);
+    if (refused(w.built)) {
+        _exit(3);
+    }
+    float dx, dy;
+    sweep_displacement(c, &dx, &dy);
+    b2BodyId b = w.built->bodies[SWEEP_BODY_B];
+    b2Vec2 p = b2Body_GetPosition(b);
+    b2Body_SetTransform(b, (b2Vec2){p.x + dx, p.y + dy}, b2Body_GetRotation(b));
+    _exit(world_holds(&w) ? SWEEP_HELD : SWEEP_LOST);
+}
+
+/* In a child: the case as the file gives it, through the adapter. */
+static void run_built(const sweep_case* c) {
+    static char xml[4096];
+    float dx, dy;
+    sweep_displacement(c, &dx, &dy);
+    sweep_scene_xml(c, dx, dy, xml, sizeof xml);
+    b2s_scene* scene = load_text(xml);
+    if (scene == NULL) {
+        _exit(4);
+    }
+    v3_world w = build_v3(scene);
+    if (refused(w.built)) {
+        _exit(SWEEP_REFUSED);
+    }
+    _exit(world_holds(&w) ? SWEEP_HELD : SWEEP_LOST);
+}
+
+/* The child's exit code, or SWEEP_LOST when it died (an assertion). */
+static int in_child(void (*run)(const sweep_case*), const sweep_case* c) {
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        run(c);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : SWEEP_LOST;
+}
+
+/* A line or wheel joint (alone or among four) to a static body A: v3 does not hold body B
+ * far out on it even satisfied (measured with the lever bound lifted), so the adapter
+ * refuses it past B2S_BOX2D3_MAX_LEVER_WHEEL radii of gyration. */
+static bool wheel_on_static(const sweep_case* c) {
+    bool wheel = c->joint == SWEEP_LINE || c->joint == SWEEP_WHEEL ||
+                 c->joint == SWEEP_FOUR_ON_ONE_PAIR;
+    return wheel && c->body_a == SWEEP_A_STATIC;
+}
+
+static void describe(const char* what, const sweep_case* c) {
+    fprintf(stderr, "%s: %s, body A %s, %s, violation %g m, lever %g m\n", what,
+            sweep_joint_names[c->joint], sweep_body_a_names[c->body_a], sweep_shape_names[c->shape],
+            (double)c->violation, (double)c->lever);
+}
+
+static int every_built_world_holds_and_every_satisfied_one_is_built(void) {
+    static sweep_table table;
+    int failed = 0;
+    for (int i = 0; i < SWEEP_CASE_COUNT; ++i) {
+        sweep_case c = sweep_case_at(i);
+        if (c.joint == SWEEP_PULLEY) {
+            continue;
+        }
+        int v = sweep_violation_index(c.violation);
+        int moved = in_child(run_moved, &c);
+        int built = in_child(run_built, &c);
+        table.cases[c.joint][v] += 1;
+        table.held[c.joint][v] += moved == SWEEP_HELD;
+        table.built[c.joint][v] += built == SWEEP_HELD;
+        table.refused[c.joint][v] += built == SWEEP_REFUSED;
+        if (built != SWEEP_HELD && built != SWEEP_REFUSED) {
+            describe(built == SWEEP_LOST ? "built, not held" : "not loaded", &c);
+            failed += 1;
+        } else if (built == SWEEP_REFUSED && c.violation == 0.0f && !wheel_on_static(&c)) {
+            describe("satisfied, refused", &c);
+            failed += 1;
+        } else if (built == SWEEP_REFUSED && moved == SWEEP_HELD) {
+            describe("refused, though the engine holds it", &c);
+        }
+    }
+    bool has[SWEEP_JOINT_COUNT];
+    for (int j = 0; j < SWEEP_JOINT_COUNT; ++j) {
+        has[j] = j != SWEEP_PULLEY;
+    }
+    sweep_print_table("Box2D v3.1", &table, has);
+    ENSURE_EQ(failed, 0);
+    return 0;
+}
+
+int main(void) {
+    return RUN_TEST(every_built_world_holds_and_every_satisfied_one_is_built);
+}
