@@ -10,6 +10,7 @@
 #include <box2scene/box2d.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -174,8 +175,15 @@ const char* body_kind_name(uint32_t kind) {
 
 std::string body_name(const b2s_body& body) { return body.name ? body.name : "-"; }
 
-void print_table(const b2s_scene_view& view, const box2scene::Built& built, const Frame& start,
-                 const Frame& end) {
+bool finite_pose(const Pose& pose) {
+    return std::isfinite(pose.transform.p.x) && std::isfinite(pose.transform.p.y) &&
+           std::isfinite(pose.angle);
+}
+
+/// Prints where each body started and ended; returns how many ended non-finite.
+int print_table(const b2s_scene_view& view, const box2scene::Built& built, const Frame& start,
+                const Frame& end) {
+    int non_finite = 0;
     size_t name_width = 4;
     for (uint32_t i = 0; i < view.body_count; ++i) {
         name_width = std::max(name_width, body_name(view.bodies[i]).size());
@@ -193,9 +201,16 @@ void print_table(const b2s_scene_view& view, const box2scene::Built& built, cons
         }
         const Pose& from = start.bodies[i];
         const Pose& to = end.bodies[i];
+        if (!finite_pose(to)) {
+            std::printf("(%7.2f, %7.2f)  not finite: Box2D lost this body\n", from.transform.p.x,
+                        from.transform.p.y);
+            non_finite += 1;
+            continue;
+        }
         std::printf("(%7.2f, %7.2f)  (%7.2f, %7.2f)  %12.2f\n", from.transform.p.x,
                     from.transform.p.y, to.transform.p.x, to.transform.p.y, to.angle - from.angle);
     }
+    return non_finite;
 }
 
 std::string escape_xml(const std::string& text) {
@@ -405,7 +420,13 @@ int main(int argc, char** argv) {
     const Frame end = capture_frame(built);
 
     std::printf("%d steps of %.4f s\n", options->steps, kTimeStep);
-    print_table(view, built, start, end);
+    if (int lost = print_table(view, built, start, end); lost > 0) {
+        std::fprintf(stderr,
+                     "simulate: %d bod%s ended with a non-finite position or angle: Box2D could "
+                     "not hold this scene; no drawing written\n",
+                     lost, lost == 1 ? "y" : "ies");
+        return 1;
+    }
     if (!write_file(options->svg_path, render_svg(view, built, start, end, paths))) return 1;
     std::printf("wrote %s\n", options->svg_path.c_str());
     return 0;

@@ -12,6 +12,7 @@
 #include <box2scene/box2d3.h>
 
 #include <stdarg.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -216,8 +217,10 @@ static const char* body_kind_name(uint32_t kind) {
 
 static const char* body_name(const b2s_body* body) { return body->name ? body->name : "-"; }
 
-static void print_table(const b2s_scene_view* view, const b2s_box2d3_built* built,
-                        const frame* start, const frame* end, const float* turned) {
+/* Prints where each body started and ended; returns how many ended non-finite. */
+static int print_table(const b2s_scene_view* view, const b2s_box2d3_built* built,
+                       const frame* start, const frame* end, const float* turned) {
+    int non_finite = 0;
     size_t name_width = 4;
     for (uint32_t i = 0; i < view->body_count; ++i) {
         const size_t length = strlen(body_name(&view->bodies[i]));
@@ -235,9 +238,16 @@ static void print_table(const b2s_scene_view* view, const b2s_box2d3_built* buil
         }
         const b2Vec2 from = start->bodies[i].p;
         const b2Vec2 to = end->bodies[i].p;
+        if (!(isfinite(to.x) && isfinite(to.y) && isfinite(turned[i]))) {
+            printf("(%7.2f, %7.2f)  not finite: Box2D lost this body\n", (double)from.x,
+                   (double)from.y);
+            non_finite += 1;
+            continue;
+        }
         printf("(%7.2f, %7.2f)  (%7.2f, %7.2f)  %12.2f\n", (double)from.x, (double)from.y,
                (double)to.x, (double)to.y, (double)turned[i]);
     }
+    return non_finite;
 }
 
 static void append(text* out, const char* format, ...) {
@@ -486,13 +496,20 @@ int main(int argc, char** argv) {
             fprintf(stderr, "simulate_v3: out of memory\n");
         } else {
             printf("%d steps of %.4f s\n", opts.steps, (double)TIME_STEP);
-            print_table(view, built, &start, &end, result.turned);
-            text document = render_svg(view, built, &start, &end, result.paths);
-            if (write_file(opts.svg_path, &document)) {
-                printf("wrote %s\n", opts.svg_path);
-                status = 0;
+            const int lost = print_table(view, built, &start, &end, result.turned);
+            if (lost > 0) {
+                fprintf(stderr,
+                        "simulate_v3: %d bod%s ended with a non-finite position or angle: Box2D "
+                        "could not hold this scene; no drawing written\n",
+                        lost, lost == 1 ? "y" : "ies");
+            } else {
+                text document = render_svg(view, built, &start, &end, result.paths);
+                if (write_file(opts.svg_path, &document)) {
+                    printf("wrote %s\n", opts.svg_path);
+                    status = 0;
+                }
+                free(document.data);
             }
-            free(document.data);
         }
         free_frame(&start);
         free_frame(&end);
