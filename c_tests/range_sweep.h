@@ -230,7 +230,9 @@ typedef enum sweep_outcome { SWEEP_HELD = 0, SWEEP_LOST = 1, SWEEP_REFUSED = 2 }
 
 /* Held and built counts per joint kind and violation, for the table. */
 typedef struct sweep_table {
-    int held[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];    /* the engine, satisfied and moved */
+    /* the engine, satisfied and moved: cases the adapter built satisfied, and those held */
+    int measured[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
+    int held[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
     int built[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];   /* the adapter, from the file */
     int refused[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
     int cases[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
@@ -246,10 +248,11 @@ static inline int sweep_violation_index(float v) {
 }
 
 /* The table as docs/working-range.md shows it: per kind and initial violation, how many of
- * the cases the engine holds, and how many the adapter builds (each of which it holds). */
+ * the cases the engine holds (of those it could be measured on: built satisfied, then
+ * moved), and how many the adapter builds (each of which it holds). */
 static inline void sweep_print_table(const char* engine, const sweep_table* t, bool has[]) {
-    printf("\n%s: held by the engine / built by the adapter, of %d cases each\n\n", engine,
-           t->cases[0][0]);
+    printf("\n%s, %d cases each: held by the engine of measured / built by the adapter\n\n",
+           engine, t->cases[0][0]);
     printf("| joints | ");
     for (int v = 0; v < SWEEP_VIOLATION_COUNT; ++v) {
         printf("%g m | ", (double)sweep_violations[v]);
@@ -265,7 +268,7 @@ static inline void sweep_print_table(const char* engine, const sweep_table* t, b
         }
         printf("| %s | ", sweep_joint_names[j]);
         for (int v = 0; v < SWEEP_VIOLATION_COUNT; ++v) {
-            printf("%d / %d | ", t->held[j][v], t->built[j][v]);
+            printf("%d of %d / %d | ", t->held[j][v], t->measured[j][v], t->built[j][v]);
         }
         printf("\n");
     }

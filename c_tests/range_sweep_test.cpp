@@ -102,6 +102,7 @@ static int every_built_world_holds_and_every_satisfied_one_is_built() {
         int moved = in_child(run_moved, c);
         int built = in_child(run_built, c);
         table.cases[c.joint][v] += 1;
+        table.measured[c.joint][v] += moved == SWEEP_HELD || moved == SWEEP_LOST;
         table.held[c.joint][v] += moved == SWEEP_HELD;
         table.built[c.joint][v] += built == SWEEP_HELD;
         table.refused[c.joint][v] += built == SWEEP_REFUSED;

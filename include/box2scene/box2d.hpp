@@ -97,8 +97,9 @@ inline constexpr float density = 1e5f;       ///< kg/m^2
 inline constexpr float friction = 1e5f;      ///< friction coefficient and restitution
 inline constexpr float ratio = 1e5f;         ///< pulley and gear ratios
 inline constexpr float frequency = 1e3f;     ///< Hz, and damping ratios, of springs
-/// N/m or N m/rad: the softest spring, unless 0 (a rigid joint), as b2LinearStiffness and
-/// b2AngularStiffness make it from FrequencyHz and the bodies' masses.
+/// N/m or N m/rad: the softest spring, unless 0 (a rigid joint), as build_world makes it
+/// from FrequencyHz and the bodies' masses (b2LinearStiffness for a distance joint, Box2D
+/// 2.2's wheel and soft weld springs).
 inline constexpr float min_stiffness = 1e-20f;
 inline constexpr float force = 1e20f;        ///< N and N m: force and torque maxima
 inline constexpr float min_axis = 1e-6f;     ///< m: the shortest joint axis
