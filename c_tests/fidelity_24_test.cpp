@@ -375,6 +375,37 @@ void motor(Hand& h) {
     h.world.CreateJoint(&def);
 }
 
+void turning_a(Hand& h) {
+    b2PolygonShape b = box();
+    b2BodyDef turntable = body_def(b2_kinematicBody);
+    turntable.angularVelocity = 0.5f;
+    fixture(h.add(turntable), b, 1.0f);
+    fixture(h.add(body_def(b2_dynamicBody, 2.0f, 0.0f)), b, 1.0f);
+    fixture(h.add(body_def(b2_dynamicBody, 0.0f, 3.0f)), b, 1.0f);
+    fixture(h.add(body_def(b2_dynamicBody, -3.0f, 0.0f)), b, 1.0f);
+    b2RevoluteJointDef hinge;
+    hinge.bodyA = h[0];
+    hinge.bodyB = h[1];
+    hinge.localAnchorA.Set(2.0f, 0.0f);
+    h.world.CreateJoint(&hinge);
+    b2PrismaticJointDef slider;
+    slider.bodyA = h[0];
+    slider.bodyB = h[2];
+    slider.localAnchorA.Set(0.0f, 3.0f);
+    slider.localAxisA.Set(0.0f, 1.0f);
+    slider.enableLimit = true;
+    slider.lowerTranslation = -1.0f;
+    slider.upperTranslation = 1.0f;
+    h.world.CreateJoint(&slider);
+    b2MotorJointDef motor; // the offset turns with body A, in 2.4 as in the file
+    motor.bodyA = h[0];
+    motor.bodyB = h[3];
+    motor.linearOffset.Set(-3.0f, 0.0f);
+    motor.maxForce = 200.0f;
+    motor.maxTorque = 50.0f;
+    h.world.CreateJoint(&motor);
+}
+
 void pulley(Hand& h) {
     b2PolygonShape b = box();
     h.add(body_def(b2_staticBody));
@@ -437,7 +468,8 @@ const Row rows[] = {{"body_fields", body_fields}, {"mass_data", mass_data},
                     {"rope", rope},               {"line", line},
                     {"wheel", wheel},             {"weld", weld},
                     {"friction", friction},       {"motor", motor},
-                    {"pulley", pulley},           {"gear", gear}};
+                    {"turning_a", turning_a},     {"pulley", pulley},
+                    {"gear", gear}};
 
 /// The bodies a report names: its body, or the bodies of its joint.
 std::set<size_t> named_bodies(const World& w) {

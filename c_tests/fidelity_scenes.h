@@ -208,6 +208,22 @@ static const fidelity_scene fidelity_scenes[] = {
      "<Joint Type=\"Motor\"><BodyA>0</BodyA><BodyB>1</BodyB><LinearOffset>2 0</LinearOffset>"
      "<AngularOffset>0.5</AngularOffset><MaxForce>100</MaxForce><MaxTorque>50</MaxTorque>"
      "</Joint></Joints></World>"},
+    {"turning_a",
+     "<World Version=\"2\"><Gravity>0 -10</Gravity><Shapes>" FIDELITY_BOX
+     "</Shapes><Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures><Bodies>"
+     "<Body Type=\"Kinematic\"><AngularVelocity>0.5</AngularVelocity>"
+     "<Fixtures><ID>0</ID></Fixtures></Body>"
+     "<Body Type=\"Dynamic\"><Position>2 0</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+     "<Body Type=\"Dynamic\"><Position>0 3</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+     "<Body Type=\"Dynamic\"><Position>-3 0</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+     "</Bodies><Joints>"
+     "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>2 0</LocalAnchorA>"
+     "</Joint>"
+     "<Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>0 3</LocalAnchorA>"
+     "<LocalAxisA>0 1</LocalAxisA><EnableLimit>true</EnableLimit>"
+     "<LowerTranslation>-1</LowerTranslation><UpperTranslation>1</UpperTranslation></Joint>"
+     "<Joint Type=\"Motor\"><BodyA>0</BodyA><BodyB>3</BodyB><LinearOffset>-3 0</LinearOffset>"
+     "<MaxForce>200</MaxForce><MaxTorque>50</MaxTorque></Joint></Joints></World>"},
     {"pulley",
      "<World Version=\"1\"><Gravity>0 -10</Gravity><Shapes>" FIDELITY_BOX
      "</Shapes><Fixtures><Fixture><Shape>0</Shape><Density>2</Density></Fixture>"
