@@ -6,9 +6,6 @@
  * it builds (finite, within 1e4 m, no assertion, for 600 steps) and report what it leaves out
  * as beyond-box2d-range. v3 has no pulley joint. Prints the table the docs show.
  */
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include "box2d3_support.h"
 #include "range_sweep.h"
 
@@ -47,11 +44,11 @@ static void run_moved(const sweep_case* c) {
     sweep_scene_xml(c, 0.0f, 0.0f, xml, sizeof xml);
     b2s_scene* scene = load_text(xml);
     if (scene == NULL) {
-        _exit(4);
+        _exit(SWEEP_NOT_LOADED);
     }
     v3_world w = build_v3(scene);
     if (refused(w.built)) {
-        _exit(3);
+        _exit(SWEEP_NOT_MEASURED);
     }
     float dx, dy;
     sweep_displacement(c, &dx, &dy);
@@ -69,25 +66,13 @@ static void run_built(const sweep_case* c) {
     sweep_scene_xml(c, dx, dy, xml, sizeof xml);
     b2s_scene* scene = load_text(xml);
     if (scene == NULL) {
-        _exit(4);
+        _exit(SWEEP_NOT_LOADED);
     }
     v3_world w = build_v3(scene);
     if (refused(w.built)) {
         _exit(SWEEP_REFUSED);
     }
     _exit(world_holds(&w) ? SWEEP_HELD : SWEEP_LOST);
-}
-
-/* The child's exit code, or SWEEP_LOST when it died (an assertion). */
-static int in_child(void (*run)(const sweep_case*), const sweep_case* c) {
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        run(c);
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : SWEEP_LOST;
 }
 
 /* A line or wheel joint (alone or among four) to a static body A: v3 does not hold body B
@@ -99,44 +84,12 @@ static bool wheel_on_static(const sweep_case* c) {
     return wheel && c->body_a == SWEEP_A_STATIC;
 }
 
-static void describe(const char* what, const sweep_case* c) {
-    fprintf(stderr, "%s: %s, body A %s, %s, violation %g m, lever %g m\n", what,
-            sweep_joint_names[c->joint], sweep_body_a_names[c->body_a], sweep_shape_names[c->shape],
-            (double)c->violation, (double)c->lever);
-}
-
 static int every_built_world_holds_and_every_satisfied_one_is_built(void) {
-    static sweep_table table;
-    int failed = 0;
-    for (int i = 0; i < SWEEP_CASE_COUNT; ++i) {
-        sweep_case c = sweep_case_at(i);
-        if (c.joint == SWEEP_PULLEY) {
-            continue;
-        }
-        int v = sweep_violation_index(c.violation);
-        int moved = in_child(run_moved, &c);
-        int built = in_child(run_built, &c);
-        table.cases[c.joint][v] += 1;
-        table.measured[c.joint][v] += moved == SWEEP_HELD || moved == SWEEP_LOST;
-        table.held[c.joint][v] += moved == SWEEP_HELD;
-        table.built[c.joint][v] += built == SWEEP_HELD;
-        table.refused[c.joint][v] += built == SWEEP_REFUSED;
-        if (built != SWEEP_HELD && built != SWEEP_REFUSED) {
-            describe(built == SWEEP_LOST ? "built, not held" : "not loaded", &c);
-            failed += 1;
-        } else if (built == SWEEP_REFUSED && c.violation == 0.0f && !wheel_on_static(&c)) {
-            describe("satisfied, refused", &c);
-            failed += 1;
-        } else if (built == SWEEP_REFUSED && moved == SWEEP_HELD) {
-            describe("refused, though the engine holds it", &c);
-        }
-    }
     bool has[SWEEP_JOINT_COUNT];
     for (int j = 0; j < SWEEP_JOINT_COUNT; ++j) {
         has[j] = j != SWEEP_PULLEY;
     }
-    sweep_print_table("Box2D v3.1", &table, has);
-    ENSURE_EQ(failed, 0);
+    ENSURE_EQ(sweep_engine("Box2D v3.1", run_moved, run_built, has, wheel_on_static), 0);
     return 0;
 }
 

@@ -13,6 +13,8 @@
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #define SWEEP_STEPS 600
 #define SWEEP_BOUND 1e4f /* m: farther than this from the origin is flying off */
@@ -226,15 +228,20 @@ static inline void sweep_scene_xml(const sweep_case* c, float dx, float dy, char
 /* What became of a case: held (finite and within SWEEP_BOUND for SWEEP_STEPS steps), the
  * adapter refused one of its joints (beyond-box2d-range), or the engine did not hold it
  * (non-finite, flown off, or an assertion: the child that ran it died). */
-typedef enum sweep_outcome { SWEEP_HELD = 0, SWEEP_LOST = 1, SWEEP_REFUSED = 2 } sweep_outcome;
+typedef enum sweep_outcome {
+    SWEEP_HELD = 0,
+    SWEEP_LOST = 1,
+    SWEEP_REFUSED = 2,
+    SWEEP_NOT_MEASURED = 3, /* the adapter refuses the satisfied level already */
+    SWEEP_NOT_LOADED = 4
+} sweep_outcome;
 
 /* Held and built counts per joint kind and violation, for the table. */
 typedef struct sweep_table {
     /* the engine, satisfied and moved: cases the adapter built satisfied, and those held */
     int measured[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
     int held[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
-    int built[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];   /* the adapter, from the file */
-    int refused[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
+    int built[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT]; /* the adapter, from the file */
     int cases[SWEEP_JOINT_COUNT][SWEEP_VIOLATION_COUNT];
 } sweep_table;
 
@@ -250,7 +257,8 @@ static inline int sweep_violation_index(float v) {
 /* The table as docs/working-range.md shows it: per kind and initial violation, how many of
  * the cases the engine holds (of those it could be measured on: built satisfied, then
  * moved), and how many the adapter builds (each of which it holds). */
-static inline void sweep_print_table(const char* engine, const sweep_table* t, bool has[]) {
+static inline void sweep_print_table(const char* engine, const sweep_table* t,
+                                     const bool has[SWEEP_JOINT_COUNT]) {
     printf("\n%s, %d cases each: held by the engine of measured / built by the adapter\n\n",
            engine, t->cases[0][0]);
     printf("| joints | ");
@@ -272,6 +280,64 @@ static inline void sweep_print_table(const char* engine, const sweep_table* t, b
         }
         printf("\n");
     }
+}
+
+/* Runs `run` on case `c` in a child process: its exit code, or SWEEP_LOST when it died (an
+ * assertion). `run` ends the child with _exit. */
+static inline int sweep_in_child(void (*run)(const sweep_case*), const sweep_case* c) {
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        run(c);
+        _exit(SWEEP_LOST);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : SWEEP_LOST;
+}
+
+static inline void sweep_describe(const char* what, const sweep_case* c) {
+    fprintf(stderr, "%s: %s, body A %s, %s, violation %g m, lever %g m\n", what,
+            sweep_joint_names[c->joint], sweep_body_a_names[c->body_a],
+            sweep_shape_names[c->shape], (double)c->violation, (double)c->lever);
+}
+
+/* One engine's sweep: every case of a joint kind it `has`, once through `run_moved` (the
+ * engine: built satisfied, then moved) and once through `run_built` (the adapter, from the
+ * file), each in a child. Fails a case the adapter builds and the engine does not hold, and
+ * a satisfied case the adapter refuses unless `may_refuse_satisfied` says the engine was
+ * measured not to hold it; prints the table. Returns how many cases failed. */
+static inline int sweep_engine(const char* engine, void (*run_moved)(const sweep_case*),
+                               void (*run_built)(const sweep_case*),
+                               bool has[SWEEP_JOINT_COUNT],
+                               bool (*may_refuse_satisfied)(const sweep_case*)) {
+    static sweep_table table;
+    memset(&table, 0, sizeof table);
+    int failed = 0;
+    for (int i = 0; i < SWEEP_CASE_COUNT; ++i) {
+        sweep_case c = sweep_case_at(i);
+        if (!has[c.joint]) {
+            continue;
+        }
+        int v = sweep_violation_index(c.violation);
+        int moved = sweep_in_child(run_moved, &c);
+        int built = sweep_in_child(run_built, &c);
+        table.cases[c.joint][v] += 1;
+        table.measured[c.joint][v] += moved == SWEEP_HELD || moved == SWEEP_LOST;
+        table.held[c.joint][v] += moved == SWEEP_HELD;
+        table.built[c.joint][v] += built == SWEEP_HELD;
+        if (built != SWEEP_HELD && built != SWEEP_REFUSED) {
+            sweep_describe(built == SWEEP_LOST ? "built, not held" : "not loaded", &c);
+            failed += 1;
+        } else if (built == SWEEP_REFUSED && c.violation == 0.0f && !may_refuse_satisfied(&c)) {
+            sweep_describe("satisfied, refused", &c);
+            failed += 1;
+        } else if (built == SWEEP_REFUSED && moved == SWEEP_HELD) {
+            sweep_describe("refused, though the engine holds it", &c);
+        }
+    }
+    sweep_print_table(engine, &table, has);
+    return failed;
 }
 
 #endif /* BOX2SCENE_RANGE_SWEEP_H */
