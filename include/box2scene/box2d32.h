@@ -104,10 +104,12 @@ typedef struct b2s_box2d32_built {
  *  for a revolute joint and for every other kind. */
 #define B2S_BOX2D32_MAX_LEVER_REVOLUTE 1e3f
 #define B2S_BOX2D32_MAX_LEVER 5.0f
-/** m: how far apart the anchors of a line, wheel or prismatic joint between two dynamic
- *  bodies may start across its axis: a joint that starts violated is what throws v3's bodies
- *  off (docs/working-range.md). */
-#define B2S_BOX2D32_MAX_INITIAL_VIOLATION 1.0f
+/** How far apart the anchors of a line or wheel joint between two dynamic bodies may start
+ *  across its axis, in radii of gyration of the body that has the smaller: such a joint
+ *  that starts violated by 3 body sizes (about 10 radii) throws both bodies off in v3.2, at
+ *  every scale measured (docs/working-range.md); prismatic, revolute, weld and distance
+ *  joints that start violated are pulled together. */
+#define B2S_BOX2D32_MAX_INITIAL_VIOLATION 4.0f
 /** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies. */
 #define B2S_BOX2D32_MAX_JOINT_ACCELERATION 1e5f
 /** The maximum linear speed b2s_box2d32_world_def gives. */

@@ -39,6 +39,11 @@ static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const ch
     }
 }
 
+/* sqrt(I/m) about the centre of mass; a body that cannot turn has no bound of its own. */
+static float b2s3_gyration(const b2MassData* mass) {
+    return mass->rotationalInertia > 0.0f ? sqrtf(mass->rotationalInertia / mass->mass) : FLT_MAX;
+}
+
 /* What a motor's or friction's force (N) does to `body`. */
 static void b2s3_check_drive(const b2s3_builder* b, b2s3_check* check, uint32_t body,
                              float force) {
@@ -66,9 +71,9 @@ static float b2s3_drive_force(const b2s_joint* joint) {
     }
 }
 
-/* How far a line, wheel or prismatic joint starts from what it holds, in metres: its
- * anchors' distance across the axis (0 for the other kinds). Such a joint between two
- * dynamic bodies that starts metres off throws them off. */
+/* How far a line or wheel joint starts from what it holds, in metres: its anchors' distance
+ * across the axis (0 for the other kinds, which v3 pulls together however far apart they
+ * start). */
 static float b2s3_initial_violation(const b2s3_builder* b, const b2s_joint* joint) {
     b2BodyId a = b->built->bodies[joint->body_a], bb = b->built->bodies[joint->body_b];
     b2Transform ta = b2Body_GetTransform(a), tb = b2Body_GetTransform(bb);
@@ -76,7 +81,6 @@ static float b2s3_initial_violation(const b2s3_builder* b, const b2s_joint* join
     b2Vec2 pb = b2TransformPoint(tb, b2s3_to_b2(joint->local_anchor_b));
     b2Vec2 d = b2Sub(pb, pa);
     switch (joint->kind) {
-    case B2S_JOINT_KIND_PRISMATIC:
     case B2S_JOINT_KIND_LINE:
     case B2S_JOINT_KIND_WHEEL: {
         b2Vec2 axis = b2RotateVector(ta.q, b2Normalize(b2s3_to_b2(joint->local_axis_a)));
@@ -182,12 +186,16 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
     if (b2s3_passed(&check) && b2s3_is_dynamic(b, joint->body_a) &&
         b2s3_is_dynamic(b, joint->body_b)) {
         float violation = b2s3_initial_violation(b, joint);
-        if (!(violation <= B2S3_LIMIT(MAX_INITIAL_VIOLATION))) {
+        float gyration = fminf(b2s3_gyration(&b->masses[joint->body_a]),
+                               b2s3_gyration(&b->masses[joint->body_b]));
+        float bound = B2S3_LIMIT(MAX_INITIAL_VIOLATION) * gyration;
+        if (violation > B2S3_LINEAR_SLOP && !(violation <= bound)) {
             b2s3_fail(&check,
-                      "it starts violated by %.9g m between two dynamic bodies, beyond "
-                      B2S3_ENGINE "'s working range (at most %g m), where its solver throws "
-                      "them off",
-                      (double)violation, (double)B2S3_LIMIT(MAX_INITIAL_VIOLATION));
+                      "it starts violated by %.9g m across its axis between two dynamic "
+                      "bodies, beyond " B2S3_ENGINE "'s working range (at most %g radii of "
+                      "gyration, %.9g m), where its solver throws them off",
+                      (double)violation, (double)B2S3_LIMIT(MAX_INITIAL_VIOLATION),
+                      (double)bound);
         }
     }
     return check;
