@@ -7,6 +7,8 @@
  */
 #include "box2d32_support.h"
 
+#include <box2d/constants.h>
+
 /* ---- scenes */
 
 /* A scene from its parts (attributes in single quotes); `gravity` NULL leaves it out. */
@@ -1472,6 +1474,111 @@ static int angle_beyond_pi_is_reported_lossy_for_capture(void) {
     return 0;
 }
 
+/* ---- what v3.2 does otherwise than v3.1 */
+
+/* v3.2 keeps B2_NAME_LENGTH bytes of a name: a longer one is not passed (nor cut), and
+ * reported. */
+static int names_longer_than_v32_keeps_are_reported(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", CIRCLE("0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><Name>abcdefghij</Name><Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Name>abcdefghijk</Name><Position>5 0</Position>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_EQ(B2_NAME_LENGTH, 10);
+    ENSURE_REPORT_COUNT(w, 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_CAPTURE, "body", 1), 1);
+    ENSURE_STR(b2Body_GetName(BODY(w, 0)), "abcdefghij");
+    ENSURE_STR(b2Body_GetName(BODY(w, 1)), "");
+    close_world(&w);
+    return 0;
+}
+
+/* Box2D 2.x keeps a body that may not sleep asleep until touched; v3 creates it awake. */
+static int awake_false_without_sleep_is_reported(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", CIRCLE("0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><Awake>false</Awake><AllowSleep>false</AllowSleep>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 0</Position><Awake>false</Awake>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_CAPTURE, "body", 0), 1);
+    ENSURE(b2Body_IsAwake(BODY(w, 0)));
+    ENSURE(!b2Body_IsAwake(BODY(w, 1)));
+    close_world(&w);
+    return 0;
+}
+
+/* v3.2 asserts at the step on a body whose shapes left its mass to be computed: every
+ * kinematic and dynamic body gets it computed, so that both step. */
+static int kinematic_and_dynamic_bodies_with_shapes_step(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", BOX("0.5", "0.5"),
+         "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Kinematic'><LinearVelocity>1 0</LinearVelocity><Fixtures><ID>0</ID>"
+         "</Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 5</Position><Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 0);
+    step_v3(&w.v3, 60);
+    ENSURE_NEAR(v3_position(BODY(w, 0)).x, 1.0, 1e-4);
+    ENSURE_FLOAT(b2Body_GetMass(BODY(w, 0)), 0.0f);
+    ENSURE_FLOAT(b2Body_GetMass(BODY(w, 1)), 1.0f);
+    ENSURE_FINITE(w);
+    close_world(&w);
+    return 0;
+}
+
+/* v3.2's lock keeps the inertia (its later sources zero it): the adapter zeroes it too, so
+ * that a locked body's mass is the same in every 3.2. */
+static int fixed_rotation_has_no_inertia(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", BOX("0.5", "0.5"),
+         "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><FixedRotation>true</FixedRotation><AngularVelocity>2"
+         "</AngularVelocity><Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 0);
+    ENSURE(b2Body_GetMotionLocks(BODY(w, 0)).angularZ);
+    ENSURE_FLOAT(b2Body_GetRotationalInertia(BODY(w, 0)), 0.0f);
+    ENSURE_FLOAT(b2Body_GetMass(BODY(w, 0)), 1.0f);
+    ENSURE_FLOAT(b2Body_GetAngularVelocity(BODY(w, 0)), 0.0f);
+    step_v3(&w.v3, 10);
+    ENSURE_FLOAT(b2Body_GetRotation(BODY(w, 0)).c, 1.0f);
+    close_world(&w);
+    return 0;
+}
+
+/* A MassData that moves the centre keeps the velocity of the body's origin the file gives,
+ * as Box2D 2.x's SetMassData does: the centre's is the origin's plus w x (c - p). A Mass of
+ * 0 is counted as 1 kg, before the inertia is moved to the centre. */
+static int mass_data_keeps_the_origins_velocity_and_mass_zero_is_one_kilogram(void) {
+    scene_world w;
+    OPEN(w, "1", "0 0", BOX("0.5", "0.5"),
+         "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><LinearVelocity>1 2</LinearVelocity><AngularVelocity>3"
+         "</AngularVelocity><MassData><Center>0.5 0</Center><Inertia>1</Inertia></MassData>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 0</Position><MassData><Mass>0</Mass><Center>0 1"
+         "</Center><Inertia>3</Inertia></MassData><Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 0);
+    b2BodyId moved = BODY(w, 0);
+    ENSURE_FLOAT(b2Body_GetLocalCenter(moved).x, 0.5f);
+    b2Vec2 v = b2Body_GetLinearVelocity(moved);
+    /* (1, 2) + 3 x (0.5, 0) = (1, 2) + (0, 1.5) */
+    ENSURE_FLOAT(v.x, 1.0f);
+    ENSURE_FLOAT(v.y, 3.5f);
+    b2BodyId massless = BODY(w, 1);
+    ENSURE_FLOAT(b2Body_GetMass(massless), 1.0f);
+    ENSURE_FLOAT(b2Body_GetLocalCenter(massless).y, 1.0f);
+    ENSURE_FLOAT(b2Body_GetRotationalInertia(massless), 3.0f - 1.0f);
+    close_world(&w);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(body_fields_are_passed_exactly);
@@ -1513,5 +1620,10 @@ int main(void) {
     failed += RUN_TEST(negative_damping_is_reported_and_zeroed);
     failed += RUN_TEST(beyond_the_working_range_skips_what_depends_on_it);
     failed += RUN_TEST(angle_beyond_pi_is_reported_lossy_for_capture);
+    failed += RUN_TEST(names_longer_than_v32_keeps_are_reported);
+    failed += RUN_TEST(awake_false_without_sleep_is_reported);
+    failed += RUN_TEST(kinematic_and_dynamic_bodies_with_shapes_step);
+    failed += RUN_TEST(fixed_rotation_has_no_inertia);
+    failed += RUN_TEST(mass_data_keeps_the_origins_velocity_and_mass_zero_is_one_kilogram);
     return failed;
 }
