@@ -218,7 +218,8 @@ check_readme() {
   for file in c/main.c c/CMakeLists.txt; do
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
-  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt; do
+  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt \
+    box2d32/CMakeLists.txt; do
     [[ $install == *"$(cat "$here/$file")"* ]] ||
       fail "docs/install.md does not show $file as it is"
   done
