@@ -3,7 +3,9 @@
  * body's position within CALM_METRES and its angle within CALM_RADIANS of where v3.1 has it
  * (box2d3_calm_trajectories wrote v3.1's to BOX2SCENE_CALM_TRAJECTORIES) at every sample
  * over 300 steps. The two engines' solvers differ in their details, so they do not agree
- * bit for bit; the tolerance says how close the two mappings keep them.
+ * bit for bit; the tolerance says how close the two mappings keep them. Run alone
+ * (tools/check-memory), without v3.1's trajectories, it builds and steps the scenes and
+ * exits 77, skipped.
  */
 #include "box2d32_support.h"
 
@@ -18,7 +20,17 @@
 
 static int v32_agrees_with_v31_on_calm_scenes(void) {
     const char* path = getenv("BOX2SCENE_CALM_TRAJECTORIES");
-    ENSURE(path != NULL);
+    if (path == NULL) {
+        for (size_t i = 0; i < CALM_SCENE_COUNT; ++i) {
+            calm_sample* samples = (calm_sample*)calloc(
+                (size_t)calm_body_count(i) * CALM_SAMPLES + 1, sizeof(calm_sample));
+            ENSURE(samples != NULL);
+            ENSURE(calm_trajectories(i, samples));
+            free(samples);
+        }
+        printf("no v3.1 trajectories (BOX2SCENE_CALM_TRAJECTORIES): nothing compared\n");
+        return 77;
+    }
     FILE* file = fopen(path, "r");
     ENSURE(file != NULL);
     double worst_metres = 0.0, worst_radians = 0.0;
@@ -66,7 +78,9 @@ static int v32_agrees_with_v31_on_calm_scenes(void) {
 }
 
 int main(void) {
-    int failed = 0;
-    failed += RUN_TEST(v32_agrees_with_v31_on_calm_scenes);
-    return failed;
+    int status = v32_agrees_with_v31_on_calm_scenes();
+    if (status != 77) {
+        printf("%s v32_agrees_with_v31_on_calm_scenes\n", status != 0 ? "FAIL" : "pass");
+    }
+    return status;
 }

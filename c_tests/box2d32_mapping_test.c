@@ -1,6 +1,6 @@
 /*
- * The v3 mapping (docs/box2d.md, "How each version maps"), row by row, against real Box2D v3.2 with its
- * assertions on: each test builds a small inline scene, steps the world and checks what the
+ * The v3.2 mapping (docs/box2d.md, "How each version maps"), row by row, against real Box2D
+ * v3.2 with its assertions on: each test builds a small inline scene, steps the world and checks what the
  * physics must do (positions, angles, velocities), exactly where the mapping is exact, with a
  * tolerance only where the solver needs one; every report is checked by its code, object and
  * index; every world must stay finite.

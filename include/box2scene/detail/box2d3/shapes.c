@@ -149,22 +149,10 @@ static bool b2s3_make_open_chain(b2s3_builder* b, uint32_t index, const b2s_shap
     return made;
 }
 
-/* A loop of `count` vertices; one the version cannot make with so few gets the midpoint of
- * its closing edge, which changes no geometry. */
+/* A loop: its vertices, from 3 on. */
 static bool b2s3_make_loop(b2s3_builder* b, const b2Vec2* vertices, uint32_t count,
                            b2s3_geometry* out) {
-    b2Vec2 points[4];
-    const b2Vec2* used = vertices;
-    int used_count = (int)count;
-    if (count < B2S3_MIN_LOOP_POINTS) {
-        points[0] = vertices[0];
-        points[1] = vertices[1];
-        points[2] = vertices[2];
-        points[3] = b2Lerp(vertices[2], vertices[0], 0.5f);
-        used = points;
-        used_count = 4;
-    }
-    if (!b2s3_set_chain_points(out, used, used_count)) {
+    if (!b2s3_set_chain_points(out, vertices, (int)count)) {
         b->list.out_of_memory = true;
         return false;
     }

@@ -94,7 +94,8 @@ static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* d
             continue;
         }
         b2Vec2 offset = b2Sub(center, shapes[i].center);
-        body.rotationalInertia += shapes[i].rotationalInertia + shapes[i].mass * b2Dot(offset, offset);
+        float inertia = shapes[i].rotationalInertia + shapes[i].mass * b2Dot(offset, offset);
+        body.rotationalInertia += inertia;
     }
     *inertia_kept = true;
     if (fixed_rotation) {
@@ -130,9 +131,6 @@ static b2ChainSegment b2s3_chain_segment(const b2Vec2* p, int n, bool loop, int 
 static int b2s3_chain_segment_count(int n, bool loop) {
     return loop ? n : n - 3;
 }
-
-/* A loop needs no extra point: loose segments make a 3-vertex loop as it is. */
-#define B2S3_MIN_LOOP_POINTS 3
 
 /* ---- joints: anchors, axes and reference angles are the bodies' local frames */
 
