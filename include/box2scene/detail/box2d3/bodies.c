@@ -135,7 +135,8 @@ static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
     }
     if (b2s3_passed(&check)) {
         b2Vec2 placed = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
-        b2s3_vector(&check, "Position, placed,", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH), "m");
+        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH),
+                    "m");
     }
     return check;
 }
