@@ -113,6 +113,89 @@ static int every_scene_file_round_trips_bit_for_bit(void) {
     return failed;
 }
 
+/* The forms that are v3.2's own round-trip too, with nothing reported and the same shapes
+ * and joints read back: two loops of the same points side by side on one body (each closes
+ * before the other begins), a 3-vertex loop, a sensor chain, an edge with ghosts, a
+ * prismatic joint with a reference angle on a skew axis, a friction joint off the origins
+ * and a motor joint (read back as the Motor it was built from). */
+static int v32_forms_round_trip(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes>"
+        "<Shape Type='Loop'><Vertices><Vertex>-5 0</Vertex><Vertex>5 0</Vertex>"
+        "<Vertex>5 10</Vertex><Vertex>-5 10</Vertex></Vertices></Shape>"
+        "<Shape Type='Loop'><Vertices><Vertex>0 -3</Vertex><Vertex>4 0</Vertex>"
+        "<Vertex>-4 0</Vertex></Vertices></Shape>"
+        "<Shape Type='Chain'><Vertices><Vertex>-3 5</Vertex><Vertex>0 4</Vertex>"
+        "<Vertex>3 5</Vertex></Vertices><PrevVertex>-4 6</PrevVertex><NextVertex>4 6"
+        "</NextVertex><HasPrevVertex>true</HasPrevVertex><HasNextVertex>true</HasNextVertex>"
+        "</Shape>"
+        "<Shape Type='Edge'><Vertex1>-2 2</Vertex1><Vertex2>2 2</Vertex2><Vertex0>-3 2"
+        "</Vertex0><Vertex3>3 2</Vertex3><HasVertex0>true</HasVertex0><HasVertex3>true"
+        "</HasVertex3></Shape>"
+        "<Shape Type='Circle'><Radius>0.25</Radius><Position>0 0</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture>"
+        "<Fixture><Shape>2</Shape><IsSensor>true</IsSensor></Fixture>"
+        "<Fixture><Shape>3</Shape></Fixture>"
+        "<Fixture><Shape>4</Shape><Density>1</Density></Fixture></Fixtures><Bodies>"
+        "<Body Type='Static'><Fixtures><ID>0</ID><ID>0</ID><ID>1</ID><ID>2</ID><ID>3</ID>"
+        "</Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>1 8</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>-1 8</Position><Angle>0.4</Angle><Fixtures><ID>4</ID>"
+        "</Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>2 6</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>-2 6</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "</Bodies><Joints>"
+        "<Joint Type='Prismatic'><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>1 8"
+        "</LocalAnchorA><LocalAxisA>2 1</LocalAxisA><ReferenceAngle>0.3</ReferenceAngle>"
+        "<EnableLimit>true</EnableLimit><LowerTranslation>-1</LowerTranslation>"
+        "<UpperTranslation>1</UpperTranslation></Joint>"
+        "<Joint Type='Friction'><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>-1 8"
+        "</LocalAnchorA><LocalAnchorB>0.1 0.1</LocalAnchorB><MaxForce>2</MaxForce>"
+        "<MaxTorque>1</MaxTorque></Joint>"
+        "<Joint Type='Motor'><BodyA>0</BodyA><BodyB>3</BodyB><LinearOffset>2 6.5"
+        "</LinearOffset><AngularOffset>0.7</AngularOffset><MaxForce>30</MaxForce>"
+        "<MaxTorque>5</MaxTorque><CorrectionFactor>0.37</CorrectionFactor></Joint>"
+        "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>4</BodyB><LocalAnchorA>-2 7"
+        "</LocalAnchorA><LocalAnchorB>0 1</LocalAnchorB><ReferenceAngle>-2.5</ReferenceAngle>"
+        "</Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    ENSURE_EQ(round_trip("inline v3.2 forms", scene, NULL), 0);
+    /* and what came back is what went in */
+    v3_world world = build_v3(scene);
+    b2s_box2d32_reports reports;
+    b2s_scene* reloaded = captured_and_reloaded(&world, &reports);
+    ENSURE(reloaded != NULL);
+    const struct b2s_scene_view* view = b2s_scene_get_view(reloaded);
+    ENSURE_EQ(view->bodies[0].fixtures.count, 5);
+    uint32_t kinds[5], counts[5];
+    for (uint32_t k = 0; k < 5; ++k) {
+        uint32_t fixture = view->fixture_ids[view->bodies[0].fixtures.first + k];
+        const b2s_shape* shape = &view->shapes[view->fixtures[fixture].shape];
+        kinds[k] = shape->kind;
+        counts[k] = shape->vertices.count;
+    }
+    ENSURE(kinds[0] == B2S_SHAPE_KIND_CHAIN && counts[0] == 4);
+    ENSURE(kinds[1] == B2S_SHAPE_KIND_CHAIN && counts[1] == 4);
+    ENSURE(kinds[2] == B2S_SHAPE_KIND_CHAIN && counts[2] == 3);
+    ENSURE(kinds[3] == B2S_SHAPE_KIND_CHAIN && counts[3] == 3);
+    ENSURE(kinds[4] == B2S_SHAPE_KIND_EDGE && counts[4] == 2);
+    ENSURE(view->fixtures[view->fixture_ids[view->bodies[0].fixtures.first + 3]].is_sensor);
+    ENSURE_EQ(view->joint_count, 4);
+    ENSURE_EQ(view->joints[0].kind, B2S_JOINT_KIND_PRISMATIC);
+    ENSURE_NEAR(view->joints[0].reference_angle, 0.3, 1e-6);
+    ENSURE_EQ(view->joints[1].kind, B2S_JOINT_KIND_FRICTION);
+    ENSURE_FLOAT(view->joints[1].local_anchor_b.x, 0.1f);
+    ENSURE_EQ(view->joints[2].kind, B2S_JOINT_KIND_MOTOR);
+    ENSURE_FLOAT(view->joints[2].correction_factor, 0.37f);
+    ENSURE_FLOAT(view->joints[2].angular_offset, 0.7f);
+    ENSURE_FLOAT(view->joints[3].reference_angle, -2.5f);
+    b2s_box2d32_reports_free(&reports);
+    b2s_scene_free(reloaded);
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 /* ---- what a host's own world holds that the format cannot */
 
 static b2s_scene* capture(b2WorldId world, const b2BodyId* bodies, uint32_t count,
@@ -299,6 +382,7 @@ static int mass_data_and_rotation_survive_capture(void) {
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(every_scene_file_round_trips_bit_for_bit);
+    failed += RUN_TEST(v32_forms_round_trip);
     failed += RUN_TEST(what_the_format_cannot_hold_is_reported);
     failed += RUN_TEST(capture_refuses_bodies_it_cannot_name);
     failed += RUN_TEST(capture_names_the_first_body_it_refuses);
