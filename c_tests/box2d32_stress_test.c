@@ -6,6 +6,7 @@
  * nothing aborts. Joints are laid out as an editor lays them out (each body that yields hangs
  * from one earlier body at a shared world point, so that no joint starts far from satisfied
  * or contradicts another: v3's solver, like any, cannot hold those whatever their values).
+ * Every other level is built at a placement of its own, turned and moved by up to 100 m.
  */
 #include "box2d32_support.h"
 
@@ -317,7 +318,10 @@ static int generated_levels_stay_finite(void) {
             continue;
         }
         levels += 1;
-        v3_world world = build_v3(scene);
+        float turn = uniform(-3.14159265f, 3.14159265f);
+        b2Transform placement = {{uniform(-100.0f, 100.0f), uniform(-100.0f, 100.0f)},
+                                 {cosf(turn), sinf(turn)}};
+        v3_world world = levels % 2 == 0 ? build_v3_at(scene, placement) : build_v3(scene);
         ENSURE(world.built != NULL);
         beyond += (int)count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, NULL, 0);
         skipped += (int)count_reports(&world.built->reports, B2S_CODE_SKIPPED_JOINT, NULL, 0);

@@ -15,4 +15,13 @@ static inline b2Vec2 v3_position(b2BodyId body) {
 
 #include "v3_support.h"
 
+/* build_v3 at a placement. */
+static inline v3_world build_v3_at(const b2s_scene* scene, b2Transform placement) {
+    v3_world world;
+    b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
+    world.id = b2CreateWorld(&def);
+    world.built = b2s_box2d32_build_world_at(scene, world.id, placement);
+    return world;
+}
+
 #endif /* BOX2SCENE_BOX2D32_SUPPORT_H */
