@@ -7,47 +7,10 @@
 # and the version is pinned by that manifest and its Cargo.lock. Box2D's own CMake files are
 # not used: they would install Box2D with box2scene.
 
-# The vendor/box2d directory of oxybox-sys, fetched into cargo's cache if it is not there yet.
-function(box2scene_box2d3_source_dir out_var)
-    set(manifest ${PROJECT_SOURCE_DIR}/tools/box2d3/Cargo.toml)
-    # Configure again when the pinned version changes.
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
-                 ${manifest} ${PROJECT_SOURCE_DIR}/tools/box2d3/Cargo.lock)
-    execute_process(
-        COMMAND ${CARGO_EXECUTABLE} fetch --locked --manifest-path ${manifest}
-        RESULT_VARIABLE result
-        ERROR_VARIABLE log)
-    if(NOT result EQUAL 0)
-        message(FATAL_ERROR "cargo could not fetch Box2D v3's sources (oxybox-sys):\n${log}")
-    endif()
-    execute_process(
-        COMMAND ${CARGO_EXECUTABLE} metadata --format-version 1 --locked --offline
-                --manifest-path ${manifest}
-        RESULT_VARIABLE result
-        OUTPUT_VARIABLE metadata
-        ERROR_VARIABLE log)
-    if(NOT result EQUAL 0)
-        message(FATAL_ERROR "cargo metadata failed for ${manifest}:\n${log}")
-    endif()
-    string(JSON package_count LENGTH "${metadata}" packages)
-    math(EXPR last "${package_count} - 1")
-    foreach(i RANGE ${last})
-        string(JSON name GET "${metadata}" packages ${i} name)
-        if(name STREQUAL "oxybox-sys")
-            string(JSON crate_manifest GET "${metadata}" packages ${i} manifest_path)
-            cmake_path(GET crate_manifest PARENT_PATH crate_dir)
-            set(source_dir ${crate_dir}/vendor/box2d)
-        endif()
-    endforeach()
-    if(NOT EXISTS "${source_dir}/include/box2d/box2d.h")
-        message(FATAL_ERROR "oxybox-sys holds no vendor/box2d/include/box2d/box2d.h "
-                            "(looked in '${source_dir}')")
-    endif()
-    set(${out_var} ${source_dir} PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/CrateSources.cmake)
 
 function(box2scene_add_box2d3_engine)
-    box2scene_box2d3_source_dir(source_dir)
+    box2scene_crate_sources(box2d3 oxybox-sys vendor/box2d include/box2d/box2d.h source_dir)
     message(STATUS "Box2D v3 (the v3 adapter's tests): ${source_dir}")
     file(GLOB sources ${source_dir}/src/*.c)
     add_library(box2scene_box2d3_engine STATIC ${sources})

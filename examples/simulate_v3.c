@@ -1,18 +1,47 @@
 /*
- * simulate_v3: load a Box2Scene file, build a Box2D v3 world from it, run it, and show what
- * happened: examples/simulate.cpp for Box2D v3.1, in C.
+ * simulate_v3 and simulate_v32: load a Box2Scene file, build a Box2D v3 world from it, run
+ * it, and show what happened: examples/simulate.cpp for Box2D v3.1 (simulate_v3) and v3.2
+ * (simulate_v32, this file compiled with SIMULATE_BOX2D32 against v3.2: the two Box2D
+ * versions cannot share a program), in C.
  *
  *     simulate_v3 [SCENE] [--steps N] [--svg OUT.svg]
+ *     simulate_v32 [SCENE] [--steps N] [--svg OUT.svg]
  *
  * SCENE defaults to the bundled showcase, N to 300 steps of 1/60 s, OUT.svg to showcase.svg.
  * Prints the load's warnings, what Box2D v3 could not represent, and a table of every body's
  * start and end position; the SVG shows the start (faint), the end (solid), the joints and
  * each moving body's trajectory.
  */
+#ifdef SIMULATE_BOX2D32
+#include <box2scene/box2d32.h>
+#define ADAPTER(name) b2s_box2d32_##name
+#define PROGRAM "simulate_v32"
+#define ENGINE "box2d v3.2"
+/* v3.2 keeps a joint's anchors as the origins of its local frames. */
+static b2Vec2 local_anchor_a(b2JointId joint) {
+    return b2Joint_GetLocalFrameA(joint).p;
+}
+static b2Vec2 local_anchor_b(b2JointId joint) {
+    return b2Joint_GetLocalFrameB(joint).p;
+}
+#else
 #include <box2scene/box2d3.h>
+#define ADAPTER(name) b2s_box2d3_##name
+#define PROGRAM "simulate_v3"
+#define ENGINE "box2d v3"
+static b2Vec2 local_anchor_a(b2JointId joint) {
+    return b2Joint_GetLocalAnchorA(joint);
+}
+static b2Vec2 local_anchor_b(b2JointId joint) {
+    return b2Joint_GetLocalAnchorB(joint);
+}
+#endif
+typedef ADAPTER(built) adapter_built;
+typedef ADAPTER(reports) adapter_reports;
+typedef ADAPTER(report) adapter_report;
 
-#include <stdarg.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,7 +90,7 @@ typedef struct text {
 } text;
 
 static void print_usage(void) {
-    fprintf(stderr, "usage: simulate_v3 [SCENE] [--steps N] [--svg OUT.svg]\n");
+    fprintf(stderr, "usage: " PROGRAM " [SCENE] [--steps N] [--svg OUT.svg]\n");
 }
 
 static bool parse_step_count(const char* value, int* steps) {
@@ -80,7 +109,7 @@ static bool parse_options(int argc, char** argv, options* out) {
         const bool has_value = i + 1 < argc;
         if (strcmp(arg, "--steps") == 0 && has_value) {
             if (!parse_step_count(argv[++i], &result.steps)) {
-                fprintf(stderr, "simulate_v3: --steps wants a whole number from 0 to 1000000\n");
+                fprintf(stderr, PROGRAM ": --steps wants a whole number from 0 to 1000000\n");
                 return false;
             }
         } else if (strcmp(arg, "--svg") == 0 && has_value) {
@@ -115,10 +144,10 @@ static void print_warnings(const char* path, const b2s_scene_view* view) {
     }
 }
 
-static void print_reports(const b2s_box2d3_reports* reports) {
+static void print_reports(const adapter_reports* reports) {
     for (uint32_t i = 0; i < reports->count; ++i) {
-        const b2s_box2d3_report* report = &reports->items[i];
-        fprintf(stderr, "box2d v3: not represented[%s]: %s %u%s%s%s: %s\n",
+        const adapter_report* report = &reports->items[i];
+        fprintf(stderr, ENGINE ": not represented[%s]: %s %u%s%s%s: %s\n",
                 b2s_code_name(report->code), report->object, report->index,
                 report->name ? " \"" : "", report->name ? report->name : "",
                 report->name ? "\"" : "", report->message);
@@ -130,7 +159,7 @@ static void print_gravity(const b2s_scene_view* view, b2Vec2 gravity) {
            view->gravity_given ? "from the scene" : "the default: the scene gives none");
 }
 
-static frame capture_frame(const b2s_box2d3_built* built) {
+static frame capture_frame(const adapter_built* built) {
     frame captured = {calloc(built->body_count + 1, sizeof(b2Transform)),
                       calloc(built->joint_count + 1, sizeof(b2Vec2[2])), 0};
     if (captured.bodies == NULL || captured.joints == NULL) return captured;
@@ -145,8 +174,8 @@ static frame capture_frame(const b2s_box2d3_built* built) {
         const b2JointId joint = built->joints[i];
         if (B2_IS_NULL(joint)) continue;
         b2Vec2* anchors = captured.joints[captured.joint_count++];
-        anchors[0] = b2Body_GetWorldPoint(b2Joint_GetBodyA(joint), b2Joint_GetLocalAnchorA(joint));
-        anchors[1] = b2Body_GetWorldPoint(b2Joint_GetBodyB(joint), b2Joint_GetLocalAnchorB(joint));
+        anchors[0] = b2Body_GetWorldPoint(b2Joint_GetBodyA(joint), local_anchor_a(joint));
+        anchors[1] = b2Body_GetWorldPoint(b2Joint_GetBodyB(joint), local_anchor_b(joint));
     }
     return captured;
 }
@@ -156,7 +185,7 @@ static void free_frame(frame* captured) {
     free(captured->joints);
 }
 
-static void sample_positions(const b2s_box2d3_built* built, trajectory* paths) {
+static void sample_positions(const adapter_built* built, trajectory* paths) {
     for (uint32_t i = 0; i < built->body_count; ++i) {
         if (!B2_IS_NULL(built->bodies[i])) {
             paths[i].points[paths[i].count++] = b2Body_GetPosition(built->bodies[i]);
@@ -173,7 +202,13 @@ static void free_run(run_result* result, uint32_t body_count) {
 }
 
 /* Steps the world; false when memory ran out. */
-static bool run(b2WorldId world, const b2s_box2d3_built* built, int steps, run_result* result) {
+/* How far `to` is turned from `from`, within +-pi (b2RelativeAngle takes its rotations in
+ * the other order in v3.2 than in v3.1). */
+static float turn_between(b2Rot from, b2Rot to) {
+    return atan2f(from.c * to.s - from.s * to.c, from.c * to.c + from.s * to.s);
+}
+
+static bool run(b2WorldId world, const adapter_built* built, int steps, run_result* result) {
     const uint32_t bodies = built->body_count;
     const size_t samples = (size_t)steps / TRAJECTORY_SAMPLE_STEPS + 2;
     result->paths = calloc(bodies + 1, sizeof(trajectory));
@@ -195,7 +230,7 @@ static bool run(b2WorldId world, const b2s_box2d3_built* built, int steps, run_r
         for (uint32_t i = 0; i < bodies; ++i) {
             if (B2_IS_NULL(built->bodies[i])) continue;
             const b2Rot rotation = b2Body_GetRotation(built->bodies[i]);
-            result->turned[i] += b2RelativeAngle(rotation, rotations[i]);
+            result->turned[i] += turn_between(rotations[i], rotation);
             rotations[i] = rotation;
         }
         if (step % TRAJECTORY_SAMPLE_STEPS == 0 || step == steps) {
@@ -218,7 +253,7 @@ static const char* body_kind_name(uint32_t kind) {
 static const char* body_name(const b2s_body* body) { return body->name ? body->name : "-"; }
 
 /* Prints where each body started and ended; returns how many ended non-finite. */
-static int print_table(const b2s_scene_view* view, const b2s_box2d3_built* built,
+static int print_table(const b2s_scene_view* view, const adapter_built* built,
                        const frame* start, const frame* end, const float* turned) {
     int non_finite = 0;
     size_t name_width = 4;
@@ -386,7 +421,7 @@ static void draw_shape(svg* drawing, b2ShapeId shape, b2Transform xf) {
     }
 }
 
-static void draw_bodies(svg* drawing, const b2s_scene_view* view, const b2s_box2d3_built* built,
+static void draw_bodies(svg* drawing, const b2s_scene_view* view, const adapter_built* built,
                         const frame* captured) {
     for (uint32_t i = 0; i < built->body_count; ++i) {
         const b2BodyId body = built->bodies[i];
@@ -427,7 +462,7 @@ static void draw_trajectories(svg* drawing, const b2s_scene_view* view, const tr
 }
 
 /* The whole document; its text is NULL when memory ran out. */
-static text render_svg(const b2s_scene_view* view, const b2s_box2d3_built* built,
+static text render_svg(const b2s_scene_view* view, const adapter_built* built,
                        const frame* start, const frame* end, const trajectory* paths) {
     svg drawing = {{NULL, 0, 0, false}, true, {0.0f, 0.0f}, {0.0f, 0.0f}};
     svg_open_group(&drawing, "start", NULL);
@@ -463,7 +498,7 @@ static bool write_file(const char* path, const text* content) {
     bool ok = out != NULL && !content->failed &&
               fwrite(content->data, 1, content->length, out) == content->length;
     if (out != NULL && fclose(out) != 0) ok = false;
-    if (!ok) fprintf(stderr, "simulate_v3: cannot write %s\n", path);
+    if (!ok) fprintf(stderr, PROGRAM ": cannot write %s\n", path);
     return ok;
 }
 
@@ -478,13 +513,13 @@ int main(int argc, char** argv) {
 
     /* The scene decides gravity; a file without <Gravity> gets Earth's, Y up. */
     const b2Vec2 default_gravity = {0.0f, -10.0f};
-    print_gravity(view, b2s_box2d3_scene_gravity(scene, default_gravity));
-    const b2WorldDef def = b2s_box2d3_world_def(scene, default_gravity);
+    print_gravity(view, ADAPTER(scene_gravity)(scene, default_gravity));
+    const b2WorldDef def = ADAPTER(world_def)(scene, default_gravity);
     const b2WorldId world = b2CreateWorld(&def);
-    b2s_box2d3_built* built = b2s_box2d3_build_world(scene, world);
+    adapter_built* built = ADAPTER(build_world)(scene, world);
     int status = 1;
     if (built == NULL) {
-        fprintf(stderr, "simulate_v3: out of memory\n");
+        fprintf(stderr, PROGRAM ": out of memory\n");
     } else {
         print_reports(&built->reports);
         frame start = capture_frame(built);
@@ -493,13 +528,13 @@ int main(int argc, char** argv) {
                          run(world, built, opts.steps, &result);
         frame end = capture_frame(built);
         if (!ran || end.bodies == NULL || end.joints == NULL) {
-            fprintf(stderr, "simulate_v3: out of memory\n");
+            fprintf(stderr, PROGRAM ": out of memory\n");
         } else {
             printf("%d steps of %.4f s\n", opts.steps, (double)TIME_STEP);
             const int lost = print_table(view, built, &start, &end, result.turned);
             if (lost > 0) {
                 fprintf(stderr,
-                        "simulate_v3: %d bod%s ended with a non-finite position or angle: Box2D "
+                        PROGRAM ": %d bod%s ended with a non-finite position or angle: Box2D "
                         "could not hold this scene; no drawing written\n",
                         lost, lost == 1 ? "y" : "ies");
             } else {
@@ -514,7 +549,7 @@ int main(int argc, char** argv) {
         free_frame(&start);
         free_frame(&end);
         free_run(&result, built->body_count);
-        b2s_box2d3_built_free(built);
+        ADAPTER(built_free)(built);
     }
     b2DestroyWorld(world);
     b2s_scene_free(scene);

@@ -81,6 +81,8 @@ check_layout() {
   local file
   for file in include/box2scene.h include/box2scene/box2d.hpp include/box2scene/box2d3.h \
     include/box2scene/detail/box2d3_impl.h share/box2scene/box2d3.c \
+    include/box2scene/box2d32.h include/box2scene/detail/box2d3/v32.h \
+    include/box2scene/detail/box2d3/adapter.c share/box2scene/box2d32.c \
     "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
     "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
     "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \
@@ -169,6 +171,19 @@ check_c_box2d3() {
     "$work/build/fall_v3" "$work/src/scene.xml"
 }
 
+# The same with Box2D v3.2 (BOX2D32_INCLUDE_DIR, BOX2D32_LIBRARY) and box2scene::box2d32.
+check_c_box2d32() {
+  : "${BOX2D32_INCLUDE_DIR:?}" "${BOX2D32_LIBRARY:?}"
+  build_consumer box2d32 -DBOX2D32_INCLUDE_DIR="$BOX2D32_INCLUDE_DIR" \
+    -DBOX2D32_LIBRARY="$BOX2D32_LIBRARY"
+  expect_shared "$work/build/fall_v32"
+  if needed "$work/build/fall_v32" | grep -q '^libbox2d\.so'; then
+    fail "fall_v32 loads Box2D 2.4"
+  fi
+  expect_output "2 bodies; after 1 s the ball is at (0.000, 4.979)" \
+    "$work/build/fall_v32" "$work/src/scene.xml"
+}
+
 check_pkg_config() {
   local libs
   export PKG_CONFIG_LIBDIR=$libdir/pkgconfig PKG_CONFIG_PATH=
@@ -203,7 +218,8 @@ check_readme() {
   for file in c/main.c c/CMakeLists.txt; do
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
-  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt; do
+  for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt \
+    box2d32/CMakeLists.txt; do
     [[ $install == *"$(cat "$here/$file")"* ]] ||
       fail "docs/install.md does not show $file as it is"
   done

@@ -1,0 +1,184 @@
+/*
+ * The v3.2 adapter's working range, measured in real Box2D v3.2 (docs/working-range.md):
+ * what throws v3's bodies off is a line or wheel joint that starts violated across its axis
+ * between two dynamic bodies, by about 3 body sizes whatever the scale. The adapter builds
+ * such a joint up to B2S_BOX2D32_MAX_INITIAL_VIOLATION radii of gyration of the smaller
+ * body (4, some 1.3 sizes of the triangles here, whose radius of gyration is 0.31 of their
+ * size; measured, 2 sizes still hold), which must hold, and leaves out and reports
+ * what lies beyond; prismatic, revolute, weld and distance joints that start violated as far
+ * are pulled together, built, and must hold too, and so must the rest of a pair of bodies
+ * whose line joint was left out.
+ */
+#include "box2d32_support.h"
+
+#define STEPS 600
+
+/* Two dynamic triangles of `size` m, body B `gap` m from body A along x, and a joint of
+ * `kind` anchored at their origins; a line or wheel joint's axis is y, so that the gap lies
+ * across it. `extra` adds more joints on the same pair. */
+static b2s_scene* pair_scene(const char* kind, float size, float gap, const char* extra) {
+    char text[4096];
+    float h = 0.5f * size;
+    snprintf(text, sizeof text,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Polygon'>"
+             "<Vertices><Vertex>%.9g %.9g</Vertex><Vertex>%.9g %.9g</Vertex><Vertex>0 %.9g"
+             "</Vertex></Vertices></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape>"
+             "<Density>1</Density></Fixture></Fixtures><Bodies>"
+             "<Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body>"
+             "<Body Type='Dynamic'><Position>%.9g 0</Position><Fixtures><ID>0</ID></Fixtures>"
+             "</Body></Bodies><Joints><Joint Type='%s'><BodyA>0</BodyA><BodyB>1</BodyB>"
+             "<LocalAxisA>0 1</LocalAxisA><Length>%.9g</Length></Joint>%s</Joints></World>",
+             (double)-h, (double)-h, (double)h, (double)-h, (double)h, (double)gap, kind,
+             (double)(gap > 0.0f ? gap : 1.0f), extra);
+    return load_text(text);
+}
+
+/* Whether every body stays within `bound` m of the origin (and finite) over STEPS steps. */
+static bool holds(const v3_world* world, float bound) {
+    for (int step = 0; step < STEPS; ++step) {
+        b2World_Step(world->id, TIME_STEP, SUB_STEPS);
+        for (uint32_t i = 0; i < world->built->body_count; ++i) {
+            b2Vec2 p = v3_position(world->built->bodies[i]);
+            if (!(fabsf(p.x) <= bound && fabsf(p.y) <= bound)) {
+                fprintf(stderr, "body %u at (%g, %g) after %d steps\n", (unsigned)i,
+                        (double)p.x, (double)p.y, step + 1);
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/* m: past this a body has been thrown off: 4 times as far as a free fall of STEPS steps. */
+#define FALL_BOUND 2000.0f
+
+static const float sizes[] = {0.05f, 0.2f, 1.0f, 4.0f};
+
+static int line_and_wheel_joints_within_the_range_are_built_and_hold(void) {
+    static const char* const kinds[] = {"Line", "Wheel"};
+    for (size_t k = 0; k < 2; ++k) {
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+            b2s_scene* scene = pair_scene(kinds[k], sizes[s], 1.2f * sizes[s], "");
+            ENSURE(scene != NULL);
+            v3_world world = build_v3(scene);
+            if (world.built->reports.count != 0) {
+                print_reports(&world.built->reports);
+            }
+            ENSURE_EQ(world.built->reports.count, 0);
+            ENSURE(!B2_IS_NULL(world.built->joints[0]));
+            ENSURE(holds(&world, FALL_BOUND));
+            free_v3(&world);
+            b2s_scene_free(scene);
+        }
+    }
+    return 0;
+}
+
+/* The same joints left in a world built by hand, 5 body sizes apart, throw the bodies off:
+ * the bound is what v3.2 measures, not a guess. */
+static int line_joint_beyond_the_range_throws_bodies_off_in_v32(void) {
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+        float size = sizes[s];
+        b2WorldDef def = b2DefaultWorldDef();
+        def.maximumLinearSpeed = B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED;
+        b2WorldId world = b2CreateWorld(&def);
+        b2Vec2 points[3] = {{-0.5f * size, -0.5f * size}, {0.5f * size, -0.5f * size},
+                            {0.0f, 0.5f * size}};
+        b2Hull hull = b2ComputeHull(points, 3);
+        b2Polygon triangle = b2MakePolygon(&hull, 0.0f);
+        b2BodyDef body_def = b2DefaultBodyDef();
+        body_def.type = b2_dynamicBody;
+        b2ShapeDef shape_def = b2DefaultShapeDef();
+        b2BodyId a = b2CreateBody(world, &body_def);
+        b2CreatePolygonShape(a, &shape_def, &triangle);
+        body_def.position = b2ToPos((b2Vec2){5.0f * size, 0.0f});
+        b2BodyId b = b2CreateBody(world, &body_def);
+        b2CreatePolygonShape(b, &shape_def, &triangle);
+        b2WheelJointDef line = b2DefaultWheelJointDef();
+        line.base.bodyIdA = a;
+        line.base.bodyIdB = b;
+        line.base.localFrameA.q = (b2Rot){0.0f, 1.0f};
+        line.enableSpring = false;
+        b2CreateWheelJoint(world, &line);
+        bool off = false;
+        for (int step = 0; step < STEPS && !off; ++step) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+            b2Vec2 p = v3_position(b);
+            off = !(fabsf(p.x) <= FALL_BOUND && fabsf(p.y) <= FALL_BOUND);
+        }
+        ENSURE(off);
+        b2DestroyWorld(world);
+    }
+    return 0;
+}
+
+static int line_and_wheel_joints_beyond_the_range_are_left_out_and_reported(void) {
+    static const char* const kinds[] = {"Line", "Wheel"};
+    for (size_t k = 0; k < 2; ++k) {
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+            b2s_scene* scene = pair_scene(kinds[k], sizes[s], 5.0f * sizes[s], "");
+            ENSURE(scene != NULL);
+            v3_world world = build_v3(scene);
+            ENSURE_EQ(world.built->reports.count, 1);
+            ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0),
+                      1);
+            ENSURE(B2_IS_NULL(world.built->joints[0]));
+            ENSURE(holds(&world, FALL_BOUND));
+            free_v3(&world);
+            b2s_scene_free(scene);
+        }
+    }
+    return 0;
+}
+
+static int other_joints_that_start_violated_are_built_and_hold(void) {
+    static const char* const kinds[] = {"Prismatic", "Revolute", "Weld", "Distance"};
+    for (size_t k = 0; k < 4; ++k) {
+        for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
+            /* a distance joint of length 1 m pulled from 5 body sizes */
+            b2s_scene* scene = pair_scene(kinds[k], sizes[s], 5.0f * sizes[s], "");
+            ENSURE(scene != NULL);
+            v3_world world = build_v3(scene);
+            if (world.built->reports.count != 0) {
+                print_reports(&world.built->reports);
+            }
+            ENSURE(!B2_IS_NULL(world.built->joints[0]));
+            ENSURE(holds(&world, FALL_BOUND));
+            free_v3(&world);
+            b2s_scene_free(scene);
+        }
+    }
+    return 0;
+}
+
+/* The pair that makes v3.2 assert when every joint is built (line, distance, weld and
+ * friction 10 m apart): the line joint is left out, the others hold. */
+static int joints_combined_on_one_pair_hold_without_the_line_joint(void) {
+    b2s_scene* scene = pair_scene(
+        "Line", 1.0f, 10.0f,
+        "<Joint Type='Distance'><BodyA>0</BodyA><BodyB>1</BodyB><Length>1</Length></Joint>"
+        "<Joint Type='Weld'><BodyA>0</BodyA><BodyB>1</BodyB></Joint>"
+        "<Joint Type='Friction'><BodyA>0</BodyA><BodyB>1</BodyB><MaxForce>10</MaxForce>"
+        "<MaxTorque>10</MaxTorque></Joint>");
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE_EQ(world.built->reports.count, 1);
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1);
+    for (uint32_t i = 1; i < 4; ++i) {
+        ENSURE(!B2_IS_NULL(world.built->joints[i]));
+    }
+    ENSURE(holds(&world, FALL_BOUND));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+int main(void) {
+    int failed = 0;
+    failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
+    failed += RUN_TEST(line_joint_beyond_the_range_throws_bodies_off_in_v32);
+    failed += RUN_TEST(line_and_wheel_joints_beyond_the_range_are_left_out_and_reported);
+    failed += RUN_TEST(other_joints_that_start_violated_are_built_and_hold);
+    failed += RUN_TEST(joints_combined_on_one_pair_hold_without_the_line_joint);
+    return failed;
+}

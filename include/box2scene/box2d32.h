@@ -1,0 +1,169 @@
+/*
+ * box2scene/box2d32.h: builds a Box2D v3.2 world (b2WorldId) from a loaded box2scene scene,
+ * and captures bodies of a live v3.2 world back into a scene: the functions, ids and reports
+ * of box2scene/box2d3.h (Box2D v3.1), named b2s_box2d32_*. Its own code is C99 and its
+ * declarations are usable from C++; Box2D v3.2's headers, which it includes, need C11.
+ * Needs <box2d/box2d.h> (Box2D v3.2, single precision) and <box2scene.h>.
+ *
+ * The implementation is compiled where the host defines B2S_BOX2D32_IMPLEMENTATION, in
+ * exactly one C file, before including this header (CMake's box2scene::box2d32 target does
+ * that for you). It compiles as C, against the host's own Box2D v3.2.
+ *
+ *     b2s_scene* scene = NULL;
+ *     if (b2s_load_file("level.xml", NULL, &scene, NULL) == B2S_CODE_OK) {
+ *         b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
+ *         b2WorldId world = b2CreateWorld(&def);
+ *         b2s_box2d32_built* built = b2s_box2d32_build_world(scene, world);
+ *         // built->reports says what Box2D v3.2 could not represent.
+ *         b2s_box2d32_built_free(built);
+ *         b2s_scene_free(scene);  // the world does not need the scene any more
+ *     }
+ *
+ * The adapter never prints, never aborts and never hands Box2D a value that trips one of its
+ * assertions or turns into NaN: what it cannot create it skips and reports. Call it outside
+ * b2World_Step. docs/box2d.md shows its use and tables the mapping.
+ */
+#ifndef BOX2SCENE_BOX2D32_H
+#define BOX2SCENE_BOX2D32_H
+
+#include <box2d/box2d.h>
+#include <box2scene.h>
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Something of the scene that Box2D v3.2 could not represent, or only approximately. */
+typedef struct b2s_box2d32_report {
+    /** B2S_CODE_SKIPPED_JOINT, B2S_CODE_LOSSY_SHAPE, B2S_CODE_BEYOND_BOX2D_RANGE, ... */
+    b2s_code code;
+    /** "shape", "fixture", "body", "joint" or "world" (static storage). */
+    const char* object;
+    /** Building: the object's index in the scene's array of that kind. Capturing: the index
+     *  it has in the captured scene, or its place among the world's objects of that kind
+     *  when it was not written. */
+    uint32_t index;
+    /** The object's Name, or NULL. */
+    const char* name;
+    /** What happened, for a level designer. */
+    const char* message;
+} b2s_box2d32_report;
+
+/** A list of reports, owned by what holds it. */
+typedef struct b2s_box2d32_reports {
+    b2s_box2d32_report* items;
+    uint32_t count;
+} b2s_box2d32_reports;
+
+/** What b2s_box2d32_build_world created. Every id is owned by the world. */
+typedef struct b2s_box2d32_built {
+    /** Indexed like the scene's bodies; b2_nullBodyId where not created. */
+    b2BodyId* bodies;
+    uint32_t body_count;
+    /** Indexed like the scene's fixture ID pool (b2s_scene_view::fixture_ids): the v3.2 shape
+     *  of each (body, fixture) pair, since a scene fixture may serve many bodies. A chain (and
+     *  an edge with ghost vertices) becomes one chain segment shape per edge: `shapes` holds
+     *  the first and `segments[slot]` the range of all of them in `segment_pool`. Null
+     *  where not created. */
+    b2ShapeId* shapes;
+    b2s_range* segments;
+    uint32_t fixture_count;
+    b2ShapeId* segment_pool;
+    uint32_t segment_pool_count;
+    /** Indexed like the scene's joints; b2_nullJointId where skipped. */
+    b2JointId* joints;
+    uint32_t joint_count;
+    /** What could not be represented, in the order it was met. */
+    b2s_box2d32_reports reports;
+} b2s_box2d32_built;
+
+/** The values the adapter passes to Box2D v3.2: an object with a value beyond them is not
+ *  created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it. They are those
+ *  of the v3.1 adapter (box2scene/box2d3.h); docs/box2d.md and docs/working-range.md list
+ *  them and how they were found. */
+#define B2S_BOX2D32_MAX_LENGTH 1e4f         /**< m: positions, vertices, anchors, lengths */
+#define B2S_BOX2D32_MAX_ANGLE 1e5f          /**< rad */
+#define B2S_BOX2D32_MAX_SPEED 1e3f          /**< m/s and rad/s, each component */
+#define B2S_BOX2D32_MAX_ACCELERATION 1e3f   /**< m/s^2: gravity, times a body's scale */
+#define B2S_BOX2D32_MAX_GRAVITY_SCALE 1e3f
+#define B2S_BOX2D32_MAX_DAMPING 1e5f        /**< 1/s */
+#define B2S_BOX2D32_MAX_DENSITY 1e5f        /**< kg/m^2 */
+#define B2S_BOX2D32_MAX_FRICTION 1e5f       /**< friction and restitution */
+#define B2S_BOX2D32_MAX_FREQUENCY 1e3f      /**< Hz, and damping ratios */
+#define B2S_BOX2D32_MAX_FORCE 1e20f         /**< N and N m */
+#define B2S_BOX2D32_MIN_AXIS 1e-6f          /**< m: the shortest joint axis */
+#define B2S_BOX2D32_MIN_MASS 1e-20f         /**< kg: a dynamic body's mass */
+#define B2S_BOX2D32_MAX_MASS 1e10f
+#define B2S_BOX2D32_MIN_INERTIA 1e-20f      /**< kg m^2 about the centre of mass, unless 0 */
+#define B2S_BOX2D32_MAX_INERTIA 1e12f
+#define B2S_BOX2D32_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
+/** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
+ *  for a revolute joint and for every other kind. */
+#define B2S_BOX2D32_MAX_LEVER_REVOLUTE 1e3f
+#define B2S_BOX2D32_MAX_LEVER 5.0f
+/** How far apart the anchors of a line or wheel joint between two dynamic bodies may start
+ *  across its axis, in radii of gyration of the body that has the smaller: such a joint
+ *  that starts violated by 3 body sizes (about 10 radii) throws both bodies off in v3.2, at
+ *  every scale measured (docs/working-range.md); prismatic, revolute, weld and distance
+ *  joints that start violated are pulled together. */
+#define B2S_BOX2D32_MAX_INITIAL_VIOLATION 4.0f
+/** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies. */
+#define B2S_BOX2D32_MAX_JOINT_ACCELERATION 1e5f
+/** The maximum linear speed b2s_box2d32_world_def gives. */
+#define B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED 1.5e3f
+
+/** The scene's gravity when the file gives one within B2S_BOX2D32_MAX_ACCELERATION, else
+ *  `fallback` (the format has no default gravity: the host decides). NULL gives fallback. */
+b2Vec2 b2s_box2d32_scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
+
+/** b2DefaultWorldDef() with the scene's gravity (b2s_box2d32_scene_gravity) and a maximum
+ *  linear speed of B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED. The host may change anything else
+ *  before b2CreateWorld. */
+b2WorldDef b2s_box2d32_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity);
+
+/** Adds the scene's bodies, shapes and joints to `world`. Returns what it created and its
+ *  reports (free it with b2s_box2d32_built_free); NULL only when memory runs out. A NULL
+ *  scene adds nothing. */
+b2s_box2d32_built* b2s_box2d32_build_world(const b2s_scene* scene, b2WorldId world);
+
+/** b2s_box2d32_build_world with the whole scene moved by `placement` (a rotation about the
+ *  world origin, then a translation), so that one scene can be built into a world several
+ *  times, as a level piece or a prefab: every body's position, rotation and linear velocity
+ *  is moved; joint anchors, which are local to their bodies, and everything else are not.
+ *  The placement's rotation must be normalised. A body's Angle gives its rotation times the
+ *  placement's, so a capture of a placed body reads its angle back to within an ulp or two
+ *  (reported). b2Transform_identity builds the scene as b2s_box2d32_build_world does. */
+b2s_box2d32_built* b2s_box2d32_build_world_at(const b2s_scene* scene, b2WorldId world,
+                                              b2Transform placement);
+
+/** Frees a result of b2s_box2d32_build_world (not the world's objects). NULL is ignored. */
+void b2s_box2d32_built_free(b2s_box2d32_built* built);
+
+/** A new scene holding `bodies` of `world` (v3.2 cannot list a world's bodies: the host
+ *  names them), in that order, each with its shapes (in creation order, consecutive chain
+ *  segments regrouped into the chain or edge they came from) and the joints between them (in
+ *  creation order): what b2s_box2d32_build_world gives back, so that a world built from a
+ *  scene, captured, written, loaded and built again evolves bit for bit like the first. As
+ *  b2s_box2d3_capture_world: what the scene cannot hold is reported in `reports` (free them
+ *  with b2s_box2d32_reports_free), the world is not changed, B2S_CODE_INVALID_ARGUMENT names
+ *  the first body that is not a live body of `world` or that was named before. */
+b2s_code b2s_box2d32_capture_world(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                   b2s_scene** out_scene, b2s_box2d32_reports* reports,
+                                   b2s_error* error);
+
+/** Frees the reports of a capture and sets them empty. NULL is ignored. */
+void b2s_box2d32_reports_free(b2s_box2d32_reports* reports);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#ifdef B2S_BOX2D32_IMPLEMENTATION
+#include "detail/box2d3/v32.h"
+#include "detail/box2d3/adapter.c"
+#endif
+
+#endif /* BOX2SCENE_BOX2D32_H */

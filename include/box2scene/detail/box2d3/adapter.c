@@ -1,0 +1,35 @@
+/*
+ * The Box2D v3 adapter: one translation unit per Box2D version, so that every function but
+ * the public ones stays static. box2scene/box2d32.h includes it, after the version's own
+ * header (v32.h), where the host defines B2S_BOX2D32_IMPLEMENTATION; CMake's
+ * box2scene::box2d32 target compiles it (cmake/box2d32.c). It is cut as Box2D cuts its own
+ * sources, so that a fix in one concept is found by file name:
+ *   reports.c   the reports, and the checks of the working range they come from
+ *   world.c     the world def, the placement, one build from start to end
+ *   shapes.c    a scene shape as v3 geometry, and the shapes a fixture makes of it
+ *   bodies.c    a body, and its mass
+ *   joints.c    the joints
+ *   capture.c   a live world back into a scene
+ */
+#ifndef BOX2SCENE_BOX2D3_ADAPTER_C
+#define BOX2SCENE_BOX2D3_ADAPTER_C
+
+#ifndef B2S3_API
+#error "compile the Box2D v3 adapter through its version's header (box2scene/box2d32.h)"
+#endif
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reports.c"
+#include "world.c"
+#include "shapes.c"
+#include "bodies.c"
+#include "joints.c"
+#include "capture.c"
+
+#endif /* BOX2SCENE_BOX2D3_ADAPTER_C */

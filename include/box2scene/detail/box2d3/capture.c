@@ -1,0 +1,782 @@
+/*
+ * Capture: bodies of a live world that the host names, with their shapes and the joints
+ * between them, back into a scene that builds into a world evolving bit for bit like it.
+ * Derived values are inverted exactly: the float whose forward computation in the build
+ * gives the bits the world holds.
+ */
+
+/* A body the host named and the index it gave it. */
+typedef struct b2s3_named {
+    b2BodyId id;
+    uint32_t index;
+} b2s3_named;
+
+typedef struct b2s3_capture {
+    b2WorldId world;
+    const b2BodyId* bodies;
+    uint32_t body_count;
+    /* the named bodies sorted by id, so that finding a joint's bodies among them is a binary
+     * search rather than a pass over all of them for every joint end */
+    const b2s3_named* named;
+    b2s_builder* builder;
+    b2s3_list list;
+    b2s_error* error;
+    b2s_code failure; /* the first builder error, or B2S_CODE_OK */
+    uint32_t shape_count, fixture_count, joint_count;
+} b2s3_capture;
+
+/* Bodies in an order of their own (negative, zero or positive): zero for the same body. */
+static int b2s3_body_order(b2BodyId a, b2BodyId b) {
+    if (a.index1 != b.index1) {
+        return a.index1 < b.index1 ? -1 : 1;
+    }
+    if (a.world0 != b.world0) {
+        return a.world0 < b.world0 ? -1 : 1;
+    }
+    return (a.generation > b.generation) - (a.generation < b.generation);
+}
+
+static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
+    return b2s3_body_order(a, b) == 0;
+}
+
+static int b2s3_named_by_body(const void* a, const void* b) {
+    return b2s3_body_order(((const b2s3_named*)a)->id, ((const b2s3_named*)b)->id);
+}
+
+/* By body, one body's entries by the host's index: the first two of a body named more than
+ * once are the pair a pass in the host's order meets first. */
+static int b2s3_named_order(const void* a, const void* b) {
+    int order = b2s3_named_by_body(a, b);
+    uint32_t x = ((const b2s3_named*)a)->index, y = ((const b2s3_named*)b)->index;
+    return order != 0 ? order : (x > y) - (x < y);
+}
+
+/* The index the host gave `body`, or B2S_NONE. */
+static uint32_t b2s3_captured_index(const b2s3_capture* c, b2BodyId body) {
+    b2s3_named key = {body, 0};
+    const b2s3_named* found = (const b2s3_named*)bsearch(&key, c->named, c->body_count,
+                                                         sizeof(b2s3_named), b2s3_named_by_body);
+    return found != NULL ? found->index : B2S_NONE;
+}
+
+static bool b2s3_builder_ok(b2s3_capture* c, b2s_code code) {
+    if (code != B2S_CODE_OK && c->failure == B2S_CODE_OK) {
+        c->failure = code;
+    }
+    return code == B2S_CODE_OK;
+}
+
+/* ---- exact inverses */
+
+/* `x` moved by `steps` representable floats. */
+static float b2s3_ulps_away(float x, int steps) {
+    float toward = steps < 0 ? -FLT_MAX : FLT_MAX;
+    for (int i = 0; i < abs(steps); ++i) {
+        x = nextafterf(x, toward);
+    }
+    return x;
+}
+
+/* The float nearest `guess` (within 16 ulps) for which `gives` holds: an inverse computed in
+ * floats is a few ulps off the value whose forward computation gives the bits wanted. False,
+ * with `guess` in `*out`, when none does. */
+static bool b2s3_search_ulps(float guess, bool (*gives)(float x, const float* wanted),
+                             const float* wanted, float* out) {
+    for (int k = 0; k <= 16; ++k) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            float x = b2s3_ulps_away(guess, sign * k);
+            if (gives(x, wanted)) {
+                *out = x;
+                return true;
+            }
+        }
+    }
+    *out = guess;
+    return false;
+}
+
+/* wanted: cosine and sine, as the build makes a rotation of an angle. */
+static bool b2s3_rotation_of(float angle, const float* wanted) {
+    return cosf(angle) == wanted[0] && sinf(angle) == wanted[1];
+}
+
+/* An angle whose cosf and sinf are the rotation's. */
+static bool b2s3_angle_of(b2Rot q, float* angle) {
+    float wanted[2] = {q.c, q.s};
+    return b2s3_search_ulps(atan2f(q.s, q.c), b2s3_rotation_of, wanted, angle);
+}
+
+/* wanted: an axis rotation (c, s), then the rotation of frame B the build makes of it. */
+static bool b2s3_prismatic_reference_of(float angle, const float* wanted) {
+    b2Rot axis = {wanted[0], wanted[1]};
+    b2Rot q = b2InvMulRot(b2s3_rotation(angle), axis);
+    return q.c == wanted[2] && q.s == wanted[3];
+}
+
+/* wanted: a result and what the build subtracts from x to get it. */
+static bool b2s3_less_gives(float x, const float* wanted) {
+    return x - wanted[1] == wanted[0];
+}
+
+/* wanted: a result and what the build adds to x to get it. */
+static bool b2s3_plus_gives(float x, const float* wanted) {
+    return x + wanted[1] == wanted[0];
+}
+
+/* The inertia about the body origin that the build turns back into `central`:
+ * origin - mass * |center|^2 == central. */
+static float b2s3_origin_inertia(float central, float mass, b2Vec2 center) {
+    float wanted[2] = {central, mass * b2Dot(center, center)};
+    float origin;
+    b2s3_search_ulps(central + wanted[1], b2s3_less_gives, wanted, &origin);
+    return origin;
+}
+
+/* One component of the velocity the build gives a body's origin, so that adding w x (the
+ * centre of mass's offset), as v3 and the build do, gives `target`. */
+static float b2s3_before_shift(float target, float shift) {
+    float wanted[2] = {target, shift};
+    float before;
+    b2s3_search_ulps(target - shift, b2s3_plus_gives, wanted, &before);
+    return before;
+}
+
+/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
+ * of mass's, w x (R local_center) away. */
+static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center, float w,
+                                     b2s_vec2 velocity) {
+    b2Vec2 center = b2TransformPoint(transform, local_center);
+    b2Vec2 shift = b2CrossSV(w, b2Sub(center, transform.p));
+    b2s_vec2 out = {b2s3_before_shift(velocity.x, shift.x), b2s3_before_shift(velocity.y, shift.y)};
+    return out;
+}
+
+/* ---- fixtures */
+
+/* The filter in the scene's own widths (its fields' sizes say them): a mask with every
+ * higher bit set is "all". */
+#define B2S3_FILTER_BITS (8u * (unsigned)sizeof(((b2s_filter*)0)->category_bits))
+#define B2S3_GROUP_BITS (8u * (unsigned)sizeof(((b2s_filter*)0)->group_index))
+
+static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) {
+    b2s_filter out;
+    uint64_t low = B2S3_FILTER_BITS >= 64u ? UINT64_MAX : (UINT64_C(1) << B2S3_FILTER_BITS) - 1u;
+    int64_t group_max = (INT64_C(1) << (B2S3_GROUP_BITS - 1u)) - 1;
+    int64_t group_min = -group_max - 1;
+    uint64_t high_mask = f.maskBits & ~low;
+    bool exact = (f.categoryBits & ~low) == 0 && (high_mask == 0 || high_mask == ~low) &&
+                 f.groupIndex >= group_min && f.groupIndex <= group_max;
+    int64_t group = f.groupIndex < group_min   ? group_min
+                    : f.groupIndex > group_max ? group_max
+                                               : f.groupIndex;
+    out.category_bits = (f.categoryBits & low);
+    out.mask_bits = (f.maskBits & low);
+    out.group_index = group;
+    if (!exact) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
+                    "its filter (category 0x%llx, mask 0x%llx, group %d) has bits above the "
+                    "format's %u or a group beyond %u bits; the low bits were written",
+                    (unsigned long long)f.categoryBits, (unsigned long long)f.maskBits,
+                    f.groupIndex, B2S3_FILTER_BITS, B2S3_GROUP_BITS);
+    }
+    return out;
+}
+
+/* One shape and the fixture that carries it; the material and density from the v3 shape. */
+static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_vec2* vertices,
+                             uint32_t count, b2ShapeId from, float density,
+                             uint32_t* out_fixture) {
+    uint32_t shape_index = 0;
+    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, shape, vertices, count,
+                                                  &shape_index, c->error))) {
+        return false;
+    }
+    c->shape_count += 1;
+    b2SurfaceMaterial material = b2Shape_GetSurfaceMaterial(from);
+    b2s_fixture fixture;
+    b2s_fixture_default(&fixture);
+    fixture.shape = shape_index;
+    fixture.density = density;
+    fixture.friction = material.friction;
+    fixture.restitution = material.restitution;
+    fixture.is_sensor = b2Shape_IsSensor(from);
+    fixture.filter = b2s3_filter_of(c, b2Shape_GetFilter(from), c->fixture_count);
+    if (!b2s3_builder_ok(c, b2s_builder_add_fixture(c->builder, &fixture, out_fixture,
+                                                    c->error))) {
+        return false;
+    }
+    c->fixture_count += 1;
+    return true;
+}
+
+/* Whether chain segment `next` continues `cur` as the build makes consecutive edges. */
+static bool b2s3_continues(b2ChainSegment cur, b2ChainSegment next) {
+    return b2s3_same_point(next.ghost1, cur.segment.point1) &&
+           b2s3_same_point(next.segment.point1, cur.segment.point2) &&
+           b2s3_same_point(next.segment.point2, cur.ghost2);
+}
+
+/* The chain (or edge with ghost vertices) that `count` consecutive chain segments make: a
+ * loop when the last continues into the first, else open with its ghosts. */
+static bool b2s3_capture_chain(b2s3_capture* c, const b2ShapeId* shapes, int count,
+                               uint32_t* out_fixture) {
+    b2s_vec2* points = (b2s_vec2*)malloc(((size_t)count + 1) * sizeof(b2s_vec2));
+    if (points == NULL) {
+        c->list.out_of_memory = true;
+        return false;
+    }
+    b2ChainSegment head = b2Shape_GetChainSegment(shapes[0]);
+    b2ChainSegment tail = b2Shape_GetChainSegment(shapes[count - 1]);
+    bool loop = count >= 3 && b2s3_continues(tail, head);
+    b2s_shape shape;
+    b2s_shape_default(count == 1 ? B2S_SHAPE_KIND_EDGE : B2S_SHAPE_KIND_CHAIN, &shape);
+    uint32_t n = 0;
+    for (int i = 0; i < count; ++i) {
+        points[n++] = b2s3_to_b2s(b2Shape_GetChainSegment(shapes[i]).segment.point1);
+    }
+    if (loop) {
+        shape.is_loop = true;
+    } else {
+        points[n++] = b2s3_to_b2s(tail.segment.point2);
+        shape.has_prev_vertex = true;
+        shape.prev_vertex = b2s3_to_b2s(head.ghost1);
+        shape.has_next_vertex = true;
+        shape.next_vertex = b2s3_to_b2s(tail.ghost2);
+    }
+    bool made = b2s3_add_fixture(c, &shape, points, n, shapes[0], 0.0f, out_fixture);
+    free(points);
+    return made;
+}
+
+/* The format's shape for one v3 shape other than a chain segment, or false when it has
+ * none (reported). */
+static bool b2s3_capture_shape(b2s3_capture* c, b2ShapeId id, uint32_t* out_fixture) {
+    b2s_shape shape;
+    b2s_vec2 vertices[B2_MAX_POLYGON_VERTICES];
+    uint32_t count = 0;
+    switch (b2Shape_GetType(id)) {
+    case b2_circleShape: {
+        b2Circle circle = b2Shape_GetCircle(id);
+        b2s_shape_default(B2S_SHAPE_KIND_CIRCLE, &shape);
+        shape.radius = circle.radius;
+        shape.position = b2s3_to_b2s(circle.center);
+        break;
+    }
+    case b2_polygonShape: {
+        b2Polygon polygon = b2Shape_GetPolygon(id);
+        b2s_shape_default(B2S_SHAPE_KIND_POLYGON, &shape);
+        for (int i = 0; i < polygon.count; ++i) {
+            vertices[count++] = b2s3_to_b2s(polygon.vertices[i]);
+        }
+        if (polygon.radius > 0.0f) {
+            B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+                        "a rounded polygon (radius %.9g m): written without its rounding",
+                        (double)polygon.radius);
+        }
+        break;
+    }
+    case b2_segmentShape: {
+        b2Segment segment = b2Shape_GetSegment(id);
+        b2s_shape_default(B2S_SHAPE_KIND_EDGE, &shape);
+        vertices[count++] = b2s3_to_b2s(segment.point1);
+        vertices[count++] = b2s3_to_b2s(segment.point2);
+        break;
+    }
+    default:
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "shape", c->shape_count, NULL,
+                    "a capsule has no Box2Scene form; not written");
+        return false;
+    }
+    return b2s3_add_fixture(c, &shape, vertices, count, id, b2Shape_GetDensity(id), out_fixture);
+}
+
+static int b2s3_by_index(const void* a, const void* b) {
+    int32_t x = ((const b2ShapeId*)a)->index1, y = ((const b2ShapeId*)b)->index1;
+    return (x > y) - (x < y);
+}
+
+/* How many chain segments from `first` on continue one another, up to the one that closes
+ * a loop (a loop built beside another of the same points must not run into it). */
+static int b2s3_segment_run(const b2ShapeId* shapes, int first, int count) {
+    int run = 1;
+    b2ChainSegment head = b2Shape_GetChainSegment(shapes[first]);
+    b2ChainSegment cur = head;
+    while (first + run < count && b2Shape_GetType(shapes[first + run]) == b2_chainSegmentShape &&
+           !(run >= 3 && b2s3_continues(cur, head))) {
+        b2ChainSegment next = b2Shape_GetChainSegment(shapes[first + run]);
+        if (!b2s3_continues(cur, next)) {
+            break;
+        }
+        cur = next;
+        run += 1;
+    }
+    return run;
+}
+
+/* The fixtures of one body, in the order its shapes were created (consecutive chain
+ * segments regrouped into one chain), with the mass their densities give. */
+static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fixtures,
+                                  uint32_t* count, b2MassData* computed) {
+    int capacity = b2Body_GetShapeCount(body);
+    size_t room = (size_t)(capacity > 0 ? capacity : 1);
+    b2ShapeId* shapes = (b2ShapeId*)malloc(room * sizeof(b2ShapeId));
+    b2MassData* masses = (b2MassData*)malloc(room * sizeof(b2MassData));
+    float* densities = (float*)malloc(room * sizeof(float));
+    *fixtures = (uint32_t*)malloc(room * sizeof(uint32_t));
+    *count = 0;
+    bool ok = shapes != NULL && masses != NULL && densities != NULL && *fixtures != NULL;
+    if (!ok) {
+        c->list.out_of_memory = true;
+    }
+    int shape_count = ok ? b2Body_GetShapes(body, shapes, capacity) : 0;
+    qsort(shapes, (size_t)shape_count, sizeof(b2ShapeId), b2s3_by_index);
+    size_t massive = 0;
+    for (int i = 0; i < shape_count && ok;) {
+        b2ShapeId id = shapes[i];
+        uint32_t fixture = 0;
+        bool made;
+        if (b2Shape_GetType(id) == b2_chainSegmentShape) {
+            int run = b2s3_segment_run(shapes, i, shape_count);
+            made = b2s3_capture_chain(c, shapes + i, run, &fixture);
+            i += run;
+        } else {
+            made = b2s3_capture_shape(c, id, &fixture);
+            if (made) {
+                densities[massive] = b2Shape_GetDensity(id);
+                masses[massive] = b2s3_shape_mass(id);
+                massive += 1;
+            }
+            i += 1;
+        }
+        if (!made) {
+            ok = c->failure == B2S_CODE_OK && !c->list.out_of_memory;
+            continue;
+        }
+        (*fixtures)[(*count)++] = fixture;
+    }
+    bool kept = true;
+    *computed = b2s3_mass_from_shapes(masses, densities, massive, b2s3_rotation_locked(body),
+                                      &kept);
+    computed->mass = b2s3_positive(computed->mass);
+    free(shapes);
+    free(masses);
+    free(densities);
+    return ok;
+}
+
+static bool b2s3_same_mass(b2MassData a, b2MassData b) {
+    return a.mass == b.mass && a.center.x == b.center.x && a.center.y == b.center.y &&
+           a.rotationalInertia == b.rotationalInertia;
+}
+
+static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
+    b2BodyId id = c->bodies[index];
+    uint32_t* fixtures = NULL;
+    uint32_t fixture_count = 0;
+    b2MassData computed;
+    if (!b2s3_capture_fixtures(c, id, &fixtures, &fixture_count, &computed)) {
+        free(fixtures);
+        return false;
+    }
+    b2BodyType type = b2Body_GetType(id);
+    b2s_body body;
+    b2s_body_default((uint32_t)type, &body);
+    body.position = b2s3_to_b2s(b2s3_body_position(id));
+    if (!b2s3_angle_of(b2Body_GetRotation(id), &body.angle)) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
+                    "no angle has exactly its rotation's cosine and sine; the nearest, %.9g "
+                    "rad, was written",
+                    (double)body.angle);
+    }
+    body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
+    if (type == b2_dynamicBody) {
+        body.linear_velocity = b2s3_origin_velocity(b2Body_GetTransform(id),
+                                                    b2Body_GetLocalCenter(id),
+                                                    b2Body_GetAngularVelocity(id),
+                                                    body.linear_velocity);
+    }
+    body.angular_velocity = b2Body_GetAngularVelocity(id);
+    body.linear_damping = b2Body_GetLinearDamping(id);
+    body.angular_damping = b2Body_GetAngularDamping(id);
+    body.gravity_scale = b2Body_GetGravityScale(id);
+    body.allow_sleep = b2Body_IsSleepEnabled(id);
+    body.awake = b2Body_IsAwake(id);
+    body.bullet = b2Body_IsBullet(id);
+    body.fixed_rotation = b2s3_rotation_locked(id);
+    body.active = b2Body_IsEnabled(id);
+    const char* name = b2Body_GetName(id);
+    body.name = name != NULL && name[0] != '\0' ? name : NULL;
+    if (type == b2_dynamicBody) {
+        b2MassData actual = b2Body_GetMassData(id);
+        if (!b2s3_same_mass(actual, computed)) {
+            body.mass_data.mass_given = true;
+            body.mass_data.mass = actual.mass;
+            body.mass_data.center_given = true;
+            body.mass_data.center = b2s3_to_b2s(actual.center);
+            body.mass_data.inertia_given = true;
+            body.mass_data.inertia =
+                b2s3_origin_inertia(actual.rotationalInertia, actual.mass, actual.center);
+        }
+    }
+    uint32_t added = 0;
+    bool ok = b2s3_builder_ok(c, b2s_builder_add_body(c->builder, &body, fixtures, fixture_count,
+                                                      &added, c->error));
+    free(fixtures);
+    return ok;
+}
+
+/* ---- joints */
+
+static int b2s3_joint_by_index(const void* a, const void* b) {
+    int32_t x = ((const b2JointId*)a)->index1, y = ((const b2JointId*)b)->index1;
+    return (x > y) - (x < y);
+}
+
+static void b2s3_capture_lossy(b2s3_capture* c, const char* what) {
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                "%s has no Box2Scene form; written without it", what);
+}
+
+/* The reference angle of frames whose frame A is turned by it. */
+static void b2s3_reference_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
+    b2Rot q = b2Joint_GetLocalFrameA(id).q;
+    if (!b2s3_angle_of(q, &joint->reference_angle)) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                    "no angle has exactly the rotation of its frame A; the nearest, %.9g rad, "
+                    "was written as ReferenceAngle",
+                    (double)joint->reference_angle);
+    }
+}
+
+/* The axis whose normalisation in the build gives frame A's x axis bit for bit: the axis
+ * itself, or one a few ulps from it (a unit vector is not always its own normalisation). */
+static void b2s3_axis_of(b2s3_capture* c, const b2s3_frames* f, b2s_joint* joint) {
+    for (int k = 0; k <= 8; ++k) {
+        for (int dx = -k; dx <= k; ++dx) {
+            for (int dy = -k; dy <= k; ++dy) {
+                if (abs(dx) != k && abs(dy) != k) {
+                    continue; /* the ring at distance k only */
+                }
+                b2Vec2 axis = {b2s3_ulps_away(f->axis.x, dx), b2s3_ulps_away(f->axis.y, dy)};
+                if (b2s3_same_point(b2Normalize(axis), f->axis)) {
+                    joint->local_axis_a = b2s3_to_b2s(axis);
+                    return;
+                }
+            }
+        }
+    }
+    joint->local_axis_a = b2s3_to_b2s(f->axis);
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                "no axis near (%.9g, %.9g) normalises to it exactly; it was written",
+                (double)f->axis.x, (double)f->axis.y);
+}
+
+static void b2s3_prismatic_reference(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
+    b2Rot a = b2Joint_GetLocalFrameA(id).q, b = b2Joint_GetLocalFrameB(id).q;
+    float wanted[4] = {a.c, a.s, b.c, b.s};
+    float guess = atan2f(a.s, a.c) - atan2f(b.s, b.c);
+    if (!b2s3_search_ulps(guess, b2s3_prismatic_reference_of, wanted, &joint->reference_angle)) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                    "no reference angle gives exactly the rotation of its frame B; the "
+                    "nearest, %.9g rad, was written",
+                    (double)joint->reference_angle);
+    }
+}
+
+/* wanted: the spring frequency the build makes of a CorrectionFactor. */
+static bool b2s3_motor_hertz_of(float correction_factor, const float* wanted) {
+    return b2s3_motor_hertz(correction_factor) == wanted[0];
+}
+
+/* A motor joint as the Friction or Motor the build makes it of, inverted exactly; one of
+ * another form is read as the nearest Motor and reported. */
+static void b2s3_motor_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint,
+                                uint32_t* kind) {
+    bool friction = false;
+    float hertz = 0.0f;
+    bool exact = b2s3_motor_of(id, joint, &friction, &hertz);
+    *kind = friction ? B2S_JOINT_KIND_FRICTION : B2S_JOINT_KIND_MOTOR;
+    if (friction) {
+        return;
+    }
+    float wanted[1] = {hertz};
+    exact = b2s3_search_ulps(hertz * B2S3_TWO_PI / B2S3_MOTOR_STEP_RATE, b2s3_motor_hertz_of,
+                             wanted, &joint->correction_factor) &&
+            exact;
+    exact = b2s3_angle_of(b2Joint_GetLocalFrameA(id).q, &joint->angular_offset) && exact;
+    if (!exact) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                    "a motor joint other than the build makes of a Motor joint: written as "
+                    "the nearest, from the offsets of its frame A, its spring limits and a "
+                    "CorrectionFactor from its linear spring's frequency");
+    }
+}
+
+/* The joint kind the build makes a v3 joint of, or false when it has no Box2Scene form
+ * (reported). A motor joint is read whole here. */
+static bool b2s3_joint_kind(b2s3_capture* c, b2JointId id, b2s_joint* joint, uint32_t* kind) {
+    b2JointType type = b2Joint_GetType(id);
+    const char* unwritten = b2s3_unwritten_joint(type);
+    if (unwritten != NULL) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                    "%s has no Box2Scene form; not written", unwritten);
+        return false;
+    }
+    switch (type) {
+    case b2_revoluteJoint: *kind = B2S_JOINT_KIND_REVOLUTE; break;
+    case b2_prismaticJoint: *kind = B2S_JOINT_KIND_PRISMATIC; break;
+    case b2_weldJoint: *kind = B2S_JOINT_KIND_WELD; break;
+    case b2_distanceJoint:
+        *kind = b2DistanceJoint_IsSpringEnabled(id) && b2DistanceJoint_GetSpringHertz(id) == 0.0f
+                    ? B2S_JOINT_KIND_ROPE
+                    : B2S_JOINT_KIND_DISTANCE;
+        break;
+    case b2_wheelJoint:
+        *kind = b2WheelJoint_IsSpringEnabled(id) ? B2S_JOINT_KIND_WHEEL : B2S_JOINT_KIND_LINE;
+        break;
+    default: b2s3_motor_joint_of(c, id, joint, kind); return true;
+    }
+    b2s_joint_default(*kind, joint);
+    return true;
+}
+
+/* The format's joint for one v3 joint, or false when it has none (reported). */
+static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
+    uint32_t kind = 0;
+    if (!b2s3_joint_kind(c, id, joint, &kind)) {
+        return false;
+    }
+    if (kind == B2S_JOINT_KIND_FRICTION || kind == B2S_JOINT_KIND_MOTOR) {
+        return true;
+    }
+    b2s3_frames f;
+    if (!b2s3_frames_of(id, &f, kind == B2S_JOINT_KIND_PRISMATIC)) {
+        b2s3_capture_lossy(c, "a turn of its frame B");
+    }
+    joint->local_anchor_a = b2s3_to_b2s(f.anchor_a);
+    joint->local_anchor_b = b2s3_to_b2s(f.anchor_b);
+    switch (kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+        b2s3_reference_of(c, id, joint);
+        joint->enable_limit = b2RevoluteJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2RevoluteJoint_GetLowerLimit(id);
+        joint->upper_limit = b2RevoluteJoint_GetUpperLimit(id);
+        joint->enable_motor = b2RevoluteJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2RevoluteJoint_GetMotorSpeed(id);
+        joint->max_motor_torque = b2RevoluteJoint_GetMaxMotorTorque(id);
+        if (b2RevoluteJoint_IsSpringEnabled(id)) {
+            b2s3_capture_lossy(c, "a revolute joint's spring");
+        }
+        break;
+    case B2S_JOINT_KIND_PRISMATIC:
+        b2s3_axis_of(c, &f, joint);
+        b2s3_prismatic_reference(c, id, joint);
+        joint->enable_limit = b2PrismaticJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2PrismaticJoint_GetLowerLimit(id);
+        joint->upper_limit = b2PrismaticJoint_GetUpperLimit(id);
+        joint->enable_motor = b2PrismaticJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2PrismaticJoint_GetMotorSpeed(id);
+        joint->max_motor_force = b2PrismaticJoint_GetMaxMotorForce(id);
+        if (b2PrismaticJoint_IsSpringEnabled(id)) {
+            b2s3_capture_lossy(c, "a prismatic joint's spring");
+        }
+        break;
+    case B2S_JOINT_KIND_DISTANCE:
+        joint->length = b2DistanceJoint_GetLength(id);
+        if (b2DistanceJoint_IsSpringEnabled(id)) {
+            joint->frequency_hz = b2DistanceJoint_GetSpringHertz(id);
+            joint->damping_ratio = b2DistanceJoint_GetSpringDampingRatio(id);
+        }
+        if (b2DistanceJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's length range");
+        }
+        if (b2DistanceJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's motor");
+        }
+        break;
+    case B2S_JOINT_KIND_ROPE:
+        joint->max_length = b2DistanceJoint_GetMaxLength(id);
+        if (!b2DistanceJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a slack distance joint without its length limit");
+        }
+        if (b2DistanceJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a distance joint's motor");
+        }
+        break;
+    case B2S_JOINT_KIND_WHEEL:
+        b2s3_axis_of(c, &f, joint);
+        joint->frequency_hz = b2WheelJoint_GetSpringHertz(id);
+        joint->damping_ratio = b2WheelJoint_GetSpringDampingRatio(id);
+        joint->enable_motor = b2WheelJoint_IsMotorEnabled(id);
+        joint->motor_speed = b2WheelJoint_GetMotorSpeed(id);
+        joint->max_motor_torque = b2WheelJoint_GetMaxMotorTorque(id);
+        if (b2WheelJoint_IsLimitEnabled(id)) {
+            b2s3_capture_lossy(c, "a wheel joint's limit beside its spring");
+        }
+        break;
+    case B2S_JOINT_KIND_LINE:
+        b2s3_axis_of(c, &f, joint);
+        joint->enable_limit = b2WheelJoint_IsLimitEnabled(id);
+        joint->lower_limit = b2WheelJoint_GetLowerLimit(id);
+        joint->upper_limit = b2WheelJoint_GetUpperLimit(id);
+        if (b2WheelJoint_IsMotorEnabled(id)) {
+            b2s3_capture_lossy(c, "a springless wheel joint's rotation motor");
+        }
+        break;
+    case B2S_JOINT_KIND_WELD:
+        b2s3_reference_of(c, id, joint);
+        joint->frequency_hz = b2WeldJoint_GetAngularHertz(id);
+        joint->damping_ratio = b2WeldJoint_GetAngularDampingRatio(id);
+        if (b2WeldJoint_GetLinearHertz(id) != 0.0f) {
+            b2s3_capture_lossy(c, "a weld joint's linear spring");
+        }
+        break;
+    default: break;
+    }
+    return true;
+}
+
+/* Every joint whose two bodies are captured, once, in creation order. */
+static bool b2s3_capture_joints(b2s3_capture* c) {
+    size_t total = 0;
+    for (uint32_t i = 0; i < c->body_count; ++i) {
+        total += (size_t)b2Body_GetJointCount(c->bodies[i]);
+    }
+    b2JointId* joints = (b2JointId*)malloc((total > 0 ? total : 1) * sizeof(b2JointId));
+    if (joints == NULL) {
+        c->list.out_of_memory = true;
+        return false;
+    }
+    size_t count = 0;
+    for (uint32_t i = 0; i < c->body_count; ++i) {
+        int capacity = b2Body_GetJointCount(c->bodies[i]);
+        int found = b2Body_GetJoints(c->bodies[i], joints + count, capacity);
+        size_t kept = count;
+        for (int k = 0; k < found; ++k) {
+            b2JointId id = joints[count + (size_t)k];
+            /* each joint once: from its body A when that is captured, else from B */
+            uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
+            if (a == i || (a == B2S_NONE && b2s3_same_body(b2Joint_GetBodyB(id), c->bodies[i]))) {
+                joints[kept++] = id;
+            }
+        }
+        count = kept;
+    }
+    qsort(joints, count, sizeof(b2JointId), b2s3_joint_by_index);
+    bool ok = true;
+    for (size_t i = 0; i < count && ok; ++i) {
+        b2JointId id = joints[i];
+        uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
+        uint32_t bb = b2s3_captured_index(c, b2Joint_GetBodyB(id));
+        if (a == B2S_NONE || bb == B2S_NONE) {
+            B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                        "it connects body %u to a body the host did not name; not written",
+                        (unsigned)(a == B2S_NONE ? bb : a));
+            continue;
+        }
+        b2s_joint joint;
+        if (!b2s3_joint_of(c, id, &joint)) {
+            continue;
+        }
+        joint.body_a = a;
+        joint.body_b = bb;
+        joint.collide_connected = b2Joint_GetCollideConnected(id);
+        uint32_t added = 0;
+        ok = b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error));
+        c->joint_count += ok ? 1 : 0;
+    }
+    free(joints);
+    return ok;
+}
+
+/* ---- the capture */
+
+static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* message) {
+    if (error != NULL) {
+        memset(error, 0, sizeof *error);
+        error->code = code;
+        snprintf(error->message, sizeof error->message, "%s", message);
+    }
+    return code;
+}
+
+b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                 b2s_scene** out_scene, b2s3_reports_t* reports,
+                                 b2s_error* error) {
+    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  "capture_world needs out_scene, reports and, for a body "
+                                  "count above 0, bodies");
+    }
+    *out_scene = NULL;
+    reports->items = NULL;
+    reports->count = 0;
+    if (!b2World_IsValid(world)) {
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, "the world is not valid");
+    }
+    uint32_t live = 0;
+    while (live < body_count && b2Body_IsValid(bodies[live]) &&
+           bodies[live].world0 == world.index1 - 1) {
+        live += 1;
+    }
+    /* Sorted, a body named twice stands beside itself. The host hears of whichever comes
+     * first in its order, a body not live or a body named twice, so only the bodies before
+     * the first not live are looked at. */
+    b2s3_named* named = (b2s3_named*)malloc((size_t)(live > 0 ? live : 1) * sizeof(b2s3_named));
+    if (named == NULL) {
+        return b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    }
+    for (uint32_t i = 0; i < live; ++i) {
+        named[i].id = bodies[i];
+        named[i].index = i;
+    }
+    qsort(named, live, sizeof(b2s3_named), b2s3_named_order);
+    uint32_t first = B2S_NONE, twice = live;
+    for (uint32_t i = 1; i < live; ++i) {
+        if (b2s3_same_body(named[i - 1].id, named[i].id) && named[i].index < twice) {
+            first = named[i - 1].index;
+            twice = named[i].index;
+        }
+    }
+    if (twice < live) {
+        free(named);
+        char message[96];
+        snprintf(message, sizeof message, "bodies %u and %u are the same body",
+                 (unsigned)first, (unsigned)twice);
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+    }
+    if (live < body_count) {
+        free(named);
+        char message[96];
+        snprintf(message, sizeof message, "body %u is not a live body of this world",
+                 (unsigned)live);
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT, message);
+    }
+    b2s3_capture c;
+    memset(&c, 0, sizeof c);
+    c.world = world;
+    c.bodies = bodies;
+    c.body_count = body_count;
+    c.named = named;
+    c.builder = b2s_builder_new();
+    c.list.reports = reports;
+    c.error = error;
+    b2s_vec2 scene_gravity = b2s3_to_b2s(b2World_GetGravity(world));
+    bool ok = b2s3_builder_ok(&c, b2s_builder_set_gravity(c.builder, &scene_gravity, error));
+    for (uint32_t i = 0; i < body_count && ok; ++i) {
+        ok = b2s3_capture_body(&c, i);
+    }
+    ok = ok && b2s3_capture_joints(&c);
+    free(named);
+    if (c.list.out_of_memory) {
+        b2s_builder_free(c.builder);
+        B2S3_API(reports_free)(reports);
+        return b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    }
+    if (!ok) {
+        b2s_builder_free(c.builder);
+        return c.failure != B2S_CODE_OK ? c.failure : B2S_CODE_INTERNAL;
+    }
+    return b2s_builder_finish(c.builder, out_scene, error);
+}
