@@ -20,6 +20,7 @@ mod arena;
 mod builder;
 mod containers;
 mod dump;
+mod escape;
 pub mod error;
 pub mod ffi;
 mod input;
