@@ -173,7 +173,7 @@ impl<'a> Source<'a> {
     /// from its size; a pipe or a device is read until it goes past the limit.
     pub fn file(file: File, name: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
         let meta = file.metadata().map_err(|e| io_error(name, &e))?;
-        let len = meta.is_file().then(|| meta.len());
+        let len = meta.is_file().then_some(meta.len());
         if let Some(len) = len.filter(|&len| len > options.max_input_bytes) {
             return Err(too_big(len, options.max_input_bytes));
         }

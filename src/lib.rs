@@ -18,10 +18,12 @@
 
 mod arena;
 mod builder;
+#[doc(hidden)]
+pub mod cli;
 mod containers;
 mod dump;
-mod escape;
 pub mod error;
+mod escape;
 pub mod ffi;
 mod input;
 mod load;
