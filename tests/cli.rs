@@ -1387,3 +1387,24 @@ fn render_draws_a_scene_at_the_edges_of_single_precision() {
     }
     assert_eq!(centres[0], -centres[1], "the two circles, turned about the origin");
 }
+
+/// `fmt -o` and `render -o` follow one rule through a link whose target does not exist
+/// yet: the target is written, and the link stays a link.
+#[cfg(unix)]
+#[test]
+fn fmt_and_render_write_through_a_link_to_a_file_not_yet_there() {
+    let sandbox = Sandbox::new("dangling-link");
+    sandbox.write("level.xml", CLEAN);
+    fs::create_dir(sandbox.dir.join("out")).unwrap();
+    for (command, link, target) in
+        [("fmt", "formatted.xml", "out/formatted.xml"), ("render", "drawn.svg", "out/drawn.svg")]
+    {
+        std::os::unix::fs::symlink(target, sandbox.dir.join(link)).unwrap();
+        let run = sandbox.run(&[command, "-o", link, "level.xml"]);
+        assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{command}");
+        let printed = sandbox.run(&[command, "level.xml"]).stdout;
+        assert_eq!(fs::read_to_string(sandbox.dir.join(target)).unwrap(), printed, "{command}");
+        let meta = fs::symlink_metadata(sandbox.dir.join(link)).unwrap();
+        assert!(meta.file_type().is_symlink(), "{command}");
+    }
+}
