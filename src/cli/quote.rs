@@ -176,31 +176,73 @@ fn decode(bytes: &[u8], encoding: Encoding, cut: bool) -> String {
 
 /// The shown part of a line, of which `before` are the characters before the column (all
 /// of them from the line's start, when `whole_start` says so) and `after` those from it on,
-/// and its caret line.
+/// escaped, and its caret line. SHOWN columns at most are shown (an escaped character
+/// takes the columns of its escape), half of them before the column unless the line ends
+/// sooner.
 fn shown(before: &[char], whole_start: bool, after: &[char]) -> (String, String) {
-    let shown_before = before.len().min((SHOWN / 2).max(SHOWN.saturating_sub(after.len())));
-    let shown_after = after.len().min(SHOWN - shown_before);
-    let cut_before = shown_before < before.len() || !whole_start;
-    let (mut line, mut caret) = match cut_before {
+    let escaped = |chars: &[char]| -> Vec<String> {
+        chars
+            .iter()
+            .map(|&c| {
+                let mut one = String::new();
+                terminal_char(c, &mut one);
+                one
+            })
+            .collect()
+    };
+    let (before, after) = (escaped(before), escaped(after));
+    let width = |one: &String| one.chars().count();
+    let after_width: usize = after.iter().map(width).sum();
+    let mut room = (SHOWN / 2).max(SHOWN.saturating_sub(after_width));
+    let mut first = before.len();
+    while first > 0 && width(&before[first - 1]) <= room {
+        first -= 1;
+        room -= width(&before[first]);
+    }
+    let mut room = SHOWN - before[first..].iter().map(width).sum::<usize>();
+    let mut end = 0;
+    while end < after.len() && width(&after[end]) <= room {
+        room -= width(&after[end]);
+        end += 1;
+    }
+    let (mut line, mut caret) = match first > 0 || !whole_start {
         true => ("...".to_owned(), "   ".to_owned()),
         false => (String::new(), String::new()),
     };
-    let mut one = String::new();
-    for &c in &before[before.len() - shown_before..] {
-        one.clear();
-        terminal_char(c, &mut one);
-        line.push_str(&one);
-        match c {
-            '\t' => caret.push('\t'),
-            _ => caret.extend(std::iter::repeat_n(' ', one.chars().count())),
+    for one in &before[first..] {
+        line.push_str(one);
+        match one.as_str() {
+            "\t" => caret.push('\t'),
+            _ => caret.extend(std::iter::repeat_n(' ', width(one))),
         }
     }
-    for &c in &after[..shown_after] {
-        terminal_char(c, &mut line);
-    }
-    if shown_after < after.len() {
+    line.extend(after[..end].iter().map(String::as_str));
+    if end < after.len() {
         line.push_str("...");
     }
     caret.push('^');
     (line, caret)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{SHOWN, shown};
+
+    /// A line of escaped characters fits the columns shown as a plain one does, half before
+    /// the column, and the caret stands under the character at the column.
+    #[test]
+    fn an_escaped_line_fits_the_columns_shown() {
+        let before: Vec<char> = "\u{1b}".repeat(200).chars().collect();
+        let after: Vec<char> = "b\u{1b}".repeat(100).chars().collect();
+        let (line, caret) = shown(&before, true, &after);
+        let core = line.strip_prefix("...").unwrap().strip_suffix("...").unwrap();
+        assert!(core.chars().count() <= SHOWN, "{line}");
+        assert!(core.starts_with("\\u{1b}") && core.contains("\\u{1b}b\\u{1b}"), "{line}");
+        let at = caret.len() - 1;
+        assert_eq!(&line[at..at + 1], "b", "{line}\n{caret}");
+        assert!((SHOWN / 2..SHOWN / 2 + 6).contains(&at), "{caret:?}");
+
+        let (line, caret) = shown(&['\t', 'a'], true, &['b', '\n']);
+        assert_eq!((line.as_str(), caret.as_str()), ("\tab\\u{a}", "\t ^"));
+    }
 }
