@@ -670,6 +670,43 @@ fn markup_xml_forbids_in_values_is_malformed() {
     load_bytes(fine.as_bytes()).expect("CDATA ends, escaped markup and names differing in case");
 }
 
+/// A new named pipe in the temporary directory.
+#[cfg(unix)]
+fn named_pipe(name: &str) -> std::path::PathBuf {
+    let path = std::env::temp_dir().join(format!("box2scene-fifo-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_file(&path);
+    let made = std::process::Command::new("mkfifo").arg(&path).status().unwrap();
+    assert!(made.success(), "mkfifo {}", path.display());
+    path
+}
+
+/// A scene of several MiB read through a named pipe, after a UTF-8 byte-order mark, is the
+/// scene of the same bytes in memory: a pipe has no size to cut into pieces, and is read
+/// on one thread, a window at a time.
+#[cfg(unix)]
+#[test]
+fn a_named_pipe_loads_as_its_bytes_from_memory() {
+    let body = "<Body Type=\"Dynamic\"><Position>1.5 -2.25</Position><Fixtures/><Wind/></Body>\n";
+    let xml = format!(
+        "\u{FEFF}<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{}</Bodies><Joints/></World>",
+        body.repeat(50_000)
+    );
+    let path = named_pipe("scene");
+    let writer = {
+        let (path, bytes) = (path.clone(), xml.clone().into_bytes());
+        std::thread::spawn(move || {
+            let mut pipe = std::fs::OpenOptions::new().write(true).open(path).unwrap();
+            pipe.write_all(&bytes).unwrap();
+        })
+    };
+    let from_pipe = box2scene::load_path(&path, &LoadOptions::default()).unwrap();
+    writer.join().unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let from_memory = load_bytes(xml.as_bytes()).unwrap();
+    assert_eq!(from_pipe.bodies().len(), 50_000);
+    assert_eq!(from_pipe.to_json(), from_memory.to_json());
+}
+
 /// A named pipe of 64 MiB that starts with a UTF-16 byte-order mark is read no further than
 /// the 1 MiB input limit, holding little more than that, and the error is where the limit
 /// stopped the reading (its line and byte), as for the same pipe in UTF-8.
@@ -681,11 +718,7 @@ fn max_input_bytes_bounds_a_utf16_stream() {
     let options = LoadOptions { max_input_bytes: max, ..LoadOptions::default() };
     let start = "<World Version=\"1\">";
     for utf16 in [true, false] {
-        let path =
-            std::env::temp_dir().join(format!("box2scene-fifo-{}-{utf16}.xml", std::process::id()));
-        let _ = std::fs::remove_file(&path);
-        let made = std::process::Command::new("mkfifo").arg(&path).status().unwrap();
-        assert!(made.success(), "mkfifo {}", path.display());
+        let path = named_pipe(&format!("limit-{utf16}"));
         let encode = move |text: &str| -> Vec<u8> {
             match utf16 {
                 true => text.encode_utf16().flat_map(u16::to_le_bytes).collect(),
