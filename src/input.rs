@@ -3,11 +3,11 @@
 //!
 //! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory
 //! (at hand as far as it was checked for characters XML does not allow, a chunk at a time
-//! as it is read); a window that moves forward in chunks for a UTF-8 file read from a path,
-//! so a load never holds the whole file. Either way the text stops at the first byte that
-//! cannot be text (invalid UTF-8, a NUL or another character XML does not allow, an
-//! unpaired UTF-16 surrogate, a read error) and the source says why, so a load reports the
-//! first problem in the file whichever way it was read.
+//! as it is read); a window that moves forward in chunks for a UTF-8 file read from a path
+//! or a stream, so a load never holds the whole file. Either way the text stops at the first
+//! byte that cannot be text (invalid UTF-8, a NUL or another character XML does not allow,
+//! an unpaired UTF-16 surrogate, a read error) or at the input limit, and the source says
+//! why, so a load reports the first problem in the file whichever way it was read.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
@@ -162,7 +162,7 @@ impl<'a> Source<'a> {
     }
 
     /// The text of the file at `path`: UTF-8 is read a chunk at a time as the parser needs
-    /// it; UTF-16 is read and converted whole.
+    /// it; UTF-16 is read and converted whole, within the input limit.
     pub fn path(path: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
         let file = File::open(path).map_err(|e| io_error(path, &e))?;
         Source::file(file, path, options)
