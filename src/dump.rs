@@ -9,6 +9,7 @@
 #![forbid(unsafe_code)]
 
 use crate::error::{Code, Severity};
+use crate::escape::json_string;
 use crate::scene::Diagnostic;
 use crate::scene::{
     Body, BodyKind, Fixture, Joint, JointKind, MassData, NONE, Scene, Shape, ShapeKind, Str, Vec2,
@@ -228,7 +229,7 @@ fn joint_kind_name(kind: JointKind) -> &'static str {
 /// An enumeration by its name; a value with no name (which a loaded scene never holds)
 /// as its number, so that the dump shows it rather than hiding it.
 fn enum_text(name: Option<&'static str>, value: u32) -> String {
-    name.map_or_else(|| value.to_string(), string)
+    name.map_or_else(|| value.to_string(), json_string)
 }
 
 /// An array of records, one after another, each over its few lines.
@@ -260,7 +261,7 @@ fn inline_object(pairs: &[Field]) -> String {
 
 fn fields(fields: &[Field]) -> String {
     let pairs: Vec<String> =
-        fields.iter().map(|(key, value)| format!("{}: {value}", string(key))).collect();
+        fields.iter().map(|(key, value)| format!("{}: {value}", json_string(key))).collect();
     pairs.join(", ")
 }
 
@@ -283,7 +284,7 @@ fn index(value: u32) -> String {
 }
 
 fn text(scene: &Scene, s: Str) -> String {
-    scene.text(s).map_or_else(null, string)
+    scene.text(s).map_or_else(null, json_string)
 }
 
 fn vec2(v: Vec2) -> String {
@@ -306,45 +307,11 @@ fn float(value: f32) -> String {
     if value.is_finite() { format!("{value:?}") } else { null() }
 }
 
-/// A JSON string literal. Control characters are escaped as `\u00XX` (all of them fit:
-/// C0, DEL and C1 are below U+0100) so that the dump stays one record per line and shows
-/// them visibly; everything else is written as UTF-8.
-fn string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\r' => out.push_str("\\r"),
-            '\t' => out.push_str("\\t"),
-            c if c.is_control() => out.push_str(&format!("\\u{:04x}", u32::from(c))),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scene::Diagnostic;
     use crate::scene::{Range, SceneBuilder, UserData};
-
-    #[test]
-    fn string_escapes_quotes_backslashes_and_control_characters() {
-        assert_eq!(string(r#"say "hi" \o/"#), r#""say \"hi\" \\o/""#);
-        assert_eq!(string("a\tb\nc\r\u{0}\u{1f}"), r#""a\tb\nc\r\u0000\u001f""#);
-        assert_eq!(string("del\u{7f} c1\u{85}"), r#""del\u007f c1\u0085""#);
-    }
-
-    #[test]
-    fn string_keeps_non_ascii_text_as_utf8() {
-        assert_eq!(string("Grüße, 地面 ∞"), "\"Grüße, 地面 ∞\"");
-        assert_eq!(string(""), "\"\"");
-    }
 
     #[test]
     fn float_is_the_shortest_round_trip_text() {

@@ -475,7 +475,9 @@ pub unsafe extern "C" fn b2s_text_free(text: *mut c_char) {
 
 /// Writes `scene` as Box2Scene XML to the file at `path` (UTF-8), replacing it
 /// atomically: a new file beside it, flushed to disk, renamed over it. A failed write
-/// leaves the old file as it was. Otherwise as `b2s_write_memory`.
+/// leaves the old file as it was. The new file has the old one's permissions, owner and
+/// group (those the caller may set) before its first byte; through a link, the link's
+/// target is written, created if it does not exist. Otherwise as `b2s_write_memory`.
 ///
 /// # Safety
 /// `scene` is NULL or a live scene; `path` NULL or NUL-terminated; `options` NULL or

@@ -3,11 +3,11 @@
 //!
 //! A [`Source`] is the decoded text of a file: all of it, borrowed, for a file in memory
 //! (at hand as far as it was checked for characters XML does not allow, a chunk at a time
-//! as it is read); a window that moves forward in chunks for a UTF-8 file read from a path,
-//! so a load never holds the whole file. Either way the text stops at the first byte that
-//! cannot be text (invalid UTF-8, a NUL or another character XML does not allow, an
-//! unpaired UTF-16 surrogate, a read error) and the source says why, so a load reports the
-//! first problem in the file whichever way it was read.
+//! as it is read); a window that moves forward in chunks for a UTF-8 file read from a path
+//! or a stream, so a load never holds the whole file. Either way the text stops at the first
+//! byte that cannot be text (invalid UTF-8, a NUL or another character XML does not allow,
+//! an unpaired UTF-16 surrogate, a read error) or at the input limit, and the source says
+//! why, so a load reports the first problem in the file whichever way it was read.
 #![forbid(unsafe_code)]
 
 use std::borrow::Cow;
@@ -47,8 +47,8 @@ pub struct Source<'a> {
     /// checked as it is read, a chunk at a time, by the reader that reads it (see
     /// [`Source::more`]), so that each of two threads checks what it reads.
     checked: usize,
-    /// The rest of a file read from a path.
-    file: Option<Stream>,
+    /// The rest of a file (or a stream) being read.
+    file: Option<Stream<'a>>,
     /// Why the text ends early; None when it ends with the file.
     stop: Option<Finding>,
     encoding: Encoding,
@@ -62,26 +62,46 @@ enum Origin<'a> {
     Path(&'a Path),
 }
 
+/// What a text is read from: a file, or a stream read once from its start.
+enum Reader<'a> {
+    File(File),
+    Stream(Box<dyn Read + 'a>),
+}
+
+impl Reader<'_> {
+    fn read(&mut self) -> &mut dyn Read {
+        match self {
+            Reader::File(file) => file,
+            Reader::Stream(stream) => stream,
+        }
+    }
+}
+
 /// A UTF-8 file being read.
-struct Stream {
-    file: File,
-    /// Its size when it was opened, and the bytes of its byte-order mark.
-    len: u64,
+struct Stream<'a> {
+    file: Reader<'a>,
+    /// Its size when it was opened, for a regular file (whose pieces a second reader may
+    /// read), and the bytes of its byte-order mark.
+    len: Option<u64>,
     bom: u64,
     /// Bytes read so far, against the input limit.
     read: u64,
     max: u64,
 }
 
-impl Stream {
+impl Stream<'_> {
     /// Reads `want` bytes of the file onto the end of `bytes`, straight into its spare
     /// room, and then the rest of a character they cut, so that the bytes end where a
-    /// character ends (or where the file does). True when the file ended.
+    /// character ends (or where the file does). True when the file ended. Never more than
+    /// one byte past the input limit (and the rest of a character): enough to see that
+    /// the file goes past it.
     fn read_onto(&mut self, bytes: &mut Vec<u8>, want: usize) -> std::io::Result<bool> {
+        let within = self.max.saturating_add(1).saturating_sub(self.read);
+        let want = want.min(usize::try_from(within).unwrap_or(usize::MAX));
         bytes.reserve(want + MAX_CHAR - 1);
         let before = bytes.len();
         let mut read_to_end = |bytes: &mut Vec<u8>, n: usize| {
-            let got = (&mut self.file).take(n as u64).read_to_end(bytes)?;
+            let got = self.file.read().take(n as u64).read_to_end(bytes)?;
             // `read_to_end` stops short only at the end of the file.
             Ok::<_, std::io::Error>(got < n)
         };
@@ -100,11 +120,10 @@ impl<'a> Source<'a> {
     /// limit and UTF-16 without a byte-order mark.
     pub fn memory(bytes: &'a [u8], options: &LoadOptions) -> Result<Source<'a>, Error> {
         if bytes.len() as u64 > options.max_input_bytes {
-            return Err(too_big(options.max_input_bytes));
+            return Err(too_big(bytes.len() as u64, options.max_input_bytes));
         }
         let (text, encoding, stop) = match bytes {
-            [0xFF, 0xFE, rest @ ..] => decode_utf16(rest, false),
-            [0xFE, 0xFF, rest @ ..] => decode_utf16(rest, true),
+            [0xFF, 0xFE, ..] | [0xFE, 0xFF, ..] => decode_utf16_within(bytes, u64::MAX),
             _ => {
                 let bom = bytes.starts_with(UTF8_BOM);
                 let body = if bom { &bytes[UTF8_BOM.len()..] } else { bytes };
@@ -120,7 +139,6 @@ impl<'a> Source<'a> {
                 return Ok(source);
             }
         };
-        let (text, stop) = cut_at_non_char(text, 0, stop);
         Ok(Source::holding(text, 0, stop, encoding))
     }
 
@@ -132,41 +150,74 @@ impl<'a> Source<'a> {
                 let bom = matches!(self.encoding, Encoding::Utf8 { bom: true });
                 Some(Pieces::Memory { text, bom })
             }
-            (_, None, Some(stream)) => Some(Pieces::File {
-                file: second_handle(&stream.file)?,
-                bom: stream.bom,
-                len: usize::try_from(stream.len - stream.bom).ok()?,
-            }),
+            (_, None, Some(Stream { file: Reader::File(file), len: Some(len), bom, .. })) => {
+                Some(Pieces::File {
+                    file: second_handle(file)?,
+                    bom: *bom,
+                    len: usize::try_from(len.checked_sub(*bom)?).ok()?,
+                })
+            }
             _ => None,
         }
     }
 
     /// The text of the file at `path`: UTF-8 is read a chunk at a time as the parser needs
-    /// it; UTF-16 is read and converted whole.
+    /// it; UTF-16 is read and converted whole, within the input limit.
     pub fn path(path: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
-        let io = |e: std::io::Error| io_error(path, &e);
-        let mut file = File::open(path).map_err(io)?;
-        if file.metadata().map_err(io)?.len() > options.max_input_bytes {
-            return Err(too_big(options.max_input_bytes));
+        let file = File::open(path).map_err(|e| io_error(path, &e))?;
+        Source::file(file, path, options)
+    }
+
+    /// The text of an open file, read from its start, as [`Source::path`] reads it; `name`
+    /// is its name in messages. A regular file larger than the input limit is refused
+    /// from its size; a pipe or a device is read until it goes past the limit.
+    pub fn file(file: File, name: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
+        let meta = file.metadata().map_err(|e| io_error(name, &e))?;
+        let len = meta.is_file().then_some(meta.len());
+        if let Some(len) = len.filter(|&len| len > options.max_input_bytes) {
+            return Err(too_big(len, options.max_input_bytes));
         }
+        Source::read(Reader::File(file), len, name, options)
+    }
+
+    /// The text of a stream, read once from where it stands, as a pipe is; `name` is its
+    /// name in messages.
+    pub fn stream(
+        stream: impl Read + 'a,
+        name: &'a Path,
+        options: &LoadOptions,
+    ) -> Result<Source<'a>, Error> {
+        Source::read(Reader::Stream(Box::new(stream)), None, name, options)
+    }
+
+    /// The text of `file`, of size `len` when it is known. No more than the input limit is
+    /// read: past it, the text stops where the limit is, which the error names.
+    fn read(
+        mut file: Reader<'a>,
+        len: Option<u64>,
+        path: &'a Path,
+        options: &LoadOptions,
+    ) -> Result<Source<'a>, Error> {
+        let io = |e: std::io::Error| io_error(path, &e);
+        let max = options.max_input_bytes;
         // The byte-order mark alone first, so that the text is read in place after it; room
         // for a chunk and what is kept of the one before, so the buffer seldom grows.
         let mut bytes = Vec::with_capacity(2 * CHUNK);
-        (&mut file).take(UTF8_BOM.len() as u64).read_to_end(&mut bytes).map_err(io)?;
+        file.read().take(UTF8_BOM.len() as u64).read_to_end(&mut bytes).map_err(io)?;
         if bytes.starts_with(&[0xFF, 0xFE]) || bytes.starts_with(&[0xFE, 0xFF]) {
-            file.read_to_end(&mut bytes).map_err(io)?;
-            let source = Source::memory(&bytes, options)?;
-            let text = Cow::Owned(source.text.into_owned());
+            let room = max.saturating_sub(bytes.len() as u64).saturating_add(1);
+            file.read().take(room).read_to_end(&mut bytes).map_err(io)?;
+            let (text, encoding, stop) = decode_utf16_within(&bytes, max);
             let origin = Origin::Path(path);
-            return Ok(Source { origin, ..Source::holding(text, 0, source.stop, source.encoding) });
+            return Ok(Source { origin, ..Source::holding(text, 0, stop, encoding) });
         }
         let bom = bytes == UTF8_BOM;
         let mut stream = Stream {
-            len: file.metadata().map_err(io)?.len(),
+            len,
             bom: if bom { UTF8_BOM.len() as u64 } else { 0 },
             file,
             read: bytes.len() as u64,
-            max: options.max_input_bytes,
+            max,
         };
         if bom {
             bytes.clear();
@@ -175,11 +226,11 @@ impl<'a> Source<'a> {
         let last = stream.read_onto(&mut bytes, CHUNK - stream.read as usize).map_err(io)?;
         check_utf16_without_bom(&bytes)?;
         let mut source = Source {
-            file: Some(stream),
             origin: Origin::Path(path),
             ..Source::holding(Cow::Owned(String::new()), 0, None, Encoding::Utf8 { bom })
         };
-        source.take_in(bytes, 0, last);
+        source.file = Some(stream);
+        source.take_read(bytes, 0, last);
         Ok(source)
     }
 
@@ -277,14 +328,9 @@ impl<'a> Source<'a> {
         // again at most as many times over as it is long.
         let read = stream.read_onto(&mut bytes, CHUNK.max(kept).min(room));
         let stop = match read {
-            Ok(last) if stream.read <= stream.max => {
-                self.take_in(bytes, kept, last);
+            Ok(last) => {
+                self.take_read(bytes, kept, last);
                 return self.end() > end;
-            }
-            // The file grew past the limit since its size was checked.
-            Ok(_) => {
-                let message = too_big(stream.max).message;
-                Finding::new(Code::LimitExceeded, end, message)
             }
             Err(e) => {
                 let message = match &self.origin {
@@ -340,13 +386,28 @@ impl<'a> Source<'a> {
             return true;
         };
         let at = stream.bom + offset as u64;
-        if offset < end || stream.file.seek(SeekFrom::Start(at)).is_err() {
+        let Reader::File(file) = &mut stream.file else { return false };
+        if offset < end || file.seek(SeekFrom::Start(at)).is_err() {
             return false;
         }
         stream.read = at;
         self.text.to_mut().clear();
         self.base = offset;
         true
+    }
+
+    /// [`Source::take_in`] of the bytes just read from the file, or of those of them within
+    /// the input limit when the file goes past it (a stream, or a file that grew since its
+    /// size was checked): the text then stops at the limit.
+    fn take_read(&mut self, mut bytes: Vec<u8>, kept: usize, last: bool) {
+        let Some(stream) = self.file.as_ref().filter(|stream| stream.read > stream.max) else {
+            return self.take_in(bytes, kept, last);
+        };
+        let max = stream.max;
+        let within = usize::try_from(max.saturating_sub(stream.bom)).unwrap_or(usize::MAX);
+        cut_to_char(&mut bytes, within.saturating_sub(self.base).max(kept));
+        self.take_in(bytes, kept, true);
+        self.stop = self.stop.take().or_else(|| Some(stopped_at_limit(self.end(), max)));
     }
 
     /// Makes `bytes` the text at hand, the first `kept` of which were the text at hand
@@ -632,6 +693,32 @@ fn check_utf16_without_bom(bytes: &[u8]) -> Result<(), Error> {
     })
 }
 
+/// The text of UTF-16 `bytes` (from their byte-order mark on), up to the first character
+/// XML does not allow, and no further than the first `max` bytes: when there are more, the
+/// text stops at the last character within them, for that reason.
+fn decode_utf16_within(bytes: &[u8], max: u64) -> (Cow<'static, str>, Encoding, Option<Finding>) {
+    let big_endian = bytes.starts_with(&[0xFE, 0xFF]);
+    let over = bytes.len() as u64 > max;
+    let mut body = bytes.get(2..).unwrap_or_default();
+    if over {
+        let within = usize::try_from(max).unwrap_or(usize::MAX).saturating_sub(2) & !1;
+        body = &body[..within];
+        // Without a high surrogate whose pair lies past the limit.
+        let last = body.len().checked_sub(2).map(|at| [body[at], body[at + 1]]);
+        let last =
+            last.map(
+                |pair| if big_endian { u16::from_be_bytes(pair) } else { u16::from_le_bytes(pair) },
+            );
+        if last.is_some_and(|unit| (0xD800..0xDC00).contains(&unit)) {
+            body = &body[..body.len() - 2];
+        }
+    }
+    let (text, encoding, stop) = decode_utf16(body, big_endian);
+    let (text, stop) = cut_at_non_char(text, 0, stop);
+    let stop = stop.or_else(|| over.then(|| stopped_at_limit(text.len(), max)));
+    (text, encoding, stop)
+}
+
 fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding, Option<Finding>) {
     let units = bytes.chunks_exact(2).map(|pair| {
         let pair = [pair[0], pair[1]];
@@ -659,12 +746,36 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding,
     (Cow::Owned(text), Encoding::Utf16 { big_endian }, stop)
 }
 
-/// The `limit-exceeded` error of an input larger than `max` bytes.
-pub fn too_big(max: u64) -> Error {
+/// The `limit-exceeded` error of an input of `len` bytes, larger than `max`: refused from
+/// its size, before a byte of it is read.
+pub fn too_big(len: u64, max: u64) -> Error {
     Error {
         code: Code::LimitExceeded,
         position: Position::default(),
-        message: format!("the file is larger than the input size limit (max_input_bytes = {max})"),
+        message: format!(
+            "the file is {len} bytes, larger than the input size limit (max_input_bytes = \
+             {max}): nothing of it was read"
+        ),
+    }
+}
+
+/// The `limit-exceeded` stop of an input that goes on past `max` bytes, at offset `at` of
+/// the text, where the limit is: the text read stops there.
+fn stopped_at_limit(at: usize, max: u64) -> Finding {
+    let message = format!(
+        "the input goes on past the input size limit (max_input_bytes = {max}): it was read \
+         up to here, its byte {max}, and no further"
+    );
+    Finding::new(Code::LimitExceeded, at, message)
+}
+
+/// Cuts `bytes` to their first `at` (when they are longer), less the start of a character
+/// cut there.
+fn cut_to_char(bytes: &mut Vec<u8>, at: usize) {
+    bytes.truncate(at);
+    if missing_of_last_char(bytes) > 0 {
+        let lead = bytes.iter().rposition(|b| b & 0xC0 != 0x80).unwrap_or(0);
+        bytes.truncate(lead);
     }
 }
 

@@ -18,9 +18,12 @@
 
 mod arena;
 mod builder;
+#[doc(hidden)]
+pub mod cli;
 mod containers;
 mod dump;
 pub mod error;
+mod escape;
 pub mod ffi;
 mod input;
 mod load;
@@ -95,7 +98,9 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
 
 /// Writes `scene` to a file (see [`write()`]), replacing it atomically: the text goes to a
 /// new file beside it, flushed to disk, then renamed over it, so a failed write (a full
-/// disk, a scene that cannot be written) leaves the old file as it was.
+/// disk, a scene that cannot be written) leaves the old file as it was. The new file has
+/// the old one's permissions, owner and group (those the writer may set) before its first
+/// byte; through a link, the link's target is written, created if it does not exist.
 pub fn write_path(
     scene: &Scene,
     path: impl AsRef<Path>,

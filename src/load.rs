@@ -4,6 +4,8 @@
 //! the arena is frozen into the scene.
 #![forbid(unsafe_code)]
 
+use std::fs::File;
+use std::io::Read;
 use std::path::Path;
 
 use crate::arena::Arena;
@@ -20,6 +22,18 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
 /// Loads a scene from a file, reading it a window at a time.
 pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Scene, Error> {
     finish(parse::read(Source::path(path, options)?, options))
+}
+
+/// Loads a scene from an open file (a pipe too), read from its start as from its path;
+/// `name` is its name in messages.
+pub fn load_file(file: File, name: &Path, options: &LoadOptions) -> Result<Scene, Error> {
+    finish(parse::read(Source::file(file, name, options)?, options))
+}
+
+/// Loads a scene from a stream read once, a window at a time; `name` is its name in
+/// messages.
+pub fn load_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Result<Scene, Error> {
+    finish(parse::read(Source::stream(stream, name, options)?, options))
 }
 
 /// Resolves, validates and freezes what was read, or reports the problem, everything

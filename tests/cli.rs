@@ -6,6 +6,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
+use box2scene::Position;
 use serde_json::{Value, json};
 
 /// A valid scene with no warnings: one circle on one dynamic body. The variants below each
@@ -1055,7 +1056,11 @@ fn render_escapes_names_and_stays_well_formed() {
     let sandbox = Sandbox::new("render-names");
     let run = sandbox.write("level.xml", &xml).run(&["render", "level.xml"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
-    assert!(run.stdout.contains("a&lt;b &amp; \"c\" ]]&gt; &lt;/title&gt;"), "{}", run.stdout);
+    assert!(
+        run.stdout.contains("a&lt;b &amp; &quot;c&quot; ]]&gt; &lt;/title&gt;"),
+        "{}",
+        run.stdout
+    );
     let svg = parse_xml(&run.stdout);
     let body = &svg.children[1].children[0];
     assert_eq!(body.title(), format!("body 0 \"{name}\" (dynamic)"));
@@ -1110,4 +1115,317 @@ fn render_reports_an_output_it_cannot_write_and_exits_2() {
         sandbox.write("level.xml", CLEAN).run(&["render", "-o", "absent/level.svg", "level.xml"]);
     assert_eq!((run.status, run.stdout.as_str()), (2, ""));
     assert!(run.stderr.starts_with("box2scene: cannot write absent/level.svg: "), "{}", run.stderr);
+}
+
+/// Whether `c` must not reach a terminal raw: a control character but the tab and the line
+/// feed that ends each line of a report, a line or paragraph separator, a direction mark
+/// or override.
+fn unsafe_on_a_terminal(c: char) -> bool {
+    (c.is_control() && c != '\t' && c != '\n')
+        || matches!(
+            c,
+            '\u{2028}' | '\u{2029}' | '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}'
+                | '\u{2066}'..='\u{2069}'
+        )
+}
+
+/// Every character of that kind that XML allows (tab, line feed and carriage return among
+/// them, as character references; DEL and the C1 controls; U+2028, U+2029; every direction
+/// mark, embedding, override and isolate), each followed by an `x`.
+fn hostile_references() -> String {
+    let chars = [0x9, 0xA, 0xD, 0x7F].into_iter().chain(0x80..=0x9F);
+    let chars = chars.chain([0x2028, 0x2029, 0x61C, 0x200E, 0x200F]);
+    let chars = chars.chain(0x202A..=0x202E).chain(0x2066..=0x2069);
+    chars.map(|c| format!("&#x{c:X};x")).collect()
+}
+
+/// The text `hostile_references` stands for.
+fn hostile_text() -> String {
+    let xml = format!("<a>{}</a>", hostile_references());
+    roxmltree::Document::parse(&xml).unwrap().root_element().text().unwrap().to_owned()
+}
+
+fn assert_terminal_safe(text: &str) {
+    let found: Vec<char> = text.chars().filter(|&c| unsafe_on_a_terminal(c)).collect();
+    assert!(found.is_empty(), "{found:?} reach the terminal raw in\n{text}");
+}
+
+/// A value holding line breaks cannot make `check` print a report of its own, nor C1
+/// controls (CSI, OSC) reach the terminal in the message: the text is escaped in the
+/// message as in the quoted line.
+#[test]
+fn check_escapes_a_value_that_would_forge_a_diagnostic() {
+    let forged = "1&#xA;/etc/passwd:1:1: error[forged]: owned&#x9B;2J&#x9D;0;title&#x9C;";
+    let xml = clean_with("<Density>1</Density>", &format!("<Density>{forged}</Density>"));
+    let sandbox = Sandbox::new("forged");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    assert_eq!(run.status, 1, "{}", run.stdout);
+    let [report, _, _] = one_report(&run.stdout);
+    assert!(report.starts_with("level.xml:"), "{report}");
+    assert!(report.contains("\\u{a}/etc/passwd:1:1: error[forged]: owned\\u{9b}2J"), "{report}");
+    assert!(!run.stdout.lines().any(|line| line.starts_with("/etc/passwd")), "{}", run.stdout);
+    assert_terminal_safe(&run.stdout);
+}
+
+/// Every control character, line break and direction override a file can hold, and bytes
+/// that are not text, reach no output of the command raw: the text report (its message and
+/// its quoted line), the JSON reports and dump (which read back to the text), and the SVG
+/// (which parses back to it).
+#[test]
+fn every_output_escapes_what_comes_from_the_file() {
+    let sandbox = Sandbox::new("escaped-outputs");
+    let hostile = hostile_references();
+    let named = clean_with("<Bullet>False</Bullet>", &format!("<Name>{hostile}</Name><Foo/>"))
+        .replace("<Joints />", &format!("<Joints />\n<Wind>{hostile}</Wind>"));
+    let hostile_name = hostile_text().trim().to_owned();
+    let bad = clean_with("<Density>1</Density>", &format!("<Density>{hostile}</Density>"));
+    // Raw in the file: a C0 control, DEL, C1 and a direction override on the line of the
+    // first error (a character XML forbids), and bytes that are not UTF-8 on another.
+    let raw = clean_with(
+        "<Density>1</Density>",
+        "<Density>1</Density><!-- \u{7f}\u{85}\u{202e} \u{1b}[2J -->",
+    );
+    let mut not_text = CLEAN.as_bytes().to_vec();
+    let at = CLEAN.find("<Joints").unwrap();
+    not_text.splice(at..at, b"<!-- \xC3( \xFF \xE2\x82 -->".iter().copied());
+    fs::write(sandbox.dir.join("not-text.xml"), not_text).unwrap();
+    sandbox.write("named.xml", &named).write("bad.xml", &bad).write("raw.xml", &raw);
+    let files = ["named.xml", "bad.xml", "raw.xml", "not-text.xml"];
+
+    let text = sandbox.run(&[&["check"][..], &files].concat());
+    assert_eq!(text.status, 1);
+    assert_terminal_safe(&text.stdout);
+    let reports = text.stdout.lines().filter(|line| line.contains(".xml:")).count();
+    assert!(reports >= 5, "{}", text.stdout);
+    assert_eq!(text.stdout.lines().count(), 3 * reports, "{}", text.stdout);
+    assert!(text.stdout.contains("\\u{1b}[2J"), "{}", text.stdout);
+    assert!(text.stdout.contains("\u{FFFD}("), "the bytes that are not text: {}", text.stdout);
+
+    let json = sandbox.run(&[&["check", "--format=json"][..], &files].concat());
+    assert_terminal_safe(&json.stdout);
+    let messages: Vec<String> = json
+        .stdout
+        .lines()
+        .map(|line| {
+            serde_json::from_str::<Value>(line).unwrap()["message"].as_str().unwrap().to_owned()
+        })
+        .collect();
+    assert_eq!(messages.len(), reports);
+    let hostile = hostile_text();
+    assert!(messages.iter().any(|m| m.contains(hostile.trim())), "{messages:?}");
+
+    let dump = sandbox.run(&["dump", "named.xml"]);
+    assert_eq!(dump.status, 0, "{}", dump.stderr);
+    assert_terminal_safe(&dump.stdout);
+    let scene: Value = serde_json::from_str(&dump.stdout).unwrap();
+    assert_eq!(scene["bodies"][0]["name"], json!(hostile_name));
+
+    let svg = sandbox.run(&["render", "named.xml"]);
+    assert_eq!(svg.status, 0, "{}", svg.stderr);
+    assert!(!svg.stdout.chars().any(|c| unsafe_on_a_terminal(c) || c == '\t'), "{}", svg.stdout);
+    let document = roxmltree::Document::parse(&svg.stdout).unwrap();
+    let title = document.descendants().find(|n| n.has_tag_name("title")).unwrap();
+    assert_eq!(title.text().unwrap(), format!("body 0 \"{hostile_name}\" (dynamic)"));
+}
+
+/// Lines that end with a lone carriage return are lines, as the loader counts them: the
+/// report quotes the line it names, in a file of CR line ends alone or of all three kinds.
+#[test]
+fn check_quotes_the_line_of_a_file_with_lone_carriage_returns() {
+    let sandbox = Sandbox::new("lone-cr");
+    let unknown = with_unknown_element();
+    let cr_only = unknown.replace('\n', "\r");
+    let mixed: String = unknown
+        .split_inclusive('\n')
+        .enumerate()
+        .map(|(i, line)| match i % 3 {
+            0 => line.replace('\n', "\r"),
+            1 => line.replace('\n', "\r\n"),
+            _ => line.to_owned(),
+        })
+        .collect();
+    let (line, column) = locate(&unknown, "<Foo/>");
+    for (name, xml) in [("cr.xml", &cr_only), ("mixed.xml", &mixed)] {
+        let run = sandbox.write(name, xml).run(&["check", name]);
+        assert_eq!(run.status, 0, "{}", run.stdout);
+        let [report, shown, caret] = one_report(&run.stdout);
+        assert_report(
+            report,
+            &format!("{name}:{line}:{column}: warning[unknown-element]: "),
+            "Foo",
+        );
+        assert_eq!(shown, "      <Foo/>", "{name}");
+        assert_eq!(caret, "      ^", "{name}");
+    }
+}
+
+/// Runs `box2scene ARGS` in `dir` with `stdin`, and returns what it printed and its peak
+/// resident memory in bytes, as GNU time measures it (the child's `ru_maxrss`).
+fn peak_rss(args: &[&str], dir: &std::path::Path, stdin: Stdio) -> (std::process::Output, u64) {
+    let time = std::path::Path::new("/usr/bin/time");
+    assert!(time.exists(), "GNU time (/usr/bin/time, Debian's package time) measures peak memory");
+    let report = dir.join("peak-rss");
+    let output = Command::new(time)
+        .args(["-f", "%M", "-o"])
+        .arg(&report)
+        .arg(env!("CARGO_BIN_EXE_box2scene"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(stdin)
+        .output()
+        .expect("GNU time runs");
+    // After "Command exited with non-zero status N", when it did.
+    let measured = fs::read_to_string(&report).unwrap();
+    let kib: u64 = measured.lines().last().unwrap().trim().parse().unwrap();
+    (output, kib * 1024)
+}
+
+/// One line of `count` unknown elements, each after `pad` blanks: the kind of file a tool
+/// writes on one line, of which the scene keeps nothing but the warnings.
+fn one_line_with_warnings(count: usize, pad: usize) -> String {
+    let item = format!("{}<Wind/>", " ".repeat(pad));
+    format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}</World>",
+        item.repeat(count)
+    )
+}
+
+/// The text report of a one-line file costs time linear in the file and the number of
+/// warnings: four times the file and four times the warnings take about four times as
+/// long (a report that read the whole line for each warning took sixteen), and the
+/// command holds less than the file.
+#[test]
+fn the_text_report_of_a_one_line_file_is_linear_in_the_file_and_the_warnings() {
+    let sandbox = Sandbox::new("one-line");
+    let pad = 8000;
+    sandbox.write("small.xml", &one_line_with_warnings(250, pad));
+    sandbox.write("large.xml", &one_line_with_warnings(1000, pad));
+    let time = |name: &str| {
+        let args = ["check".into(), sandbox.dir.join(name).into_os_string()];
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let start = std::time::Instant::now();
+        box2scene::cli::run(&args, &mut out, &mut err);
+        let took = start.elapsed().as_secs_f64();
+        let text = String::from_utf8(out).unwrap();
+        (took, text.lines().count(), text.lines().map(str::len).max().unwrap_or(0))
+    };
+    // The fastest of runs taken in turns, so that what else the machine runs weighs alike.
+    let (mut small, mut large) = (f64::MAX, f64::MAX);
+    for _ in 0..5 {
+        let (took, lines, longest) = time("small.xml");
+        assert_eq!((lines, longest < 400), (3 * 250, true), "three short lines a warning");
+        small = small.min(took);
+        let (took, lines, longest) = time("large.xml");
+        assert_eq!((lines, longest < 400), (3 * 1000, true), "three short lines a warning");
+        large = large.min(took);
+    }
+    let ratio = large / small;
+    assert!(
+        ratio < 8.0,
+        "4x the file and the warnings took {ratio:.1}x as long ({small:.3} s, {large:.3} s)"
+    );
+    let (output, peak) = peak_rss(&["check", "large.xml"], &sandbox.dir, Stdio::null());
+    assert_eq!(String::from_utf8(output.stdout).unwrap().lines().count(), 3 * 1000);
+    let size = fs::metadata(sandbox.dir.join("large.xml")).unwrap().len();
+    assert!(peak < size, "{peak} bytes resident checking a {size} byte file");
+}
+
+/// `check` refuses a file larger than the input limit from its size, as a host's load
+/// does, with the same error, and holds none of it.
+#[test]
+fn check_refuses_a_file_over_the_limit_from_its_size() {
+    let sandbox = Sandbox::new("huge");
+    let path = sandbox.dir.join("huge.xml");
+    let file = fs::File::create(&path).unwrap();
+    // Sparse: 2 GiB that take no room on the disk.
+    file.set_len(2 << 30).unwrap();
+    let expected = box2scene::load_path(&path, &box2scene::LoadOptions::default()).unwrap_err();
+    let (output, peak) = peak_rss(&["check", "huge.xml"], &sandbox.dir, Stdio::null());
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(stdout, format!("huge.xml: error[limit-exceeded]: {}\n", expected.message));
+    assert!(peak < 32 << 20, "{peak} bytes resident refusing a 2 GiB file");
+}
+
+/// `check` reads a device and standard input as the loader reads a stream, a window at a
+/// time, and stops where the loader stops: the same error as a host's load, and a few
+/// megabytes held where reading a gigabyte first held one.
+#[test]
+fn check_reads_a_device_and_standard_input_as_streams() {
+    let sandbox = Sandbox::new("streams");
+    let expected =
+        box2scene::load_path("/dev/zero", &box2scene::LoadOptions::default()).unwrap_err();
+    let report = |name: &str| {
+        let Position { line, column, .. } = expected.position;
+        format!("{name}:{line}:{column}: error[{}]: {}\n", expected.code.name(), expected.message)
+    };
+    for (file, name) in [("/dev/zero", "/dev/zero"), ("-", "<stdin>")] {
+        let stdin = fs::File::open("/dev/zero").unwrap();
+        let (output, peak) = peak_rss(&["check", file], &sandbox.dir, stdin.into());
+        let stdout = String::from_utf8(output.stdout).unwrap();
+        assert!(stdout.starts_with(&report(name)), "{stdout}");
+        assert!(peak < 32 << 20, "{peak} bytes resident checking {name}");
+    }
+}
+
+/// Two static circles at x = ±3e38 (finite values a file may hold) are drawn scaled down,
+/// so that every number of the SVG is finite in single precision, as viewers read them, and
+/// both circles lie inside the view box.
+#[test]
+fn render_draws_a_scene_at_the_edges_of_single_precision() {
+    let circle = |x: &str| {
+        format!(
+            "<Body Type=\"Static\"><Position>{x} 0</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+        )
+    };
+    let xml = format!(
+        "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape></Shapes>\
+         <Fixtures><Fixture><Shape>0</Shape></Fixture></Fixtures><Bodies>{}{}</Bodies><Joints/>\
+         </World>",
+        circle("3e38"),
+        circle("-3e38")
+    );
+    let svg = render("render-extreme", &xml);
+    let finite = |text: &str| -> f32 {
+        let value: f32 = text.parse().unwrap_or_else(|_| panic!("{text:?} is not a number"));
+        assert!(value.is_finite(), "{text:?} is not finite");
+        value
+    };
+    let view: Vec<f32> = svg.attribute("viewBox").split(' ').map(finite).collect();
+    let [x, y, width, height] = view[..] else { panic!("four numbers") };
+    assert!(finite(&(x + width).to_string()) > x && y + height > y);
+    assert_eq!(finite(svg.attribute("width")), 800.0);
+    assert!(finite(svg.attribute("height")) > 0.0);
+    let world = &svg.children[1];
+    finite(world.attribute("stroke-width"));
+    let circles: Vec<&Element> =
+        world.descendants().into_iter().filter(|e| e.name == "circle").collect();
+    assert_eq!(circles.len(), 2);
+    let centres: Vec<f32> = circles.iter().map(|c| c.number("cx")).collect();
+    for (circle, &cx) in circles.iter().zip(&centres) {
+        finite(circle.attribute("r"));
+        assert!(cx.is_finite() && x < cx && cx < x + width, "{cx} outside {view:?}");
+        assert!(y < -circle.number("cy") && -circle.number("cy") < y + height);
+    }
+    assert_eq!(centres[0], -centres[1], "the two circles, turned about the origin");
+}
+
+/// `fmt -o` and `render -o` follow one rule through a link whose target does not exist
+/// yet: the target is written, and the link stays a link.
+#[cfg(unix)]
+#[test]
+fn fmt_and_render_write_through_a_link_to_a_file_not_yet_there() {
+    let sandbox = Sandbox::new("dangling-link");
+    sandbox.write("level.xml", CLEAN);
+    fs::create_dir(sandbox.dir.join("out")).unwrap();
+    for (command, link, target) in
+        [("fmt", "formatted.xml", "out/formatted.xml"), ("render", "drawn.svg", "out/drawn.svg")]
+    {
+        std::os::unix::fs::symlink(target, sandbox.dir.join(link)).unwrap();
+        let run = sandbox.run(&[command, "-o", link, "level.xml"]);
+        assert_eq!((run.status, run.stderr.as_str()), (0, ""), "{command}");
+        let printed = sandbox.run(&[command, "level.xml"]).stdout;
+        assert_eq!(fs::read_to_string(sandbox.dir.join(target)).unwrap(), printed, "{command}");
+        let meta = fs::symlink_metadata(sandbox.dir.join(link)).unwrap();
+        assert!(meta.file_type().is_symlink(), "{command}");
+    }
 }

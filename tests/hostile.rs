@@ -2,6 +2,7 @@
 //! a crash, a hang, runaway memory or a partial scene.
 
 use std::alloc::{GlobalAlloc, Layout, System};
+use std::io::Write;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -667,4 +668,96 @@ fn markup_xml_forbids_in_values_is_malformed() {
         "<UserData><Value a=\"1\" A=\"&lt;\"><![CDATA[]]>]]]]&gt;</Value></UserData><Shapes/>",
     );
     load_bytes(fine.as_bytes()).expect("CDATA ends, escaped markup and names differing in case");
+}
+
+/// A new named pipe in the temporary directory.
+#[cfg(unix)]
+fn named_pipe(name: &str) -> std::path::PathBuf {
+    let path = std::env::temp_dir().join(format!("box2scene-fifo-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_file(&path);
+    let made = std::process::Command::new("mkfifo").arg(&path).status().unwrap();
+    assert!(made.success(), "mkfifo {}", path.display());
+    path
+}
+
+/// A scene of several MiB read through a named pipe, after a UTF-8 byte-order mark, is the
+/// scene of the same bytes in memory: a pipe has no size to cut into pieces, and is read
+/// on one thread, a window at a time.
+#[cfg(unix)]
+#[test]
+fn a_named_pipe_loads_as_its_bytes_from_memory() {
+    let body = "<Body Type=\"Dynamic\"><Position>1.5 -2.25</Position><Fixtures/><Wind/></Body>\n";
+    let xml = format!(
+        "\u{FEFF}<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{}</Bodies><Joints/></World>",
+        body.repeat(50_000)
+    );
+    let path = named_pipe("scene");
+    let writer = {
+        let (path, bytes) = (path.clone(), xml.clone().into_bytes());
+        std::thread::spawn(move || {
+            let mut pipe = std::fs::OpenOptions::new().write(true).open(path).unwrap();
+            pipe.write_all(&bytes).unwrap();
+        })
+    };
+    let from_pipe = box2scene::load_path(&path, &LoadOptions::default()).unwrap();
+    writer.join().unwrap();
+    std::fs::remove_file(&path).unwrap();
+    let from_memory = load_bytes(xml.as_bytes()).unwrap();
+    assert_eq!(from_pipe.bodies().len(), 50_000);
+    assert_eq!(from_pipe.to_json(), from_memory.to_json());
+}
+
+/// A named pipe of 64 MiB that starts with a UTF-16 byte-order mark is read no further than
+/// the 1 MiB input limit, holding little more than that, and the error is where the limit
+/// stopped the reading (its line and byte), as for the same pipe in UTF-8.
+#[cfg(unix)]
+#[test]
+fn max_input_bytes_bounds_a_utf16_stream() {
+    let _measuring = measuring();
+    let max = 1u64 << 20;
+    let options = LoadOptions { max_input_bytes: max, ..LoadOptions::default() };
+    let start = "<World Version=\"1\">";
+    for utf16 in [true, false] {
+        let path = named_pipe(&format!("limit-{utf16}"));
+        let encode = move |text: &str| -> Vec<u8> {
+            match utf16 {
+                true => text.encode_utf16().flat_map(u16::to_le_bytes).collect(),
+                false => text.as_bytes().to_vec(),
+            }
+        };
+        let writer = {
+            let (path, first, lines) = (path.clone(), encode(start), encode(&"\n".repeat(1 << 16)));
+            std::thread::spawn(move || {
+                let mut pipe = std::fs::OpenOptions::new().write(true).open(path).unwrap();
+                let bom: &[u8] = if utf16 { &[0xFF, 0xFE] } else { &[] };
+                let mut sent = pipe.write_all(bom).and_then(|()| pipe.write_all(&first));
+                let mut total = 0;
+                while sent.is_ok() && total < 64 << 20 {
+                    sent = pipe.write_all(&lines);
+                    total += lines.len();
+                }
+                // The reader stopped reading long before the end.
+                sent.is_err()
+            })
+        };
+        let mut error = None;
+        let held = extra_bytes_while(|| error = box2scene::load_path(&path, &options).err());
+        let error = error.expect("the limit stops the load");
+        assert!(writer.join().unwrap(), "the pipe was not read to its end");
+        std::fs::remove_file(&path).unwrap();
+        // The text within the limit: the byte-order mark, then whole characters.
+        let (units, offset) = match utf16 {
+            true => ((max - 2) / 2, max),
+            false => (max, max),
+        };
+        let line = 1 + units - start.len() as u64;
+        assert_eq!(error.code, Code::LimitExceeded, "{error:?}");
+        assert_eq!(
+            (u64::from(error.position.line), error.position.column, error.position.byte_offset),
+            (line, 1, offset),
+            "{error:?}"
+        );
+        assert!(error.message.contains("max_input_bytes = 1048576"), "{}", error.message);
+        assert!(held < 4 * max as usize, "{held} bytes held reading a 64 MiB pipe (utf16 {utf16})");
+    }
 }

@@ -1,0 +1,224 @@
+//! The `box2scene` command: check, dump, format and draw Box2Scene files in a level
+//! pipeline. It lives in the library, behind [`run`], so that the fuzz targets run what the
+//! command runs; it uses only what a host uses, and the loader's own reading of a file.
+//!
+//! `check` prints each diagnostic as compilers do (`FILE:LINE:COLUMN: warning[CODE]:
+//! message`, the line, a caret under the column) so that editors and CI logs can jump to
+//! it, or as JSON lines; `dump` prints the scene as JSON; `fmt` rewrites a file in
+//! canonical form; `render` draws the scene as SVG. The exit status tells a build script
+//! what happened without parsing the output.
+//!
+//! Every command loads its file from the path as a host does (standard input as a stream),
+//! never holding it whole, and a report reads back only the lines it quotes.
+#![forbid(unsafe_code)]
+
+mod args;
+mod quote;
+mod render;
+mod report;
+
+use std::ffi::OsString;
+use std::fs::File;
+use std::io::{self, Write};
+use std::path::Path;
+
+use crate::escape::terminal_text;
+use crate::{Code, Error, LoadOptions, Scene, input, load, output};
+
+use args::{Command, Format, Input, Run, Verb};
+use quote::Quoted;
+use report::Report;
+
+/// The exit status, ordered so that a run over many files ends with the worst one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Status {
+    Clean = 0,
+    LoadError = 1,
+    UsageOrIo = 2,
+}
+
+/// Runs the command line `args` (without the program's name), printing to `out` and
+/// `err` what the command prints to standard output and standard error, and returns its
+/// exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
+pub fn run(args: &[OsString], out: &mut dyn Write, err: &mut dyn Write) -> u8 {
+    let mut io = Io { out, err };
+    let status = match args::parse(args) {
+        Ok(Command::Print(text)) => io.emit(&text),
+        Ok(Command::Run(run)) => match run.verb {
+            Verb::Check => check(&run, &mut io),
+            Verb::Dump => dump(&run, &mut io),
+            Verb::Fmt => fmt(&run, &mut io),
+            Verb::Render => render(&run, &mut io),
+        },
+        Err(slip) => io.complain(&slip.to_string()),
+    };
+    status as u8
+}
+
+/// Where a command prints.
+struct Io<'a> {
+    out: &'a mut dyn Write,
+    err: &'a mut dyn Write,
+}
+
+impl Io<'_> {
+    /// Writes to standard output. A closed or failing output is reported instead of
+    /// panicking as `print!` would, so a pipeline gets status 2 and a message.
+    fn emit(&mut self, text: &str) -> Status {
+        match self.out.write_all(text.as_bytes()).and_then(|()| self.out.flush()) {
+            Ok(()) => Status::Clean,
+            Err(e) => self.complain(&format!("cannot write to standard output: {e}")),
+        }
+    }
+
+    /// A report, or another text that is all escaped already, on standard error.
+    fn report(&mut self, text: &str) {
+        let _ = self.err.write_all(text.as_bytes());
+    }
+
+    /// `box2scene: PROBLEM` on standard error, escaped as a report is; status 2.
+    fn complain(&mut self, problem: &str) -> Status {
+        let _ = writeln!(self.err, "box2scene: {}", terminal_text(problem));
+        Status::UsageOrIo
+    }
+}
+
+/// A file loaded as a host loads it, and where its lines are read back from.
+struct Loaded {
+    name: String,
+    scene: Result<Scene, Error>,
+    quoted: Quoted,
+}
+
+impl Loaded {
+    fn read(input: &Input, options: &LoadOptions) -> Loaded {
+        let name = input.name();
+        let (scene, quoted) = match input {
+            Input::Path(path) => match File::open(path) {
+                Ok(file) => load_file(file, path, options),
+                Err(e) => (Err(input::io_error(path, &e)), Quoted::nothing()),
+            },
+            Input::Stdin => load_stdin(Path::new(&name), options),
+        };
+        Loaded { name, scene, quoted }
+    }
+
+    /// The scene, or None once its error is on standard error.
+    fn scene_or_report(&self, io: &mut Io<'_>) -> Result<&Scene, Status> {
+        self.scene.as_ref().map_err(|error| {
+            io.report(&Report::of_error(error).text(&self.name, &self.quoted));
+            status_of(error)
+        })
+    }
+}
+
+/// Loads an open file: a regular one as a path is loaded, read back from where a report
+/// quotes it; anything else (a pipe, a terminal) as a stream, copied as it is read.
+fn load_file(file: File, name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
+    match file.metadata() {
+        Ok(meta) if meta.is_file() => {
+            let quoted = Quoted::from(file.try_clone().ok());
+            (load::load_file(file, name, options), quoted)
+        }
+        _ => load_stream(file, name, options),
+    }
+}
+
+/// Loads a stream a window at a time, as a file, while a copy of what is read goes to a
+/// file of this run's own (removed when it ends), which is all a report reads back.
+fn load_stream(
+    stream: impl io::Read,
+    name: &Path,
+    options: &LoadOptions,
+) -> (Result<Scene, Error>, Quoted) {
+    let quoted = Quoted::spool();
+    let scene = load::load_stream(quoted.copying(stream), name, options);
+    (scene, quoted)
+}
+
+/// Standard input, through a handle of its own that is a file, so that a redirected file
+/// is loaded as a file is.
+#[cfg(unix)]
+fn load_stdin(name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
+    use std::os::fd::AsFd;
+    match io::stdin().as_fd().try_clone_to_owned() {
+        Ok(handle) => load_file(File::from(handle), name, options),
+        Err(_) => load_stream(io::stdin().lock(), name, options),
+    }
+}
+
+#[cfg(not(unix))]
+fn load_stdin(name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
+    load_stream(io::stdin().lock(), name, options)
+}
+
+/// Checks every file, even after one fails, so that one run reports everything.
+fn check(run: &Run, io: &mut Io<'_>) -> Status {
+    let mut worst = Status::Clean;
+    for input in &run.inputs {
+        let loaded = Loaded::read(input, &run.load);
+        let (status, reports) = match &loaded.scene {
+            Ok(scene) => {
+                let reports = scene.diagnostics().iter().map(|d| Report::of_diagnostic(scene, d));
+                (Status::Clean, reports.collect())
+            }
+            Err(error) => (status_of(error), vec![Report::of_error(error)]),
+        };
+        let text: String = reports
+            .iter()
+            .map(|report| match run.format {
+                Format::Text => report.text(&loaded.name, &loaded.quoted),
+                Format::Json => report.json(&loaded.name),
+            })
+            .collect();
+        worst = worst.max(status).max(io.emit(&text));
+    }
+    worst
+}
+
+fn dump(run: &Run, io: &mut Io<'_>) -> Status {
+    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    match loaded.scene_or_report(io) {
+        Ok(scene) => io.emit(&scene.to_json()),
+        Err(status) => status,
+    }
+}
+
+/// Writes the file in canonical form, to `-o` or standard output: with its comments,
+/// unknown elements and attributes and Farseer-only joints in their places. The file is
+/// read whole before anything is written, so the output may be the file itself.
+fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
+    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let scene = match loaded.scene_or_report(io) {
+        Ok(scene) => scene,
+        Err(status) => return status,
+    };
+    let written = match &run.out {
+        None => scene.to_xml(&run.write).map(|text| io.emit(&text)),
+        Some(out) => crate::write_path(scene, out, &run.write).map(|()| Status::Clean),
+    };
+    written.unwrap_or_else(|error| {
+        let name = run.out.as_ref().map_or(loaded.name.clone(), |out| out.display().to_string());
+        io.report(&Report::of_error(&error).text(&name, &Quoted::nothing()));
+        status_of(&error)
+    })
+}
+
+/// Draws the scene to `-o` (replaced as `fmt -o` replaces a file) or standard output.
+fn render(run: &Run, io: &mut Io<'_>) -> Status {
+    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let svg = match loaded.scene_or_report(io) {
+        Ok(scene) => render::svg(scene),
+        Err(status) => return status,
+    };
+    let Some(out) = &run.out else { return io.emit(&svg) };
+    match output::replace(out, svg.as_bytes()) {
+        Ok(()) => Status::Clean,
+        Err(e) => io.complain(&format!("cannot write {}: {e}", out.display())),
+    }
+}
+
+/// A file that cannot be read is the environment's problem, not the file's: status 2.
+fn status_of(error: &Error) -> Status {
+    if error.code == Code::Io { Status::UsageOrIo } else { Status::LoadError }
+}

@@ -1,0 +1,71 @@
+//! How a warning or an error is shown: as compilers show one, with the line it points at
+//! and a caret under the column, or as one JSON object a line for editors and pipelines.
+//! Positions are the library's; the line they name is read back by [`Quoted`]. Every text
+//! that may come from a file (the file's name, the message, the line) is escaped for the
+//! output it goes to, so that no file can forge a report or drive a terminal.
+
+use super::quote::Quoted;
+use crate::escape::{json_string, terminal_text};
+use crate::{Diagnostic, Error, Position, Scene, Severity};
+
+/// One warning or error, with the names of its severity and code.
+pub struct Report {
+    severity: String,
+    code: String,
+    message: String,
+    position: Position,
+}
+
+impl Report {
+    pub fn of_error(error: &Error) -> Report {
+        Report {
+            severity: Severity::Error.name().to_owned(),
+            code: error.code.name().to_owned(),
+            message: error.message.clone(),
+            position: error.position,
+        }
+    }
+
+    pub fn of_diagnostic(scene: &Scene, d: &Diagnostic) -> Report {
+        // A loaded scene's diagnostics carry known codes and severities; a value without a
+        // name is shown as its number rather than guessed.
+        Report {
+            severity: d.severity().map_or_else(|| d.severity.to_string(), |s| s.name().to_owned()),
+            code: d.code().map_or_else(|| d.code.to_string(), |c| c.name().to_owned()),
+            message: scene.text(d.message).unwrap_or_default().to_owned(),
+            position: d.position(),
+        }
+    }
+
+    /// `FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE`, leaving out the parts of the position
+    /// that are unknown (0) as compilers do; then, when the line is known, the line and a
+    /// caret line.
+    pub fn text(&self, file: &str, quoted: &Quoted) -> String {
+        let file = terminal_text(file);
+        let place = match (self.position.line, self.position.column) {
+            (0, _) => file.to_owned(),
+            (line, 0) => format!("{file}:{line}"),
+            (line, column) => format!("{file}:{line}:{column}"),
+        };
+        let (severity, code) = (terminal_text(&self.severity), terminal_text(&self.code));
+        let mut text = format!("{place}: {severity}[{code}]: {}\n", terminal_text(&self.message));
+        if let Some((line, caret)) = quoted.excerpt(self.position) {
+            text.push_str(&format!("{line}\n{caret}\n"));
+        }
+        text
+    }
+
+    /// The report as one line of JSON; line and column are 0 when unknown, as in the
+    /// library's diagnostics.
+    pub fn json(&self, file: &str) -> String {
+        let Position { line, column, byte_offset } = self.position;
+        format!(
+            "{{\"file\":{},\"line\":{line},\"column\":{column},\"byte_offset\":{byte_offset},\
+             \"severity\":{},\"code\":{},\"message\":{}}}\n",
+            json_string(file),
+            json_string(&self.severity),
+            json_string(&self.code),
+            json_string(&self.message),
+        )
+    }
+}
