@@ -1,0 +1,631 @@
+"""Build a scene into a pybox2d world (the ``box2d`` package: Box2D 2.3.10), and capture
+one back into a scene.
+
+    import Box2D, box2scene, box2scene.pybox2d as b2s2
+    scene = box2scene.load("level.xml")
+    world = Box2D.b2World(gravity=b2s2.scene_gravity(scene, (0, -10)))
+    built = b2s2.build_world(scene, world)
+    for _ in range(600): world.Step(1 / 60, 8, 3)
+    saved, reports = b2s2.capture_world(world, built.bodies, [b.name for b in scene.bodies])
+
+Box2D 2.3 is the engine the format's Version 2 files were written for, so more of a scene
+is exact here than in Box2D 2.4 or v3: distance joints keep ``FrequencyHz`` and
+``DampingRatio`` as they are (2.4 needs a stiffness computed from the masses), a rope is
+Box2D's rope joint, a wheel joint's spring is 2.2's, a weld joint's spring is 2.2's soft
+weld, the motor and friction joints are Box2D's own, an edge keeps each ghost vertex on
+its own (2.4 needs both), and a chain takes the ghosts the file gives (none extrapolated).
+What 2.3 lacks is reported: a line joint's linear motor (``lossy-line-motor``) and limit
+(2.3's wheel joint has none), pulley ``MaxLengthA``/``MaxLengthB`` (2.1 only), a
+polygon's ``Centroid`` is applied as in the 2.4 adapter. Filter bits are 16 wide.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import Box2D as B
+
+from ._error import Error
+from ._records import Body, Fixture, Joint, Shape
+from ._report import Check, Report
+from ._scene import Builder, Scene
+
+__all__ = ["Built", "Report", "build_world", "capture_world", "scene_gravity"]
+
+ENGINE = "Box2D 2.3"
+# The working range of the library's Box2D 2.4 adapter (box2scene::working_range), which
+# 2.3's solver shares.
+MAX_LENGTH = 1e5
+MAX_ANGLE = 1e5
+MAX_SPEED = 1e3
+MAX_ACCELERATION = 1e3
+MAX_GRAVITY_SCALE = 1e3
+MAX_DAMPING = 1e5
+MAX_DENSITY = 1e5
+MAX_FRICTION = 1e5
+MAX_RATIO = 1e5
+MAX_FREQUENCY = 1e3
+MAX_FORCE = 1e20
+MIN_AXIS = 1e-6
+MIN_MASS = 1e-20
+MAX_MASS = 1e10
+MIN_INERTIA = 1e-20
+MAX_INERTIA = 1e12
+MAX_COMPLIANCE = 1e12
+LEVER_2X2 = 1e3
+LEVER_3X3 = 30.0
+FILTER_BITS = 16
+
+_KINDS = {"static": B.b2_staticBody, "kinematic": B.b2_kinematicBody, "dynamic": B.b2_dynamicBody}
+
+# What 2.3's bindings cannot read back from a joint the builder made, by the joint.
+_joint_records: Dict[int, dict] = {}
+
+
+@dataclass
+class Built:
+    """What :func:`build_world` created, index for index with the scene: ``bodies[i]`` for
+    body ``i``, ``fixtures[k]`` for the fixture at slot ``k`` of the scene's
+    ``fixture_ids``, ``joints[j]`` for joint ``j``; None where nothing was created
+    (``reports`` says why)."""
+
+    bodies: List[Optional[B.b2Body]]
+    fixtures: List[Optional[B.b2Fixture]]
+    joints: List[Optional[B.b2Joint]]
+    reports: List[Report] = field(default_factory=list)
+
+
+def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
+    """The scene's gravity, or ``fallback`` when it gives none or one beyond the range."""
+    g = scene.gravity
+    if g is None or not (abs(g[0]) <= MAX_ACCELERATION and abs(g[1]) <= MAX_ACCELERATION):
+        return fallback
+    return g
+
+
+def _key(joint) -> int:
+    return int(joint.this)
+
+
+class _Build:
+    def __init__(self, scene: Scene, world: B.b2World):
+        self.scene = scene
+        self.world = world
+        self.reports: List[Report] = []
+        slots = len(scene.fixture_ids)
+        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * len(scene.joints), self.reports)
+        self.shapes: List[Optional[object]] = [None] * len(scene.shapes)
+        self.slot_starts = []
+        slot = 0
+        for body in scene.bodies:
+            self.slot_starts.append(slot)
+            slot += len(body.fixtures)
+
+    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
+        self.reports.append(Report(code, obj, index, name, message))
+
+    def beyond(self, check: Check, obj: str, index: int, name: Optional[str], owner: str = "") -> None:
+        self.report("beyond-box2d-range", obj, index, name, f"{owner}{check.problem}; {obj} not created")
+
+    def check_gravity(self) -> None:
+        g = self.scene.gravity
+        if g is not None:
+            check = Check(ENGINE)
+            check.vector("Gravity", g, MAX_ACCELERATION, "m/s^2")
+            if not check.passed:
+                self.report("beyond-box2d-range", "world", 0, None, f"{check.problem}; scene_gravity gives the host's fallback instead")
+
+    def check_filters(self) -> None:
+        """Box2D 2.3 holds 16 filter bits: reported only where that changes what collides."""
+        low = (1 << FILTER_BITS) - 1
+        used = [f for f in self.scene.fixtures]
+        categories = {f.category_bits for f in used}
+        masks_high = {f.mask_bits >> FILTER_BITS for f in used}
+        wide_category = any(c >> FILTER_BITS for c in categories)
+        if wide_category or len(masks_high) > 1:
+            for i, f in enumerate(used):
+                if f.category_bits & ~low or (len(masks_high) > 1 and f.mask_bits >> FILTER_BITS):
+                    self.report(
+                        "filter-bits-truncated",
+                        "fixture",
+                        i,
+                        f.name,
+                        f"its filter (category 0x{f.category_bits:x}, mask 0x{f.mask_bits:x}) uses bits above Box2D 2.3's 16, which change what collides; the low 16 bits were used",
+                    )
+
+    # ---- shapes
+
+    def make_shape(self, index: int) -> None:
+        shape = self.scene.shapes[index]
+        check = Check(ENGINE)
+        if shape.kind == "circle":
+            check.magnitude("Radius", shape.radius, MAX_LENGTH, "m")
+            check.vector("Position", shape.position, MAX_LENGTH, "m")
+        for i, v in enumerate(shape.vertices):
+            check.vector(f"Vertex {i}", v, MAX_LENGTH, "m")
+        for field_name, v in (("Centroid", shape.centroid), ("PrevVertex", shape.prev_vertex), ("NextVertex", shape.next_vertex)):
+            if v is not None:
+                check.vector(field_name, v, MAX_LENGTH, "m")
+        if not check.passed:
+            self.beyond(check, "shape", index, shape.name)
+            return
+        vertices = [tuple(v) for v in shape.vertices]
+        if shape.kind == "circle":
+            made = B.b2CircleShape(radius=shape.radius, pos=shape.position)
+        elif shape.kind == "polygon" and len(vertices) == 2:
+            made = B.b2EdgeShape(vertices=vertices)
+        elif shape.kind == "polygon":
+            made = B.b2PolygonShape(vertices=vertices)
+            if shape.centroid is not None:
+                made.centroid = shape.centroid
+        elif shape.kind == "edge":
+            made = B.b2EdgeShape(vertices=vertices)
+            if shape.prev_vertex is not None:
+                made.vertex0, made.hasVertex0 = shape.prev_vertex, True
+            if shape.next_vertex is not None:
+                made.vertex3, made.hasVertex3 = shape.next_vertex, True
+        elif shape.is_loop:
+            made = B.b2ChainShape(vertices_loop=vertices)
+        else:
+            made = B.b2ChainShape(vertices_chain=vertices)
+            if shape.prev_vertex is not None:
+                made.SetPrevVertex(shape.prev_vertex)
+            if shape.next_vertex is not None:
+                made.SetNextVertex(shape.next_vertex)
+        self.shapes[index] = made
+
+    # ---- bodies
+
+    @staticmethod
+    def fixture_check(f: Fixture) -> Check:
+        check = Check(ENGINE)
+        check.magnitude("Density", f.density, MAX_DENSITY, "kg/m^2")
+        check.magnitude("Friction", f.friction, MAX_FRICTION, "")
+        check.magnitude("Restitution", f.restitution, MAX_FRICTION, "")
+        return check
+
+    def body_check(self, body: Body) -> Check:
+        check = Check(ENGINE)
+        check.vector("Position", body.position, MAX_LENGTH, "m")
+        check.magnitude("Angle", body.angle, MAX_ANGLE, "rad")
+        if body.kind != "static":
+            check.vector("LinearVelocity", body.linear_velocity, MAX_SPEED, "m/s")
+            check.magnitude("AngularVelocity", body.angular_velocity, MAX_SPEED, "rad/s")
+        check.magnitude("LinearDamping", body.linear_damping, MAX_DAMPING, "1/s")
+        check.magnitude("AngularDamping", body.angular_damping, MAX_DAMPING, "1/s")
+        check.magnitude("GravityScale", body.gravity_scale, MAX_GRAVITY_SCALE, "")
+        if body.kind == "dynamic" and check.passed:
+            g = self.world.gravity
+            check.vector("GravityScale times the world's gravity", (body.gravity_scale * g[0], body.gravity_scale * g[1]), MAX_ACCELERATION, "m/s^2")
+        if body.center is not None:
+            check.vector("MassData Center", body.center, MAX_LENGTH, "m")
+        return check
+
+    def skip_fixtures_of(self, index: int, body: Body) -> None:
+        for f in body.fixtures:
+            self.report("skipped-dependent", "fixture", f, self.scene.fixtures[f].name, f"fixture {f} of body {index}: the body was not created; fixture skipped")
+
+    def make_fixture(self, body_index: int, slot: int, index: int, body: B.b2Body) -> None:
+        f = self.scene.fixtures[index]
+        shape = self.shapes[f.shape]
+        if shape is None:
+            self.report("skipped-dependent", "fixture", index, f.name, f"fixture {index} of body {body_index} names shape {f.shape}, which was not created; fixture skipped")
+            return
+        check = self.fixture_check(f)
+        if not check.passed:
+            self.beyond(check, "fixture", index, f.name, f"fixture {index} of body {body_index}: ")
+            return
+        low = (1 << FILTER_BITS) - 1
+        self.built.fixtures[slot] = body.CreateFixture(
+            B.b2FixtureDef(
+                shape=shape,
+                density=f.density,
+                friction=f.friction,
+                restitution=f.restitution,
+                isSensor=f.is_sensor,
+                categoryBits=f.category_bits & low,
+                maskBits=f.mask_bits & low,
+                groupIndex=f.group_index,
+            )
+        )
+
+    def mass_check(self, created: B.b2Body, body: Body) -> Tuple[Check, Optional[B.b2MassData]]:
+        """The mass data to set (None to keep 2.3's), checked: 2.3 asserts that the inertia
+        about the centre of mass stays positive."""
+        check = Check(ENGINE)
+        given = body.mass is not None or body.center is not None or body.inertia is not None
+        data = created.massData
+        if given:
+            if body.mass is not None:
+                data.mass = body.mass
+            if body.center is not None:
+                data.center = body.center
+            if body.inertia is not None:
+                data.I = body.inertia
+            mass = data.mass if data.mass > 0 else 1.0
+            central = data.I - mass * (data.center[0] ** 2 + data.center[1] ** 2)
+            if data.I > 0 and not body.fixed_rotation and not central > 0:
+                check.fail("its MassData leaves no positive inertia about the centre of mass (Inertia <= Mass * |Center|^2), which Box2D 2.3 asserts against")
+        mass = data.mass if data.mass > 0 else 1.0
+        central = data.I - mass * (data.center[0] ** 2 + data.center[1] ** 2)
+        check.zero_or_within("its mass", data.mass, MIN_MASS, MAX_MASS, "kg")
+        check.vector("its centre of mass", tuple(data.center), MAX_LENGTH, "m")
+        if not body.fixed_rotation and data.I > 0:
+            check.zero_or_within("its inertia about the centre of mass", central, MIN_INERTIA, MAX_INERTIA, "kg m^2")
+        return check, (data if given else None)
+
+    def make_body(self, index: int) -> None:
+        body = self.scene.bodies[index]
+        check = self.body_check(body)
+        if not check.passed:
+            self.beyond(check, "body", index, body.name)
+            self.skip_fixtures_of(index, body)
+            return
+        created = self.world.CreateBody(
+            B.b2BodyDef(
+                type=_KINDS[body.kind],
+                position=body.position,
+                angle=body.angle,
+                linearVelocity=body.linear_velocity,
+                angularVelocity=body.angular_velocity,
+                linearDamping=body.linear_damping,
+                angularDamping=body.angular_damping,
+                gravityScale=body.gravity_scale,
+                allowSleep=body.allow_sleep,
+                awake=body.awake,
+                bullet=body.bullet,
+                fixedRotation=body.fixed_rotation,
+                active=body.active,
+            )
+        )
+        kept = len(self.reports)
+        start = self.slot_starts[index]
+        for k, fixture in enumerate(body.fixtures):
+            self.make_fixture(index, start + k, fixture, created)
+        if body.kind == "dynamic":
+            check, data = self.mass_check(created, body)
+            if not check.passed:
+                self.world.DestroyBody(created)
+                del self.reports[kept:]
+                for k in range(len(body.fixtures)):
+                    self.built.fixtures[start + k] = None
+                self.beyond(check, "body", index, body.name)
+                self.skip_fixtures_of(index, body)
+                return
+            if data is not None:
+                created.massData = data
+        self.built.bodies[index] = created
+
+    # ---- joints
+
+    def anchor_check(self, check: Check, field_name: str, body: int, anchor, lever: float) -> None:
+        created = self.built.bodies[body]
+        if created.mass == 0:
+            return
+        center = created.localCenter
+        r = math.hypot(anchor[0] - center[0], anchor[1] - center[1])
+        mass = created.mass
+        inertia = created.inertia - mass * (center[0] ** 2 + center[1] ** 2)
+        compliance = 1.0 / mass + (r * r / inertia if inertia > 0 else 0.0)
+        if not compliance <= MAX_COMPLIANCE:
+            check.fail(f"{field_name}: the joint acts {r:.9g} m from the centre of mass of body {body}, where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D 2.3's working range (at most {MAX_COMPLIANCE:g} 1/kg)")
+        elif lever > 0 and inertia > 0 and not r <= lever * math.sqrt(inertia / mass):
+            check.fail(f"{field_name}: the joint acts {r / math.sqrt(inertia / mass):g} radii of gyration from the centre of mass of body {body}, beyond Box2D 2.3's working range for this joint (at most {lever:g})")
+
+    def joint_check(self, j: Joint) -> Check:
+        check = Check(ENGINE)
+        for name, v in (("LocalAnchorA", j.local_anchor_a), ("LocalAnchorB", j.local_anchor_b), ("LocalAxisA", j.local_axis_a), ("LinearOffset", j.linear_offset), ("GroundAnchorA", j.ground_anchor_a), ("GroundAnchorB", j.ground_anchor_b)):
+            check.vector(name, v, MAX_LENGTH, "m")
+        for name, v, bound, unit in (
+            ("ReferenceAngle", j.reference_angle, MAX_ANGLE, "rad"),
+            ("AngularOffset", j.angular_offset, MAX_ANGLE, "rad"),
+            ("MotorSpeed", j.motor_speed, MAX_SPEED, "per s"),
+            ("MaxMotorTorque", j.max_motor_torque, MAX_FORCE, "N m"),
+            ("MaxMotorForce", j.max_motor_force, MAX_FORCE, "N"),
+            ("MaxForce", j.max_force, MAX_FORCE, "N"),
+            ("MaxTorque", j.max_torque, MAX_FORCE, "N m"),
+            ("Length", j.length, MAX_LENGTH, "m"),
+            ("MaxLength", j.max_length, MAX_LENGTH, "m"),
+            ("LengthA", j.length_a, MAX_LENGTH, "m"),
+            ("LengthB", j.length_b, MAX_LENGTH, "m"),
+            ("FrequencyHz", j.frequency_hz, MAX_FREQUENCY, "Hz"),
+            ("DampingRatio", j.damping_ratio, MAX_FREQUENCY, ""),
+            ("Ratio", j.ratio, MAX_RATIO, ""),
+            ("CorrectionFactor", j.correction_factor, MAX_FREQUENCY, ""),
+        ):
+            check.magnitude(name, v, bound, unit)
+        if j.kind in ("prismatic", "line", "wheel") and check.passed and not math.hypot(*j.local_axis_a) >= MIN_AXIS:
+            check.fail(f"LocalAxisA is shorter than {MIN_AXIS:g} m: Box2D 2.3 cannot normalise it")
+        if j.kind in ("revolute", "friction", "motor"):
+            lever = LEVER_2X2
+        elif j.kind in ("prismatic", "weld"):
+            lever = LEVER_3X3
+        else:
+            lever = 0.0
+        if check.passed and j.kind != "gear":
+            self.anchor_check(check, "LocalAnchorA", j.body_a, j.local_anchor_a, lever)
+            self.anchor_check(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
+        return check
+
+    def limits(self, index: int, j: Joint, lower_name: str, upper_name: str) -> Tuple[float, float]:
+        if j.lower_limit > j.upper_limit:
+            self.report("bad-limit", "joint", index, j.name, f"{lower_name} {j.lower_limit:.9g} lies above {upper_name} {j.upper_limit:.9g}; they were passed swapped")
+            return j.upper_limit, j.lower_limit
+        return j.lower_limit, j.upper_limit
+
+    def make_joint(self, index: int) -> None:
+        j = self.scene.joints[index]
+        if j.kind == "unsupported":
+            self.report("skipped-joint", "joint", index, j.name, "Box2D 2.3 has no form for a Farseer-only joint; joint skipped")
+            return
+        a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
+        if a is None or b is None:
+            self.report("skipped-dependent", "joint", index, j.name, f"it names body {j.body_a if a is None else j.body_b}, which was not created; joint skipped")
+            return
+        if j.body_a == j.body_b:
+            self.report("joint-self-reference", "joint", index, j.name, "it connects a body to itself; joint skipped")
+            return
+        check = self.joint_check(j)
+        if not check.passed:
+            self.beyond(check, "joint", index, j.name)
+            return
+        common = dict(bodyA=a, bodyB=b, collideConnected=j.collide_connected)
+        anchors = dict(localAnchorA=j.local_anchor_a, localAnchorB=j.local_anchor_b)
+        w = self.world
+        record: dict = {}
+        kind = j.kind
+        if kind == "revolute":
+            lower, upper = self.limits(index, j, "LowerAngle", "UpperAngle")
+            d = B.b2RevoluteJointDef(referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerAngle=lower, upperAngle=upper, enableMotor=j.enable_motor, motorSpeed=j.motor_speed, maxMotorTorque=j.max_motor_torque, **common, **anchors)
+        elif kind == "prismatic":
+            lower, upper = self.limits(index, j, "LowerTranslation", "UpperTranslation")
+            d = B.b2PrismaticJointDef(localAxisA=j.local_axis_a, referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerTranslation=lower, upperTranslation=upper, enableMotor=j.enable_motor, maxMotorForce=j.max_motor_force, motorSpeed=j.motor_speed, **common, **anchors)
+        elif kind == "distance":
+            d = B.b2DistanceJointDef(length=j.length, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, **common, **anchors)
+        elif kind == "rope":
+            d = B.b2RopeJointDef(maxLength=j.max_length, **common, **anchors)
+        elif kind in ("line", "wheel"):
+            if kind == "line":
+                if j.enable_motor:
+                    self.report("lossy-line-motor", "joint", index, j.name, "Box2D 2.3 has no linear motor on a line (wheel) joint; the motor is off")
+                if j.enable_limit:
+                    self.report("lossy-joint", "joint", index, j.name, "Box2D 2.3's wheel joint has no translation limit; the line joint's limit is off")
+                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=0.0, dampingRatio=0.0, **common, **anchors)
+                record["line"] = True
+            else:
+                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor_torque, motorSpeed=j.motor_speed, **common, **anchors)
+        elif kind == "weld":
+            d = B.b2WeldJointDef(referenceAngle=j.reference_angle, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, **common, **anchors)
+        elif kind == "friction":
+            d = B.b2FrictionJointDef(maxForce=j.max_force, maxTorque=j.max_torque, **common, **anchors)
+        elif kind == "motor":
+            d = B.b2MotorJointDef(linearOffset=j.linear_offset, angularOffset=j.angular_offset, maxForce=j.max_force, maxTorque=j.max_torque, correctionFactor=j.correction_factor, **common)
+            record["correction_factor"] = j.correction_factor
+        elif kind == "pulley":
+            if j.max_length_a > 0 or j.max_length_b > 0:
+                self.report("lossy-joint", "joint", index, j.name, f"MaxLengthA {j.max_length_a:.9g} and MaxLengthB {j.max_length_b:.9g} are Box2D 2.1's, which 2.3 has not: the sides are not limited")
+            d = B.b2PulleyJointDef(groundAnchorA=j.ground_anchor_a, groundAnchorB=j.ground_anchor_b, lengthA=j.length_a, lengthB=j.length_b, ratio=j.ratio, **common, **anchors)
+            record["local_anchors"] = (j.local_anchor_a, j.local_anchor_b)
+        else:  # gear
+            joint_a, joint_b = self.built.joints[j.joint_a], self.built.joints[j.joint_b]
+            if joint_a is None or joint_b is None:
+                self.report("skipped-dependent", "joint", index, j.name, f"it couples joint {j.joint_a if joint_a is None else j.joint_b}, which was not created; joint skipped")
+                return
+            d = B.b2GearJointDef(joint1=joint_a, joint2=joint_b, ratio=j.ratio, **common)
+            record["coupled"] = (_key(joint_a), _key(joint_b))
+        created = w.CreateJoint(d)
+        if kind in ("rope", "friction"):
+            record["local_anchors"] = (j.local_anchor_a, j.local_anchor_b)
+        _joint_records[_key(created)] = record
+        self.built.joints[index] = created
+
+
+def build_world(scene: Scene, world: B.b2World) -> Built:
+    """Creates every object of ``scene`` that Box2D 2.3 can hold in ``world`` and reports
+    the rest (never asserting, never producing NaN)."""
+    b = _Build(scene, world)
+    b.check_gravity()
+    b.check_filters()
+    for i in range(len(scene.shapes)):
+        b.make_shape(i)
+    for i in range(len(scene.bodies)):
+        b.make_body(i)
+    # A gear is created after the joints it couples, wherever it stands in the scene.
+    joints = range(len(scene.joints))
+    for i in [i for i in joints if scene.joints[i].kind != "gear"] + [i for i in joints if scene.joints[i].kind == "gear"]:
+        b.make_joint(i)
+    return b.built
+
+
+# ---- capture
+
+
+def _vec(v) -> Tuple[float, float]:
+    return (float(v[0]), float(v[1]))
+
+
+class _Capture:
+    def __init__(self, world: B.b2World, bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]]):
+        self.world = world
+        self.bodies = list(bodies)
+        self.names = list(names) if names is not None else [None] * len(self.bodies)
+        if len(self.names) != len(self.bodies):
+            raise Error("invalid-argument", 0, 0, 0, f"{len(self.names)} names for {len(self.bodies)} bodies")
+        self.index_of: Dict[int, int] = {}
+        for i, body in enumerate(self.bodies):
+            key = int(body.this)
+            if key in self.index_of:
+                raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[key]} and {i} are the same body")
+            self.index_of[key] = i
+        self.builder = Builder()
+        self.reports: List[Report] = []
+        self.joint_indices: Dict[int, int] = {}
+
+    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
+        self.reports.append(Report(code, obj, index, name, message))
+
+    def capture_shape(self, s) -> Shape:
+        t = s.type
+        if t == B.b2Shape.e_circle:
+            return Shape.new("circle", radius=float(s.radius), position=_vec(s.pos))
+        if t == B.b2Shape.e_polygon:
+            return Shape.new("polygon", vertices=tuple(_vec(v) for v in s.vertices), centroid=_vec(s.centroid))
+        if t == B.b2Shape.e_edge:
+            return Shape.new(
+                "edge",
+                vertices=(_vec(s.vertex1), _vec(s.vertex2)),
+                prev_vertex=_vec(s.vertex0) if s.hasVertex0 else None,
+                next_vertex=_vec(s.vertex3) if s.hasVertex3 else None,
+            )
+        vertices = [_vec(v) for v in s.vertices]
+        loop = len(vertices) > 3 and vertices[0] == vertices[-1] and not s.m_hasPrevVertex and not s.m_hasNextVertex
+        if loop:
+            return Shape.new("chain", vertices=tuple(vertices[:-1]), is_loop=True)
+        return Shape.new(
+            "chain",
+            vertices=tuple(vertices),
+            prev_vertex=_vec(s.m_prevVertex) if s.m_hasPrevVertex else None,
+            next_vertex=_vec(s.m_nextVertex) if s.m_hasNextVertex else None,
+        )
+
+    def capture_body(self, index: int) -> None:
+        body = self.bodies[index]
+        fixtures = []
+        for f in reversed(list(body.fixtures)):  # 2.3 lists a body's fixtures newest first
+            shape = self.builder.add_shape(self.capture_shape(f.shape))
+            data = f.filterData
+            fixtures.append(
+                self.builder.add_fixture(
+                    Fixture.new(
+                        shape,
+                        density=float(f.density),
+                        friction=float(f.friction),
+                        restitution=float(f.restitution),
+                        is_sensor=bool(f.sensor),
+                        category_bits=int(data.categoryBits),
+                        mask_bits=int(data.maskBits),
+                        group_index=int(data.groupIndex),
+                    )
+                )
+            )
+        kind = {B.b2_staticBody: "static", B.b2_kinematicBody: "kinematic", B.b2_dynamicBody: "dynamic"}[body.type]
+        changes = dict(
+            position=_vec(body.position),
+            angle=float(body.angle),
+            linear_velocity=_vec(body.linearVelocity),
+            angular_velocity=float(body.angularVelocity),
+            linear_damping=float(body.linearDamping),
+            angular_damping=float(body.angularDamping),
+            gravity_scale=float(body.gravityScale),
+            allow_sleep=bool(body.sleepingAllowed),
+            awake=bool(body.awake),
+            bullet=bool(body.bullet),
+            fixed_rotation=bool(body.fixedRotation),
+            active=bool(body.active),
+            fixtures=tuple(fixtures),
+        )
+        if kind == "dynamic":
+            actual = body.massData
+            body.ResetMassData()
+            computed = body.massData
+            if (actual.mass, _vec(actual.center), actual.I) != (computed.mass, _vec(computed.center), computed.I):
+                changes.update(mass=float(actual.mass), center=_vec(actual.center), inertia=float(actual.I))
+            body.massData = actual
+        self.builder.add_body(Body.new(kind, name=self.names[index], **changes))
+
+    def capture_joints(self) -> None:
+        seen = set()
+        joints = []
+        for body in self.bodies:
+            for edge in body.joints:
+                joint = edge.joint
+                if _key(joint) not in seen:
+                    seen.add(_key(joint))
+                    joints.append(joint)
+        # The world's joint list is newest first: creation order is its reverse.
+        order = {_key(j): n for n, j in enumerate(reversed(list(self.world.joints)))}
+        joints.sort(key=lambda j: order[_key(j)])
+        for joint in joints:
+            self.capture_joint(joint)
+
+    def capture_joint(self, j) -> None:
+        index = len(self.joint_indices)
+        a = self.index_of.get(int(j.bodyA.this))
+        b = self.index_of.get(int(j.bodyB.this))
+        if a is None or b is None:
+            self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body the host did not name; not written")
+            return
+        record = _joint_records.get(_key(j), {})
+        t = j.type
+        changes: dict = dict(collide_connected=bool(j.collideConnected))
+
+        def local_anchors():
+            if hasattr(j, "GetLocalAnchorA"):
+                return dict(local_anchor_a=_vec(j.GetLocalAnchorA()), local_anchor_b=_vec(j.GetLocalAnchorB()))
+            if "local_anchors" in record:
+                la, lb = record["local_anchors"]
+                return dict(local_anchor_a=la, local_anchor_b=lb)
+            self.report("lossy-capture", "joint", index, None, "pybox2d cannot read this joint's local anchors: they were computed from its world anchors")
+            return dict(local_anchor_a=_vec(j.bodyA.GetLocalPoint(j.anchorA)), local_anchor_b=_vec(j.bodyB.GetLocalPoint(j.anchorB)))
+
+        if t == B.e_revoluteJoint:
+            kind = "revolute"
+            changes.update(local_anchors(), reference_angle=float(j.GetReferenceAngle()), enable_limit=bool(j.limitEnabled), lower_limit=float(j.lowerLimit), upper_limit=float(j.upperLimit), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_torque=float(j.maxMotorTorque))
+        elif t == B.e_prismaticJoint:
+            kind = "prismatic"
+            changes.update(local_anchors(), local_axis_a=_vec(j.GetLocalAxisA()), reference_angle=float(j.GetReferenceAngle()), enable_limit=bool(j.limitEnabled), lower_limit=float(j.lowerLimit), upper_limit=float(j.upperLimit), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_force=float(j.maxMotorForce))
+        elif t == B.e_distanceJoint:
+            kind = "distance"
+            changes.update(local_anchors(), length=float(j.length), frequency_hz=float(j.frequency), damping_ratio=float(j.dampingRatio))
+        elif t == B.e_ropeJoint:
+            kind = "rope"
+            changes.update(local_anchors(), max_length=float(j.maxLength))
+        elif t == B.e_wheelJoint:
+            changes.update(local_anchors(), local_axis_a=_vec(j.GetLocalAxisA()))
+            if record.get("line"):
+                kind = "line"
+            else:
+                kind = "wheel"
+                changes.update(frequency_hz=float(j.springFrequencyHz), damping_ratio=float(j.springDampingRatio), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_torque=float(j.maxMotorTorque))
+        elif t == B.e_weldJoint:
+            kind = "weld"
+            changes.update(local_anchors(), reference_angle=float(j.GetReferenceAngle()), frequency_hz=float(j.GetFrequency()), damping_ratio=float(j.GetDampingRatio()))
+        elif t == B.e_frictionJoint:
+            kind = "friction"
+            changes.update(local_anchors(), max_force=float(j.maxForce), max_torque=float(j.maxTorque))
+        elif t == B.e_motorJoint:
+            kind = "motor"
+            if "correction_factor" not in record:
+                self.report("lossy-capture", "joint", index, None, "pybox2d cannot read a motor joint's correction factor: written as the default, 0.3")
+            changes.update(linear_offset=_vec(j.linearOffset), angular_offset=float(j.angularOffset), max_force=float(j.maxForce), max_torque=float(j.maxTorque), correction_factor=record.get("correction_factor", 0.3))
+        elif t == B.e_pulleyJoint:
+            kind = "pulley"
+            changes.update(local_anchors(), ground_anchor_a=_vec(j.groundAnchorA), ground_anchor_b=_vec(j.groundAnchorB), length_a=float(j.lengthA), length_b=float(j.lengthB), ratio=float(j.ratio))
+        elif t == B.e_gearJoint:
+            kind = "gear"
+            targets = [self.joint_indices.get(k) for k in record.get("coupled", ())]
+            if len(targets) != 2 or None in targets:
+                self.report("lossy-capture", "joint", index, None, "pybox2d cannot tell which joints a gear box2scene did not build couples, or they were not written; not written")
+                return
+            changes.update(joint_a=targets[0], joint_b=targets[1], ratio=float(j.ratio))
+        else:
+            self.report("lossy-capture", "joint", index, None, "a mouse joint has no Box2Scene form; not written")
+            return
+        self.builder.add_joint(Joint.new(kind, a, b, **changes))
+        self.joint_indices[_key(j)] = index
+
+
+def capture_world(world: B.b2World, bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]] = None) -> Tuple[Scene, List[Report]]:
+    """A scene of ``bodies`` (with their fixtures) and of every joint between two of them, in
+    creation order, with the world's gravity; and the reports of what has no Box2Scene
+    form. Box2D 2.3's bodies have no names: ``names`` gives body ``i`` its own. Written and loaded, it
+    builds a world that moves like this one. Raises :class:`box2scene.Error` when a body
+    is named twice."""
+    c = _Capture(world, bodies, names)
+    c.builder.set_gravity(_vec(world.gravity))
+    for i in range(len(c.bodies)):
+        c.capture_body(i)
+    c.capture_joints()
+    return c.builder.finish(), c.reports
