@@ -997,12 +997,11 @@ class _Capture:
         shape_index = self.builder.add_shape(shape)
         self.shape_count += 1
         category, mask, group = self.filter_of(source.filter)
-        material = source.material
         fixture = Fixture.new(
             shape_index,
             density=density,
-            friction=float(material.friction),
-            restitution=float(material.restitution),
+            friction=float(source.friction),
+            restitution=float(source.restitution),
             is_sensor=is_sensor,
             category_bits=category,
             mask_bits=mask,

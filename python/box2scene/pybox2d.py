@@ -28,6 +28,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import Box2D as B
 
 from ._error import Error
+from ._f32 import F, f32, search_ulps
 from ._records import Body, Fixture, Joint, Shape
 from ._report import Check, Report
 from ._scene import Builder, Scene
@@ -296,6 +297,9 @@ class _Build:
                 return
             if data is not None:
                 created.massData = data
+            # Box2D shifts the centre's velocity each time a fixture moves the centre of
+            # mass; the file's velocity is its origin's, given once the mass is final.
+            created.linearVelocity = _center_velocity(created, body.linear_velocity, body.angular_velocity)
         self.built.bodies[index] = created
 
     # ---- joints
@@ -402,12 +406,10 @@ class _Build:
             d = B.b2FrictionJointDef(maxForce=j.max_force, maxTorque=j.max_torque, **common, **anchors)
         elif kind == "motor":
             d = B.b2MotorJointDef(linearOffset=j.linear_offset, angularOffset=j.angular_offset, maxForce=j.max_force, maxTorque=j.max_torque, correctionFactor=j.correction_factor, **common)
-            record["correction_factor"] = j.correction_factor
         elif kind == "pulley":
             if j.max_length_a > 0 or j.max_length_b > 0:
                 self.report("lossy-joint", "joint", index, j.name, f"MaxLengthA {j.max_length_a:.9g} and MaxLengthB {j.max_length_b:.9g} are Box2D 2.1's, which 2.3 has not: the sides are not limited")
             d = B.b2PulleyJointDef(groundAnchorA=j.ground_anchor_a, groundAnchorB=j.ground_anchor_b, lengthA=j.length_a, lengthB=j.length_b, ratio=j.ratio, **common, **anchors)
-            record["local_anchors"] = (j.local_anchor_a, j.local_anchor_b)
         else:  # gear
             joint_a, joint_b = self.built.joints[j.joint_a], self.built.joints[j.joint_b]
             if joint_a is None or joint_b is None:
@@ -416,8 +418,7 @@ class _Build:
             d = B.b2GearJointDef(joint1=joint_a, joint2=joint_b, ratio=j.ratio, **common)
             record["coupled"] = (_key(joint_a), _key(joint_b))
         created = w.CreateJoint(d)
-        if kind in ("rope", "friction"):
-            record["local_anchors"] = (j.local_anchor_a, j.local_anchor_b)
+        record["joint"] = j
         _joint_records[_key(created)] = record
         self.built.joints[index] = created
 
@@ -439,7 +440,140 @@ def build_world(scene: Scene, world: B.b2World) -> Built:
     return b.built
 
 
+def _shift(body: B.b2Body, w: float):
+    """w x (centre of mass - origin), as Box2D computes it in floats."""
+    xf = body.transform
+    c, s = F(xf.q.c), F(xf.q.s)
+    lx, ly = F(body.localCenter[0]), F(body.localCenter[1])
+    px, py = F(xf.position[0]), F(xf.position[1])
+    cx = (c * lx - s * ly) + px
+    cy = (s * lx + c * ly) + py
+    return (-F(w) * (cy - py), F(w) * (cx - px))
+
+
+def _center_velocity(body: B.b2Body, origin_velocity, w: float):
+    shift = _shift(body, w)
+    return (float(F(origin_velocity[0]) + shift[0]), float(F(origin_velocity[1]) + shift[1]))
+
+
+def _origin_velocity(body: B.b2Body, velocity, w: float):
+    """The origin velocity whose centre velocity, as the build gives it, is ``velocity``."""
+    shift = _shift(body, w)
+    out = []
+    for target, delta in zip(velocity, shift):
+        _, before = search_ulps(f32(target - float(delta)), lambda x, t=target, d=delta: float(F(x) + d) == t)
+        out.append(before)
+    return tuple(out)
+
+
+def _computed_mass(body: B.b2Body):
+    """The mass data Box2D 2.3's ResetMassData gives ``body`` from its fixtures, as
+    GetMassData reports it (inertia about the origin), operation for operation."""
+    mass, cx, cy, inertia = F(0), F(0), F(0), F(0)
+    for f in body.fixtures:
+        if f.density == 0:
+            continue
+        m = f.massData
+        mass += F(m.mass)
+        cx = cx + F(m.mass) * F(m.center[0])
+        cy = cy + F(m.mass) * F(m.center[1])
+        inertia += F(m.I)
+    if mass > 0:
+        inverse = F(1) / mass
+        cx, cy = inverse * cx, inverse * cy
+    else:
+        mass = F(1)
+    dot = cx * cx + cy * cy
+    if inertia > 0 and not body.fixedRotation:
+        inertia -= mass * dot
+    else:
+        inertia = F(0)
+    return float(mass), (float(cx), float(cy)), float(inertia + mass * dot)
+
+
 # ---- capture
+
+_JOINT_CLASSES = [
+    ("revolute", B.b2RevoluteJoint),
+    ("prismatic", B.b2PrismaticJoint),
+    ("distance", B.b2DistanceJoint),
+    ("rope", B.b2RopeJoint),
+    ("wheel", B.b2WheelJoint),
+    ("weld", B.b2WeldJoint),
+    ("friction", B.b2FrictionJoint),
+    ("motor", B.b2MotorJoint),
+    ("pulley", B.b2PulleyJoint),
+    ("gear", B.b2GearJoint),
+]
+_JOINT_FIELDS = [f for f in Joint.__dataclass_fields__ if f not in ("kind", "name", "body_a", "body_b", "joint_a", "joint_b", "user_data")]
+
+
+def _anchors():
+    return [("local_anchor_a", lambda j: j.GetLocalAnchorA()), ("local_anchor_b", lambda j: j.GetLocalAnchorB())]
+
+
+# What can change in a live joint, read back where pybox2d has a getter; the rest is what
+# the builder gave the joint (and its defaults for a joint it did not build).
+_LIVE = {
+    "revolute": _anchors() + [
+        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
+        ("enable_limit", lambda j: bool(j.limitEnabled)),
+        ("lower_limit", lambda j: float(j.lowerLimit)),
+        ("upper_limit", lambda j: float(j.upperLimit)),
+        ("enable_motor", lambda j: bool(j.motorEnabled)),
+        ("motor_speed", lambda j: float(j.motorSpeed)),
+        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
+    ],
+    "prismatic": _anchors() + [
+        ("local_axis_a", lambda j: j.GetLocalAxisA()),
+        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
+        ("enable_limit", lambda j: bool(j.limitEnabled)),
+        ("lower_limit", lambda j: float(j.lowerLimit)),
+        ("upper_limit", lambda j: float(j.upperLimit)),
+        ("enable_motor", lambda j: bool(j.motorEnabled)),
+        ("motor_speed", lambda j: float(j.motorSpeed)),
+        ("max_motor_force", lambda j: float(j.GetMaxMotorForce())),
+    ],
+    "distance": _anchors() + [
+        ("length", lambda j: float(j.length)),
+        ("frequency_hz", lambda j: float(j.frequency)),
+        ("damping_ratio", lambda j: float(j.dampingRatio)),
+    ],
+    "rope": _anchors() + [("max_length", lambda j: float(j.maxLength))],
+    "wheel": _anchors() + [
+        ("local_axis_a", lambda j: j.GetLocalAxisA()),
+        ("frequency_hz", lambda j: float(j.springFrequencyHz)),
+        ("damping_ratio", lambda j: float(j.springDampingRatio)),
+        ("enable_motor", lambda j: bool(j.motorEnabled)),
+        ("motor_speed", lambda j: float(j.motorSpeed)),
+        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
+    ],
+    "line": _anchors() + [("local_axis_a", lambda j: j.GetLocalAxisA())],
+    "weld": _anchors() + [
+        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
+        ("frequency_hz", lambda j: float(j.GetFrequency())),
+        ("damping_ratio", lambda j: float(j.GetDampingRatio())),
+    ],
+    "friction": _anchors() + [
+        ("max_force", lambda j: float(j.GetMaxForce())),
+        ("max_torque", lambda j: float(j.GetMaxTorque())),
+    ],
+    "motor": [
+        ("linear_offset", lambda j: j.GetLinearOffset()),
+        ("angular_offset", lambda j: float(j.GetAngularOffset())),
+        ("max_force", lambda j: float(j.GetMaxForce())),
+        ("max_torque", lambda j: float(j.GetMaxTorque())),
+        ("correction_factor", lambda j: float(j.GetCorrectionFactor())),
+    ],
+    "pulley": _anchors() + [
+        ("ground_anchor_a", lambda j: j.groundAnchorA),
+        ("ground_anchor_b", lambda j: j.groundAnchorB),
+        ("length_a", lambda j: float(j.lengthA)),
+        ("length_b", lambda j: float(j.lengthB)),
+        ("ratio", lambda j: float(j.ratio)),
+    ],
+    "gear": [("ratio", lambda j: float(j.ratio))],
+}
 
 
 def _vec(v) -> Tuple[float, float]:
@@ -527,12 +661,10 @@ class _Capture:
             fixtures=tuple(fixtures),
         )
         if kind == "dynamic":
+            changes["linear_velocity"] = _origin_velocity(body, changes["linear_velocity"], changes["angular_velocity"])
             actual = body.massData
-            body.ResetMassData()
-            computed = body.massData
-            if (actual.mass, _vec(actual.center), actual.I) != (computed.mass, _vec(computed.center), computed.I):
+            if (float(actual.mass), _vec(actual.center), float(actual.I)) != _computed_mass(body):
                 changes.update(mass=float(actual.mass), center=_vec(actual.center), inertia=float(actual.I))
-            body.massData = actual
         self.builder.add_body(Body.new(kind, name=self.names[index], **changes))
 
     def capture_joints(self) -> None:
@@ -544,8 +676,8 @@ class _Capture:
                 if _key(joint) not in seen:
                     seen.add(_key(joint))
                     joints.append(joint)
-        # The world's joint list is newest first: creation order is its reverse.
-        order = {_key(j): n for n, j in enumerate(reversed(list(self.world.joints)))}
+        # pybox2d lists the world's joints in the order they were created.
+        order = {_key(j): n for n, j in enumerate(self.world.joints)}
         joints.sort(key=lambda j: order[_key(j)])
         for joint in joints:
             self.capture_joint(joint)
@@ -557,62 +689,34 @@ class _Capture:
         if a is None or b is None:
             self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body the host did not name; not written")
             return
-        record = _joint_records.get(_key(j), {})
-        t = j.type
-        changes: dict = dict(collide_connected=bool(j.collideConnected))
-
-        def local_anchors():
-            if hasattr(j, "GetLocalAnchorA"):
-                return dict(local_anchor_a=_vec(j.GetLocalAnchorA()), local_anchor_b=_vec(j.GetLocalAnchorB()))
-            if "local_anchors" in record:
-                la, lb = record["local_anchors"]
-                return dict(local_anchor_a=la, local_anchor_b=lb)
-            self.report("lossy-capture", "joint", index, None, "pybox2d cannot read this joint's local anchors: they were computed from its world anchors")
-            return dict(local_anchor_a=_vec(j.bodyA.GetLocalPoint(j.anchorA)), local_anchor_b=_vec(j.bodyB.GetLocalPoint(j.anchorB)))
-
-        if t == B.e_revoluteJoint:
-            kind = "revolute"
-            changes.update(local_anchors(), reference_angle=float(j.GetReferenceAngle()), enable_limit=bool(j.limitEnabled), lower_limit=float(j.lowerLimit), upper_limit=float(j.upperLimit), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_torque=float(j.maxMotorTorque))
-        elif t == B.e_prismaticJoint:
-            kind = "prismatic"
-            changes.update(local_anchors(), local_axis_a=_vec(j.GetLocalAxisA()), reference_angle=float(j.GetReferenceAngle()), enable_limit=bool(j.limitEnabled), lower_limit=float(j.lowerLimit), upper_limit=float(j.upperLimit), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_force=float(j.maxMotorForce))
-        elif t == B.e_distanceJoint:
-            kind = "distance"
-            changes.update(local_anchors(), length=float(j.length), frequency_hz=float(j.frequency), damping_ratio=float(j.dampingRatio))
-        elif t == B.e_ropeJoint:
-            kind = "rope"
-            changes.update(local_anchors(), max_length=float(j.maxLength))
-        elif t == B.e_wheelJoint:
-            changes.update(local_anchors(), local_axis_a=_vec(j.GetLocalAxisA()))
-            if record.get("line"):
-                kind = "line"
-            else:
-                kind = "wheel"
-                changes.update(frequency_hz=float(j.springFrequencyHz), damping_ratio=float(j.springDampingRatio), enable_motor=bool(j.motorEnabled), motor_speed=float(j.motorSpeed), max_motor_torque=float(j.maxMotorTorque))
-        elif t == B.e_weldJoint:
-            kind = "weld"
-            changes.update(local_anchors(), reference_angle=float(j.GetReferenceAngle()), frequency_hz=float(j.GetFrequency()), damping_ratio=float(j.GetDampingRatio()))
-        elif t == B.e_frictionJoint:
-            kind = "friction"
-            changes.update(local_anchors(), max_force=float(j.maxForce), max_torque=float(j.maxTorque))
-        elif t == B.e_motorJoint:
-            kind = "motor"
-            if "correction_factor" not in record:
-                self.report("lossy-capture", "joint", index, None, "pybox2d cannot read a motor joint's correction factor: written as the default, 0.3")
-            changes.update(linear_offset=_vec(j.linearOffset), angular_offset=float(j.angularOffset), max_force=float(j.maxForce), max_torque=float(j.maxTorque), correction_factor=record.get("correction_factor", 0.3))
-        elif t == B.e_pulleyJoint:
-            kind = "pulley"
-            changes.update(local_anchors(), ground_anchor_a=_vec(j.groundAnchorA), ground_anchor_b=_vec(j.groundAnchorB), length_a=float(j.lengthA), length_b=float(j.lengthB), ratio=float(j.ratio))
-        elif t == B.e_gearJoint:
-            kind = "gear"
-            targets = [self.joint_indices.get(k) for k in record.get("coupled", ())]
-            if len(targets) != 2 or None in targets:
-                self.report("lossy-capture", "joint", index, None, "pybox2d cannot tell which joints a gear box2scene did not build couples, or they were not written; not written")
-                return
-            changes.update(joint_a=targets[0], joint_b=targets[1], ratio=float(j.ratio))
-        else:
+        kind = next((k for k, cls in _JOINT_CLASSES if isinstance(j, cls)), None)
+        if kind is None:
             self.report("lossy-capture", "joint", index, None, "a mouse joint has no Box2Scene form; not written")
             return
+        record = _joint_records.get(_key(j), {})
+        built = record.get("joint")
+        if built is not None:
+            kind = built.kind
+            changes = {f: getattr(built, f) for f in _JOINT_FIELDS}
+        else:
+            changes = {f: getattr(Joint.new(kind, 0, 1), f) for f in _JOINT_FIELDS}
+        unread = []
+        for field_name, read in _LIVE[kind]:
+            try:
+                value = read(j)
+            except AttributeError:
+                unread.append(field_name)
+                continue
+            changes[field_name] = tuple(map(float, value)) if isinstance(value, B.b2Vec2) else value
+        if built is None and unread:
+            self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
+        if kind == "gear":
+            targets = [self.joint_indices.get(k) for k in record.get("coupled", ())]
+            if len(targets) != 2 or None in targets:
+                self.report("lossy-capture", "joint", index, None, "the joints this gear couples were not written (or box2scene did not build it); not written")
+                return
+            changes.update(joint_a=targets[0], joint_b=targets[1])
+        changes["collide_connected"] = bool(j.collideConnected)
         self.builder.add_joint(Joint.new(kind, a, b, **changes))
         self.joint_indices[_key(j)] = index
 
