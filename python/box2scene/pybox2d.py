@@ -299,7 +299,9 @@ class _Build:
                 created.massData = data
             # Box2D shifts the centre's velocity each time a fixture moves the centre of
             # mass; the file's velocity is its origin's, given once the mass is final.
-            created.linearVelocity = _center_velocity(created, body.linear_velocity, body.angular_velocity)
+            velocity = _center_velocity(created, body.linear_velocity, body.angular_velocity)
+            if velocity != _vec(created.linearVelocity) and body.awake:
+                created.linearVelocity = velocity
         self.built.bodies[index] = created
 
     # ---- joints
