@@ -59,6 +59,10 @@ MAX_COMPLIANCE = 1e12
 MAX_LEVER_REVOLUTE = 1e3
 MAX_LEVER = 5.0
 MAX_JOINT_ACCELERATION = 1e5
+# Radii of gyration (of the smaller of two dynamic bodies) by which a line or wheel joint may
+# start off its axis: measured with pyb2d3, such a pair of bodies of any size blows up
+# within a step from 4.5 on (docs/python.md, "The working range").
+MAX_AXIS_VIOLATION = 4.0
 WORLD_MAX_LINEAR_SPEED = 1.5e3
 
 ENGINE = "Box2D v3"
@@ -688,6 +692,25 @@ class _Build:
                 f"its motor or friction force {force:.9g} N accelerates body {body} (mass {mass:.9g} kg) by {acceleration:g} m/s^2, beyond Box2D v3's working range (at most {MAX_JOINT_ACCELERATION:g} m/s^2)"
             )
 
+    def check_axis_violation(self, check: Check, j: Joint) -> None:
+        """A line or wheel joint between two dynamic bodies that starts with body B's anchor
+        off body A's axis: v3 blows such a pair apart."""
+        a, b = self.scene.bodies[j.body_a], self.scene.bodies[j.body_b]
+        if a.kind != "dynamic" or b.kind != "dynamic":
+            return
+        radii = [math.sqrt(float(m[2]) / float(m[0])) for m in (self.masses[j.body_a], self.masses[j.body_b]) if m[2] > 0]
+        if not radii:
+            return
+        anchor_a = _transform_point(a.position, cosf(a.angle), sinf(a.angle), j.local_anchor_a)
+        anchor_b = _transform_point(b.position, cosf(b.angle), sinf(b.angle), j.local_anchor_b)
+        axis = _rotate(cosf(a.angle), sinf(a.angle), _normalize(j.local_axis_a))
+        off = abs(axis[0] * (anchor_b[1] - anchor_a[1]) - axis[1] * (anchor_b[0] - anchor_a[0]))
+        bound = MAX_AXIS_VIOLATION * min(radii)
+        if not off <= bound:
+            check.fail(
+                f"it starts violated: LocalAnchorB lies {off:.9g} m off the axis through LocalAnchorA, more than {MAX_AXIS_VIOLATION:g} radii of gyration ({bound:.9g} m) of the smaller body, beyond Box2D v3's working range for a {j.kind} joint between two dynamic bodies"
+            )
+
     @staticmethod
     def drive_force(j: Joint) -> float:
         if j.kind == "prismatic":
@@ -737,6 +760,8 @@ class _Build:
             lever = MAX_LEVER_REVOLUTE if j.kind == "revolute" else MAX_LEVER
             self.check_anchor(check, "LocalAnchorA", j.body_a, j.local_anchor_a, lever)
             self.check_anchor(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
+        if check.passed and j.kind in ("line", "wheel"):
+            self.check_axis_violation(check, j)
         if check.passed:
             self.check_drive(check, j.body_a, self.drive_force(j))
             self.check_drive(check, j.body_b, self.drive_force(j))

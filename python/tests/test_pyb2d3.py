@@ -211,6 +211,24 @@ def test_line_and_wheel():
     assert finite(*state(built.bodies[1])) and abs(built.bodies[1].position.x) < 1e-3
 
 
+@pytest.mark.parametrize("kind", ["line", "wheel"])
+def test_a_line_or_wheel_joint_that_starts_far_off_its_axis_is_left_out(kind):
+    """Measured: two dynamic bodies blow apart from 4.5 radii of gyration off the axis."""
+    for off, built_ok in ((1.2, True), (2.0, False)):
+        m = SceneMaker()
+        tri = m.fixture(m.shape("polygon", vertices=((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))), density=1.0)
+        a = m.body(position=(0.0, 5.0), fixtures=(tri,))
+        b = m.body(position=(0.0, 5.0 - off), fixtures=(tri,))
+        m.joint(kind, a, b)
+        world, built = build(m.finish())
+        assert (built.joints[0] is not None) == built_ok
+        if not built_ok:
+            assert codes(built.reports) == [("beyond-box2d-range", "joint", 0)]
+            assert "starts violated" in built.reports[0].message
+        step(world)
+        assert all(abs(body.position.y) < 1e4 and finite(*state(body)) for body in built.bodies)
+
+
 def test_weld_holds_the_angle():
     world, built = build(pair("dynamic", kind="weld", local_anchor_a=(0.0, -1.0), local_anchor_b=(0.0, 1.0), frequency_hz=5.0, damping_ratio=0.7))
     assert built.joints[0].angular_hertz == 5.0 and built.joints[0].linear_hertz == 0.0
