@@ -58,6 +58,8 @@ MAX_COMPLIANCE = 1e12
 LEVER_2X2 = 1e3
 LEVER_3X3 = 30.0
 FILTER_BITS = 16
+# Hz: the spring that stands in for none on a Box2D 2.3 wheel joint (see wheel_hertz).
+SPRINGLESS_WHEEL_HZ = 1e-3
 
 _KINDS = {"static": B.b2_staticBody, "kinematic": B.b2_kinematicBody, "dynamic": B.b2_dynamicBody}
 
@@ -355,6 +357,22 @@ class _Build:
             self.anchor_check(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
         return check
 
+    def wheel_hertz(self, index: int, j: Joint, hertz: float) -> float:
+        """Box2D 2.3's wheel joint without a spring (0 Hz) reads its lever arms before it
+        ever computes them (b2WheelJoint::InitVelocityConstraints computes m_sAx, m_sBx only
+        for a spring, and warm starting multiplies them by 0): whatever the memory held,
+        NaN included, goes into the bodies. A spring too soft to matter stands in for none."""
+        if hertz > 0.0:
+            return hertz
+        self.report(
+            "lossy-joint",
+            "joint",
+            index,
+            j.name,
+            f"Box2D 2.3's wheel joint without a spring reads uninitialised memory; a spring of {SPRINGLESS_WHEEL_HZ:g} Hz, undamped, stands in for none (about 1e-6 N s per metre and kg a step)",
+        )
+        return SPRINGLESS_WHEEL_HZ
+
     def limits(self, index: int, j: Joint, lower_name: str, upper_name: str) -> Tuple[float, float]:
         if j.lower_limit > j.upper_limit:
             self.report("bad-limit", "joint", index, j.name, f"{lower_name} {j.lower_limit:.9g} lies above {upper_name} {j.upper_limit:.9g}; they were passed swapped")
@@ -398,10 +416,10 @@ class _Build:
                     self.report("lossy-line-motor", "joint", index, j.name, "Box2D 2.3 has no linear motor on a line (wheel) joint; the motor is off")
                 if j.enable_limit:
                     self.report("lossy-joint", "joint", index, j.name, "Box2D 2.3's wheel joint has no translation limit; the line joint's limit is off")
-                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=0.0, dampingRatio=0.0, **common, **anchors)
+                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, 0.0), dampingRatio=0.0, **common, **anchors)
                 record["line"] = True
             else:
-                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor_torque, motorSpeed=j.motor_speed, **common, **anchors)
+                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, j.frequency_hz), dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor_torque, motorSpeed=j.motor_speed, **common, **anchors)
         elif kind == "weld":
             d = B.b2WeldJointDef(referenceAngle=j.reference_angle, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, **common, **anchors)
         elif kind == "friction":
@@ -417,6 +435,10 @@ class _Build:
             if joint_a is None or joint_b is None:
                 self.report("skipped-dependent", "joint", index, j.name, f"it couples joint {j.joint_a if joint_a is None else j.joint_b}, which was not created; joint skipped")
                 return
+            for target, coupled in ((j.joint_a, joint_a), (j.joint_b, joint_b)):
+                if coupled.bodyB.type != B.b2_dynamicBody or not (coupled.bodyA.active and coupled.bodyB.active):
+                    self.report("bad-gear-joint", "joint", index, j.name, f"the gear couples joint {target}, whose body B is not dynamic or whose bodies are not all active, which Box2D 2.3's gear cannot solve; gear skipped")
+                    return
             d = B.b2GearJointDef(joint1=joint_a, joint2=joint_b, ratio=j.ratio, **common)
             record["coupled"] = (_key(joint_a), _key(joint_b))
         created = w.CreateJoint(d)
@@ -710,6 +732,8 @@ class _Capture:
                 unread.append(field_name)
                 continue
             changes[field_name] = tuple(map(float, value)) if isinstance(value, B.b2Vec2) else value
+        if built is not None and kind in ("line", "wheel") and built.frequency_hz == 0.0:
+            changes["frequency_hz"] = 0.0  # the stand-in spring of wheel_hertz
         if built is None and unread:
             self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
         if kind == "gear":

@@ -114,8 +114,9 @@ def test_a_rod_keeps_its_length_and_a_rope_its_maximum():
 
 def test_line_motor_and_limit_are_reported():
     world, built = build(pair(kind="line", local_axis_a=(0.0, 1.0), enable_motor=True, enable_limit=True, upper_limit=1.0))
-    assert codes(built.reports) == [("lossy-line-motor", "joint", 0), ("lossy-joint", "joint", 0)]
-    assert built.joints[0].springFrequencyHz == 0.0
+    assert codes(built.reports) == [("lossy-line-motor", "joint", 0), ("lossy-joint", "joint", 0), ("lossy-joint", "joint", 0)]
+    assert "uninitialised" in built.reports[2].message
+    assert built.joints[0].springFrequencyHz == f32(b2s2.SPRINGLESS_WHEEL_HZ)
     step(world, 60)
     assert abs(built.bodies[1].position[0]) < 1e-4 and built.bodies[1].position[1] < 3.0
 
