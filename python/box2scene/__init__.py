@@ -16,7 +16,7 @@ Everything wrong with a file raises :class:`Error` with its code, line and colum
 engines from a scene and capture worlds back into scenes:
 
 - :mod:`box2scene.pyb2d3`: pyb2d3 (Box2D v3.1.1), as the library's C v3 adapter does;
-- :mod:`box2scene.pybox2d`: pybox2d (the ``box2d`` package, Box2D 2.3.10).
+- :mod:`box2scene.pybox2d`: pybox2d (the ``box2d`` package 2.3.10, Box2D 2.3).
 
 Neither engine is needed to load or write scenes.
 """

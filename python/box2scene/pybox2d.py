@@ -1,4 +1,4 @@
-"""Build a scene into a pybox2d world (the ``box2d`` package: Box2D 2.3.10), and capture
+"""Build a scene into a pybox2d world (the ``box2d`` package 2.3.10: Box2D 2.3), and capture
 one back into a scene.
 
     import Box2D, box2scene, box2scene.pybox2d as b2s2
