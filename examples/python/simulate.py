@@ -153,11 +153,13 @@ def main(argv=None) -> int:
     end = {i: transform(b) for i, b in live}
 
     print(f"{args.steps} steps of {TIME_STEP:.4f} s")
-    names = [b.name or "-" for b in scene.bodies]
-    width = max([4] + [len(n) for n in names])
+    names = ["-" if b.name is None else b.name for b in scene.bodies]
+    # Padded to a width in bytes of UTF-8, as simulate_v3's printf pads them.
+    width = max([4] + [len(n.encode()) for n in names])
+    padded = [n + " " * (width - len(n.encode())) for n in names]
     print(f"{'index':>5}  {'name':<{width}}  {'type':<9}  {'start (m)':<18}  {'end (m)':<18}  turned (rad)")
     for i, body in enumerate(scene.bodies):
-        row = f"{i:5d}  {names[i]:<{width}}  {body.kind:<9}  "
+        row = f"{i:5d}  {padded[i]}  {body.kind:<9}  "
         if i not in start:
             print(row + "not created")
             continue

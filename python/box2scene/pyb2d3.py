@@ -12,7 +12,7 @@ reference, "Mapping onto Box2D v3.1"), with the same reports and the same workin
     saved, reports = b2s3.capture_world(world, [b for b in built.bodies if b], built.joints)
 
 pyb2d3 cannot read everything it was given: a world's maximum linear speed, a joint's
-``collide_connected``, reference angle and axis, a chain's ghost points. The builder
+``collide_connected``, reference angle and axis (and its name), a chain's ghost points. The builder
 records what it gives each joint and chain (by id) so that a capture of a world it built
 is exact; for joints and chains a host made itself, the capture writes those fields at
 their defaults and reports ``lossy-capture``. pyb2d3 cannot list a body's joints either,
@@ -818,7 +818,7 @@ class _Build:
         if not check.passed:
             self.beyond(check, "joint", index, j.name)
             return
-        record = {"collide_connected": j.collide_connected}
+        record = {"collide_connected": j.collide_connected, "name": j.name}
         w = self.world
         if j.kind == "revolute":
             d = self.common(b2.RevoluteJointDef(), j, a, b)
@@ -1178,6 +1178,7 @@ class _Capture:
             return
         kind, changes = fields
         changes["collide_connected"] = record.get("collide_connected", False)
+        changes["name"] = record.get("name")
         self.builder.add_joint(Joint.new(kind, a, b, **changes))
         self.joint_count += 1
 

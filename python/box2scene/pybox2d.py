@@ -743,6 +743,7 @@ class _Capture:
                 return
             changes.update(joint_a=targets[0], joint_b=targets[1])
         changes["collide_connected"] = bool(j.collideConnected)
+        changes["name"] = built.name if built is not None else None
         self.builder.add_joint(Joint.new(kind, a, b, **changes))
         self.joint_indices[_key(j)] = index
 

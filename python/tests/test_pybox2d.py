@@ -152,6 +152,8 @@ def test_a_captured_world_writes_and_loads_to_the_same_world(showcase):
     again = box2scene.load(captured.to_xml().encode(), strict=True)
     # In the order they were created: a gear after the joints it couples.
     assert sorted(j.kind for j in again.joints) == sorted(j.kind for j in scene.joints)
+    assert sorted(j.name for j in again.joints) == sorted(j.name for j in scene.joints)
+    assert [b.name for b in again.bodies] == [b.name for b in scene.bodies]
     world2, built2 = build(again)
     for n in (0, 1, 300):
         step(world, n)
