@@ -121,22 +121,22 @@ class _Build:
                 self.report("beyond-box2d-range", "world", 0, None, f"{check.problem}; scene_gravity gives the host's fallback instead")
 
     def check_filters(self) -> None:
-        """Box2D 2.3 holds 16 filter bits: reported only where that changes what collides."""
-        low = (1 << FILTER_BITS) - 1
-        used = [f for f in self.scene.fixtures]
-        categories = {f.category_bits for f in used}
-        masks_high = {f.mask_bits >> FILTER_BITS for f in used}
-        wide_category = any(c >> FILTER_BITS for c in categories)
-        if wide_category or len(masks_high) > 1:
-            for i, f in enumerate(used):
-                if f.category_bits & ~low or (len(masks_high) > 1 and f.mask_bits >> FILTER_BITS):
-                    self.report(
-                        "filter-bits-truncated",
-                        "fixture",
-                        i,
-                        f.name,
-                        f"its filter (category 0x{f.category_bits:x}, mask 0x{f.mask_bits:x}) uses bits above Box2D 2.3's 16, which change what collides; the low 16 bits were used",
-                    )
+        """Box2D 2.3 holds 16 filter bits: reported only where that changes what collides, a
+        category bit above 16 in use (high mask bits matter only against those)."""
+        high = 0
+        for f in self.scene.fixtures:
+            high |= f.category_bits >> FILTER_BITS
+        if not high:
+            return
+        for i, f in enumerate(self.scene.fixtures):
+            if f.category_bits >> FILTER_BITS or (f.mask_bits >> FILTER_BITS) & high not in (0, high):
+                self.report(
+                    "filter-bits-truncated",
+                    "fixture",
+                    i,
+                    f.name,
+                    f"its filter (category 0x{f.category_bits:x}, mask 0x{f.mask_bits:x}) uses bits above Box2D 2.3's 16, which change what collides; the low 16 bits were used",
+                )
 
     # ---- shapes
 
