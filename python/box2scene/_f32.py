@@ -1,0 +1,73 @@
+"""Single-precision arithmetic as the engines' C code does it, for the builders' values that
+must match the C adapters bit for bit: NumPy's float32 operations round as C's float ones,
+and the C library's own ``cosf``/``sinf`` make a rotation from an angle as the C adapters do
+(NumPy's vectorised float32 cosine may differ from them in the last bit)."""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+import math
+from typing import Tuple
+
+import numpy as np
+
+F = np.float32
+
+_libm = ctypes.CDLL(ctypes.util.find_library("m") or "libm.so.6")
+for _name in ("cosf", "sinf", "atan2f", "nextafterf"):
+    getattr(_libm, _name).restype = ctypes.c_float
+_libm.cosf.argtypes = [ctypes.c_float]
+_libm.sinf.argtypes = [ctypes.c_float]
+_libm.atan2f.argtypes = [ctypes.c_float, ctypes.c_float]
+_libm.nextafterf.argtypes = [ctypes.c_float, ctypes.c_float]
+
+
+def cosf(x: float) -> float:
+    return float(_libm.cosf(x))
+
+
+def sinf(x: float) -> float:
+    return float(_libm.sinf(x))
+
+
+def atan2f(y: float, x: float) -> float:
+    return float(_libm.atan2f(y, x))
+
+
+def nextafterf(x: float, toward: float) -> float:
+    return float(_libm.nextafterf(x, toward))
+
+
+def f32(x: float) -> float:
+    """``x`` rounded to the nearest float, as a Python float."""
+    return float(F(x))
+
+
+def rotation(angle: float) -> Tuple[float, float]:
+    """The cosine and sine of ``angle``, as the C adapters make a rotation."""
+    return cosf(angle), sinf(angle)
+
+
+def ulps_away(x: float, steps: int) -> float:
+    toward = -math.inf if steps < 0 else math.inf
+    for _ in range(abs(steps)):
+        x = nextafterf(x, toward)
+    return x
+
+
+def search_ulps(guess: float, gives) -> Tuple[bool, float]:
+    """The float nearest ``guess`` (within 16 ulps) for which ``gives`` holds: an inverse
+    computed in floats is a few ulps off the value whose forward computation gives the
+    bits wanted. (False, guess) when none does."""
+    for k in range(17):
+        for sign in (-1, 1):
+            x = ulps_away(guess, sign * k)
+            if gives(x):
+                return True, x
+    return False, guess
+
+
+def angle_of(c: float, s: float) -> Tuple[bool, float]:
+    """An angle whose cosf and sinf are the rotation's."""
+    return search_ulps(atan2f(s, c), lambda a: cosf(a) == c and sinf(a) == s)

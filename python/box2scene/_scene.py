@@ -1,0 +1,181 @@
+"""Loading, the immutable Scene, writing, and building a scene from records."""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from typing import Any, Optional, Tuple, Union
+
+from . import _native
+from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
+
+Source = Union[str, "os.PathLike[str]", bytes, bytearray, memoryview]
+
+
+class Scene:
+    """A loaded (or built) scene: immutable tuples of frozen records.
+
+    ``shapes``, ``fixtures``, ``bodies``, ``joints``, ``user_data`` and ``diagnostics``
+    hold the C view's records (see :mod:`box2scene._records`); ``vertices`` and
+    ``fixture_ids`` are its pools, which ``Shape.vertices`` and ``Body.fixtures`` already
+    resolve. ``gravity`` is None when the file gave none (the host decides).
+    """
+
+    __slots__ = (
+        "_native",
+        "version",
+        "gravity",
+        "shapes",
+        "fixtures",
+        "bodies",
+        "joints",
+        "vertices",
+        "fixture_ids",
+        "user_data",
+        "diagnostics",
+    )
+
+    version: int
+    gravity: Optional[Vec2]
+    shapes: Tuple[Shape, ...]
+    fixtures: Tuple[Fixture, ...]
+    bodies: Tuple[Body, ...]
+    joints: Tuple[Joint, ...]
+    vertices: Tuple[Vec2, ...]
+    fixture_ids: Tuple[int, ...]
+    user_data: Tuple[UserData, ...]
+    diagnostics: Tuple[Diagnostic, ...]
+
+    def __init__(self, native: "_native.NativeScene"):
+        set_ = object.__setattr__
+        set_(self, "_native", native)
+        set_(self, "version", native.version())
+        set_(self, "gravity", native.gravity())
+        set_(self, "shapes", tuple(Shape(**d) for d in native.shapes()))
+        set_(self, "fixtures", tuple(Fixture(**d) for d in native.fixtures()))
+        set_(self, "bodies", tuple(Body(**d) for d in native.bodies()))
+        set_(self, "joints", tuple(Joint(**d) for d in native.joints()))
+        set_(self, "vertices", native.vertices())
+        set_(self, "fixture_ids", tuple(native.fixture_ids()))
+        set_(self, "user_data", tuple(UserData(**d) for d in native.user_data()))
+        set_(self, "diagnostics", tuple(Diagnostic(**d) for d in native.diagnostics()))
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("a Scene is immutable")
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError("a Scene is immutable")
+
+    def __repr__(self) -> str:
+        return (
+            f"<box2scene.Scene version {self.version}: {len(self.shapes)} shapes, "
+            f"{len(self.fixtures)} fixtures, {len(self.bodies)} bodies, "
+            f"{len(self.joints)} joints, {len(self.diagnostics)} diagnostics>"
+        )
+
+    def to_xml(self, all_fields: bool = False) -> str:
+        """The scene as Box2Scene XML, which loads back to the same records (every float
+        bit for bit). A loaded scene keeps its comments and unknown content. ``all_fields``
+        writes fields equal to their defaults too. Raises :class:`Error` for what cannot be
+        written."""
+        return self._native.to_xml(all_fields)
+
+    def write(self, path: "Union[str, os.PathLike[str]]", all_fields: bool = False) -> None:
+        """Writes :meth:`to_xml`'s text to ``path``, replacing the file atomically: a
+        failed write leaves the old file as it was."""
+        self._native.write(os.fspath(path), all_fields)
+
+    def to_json(self) -> str:
+        """Every field of every record as JSON, floats in shortest round-trip form."""
+        return self._native.to_json()
+
+    def find_body(self, name: str) -> Optional[int]:
+        """The index of the first body named ``name``, or None."""
+        return next((i for i, b in enumerate(self.bodies) if b.name == name), None)
+
+    def find_joint(self, name: str) -> Optional[int]:
+        """The index of the first joint named ``name``, or None."""
+        return next((i for i, j in enumerate(self.joints) if j.name == name), None)
+
+
+def load(
+    source: Source,
+    *,
+    strict: bool = False,
+    max_input_bytes: Optional[int] = None,
+    max_elements: Optional[int] = None,
+    max_text_bytes: Optional[int] = None,
+    max_depth: Optional[int] = None,
+    max_chain_vertices: Optional[int] = None,
+    threads: int = 0,
+) -> Scene:
+    """Loads a scene from a path (``str`` or path-like) or from the bytes of a file.
+
+    Both give the same scene, warnings and error. ``strict`` turns every warning into an
+    error. The limits default to the library's (1 GiB of input, 10 million elements, 1 MiB
+    for one text, depth 64, 100 000 chain vertices); a file past one raises
+    ``limit-exceeded``. Raises :class:`Error` (with code, line and column) for a file
+    that is not a valid scene.
+    """
+    given = {
+        "max_input_bytes": max_input_bytes,
+        "max_elements": max_elements,
+        "max_text_bytes": max_text_bytes,
+        "max_depth": max_depth,
+        "max_chain_vertices": max_chain_vertices,
+    }
+    options = {k: v for k, v in given.items() if v is not None}
+    options["strict"] = strict
+    options["threads"] = threads
+    if isinstance(source, (bytes, bytearray, memoryview)):
+        return Scene(_native.load_bytes(bytes(source), options))
+    return Scene(_native.load_path(os.fspath(source), options))
+
+
+def _fields(record: Any) -> dict:
+    return {f.name: getattr(record, f.name) for f in dataclasses.fields(record)}
+
+
+class Builder:
+    """Builds a scene from records, as a host saves its level: each record is checked with
+    the loader's rules when it is added (an :class:`Error` names the object), and
+    :meth:`finish` gives an ordinary immutable :class:`Scene`, which writes and loads back
+    to the same records. Objects refer to objects added before them."""
+
+    def __init__(self) -> None:
+        self._native = _native.NativeBuilder()
+
+    def set_gravity(self, gravity: Optional[Vec2]) -> None:
+        """The world's gravity, or None (the host decides)."""
+        self._native.set_gravity(gravity)
+
+    def add_user_data(
+        self,
+        raw: Optional[str] = None,
+        type_name: Optional[str] = None,
+        value: Optional[str] = None,
+    ) -> int:
+        """User data from raw XML content, or a type name and value in the editor's form;
+        returns its index."""
+        return self._native.add_user_data(raw, type_name, value)
+
+    def add_shape(self, shape: Shape) -> int:
+        """Adds a shape and returns its index."""
+        return self._native.add_shape(_fields(shape))
+
+    def add_fixture(self, fixture: Fixture) -> int:
+        """Adds a fixture on an added shape and returns its index."""
+        return self._native.add_fixture(_fields(fixture))
+
+    def add_body(self, body: Body) -> int:
+        """Adds a body whose fixtures were added and returns its index."""
+        return self._native.add_body(_fields(body))
+
+    def add_joint(self, joint: Joint) -> int:
+        """Adds a joint between added bodies (a gear after its two joints); returns its
+        index."""
+        return self._native.add_joint(_fields(joint))
+
+    def finish(self) -> Scene:
+        """The finished scene; the builder cannot be used afterwards."""
+        return Scene(self._native.finish())

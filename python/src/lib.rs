@@ -1,0 +1,620 @@
+//! `box2scene._native`: the library's load, write and builder for Python. Records cross as
+//! dicts of plain values (the Python package wraps them in frozen dataclasses); every rule,
+//! default and guarantee is the library's own.
+
+use std::path::PathBuf;
+use std::sync::Mutex;
+
+use box2scene::{
+    Body, BodyKind, Builder, Diagnostic, Fixture, Joint, JointKind, LoadOptions, NONE, Scene,
+    Shape, ShapeKind, UserData, Vec2, WriteOptions,
+};
+use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
+    ("circle", ShapeKind::Circle),
+    ("polygon", ShapeKind::Polygon),
+    ("edge", ShapeKind::Edge),
+    ("chain", ShapeKind::Chain),
+];
+
+const BODY_KINDS: [(&str, BodyKind); 3] = [
+    ("static", BodyKind::Static),
+    ("kinematic", BodyKind::Kinematic),
+    ("dynamic", BodyKind::Dynamic),
+];
+
+const JOINT_KINDS: [(&str, JointKind); 12] = [
+    ("revolute", JointKind::Revolute),
+    ("prismatic", JointKind::Prismatic),
+    ("distance", JointKind::Distance),
+    ("pulley", JointKind::Pulley),
+    ("line", JointKind::Line),
+    ("weld", JointKind::Weld),
+    ("friction", JointKind::Friction),
+    ("gear", JointKind::Gear),
+    ("wheel", JointKind::Wheel),
+    ("rope", JointKind::Rope),
+    ("motor", JointKind::Motor),
+    ("unsupported", JointKind::Unsupported),
+];
+
+/// The Python name of a kind number (the number itself as text for one no table has).
+fn kind_name<K: Copy>(
+    table: &[(&'static str, K)],
+    value: u32,
+    number: impl Fn(K) -> u32,
+) -> String {
+    table
+        .iter()
+        .find(|(_, k)| number(*k) == value)
+        .map_or_else(|| value.to_string(), |(name, _)| (*name).to_owned())
+}
+
+/// The kind a Python name means.
+fn kind_of<K: Copy>(table: &[(&'static str, K)], name: &str, what: &str) -> PyResult<K> {
+    let names: Vec<&str> = table.iter().map(|(n, _)| *n).collect();
+    table.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)).map(|(_, k)| *k).ok_or_else(|| {
+        PyValueError::new_err(format!("unknown {what} kind {name:?} (one of {})", names.join(", ")))
+    })
+}
+
+/// The package's `box2scene.Error` for a library error.
+fn error(py: Python<'_>, e: box2scene::Error) -> PyErr {
+    let raised = py.import("box2scene._error").and_then(|m| m.getattr("Error")).and_then(|class| {
+        class.call1((
+            e.code.name(),
+            e.position.line,
+            e.position.column,
+            e.position.byte_offset,
+            e.message.clone(),
+        ))
+    });
+    match raised {
+        Ok(value) => PyErr::from_value(value),
+        Err(e) => e,
+    }
+}
+
+/// A value of a record field, as Python holds it.
+trait Field: Sized {
+    fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>>;
+    fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self>;
+}
+
+impl Field for f32 {
+    fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(self.into_pyobject(py)?.into_any())
+    }
+    fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self> {
+        value.extract()
+    }
+}
+
+impl Field for bool {
+    fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok(self.into_pyobject(py)?.to_owned().into_any())
+    }
+    fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self> {
+        value.extract()
+    }
+}
+
+impl Field for Vec2 {
+    fn to_py<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        Ok((self.x, self.y).into_pyobject(py)?.into_any())
+    }
+    fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (x, y): (f32, f32) = value.extract()?;
+        Ok(Vec2::new(x, y))
+    }
+}
+
+/// An index that may be absent: None in Python, `NONE` in the record.
+fn index_to_py(py: Python<'_>, index: u32) -> PyResult<Bound<'_, PyAny>> {
+    match index {
+        NONE => Ok(py.None().into_bound(py)),
+        i => Ok(i.into_pyobject(py)?.into_any()),
+    }
+}
+
+fn index_from_py(value: &Bound<'_, PyAny>) -> PyResult<u32> {
+    if value.is_none() {
+        return Ok(NONE);
+    }
+    let index: u32 = value.extract()?;
+    if index == NONE {
+        return Err(PyOverflowError::new_err(format!("index {index} is out of range")));
+    }
+    Ok(index)
+}
+
+/// An optional value: None where the record says it was not given.
+fn optional_to_py<'py, T: Field>(
+    py: Python<'py>,
+    given: bool,
+    value: &T,
+) -> PyResult<Bound<'py, PyAny>> {
+    match given {
+        true => value.to_py(py),
+        false => Ok(py.None().into_bound(py)),
+    }
+}
+
+fn optional_from_py<T: Field + Default>(value: &Bound<'_, PyAny>) -> PyResult<(bool, T)> {
+    match value.is_none() {
+        true => Ok((false, T::default())),
+        false => Ok((true, T::from_py(value)?)),
+    }
+}
+
+/// Bits of a filter field, whatever width the scene keeps them in.
+fn bits<T: TryFrom<i64>>(value: &Bound<'_, PyAny>, field: &str) -> PyResult<T> {
+    let wide: i64 = value.extract()?;
+    T::try_from(wide).map_err(|_| {
+        PyOverflowError::new_err(format!("{field} {wide} does not fit the scene's filter"))
+    })
+}
+
+/// The fields each record shares with its dict under the same name, both ways.
+macro_rules! plain_fields {
+    ($to:ident, $from:ident, $record:ty { $($field:ident),* $(,)? }) => {
+        fn $to(py: Python<'_>, r: &$record, d: &Bound<'_, PyDict>) -> PyResult<()> {
+            $(d.set_item(stringify!($field), Field::to_py(&r.$field, py)?)?;)*
+            Ok(())
+        }
+
+        /// Takes the field named `key` from `value`; false when no plain field has that name.
+        fn $from(r: &mut $record, key: &str, value: &Bound<'_, PyAny>) -> PyResult<bool> {
+            match key {
+                $(stringify!($field) => r.$field = Field::from_py(value)?,)*
+                _ => return Ok(false),
+            }
+            Ok(true)
+        }
+    };
+}
+
+plain_fields!(shape_to, shape_from, Shape { radius, position, is_loop });
+plain_fields!(fixture_to, fixture_from, Fixture { density, friction, restitution, is_sensor });
+plain_fields!(
+    body_to,
+    body_from,
+    Body {
+        position,
+        angle,
+        linear_velocity,
+        angular_velocity,
+        linear_damping,
+        angular_damping,
+        gravity_scale,
+        inertia_scale,
+        active,
+        allow_sleep,
+        awake,
+        bullet,
+        fixed_rotation,
+    }
+);
+plain_fields!(
+    joint_to,
+    joint_from,
+    Joint {
+        local_anchor_a,
+        local_anchor_b,
+        local_axis_a,
+        ground_anchor_a,
+        ground_anchor_b,
+        linear_offset,
+        reference_angle,
+        lower_limit,
+        upper_limit,
+        motor_speed,
+        max_motor_torque,
+        max_motor_force,
+        length,
+        frequency_hz,
+        damping_ratio,
+        length_a,
+        length_b,
+        max_length_a,
+        max_length_b,
+        ratio,
+        max_force,
+        max_torque,
+        max_length,
+        angular_offset,
+        correction_factor,
+        collide_connected,
+        enable_limit,
+        enable_motor,
+    }
+);
+
+fn text(scene: &Scene, s: box2scene::Str) -> Option<String> {
+    scene.text(s).map(str::to_owned)
+}
+
+fn vertices_to_py<'py>(py: Python<'py>, vertices: &[Vec2]) -> PyResult<Bound<'py, PyAny>> {
+    let items = vertices.iter().map(|v| (v.x, v.y));
+    Ok(pyo3::types::PyTuple::new(py, items)?.into_any())
+}
+
+fn shape_dict<'py>(py: Python<'py>, scene: &Scene, s: &Shape) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("kind", kind_name(&SHAPE_KINDS, s.kind, |k| k as u32))?;
+    d.set_item("name", text(scene, s.name))?;
+    shape_to(py, s, &d)?;
+    d.set_item("vertices", vertices_to_py(py, scene.vertices(s))?)?;
+    d.set_item("centroid", optional_to_py(py, s.centroid_given, &s.centroid)?)?;
+    d.set_item("prev_vertex", optional_to_py(py, s.has_prev_vertex, &s.prev_vertex)?)?;
+    d.set_item("next_vertex", optional_to_py(py, s.has_next_vertex, &s.next_vertex)?)?;
+    Ok(d)
+}
+
+fn fixture_dict<'py>(py: Python<'py>, scene: &Scene, f: &Fixture) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("shape", index_to_py(py, f.shape)?)?;
+    d.set_item("name", text(scene, f.name))?;
+    fixture_to(py, f, &d)?;
+    d.set_item("category_bits", u64::from(f.filter.category_bits))?;
+    d.set_item("mask_bits", u64::from(f.filter.mask_bits))?;
+    d.set_item("group_index", i64::from(f.filter.group_index))?;
+    d.set_item("user_data", index_to_py(py, f.user_data)?)?;
+    Ok(d)
+}
+
+fn body_dict<'py>(py: Python<'py>, scene: &Scene, b: &Body) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("kind", kind_name(&BODY_KINDS, b.kind, |k| k as u32))?;
+    d.set_item("name", text(scene, b.name))?;
+    body_to(py, b, &d)?;
+    let m = &b.mass_data;
+    d.set_item("mass", optional_to_py(py, m.mass_given, &m.mass)?)?;
+    d.set_item("center", optional_to_py(py, m.center_given, &m.center)?)?;
+    d.set_item("inertia", optional_to_py(py, m.inertia_given, &m.inertia)?)?;
+    d.set_item("fixtures", pyo3::types::PyTuple::new(py, scene.body_fixtures(b))?)?;
+    d.set_item("user_data", index_to_py(py, b.user_data)?)?;
+    Ok(d)
+}
+
+fn joint_dict<'py>(py: Python<'py>, scene: &Scene, j: &Joint) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("kind", kind_name(&JOINT_KINDS, j.kind, |k| k as u32))?;
+    d.set_item("name", text(scene, j.name))?;
+    d.set_item("body_a", index_to_py(py, j.body_a)?)?;
+    d.set_item("body_b", index_to_py(py, j.body_b)?)?;
+    d.set_item("joint_a", index_to_py(py, j.joint_a)?)?;
+    d.set_item("joint_b", index_to_py(py, j.joint_b)?)?;
+    d.set_item("user_data", index_to_py(py, j.user_data)?)?;
+    joint_to(py, j, &d)?;
+    Ok(d)
+}
+
+fn user_data_dict<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    u: &UserData,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("raw", text(scene, u.raw))?;
+    d.set_item("type_name", text(scene, u.type_name))?;
+    d.set_item("value", text(scene, u.value))?;
+    Ok(d)
+}
+
+fn diagnostic_dict<'py>(
+    py: Python<'py>,
+    scene: &Scene,
+    g: &Diagnostic,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("code", g.code().map_or_else(|| g.code.to_string(), |c| c.name().to_owned()))?;
+    d.set_item(
+        "severity",
+        g.severity().map_or_else(|| g.severity.to_string(), |s| s.name().to_owned()),
+    )?;
+    d.set_item("line", g.line)?;
+    d.set_item("column", g.column)?;
+    d.set_item("byte_offset", g.byte_offset)?;
+    d.set_item("message", text(scene, g.message))?;
+    Ok(d)
+}
+
+/// A loaded or built scene, immutable.
+#[pyclass(frozen, module = "box2scene._native")]
+struct NativeScene {
+    scene: Scene,
+}
+
+fn dicts<'py, T>(
+    py: Python<'py>,
+    scene: &Scene,
+    items: &[T],
+    dict: impl Fn(Python<'py>, &Scene, &T) -> PyResult<Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyList>> {
+    let list = PyList::empty(py);
+    for item in items {
+        list.append(dict(py, scene, item)?)?;
+    }
+    Ok(list)
+}
+
+fn write_options(all_fields: bool) -> WriteOptions {
+    WriteOptions { all_fields, ..WriteOptions::default() }
+}
+
+#[pymethods]
+impl NativeScene {
+    fn version(&self) -> u32 {
+        self.scene.version()
+    }
+    fn gravity(&self) -> Option<(f32, f32)> {
+        self.scene.gravity().map(|g| (g.x, g.y))
+    }
+    fn shapes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.shapes(), shape_dict)
+    }
+    fn fixtures<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.fixtures(), fixture_dict)
+    }
+    fn bodies<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.bodies(), body_dict)
+    }
+    fn joints<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.joints(), joint_dict)
+    }
+    fn user_data<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.user_data(), user_data_dict)
+    }
+    fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        dicts(py, &self.scene, self.scene.diagnostics(), diagnostic_dict)
+    }
+    fn vertices<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        vertices_to_py(py, self.scene.vertex_pool())
+    }
+    fn fixture_ids(&self) -> Vec<u32> {
+        self.scene.fixture_id_pool().to_vec()
+    }
+    fn to_xml(&self, py: Python<'_>, all_fields: bool) -> PyResult<String> {
+        self.scene.to_xml(&write_options(all_fields)).map_err(|e| error(py, e))
+    }
+    fn write(&self, py: Python<'_>, path: PathBuf, all_fields: bool) -> PyResult<()> {
+        let options = write_options(all_fields);
+        py.detach(|| box2scene::write_path(&self.scene, &path, &options)).map_err(|e| error(py, e))
+    }
+    fn to_json(&self) -> String {
+        self.scene.to_json()
+    }
+}
+
+fn load_options(options: &Bound<'_, PyDict>) -> PyResult<LoadOptions> {
+    let mut o = LoadOptions::default();
+    for (key, value) in options.iter() {
+        let key: String = key.extract()?;
+        match key.as_str() {
+            "strict" => o.strict = value.extract()?,
+            "max_input_bytes" => o.max_input_bytes = value.extract()?,
+            "max_elements" => o.max_elements = value.extract()?,
+            "max_text_bytes" => o.max_text_bytes = value.extract()?,
+            "max_depth" => o.max_depth = value.extract()?,
+            "max_chain_vertices" => o.max_chain_vertices = value.extract()?,
+            "threads" => o.threads = value.extract()?,
+            _ => return Err(PyKeyError::new_err(format!("unknown load option {key:?}"))),
+        }
+    }
+    Ok(o)
+}
+
+/// Loads a scene from the bytes of a file.
+#[pyfunction]
+fn load_bytes(py: Python<'_>, data: &[u8], options: &Bound<'_, PyDict>) -> PyResult<NativeScene> {
+    let options = load_options(options)?;
+    let loaded = py.detach(|| box2scene::load(data, &options));
+    loaded.map(|scene| NativeScene { scene }).map_err(|e| error(py, e))
+}
+
+/// Loads a scene from a file.
+#[pyfunction]
+fn load_path(py: Python<'_>, path: PathBuf, options: &Bound<'_, PyDict>) -> PyResult<NativeScene> {
+    let options = load_options(options)?;
+    let loaded = py.detach(|| box2scene::load_path(&path, &options));
+    loaded.map(|scene| NativeScene { scene }).map_err(|e| error(py, e))
+}
+
+/// The defaults of a record of `record` ("shape", "fixture", "body", "joint") and `kind`, as
+/// the dict a loaded record of that kind has.
+#[pyfunction]
+#[pyo3(signature = (record, kind=None))]
+fn defaults<'py>(
+    py: Python<'py>,
+    record: &str,
+    kind: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let empty = Builder::new().finish();
+    let kind = kind.unwrap_or_default();
+    let d = match record {
+        "shape" => shape_dict(py, &empty, &Shape::new(kind_of(&SHAPE_KINDS, kind, "shape")?))?,
+        "fixture" => fixture_dict(py, &empty, &Fixture::default())?,
+        "body" => body_dict(py, &empty, &Body::new(kind_of(&BODY_KINDS, kind, "body")?))?,
+        "joint" => joint_dict(py, &empty, &Joint::new(kind_of(&JOINT_KINDS, kind, "joint")?))?,
+        _ => return Err(PyValueError::new_err(format!("no record is called {record:?}"))),
+    };
+    Ok(d)
+}
+
+/// Reads the fields of `record` into `r`: those `plain` takes and those `special` takes;
+/// any other key is an error.
+fn fields_into<R>(
+    record: &Bound<'_, PyDict>,
+    r: &mut R,
+    what: &str,
+    plain: impl Fn(&mut R, &str, &Bound<'_, PyAny>) -> PyResult<bool>,
+    mut special: impl FnMut(&mut R, &str, &Bound<'_, PyAny>) -> PyResult<bool>,
+) -> PyResult<()> {
+    for (key, value) in record.iter() {
+        let key: String = key.extract()?;
+        let taken = plain(r, &key, &value)? || special(r, &key, &value)?;
+        if !taken {
+            return Err(PyKeyError::new_err(format!("a {what} has no field {key:?}")));
+        }
+    }
+    Ok(())
+}
+
+fn kind_field(record: &Bound<'_, PyDict>) -> PyResult<String> {
+    match record.get_item("kind")? {
+        Some(kind) => kind.extract(),
+        None => Err(PyKeyError::new_err("the record has no kind")),
+    }
+}
+
+/// A scene under construction, in the library's builder.
+#[pyclass(frozen, module = "box2scene._native")]
+struct NativeBuilder {
+    builder: Mutex<Option<Builder>>,
+}
+
+impl NativeBuilder {
+    fn with<T>(
+        &self,
+        py: Python<'_>,
+        f: impl FnOnce(&mut Builder) -> Result<T, box2scene::Error>,
+    ) -> PyResult<T> {
+        let mut guard =
+            self.builder.lock().map_err(|_| PyRuntimeError::new_err("the builder is poisoned"))?;
+        let builder =
+            guard.as_mut().ok_or_else(|| PyRuntimeError::new_err("the builder is finished"))?;
+        f(builder).map_err(|e| error(py, e))
+    }
+}
+
+#[pymethods]
+impl NativeBuilder {
+    #[new]
+    fn new() -> NativeBuilder {
+        NativeBuilder { builder: Mutex::new(Some(Builder::new())) }
+    }
+
+    fn set_gravity(&self, py: Python<'_>, gravity: Option<(f32, f32)>) -> PyResult<()> {
+        self.with(py, |b| b.set_gravity(gravity.map(|(x, y)| Vec2::new(x, y))))
+    }
+
+    #[pyo3(signature = (raw=None, type_name=None, value=None))]
+    fn add_user_data(
+        &self,
+        py: Python<'_>,
+        raw: Option<&str>,
+        type_name: Option<&str>,
+        value: Option<&str>,
+    ) -> PyResult<u32> {
+        self.with(py, |b| b.add_user_data(raw, type_name, value))
+    }
+
+    fn add_shape(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
+        let mut shape = Shape::new(kind_of(&SHAPE_KINDS, &kind_field(record)?, "shape")?);
+        let (mut name, mut vertices) = (None::<String>, Vec::new());
+        fields_into(record, &mut shape, "shape", shape_from, |s, key, value| {
+            match key {
+                "kind" => {}
+                "name" => name = value.extract()?,
+                "vertices" => {
+                    for v in value.try_iter()? {
+                        vertices.push(Vec2::from_py(&v?)?);
+                    }
+                }
+                "centroid" => (s.centroid_given, s.centroid) = optional_from_py(value)?,
+                "prev_vertex" => (s.has_prev_vertex, s.prev_vertex) = optional_from_py(value)?,
+                "next_vertex" => (s.has_next_vertex, s.next_vertex) = optional_from_py(value)?,
+                _ => return Ok(false),
+            }
+            Ok(true)
+        })?;
+        self.with(py, |b| b.add_shape(&shape, name.as_deref(), &vertices))
+    }
+
+    fn add_fixture(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
+        let mut fixture = Fixture::default();
+        let mut name = None::<String>;
+        fields_into(record, &mut fixture, "fixture", fixture_from, |f, key, value| {
+            match key {
+                "name" => name = value.extract()?,
+                "shape" => f.shape = index_from_py(value)?,
+                "user_data" => f.user_data = index_from_py(value)?,
+                "category_bits" => f.filter.category_bits = bits(value, "category_bits")?,
+                "mask_bits" => f.filter.mask_bits = bits(value, "mask_bits")?,
+                "group_index" => f.filter.group_index = bits(value, "group_index")?,
+                _ => return Ok(false),
+            }
+            Ok(true)
+        })?;
+        self.with(py, |b| b.add_fixture(&fixture, name.as_deref()))
+    }
+
+    fn add_body(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
+        let mut body = Body::new(kind_of(&BODY_KINDS, &kind_field(record)?, "body")?);
+        let (mut name, mut fixtures) = (None::<String>, Vec::new());
+        fields_into(record, &mut body, "body", body_from, |b, key, value| {
+            let m = &mut b.mass_data;
+            match key {
+                "kind" => {}
+                "name" => name = value.extract()?,
+                "fixtures" => fixtures = value.extract()?,
+                "user_data" => b.user_data = index_from_py(value)?,
+                "mass" => (m.mass_given, m.mass) = optional_from_py(value)?,
+                "center" => (m.center_given, m.center) = optional_from_py(value)?,
+                "inertia" => (m.inertia_given, m.inertia) = optional_from_py(value)?,
+                _ => return Ok(false),
+            }
+            Ok(true)
+        })?;
+        self.with(py, |b| b.add_body(&body, name.as_deref(), &fixtures))
+    }
+
+    fn add_joint(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
+        let mut joint = Joint::new(kind_of(&JOINT_KINDS, &kind_field(record)?, "joint")?);
+        let mut name = None::<String>;
+        fields_into(record, &mut joint, "joint", joint_from, |j, key, value| {
+            match key {
+                "kind" => {}
+                "name" => name = value.extract()?,
+                "body_a" => j.body_a = index_from_py(value)?,
+                "body_b" => j.body_b = index_from_py(value)?,
+                "joint_a" => j.joint_a = index_from_py(value)?,
+                "joint_b" => j.joint_b = index_from_py(value)?,
+                "user_data" => j.user_data = index_from_py(value)?,
+                _ => return Ok(false),
+            }
+            Ok(true)
+        })?;
+        self.with(py, |b| b.add_joint(&joint, name.as_deref()))
+    }
+
+    fn finish(&self) -> PyResult<NativeScene> {
+        let mut guard =
+            self.builder.lock().map_err(|_| PyRuntimeError::new_err("the builder is poisoned"))?;
+        let builder =
+            guard.take().ok_or_else(|| PyRuntimeError::new_err("the builder is finished"))?;
+        Ok(NativeScene { scene: builder.finish() })
+    }
+}
+
+/// The widths, in bits, of the scene's filter categories and masks and of its groups.
+#[pyfunction]
+fn filter_widths() -> (usize, usize) {
+    let f = box2scene::Filter::default();
+    (8 * size_of_val(&f.category_bits), 8 * size_of_val(&f.group_index))
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<NativeScene>()?;
+    m.add_class::<NativeBuilder>()?;
+    m.add_function(wrap_pyfunction!(load_bytes, m)?)?;
+    m.add_function(wrap_pyfunction!(load_path, m)?)?;
+    m.add_function(wrap_pyfunction!(defaults, m)?)?;
+    m.add_function(wrap_pyfunction!(filter_widths, m)?)?;
+    Ok(())
+}

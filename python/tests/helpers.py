@@ -1,0 +1,48 @@
+"""Scenes made for one mapping row each, and stepping helpers."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from box2scene import Body, Builder, Fixture, Joint, Shape
+
+DT = float(np.float32(1.0) / np.float32(60.0))
+BOX = ((-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5))
+
+
+def f32(x: float) -> float:
+    return float(np.float32(x))
+
+
+class SceneMaker:
+    """A builder with shortcuts: a box fixture of density 1 shared by the bodies."""
+
+    def __init__(self, gravity=(0.0, -10.0)):
+        self.b = Builder()
+        self.b.set_gravity(gravity)
+        self.box = self.b.add_fixture(Fixture.new(self.b.add_shape(Shape.new("polygon", vertices=BOX)), density=1.0))
+
+    def body(self, kind="dynamic", fixtures=None, **changes) -> int:
+        return self.b.add_body(Body.new(kind, fixtures=(self.box,) if fixtures is None else fixtures, **changes))
+
+    def shape(self, kind, **changes) -> int:
+        return self.b.add_shape(Shape.new(kind, **changes))
+
+    def fixture(self, shape, **changes) -> int:
+        return self.b.add_fixture(Fixture.new(shape, **changes))
+
+    def joint(self, kind, a, b, **changes) -> int:
+        return self.b.add_joint(Joint.new(kind, a, b, **changes))
+
+    def finish(self):
+        return self.b.finish()
+
+
+def codes(reports):
+    return [(r.code, r.object, r.index) for r in reports]
+
+
+def finite(*values) -> bool:
+    return all(math.isfinite(v) for v in values)

@@ -1,0 +1,266 @@
+"""Loading, the records, errors, writing and the builder: the library's, through Python."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import pydoc
+import re
+
+import numpy as np
+import pytest
+
+import box2scene
+from box2scene import Body, Builder, Error, Fixture, Joint, Shape
+
+from conftest import ROOT, scene_files, scene_id
+
+
+def records(scene):
+    return (
+        scene.version,
+        scene.gravity,
+        scene.shapes,
+        scene.fixtures,
+        scene.bodies,
+        scene.joints,
+        scene.vertices,
+        scene.fixture_ids,
+        scene.user_data,
+        scene.diagnostics,
+    )
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_a_load_from_a_path_equals_a_load_from_bytes(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    from_path = box2scene.load(path)
+    assert records(from_path) == records(box2scene.load(data))
+    assert records(from_path) == records(box2scene.load(bytearray(data)))
+    assert from_path.to_json() == box2scene.load(data).to_json()
+
+
+def same_float(a, b) -> bool:
+    return np.float32(a) == np.float32(b)
+
+
+def same_value(record_value, dumped) -> bool:
+    if isinstance(record_value, tuple) and record_value and isinstance(record_value[0], tuple):
+        return len(record_value) == len(dumped) and all(same_value(r, d) for r, d in zip(record_value, dumped))
+    if isinstance(record_value, tuple):
+        return dumped is not None and len(record_value) == len(dumped) and all(same_value(r, d) for r, d in zip(record_value, dumped))
+    if isinstance(record_value, float):
+        return same_float(record_value, dumped)
+    return record_value == dumped
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_every_field_is_the_one_the_library_dumps(path):
+    """The library's JSON dump, with every field of every record, against the records."""
+    scene = box2scene.load(path)
+    dump = json.loads(scene.to_json())
+    assert scene.version == dump["version"]
+    assert same_value(scene.gravity, dump["gravity"]) if scene.gravity else dump["gravity"] is None
+    assert len(scene.shapes) == len(dump["shapes"])
+    for shape, d in zip(scene.shapes, dump["shapes"]):
+        for f in dataclasses.fields(shape):
+            assert same_value(getattr(shape, f.name), d[f.name]), (f.name, getattr(shape, f.name), d[f.name])
+    for fixture, d in zip(scene.fixtures, dump["fixtures"]):
+        flat = dict(d, **d["filter"])
+        flat["user_data"] = fixture.user_data if (d["user_data"] is None) == (fixture.user_data is None) else "mismatch"
+        for f in dataclasses.fields(fixture):
+            assert same_value(getattr(fixture, f.name), flat[f.name]), f.name
+    for body, d in zip(scene.bodies, dump["bodies"]):
+        for f in dataclasses.fields(body):
+            if f.name in d and f.name != "user_data":
+                assert same_value(getattr(body, f.name), d[f.name]), f.name
+    for joint, d in zip(scene.joints, dump["joints"]):
+        for f in dataclasses.fields(joint):
+            if f.name in d and f.name != "user_data":
+                assert same_value(getattr(joint, f.name), d[f.name]), f.name
+    assert [(g.code, g.line, g.column, g.message) for g in scene.diagnostics] == [
+        (g["code"], g["line"], g["column"], g["message"]) for g in dump["diagnostics"]
+    ]
+
+
+def test_the_records_are_the_c_views(showcase):
+    scene = box2scene.load(showcase)
+    ground = scene.bodies[0]
+    assert (ground.kind, ground.name, ground.fixtures) == ("static", "Ground", (0, 1, 2))
+    assert scene.gravity == (0.0, -10.0)
+    bridge = scene.joints[scene.find_joint("BridgeLinkLeft")]
+    assert bridge.kind == "revolute" and bridge.local_anchor_b == (np.float32(-0.6), 0.0)
+    polygon = next(s for s in scene.shapes if s.kind == "polygon")
+    assert polygon.vertices == tuple(scene.vertices[i] for i in range(len(polygon.vertices)))
+    assert scene.fixture_ids[: len(ground.fixtures)] == ground.fixtures
+
+
+def test_user_data_and_names_come_through():
+    path = os.path.join(ROOT, "tests", "scenes", "every-v1-field.xml")
+    scene = box2scene.load(path)
+    rubber = scene.fixtures[0]
+    assert rubber.name == "rubber"
+    data = scene.user_data[rubber.user_data]
+    assert (data.type_name, data.value) == ("System.String", "tyre & rim")
+    assert "<Type>System.String</Type>" in data.raw
+
+
+def test_warnings_carry_their_code_and_position():
+    text = b'<World Version="1">\n  <Shapes/>\n  <Fixtures/>\n  <Bodies/>\n  <Joints/>\n  <Bogus/>\n</World>\n'
+    scene = box2scene.load(text)
+    [warning] = scene.diagnostics
+    assert (warning.code, warning.severity, warning.line, warning.column) == ("unknown-element", "warning", 6, 3)
+    with pytest.raises(Error) as raised:
+        box2scene.load(text, strict=True)
+    assert (raised.value.code, raised.value.line, raised.value.column) == ("unknown-element", 6, 3)
+
+
+BAD = [
+    (b'<World Version="1">\n  <Bodies>\n    <Body Type="Dynamic">\n      <Angle>0,5</Angle>\n', "float-decimal-comma", 4, 15),
+    (b'<World Version="7"/>', "unsupported-version", 1, 17),
+    (b'<!DOCTYPE x>\n<World/>', "doctype-forbidden", 1, 1),
+    (b'<World Version="1">\n<Shapes>\n <Shape Type="Circle"><Radius>-1</Radius><Position>0 0</Position></Shape>\n</Shapes>\n</World>', "bad-radius", 3, 31),
+]
+
+
+@pytest.mark.parametrize("text,code,line,column", BAD, ids=[b[1] for b in BAD])
+def test_bad_input_raises_the_error_with_its_position(tmp_path, text, code, line, column):
+    path = tmp_path / "bad.xml"
+    path.write_bytes(text)
+    for source in (text, path, str(path)):
+        with pytest.raises(Error) as raised:
+            box2scene.load(source)
+        e = raised.value
+        assert (e.code, e.line, e.column) == (code, line, column), e
+        assert e.byte_offset > 0 or (line, column) == (1, 1)
+        assert str(e).startswith(f"{line}:{column}: error[{code}]: ")
+
+
+def test_a_missing_file_is_an_io_error(tmp_path):
+    with pytest.raises(Error) as raised:
+        box2scene.load(tmp_path / "none.xml")
+    assert raised.value.code == "io-error"
+
+
+def test_limits_are_load_options(showcase):
+    with pytest.raises(Error) as raised:
+        box2scene.load(showcase, max_depth=2)
+    assert raised.value.code == "limit-exceeded"
+    with pytest.raises(Error) as raised:
+        box2scene.load(open(showcase, "rb").read(), max_input_bytes=100)
+    assert raised.value.code == "limit-exceeded"
+    assert len(box2scene.load(showcase, max_depth=64, threads=1).bodies) == 34
+
+
+def test_a_scene_is_immutable(showcase):
+    scene = box2scene.load(showcase)
+    with pytest.raises(AttributeError):
+        scene.bodies = ()
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        scene.bodies[0].position = (1.0, 1.0)
+    assert isinstance(scene.bodies, tuple) and isinstance(scene.shapes[0].vertices, tuple)
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_what_is_written_loads_back_to_the_same_scene(tmp_path, path):
+    scene = box2scene.load(path)
+    again = box2scene.load(scene.to_xml().encode())
+    assert records(again)[1:9] == records(scene)[1:9]
+    out = tmp_path / "out.xml"
+    scene.write(out)
+    assert out.read_bytes() == scene.to_xml().encode()
+    assert records(box2scene.load(out))[1:9] == records(scene)[1:9]
+    assert records(box2scene.load(scene.to_xml(all_fields=True).encode()))[1:9] == records(scene)[1:9]
+
+
+def test_a_failed_write_leaves_the_old_file(tmp_path, showcase):
+    scene = box2scene.load(showcase)
+    target = tmp_path / "level.xml"
+    target.write_text("old")
+    with pytest.raises(Error) as raised:
+        scene.write(tmp_path / "missing-folder" / "level.xml")
+    assert raised.value.code == "io-error"
+    scene.write(target)
+    assert box2scene.load(target).bodies == scene.bodies
+    assert sorted(os.listdir(tmp_path)) == ["level.xml"]
+
+
+def built_scene():
+    b = Builder()
+    b.set_gravity((0.0, -9.81))
+    data = b.add_user_data(type_name="System.String", value="crate & co")
+    box = b.add_shape(Shape.new("polygon", name="box", vertices=((-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5))))
+    ground = b.add_shape(Shape.new("edge", vertices=((-20.0, 0.0), (20.0, 0.0))))
+    wheel = b.add_shape(Shape.new("circle", radius=0.1, position=(0.3, 0.0)))
+    chain = b.add_shape(Shape.new("chain", vertices=((-5.0, 1.0), (0.0, 0.5), (5.0, 1.0)), prev_vertex=(-6.0, 2.0)))
+    f_box = b.add_fixture(Fixture.new(box, density=1.0, friction=0.1, user_data=data, category_bits=2, mask_bits=0xFFFD))
+    f_ground = b.add_fixture(Fixture.new(ground))
+    f_wheel = b.add_fixture(Fixture.new(wheel, density=3.0, restitution=0.7))
+    f_chain = b.add_fixture(Fixture.new(chain))
+    b.add_body(Body.new("static", name="Ground", fixtures=(f_ground, f_chain)))
+    b.add_body(Body.new("dynamic", name="Crate", position=(0.1, 2.0), angle=0.3, fixtures=(f_box, f_wheel), mass=2.5))
+    b.add_body(Body.new("dynamic", name="Ball", position=(1.0, 4.0), linear_velocity=(0.5, 0.0), fixtures=(f_wheel,)))
+    b.add_joint(Joint.new("distance", 1, 2, name="Rod", length=2.0, frequency_hz=4.0, damping_ratio=0.5))
+    b.add_joint(Joint.new("revolute", 0, 1, local_anchor_a=(0.1, 2.0), enable_limit=True, lower_limit=-0.5, upper_limit=0.5))
+    return b.finish()
+
+
+def test_the_builder_makes_a_scene_that_writes_and_loads_back_exactly():
+    scene = built_scene()
+    assert scene.version == 2  # an edge and a chain are Version 2 constructs
+    assert scene.bodies[1].mass == np.float32(2.5) and scene.bodies[1].inertia is None
+    assert scene.bodies[1].angle == float(np.float32(0.3))
+    text = scene.to_xml()
+    assert "<Angle>0.3</Angle>" in text  # the shortest text that reads back to the float
+    assert "crate &amp; co" in text
+    again = box2scene.load(text.encode(), strict=True)
+    assert records(again)[1:9] == records(scene)[1:9]
+
+
+def test_the_builder_refuses_what_would_not_read_back():
+    b = Builder()
+    shape = b.add_shape(Shape.new("circle", radius=1.0))
+    with pytest.raises(Error) as raised:
+        b.add_fixture(Fixture.new(shape, density=-1.0))
+    assert (raised.value.code, raised.value.line, raised.value.column) == ("negative-value", 0, 0)
+    assert raised.value.message.startswith("fixture 0: ")
+    with pytest.raises(Error) as raised:
+        b.add_body(Body.new("dynamic", fixtures=(7,)))
+    assert raised.value.code == "id-out-of-range"
+    with pytest.raises(Error) as raised:
+        b.add_shape(Shape.new("circle", radius=1.0, name="bell\x07"))
+    assert raised.value.code == "malformed-xml" and "U+0007" in raised.value.message
+    with pytest.raises(ValueError):
+        Shape.new("hexagon")
+    with pytest.raises(Error):
+        b.add_joint(Joint.new("revolute", 0, 0))
+    b.finish()
+    with pytest.raises(RuntimeError):
+        b.finish()
+
+
+def test_defaults_are_the_formats():
+    assert Joint.new("wheel", 0, 1).frequency_hz == np.float32(2.0)
+    assert Joint.new("pulley", 0, 1).ground_anchor_a == (-1.0, 1.0)
+    assert Fixture.new(0).friction == np.float32(0.2) and Fixture.new(0).mask_bits == 0xFFFF
+    assert Body.new("dynamic").allow_sleep and Body.new("dynamic").mass is None
+
+
+def test_the_package_version_is_the_librarys():
+    def version(path):
+        text = open(path, encoding="utf-8").read()
+        return re.search(r'^version = "([^"]+)"', text, re.M).group(1)
+
+    assert version(os.path.join(ROOT, "python", "Cargo.toml")) == version(os.path.join(ROOT, "Cargo.toml"))
+    from importlib.metadata import version as installed
+
+    assert installed("box2scene") == version(os.path.join(ROOT, "Cargo.toml"))
+
+
+def test_help_reads_well():
+    text = pydoc.render_doc(box2scene, renderer=pydoc.plaintext)
+    for words in ("load(source", "class Scene", "class Error", "class Builder", "pyb2d3", "pybox2d"):
+        assert words in text, words
+    assert box2scene.load.__doc__ and box2scene.Scene.write.__doc__

@@ -1,0 +1,169 @@
+"""box2scene.pybox2d against the real pybox2d (``box2d`` 2.3.10) from the package registry."""
+
+from __future__ import annotations
+
+import math
+
+import Box2D as B
+import pytest
+
+import box2scene
+import box2scene.pybox2d as b2s2
+
+from conftest import scene_files, scene_id
+from helpers import DT, SceneMaker, codes, f32, finite
+
+
+def build(scene):
+    world = B.b2World(gravity=b2s2.scene_gravity(scene, (0.0, -10.0)))
+    return world, b2s2.build_world(scene, world)
+
+
+def step(world, n=600):
+    for _ in range(n):
+        world.Step(DT, 8, 3)
+
+
+def state(body):
+    p, v = body.position, body.linearVelocity
+    return (p[0], p[1], body.angle, v[0], v[1], body.angularVelocity)
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_every_scene_builds_and_steps_600_times_finite(path):
+    scene = box2scene.load(path)
+    world, built = build(scene)
+    assert len(built.bodies) == len(scene.bodies) and len(built.fixtures) == len(scene.fixture_ids)
+    step(world)
+    for body in built.bodies:
+        if body is not None:
+            assert finite(*state(body))
+            assert abs(body.position[0]) < 1e5 and abs(body.position[1]) < 1e5
+
+
+def test_body_fields_are_exact():
+    m = SceneMaker()
+    m.body(position=(1.0, 2.0), angle=7.5, linear_velocity=(1.0, -2.0), linear_damping=0.1, gravity_scale=0.5, bullet=True, fixed_rotation=True, awake=False, allow_sleep=False)
+    m.body("kinematic", angular_velocity=1.0, active=False)
+    world, built = build(m.finish())
+    body = built.bodies[0]
+    assert body.angle == f32(7.5)  # 2.x keeps the angle, whole turns and all
+    assert (body.linearDamping, body.gravityScale, body.bullet, body.fixedRotation) == (f32(0.1), 0.5, True, True)
+    assert not body.awake and not body.sleepingAllowed
+    assert not built.bodies[1].active and built.reports == []
+
+
+def test_mass_data_is_set_after_the_fixtures():
+    m = SceneMaker(gravity=(0.0, 0.0))
+    m.body(mass=2.0, inertia=5.0, linear_velocity=(1.0, 0.0))
+    m.body(center=(0.25, 0.0))
+    m.body(mass=1.0, center=(3.0, 0.0), inertia=1.0)
+    world, built = build(m.finish())
+    a, b = built.bodies[0].massData, built.bodies[1].massData
+    assert (a.mass, a.I) == (2.0, 5.0) and tuple(a.center) == (0.0, 0.0)
+    assert b.mass == 1.0 and tuple(b.center) == (0.25, 0.0)
+    assert built.bodies[2] is None and codes(built.reports)[0] == ("beyond-box2d-range", "body", 2)
+
+
+def test_shapes_keep_their_ghosts():
+    m = SceneMaker()
+    one = m.fixture(m.shape("edge", vertices=((0.0, 0.0), (1.0, 0.0)), prev_vertex=(-1.0, 0.5)))
+    chain = m.fixture(m.shape("chain", vertices=((0.0, 0.0), (2.0, 0.0), (4.0, 1.0)), next_vertex=(5.0, 3.0)))
+    loop = m.fixture(m.shape("chain", vertices=((0.0, 0.0), (4.0, 0.0), (0.0, 4.0)), is_loop=True))
+    off = m.fixture(m.shape("polygon", vertices=((0.0, 0.0), (1.0, 0.0), (0.0, 1.0)), centroid=(0.25, 0.25)))
+    m.body("static", fixtures=(one, chain, loop, off))
+    world, built = build(m.finish())
+    edge = built.fixtures[0].shape
+    assert edge.hasVertex0 and not edge.hasVertex3 and tuple(edge.vertex0) == (-1.0, 0.5)
+    c = built.fixtures[1].shape
+    assert c.m_hasNextVertex and not c.m_hasPrevVertex and tuple(c.m_nextVertex) == (5.0, 3.0)
+    assert built.fixtures[2].shape.vertexCount == 4  # the loop closes on its first vertex
+    assert tuple(built.fixtures[3].shape.centroid) == (0.25, 0.25)
+    assert built.reports == []
+
+
+def pair(kind_a="static", **joint):
+    m = SceneMaker()
+    a = m.body(kind_a, position=(0.0, 5.0), fixtures=())
+    b = m.body(position=(0.0, 3.0))
+    kind = joint.pop("kind")
+    m.joint(kind, a, b, **joint)
+    return m.finish()
+
+
+def test_springs_are_box2d_23s_own():
+    world, built = build(pair(kind="distance", length=2.0, frequency_hz=3.0, damping_ratio=0.25))
+    assert (built.joints[0].frequency, built.joints[0].dampingRatio, built.joints[0].length) == (3.0, 0.25, 2.0)
+    world, built = build(pair(kind="wheel", local_axis_a=(0.0, 1.0), frequency_hz=4.0, damping_ratio=0.5))
+    assert (built.joints[0].springFrequencyHz, built.joints[0].springDampingRatio) == (4.0, 0.5)
+    world, built = build(pair("dynamic", kind="weld", local_anchor_a=(0.0, -1.0), local_anchor_b=(0.0, 1.0), frequency_hz=5.0, damping_ratio=0.7))
+    assert (built.joints[0].GetFrequency(), built.joints[0].GetDampingRatio()) == (5.0, f32(0.7))
+    step(world)
+    assert abs(built.bodies[0].angle - built.bodies[1].angle) < 0.05
+
+
+def test_a_rod_keeps_its_length_and_a_rope_its_maximum():
+    world, built = build(pair(kind="distance", length=2.0))
+    step(world)
+    assert abs(built.bodies[1].position[1] - 3.0) < 0.01
+    world, built = build(pair(kind="rope", local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0), max_length=3.0))
+    assert isinstance(built.joints[0], B.b2RopeJoint) and built.joints[0].maxLength == 3.0
+    step(world)
+    assert 5.0 - built.bodies[1].position[1] < 3.05
+
+
+def test_line_motor_and_limit_are_reported():
+    world, built = build(pair(kind="line", local_axis_a=(0.0, 1.0), enable_motor=True, enable_limit=True, upper_limit=1.0))
+    assert codes(built.reports) == [("lossy-line-motor", "joint", 0), ("lossy-joint", "joint", 0), ("lossy-joint", "joint", 0)]
+    assert "uninitialised" in built.reports[2].message
+    assert built.joints[0].springFrequencyHz == f32(b2s2.SPRINGLESS_WHEEL_HZ)
+    step(world, 60)
+    assert abs(built.bodies[1].position[0]) < 1e-4 and built.bodies[1].position[1] < 3.0
+
+
+def test_motor_friction_pulley_and_gear():
+    m = SceneMaker(gravity=(0.0, 0.0))
+    a = m.body("static", angle=math.pi / 2, fixtures=())
+    b = m.body()
+    m.joint("motor", a, b, linear_offset=(2.0, 0.0), max_force=100.0, max_torque=100.0, correction_factor=0.3)
+    c = m.body(position=(10.0, 0.0))
+    m.joint("friction", a, c, max_force=3.0, max_torque=2.0)
+    d, e = m.body(position=(-5.0, 0.0)), m.body(position=(5.0, 0.0))
+    m.joint("pulley", d, e, ground_anchor_a=(-5.0, 5.0), ground_anchor_b=(5.0, 5.0), local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0), length_a=5.0, length_b=5.0, ratio=1.0)
+    g = m.joint("gear", d, e, joint_a=m.joint("revolute", a, d, local_anchor_a=(-5.0, 0.0)), joint_b=m.joint("revolute", a, e, local_anchor_a=(5.0, 0.0)), ratio=2.0)
+    world, built = build(m.finish())
+    assert built.reports == [] and built.joints[g].ratio == 2.0
+    assert (built.joints[1].maxForce, built.joints[1].maxTorque) == (3.0, 2.0)
+    step(world)
+    moved = built.bodies[b].position
+    assert abs(moved[0]) < 0.05 and abs(moved[1] - 2.0) < 0.05  # the offset is in body A's frame
+
+
+def test_pulley_max_lengths_are_reported():
+    world, built = build(pair(kind="pulley", max_length_a=3.0))
+    assert codes(built.reports) == [("lossy-joint", "joint", 0)]
+
+
+def test_a_captured_world_writes_and_loads_to_the_same_world(showcase):
+    scene = box2scene.load(showcase)
+    world, built = build(scene)
+    captured, reports = b2s2.capture_world(world, built.bodies, [b.name for b in scene.bodies])
+    assert reports == []
+    again = box2scene.load(captured.to_xml().encode(), strict=True)
+    # In the order they were created: a gear after the joints it couples.
+    assert sorted(j.kind for j in again.joints) == sorted(j.kind for j in scene.joints)
+    assert sorted(j.name for j in again.joints) == sorted(j.name for j in scene.joints)
+    assert [b.name for b in again.bodies] == [b.name for b in scene.bodies]
+    world2, built2 = build(again)
+    for n in (0, 1, 300):
+        step(world, n)
+        step(world2, n)
+        assert [state(b) for b in built.bodies] == [state(b) for b in built2.bodies]
+
+
+def test_a_capture_refuses_a_body_named_twice():
+    world = B.b2World()
+    body = world.CreateDynamicBody()
+    with pytest.raises(box2scene.Error) as raised:
+        b2s2.capture_world(world, [body, body])
+    assert raised.value.code == "invalid-argument"
