@@ -122,7 +122,8 @@ pub enum Code {
     UnknownElement = 103,
     /// `World` without one of `Shapes`, `Fixtures`, `Bodies`, `Joints`; read as empty.
     MissingContainer = 104,
-    /// Filter bits above 16 bits (Farseer's 32-bit masks); the low 16 bits are kept.
+    /// No longer reported: filter bits are kept whole, 32 of them (the Box2D 2.4 adapter
+    /// reports `lossy-filter` where its 16 change what collides). The number stays reserved.
     FilterBitsTruncated = 105,
     /// Polygon vertices that are not convex and counter-clockwise; Box2D takes their hull.
     PolygonNotConvexCcw = 106,
@@ -158,6 +159,14 @@ pub enum Code {
     /// A joint value Box2D v3 clamps or has no field for: a revolute limit or reference
     /// angle past its range, a length under its minimum, a friction joint's anchors.
     LossyJoint = 207,
+    /// Filter bits Box2D 2.4 cannot hold in its 16 where that changes what collides: a
+    /// category above bit 16 in use, or a mask whose bits above 16 meet such a category.
+    LossyFilter = 208,
+
+    // Writing.
+    /// A scene holds what the dialect it is written in cannot (a gear joint for a Farseer
+    /// reader, a chain for Farseer 3.3.1, kept comments): the message names the object.
+    DialectCannotHold = 300,
 }
 
 impl Code {
@@ -225,6 +234,8 @@ impl Code {
         Code::LossyCapture,
         Code::LossyShape,
         Code::LossyJoint,
+        Code::LossyFilter,
+        Code::DialectCannotHold,
     ];
 
     /// The kebab-case name of the code (`"id-out-of-range"`).
@@ -297,6 +308,8 @@ impl Code {
             Code::LossyCapture => c"lossy-capture",
             Code::LossyShape => c"lossy-shape",
             Code::LossyJoint => c"lossy-joint",
+            Code::LossyFilter => c"lossy-filter",
+            Code::DialectCannotHold => c"dialect-cannot-hold",
         }
     }
 

@@ -37,8 +37,8 @@ use std::path::Path;
 pub use builder::Builder;
 pub use error::{Code, Error, Position, Severity};
 pub use scene::{
-    Body, BodyKind, Diagnostic, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene,
-    Shape, ShapeKind, Str, UserData, Vec2,
+    Body, BodyKind, Diagnostic, Dialect, Filter, Fixture, Joint, JointKind, MassData, NONE, Range,
+    Scene, Shape, ShapeKind, Str, UserData, Vec2,
 };
 pub use write::{WriteOptions, write};
 
