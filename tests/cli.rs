@@ -1085,3 +1085,25 @@ fn render_reports_an_output_it_cannot_write_and_exits_2() {
     assert_eq!((run.status, run.stdout.as_str()), (2, ""));
     assert!(run.stderr.starts_with("box2scene: cannot write absent/level.svg: "), "{}", run.stderr);
 }
+
+#[test]
+fn fmt_writes_for_the_reader_dialect_names_and_keeps_an_engines_own() {
+    let sandbox = Sandbox::new("fmt-dialect");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let velcro = std::fs::read_to_string(root.join("tests/dialects/farseer-3.5.xml")).unwrap();
+    sandbox.write("level.xml", &velcro);
+    let kept = sandbox.run(&["fmt", "level.xml"]);
+    assert_eq!((kept.status, kept.stdout.as_str()), (0, velcro.as_str()));
+    let farseer = sandbox.run(&["fmt", "--dialect", "farseer-2013", "level.xml"]);
+    assert_eq!(farseer.status, 0, "{}", farseer.stderr);
+    assert!(farseer.stdout.starts_with("<World Version=\"2\">\n"), "{}", farseer.stdout);
+    assert!(farseer.stdout.contains("<Fixture Id=\"0\"><Shape>0</Shape>"), "{}", farseer.stdout);
+    let editor = sandbox.run(&["fmt", "--dialect=box2scene", "level.xml"]);
+    assert!(editor.stdout.starts_with("<World Version=\"2\">\n"), "{}", editor.stdout);
+    let refused = sandbox.run(&["fmt", "--dialect", "farseer-3.3", "level.xml"]);
+    assert_eq!(refused.status, 1);
+    assert!(refused.stderr.contains("error[dialect-cannot-hold]"), "{}", refused.stderr);
+    let unknown = sandbox.run(&["fmt", "--dialect", "farseer", "level.xml"]);
+    assert_eq!(unknown.status, 2);
+    assert!(unknown.stderr.contains("unknown dialect 'farseer'"), "{}", unknown.stderr);
+}

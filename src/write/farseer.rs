@@ -65,6 +65,10 @@ pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, St
         if !target.is_3_3() && farseer_only_type(text) == "slider" {
             return Some((kept.object, "is a Slider joint".to_owned()));
         }
+        let other = if target.dialect == Dialect::Aether { "<userdata" } else { "<tag" };
+        if text.to_ascii_lowercase().contains(other) {
+            return Some((kept.object, "has user data spelled for another reader".to_owned()));
+        }
     }
     for (i, shape) in scene.shapes().iter().enumerate() {
         if let Some(why) = shape_cannot(scene, shape, target) {
