@@ -55,8 +55,8 @@ pub(crate) struct Signs {
     pub collision_ignores: bool,
     /// A `<Tag>` read as user data (Aether.Physics2D).
     pub tags: bool,
-    /// What only Farseer 3.3.1 writes: `LocalXAxis1`, `LocalXAxis`, `Breakpoint`, a Line
-    /// joint with a wheel's fields, an Angle or Slider joint.
+    /// What only Farseer 3.3.1 writes: `LocalXAxis1`, `LocalXAxis`, `Breakpoint` (outside
+    /// Farseer-only joints), a Line joint with a wheel's fields.
     pub farseer_3_3: bool,
 }
 

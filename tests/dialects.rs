@@ -653,3 +653,42 @@ fn an_engine_file_with_comments_is_rewritten_in_box2scenes_form() {
     let written = write(&scene, &WriteOptions::default()).unwrap();
     assert!(written.starts_with("<World Version=\"2\">") && written.contains("<!-- hinges -->"));
 }
+
+/// Farseer's `Axis` is a world axis: (0.6, 0.8) on a body A turned by 0.25 rad is
+/// (0.779, 0.627) in body A's frame, for prismatic and wheel joints alike; on an unturned
+/// body A it reads as written.
+#[test]
+fn an_axis_is_turned_into_body_as_frame() {
+    for (kind, angle, expected) in [
+        ("Prismatic", "0.25", Vec2::new(0.779, 0.627)),
+        ("Wheel", "0.25", Vec2::new(0.779, 0.627)),
+        ("Prismatic", "0", Vec2::new(0.6, 0.8)),
+    ] {
+        let text = format!(
+            "<World Version=\"2\"><Shapes/><Fixtures/><Bodies>\
+             <Body Type=\"Dynamic\"><Angle>{angle}</Angle></Body><Body Type=\"Dynamic\"/>\
+             </Bodies><Joints><Joint Type=\"{kind}\"><BodyA>0</BodyA><BodyB>1</BodyB>\
+             <Axis>0.6 0.8</Axis></Joint></Joints></World>"
+        );
+        let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+        let axis = scene.joints()[0].local_axis_a;
+        let near = (axis.x - expected.x).abs() < 5e-4 && (axis.y - expected.y).abs() < 5e-4;
+        assert!(near, "{kind} at {angle}: {axis:?}");
+        // The world axis goes back out as the file gave it.
+        let again = write(&scene, &options(Dialect::Farseer2013)).unwrap();
+        assert!(again.contains("<Axis>0.6 0.8</Axis>"), "{again}");
+    }
+}
+
+/// An engine's file rewritten in box2scene's form is a file of that form: formatting it
+/// again gives it again.
+#[test]
+fn an_engine_file_rewritten_in_box2scenes_form_stays_in_it() {
+    for dialect in ENGINES {
+        let scene = load_path(example(dialect), &LoadOptions::default()).unwrap();
+        let text = write(&scene, &options(Dialect::Box2scene)).unwrap();
+        let again = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+        assert_eq!(again.dialect(), Dialect::Box2scene, "{}:\n{text}", dialect.name());
+        assert_eq!(write(&again, &WriteOptions::default()).unwrap(), text);
+    }
+}

@@ -264,9 +264,9 @@ impl<'a> Reader<'a> {
                     Slot::Ignored => self.tok.skip(&child)?,
                 },
             }
-            self.arena.origins.signs.farseer_3_3 |=
-                matches!(name, LocalXAxis1 | LocalXAxis | Breakpoint)
-                    || kind == JointKind::Unsupported;
+            // Not inside a Farseer-only joint, which every dialect writes back as it was.
+            self.arena.origins.signs.farseer_3_3 |= kind != JointKind::Unsupported
+                && matches!(name, LocalXAxis1 | LocalXAxis | Breakpoint);
             if matches!(name, LocalAxisA | LocalXAxis1 | LocalXAxis | Axis) {
                 world_axis = (name == Axis).then_some(joint.local_axis_a);
             }
