@@ -85,24 +85,27 @@ pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
 /// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th
 /// fixture template on the s-th shape, with the density of s (docs/format.md). The
 /// templates' `Id` attributes are never consulted: Farseer wrote a process-wide counter
-/// there, and bound Pairs by position. When every template is bound once, as the engines
-/// write them, each fixture keeps its template's place; else they come in the order of the
-/// Pairs.
+/// there, and bound Pairs by position. When every template is bound, each always to one
+/// shape (as the engines write them), each fixture keeps its template's place and is shared
+/// by the bodies that bind it; else the fixtures come in the order of the Pairs.
 fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     let templates = std::mem::take(&mut p.scene.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
-    let mut bound = vec![0u32; templates.len()];
+    let mut shape_of: Vec<Option<u32>> = vec![None; templates.len()];
+    let mut one_shape_each = true;
     for pair in &p.origins.pairs {
-        if let Some(count) = bound.get_mut(pair.fixture.0 as usize) {
-            *count += 1;
+        if let Some(bound) = shape_of.get_mut(pair.fixture.0 as usize) {
+            one_shape_each &= *bound.get_or_insert(pair.shape.0) == pair.shape.0;
         }
     }
-    let in_place = bound.iter().all(|&count| count == 1);
+    let in_place = one_shape_each && shape_of.iter().all(Option::is_some);
+    let mut made_yet = vec![false; templates.len()];
     let mut made = Vec::with_capacity(p.origins.pairs.len());
     let mut shape_spots = Vec::with_capacity(p.origins.pairs.len());
     for (k, pair) in p.origins.pairs.iter().enumerate() {
         let (template, template_at) = pair.fixture;
+        let template_index = template as usize;
         let Some(&template) = templates.get(template as usize) else {
             let why = format!(
                 "body {} binds fixture {template} (a position in <Fixtures>, counted from 0), but {}",
@@ -116,8 +119,10 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
         fixture.shape = shape;
         fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
         let index = if in_place { pair.fixture.0 } else { k as u32 };
-        made.push((index, fixture));
-        shape_spots.push((index, shape_at));
+        if !in_place || !std::mem::replace(&mut made_yet[template_index], true) {
+            made.push((index, fixture));
+            shape_spots.push((index, shape_at));
+        }
         p.scene.fixture_ids.push(index);
         p.origins.fixture_ids.push(template_at);
         let fixtures = &mut p.scene.bodies[pair.body as usize].fixtures;

@@ -105,13 +105,17 @@ pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, St
 fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> {
     let kind = shape.kind()?;
     let vertices = scene.vertices(shape);
+    let segment = kind == ShapeKind::Polygon && vertices.len() == 2;
     let why = match kind {
         ShapeKind::Circle | ShapeKind::Edge | ShapeKind::Chain if !shape.name.is_null() => {
             "has a Name (an element this kind of shape may not hold there)"
         }
-        ShapeKind::Polygon if vertices.len() == 2 => "is a two-vertex polygon",
+        ShapeKind::Polygon if segment && !shape.name.is_null() => {
+            "is a named two-vertex polygon (written as an edge, which may not hold a Name)"
+        }
         ShapeKind::Polygon
             if shape.centroid_given
+                && !segment
                 && !target.version_3
                 && !is_centroid(vertices, shape.centroid) =>
         {
@@ -156,16 +160,23 @@ fn is_centroid(vertices: &[Vec2], centroid: Vec2) -> bool {
 fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
     let user_data = scene.user_data_at(index)?;
     let raw = scene.text(user_data.raw).unwrap_or_default();
+    // The text runs between its tags, and the tags.
+    let runs = || raw.split('<').map(|piece| piece.split_once('>').map_or(piece, |(_, text)| text));
+    let tags =
+        || raw.split('<').skip(1).map(|piece| piece.split_once('>').map_or(piece, |(tag, _)| tag));
     let why = match scene.text(user_data.type_name) {
         None => "has UserData not in the <Type>/<Value> form",
-        Some(ty) if !raw.starts_with(&format!("<Type>{ty}</Type>")) => {
+        Some(ty) if !raw.trim_start().starts_with(&format!("<Type>{ty}</Type>")) => {
             "has UserData whose <Type> is not its first element, exactly as named"
         }
-        Some(_) if raw.contains(['\t', '\r', '\n']) => {
-            "has UserData with a raw tab or line break (the reader deletes them)"
+        Some(_) if runs().any(|t| t.contains(['\t', '\r', '\n']) && !t.trim().is_empty()) => {
+            "has UserData text with a raw tab or line break (the reader deletes them)"
         }
         Some(_) if raw.contains("<!") || raw.contains("<?") => {
             "has UserData holding a comment or a CDATA section"
+        }
+        Some(_) if tags().any(|tag| tag.contains('=')) => {
+            "has UserData with attributes (the reader's tokenizer takes no such values)"
         }
         Some(_) => return None,
     };
@@ -348,7 +359,12 @@ impl FarseerWriter<'_> {
     }
 
     fn shape(&mut self, shape: &Shape, density: f32) {
-        let kind = shape.kind().unwrap_or(ShapeKind::Circle);
+        let vertices = self.scene.vertices(shape);
+        let kind = match shape.kind().unwrap_or(ShapeKind::Circle) {
+            // Box2D 2.1's SetAsEdge: a line segment, which the engines hold as an edge.
+            ShapeKind::Polygon if vertices.len() == 2 => ShapeKind::Edge,
+            kind => kind,
+        };
         let ty = match kind {
             ShapeKind::Circle => "Circle",
             ShapeKind::Polygon => "Polygon",
@@ -364,7 +380,6 @@ impl FarseerWriter<'_> {
             self.out.push('"');
         }
         self.out.push('>');
-        let vertices = self.scene.vertices(shape);
         match kind {
             ShapeKind::Circle => {
                 self.number("Radius", shape.radius);
