@@ -115,8 +115,8 @@ impl Scene {
         write(self, options)
     }
 
-    /// The scene as JSON: every field of every record, floats in shortest round-trip form,
-    /// diagnostics included.
+    /// The scene as JSON: its version and dialect, every field of every record, floats in
+    /// shortest round-trip form, diagnostics included.
     pub fn to_json(&self) -> String {
         dump::to_json(self)
     }

@@ -49,8 +49,8 @@ Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O er
 const DUMP_HELP: &str = "\
 Usage: box2scene dump [--strict] FILE
 
-Prints the loaded scene as JSON: every field of every record, floats in their shortest
-round-trip form, the warnings included.
+Prints the loaded scene as JSON: its version and dialect, every field of every record,
+floats in their shortest round-trip form, the warnings included.
 
 Options:
   --strict     treat every warning as an error
