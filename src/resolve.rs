@@ -133,8 +133,9 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     }
     let first_made: Vec<Option<u32>> = {
         let mut first = vec![None; templates.len()];
-        for (pair, &(index, _)) in p.origins.pairs.iter().zip(&made).rev() {
-            first[pair.fixture.0 as usize] = Some(index);
+        for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
+            let template = pair.fixture.0;
+            first[template as usize] = Some(if in_place { template } else { k as u32 });
         }
         first
     };

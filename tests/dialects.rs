@@ -698,3 +698,29 @@ fn an_engine_file_rewritten_in_box2scenes_form_stays_in_it() {
         assert_eq!(write(&again, &WriteOptions::default()).unwrap(), text);
     }
 }
+
+/// A Version 3 template that two bodies bind to one shape is one fixture, in its place,
+/// shared by both; what a template held beyond its fields stays with its own fixture.
+#[test]
+fn a_template_bound_twice_to_one_shape_is_one_shared_fixture() {
+    let text = "<World Version=\"3\"><Shapes>\
+        <Shape Type=\"Circle\" Density=\"2\"><Radius>1</Radius><Position>0 0</Position></Shape>\
+        </Shapes><Fixtures>\
+        <Fixture Id=\"0\"><Friction>0.5</Friction></Fixture>\
+        <Fixture Id=\"1\"><Friction>0.7</Friction><Paint>red</Paint></Fixture>\
+        </Fixtures><Bodies>\
+        <Body Type=\"Dynamic\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/></Bindings></Body>\
+        <Body Type=\"Dynamic\"><Bindings><Pair FixtureId=\"0\" ShapeId=\"0\"/></Bindings></Body>\
+        <Body Type=\"Dynamic\"><Bindings><Pair FixtureId=\"1\" ShapeId=\"0\"/></Bindings></Body>\
+        </Bodies><Joints/></World>";
+    let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+    let frictions: Vec<f32> = scene.fixtures().iter().map(|f| f.friction).collect();
+    assert_eq!(frictions, [0.5, 0.7]);
+    let lists: Vec<_> = scene.bodies().iter().map(|b| scene.body_fixtures(b).to_vec()).collect();
+    assert_eq!(lists, [vec![0], vec![0], vec![1]]);
+    let written = write(&scene, &options(Dialect::Box2scene)).unwrap();
+    let paint = written.find("<Paint>red</Paint>").unwrap();
+    let second = written.match_indices("<Fixture>").nth(1).unwrap().0;
+    let end = written.find("</Fixtures>").unwrap();
+    assert!(second < paint && paint < end, "the unknown element stays in fixture 1:\n{written}");
+}
