@@ -135,10 +135,14 @@ uint32_t to_id(std::string_view text) {
     return value;
 }
 
-uint16_t to_bits(std::string_view text) {
+uint32_t to_bits(std::string_view text) {
     bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
     std::string_view digits = hex ? text.substr(2) : without_plus(text, "a bit mask");
-    return static_cast<uint16_t>(to_integer<uint64_t>(digits, hex ? 16 : 10, text, "a bit mask"));
+    uint64_t value = to_integer<uint64_t>(digits, hex ? 16 : 10, text, "a bit mask");
+    if (value > UINT32_MAX) {
+        refuse(text, "32 bits");
+    }
+    return static_cast<uint32_t>(value);
 }
 
 int16_t to_int16(std::string_view text) {

@@ -39,8 +39,8 @@ bool to_bool(std::string_view text);
 /// A non-negative index (optional `+`), below UINT32_MAX.
 uint32_t to_id(std::string_view text);
 
-/// Collision bits, decimal or `0x` hexadecimal; above 16 bits only the low 16 are kept.
-uint16_t to_bits(std::string_view text);
+/// Collision bits, decimal or `0x` hexadecimal, 32 of them.
+uint32_t to_bits(std::string_view text);
 
 /// A 16-bit signed int (a group index), optional sign.
 int16_t to_int16(std::string_view text);

@@ -30,10 +30,10 @@ PIN_SIZE(b2s_range, 8);
 PIN_AT(b2s_range, first, 0);
 PIN_AT(b2s_range, count, 4);
 
-PIN_SIZE(b2s_filter, 6);
+PIN_SIZE(b2s_filter, 12);
 PIN_AT(b2s_filter, category_bits, 0);
-PIN_AT(b2s_filter, mask_bits, 2);
-PIN_AT(b2s_filter, group_index, 4);
+PIN_AT(b2s_filter, mask_bits, 4);
+PIN_AT(b2s_filter, group_index, 8);
 
 PIN_SIZE(b2s_shape, 64);
 PIN_AT(b2s_shape, name, 0);
@@ -49,15 +49,15 @@ PIN_AT(b2s_shape, has_prev_vertex, 57);
 PIN_AT(b2s_shape, has_next_vertex, 58);
 PIN_AT(b2s_shape, is_loop, 59);
 
-PIN_SIZE(b2s_fixture, 40);
+PIN_SIZE(b2s_fixture, 48);
 PIN_AT(b2s_fixture, name, 0);
 PIN_AT(b2s_fixture, shape, 8);
 PIN_AT(b2s_fixture, density, 12);
 PIN_AT(b2s_fixture, friction, 16);
 PIN_AT(b2s_fixture, restitution, 20);
 PIN_AT(b2s_fixture, filter, 24);
-PIN_AT(b2s_fixture, is_sensor, 30);
-PIN_AT(b2s_fixture, user_data, 32);
+PIN_AT(b2s_fixture, is_sensor, 36);
+PIN_AT(b2s_fixture, user_data, 40);
 
 PIN_SIZE(b2s_mass_data, 20);
 PIN_AT(b2s_mass_data, mass, 0);
@@ -146,9 +146,10 @@ PIN_AT(b2s_load_options, max_chain_vertices, 28);
 PIN_AT(b2s_load_options, strict, 32);
 PIN_AT(b2s_load_options, threads, 36);
 
-PIN_SIZE(b2s_write_options, 8);
+PIN_SIZE(b2s_write_options, 12);
 PIN_AT(b2s_write_options, all_fields, 0);
 PIN_AT(b2s_write_options, threads, 4);
+PIN_AT(b2s_write_options, dialect, 8);
 
 static_assert(B2S_ERROR_MESSAGE_SIZE == 256, "B2S_ERROR_MESSAGE_SIZE");
 PIN_SIZE(b2s_error, 280);

@@ -356,6 +356,45 @@ static int body_flags_reach_box2d() {
     return 0;
 }
 
+/// Box2D 2.4 holds 16 filter bits: Farseer's "all" mask (2147483647) over categories in 16
+/// bits collides as it says, silently; a category above bit 16, and a mask meeting one, are
+/// reported.
+static int filter_bits_are_reported_only_where_16_change_what_collides() {
+    auto scene_with = [](const char* fixtures) {
+        std::string text = std::string(R"(<World Version="2">
+          <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+          <Fixtures>)") + fixtures + R"(</Fixtures>
+          <Bodies><Body Type="Static"><Fixtures><ID>0</ID><ID>1</ID><ID>2</ID></Fixtures></Body>
+          </Bodies><Joints /></World>)";
+        return load_text(text.c_str());
+    };
+    auto fixture = [](const char* category, const char* mask) {
+        return std::string("<Fixture><Shape>0</Shape><FilterData><CategoryBits>") + category +
+               "</CategoryBits><MaskBits>" + mask + "</MaskBits></FilterData></Fixture>";
+    };
+    std::string all = fixture("1", "2147483647") + fixture("2", "2147483647") + fixture("4", "3");
+    ScenePtr farseer = scene_with(all.c_str());
+    ENSURE(farseer != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(farseer.get(), world);
+    ENSURE(built.reports.empty());
+    ENSURE_EQ(built.fixtures[0]->GetFilterData().maskBits, 0xFFFF);
+    ENSURE_EQ(built.fixtures[2]->GetFilterData().maskBits, 3);
+
+    std::string wide = fixture("0x10000", "1") + fixture("1", "2147483647") + fixture("2", "3");
+    ScenePtr high = scene_with(wide.c_str());
+    ENSURE(high != nullptr);
+    b2World other(b2Vec2(0.0f, -10.0f));
+    built = box2scene::build_world(high.get(), other);
+    ENSURE_EQ(built.reports.size(), 2u);
+    for (uint32_t i = 0; i < 2; ++i) {
+        ENSURE_EQ(built.reports[i].code, B2S_CODE_LOSSY_FILTER);
+        ENSURE_STR(built.reports[i].object, "fixture");
+        ENSURE_EQ(built.reports[i].index, i);
+    }
+    return 0;
+}
+
 int main() {
     int failed = 0;
     failed += RUN_TEST(null_scene_builds_nothing);
@@ -370,5 +409,6 @@ int main() {
     failed += RUN_TEST(negative_damping_never_reaches_box2d);
     failed += RUN_TEST(wheel_and_line_axes_are_directions);
     failed += RUN_TEST(body_flags_reach_box2d);
+    failed += RUN_TEST(filter_bits_are_reported_only_where_16_change_what_collides);
     return failed;
 }

@@ -462,6 +462,21 @@ static int sensors_are_passed_through_and_sense(void) {
     return 0;
 }
 
+/* The scene's 32 filter bits reach v3 whole: a category above bit 16, Farseer's "all" mask. */
+static int filters_pass_all_32_bits(void) {
+    scene_world w;
+    OPEN(w, "2", "0 -10", CIRCLE("0.5"),
+         "<Fixture><Shape>0</Shape><FilterData><CategoryBits>0x40000</CategoryBits>"
+         "<MaskBits>2147483647</MaskBits></FilterData></Fixture>",
+         "<Body Type='Static'><Fixtures><ID>0</ID></Fixtures></Body>", "");
+    ENSURE_REPORT_COUNT(w, 0);
+    b2Filter filter = b2Shape_GetFilter(SHAPE(w, 0, 0));
+    ENSURE_EQ(filter.categoryBits, 0x40000);
+    ENSURE_EQ(filter.maskBits, 2147483647);
+    close_world(&w);
+    return 0;
+}
+
 static int filters_pass_bits_and_groups(void) {
     scene_world w;
     OPEN(w, "1", "0 -10", BOX("5", "0.5") CIRCLE("0.5"),
@@ -1480,6 +1495,7 @@ int main(void) {
     failed += RUN_TEST(fixture_material_is_passed_exactly_and_bounces);
     failed += RUN_TEST(sensors_are_passed_through_and_sense);
     failed += RUN_TEST(filters_pass_bits_and_groups);
+    failed += RUN_TEST(filters_pass_all_32_bits);
     failed += RUN_TEST(circle_and_polygon_shapes);
     failed += RUN_TEST(two_vertex_polygon_and_plain_edge_are_segments);
     failed += RUN_TEST(edge_with_ghosts_is_a_one_sided_chain);

@@ -140,7 +140,7 @@ static int what_the_format_cannot_hold_is_reported(void) {
     b2Capsule capsule = {{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f};
     b2CreateCapsuleShape(bodies[0], &shape_def, &capsule);
     b2Circle circle = {{0.0f, 0.0f}, 0.5f};
-    shape_def.filter.categoryBits = 0x10000; /* above the format's 16 bits */
+    shape_def.filter.categoryBits = 0x100000000ull; /* above the format's 32 bits */
     b2CreateCircleShape(bodies[1], &shape_def, &circle);
     shape_def.filter = b2DefaultFilter(); /* mask UINT64_MAX: "all", held exactly */
     b2CreateCircleShape(bodies[2], &shape_def, &circle);
@@ -169,8 +169,8 @@ static int what_the_format_cannot_hold_is_reported(void) {
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     ENSURE_EQ(view->body_count, 2);
     ENSURE_EQ(view->fixture_count, 2);
-    ENSURE_EQ(view->fixtures[0].filter.category_bits, 0); /* the low 16 bits of 0x10000 */
-    ENSURE_EQ(view->fixtures[1].filter.mask_bits, 0xFFFF);
+    ENSURE_EQ(view->fixtures[0].filter.category_bits, 0); /* the low 32 bits of 2^32 */
+    ENSURE_EQ(view->fixtures[1].filter.mask_bits, 0xFFFFFFFFu);
     ENSURE_EQ(view->joint_count, 1); /* the weld */
     ENSURE_EQ(view->joints[0].kind, B2S_JOINT_KIND_WELD);
     ENSURE_EQ(count_reports(&reports, B2S_CODE_LOSSY_CAPTURE, "fixture", 0), 1);

@@ -18,9 +18,9 @@
 #include <stdlib.h>
 
 #define B2S_VERSION_MAJOR 0
-#define B2S_VERSION_MINOR 1
+#define B2S_VERSION_MINOR 2
 #define B2S_VERSION_PATCH 0
-#define B2S_VERSION_STRING "0.1.0"
+#define B2S_VERSION_STRING "0.2.0"
 
 /**
  * The most warnings a scene keeps; a hostile file could otherwise hold one per element.
@@ -245,7 +245,8 @@ enum b2s_code
    */
   B2S_CODE_MISSING_CONTAINER = 104,
   /**
-   * Filter bits above 16 bits (Farseer's 32-bit masks); the low 16 bits are kept.
+   * No longer reported: filter bits are kept whole, 32 of them (the Box2D 2.4 adapter
+   * reports `lossy-filter` where its 16 change what collides). The number stays reserved.
    */
   B2S_CODE_FILTER_BITS_TRUNCATED = 105,
   /**
@@ -268,6 +269,11 @@ enum b2s_code
    * The file had more warnings than a scene keeps; this last one counts the rest.
    */
   B2S_CODE_WARNINGS_TRUNCATED = 110,
+  /**
+   * A joint whose bodies the file places further from satisfied than Box2D's slop
+   * (0.005 m, 2 degrees): the message says how far, in metres or radians.
+   */
+  B2S_CODE_JOINT_STARTS_VIOLATED = 111,
   /**
    * A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
    */
@@ -307,21 +313,65 @@ enum b2s_code
    */
   B2S_CODE_LOSSY_JOINT = 207,
   /**
-   * A joint whose bodies the file places further from satisfied than Box2D's slop
-   * (0.005 m, 2 degrees): the message says how far, in metres or radians.
+   * Filter bits Box2D 2.4 cannot hold in its 16 where that changes what collides: a
+   * category above bit 16 in use, or a mask whose bits above 16 meet such a category.
    */
-  B2S_CODE_JOINT_STARTS_VIOLATED = 208,
+  B2S_CODE_LOSSY_FILTER = 208,
   /**
    * A body state Box2D v3 cannot hold as the file gives it: `Awake` false with
    * `AllowSleep` false (v3 creates such a body awake).
    */
   B2S_CODE_LOSSY_BODY = 209,
+  /**
+   * A scene holds what the dialect it is written in cannot (a gear joint for a Farseer
+   * reader, a chain for Farseer 3.3.1, kept comments): the message names the object.
+   */
+  B2S_CODE_DIALECT_CANNOT_HOLD = 300,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
 typedef enum b2s_code b2s_code;
 #else
 typedef uint32_t b2s_code;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * A form of the format, as one writer wrote it and one reader reads it (spec section 11):
+ * the values of `b2s_write_options.dialect` and of `b2s_scene_dialect`.
+ */
+enum b2s_dialect
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * The editor's form and box2scene's own: Version 1, or 2 where the scene needs it,
+   * defaults omitted unless every field is asked for.
+   */
+  B2S_DIALECT_BOX2SCENE = 1,
+  /**
+   * What Farseer Physics 3.3.1 (2011) reads: Version 2, every field written.
+   */
+  B2S_DIALECT_FARSEER33 = 2,
+  /**
+   * What Farseer of July 2013 reads: Version 2 with `Id` attributes, world `Axis`.
+   */
+  B2S_DIALECT_FARSEER2013 = 3,
+  /**
+   * What Farseer 3.5 and VelcroPhysics read: Version 3, `Bindings`.
+   */
+  B2S_DIALECT_FARSEER35 = 4,
+  /**
+   * What Aether.Physics2D reads: Version 3, user data as `<Tag>`.
+   */
+  B2S_DIALECT_AETHER = 5,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum b2s_dialect b2s_dialect;
+#else
+typedef uint32_t b2s_dialect;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
@@ -650,17 +700,19 @@ typedef struct b2s_shape {
 } b2s_shape;
 
 /**
- * Collision filtering, as Box2D's `b2Filter`.
+ * Collision filtering, as Box2D's `b2Filter`. The bits are the file's 32 (Farseer's
+ * categories are 32-bit flags; Box2D v3's filters hold 64 bits, Box2D 2.4's 16, whose
+ * adapter reports `B2S_CODE_LOSSY_FILTER` where that changes what collides).
  */
 typedef struct b2s_filter {
   /**
    * Default 0x0001.
    */
-  uint16_t category_bits;
+  uint32_t category_bits;
   /**
    * Default 0xFFFF.
    */
-  uint16_t mask_bits;
+  uint32_t mask_bits;
   /**
    * Default 0. Groups always win over category and mask bits.
    */
@@ -974,11 +1026,13 @@ typedef struct b2s_user_data {
    */
   b2s_str raw;
   /**
-   * The `Type` text when the content has the editor's form (`System.String`), else NULL.
+   * The `Type` text when the content has the editor's form, whatever the type
+   * (`System.String`, or a program's own class such as `Game.Payload, Game`), else NULL.
    */
   b2s_str type_name;
   /**
-   * The text of the `Value` element's single child in the editor's form, else NULL.
+   * The text of the `Value` element's single child in the editor's form when that child
+   * holds only text (`Ground`), else NULL (an object's fields are in `raw`).
    */
   b2s_str value;
 } b2s_user_data;
@@ -1111,7 +1165,18 @@ typedef struct b2s_write_options {
    * thread, whatever this says, as one thread writes faster than a load reads.
    */
   uint32_t threads;
+  /**
+   * The dialect to write: a `b2s_dialect` value, or 0 (the default) for the one the scene
+   * remembers (that of the file it was loaded from; box2scene's own for a built scene).
+   * Farseer's dialects write every field, whatever `all_fields` says.
+   */
+  uint32_t dialect;
 } b2s_write_options;
+
+/**
+ * Every dialect, in the order of their numbers.
+ */
+#define b2s_dialect_ALL { b2s_dialect_Box2scene, b2s_dialect_Farseer33, b2s_dialect_Farseer2013, b2s_dialect_Farseer35, b2s_dialect_Aether, }
 
 #ifdef __cplusplus
 extern "C" {
@@ -1202,8 +1267,18 @@ uint32_t b2s_scene_find_body(const struct b2s_scene *scene, const char *name);
 uint32_t b2s_scene_find_joint(const struct b2s_scene *scene, const char *name);
 
 /**
+ * The dialect `scene` was loaded in, a `b2s_dialect` value (`B2S_DIALECT_BOX2SCENE` for a
+ * built scene): the one a write keeps when its options' `dialect` is 0. 0 when `scene` is
+ * NULL.
+ *
+ * # Safety
+ * `scene` is NULL or a live scene.
+ */
+uint32_t b2s_scene_dialect(const struct b2s_scene *scene);
+
+/**
  * The write options with every field at its default (defaults omitted, as the editor
- * wrote).
+ * wrote; in the dialect the scene remembers).
  */
 struct b2s_write_options b2s_write_options_default(void);
 

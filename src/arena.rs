@@ -4,7 +4,7 @@
 #![forbid(unsafe_code)]
 
 use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot, Step};
-use crate::scene::SceneBuilder;
+use crate::scene::{SceneBuilder, Vec2};
 
 /// A scene under construction, with what the later stages need to check it.
 pub(crate) struct Arena {
@@ -36,6 +36,39 @@ pub(crate) struct Origins {
     pub shape_densities: Vec<f32>,
     /// Version 3: every body's `Bindings`, in body order.
     pub pairs: Vec<Pair>,
+    /// The joints whose axis the file gave as Farseer's world `Axis`, with that axis:
+    /// turned into body A's frame once the bodies are read.
+    pub world_axes: Vec<(u32, Vec2)>,
+    /// The chains with no `Has` flag and no loop flag: in Farseer's files, ghosts are
+    /// present unless (0, 0) and a loop repeats its first vertex.
+    pub flagless_chains: Vec<u32>,
+    /// What the file showed of its writer (see [`Signs`]).
+    pub signs: Signs,
+}
+
+/// What a file shows of the writer that wrote it, for the dialect a scene remembers.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Signs {
+    /// A `<Fixture>` or `<Body>` with an `Id` attribute (Farseer from July 2013 on).
+    pub ids: bool,
+    /// A `<CollisionIgnores>` (Farseer 3.5 and Velcro write one in every `FilterData`).
+    pub collision_ignores: bool,
+    /// A `<Tag>` read as user data (Aether.Physics2D).
+    pub tags: bool,
+    /// What only Farseer 3.3.1 writes: `LocalXAxis1`, `LocalXAxis`, `Breakpoint` (outside
+    /// Farseer-only joints), a Line joint with a wheel's fields.
+    pub farseer_3_3: bool,
+}
+
+impl Signs {
+    fn or(self, other: Signs) -> Signs {
+        Signs {
+            ids: self.ids || other.ids,
+            collision_ignores: self.collision_ignores || other.collision_ignores,
+            tags: self.tags || other.tags,
+            farseer_3_3: self.farseer_3_3 || other.farseer_3_3,
+        }
+    }
 }
 
 /// A Version 3 `<Pair FixtureId="f" ShapeId="s"/>`: one fixture of a body, made of the
@@ -219,9 +252,13 @@ impl Arena {
     /// and its warnings were found after these, so the warnings kept and counted are those
     /// one arena reading both would have.
     pub fn append(&mut self, other: Arena, start: Position) {
-        let bodies_before = self.scene.bodies.len() as u32;
+        let before = Before {
+            shapes: self.scene.shapes.len() as u32,
+            bodies: self.scene.bodies.len() as u32,
+            joints: self.scene.joints.len() as u32,
+        };
         self.scene.append(other.scene);
-        self.origins.append(other.origins, bodies_before, start);
+        self.origins.append(other.origins, before, start);
         let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
         for warning in other.warnings {
             self.keep(after(warning));
@@ -252,14 +289,35 @@ impl Arena {
     }
 }
 
+/// How many objects of a kind an arena held before another was appended to it.
+#[derive(Clone, Copy)]
+struct Before {
+    shapes: u32,
+    bodies: u32,
+    joints: u32,
+}
+
 impl Origins {
     /// Appends those of what was read after this one's last object (not the root), whose
-    /// bodies are
-    /// numbered after the `bodies_before` read here and whose positions are counted from
-    /// `start`.
-    fn append(&mut self, other: Origins, bodies_before: u32, start: Position) {
-        let Origins { fixture_shapes, bodies, fixture_ids, joints, shape_densities, pairs, .. } =
-            other;
+    /// objects are numbered after those `before` read here and whose positions are counted
+    /// from `start`.
+    fn append(&mut self, other: Origins, before: Before, start: Position) {
+        let Origins {
+            fixture_shapes,
+            bodies,
+            fixture_ids,
+            joints,
+            shape_densities,
+            pairs,
+            world_axes,
+            flagless_chains,
+            signs,
+            ..
+        } = other;
+        let bodies_before = before.bodies;
+        self.world_axes.extend(world_axes.into_iter().map(|(j, axis)| (j + before.joints, axis)));
+        self.flagless_chains.extend(flagless_chains.into_iter().map(|s| s + before.shapes));
+        self.signs = self.signs.or(signs);
         let after = |s: Spot| s.after(start);
         self.fixture_shapes.extend(fixture_shapes.iter().map(after));
         self.bodies.extend(bodies.iter().map(after));

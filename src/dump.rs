@@ -24,6 +24,7 @@ type Line = Vec<Field>;
 pub fn to_json(scene: &Scene) -> String {
     let lines = vec![
         vec![("version", scene.version().to_string())],
+        vec![("dialect", format!("\"{}\"", scene.dialect().name()))],
         vec![("gravity", optional_vec2(scene.gravity()))],
         vec![("shapes", records(scene.shapes().iter().map(|s| shape(scene, s))))],
         vec![("fixtures", records(scene.fixtures().iter().map(|f| fixture(scene, f))))],
@@ -359,6 +360,7 @@ mod tests {
         let expected = "\
 {
   \"version\": 1,
+  \"dialect\": \"box2scene\",
   \"gravity\": null,
   \"shapes\": [],
   \"fixtures\": [],
@@ -423,6 +425,7 @@ mod tests {
     fn a_scene_is_written_with_every_field_in_a_fixed_layout() {
         let expected = r#"{
   "version": 2,
+  "dialect": "box2scene",
   "gravity": [0.0, -10.0],
   "shapes": [
     {

@@ -122,7 +122,8 @@ pub enum Code {
     UnknownElement = 103,
     /// `World` without one of `Shapes`, `Fixtures`, `Bodies`, `Joints`; read as empty.
     MissingContainer = 104,
-    /// Filter bits above 16 bits (Farseer's 32-bit masks); the low 16 bits are kept.
+    /// No longer reported: filter bits are kept whole, 32 of them (the Box2D 2.4 adapter
+    /// reports `lossy-filter` where its 16 change what collides). The number stays reserved.
     FilterBitsTruncated = 105,
     /// Polygon vertices that are not convex and counter-clockwise; Box2D takes their hull.
     PolygonNotConvexCcw = 106,
@@ -134,6 +135,9 @@ pub enum Code {
     LineJointIsWheel = 109,
     /// The file had more warnings than a scene keeps; this last one counts the rest.
     WarningsTruncated = 110,
+    /// A joint whose bodies the file places further from satisfied than Box2D's slop
+    /// (0.005 m, 2 degrees): the message says how far, in metres or radians.
+    JointStartsViolated = 111,
 
     // What the Box2D adapter reports.
     /// A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
@@ -158,12 +162,17 @@ pub enum Code {
     /// A joint value Box2D v3 clamps or has no field for: a revolute limit or reference
     /// angle past its range, a length under its minimum, a friction joint's anchors.
     LossyJoint = 207,
-    /// A joint whose bodies the file places further from satisfied than Box2D's slop
-    /// (0.005 m, 2 degrees): the message says how far, in metres or radians.
-    JointStartsViolated = 208,
+    /// Filter bits Box2D 2.4 cannot hold in its 16 where that changes what collides: a
+    /// category above bit 16 in use, or a mask whose bits above 16 meet such a category.
+    LossyFilter = 208,
     /// A body state Box2D v3 cannot hold as the file gives it: `Awake` false with
     /// `AllowSleep` false (v3 creates such a body awake).
     LossyBody = 209,
+
+    // Writing.
+    /// A scene holds what the dialect it is written in cannot (a gear joint for a Farseer
+    /// reader, a chain for Farseer 3.3.1, kept comments): the message names the object.
+    DialectCannotHold = 300,
 }
 
 impl Code {
@@ -223,6 +232,7 @@ impl Code {
         Code::FarseerOnlyJoint,
         Code::LineJointIsWheel,
         Code::WarningsTruncated,
+        Code::JointStartsViolated,
         Code::LossyLineMotor,
         Code::SkippedJoint,
         Code::SkippedDependent,
@@ -231,8 +241,9 @@ impl Code {
         Code::LossyCapture,
         Code::LossyShape,
         Code::LossyJoint,
-        Code::JointStartsViolated,
+        Code::LossyFilter,
         Code::LossyBody,
+        Code::DialectCannotHold,
     ];
 
     /// The kebab-case name of the code (`"id-out-of-range"`).
@@ -297,6 +308,7 @@ impl Code {
             Code::FarseerOnlyJoint => c"farseer-only-joint",
             Code::LineJointIsWheel => c"line-joint-is-wheel",
             Code::WarningsTruncated => c"warnings-truncated",
+            Code::JointStartsViolated => c"joint-starts-violated",
             Code::LossyLineMotor => c"lossy-line-motor",
             Code::SkippedJoint => c"skipped-joint",
             Code::SkippedDependent => c"skipped-dependent",
@@ -305,8 +317,9 @@ impl Code {
             Code::LossyCapture => c"lossy-capture",
             Code::LossyShape => c"lossy-shape",
             Code::LossyJoint => c"lossy-joint",
-            Code::JointStartsViolated => c"joint-starts-violated",
+            Code::LossyFilter => c"lossy-filter",
             Code::LossyBody => c"lossy-body",
+            Code::DialectCannotHold => c"dialect-cannot-hold",
         }
     }
 

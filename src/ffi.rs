@@ -397,8 +397,25 @@ pub unsafe extern "C" fn b2s_scene_find_joint(
     unsafe { find(scene, name, Scene::find_joint) }
 }
 
+/// The dialect `scene` was loaded in, a `b2s_dialect` value (`B2S_DIALECT_BOX2SCENE` for a
+/// built scene): the one a write keeps when its options' `dialect` is 0. 0 when `scene` is
+/// NULL.
+///
+/// # Safety
+/// `scene` is NULL or a live scene.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_scene_dialect(scene: *const SceneHandle) -> u32 {
+    guard(
+        || 0,
+        || {
+            // SAFETY: by the caller's contract.
+            unsafe { scene.as_ref() }.map_or(0, |handle| handle.scene.dialect() as u32)
+        },
+    )
+}
+
 /// The write options with every field at its default (defaults omitted, as the editor
-/// wrote).
+/// wrote; in the dialect the scene remembers).
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_write_options_default() -> WriteOptions {
     WriteOptions::default()

@@ -40,8 +40,8 @@ use std::path::Path;
 pub use builder::Builder;
 pub use error::{Code, Error, Position, Severity};
 pub use scene::{
-    Body, BodyKind, Diagnostic, Filter, Fixture, Joint, JointKind, MassData, NONE, Range, Scene,
-    Shape, ShapeKind, Str, UserData, Vec2,
+    Body, BodyKind, Diagnostic, Dialect, Filter, Fixture, Joint, JointKind, MassData, NONE, Range,
+    Scene, Shape, ShapeKind, Str, UserData, Vec2,
 };
 pub use write::{WriteOptions, write};
 
@@ -120,8 +120,8 @@ impl Scene {
         write(self, options)
     }
 
-    /// The scene as JSON: every field of every record, floats in shortest round-trip form,
-    /// diagnostics included.
+    /// The scene as JSON: its version and dialect, every field of every record, floats in
+    /// shortest round-trip form, diagnostics included.
     pub fn to_json(&self) -> String {
         dump::to_json(self)
     }

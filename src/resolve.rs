@@ -1,30 +1,111 @@
 //! Once the whole file is read (containers come in any order): Farseer's Version 3 layout
 //! is normalised into the ordinary model, then every ID is checked against its container
-//! and gear joints against the joints they couple.
+//! and gear joints against the joints they couple; the file's dialect is told from what it
+//! showed of its writer, Farseer's chains are read as that writer meant them, and Farseer's
+//! world axes are turned into body A's frame.
 #![forbid(unsafe_code)]
 
 use crate::arena::Arena;
 use crate::containers::Container;
 use crate::error::{Code, Parsed, Problem, Spot};
-use crate::scene::{JointKind, NONE, Object, Place, Range};
+use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
+use crate::validate;
 
 pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
     if p.farseer_layout() {
         normalise_farseer_layout(p)?;
     }
-    check_references(p)
+    check_references(p)?;
+    let dialect = dialect(p);
+    p.scene.dialect = Some(dialect);
+    if matches!(dialect, Dialect::Farseer2013 | Dialect::Farseer35 | Dialect::Aether) {
+        farseer_chains(p);
+    }
+    world_axes(p);
+    Ok(())
+}
+
+/// The dialect a file is in, from the signs its writer left (spec section 11): Version 3
+/// with `<Tag>` is Aether's, with `CollisionIgnores` or `<UserData>` Farseer 3.5's or
+/// Velcro's (the two differ only there); Version 2 with `Id` attributes is Farseer's of July
+/// 2013, and with Farseer 3.3.1's own spellings (`LocalXAxis1`, `LocalXAxis`, `Breakpoint`,
+/// a Line joint with a wheel's fields) Farseer 3.3.1's; the rest is the editor's form.
+fn dialect(p: &Arena) -> Dialect {
+    let signs = p.origins.signs;
+    match p.version {
+        3.. if signs.tags => Dialect::Aether,
+        3.. if signs.collision_ignores || !p.scene.user_data.is_empty() => Dialect::Farseer35,
+        3.. => Dialect::Aether,
+        2 if signs.ids => Dialect::Farseer2013,
+        2 if signs.farseer_3_3 => Dialect::Farseer33,
+        _ => Dialect::Box2scene,
+    }
+}
+
+/// Farseer (2013 on), Velcro and Aether write a chain's ghosts without `Has` flags, `0 0`
+/// for none, and a loop as its vertices with the first repeated at the end (spec section
+/// 8.2): the chains without flags are read so.
+fn farseer_chains(p: &mut Arena) {
+    let scene = &mut p.scene;
+    for &index in &p.origins.flagless_chains {
+        let shape = &mut scene.shapes[index as usize];
+        let vertices = &scene.vertices[shape.vertices.indices()];
+        let closed = vertices.len() > 3 && vertices.first() == vertices.last();
+        let distinct = &vertices[..vertices.len() - usize::from(closed)];
+        if closed && validate::chain(distinct, true, 0).is_ok() {
+            shape.is_loop = true;
+            shape.vertices.count -= 1;
+            (shape.prev_vertex, shape.next_vertex) = (Vec2::ZERO, Vec2::ZERO);
+            continue;
+        }
+        shape.has_prev_vertex = shape.prev_vertex != Vec2::ZERO;
+        shape.has_next_vertex = shape.next_vertex != Vec2::ZERO;
+    }
+}
+
+/// Farseer's `Axis` is the world axis the program gave the joint: body A's local axis is
+/// it turned by minus body A's angle, as Farseer's own reader computes it (in f32, with the
+/// sine and cosine of the angle rounded to f32).
+fn world_axes(p: &mut Arena) {
+    let scene = &mut p.scene;
+    for &(joint, world) in &p.origins.world_axes {
+        let joint = &mut scene.joints[joint as usize];
+        let angle = scene.bodies[joint.body_a as usize].angle;
+        joint.local_axis_a = local_axis(world, angle);
+    }
+    scene.world_axes = std::mem::take(&mut p.origins.world_axes);
+}
+
+/// `world` in the frame of a body turned by `angle`.
+pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
+    let (sin, cos) = (f64::from(angle).sin() as f32, f64::from(angle).cos() as f32);
+    Vec2::new(cos * world.x + sin * world.y, -sin * world.x + cos * world.y)
 }
 
 /// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th
 /// fixture template on the s-th shape, with the density of s (docs/format.md). The
 /// templates' `Id` attributes are never consulted: Farseer wrote a process-wide counter
-/// there, and bound Pairs by position.
+/// there, and bound Pairs by position. When every template is bound, each always to one
+/// shape (as the engines write them), each fixture keeps its template's place and is shared
+/// by the bodies that bind it; else the fixtures come in the order of the Pairs.
 fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     let templates = std::mem::take(&mut p.scene.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
+    let mut shape_of: Vec<Option<u32>> = vec![None; templates.len()];
+    let mut one_shape_each = true;
+    for pair in &p.origins.pairs {
+        if let Some(bound) = shape_of.get_mut(pair.fixture.0 as usize) {
+            one_shape_each &= *bound.get_or_insert(pair.shape.0) == pair.shape.0;
+        }
+    }
+    let in_place = one_shape_each && shape_of.iter().all(Option::is_some);
+    let mut made_yet = vec![false; templates.len()];
+    let mut made = Vec::with_capacity(p.origins.pairs.len());
+    let mut shape_spots = Vec::with_capacity(p.origins.pairs.len());
     for (k, pair) in p.origins.pairs.iter().enumerate() {
         let (template, template_at) = pair.fixture;
+        let template_index = template as usize;
         let Some(&template) = templates.get(template as usize) else {
             let why = format!(
                 "body {} binds fixture {template} (a position in <Fixtures>, counted from 0), but {}",
@@ -37,9 +118,12 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
         let mut fixture = template;
         fixture.shape = shape;
         fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
-        p.scene.fixtures.push(fixture);
-        p.scene.fixture_ids.push(k as u32);
-        p.origins.fixture_shapes.push(shape_at);
+        let index = if in_place { pair.fixture.0 } else { k as u32 };
+        if !in_place || !std::mem::replace(&mut made_yet[template_index], true) {
+            made.push((index, fixture));
+            shape_spots.push((index, shape_at));
+        }
+        p.scene.fixture_ids.push(index);
         p.origins.fixture_ids.push(template_at);
         let fixtures = &mut p.scene.bodies[pair.body as usize].fixtures;
         if fixtures.count == 0 {
@@ -47,7 +131,21 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
         }
         fixtures.count += 1;
     }
-    move_kept_of_templates(p, templates.len());
+    let first_made: Vec<Option<u32>> = {
+        let mut first = vec![None; templates.len()];
+        for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
+            let template = pair.fixture.0;
+            first[template as usize] = Some(if in_place { template } else { k as u32 });
+        }
+        first
+    };
+    made.sort_by_key(|&(index, _)| index);
+    shape_spots.sort_by_key(|&(index, _)| index);
+    p.scene.fixtures = made.into_iter().map(|(_, fixture)| fixture).collect();
+    for (_, spot) in shape_spots {
+        p.origins.fixture_shapes.push(spot);
+    }
+    move_kept_of_templates(p, &first_made);
     Ok(())
 }
 
@@ -56,11 +154,7 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
 /// its unknown attributes to `<World>`, what it held inside to the world's end, as a
 /// container holds nothing but its items; the comments around it stay at the end of
 /// `<Fixtures>`.
-fn move_kept_of_templates(p: &mut Arena, templates: usize) {
-    let mut first_made = vec![None; templates];
-    for (k, pair) in p.origins.pairs.iter().enumerate().rev() {
-        first_made[pair.fixture.0 as usize] = Some(k as u32);
-    }
+fn move_kept_of_templates(p: &mut Arena, first_made: &[Option<u32>]) {
     for kept in &mut p.scene.kept {
         let Object::Fixture(template) = kept.object else { continue };
         (kept.object, kept.place) = match (first_made[template as usize], kept.place) {

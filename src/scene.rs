@@ -262,14 +262,16 @@ impl Shape {
     }
 }
 
-/// Collision filtering, as Box2D's `b2Filter`.
+/// Collision filtering, as Box2D's `b2Filter`. The bits are the file's 32 (Farseer's
+/// categories are 32-bit flags; Box2D v3's filters hold 64 bits, Box2D 2.4's 16, whose
+/// adapter reports `B2S_CODE_LOSSY_FILTER` where that changes what collides).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Filter {
     /// Default 0x0001.
-    pub category_bits: u16,
+    pub category_bits: u32,
     /// Default 0xFFFF.
-    pub mask_bits: u16,
+    pub mask_bits: u32,
     /// Default 0. Groups always win over category and mask bits.
     pub group_index: i16,
 }
@@ -582,9 +584,11 @@ impl Joint {
 pub struct UserData {
     /// The exact XML between `<UserData>` and `</UserData>`, entities not decoded.
     pub raw: Str,
-    /// The `Type` text when the content has the editor's form (`System.String`), else NULL.
+    /// The `Type` text when the content has the editor's form, whatever the type
+    /// (`System.String`, or a program's own class such as `Game.Payload, Game`), else NULL.
     pub type_name: Str,
-    /// The text of the `Value` element's single child in the editor's form, else NULL.
+    /// The text of the `Value` element's single child in the editor's form when that child
+    /// holds only text (`Ground`), else NULL (an object's fields are in `raw`).
     pub value: Str,
 }
 
@@ -683,11 +687,63 @@ impl Kept<KeptText> {
     }
 }
 
+/// A form of the format, as one writer wrote it and one reader reads it (spec section 11):
+/// the values of `b2s_write_options.dialect` and of `b2s_scene_dialect`.
+#[repr(u32)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Dialect {
+    /// The editor's form and box2scene's own: Version 1, or 2 where the scene needs it,
+    /// defaults omitted unless every field is asked for.
+    Box2scene = 1,
+    /// What Farseer Physics 3.3.1 (2011) reads: Version 2, every field written.
+    Farseer33 = 2,
+    /// What Farseer of July 2013 reads: Version 2 with `Id` attributes, world `Axis`.
+    Farseer2013 = 3,
+    /// What Farseer 3.5 and VelcroPhysics read: Version 3, `Bindings`.
+    Farseer35 = 4,
+    /// What Aether.Physics2D reads: Version 3, user data as `<Tag>`.
+    Aether = 5,
+}
+
+impl Dialect {
+    /// Every dialect, in the order of their numbers.
+    pub const ALL: [Dialect; 5] = [
+        Dialect::Box2scene,
+        Dialect::Farseer33,
+        Dialect::Farseer2013,
+        Dialect::Farseer35,
+        Dialect::Aether,
+    ];
+
+    /// The name the command line and the docs give it (`"farseer-3.5"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Dialect::Box2scene => "box2scene",
+            Dialect::Farseer33 => "farseer-3.3",
+            Dialect::Farseer2013 => "farseer-2013",
+            Dialect::Farseer35 => "farseer-3.5",
+            Dialect::Aether => "aether",
+        }
+    }
+
+    /// The dialect of that name.
+    pub fn named(name: &str) -> Option<Dialect> {
+        Dialect::ALL.into_iter().find(|d| d.name() == name)
+    }
+}
+
+u32_enum_conversions!(Dialect { Box2scene, Farseer33, Farseer2013, Farseer35, Aether });
+
 /// A loaded scene: immutable once built. All arrays are flat; see the field docs of each
 /// record for its cross references.
 #[derive(Debug)]
 pub struct Scene {
     pub(crate) version: u32,
+    /// The dialect of the file it was read from; box2scene's own for a built scene.
+    pub(crate) dialect: Dialect,
+    /// The joints whose file gave Farseer's world `Axis`, with it, for a writer that
+    /// writes it back as it was.
+    pub(crate) world_axes: Vec<(u32, Vec2)>,
     pub(crate) gravity: Option<Vec2>,
     pub(crate) shapes: Vec<Shape>,
     pub(crate) fixtures: Vec<Fixture>,
@@ -708,6 +764,8 @@ pub struct Scene {
 #[derive(Debug, Default)]
 pub(crate) struct SceneBuilder {
     pub version: u32,
+    pub dialect: Option<Dialect>,
+    pub world_axes: Vec<(u32, Vec2)>,
     pub gravity: Option<Vec2>,
     pub shapes: Vec<Shape>,
     pub fixtures: Vec<Fixture>,
@@ -754,6 +812,8 @@ impl SceneBuilder {
     pub fn append(&mut self, other: SceneBuilder) {
         let SceneBuilder {
             version: _,
+            dialect: _,
+            world_axes: _,
             gravity,
             shapes,
             fixtures,
@@ -826,6 +886,8 @@ impl SceneBuilder {
     pub fn freeze(self) -> Scene {
         let mut scene = Scene {
             version: self.version,
+            dialect: self.dialect.unwrap_or(Dialect::Box2scene),
+            world_axes: self.world_axes,
             gravity: self.gravity,
             shapes: self.shapes,
             fixtures: self.fixtures,
@@ -871,6 +933,11 @@ impl Scene {
     /// The file's `Version` attribute; 0 for an unversioned (legacy) file.
     pub fn version(&self) -> u32 {
         self.version
+    }
+    /// The dialect of the file it was read from (box2scene's own for a built scene): the
+    /// one a write keeps unless another is asked for.
+    pub fn dialect(&self) -> Dialect {
+        self.dialect
     }
     /// The file's `Gravity`, if it gave one (there is no default gravity).
     pub fn gravity(&self) -> Option<Vec2> {
@@ -965,7 +1032,7 @@ const _: () = {
     assert!(size_of::<Vec2>() == 8);
     assert!(size_of::<Range>() == 8);
     assert!(size_of::<Str>() == size_of::<usize>());
-    assert!(size_of::<Filter>() == 6);
+    assert!(size_of::<Filter>() == 12);
     assert!(size_of::<MassData>() == 20);
     assert!(offset_of!(Shape, kind) == size_of::<usize>());
     assert!(offset_of!(Body, mass_data) == size_of::<usize>() + 44);

@@ -208,7 +208,8 @@ fn not_a_float(s: &str) -> Finding {
 /// One pass over the bytes counts the commas (keeping the first), notes any white space,
 /// and finds the first two runs of non-white-space bytes (the parts of the white-space form).
 /// Then, in this order:
-/// - two or more commas and some white space: decimal commas, pointing at the first comma;
+/// - two or more commas and some white space, or one comma between two digits inside one of
+///   two runs: decimal commas, pointing at the first comma;
 /// - exactly one comma: the parts are either side of it (each may be padded with white space);
 /// - no comma and exactly two runs: the parts are the runs;
 /// - anything else is not a vector.
@@ -250,15 +251,8 @@ pub fn vector2(s: &str) -> Result<Vec2, Finding> {
             }
         }
     }
-    if commas > 1 && has_space {
-        return Err(bad(
-            Code::FloatDecimalComma,
-            first_comma,
-            format!(
-                "'{s}' looks like two numbers with decimal commas: the file was written with a \
-                 locale that uses one; numbers must use a decimal point"
-            ),
-        ));
+    if (commas > 1 && has_space) || (commas == 1 && runs == 2 && between_digits(s, first_comma)) {
+        return Err(decimal_commas(s, first_comma));
     }
     let ((at_x, x), (at_y, y)) = match (commas, runs) {
         (1, _) => ((0, &s[..first_comma]), (first_comma + 1, &s[first_comma + 1..])),
@@ -282,6 +276,27 @@ pub fn vector2(s: &str) -> Result<Vec2, Finding> {
         float(trimmed).map_err(|e| Finding { at: at + lead + e.at, ..e })
     };
     Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
+}
+
+/// Whether the byte at `at` of `s` has an ASCII digit on either side: `0,5`, not `1, 5`.
+fn between_digits(s: &str, at: usize) -> bool {
+    let digit =
+        |i: Option<usize>| i.and_then(|i| s.as_bytes().get(i)).is_some_and(u8::is_ascii_digit);
+    digit(at.checked_sub(1)) && digit(Some(at + 1))
+}
+
+/// A vector whose components are written with decimal commas (`0,5 -20`, `0 -9,82`), the
+/// first at `comma`.
+#[cold]
+fn decimal_commas(s: &str, comma: usize) -> Finding {
+    bad(
+        Code::FloatDecimalComma,
+        comma,
+        format!(
+            "'{s}' looks like two numbers written with decimal commas: the file was written \
+             with a locale that uses one; numbers must use a decimal point"
+        ),
+    )
 }
 
 /// The usual vector in one pass: an exact float, white space and/or one comma, an exact
@@ -376,9 +391,8 @@ pub fn id(s: &str) -> Result<u32, Finding> {
     }
 }
 
-/// Collision bits, decimal or `0x` hexadecimal. Returns the value and whether it had to be
-/// truncated to its low 16 bits.
-pub fn bits(s: &str) -> Result<(u16, bool), Finding> {
+/// Collision bits, decimal or `0x` hexadecimal, 32 of them.
+pub fn bits(s: &str) -> Result<u32, Finding> {
     let (digits, radix) = match s.strip_prefix("0x").or_else(|| s.strip_prefix("0X")) {
         Some(hex) => (hex, 16),
         None => (s.strip_prefix('+').unwrap_or(s), 10),
@@ -389,7 +403,8 @@ pub fn bits(s: &str) -> Result<(u16, bool), Finding> {
     let ok = !digits.is_empty() && digits.bytes().all(|b| char::from(b).is_digit(radix));
     let value = (ok.then(|| u64::from_str_radix(digits, radix).ok()).flatten())
         .ok_or_else(|| bad(Code::InvalidBits, 0, format!("'{s}' is not a bit mask")))?;
-    Ok(((value & 0xFFFF) as u16, value > 0xFFFF))
+    u32::try_from(value)
+        .map_err(|_| bad(Code::OutOfRange, 0, format!("bits {s} are more than 32 (4294967295)")))
 }
 
 #[cfg(test)]
@@ -488,6 +503,11 @@ mod tests {
         let e = vector2("1, x").unwrap_err();
         assert_eq!((e.code, e.at), (Code::InvalidFloat, 3));
         assert_eq!(vector2("0,5 1,5").unwrap_err().code, Code::FloatDecimalComma);
+        for (text, comma) in [("0,5 -20", 1), ("0 -9,82", 4), ("1,5\t2", 1)] {
+            let e = vector2(text).unwrap_err();
+            assert_eq!((e.code, e.at), (Code::FloatDecimalComma, comma), "{text}");
+        }
+        assert_eq!(vector2("1, 5").unwrap(), Vec2::new(1.0, 5.0));
         assert_eq!(vector2("1 NaN").unwrap_err().code, Code::NonFiniteFloat);
     }
 
@@ -511,9 +531,11 @@ mod tests {
         assert_eq!(int("-32768").unwrap(), -32768);
         assert_eq!(int("3000000000").unwrap_err().code, Code::OutOfRange);
         assert_eq!(int16("40000").unwrap_err().code, Code::OutOfRange);
-        assert_eq!(bits("0x00FF").unwrap(), (0xFF, false));
-        assert_eq!(bits("65535").unwrap(), (0xFFFF, false));
-        assert_eq!(bits("2147483647").unwrap(), (0xFFFF, true));
+        assert_eq!(bits("0x00FF").unwrap(), 0xFF);
+        assert_eq!(bits("65535").unwrap(), 0xFFFF);
+        assert_eq!(bits("2147483647").unwrap(), 0x7FFF_FFFF);
+        assert_eq!(bits("0xFFFFFFFF").unwrap(), u32::MAX);
+        assert_eq!(bits("4294967296").unwrap_err().code, Code::OutOfRange);
         assert_eq!(bits("-1").unwrap_err().code, Code::InvalidBits);
     }
 
@@ -577,16 +599,14 @@ mod tests {
             } else {
                 pieces(s, is_xml_space).filter(|(_, part)| !part.is_empty()).collect()
             };
-            if parts.len() > 2 && s.contains(',') && s.contains(is_xml_space) {
-                let comma = s.find(',').unwrap_or(0);
-                return Err(bad(
-                    Code::FloatDecimalComma,
-                    comma,
-                    format!(
-                        "'{s}' looks like two numbers with decimal commas: the file was written \
-                         with a locale that uses one; numbers must use a decimal point"
-                    ),
-                ));
+            let comma = s.find(',').unwrap_or(0);
+            let runs = pieces(s, is_xml_space).filter(|(_, part)| !part.is_empty()).count();
+            let digit = |i: usize| s.as_bytes().get(i).is_some_and(u8::is_ascii_digit);
+            let one_decimal_comma =
+                parts.len() == 2 && runs == 2 && comma > 0 && digit(comma - 1) && digit(comma + 1);
+            if (parts.len() > 2 && s.contains(',') && s.contains(is_xml_space)) || one_decimal_comma
+            {
+                return Err(super::super::decimal_commas(s, comma));
             }
             let [(at_x, x), (at_y, y)] = parts[..] else {
                 return Err(bad(

@@ -1,6 +1,9 @@
-//! Scene -> Box2Scene XML (spec section 11). What it writes reads back to the identical
-//! scene: every float bit for bit, every name, every UserData text.
+//! Scene -> Box2Scene XML (spec section 11), in box2scene's own dialect here and in those of
+//! the engines' readers in [`farseer`]. What it writes reads back to the identical scene:
+//! every float bit for bit, every name, every UserData text.
 #![forbid(unsafe_code)]
+
+mod farseer;
 
 use std::fmt::Write as _;
 
@@ -9,7 +12,8 @@ use crate::containers::Container;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::input::first_non_char;
 use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
-use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE, Object};
+use crate::scene::Object;
+use crate::scene::{Body, BodyKind, Dialect, Filter, Fixture, Joint, JointKind, Kept, NONE};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
 /// How to write.
@@ -22,10 +26,17 @@ pub struct WriteOptions {
     /// Kept so that the struct's layout stays as it was: a write runs on the calling
     /// thread, whatever this says, as one thread writes faster than a load reads.
     pub threads: u32,
+    /// The dialect to write: a `b2s_dialect` value, or 0 (the default) for the one the scene
+    /// remembers (that of the file it was loaded from; box2scene's own for a built scene).
+    /// Farseer's dialects write every field, whatever `all_fields` says.
+    pub dialect: u32,
 }
 
-/// Writes `scene` as a Box2Scene file: `Version="1"` when it uses only Version 1
-/// constructs, else `Version="2"`. A loaded scene is written with everything its file
+/// Writes `scene` as a Box2Scene file, with no XML declaration (no reader of the format
+/// wants one), in the dialect `options` names or else the one the scene remembers. In
+/// box2scene's own: `Version="1"` when it uses only Version 1 constructs, else
+/// `Version="2"`. In an engine's (spec section 11): every field, laid out as that engine's
+/// reader needs; what it cannot hold is error `dialect-cannot-hold` naming the object. A loaded scene is written with everything its file
 /// held beyond the records: comments, unknown elements and attributes, and Farseer-only
 /// joints as they were written, in their places (spec section 11). A joint of the
 /// unsupported kind with no text of its own (one a host built) has no form to write:
@@ -43,6 +54,17 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     clashing_attributes(scene)?;
     unwritable_texts(scene)?;
     unreadable_kept_text(scene)?;
+    let dialect = match options.dialect {
+        0 => remembered_dialect(scene),
+        n => Dialect::try_from(n).map_err(|n| Error {
+            code: Code::InvalidArgument,
+            position: Position::default(),
+            message: format!("{n} names no dialect (1 to {})", Dialect::ALL.len()),
+        })?,
+    };
+    if dialect != Dialect::Box2scene {
+        return farseer::write(scene, dialect).map(String::into_bytes);
+    }
     let size = estimated_size(scene);
     let mut writer = Writer {
         out: String::with_capacity(size + size / 8 + 4096),
@@ -55,6 +77,17 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     };
     writer.document();
     Ok(writer.out.into_bytes())
+}
+
+/// The dialect a write keeps when none is asked for: the one the scene was read in, when
+/// it can hold the scene (a file of an engine's dialect that was given comments, or
+/// anything else its reader would not take, is no longer that engine's), else box2scene's.
+fn remembered_dialect(scene: &Scene) -> Dialect {
+    match scene.dialect() {
+        Dialect::Box2scene => Dialect::Box2scene,
+        engine if farseer::cannot_hold(scene, engine).is_some() => Dialect::Box2scene,
+        engine => engine,
+    }
 }
 
 /// The error for the first joint of the unsupported kind that has no text of its own.
@@ -541,7 +574,6 @@ impl<'s> Writer<'s> {
     /// The whole text: the world's start tag, its gravity, its containers and their
     /// items, and its end tag, each with the kept text around it.
     fn document(&mut self) {
-        self.out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");
         self.put(|at| at == KeptAt::Before);
         self.open_typed("World", "Version", if self.version == 2 { "2" } else { "1" });
         if let Some(gravity) = self.scene.gravity() {

@@ -603,17 +603,36 @@ fn a_missing_container_is_found_before_what_follows_the_world() {
     expect_error(&xml.replace('⌖', "").replace("</World>x", "</World>⌖x"), Code::MalformedXml);
 }
 
+/// Farseer's categories are 32-bit flags, its default mask `2147483647` ("all"): all 32 bits
+/// are kept, without a word; more than 32 is an error.
 #[test]
-fn filter_bits_truncated() {
-    let xml = world(
-        CIRCLE,
-        "<Fixture><Shape>0</Shape><FilterData><MaskBits>⌖2147483647</MaskBits></FilterData></Fixture>",
-        "",
-        "",
-    );
-    expect_warning(&xml, Code::FilterBitsTruncated);
-    let scene = load(unmark(&xml).0.as_bytes(), &LoadOptions::default()).unwrap();
-    assert_eq!(scene.fixtures()[0].filter.mask_bits, 0xFFFF);
+fn filter_bits_are_kept_whole_up_to_32() {
+    let fixture = |category: &str, mask: &str| {
+        format!(
+            "<Fixture><Shape>0</Shape><FilterData><CategoryBits>{category}</CategoryBits>\
+             <MaskBits>{mask}</MaskBits></FilterData></Fixture>"
+        )
+    };
+    let xml = world(CIRCLE, &fixture("0x40000", "2147483647"), "", "");
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).unwrap();
+    assert!(scene.diagnostics().is_empty());
+    let filter = scene.fixtures()[0].filter;
+    assert_eq!((filter.category_bits, filter.mask_bits), (0x40000, 0x7FFF_FFFF));
+    let xml = world(CIRCLE, &fixture("1", "⌖4294967296"), "", "");
+    expect_error(&xml, Code::OutOfRange);
+}
+
+/// A decimal comma inside a vector, as every Farseer run on a machine with a comma locale
+/// wrote, is named for what it is, at the comma.
+#[test]
+fn a_decimal_comma_inside_a_vector() {
+    for gravity in ["0⌖,5 -20", "0 -9⌖,82"] {
+        let xml = format!(
+            "<World Version=\"1\"><Gravity>{gravity}</Gravity><Shapes/><Fixtures/><Bodies/><Joints/></World>"
+        );
+        let message = expect_error(&xml, Code::FloatDecimalComma);
+        assert!(message.contains("locale"), "{message}");
+    }
 }
 
 #[test]
@@ -1007,7 +1026,11 @@ fn a_version_3_fixtures_own_shape_and_density_are_warned_about() {
     expect_warning(&shape, Code::UnknownElement);
     let scene = load(unmark(&density).0.as_bytes(), &LoadOptions::default()).unwrap();
     assert_eq!(scene.fixtures()[0].density, 2.0, "the shape's Density attribute wins");
-    let written = box2scene::write(&scene, &box2scene::WriteOptions::default()).unwrap();
+    let box2scene = box2scene::WriteOptions {
+        dialect: box2scene::Dialect::Box2scene as u32,
+        ..Default::default()
+    };
+    let written = box2scene::write(&scene, &box2scene).unwrap();
     assert_eq!(written.matches("<Density>").count(), 1, "{written}");
     let again = load(written.as_bytes(), &LoadOptions::default()).unwrap();
     assert_eq!(again.fixtures()[0].density, 2.0);

@@ -263,3 +263,38 @@ fn a_scene_is_built_through_the_builder() {
         assert!(scene.is_null());
     }
 }
+
+#[test]
+fn a_scene_is_written_in_the_dialect_its_options_name_or_in_its_own() {
+    // Aether's reader throws on a circle's name.
+    let (scene, _, _) = load_text(&SCENE.replace("<Name>ball</Name><Radius>", "<Radius>"));
+    let write = |dialect: u32| {
+        let options = box2scene::WriteOptions { dialect, ..Default::default() };
+        let mut written = null_mut();
+        let mut error = no_error();
+        let code =
+            unsafe { b2s_write_memory(scene, &options, &mut written, null_mut(), &mut error) };
+        let xml = (!written.is_null()).then(|| text(written).to_owned());
+        unsafe { b2s_text_free(written) };
+        (code, xml, error.code)
+    };
+    unsafe {
+        assert_eq!(b2s_scene_dialect(scene), box2scene::Dialect::Box2scene as u32);
+        assert_eq!(b2s_scene_dialect(null()), 0);
+    }
+    let (code, own, _) = write(0);
+    assert_eq!(code, Code::Ok);
+    assert!(own.unwrap().starts_with("<World Version=\"1\">\n"));
+    let (code, aether, _) = write(box2scene::Dialect::Aether as u32);
+    assert_eq!(code, Code::Ok);
+    let aether = aether.unwrap();
+    assert!(aether.starts_with("<World Version=\"3\">") && aether.contains("<Tag><Type>"));
+    let (again, _, _) = load_text(&aether);
+    unsafe {
+        assert_eq!(b2s_scene_dialect(again), box2scene::Dialect::Aether as u32);
+        b2s_scene_free(again);
+    }
+    let (code, none, error) = write(6);
+    assert_eq!((code, none, error), (Code::InvalidArgument, None, Code::InvalidArgument as u32));
+    unsafe { b2s_scene_free(scene) };
+}

@@ -361,8 +361,6 @@ fn farseer_version_2_spellings_are_read() {
     assert_eq!(
         codes,
         [
-            Code::FilterBitsTruncated,
-            Code::FilterBitsTruncated,
             Code::JointStartsViolated, // the prismatic slider starts 1 m off its axis
             Code::LineJointIsWheel,
             Code::FarseerOnlyJoint,
@@ -413,7 +411,7 @@ fn farseer_version_3_pairs_bind_by_position_not_id() {
     let chain = &scene.shapes()[0];
     assert!(!chain.has_prev_vertex && !chain.has_next_vertex, "ghosts without flags are absent");
     let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code()).collect();
-    assert_eq!(codes, [Some(Code::FilterBitsTruncated)], "Ids and Tags are silent");
+    assert_eq!(codes, [], "Ids, Tags and 32-bit filter bits are silent");
 
     let v2 = load_file(&root().join("tests/scenes/farseer-v2-2013-ids.xml"));
     assert!(v2.diagnostics().is_empty(), "Ids on fixtures and bodies are silent");

@@ -5,7 +5,7 @@ use std::ffi::{OsStr, OsString};
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::{LoadOptions, WriteOptions};
+use crate::{Dialect, LoadOptions, WriteOptions};
 
 const HELP: &str = "\
 box2scene: check, dump, format and draw Box2Scene physics scenes.
@@ -49,8 +49,8 @@ Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O er
 const DUMP_HELP: &str = "\
 Usage: box2scene dump [--strict] FILE
 
-Prints the loaded scene as JSON: every field of every record, floats in their shortest
-round-trip form, the warnings included.
+Prints the loaded scene as JSON: its version and dialect, every field of every record,
+floats in their shortest round-trip form, the warnings included.
 
 Options:
   --strict     treat every warning as an error
@@ -61,15 +61,20 @@ Exit status: 0 when the file loads, 1 when it has an error, 2 on a usage or I/O 
 ";
 
 const FMT_HELP: &str = "\
-Usage: box2scene fmt [--strict] [--all-fields] [-o OUT] FILE
+Usage: box2scene fmt [--strict] [--all-fields] [--dialect NAME] [-o OUT] FILE
 
 Writes FILE in canonical form, keeping its comments and the elements box2scene does not
 know, to standard output or to OUT (which may be FILE itself: it is replaced atomically).
+It keeps the dialect FILE was in (an engine's file stays that engine's) unless --dialect
+names another.
 
 Options:
-  --strict       treat every warning as an error
-  --all-fields   write every field, also those equal to their defaults
-  -o OUT         write to OUT instead of standard output
+  --strict          treat every warning as an error
+  --all-fields      write every field, also those equal to their defaults
+  --dialect NAME    write for the reader NAME: box2scene (the editor's form),
+                    farseer-3.3, farseer-2013, farseer-3.5 (Velcro too) or aether; what
+                    that reader cannot hold is an error naming the object
+  -o OUT            write to OUT instead of standard output
   -h, --help     print this help
 
 A FILE named '-' is standard input; after '--', every argument is a FILE.
@@ -257,6 +262,13 @@ fn parse_run(verb: Verb, all: &[OsString]) -> Result<Command, Slip> {
         match text {
             "--strict" => run.load.strict = true,
             "--all-fields" if verb == Verb::Fmt => run.write.all_fields = true,
+            "--dialect" if verb == Verb::Fmt => {
+                let name = args.next().ok_or_else(|| slip("--dialect needs a NAME".to_owned()))?;
+                run.write.dialect = dialect_named(&name.to_string_lossy()).map_err(slip)?;
+            }
+            _ if verb == Verb::Fmt && text.starts_with("--dialect=") => {
+                run.write.dialect = dialect_named(&text["--dialect=".len()..]).map_err(slip)?;
+            }
             "-o" if matches!(verb, Verb::Fmt | Verb::Render) => {
                 let out = args.next().ok_or_else(|| slip("-o needs a file name".to_owned()))?;
                 run.out = Some(PathBuf::from(out));
@@ -283,6 +295,13 @@ fn parse_run(verb: Verb, all: &[OsString]) -> Result<Command, Slip> {
     run.inputs.extend(files.iter().skip(1).map(|file| Input::named(file)));
     check_inputs(&run).map_err(slip)?;
     Ok(Command::Run(run))
+}
+
+fn dialect_named(name: &str) -> Result<u32, String> {
+    Dialect::named(name).map(|d| d as u32).ok_or_else(|| {
+        let names: Vec<&str> = Dialect::ALL.iter().map(|d| d.name()).collect();
+        format!("unknown dialect '{name}' ({})", names.join(", "))
+    })
 }
 
 fn format_named(name: &str) -> Result<Format, String> {

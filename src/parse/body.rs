@@ -81,7 +81,7 @@ impl<'a> Reader<'a> {
                 BodyChild::Bindings => self.bindings(&child)?,
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
                 BodyChild::Tag => match self.arena.tag_is_user_data() {
-                    true => body.user_data = self.user_data(&child)?,
+                    true => body.user_data = self.tagged_user_data(&child)?,
                     false => self.unknown(tag, &child)?,
                 },
             }
@@ -132,6 +132,7 @@ impl<'a> Reader<'a> {
         let known: &[&str] =
             if self.arena.id_is_informational() { &["type", "id"] } else { &["type"] };
         self.unknown_attributes(tag, &attrs, known)?;
+        self.arena.origins.signs.ids |= known.len() > 1 && attrs.iter().any(|a| a.is("id"));
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(
                 Code::MissingAttribute,

@@ -1,7 +1,7 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
 use super::{Element, Reader, Seen, Tag, elements};
-use crate::error::{Code, Parsed};
+use crate::error::Parsed;
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
@@ -29,6 +29,7 @@ impl<'a> Reader<'a> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["id"] } else { &[] };
         self.unknown_attributes(tag, &attrs, known)?;
+        self.arena.origins.signs.ids |= !known.is_empty() && attrs.iter().any(|a| a.is("id"));
         let mut fixture = Fixture::default();
         let mut shape_at = None;
         let mut seen = Seen::default();
@@ -67,7 +68,7 @@ impl<'a> Reader<'a> {
                 }
                 UserData => fixture.user_data = self.user_data(&child)?,
                 FixtureChild::Tag => match self.arena.tag_is_user_data() {
-                    true => fixture.user_data = self.user_data(&child)?,
+                    true => fixture.user_data = self.tagged_user_data(&child)?,
                     false => self.unknown(tag, &child)?,
                 },
             }
@@ -101,22 +102,17 @@ impl<'a> Reader<'a> {
                     filter.group_index = self.tok.parsed(&child, text::int16)?.0
                 }
                 // Farseer's per-body collision exceptions: Box2D has no such thing.
-                FilterChild::CollisionIgnores => self.tok.skip(&child)?,
+                FilterChild::CollisionIgnores => {
+                    self.arena.origins.signs.collision_ignores = true;
+                    self.tok.skip(&child)?
+                }
             }
         }
         Ok(())
     }
 
-    /// Collision bits; above 16 bits only the low 16 are kept, with a warning.
-    fn bits(&mut self, tag: &Tag) -> Parsed<u16> {
-        let ((bits, truncated), at) = self.tok.parsed(tag, text::bits)?;
-        if truncated {
-            let message = format!(
-                "<{}> has more than 16 bits; Box2D keeps the low 16 (0x{bits:04X})",
-                tag.name()
-            );
-            self.warn(Code::FilterBitsTruncated, at, message)?;
-        }
-        Ok(bits)
+    /// Collision bits, all 32 kept.
+    fn bits(&mut self, tag: &Tag) -> Parsed<u32> {
+        Ok(self.tok.parsed(tag, text::bits)?.0)
     }
 }

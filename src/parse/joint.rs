@@ -218,6 +218,8 @@ impl<'a> Reader<'a> {
         let mut joint = Joint::new(kind);
         let mut at = Refs { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
+        // Farseer's `Axis` is in world coordinates (spec section 8.1).
+        let mut world_axis = None;
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
@@ -244,7 +246,8 @@ impl<'a> Reader<'a> {
             }
             match name {
                 Name => joint.name = self.string(&child)?,
-                UserData | Tag => joint.user_data = self.user_data(&child)?,
+                UserData => joint.user_data = self.user_data(&child)?,
+                Tag => joint.user_data = self.tagged_user_data(&child)?,
                 CollideConnected => joint.collide_connected = self.tok.boolean(&child)?,
                 BodyA => (joint.body_a, at.body_a) = self.tok.id(&child)?,
                 BodyB => (joint.body_b, at.body_b) = self.tok.id(&child)?,
@@ -260,6 +263,12 @@ impl<'a> Reader<'a> {
                     Slot::Flag(field) => *field(&mut joint) = self.tok.boolean(&child)?,
                     Slot::Ignored => self.tok.skip(&child)?,
                 },
+            }
+            // Not inside a Farseer-only joint, which every dialect writes back as it was.
+            self.arena.origins.signs.farseer_3_3 |= kind != JointKind::Unsupported
+                && matches!(name, LocalXAxis1 | LocalXAxis | Breakpoint);
+            if matches!(name, LocalAxisA | LocalXAxis1 | LocalXAxis | Axis) {
+                world_axis = (name == Axis).then_some(joint.local_axis_a);
             }
         }
         if kind == JointKind::Line && WHEEL_ONLY.into_iter().any(|element| seen.contains(element)) {
@@ -278,6 +287,10 @@ impl<'a> Reader<'a> {
             joint_b: self.spot(at.joint_b),
         };
         self.arena.origins.joints.push(origin);
+        if let Some(axis) = world_axis {
+            let index = self.arena.scene.joints.len() as u32;
+            self.arena.origins.world_axes.push((index, axis));
+        }
         self.arena.scene.joints.push(joint);
         Ok(())
     }
@@ -287,6 +300,7 @@ impl<'a> Reader<'a> {
     fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
         let wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
+        self.arena.origins.signs.farseer_3_3 = true;
         if !seen.contains(JointChild::FrequencyHz) {
             joint.frequency_hz = wheel.frequency_hz;
         }

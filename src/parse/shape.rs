@@ -120,6 +120,12 @@ impl<'a> Reader<'a> {
                 }
             }
         }
+        let flags = [ShapeChild::HasPrevVertex, ShapeChild::HasNextVertex, ShapeChild::Loop]
+            .map(|flag| seen.contains(flag));
+        if kind == ShapeKind::Chain && !shape.is_loop && flags == [false; 3] {
+            let index = self.arena.scene.shapes.len() as u32;
+            self.arena.origins.flagless_chains.push(index);
+        }
         self.check_geometry(tag, &shape)?;
         self.end_object();
         self.arena.scene.shapes.push(shape);

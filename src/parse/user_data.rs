@@ -50,7 +50,10 @@ struct EditorForm {
     types: u32,
     values: u32,
     value_children: u32,
-    /// Anything else: other elements, deeper nesting, loose text.
+    /// The value's child holds elements (an object of a program's own class): the type name
+    /// stands, the value has no text of its own.
+    value_tree: bool,
+    /// Anything else: other elements, other nesting, loose text.
     other: bool,
 }
 
@@ -59,12 +62,13 @@ impl EditorForm {
         !self.other && self.types == 1 && self.values == 1 && self.value_children == 1
     }
 
-    /// The type name and value text, trimmed, when the content has the editor's form.
+    /// The type name, trimmed, when the content has the editor's form, and the value text,
+    /// trimmed, when the value's child holds only text.
     fn texts(self) -> (Option<String>, Option<String>) {
         match self.complete() {
             true => (
                 self.type_name.map(|t| trim_xml(&t).to_owned()),
-                self.value.map(|v| trim_xml(&v).to_owned()),
+                self.value.filter(|_| !self.value_tree).map(|v| trim_xml(&v).to_owned()),
             ),
             false => (None, None),
         }
@@ -77,10 +81,18 @@ enum Inside {
     Type,
     Value,
     ValueChild,
+    /// Inside the value's child: the fields of an object.
+    ValueTree,
     Other,
 }
 
 impl<'a> Reader<'a> {
+    /// [`Reader::user_data`] of Aether.Physics2D's `<Tag>`.
+    pub(super) fn tagged_user_data(&mut self, tag: &Tag) -> Parsed<u32> {
+        self.arena.origins.signs.tags = true;
+        self.user_data(tag)
+    }
+
     /// Stores the user data of `tag` and returns its index.
     pub(super) fn user_data(&mut self, tag: &Tag) -> Parsed<u32> {
         let (raw, form) = match tag.empty {
@@ -120,6 +132,10 @@ fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Parsed<(String, EditorForm)
                         form.value.get_or_insert_with(String::new);
                         Inside::ValueChild
                     }
+                    [Inside::Value, Inside::ValueChild, ..] => {
+                        form.value_tree = true;
+                        Inside::ValueTree
+                    }
                     _ => {
                         form.other = true;
                         Inside::Other
@@ -138,6 +154,7 @@ fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Parsed<(String, EditorForm)
                     Some(Inside::ValueChild) => {
                         form.value.get_or_insert_with(String::new).push_str(t)
                     }
+                    Some(Inside::ValueTree) => {}
                     _ => form.other |= !trim_xml(t).is_empty(),
                 }
             }

@@ -1651,25 +1651,25 @@ static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 shapes_center
 }
 
 static bool b2s3_wide_bits(uint64_t bits) {
-    return (bits >> 16) != 0;
+    return (bits >> 32) != 0;
 }
 
-/* A v3 filter in the format's 16 bits: a mask with every higher bit set is "all". */
+/* A v3 filter in the format's 32 bits: a mask with every higher bit set is "all". */
 static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) {
     b2s_filter out;
-    uint64_t high_mask = f.maskBits >> 16;
+    uint64_t high_mask = f.maskBits >> 32;
     bool exact = !b2s3_wide_bits(f.categoryBits) &&
-                 (high_mask == 0 || high_mask == (UINT64_MAX >> 16)) && f.groupIndex >= INT16_MIN &&
+                 (high_mask == 0 || high_mask == (UINT64_MAX >> 32)) && f.groupIndex >= INT16_MIN &&
                  f.groupIndex <= INT16_MAX;
-    out.category_bits = (uint16_t)(f.categoryBits & 0xFFFF);
-    out.mask_bits = (uint16_t)(f.maskBits & 0xFFFF);
+    out.category_bits = (uint32_t)(f.categoryBits & 0xFFFFFFFFu);
+    out.mask_bits = (uint32_t)(f.maskBits & 0xFFFFFFFFu);
     out.group_index = (int16_t)(f.groupIndex < INT16_MIN   ? INT16_MIN
                                 : f.groupIndex > INT16_MAX ? INT16_MAX
                                                            : f.groupIndex);
     if (!exact) {
         B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
                             "its filter (category 0x%llx, mask 0x%llx, group %d) has bits "
-                            "above the format's 16 or a group beyond 16 bits; the low 16 bits "
+                            "above the format's 32 or a group beyond 16 bits; the low 32 bits "
                             "were written",
                             (unsigned long long)f.categoryBits, (unsigned long long)f.maskBits,
                             f.groupIndex);

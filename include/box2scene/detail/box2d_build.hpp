@@ -39,6 +39,7 @@ public:
 
     Built run() {
         check_gravity();
+        report_lossy_filters();
         make_shapes();
         built_.bodies.assign(view_.body_count, nullptr);
         masses_.assign(view_.body_count, b2MassData{0.0f, b2Vec2_zero, 0.0f});
@@ -397,6 +398,26 @@ private:
         return check;
     }
 
+    /// Box2D 2.4 holds 16 of the scene's 32 filter bits: reports each fixture that the cut
+    /// makes collide otherwise (a category bit above 16, or a mask meeting one in use).
+    void report_lossy_filters() {
+        const uint32_t high = 0xFFFF0000u;
+        uint32_t high_in_use = 0;
+        for (uint32_t i = 0; i < view_.fixture_count; ++i) {
+            high_in_use |= view_.fixtures[i].filter.category_bits & high;
+        }
+        for (uint32_t i = 0; high_in_use != 0 && i < view_.fixture_count; ++i) {
+            const b2s_filter& filter = view_.fixtures[i].filter;
+            if ((filter.category_bits & high) != 0 || (filter.mask_bits & high_in_use) != 0) {
+                report(B2S_CODE_LOSSY_FILTER, "fixture", i, view_.fixtures[i].name,
+                       "category bits " + std::to_string(filter.category_bits) + " and mask bits " +
+                           std::to_string(filter.mask_bits) +
+                           " reach above Box2D 2.4's 16 filter bits where categories in use "
+                           "are; the low 16 were used, so it collides otherwise");
+            }
+        }
+    }
+
     /// Whether make_fixture will create fixture `index`.
     bool fixture_creatable(uint32_t index) const {
         return index < view_.fixture_count && shape_created(view_.fixtures[index]) &&
@@ -434,8 +455,8 @@ private:
         def.friction = fixture.friction;
         def.restitution = fixture.restitution;
         def.isSensor = fixture.is_sensor;
-        def.filter.categoryBits = fixture.filter.category_bits;
-        def.filter.maskBits = fixture.filter.mask_bits;
+        def.filter.categoryBits = static_cast<uint16>(fixture.filter.category_bits);
+        def.filter.maskBits = static_cast<uint16>(fixture.filter.mask_bits);
         def.filter.groupIndex = fixture.filter.group_index;
         b2Fixture* created = body->CreateFixture(&def);
         if (withheld) {

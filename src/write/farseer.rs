@@ -1,0 +1,678 @@
+//! Scene -> the dialects that the engines' own readers read (Farseer 3.3.1, Farseer of July
+//! 2013, Farseer 3.5 and Velcro, Aether.Physics2D): spec section 11. Those readers are not XML
+//! parsers: they split the text at white space and `/ < > =`, read attributes by position,
+//! give an omitted element 0 and split a vector at one space. So every field is written, the
+//! read attributes first in the order read, each object on a line of its own in the
+//! engines' element order, and nothing they cannot tokenise; what they cannot hold is refused
+//! with an error naming the object.
+
+use super::{escaped, integer_text, push_float};
+use crate::error::{Code, Error, Position};
+use crate::resolve::local_axis;
+use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, Object, Place};
+use crate::scene::{Scene, Shape, ShapeKind, Vec2};
+
+/// Writes `scene` in `dialect` (one of the engines' own).
+pub(super) fn write(scene: &Scene, dialect: Dialect) -> Result<String, Error> {
+    let target = Target::of(dialect);
+    if let Some((object, why)) = cannot_hold(scene, dialect) {
+        return Err(Error {
+            code: Code::DialectCannotHold,
+            position: Position::default(),
+            message: format!(
+                "{object} {why}, which the {} dialect's reader cannot hold, so the scene cannot be written in it",
+                dialect.name()
+            ),
+        });
+    }
+    let shapes = WrittenShapes::of(scene);
+    let mut w = FarseerWriter { out: String::new(), scene, target, shapes };
+    w.document();
+    Ok(w.out)
+}
+
+/// What sets one target apart from the others.
+#[derive(Clone, Copy)]
+struct Target {
+    dialect: Dialect,
+    /// Version 3: shapes carry the density, bodies list `Bindings`.
+    version_3: bool,
+}
+
+impl Target {
+    fn of(dialect: Dialect) -> Target {
+        Target { dialect, version_3: matches!(dialect, Dialect::Farseer35 | Dialect::Aether) }
+    }
+
+    /// Farseer 3.3.1: no chains, no motor joint, sensors lost, `Line` with local axes.
+    fn is_3_3(self) -> bool {
+        self.dialect == Dialect::Farseer33
+    }
+}
+
+/// The first object `dialect` (one of the engines') cannot hold, and why.
+pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
+    let target = Target::of(dialect);
+    let index = |i: usize| i as u32;
+    for kept in &scene.kept {
+        let text = scene.text(kept.text).unwrap_or_default();
+        if kept.place != Place::Whole {
+            return Some((kept.object, "holds comments or unknown content".to_owned()));
+        }
+        if text.contains("<!") || text.contains("<?") {
+            return Some((kept.object, "holds a comment or a CDATA section".to_owned()));
+        }
+        if !target.is_3_3() && farseer_only_type(text) == "slider" {
+            return Some((kept.object, "is a Slider joint".to_owned()));
+        }
+        let other = if target.dialect == Dialect::Aether { "<userdata" } else { "<tag" };
+        if text.to_ascii_lowercase().contains(other) {
+            return Some((kept.object, "has user data spelled for another reader".to_owned()));
+        }
+    }
+    for (i, shape) in scene.shapes().iter().enumerate() {
+        if let Some(why) = shape_cannot(scene, shape, target) {
+            return Some((Object::Shape(index(i)), why));
+        }
+    }
+    for (i, fixture) in scene.fixtures().iter().enumerate() {
+        let object = Object::Fixture(index(i));
+        if target.is_3_3() && fixture.is_sensor {
+            return Some((object, "is a sensor".to_owned()));
+        }
+        let bits = [fixture.filter.category_bits, fixture.filter.mask_bits];
+        if bits.iter().any(|&b| b > i32::MAX as u32) {
+            return Some((object, "has filter bits above 31 (the reader reads an Int32)".into()));
+        }
+        if let Some(why) = user_data_cannot(scene, fixture.user_data) {
+            return Some((object, why));
+        }
+    }
+    for (i, body) in scene.bodies().iter().enumerate() {
+        if let Some(why) = body_cannot(body) {
+            return Some((Object::Body(index(i)), why));
+        }
+    }
+    for (i, joint) in scene.joints().iter().enumerate() {
+        let why = joint_cannot(joint, target).or_else(|| user_data_cannot(scene, joint.user_data));
+        if let Some(why) = why {
+            return Some((Object::Joint(index(i)), why));
+        }
+    }
+    None
+}
+
+fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> {
+    let kind = shape.kind()?;
+    let vertices = scene.vertices(shape);
+    let segment = kind == ShapeKind::Polygon && vertices.len() == 2;
+    let why = match kind {
+        ShapeKind::Circle | ShapeKind::Edge | ShapeKind::Chain if !shape.name.is_null() => {
+            "has a Name (an element this kind of shape may not hold there)"
+        }
+        ShapeKind::Polygon if segment && !shape.name.is_null() => {
+            "is a named two-vertex polygon (written as an edge, which may not hold a Name)"
+        }
+        ShapeKind::Polygon
+            if shape.centroid_given
+                && !segment
+                && !target.version_3
+                && !is_centroid(vertices, shape.centroid) =>
+        {
+            "has a Centroid other than its own (the reader computes it)"
+        }
+        ShapeKind::Edge if shape.has_next_vertex => "has a Vertex3 ghost",
+        ShapeKind::Chain if target.is_3_3() => "is a chain",
+        ShapeKind::Chain if !shape.is_loop && vertices.first() == vertices.last() => {
+            "is an open chain that ends where it starts (read as a loop)"
+        }
+        ShapeKind::Chain
+            if !shape.is_loop
+                && ((shape.has_prev_vertex && shape.prev_vertex == Vec2::ZERO)
+                    || (shape.has_next_vertex && shape.next_vertex == Vec2::ZERO)) =>
+        {
+            "has a ghost vertex at exactly (0, 0) (read as no ghost)"
+        }
+        _ => return None,
+    };
+    Some(why.to_owned())
+}
+
+/// Whether `centroid` is the area centroid of the polygon `vertices`, to float precision.
+fn is_centroid(vertices: &[Vec2], centroid: Vec2) -> bool {
+    let (mut area, mut cx, mut cy) = (0.0f64, 0.0f64, 0.0f64);
+    let origin = vertices[0];
+    for (a, b) in vertices.iter().zip(vertices.iter().cycle().skip(1)) {
+        let (ax, ay) = (f64::from(a.x - origin.x), f64::from(a.y - origin.y));
+        let (bx, by) = (f64::from(b.x - origin.x), f64::from(b.y - origin.y));
+        let cross = ax * by - ay * bx;
+        area += cross / 2.0;
+        (cx, cy) = (cx + cross * (ax + bx) / 6.0, cy + cross * (ay + by) / 6.0);
+    }
+    let size = vertices.iter().fold(1.0f64, |m, v| m.max(f64::from(v.x.abs().max(v.y.abs()))));
+    let near =
+        |c: f64, given: f32, o: f32| (c + f64::from(o) - f64::from(given)).abs() <= 1e-5 * size;
+    area.abs() > 0.0
+        && near(cx / area, centroid.x, origin.x)
+        && near(cy / area, centroid.y, origin.y)
+}
+
+fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
+    let user_data = scene.user_data_at(index)?;
+    let raw = scene.text(user_data.raw).unwrap_or_default();
+    // The text runs between its tags, and the tags.
+    let runs = || raw.split('<').map(|piece| piece.split_once('>').map_or(piece, |(_, text)| text));
+    let tags =
+        || raw.split('<').skip(1).map(|piece| piece.split_once('>').map_or(piece, |(tag, _)| tag));
+    let why = match scene.text(user_data.type_name) {
+        None => "has UserData not in the <Type>/<Value> form",
+        Some(ty) if !raw.trim_start().starts_with(&format!("<Type>{ty}</Type>")) => {
+            "has UserData whose <Type> is not its first element, exactly as named"
+        }
+        Some(_) if runs().any(|t| t.contains(['\t', '\r', '\n']) && !t.trim().is_empty()) => {
+            "has UserData text with a raw tab or line break (the reader deletes them)"
+        }
+        Some(_) if raw.contains("<!") || raw.contains("<?") => {
+            "has UserData holding a comment or a CDATA section"
+        }
+        Some(_) if tags().any(|tag| tag.contains('=')) => {
+            "has UserData with attributes (the reader's tokenizer takes no such values)"
+        }
+        Some(_) => return None,
+    };
+    Some(why.to_owned())
+}
+
+fn body_cannot(body: &Body) -> Option<String> {
+    let why = if body.gravity_scale.to_bits() != 1f32.to_bits() {
+        "has a GravityScale"
+    } else if body.inertia_scale.to_bits() != 1f32.to_bits() {
+        "has an InertiaScale"
+    } else {
+        let m = body.mass_data;
+        if m.mass_given || m.center_given || m.inertia_given {
+            "has MassData"
+        } else if !body.awake {
+            "is asleep (read awake)"
+        } else {
+            return None;
+        }
+    };
+    Some(why.to_owned())
+}
+
+fn joint_cannot(joint: &Joint, target: Target) -> Option<String> {
+    use JointKind::*;
+    let why = match joint.kind()? {
+        Gear => "is a gear joint",
+        Motor if target.is_3_3() => "is a motor joint",
+        Line if joint.enable_limit || joint.enable_motor => {
+            "is a Box2D 2.1 line joint with a limit or a force motor (the reader's has neither)"
+        }
+        Weld if [joint.reference_angle, joint.frequency_hz, joint.damping_ratio]
+            .iter()
+            .any(|v| v.to_bits() != 0) =>
+        {
+            "is a weld joint with a ReferenceAngle or a spring (the reader reads only its anchors)"
+        }
+        Pulley
+            if !target.is_3_3()
+                && (joint.max_length_a.to_bits() != 0 || joint.max_length_b.to_bits() != 0) =>
+        {
+            "is a pulley with MaxLengthA or MaxLengthB"
+        }
+        _ => return None,
+    };
+    Some(why.to_owned())
+}
+
+/// The `Type` of a Farseer-only joint's text, lower case ("angle", "slider").
+fn farseer_only_type(text: &str) -> String {
+    let lower = text.to_ascii_lowercase();
+    let after = lower.split_once("type").map_or("", |(_, rest)| rest);
+    let value = after.trim_start_matches(|c: char| c == '=' || c.is_whitespace() || c == '"');
+    value.chars().take_while(char::is_ascii_alphabetic).collect()
+}
+
+/// The shapes as written: the engines keep a density on the shape, so a shape that fixtures
+/// of different densities share is written once per density (the first keeps its place, the
+/// others follow the scene's shapes).
+struct WrittenShapes {
+    /// Per written shape: the scene's shape and its density.
+    shapes: Vec<(u32, f32)>,
+    /// Per fixture: its written shape.
+    of_fixture: Vec<u32>,
+}
+
+impl WrittenShapes {
+    fn of(scene: &Scene) -> WrittenShapes {
+        let mut density: Vec<Option<f32>> = vec![None; scene.shapes().len()];
+        let mut shapes: Vec<(u32, f32)> = Vec::new();
+        let mut of_fixture = Vec::with_capacity(scene.fixtures().len());
+        let mut extra: Vec<(u32, f32)> = Vec::new();
+        for fixture in scene.fixtures() {
+            let own = density[fixture.shape as usize].get_or_insert(fixture.density);
+            if own.to_bits() == fixture.density.to_bits() {
+                of_fixture.push(fixture.shape);
+                continue;
+            }
+            let found = extra
+                .iter()
+                .position(|&(s, d)| s == fixture.shape && d.to_bits() == fixture.density.to_bits());
+            let at = found.unwrap_or_else(|| {
+                extra.push((fixture.shape, fixture.density));
+                extra.len() - 1
+            });
+            of_fixture.push((scene.shapes().len() + at) as u32);
+        }
+        for (s, d) in density.iter().enumerate() {
+            shapes.push((s as u32, d.unwrap_or(0.0)));
+        }
+        shapes.extend(extra);
+        WrittenShapes { shapes, of_fixture }
+    }
+}
+
+struct FarseerWriter<'s> {
+    out: String,
+    scene: &'s Scene,
+    target: Target,
+    shapes: WrittenShapes,
+}
+
+impl FarseerWriter<'_> {
+    fn document(&mut self) {
+        let version = if self.target.version_3 { "3" } else { "2" };
+        for piece in ["<World Version=\"", version, "\">\n"] {
+            self.out.push_str(piece);
+        }
+        if let Some(gravity) = self.scene.gravity() {
+            self.out.push_str("  ");
+            self.vector("Gravity", gravity);
+            self.out.push('\n');
+        }
+        let scene = self.scene;
+        self.out.push_str("  <Shapes>\n");
+        for i in 0..self.shapes.shapes.len() {
+            let (shape, density) = self.shapes.shapes[i];
+            self.shape(&scene.shapes()[shape as usize], density);
+        }
+        self.out.push_str("  </Shapes>\n  <Fixtures>\n");
+        for (i, fixture) in scene.fixtures().iter().enumerate() {
+            self.fixture(i, fixture);
+        }
+        self.out.push_str("  </Fixtures>\n  <Bodies>\n");
+        for body in scene.bodies() {
+            self.body(body);
+        }
+        self.out.push_str("  </Bodies>\n  <Joints>\n");
+        for (i, joint) in scene.joints().iter().enumerate() {
+            self.joint(i, joint);
+        }
+        self.out.push_str("  </Joints>\n</World>\n");
+    }
+
+    fn element(&mut self, name: &str, text: impl FnOnce(&mut String)) {
+        for piece in ["<", name, ">"] {
+            self.out.push_str(piece);
+        }
+        text(&mut self.out);
+        for piece in ["</", name, ">"] {
+            self.out.push_str(piece);
+        }
+    }
+
+    fn vector(&mut self, name: &str, v: Vec2) {
+        self.element(name, |out| {
+            push_float(out, v.x);
+            out.push(' ');
+            push_float(out, v.y);
+        });
+    }
+
+    fn number(&mut self, name: &str, value: f32) {
+        self.element(name, |out| push_float(out, value));
+    }
+
+    fn integer(&mut self, name: &str, value: impl Into<i64>) {
+        let value = value.into();
+        self.element(name, |out| out.push_str(integer_text(value, &mut [0; 20])));
+    }
+
+    fn flag(&mut self, name: &str, value: bool) {
+        self.element(name, |out| out.push_str(if value { "true" } else { "false" }));
+    }
+
+    fn name(&mut self, name: crate::scene::Str) {
+        if let Some(text) = self.scene.text(name) {
+            self.element("Name", |out| escaped(text, |piece| out.push_str(piece)));
+        }
+    }
+
+    /// The user data on a line of its own, as `<UserData>` (`<Tag>` for Aether).
+    fn user_data(&mut self, index: u32) {
+        let Some(user_data) = self.scene.user_data_at(index) else { return };
+        let raw = self.scene.text(user_data.raw).unwrap_or_default();
+        let name = if self.target.dialect == Dialect::Aether { "Tag" } else { "UserData" };
+        self.out.push_str("\n      ");
+        self.element(name, |out| out.push_str(raw));
+    }
+
+    fn shape(&mut self, shape: &Shape, density: f32) {
+        let vertices = self.scene.vertices(shape);
+        let kind = match shape.kind().unwrap_or(ShapeKind::Circle) {
+            // Box2D 2.1's SetAsEdge: a line segment, which the engines hold as an edge.
+            ShapeKind::Polygon if vertices.len() == 2 => ShapeKind::Edge,
+            kind => kind,
+        };
+        let ty = match kind {
+            ShapeKind::Circle => "Circle",
+            ShapeKind::Polygon => "Polygon",
+            ShapeKind::Edge => "Edge",
+            ShapeKind::Chain => "Chain",
+        };
+        for piece in ["    <Shape Type=\"", ty, "\""] {
+            self.out.push_str(piece);
+        }
+        if self.target.version_3 {
+            self.out.push_str(" Density=\"");
+            push_float(&mut self.out, density);
+            self.out.push('"');
+        }
+        self.out.push('>');
+        match kind {
+            ShapeKind::Circle => {
+                self.number("Radius", shape.radius);
+                self.vector("Position", shape.position);
+            }
+            ShapeKind::Polygon => {
+                self.name(shape.name);
+                self.vertices(vertices, None);
+                if shape.centroid_given {
+                    self.vector("Centroid", shape.centroid);
+                }
+            }
+            ShapeKind::Edge => {
+                self.vector("Vertex1", vertices[0]);
+                self.vector("Vertex2", vertices[1]);
+                if shape.has_prev_vertex {
+                    self.flag("HasVertex0", true);
+                    self.vector("Vertex0", shape.prev_vertex);
+                }
+            }
+            ShapeKind::Chain if shape.is_loop => {
+                // As the engines build a loop: the first vertex again at the end, the
+                // neighbours of the seam as ghosts.
+                self.vertices(vertices, vertices.first().copied());
+                self.vector("NextVertex", vertices[1]);
+                self.vector("PrevVertex", vertices[vertices.len() - 1]);
+            }
+            ShapeKind::Chain => {
+                self.vertices(vertices, None);
+                if shape.has_next_vertex {
+                    self.vector("NextVertex", shape.next_vertex);
+                }
+                if shape.has_prev_vertex {
+                    self.vector("PrevVertex", shape.prev_vertex);
+                }
+            }
+        }
+        self.out.push_str("</Shape>\n");
+    }
+
+    fn vertices(&mut self, vertices: &[Vec2], then: Option<Vec2>) {
+        self.out.push_str("<Vertices>");
+        for &v in vertices.iter().chain(then.as_ref()) {
+            self.vector("Vertex", v);
+        }
+        self.out.push_str("</Vertices>");
+    }
+
+    fn fixture(&mut self, index: usize, fixture: &Fixture) {
+        self.out.push_str("    <Fixture");
+        if !self.target.is_3_3() {
+            self.out.push_str(" Id=\"");
+            self.out.push_str(integer_text(index as i64, &mut [0; 20]));
+            self.out.push('"');
+        }
+        self.out.push('>');
+        if !self.target.version_3 {
+            self.integer("Shape", self.shapes.of_fixture[index]);
+            self.number("Density", fixture.density);
+        }
+        self.name(fixture.name);
+        self.out.push_str("<FilterData>");
+        let filter = fixture.filter;
+        self.integer("CategoryBits", filter.category_bits);
+        self.integer("MaskBits", filter.mask_bits);
+        self.integer("GroupIndex", filter.group_index);
+        self.out.push_str("</FilterData>");
+        self.number("Friction", fixture.friction);
+        self.flag("IsSensor", fixture.is_sensor);
+        self.number("Restitution", fixture.restitution);
+        self.user_data(fixture.user_data);
+        self.out.push_str("</Fixture>\n");
+    }
+
+    fn body(&mut self, body: &Body) {
+        let ty = match body.kind().unwrap_or(BodyKind::Static) {
+            BodyKind::Static => "Static",
+            BodyKind::Kinematic => "Kinematic",
+            BodyKind::Dynamic => "Dynamic",
+        };
+        // Farseer of 2013 reads its first attribute as an integer.
+        let id = if self.target.dialect == Dialect::Farseer2013 { "Id=\"0\" " } else { "" };
+        for piece in ["    <Body ", id, "Type=\"", ty, "\">\n      "] {
+            self.out.push_str(piece);
+        }
+        self.name(body.name);
+        self.flag("Active", body.active);
+        self.flag("AllowSleep", body.allow_sleep);
+        self.number("Angle", body.angle);
+        self.number("AngularDamping", body.angular_damping);
+        self.number("AngularVelocity", body.angular_velocity);
+        self.flag("Awake", body.awake);
+        self.flag("Bullet", body.bullet);
+        self.flag("FixedRotation", body.fixed_rotation);
+        self.number("LinearDamping", body.linear_damping);
+        self.vector("LinearVelocity", body.linear_velocity);
+        self.vector("Position", body.position);
+        self.user_data(body.user_data);
+        self.out.push_str("\n      ");
+        let ids = self.scene.body_fixtures(body);
+        match (self.target.version_3, ids.is_empty()) {
+            (false, true) => self.out.push_str("<Fixtures />"),
+            (true, true) => self.out.push_str("<Bindings />"),
+            (false, false) => {
+                self.out.push_str("<Fixtures>");
+                for &id in ids {
+                    self.integer("ID", id);
+                }
+                self.out.push_str("</Fixtures>");
+            }
+            (true, false) => {
+                self.out.push_str("<Bindings>");
+                for &id in ids {
+                    let shape = self.shapes.of_fixture[id as usize];
+                    let mut buffer = [0; 20];
+                    for piece in ["<Pair FixtureId=\"", integer_text(id.into(), &mut buffer)] {
+                        self.out.push_str(piece);
+                    }
+                    for piece in ["\" ShapeId=\"", integer_text(shape.into(), &mut buffer), "\" />"]
+                    {
+                        self.out.push_str(piece);
+                    }
+                }
+                self.out.push_str("</Bindings>");
+            }
+        }
+        self.out.push_str("\n    </Body>\n");
+    }
+
+    /// The axis of a prismatic or wheel joint as the target reads it: Farseer 3.3.1 in body
+    /// A's frame, the later ones in world coordinates.
+    fn axis(&mut self, index: usize, joint: &Joint, local_name: &str) {
+        if self.target.is_3_3() {
+            self.vector(local_name, joint.local_axis_a);
+            return;
+        }
+        let kept = self.scene.world_axes.iter().find(|&&(j, _)| j as usize == index);
+        let angle = self.scene.bodies()[joint.body_a as usize].angle;
+        let world = match kept {
+            Some(&(_, world)) => world,
+            None => world_axis(joint.local_axis_a, angle),
+        };
+        self.vector("Axis", world);
+    }
+
+    fn joint(&mut self, index: usize, joint: &Joint) {
+        let kept = self.scene.kept(Object::Joint(index as u32));
+        if let Some(whole) = kept.iter().find(|k| k.place == Place::Whole) {
+            self.out.push_str("    ");
+            self.out.push_str(self.scene.text(whole.text).unwrap_or_default());
+            self.out.push('\n');
+            return;
+        }
+        use JointKind::*;
+        let kind = joint.kind().unwrap_or(Revolute);
+        let ty = match kind {
+            Line if self.target.is_3_3() => "Line",
+            Line | Wheel if !self.target.is_3_3() => "Wheel",
+            Wheel => "Line",
+            _ => joint_type_name(kind),
+        };
+        for piece in ["    <Joint Type=\"", ty, "\">"] {
+            self.out.push_str(piece);
+        }
+        self.integer("BodyA", joint.body_a);
+        self.integer("BodyB", joint.body_b);
+        self.flag("CollideConnected", joint.collide_connected);
+        if !joint.name.is_null() {
+            self.out.push_str("\n      ");
+            self.name(joint.name);
+        }
+        self.user_data(joint.user_data);
+        self.out.push_str("\n      ");
+        let anchors = |w: &mut Self| {
+            w.vector("LocalAnchorA", joint.local_anchor_a);
+            w.vector("LocalAnchorB", joint.local_anchor_b);
+        };
+        match kind {
+            Revolute => {
+                self.flag("EnableLimit", joint.enable_limit);
+                self.flag("EnableMotor", joint.enable_motor);
+                anchors(self);
+                self.number("LowerAngle", joint.lower_limit);
+                self.number("MaxMotorTorque", joint.max_motor_torque);
+                self.number("MotorSpeed", joint.motor_speed);
+                self.number("ReferenceAngle", joint.reference_angle);
+                self.number("UpperAngle", joint.upper_limit);
+            }
+            Prismatic => {
+                self.flag("EnableLimit", joint.enable_limit);
+                self.flag("EnableMotor", joint.enable_motor);
+                anchors(self);
+                self.axis(index, joint, "LocalXAxis1");
+                self.number("LowerTranslation", joint.lower_limit);
+                self.number("UpperTranslation", joint.upper_limit);
+                self.number("MaxMotorForce", joint.max_motor_force);
+                self.number("MotorSpeed", joint.motor_speed);
+                self.number("ReferenceAngle", joint.reference_angle);
+            }
+            Distance => {
+                self.number("DampingRatio", joint.damping_ratio);
+                self.number("FrequencyHz", joint.frequency_hz);
+                self.number("Length", joint.length);
+                anchors(self);
+            }
+            Pulley if self.target.is_3_3() => {
+                self.vector("GroundAnchorA", joint.ground_anchor_a);
+                self.vector("GroundAnchorB", joint.ground_anchor_b);
+                self.number("LengthA", joint.length_a);
+                self.number("LengthB", joint.length_b);
+                anchors(self);
+                self.number("MaxLengthA", joint.max_length_a);
+                self.number("MaxLengthB", joint.max_length_b);
+                self.number("Ratio", joint.ratio);
+            }
+            Pulley => {
+                self.vector("WorldAnchorA", joint.ground_anchor_a);
+                self.vector("WorldAnchorB", joint.ground_anchor_b);
+                self.number("LengthA", joint.length_a);
+                self.number("LengthB", joint.length_b);
+                anchors(self);
+                self.number("Ratio", joint.ratio);
+                self.number("Constant", joint.length_a + joint.ratio * joint.length_b);
+            }
+            Line | Wheel => {
+                self.flag("EnableMotor", joint.enable_motor);
+                anchors(self);
+                self.number("MotorSpeed", joint.motor_speed);
+                self.number("DampingRatio", joint.damping_ratio);
+                self.number("MaxMotorTorque", joint.max_motor_torque);
+                self.number("FrequencyHz", joint.frequency_hz);
+                self.axis(index, joint, "LocalXAxis");
+            }
+            Weld => anchors(self),
+            Friction => {
+                anchors(self);
+                self.number("MaxForce", joint.max_force);
+                self.number("MaxTorque", joint.max_torque);
+            }
+            Rope => {
+                anchors(self);
+                self.number("MaxLength", joint.max_length);
+            }
+            Motor => {
+                self.number("AngularOffset", joint.angular_offset);
+                self.vector("LinearOffset", joint.linear_offset);
+                self.number("MaxForce", joint.max_force);
+                self.number("MaxTorque", joint.max_torque);
+                self.number("CorrectionFactor", joint.correction_factor);
+            }
+            Gear | Unsupported => {}
+        }
+        self.out.push_str("</Joint>\n");
+    }
+}
+
+fn joint_type_name(kind: JointKind) -> &'static str {
+    use JointKind::*;
+    match kind {
+        Revolute => "Revolute",
+        Prismatic => "Prismatic",
+        Distance => "Distance",
+        Pulley => "Pulley",
+        Line => "Line",
+        Weld => "Weld",
+        Friction => "Friction",
+        Gear => "Gear",
+        Wheel => "Wheel",
+        Rope => "Rope",
+        Motor => "Motor",
+        Unsupported => "Unsupported",
+    }
+}
+
+/// The world axis, in f32, that a reader turning it by minus `angle` (as box2scene's and
+/// Farseer's do) reads back as exactly `local`, when one lies within a few steps of the
+/// rounded turn; else the rounded turn.
+fn world_axis(local: Vec2, angle: f32) -> Vec2 {
+    let (sin, cos) = (f64::from(angle).sin(), f64::from(angle).cos());
+    let (x, y) = (f64::from(local.x), f64::from(local.y));
+    let rounded = Vec2::new((cos * x - sin * y) as f32, (sin * x + cos * y) as f32);
+    let step = |v: f32, k: i32| {
+        let bits = v.to_bits() as i64 + if v < 0.0 { -i64::from(k) } else { i64::from(k) };
+        f32::from_bits(bits.clamp(0, u32::MAX.into()) as u32)
+    };
+    for dx in [0, -1, 1, -2, 2, -3, 3] {
+        for dy in [0, -1, 1, -2, 2, -3, 3] {
+            let candidate = Vec2::new(step(rounded.x, dx), step(rounded.y, dy));
+            let back = local_axis(candidate, angle);
+            if back.x.to_bits() == local.x.to_bits() && back.y.to_bits() == local.y.to_bits() {
+                return candidate;
+            }
+        }
+    }
+    rounded
+}
