@@ -1427,6 +1427,7 @@ fn fmt_and_render_write_through_a_link_to_a_file_not_yet_there() {
         let meta = fs::symlink_metadata(sandbox.dir.join(link)).unwrap();
         assert!(meta.file_type().is_symlink(), "{command}");
     }
+}
 
 #[test]
 fn fmt_writes_for_the_reader_dialect_names_and_keeps_an_engines_own() {

@@ -634,7 +634,7 @@ class _Build:
             )
         if not body.awake and not body.allow_sleep:
             self.report(
-                "lossy-capture",
+                "lossy-body",
                 "body",
                 index,
                 body.name,

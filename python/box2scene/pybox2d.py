@@ -131,7 +131,7 @@ class _Build:
         for i, f in enumerate(self.scene.fixtures):
             if f.category_bits >> FILTER_BITS or (f.mask_bits >> FILTER_BITS) & high not in (0, high):
                 self.report(
-                    "filter-bits-truncated",
+                    "lossy-filter",
                     "fixture",
                     i,
                     f.name,
