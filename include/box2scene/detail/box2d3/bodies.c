@@ -207,13 +207,13 @@ static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_b
                     (double)body->angle);
     }
     if (body->name != NULL && strlen(body->name) > B2S3_NAME_LENGTH) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
                     "its Name is longer than the %u bytes " B2S3_ENGINE " keeps of a name; "
                     "the body has none, and a capture writes none",
                     (unsigned)B2S3_NAME_LENGTH);
     }
     if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
                     "Awake false with AllowSleep false: " B2S3_ENGINE " creates such a body "
                     "awake (Box2D 2.x keeps it asleep until it is touched)");
     }
