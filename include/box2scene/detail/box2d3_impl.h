@@ -12,10 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Box2D v3.1's linear slop (B2_LINEAR_SLOP in its private constants.h) at one length unit
- * per metre: v3 refuses a segment no longer than it and raises a distance joint's length
- * to it. */
-#define B2S3_LINEAR_SLOP 0.005f
 /* v3 asserts that a revolute limit lies within +-0.99 pi, and clamps a reference angle to
  * +-pi (B2_PI). */
 #define B2S3_PI 3.14159265359f
@@ -24,130 +20,7 @@
  * another float computation, not an override. */
 #define B2S3_CENTROID_NOISE (0.01f * B2S3_LINEAR_SLOP)
 
-/* ---- reports */
-
-typedef struct b2s3_list {
-    b2s_box2d3_reports* reports;
-    uint32_t capacity; /* of reports->items, which grows by doubling: linear in reports */
-    bool out_of_memory;
-} b2s3_list;
-
-static char* b2s3_copy(const char* text) {
-    if (text == NULL) {
-        return NULL;
-    }
-    size_t size = strlen(text) + 1;
-    char* copy = (char*)malloc(size);
-    if (copy != NULL) {
-        memcpy(copy, text, size);
-    }
-    return copy;
-}
-
-static void b2s3_report(b2s3_list* list, b2s_code code, const char* object, uint32_t index,
-                        const char* name, const char* format, ...) {
-    char message[512];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(message, sizeof message, format, args);
-    va_end(args);
-
-    b2s_box2d3_reports* reports = list->reports;
-    if (reports->count == list->capacity) {
-        uint32_t capacity = list->capacity < 8u ? 8u : 2u * list->capacity;
-        b2s_box2d3_report* items =
-            (b2s_box2d3_report*)realloc(reports->items, capacity * sizeof(b2s_box2d3_report));
-        if (items == NULL) {
-            list->out_of_memory = true;
-            return;
-        }
-        reports->items = items;
-        list->capacity = capacity;
-    }
-    b2s_box2d3_report* report = &reports->items[reports->count];
-    report->code = code;
-    report->object = object;
-    report->index = index;
-    report->name = b2s3_copy(name);
-    report->message = b2s3_copy(message);
-    if (report->message == NULL || (name != NULL && report->name == NULL)) {
-        free((void*)report->name);
-        free((void*)report->message);
-        list->out_of_memory = true;
-        return;
-    }
-    reports->count += 1;
-}
-
-void b2s_box2d3_reports_free(b2s_box2d3_reports* reports) {
-    if (reports == NULL) {
-        return;
-    }
-    for (uint32_t i = 0; i < reports->count; ++i) {
-        free((void*)reports->items[i].name);
-        free((void*)reports->items[i].message);
-    }
-    free(reports->items);
-    reports->items = NULL;
-    reports->count = 0;
-}
-
-/* ---- the working range: the first value of one object found beyond it */
-
-typedef struct b2s3_check {
-    char problem[320];
-} b2s3_check;
-
-static bool b2s3_passed(const b2s3_check* check) {
-    return check->problem[0] == '\0';
-}
-
-static void b2s3_fail(b2s3_check* check, const char* format, ...) {
-    if (!b2s3_passed(check)) {
-        return;
-    }
-    va_list args;
-    va_start(args, format);
-    vsnprintf(check->problem, sizeof check->problem, format, args);
-    va_end(args);
-}
-
-static void b2s3_magnitude(b2s3_check* check, const char* field, float value, float bound,
-                           const char* unit) {
-    if (!(fabsf(value) <= bound)) {
-        b2s3_fail(check, "%s %.9g lies beyond Box2D v3's working range (within +-%g %s)", field,
-                  (double)value, (double)bound, unit);
-    }
-}
-
-static void b2s3_vector(b2s3_check* check, const char* field, b2s_vec2 v, float bound,
-                        const char* unit) {
-    if (!(fabsf(v.x) <= bound && fabsf(v.y) <= bound)) {
-        b2s3_fail(check,
-                  "%s (%.9g, %.9g) lies beyond Box2D v3's working range (each component "
-                  "within +-%g %s)",
-                  field, (double)v.x, (double)v.y, (double)bound, unit);
-    }
-}
-
-static void b2s3_zero_or_within(b2s3_check* check, const char* field, float value, float low,
-                                float high, const char* unit) {
-    if (value != 0.0f && !(low <= value && value <= high)) {
-        b2s3_fail(check,
-                  "%s %.9g %s lies beyond Box2D v3's working range (0 or within [%g, %g] %s)",
-                  field, (double)value, unit, (double)low, (double)high, unit);
-    }
-}
-
-static b2Vec2 b2s3_to_b2(b2s_vec2 v) {
-    b2Vec2 out = {v.x, v.y};
-    return out;
-}
-
-static b2s_vec2 b2s3_to_b2s(b2Vec2 v) {
-    b2s_vec2 out = {v.x, v.y};
-    return out;
-}
+#include "box2d3/reports.c"
 
 static bool b2s3_is_zero(b2s_vec2 v) {
     return v.x == 0.0f && v.y == 0.0f;
@@ -158,10 +31,6 @@ static bool b2s3_is_zero(b2s_vec2 v) {
 static b2Vec2 b2s3_extrapolated(b2Vec2 end, b2Vec2 inner) {
     b2Vec2 out = {end.x + (end.x - inner.x), end.y + (end.y - inner.y)};
     return out;
-}
-
-static bool b2s3_same_point(b2Vec2 a, b2Vec2 b) {
-    return a.x == b.x && a.y == b.y;
 }
 
 static bool b2s3_mass_data_given(const b2s_mass_data* given) {
@@ -221,8 +90,6 @@ typedef struct b2s3_builder {
     uint32_t* pulled;          /* per body: 1 + the joint that starts it violated, or 0 */
 } b2s3_builder;
 
-/* A report of a build or a capture: both keep their list as `list`. */
-#define B2S3_REPORT(owner, ...) b2s3_report(&(owner)->list, __VA_ARGS__)
 
 static void b2s3_beyond(b2s3_builder* b, const b2s3_check* check, const char* object,
                         uint32_t index, const char* name, const char* owner) {
