@@ -16,385 +16,20 @@
  * +-pi (B2_PI). */
 #define B2S3_PI 3.14159265359f
 #define B2S3_REVOLUTE_LIMIT (0.99f * B2S3_PI)
-/* m: a polygon's Centroid this close to the one v3 computes is the same point written by
- * another float computation, not an override. */
-#define B2S3_CENTROID_NOISE (0.01f * B2S3_LINEAR_SLOP)
-
 #include "box2d3/reports.c"
 
 static bool b2s3_is_zero(b2s_vec2 v) {
     return v.x == 0.0f && v.y == 0.0f;
 }
 
-/* `end` continued by one segment away from `inner`: a ghost vertex v3 needs where the file
- * gives none. */
-static b2Vec2 b2s3_extrapolated(b2Vec2 end, b2Vec2 inner) {
-    b2Vec2 out = {end.x + (end.x - inner.x), end.y + (end.y - inner.y)};
-    return out;
-}
-
 static bool b2s3_mass_data_given(const b2s_mass_data* given) {
     return given->mass_given || given->center_given || given->inertia_given;
 }
 
-/* ---- gravity and the world def */
-
-static bool b2s3_gravity_fits(b2s_vec2 gravity) {
-    return fabsf(gravity.x) <= B2S_BOX2D3_MAX_ACCELERATION &&
-           fabsf(gravity.y) <= B2S_BOX2D3_MAX_ACCELERATION;
-}
-
-b2Vec2 b2s_box2d3_scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
-    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-    if (view == NULL || !view->gravity_given || !b2s3_gravity_fits(view->gravity)) {
-        return fallback;
-    }
-    return b2s3_to_b2(view->gravity);
-}
-
-b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity) {
-    b2WorldDef def = b2DefaultWorldDef();
-    def.gravity = b2s_box2d3_scene_gravity(scene, fallback_gravity);
-    def.maximumLinearSpeed = B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED;
-    return def;
-}
-
-/* ---- one build */
-
-/* A shape of the scene as v3 geometry, made once and used by every fixture naming it. */
-typedef enum b2s3_geometry_kind {
-    B2S3_NONE,    /* not created (reported) */
-    B2S3_CIRCLE,
-    B2S3_POLYGON,
-    B2S3_SEGMENT,
-    B2S3_CHAIN,   /* points[0 .. point_count) with its ghosts, or a loop */
-} b2s3_geometry_kind;
-
-typedef struct b2s3_geometry {
-    b2s3_geometry_kind kind;
-    b2Circle circle;
-    b2Polygon polygon;
-    b2Segment segment;
-    b2Vec2* points;
-    int point_count;
-    bool is_loop;
-} b2s3_geometry;
-
-typedef struct b2s3_builder {
-    const struct b2s_scene_view* view;
-    b2WorldId world;
-    b2s_box2d3_built* built;
-    b2s3_list list;
-    b2s3_geometry* geometries; /* indexed like the scene's shapes */
-    b2MassData* masses;        /* each created dynamic body's, inertia about its centre */
-    uint32_t* pulled;          /* per body: 1 + the joint that starts it violated, or 0 */
-} b2s3_builder;
-
-
-static void b2s3_beyond(b2s3_builder* b, const b2s3_check* check, const char* object,
-                        uint32_t index, const char* name, const char* owner) {
-    B2S3_REPORT(b, B2S_CODE_BEYOND_BOX2D_RANGE, object, index, name, "%s%s; %s not created",
-                owner, check->problem, object);
-}
-
-static void b2s3_check_gravity(b2s3_builder* b) {
-    if (b->view->gravity_given && !b2s3_gravity_fits(b->view->gravity)) {
-        B2S3_REPORT(b, B2S_CODE_BEYOND_BOX2D_RANGE, "world", 0, NULL,
-                    "Gravity (%.9g, %.9g) lies beyond Box2D v3's working range (each "
-                    "component within +-%g m/s^2); b2s_box2d3_scene_gravity gives the host's "
-                    "fallback instead",
-                    (double)b->view->gravity.x, (double)b->view->gravity.y,
-                    (double)B2S_BOX2D3_MAX_ACCELERATION);
-    }
-}
-
-/* ---- shapes */
-
-static b2s3_check b2s3_shape_check(const b2s_shape* shape, const b2s_vec2* points,
-                                   uint32_t count) {
-    b2s3_check check = {{0}};
-    bool edge = shape->kind == B2S_SHAPE_KIND_EDGE;
-    char field[32];
-    if (shape->kind == B2S_SHAPE_KIND_CIRCLE) {
-        b2s3_magnitude(&check, "Radius", shape->radius, B2S_BOX2D3_MAX_LENGTH, "m");
-        b2s3_vector(&check, "Position", shape->position, B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    for (uint32_t i = 0; i < count && b2s3_passed(&check); ++i) {
-        snprintf(field, sizeof field, edge ? "Vertex%u" : "Vertex %u", edge ? i + 1 : i);
-        b2s3_vector(&check, field, points[i], B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    if (shape->kind == B2S_SHAPE_KIND_POLYGON && shape->centroid_given) {
-        b2s3_vector(&check, "Centroid", shape->centroid, B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    bool ghosts = edge || (shape->kind == B2S_SHAPE_KIND_CHAIN && !shape->is_loop);
-    if (ghosts && shape->has_prev_vertex) {
-        b2s3_vector(&check, edge ? "Vertex0" : "PrevVertex", shape->prev_vertex,
-                    B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    if (ghosts && shape->has_next_vertex) {
-        b2s3_vector(&check, edge ? "Vertex3" : "NextVertex", shape->next_vertex,
-                    B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    return check;
-}
-
-static bool b2s3_vertex_count_fits(const b2s_shape* shape, uint32_t count) {
-    switch (shape->kind) {
-    case B2S_SHAPE_KIND_POLYGON: return count >= 2 && count <= B2_MAX_POLYGON_VERTICES;
-    case B2S_SHAPE_KIND_EDGE: return count == 2;
-    case B2S_SHAPE_KIND_CHAIN: return count >= (shape->is_loop ? 3u : 2u);
-    default: return true;
-    }
-}
-
-/* v3 refuses (asserts against) a segment no longer than its linear slop. */
-static bool b2s3_segment_long_enough(b2Vec2 a, b2Vec2 b) {
-    return b2DistanceSquared(a, b) > B2S3_LINEAR_SLOP * B2S3_LINEAR_SLOP;
-}
-
-/* Twice the signed area of a hull, as v3's centroid computation needs it positive. */
-static float b2s3_hull_area(const b2Hull* hull) {
-    float area = 0.0f;
-    for (int i = 1; i + 1 < hull->count; ++i) {
-        b2Vec2 e1 = b2Sub(hull->points[i], hull->points[0]);
-        b2Vec2 e2 = b2Sub(hull->points[i + 1], hull->points[0]);
-        area += b2Cross(e1, e2);
-    }
-    return 0.5f * area;
-}
-
-static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* shape,
-                              const b2Vec2* points, uint32_t count, b2s3_geometry* out) {
-    if (count == 2) {
-        if (!b2s3_segment_long_enough(points[0], points[1])) {
-            B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
-                        "its two vertices are no farther apart than Box2D v3's linear slop "
-                        "(%g m); shape not created",
-                        (double)B2S3_LINEAR_SLOP);
-            return false;
-        }
-        out->kind = B2S3_SEGMENT;
-        out->segment.point1 = points[0];
-        out->segment.point2 = points[1];
-        return true;
-    }
-    b2Hull hull = b2ComputeHull(points, (int)count);
-    /* v3 asserts that a polygon's area exceeds FLT_EPSILON when it computes the centroid. */
-    if (hull.count < 3 || !(b2s3_hull_area(&hull) > 2.0f * FLT_EPSILON)) {
-        B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
-                    "Box2D v3 finds no polygon in its vertices (b2ComputeHull welds points "
-                    "closer than %g m and drops collinear ones); shape not created",
-                    (double)B2S3_LINEAR_SLOP);
-        return false;
-    }
-    out->kind = B2S3_POLYGON;
-    out->polygon = b2MakePolygon(&hull, 0.0f);
-    /* The editor writes the centroid it computed, a few ulps from v3's: that is no override. */
-    if (shape->centroid_given &&
-        b2Distance(b2s3_to_b2(shape->centroid), out->polygon.centroid) > B2S3_CENTROID_NOISE) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
-                    "its Centroid (%.9g, %.9g) cannot be given to Box2D v3, which uses the "
-                    "polygon's own (%.9g, %.9g)",
-                    (double)shape->centroid.x, (double)shape->centroid.y,
-                    (double)out->polygon.centroid.x, (double)out->polygon.centroid.y);
-    }
-    return true;
-}
-
-static bool b2s3_set_chain_points(b2s3_geometry* out, const b2Vec2* points, int count) {
-    out->points = (b2Vec2*)malloc((size_t)count * sizeof(b2Vec2));
-    if (out->points == NULL) {
-        return false;
-    }
-    memcpy(out->points, points, (size_t)count * sizeof(b2Vec2));
-    out->point_count = count;
-    out->kind = B2S3_CHAIN;
-    return true;
-}
-
-/* An open v3 chain: [prev, vertices..., next], whose first and last segments only guide
- * the ones between; a ghost the file leaves out is extrapolated from its end segment. */
-static bool b2s3_make_open_chain(b2s3_builder* b, uint32_t index, const b2s_shape* shape,
-                                 const b2Vec2* vertices, uint32_t count, b2s3_geometry* out) {
-    b2Vec2* points = (b2Vec2*)malloc(((size_t)count + 2) * sizeof(b2Vec2));
-    if (points == NULL) {
-        b->list.out_of_memory = true;
-        return false;
-    }
-    points[0] = shape->has_prev_vertex ? b2s3_to_b2(shape->prev_vertex)
-                                       : b2s3_extrapolated(vertices[0], vertices[1]);
-    memcpy(points + 1, vertices, count * sizeof(b2Vec2));
-    points[count + 1] = shape->has_next_vertex
-                            ? b2s3_to_b2(shape->next_vertex)
-                            : b2s3_extrapolated(vertices[count - 1], vertices[count - 2]);
-    bool edge = shape->kind == B2S_SHAPE_KIND_EDGE;
-    if (!shape->has_prev_vertex || !shape->has_next_vertex) {
-        const char* which = !shape->has_prev_vertex && !shape->has_next_vertex ? "both ghost vertices"
-                            : !shape->has_prev_vertex ? (edge ? "Vertex0" : "PrevVertex")
-                                                      : (edge ? "Vertex3" : "NextVertex");
-        B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
-                    "Box2D v3's chain needs a ghost vertex at each end: %s extrapolated along "
-                    "the end segment",
-                    which);
-    }
-    bool made = b2s3_set_chain_points(out, points, (int)count + 2);
-    free(points);
-    if (!made) {
-        b->list.out_of_memory = true;
-    }
-    return made;
-}
-
-/* A v3 loop needs 4 points: a 3-vertex loop gets the midpoint of its closing edge, which
- * changes no geometry. */
-static bool b2s3_make_loop(b2s3_builder* b, const b2Vec2* vertices, uint32_t count,
-                           b2s3_geometry* out) {
-    b2Vec2 points[4];
-    const b2Vec2* used = vertices;
-    int used_count = (int)count;
-    if (count == 3) {
-        points[0] = vertices[0];
-        points[1] = vertices[1];
-        points[2] = vertices[2];
-        points[3] = b2Lerp(vertices[2], vertices[0], 0.5f);
-        used = points;
-        used_count = 4;
-    }
-    if (!b2s3_set_chain_points(out, used, used_count)) {
-        b->list.out_of_memory = true;
-        return false;
-    }
-    out->is_loop = true;
-    return true;
-}
-
-/* Every segment v3 will make of the geometry (those a chain's ghosts guide included). */
-static bool b2s3_segments_long_enough(const b2s3_geometry* g) {
-    if (g->kind == B2S3_SEGMENT) {
-        return b2s3_segment_long_enough(g->segment.point1, g->segment.point2);
-    }
-    if (g->kind != B2S3_CHAIN) {
-        return true;
-    }
-    int segments = g->is_loop ? g->point_count : g->point_count - 1;
-    for (int i = 0; i < segments; ++i) {
-        if (!b2s3_segment_long_enough(g->points[i], g->points[(i + 1) % g->point_count])) {
-            return false;
-        }
-    }
-    return true;
-}
-
-static void b2s3_make_shape(b2s3_builder* b, uint32_t index) {
-    const b2s_shape* shape = &b->view->shapes[index];
-    b2s3_geometry* out = &b->geometries[index];
-    uint64_t end = (uint64_t)shape->vertices.first + shape->vertices.count;
-    if (shape->kind != B2S_SHAPE_KIND_CIRCLE && end > b->view->vertex_count) {
-        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "shape", index, shape->name,
-                    "its vertices lie outside the scene's vertex pool; shape not created");
-        return;
-    }
-    uint32_t count = shape->kind == B2S_SHAPE_KIND_CIRCLE ? 0 : shape->vertices.count;
-    const b2s_vec2* vertices = count > 0 ? b->view->vertices + shape->vertices.first : NULL;
-    if (shape->kind > B2S_SHAPE_KIND_CHAIN) {
-        B2S3_REPORT(b, B2S_CODE_UNKNOWN_TYPE, "shape", index, shape->name,
-                    "unknown shape kind %u; shape not created", (unsigned)shape->kind);
-        return;
-    }
-    if (!b2s3_vertex_count_fits(shape, count)) {
-        B2S3_REPORT(b, B2S_CODE_BAD_VERTEX_COUNT, "shape", index, shape->name,
-                    "%u vertices do not make a Box2D v3 shape; shape not created",
-                    (unsigned)count);
-        return;
-    }
-    b2s3_check check = b2s3_shape_check(shape, vertices, count);
-    if (!b2s3_passed(&check)) {
-        b2s3_beyond(b, &check, "shape", index, shape->name, "");
-        return;
-    }
-    /* b2Vec2 and b2s_vec2 are both two floats; copying keeps this independent of that. */
-    b2Vec2 points[B2_MAX_POLYGON_VERTICES];
-    b2Vec2* chain_points = NULL;
-    const b2Vec2* v = points;
-    if (count > B2_MAX_POLYGON_VERTICES) {
-        chain_points = (b2Vec2*)malloc(count * sizeof(b2Vec2));
-        if (chain_points == NULL) {
-            b->list.out_of_memory = true;
-            return;
-        }
-        v = chain_points;
-    }
-    for (uint32_t i = 0; i < count; ++i) {
-        (chain_points != NULL ? chain_points : points)[i] = b2s3_to_b2(vertices[i]);
-    }
-    bool edge_with_ghosts =
-        shape->kind == B2S_SHAPE_KIND_EDGE && (shape->has_prev_vertex || shape->has_next_vertex);
-    bool made = false;
-    switch (shape->kind) {
-    case B2S_SHAPE_KIND_CIRCLE:
-        out->kind = B2S3_CIRCLE;
-        out->circle.center = b2s3_to_b2(shape->position);
-        out->circle.radius = shape->radius;
-        made = true;
-        break;
-    case B2S_SHAPE_KIND_POLYGON: made = b2s3_make_polygon(b, index, shape, v, count, out); break;
-    case B2S_SHAPE_KIND_EDGE:
-        if (edge_with_ghosts) {
-            made = b2s3_make_open_chain(b, index, shape, v, count, out);
-        } else {
-            out->kind = B2S3_SEGMENT;
-            out->segment.point1 = v[0];
-            out->segment.point2 = v[1];
-            made = true;
-        }
-        break;
-    case B2S_SHAPE_KIND_CHAIN:
-        made = shape->is_loop ? b2s3_make_loop(b, v, count, out)
-                              : b2s3_make_open_chain(b, index, shape, v, count, out);
-        break;
-    }
-    free(chain_points);
-    if (made && !b2s3_segments_long_enough(out)) {
-        B2S3_REPORT(b,
-                    shape->kind == B2S_SHAPE_KIND_CHAIN ? B2S_CODE_DEGENERATE_CHAIN
-                                                        : B2S_CODE_DEGENERATE_EDGE,
-                    "shape", index, shape->name,
-                    "a segment of it is no longer than Box2D v3's linear slop (%g m), which "
-                    "v3 refuses; shape not created",
-                    (double)B2S3_LINEAR_SLOP);
-        made = false;
-    }
-    if (!made) {
-        free(out->points);
-        out->points = NULL;
-        out->kind = B2S3_NONE;
-    }
-}
+#include "box2d3/world.c"
+#include "box2d3/shapes.c"
 
 /* ---- bodies and their shapes */
-
-static b2s3_check b2s3_fixture_check(const b2s_fixture* fixture) {
-    b2s3_check check = {{0}};
-    b2s3_magnitude(&check, "Density", fixture->density, B2S_BOX2D3_MAX_DENSITY, "kg/m^2");
-    b2s3_magnitude(&check, "Friction", fixture->friction, B2S_BOX2D3_MAX_FRICTION, "");
-    b2s3_magnitude(&check, "Restitution", fixture->restitution, B2S_BOX2D3_MAX_FRICTION, "");
-    if (fixture->density < 0.0f || fixture->friction < 0.0f || fixture->restitution < 0.0f) {
-        b2s3_fail(&check, "a negative Density, Friction or Restitution, which Box2D v3 "
-                          "asserts against");
-    }
-    return check;
-}
-
-/* Whether fixture `index` of a body will be created: what its mass is made of. */
-static bool b2s3_fixture_creatable(const b2s3_builder* b, uint32_t index) {
-    if (index >= b->view->fixture_count) {
-        return false;
-    }
-    const b2s_fixture* fixture = &b->view->fixtures[index];
-    b2s3_check check = b2s3_fixture_check(fixture);
-    return fixture->shape < b->view->shape_count &&
-           b->geometries[fixture->shape].kind != B2S3_NONE && b2s3_passed(&check);
-}
 
 static b2MassData b2s3_geometry_mass(const b2s3_geometry* g, float density) {
     b2MassData none = {0.0f, {0.0f, 0.0f}, 0.0f};
@@ -554,6 +189,11 @@ static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
     if (body->mass_data.center_given) {
         b2s3_vector(&check, "MassData Center", body->mass_data.center, B2S_BOX2D3_MAX_LENGTH, "m");
     }
+    if (b2s3_passed(&check)) {
+        b2Vec2 placed = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
+        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH),
+                    "m");
+    }
     return check;
 }
 
@@ -585,12 +225,12 @@ static float b2s3_damping(b2s3_builder* b, uint32_t index, const b2s_body* body,
 static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* body) {
     b2BodyDef def = b2DefaultBodyDef();
     def.type = (b2BodyType)body->kind;
-    def.position = b2s3_to_b2(body->position);
     /* b2MakeRot approximates; the rotation of the file's angle is its cosine and sine. */
-    def.rotation.c = cosf(body->angle);
-    def.rotation.s = sinf(body->angle);
+    b2Rot rotation = {cosf(body->angle), sinf(body->angle)};
+    def.position = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
+    def.rotation = b2MulRot(b->placement.q, rotation);
     if (body->kind != B2S_BODY_KIND_STATIC) {
-        def.linearVelocity = b2s3_to_b2(body->linear_velocity);
+        def.linearVelocity = b2RotateVector(b->placement.q, b2s3_to_b2(body->linear_velocity));
         def.angularVelocity = body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
@@ -606,84 +246,6 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
         def.name = body->name;
     }
     return def;
-}
-
-static b2Filter b2s3_filter(const b2s_filter* filter) {
-    b2Filter out = b2DefaultFilter();
-    out.categoryBits = filter->category_bits;
-    out.maskBits = filter->mask_bits;
-    out.groupIndex = filter->group_index;
-    return out;
-}
-
-static void b2s3_make_fixture(b2s3_builder* b, uint32_t body_index, uint32_t slot,
-                              b2BodyId body) {
-    uint32_t index = b->view->fixture_ids[slot];
-    if (index >= b->view->fixture_count) {
-        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "fixture", index, NULL,
-                    "fixture %u of body %u does not exist", (unsigned)index,
-                    (unsigned)body_index);
-        return;
-    }
-    const b2s_fixture* fixture = &b->view->fixtures[index];
-    if (fixture->shape >= b->view->shape_count ||
-        b->geometries[fixture->shape].kind == B2S3_NONE) {
-        B2S3_REPORT(b, B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, fixture->name,
-                    "fixture %u of body %u names shape %u, which was not created; fixture "
-                    "skipped",
-                    (unsigned)index, (unsigned)body_index, (unsigned)fixture->shape);
-        return;
-    }
-    b2s3_check check = b2s3_fixture_check(fixture);
-    if (!b2s3_passed(&check)) {
-        char owner[64];
-        snprintf(owner, sizeof owner, "fixture %u of body %u: ", (unsigned)index,
-                 (unsigned)body_index);
-        b2s3_beyond(b, &check, "fixture", index, fixture->name, owner);
-        return;
-    }
-    const b2s3_geometry* g = &b->geometries[fixture->shape];
-    if (g->kind == B2S3_CHAIN) {
-        b2SurfaceMaterial material = b2DefaultSurfaceMaterial();
-        material.friction = fixture->friction;
-        material.restitution = fixture->restitution;
-        b2ChainDef def = b2DefaultChainDef();
-        def.points = g->points;
-        def.count = g->point_count;
-        def.isLoop = g->is_loop;
-        def.materials = &material;
-        def.materialCount = 1;
-        def.filter = b2s3_filter(&fixture->filter);
-        def.enableSensorEvents = true;
-        if (fixture->is_sensor) {
-            B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "fixture", index, fixture->name,
-                        "fixture %u of body %u is a sensor, but Box2D v3's chains have no "
-                        "sensor form; it was made a solid chain",
-                        (unsigned)index, (unsigned)body_index);
-        }
-        b->built->chains[slot] = b2CreateChain(body, &def);
-        return;
-    }
-    b2ShapeDef def = b2DefaultShapeDef();
-    def.density = fixture->density;
-    def.material.friction = fixture->friction;
-    def.material.restitution = fixture->restitution;
-    def.filter = b2s3_filter(&fixture->filter);
-    def.isSensor = fixture->is_sensor;
-    /* Box2D 2.x's sensors saw every shape; v3's see those with sensor events on. */
-    def.enableSensorEvents = true;
-    /* One mass update per body, after all its shapes: linear in the shapes, not quadratic. */
-    def.updateBodyMass = false;
-    switch (g->kind) {
-    case B2S3_CIRCLE: b->built->shapes[slot] = b2CreateCircleShape(body, &def, &g->circle); break;
-    case B2S3_POLYGON:
-        b->built->shapes[slot] = b2CreatePolygonShape(body, &def, &g->polygon);
-        break;
-    case B2S3_SEGMENT:
-        b->built->shapes[slot] = b2CreateSegmentShape(body, &def, &g->segment);
-        break;
-    default: break;
-    }
 }
 
 /* b2Body_SetMassData moves the centre of mass without carrying the velocity with it, so a
@@ -1298,76 +860,6 @@ static void b2s3_make_joint(b2s3_builder* b, uint32_t index) {
     case B2S_JOINT_KIND_MOTOR: *out = b2s3_make_motor(b, index, joint, a, bb); break;
     default: break;
     }
-}
-
-/* Every array of the result, zeroed (null ids), or false when memory runs out. */
-static bool b2s3_allocate(b2s_box2d3_built* built, const struct b2s_scene_view* view) {
-    built->body_count = view->body_count;
-    built->fixture_count = view->fixture_id_count;
-    built->joint_count = view->joint_count;
-    built->bodies = (b2BodyId*)calloc(view->body_count + 1, sizeof(b2BodyId));
-    built->shapes = (b2ShapeId*)calloc(view->fixture_id_count + 1, sizeof(b2ShapeId));
-    built->chains = (b2ChainId*)calloc(view->fixture_id_count + 1, sizeof(b2ChainId));
-    built->joints = (b2JointId*)calloc(view->joint_count + 1, sizeof(b2JointId));
-    return built->bodies != NULL && built->shapes != NULL && built->chains != NULL &&
-           built->joints != NULL;
-}
-
-void b2s_box2d3_built_free(b2s_box2d3_built* built) {
-    if (built == NULL) {
-        return;
-    }
-    free(built->bodies);
-    free(built->shapes);
-    free(built->chains);
-    free(built->joints);
-    b2s_box2d3_reports_free(&built->reports);
-    free(built);
-}
-
-b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world) {
-    b2s_box2d3_built* built = (b2s_box2d3_built*)calloc(1, sizeof(b2s_box2d3_built));
-    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-    if (built == NULL || view == NULL) {
-        return built;
-    }
-    b2s3_builder b;
-    memset(&b, 0, sizeof b);
-    b.view = view;
-    b.world = world;
-    b.built = built;
-    b.list.reports = &built->reports;
-    b.geometries = (b2s3_geometry*)calloc(view->shape_count + 1, sizeof(b2s3_geometry));
-    b.masses = (b2MassData*)calloc(view->body_count + 1, sizeof(b2MassData));
-    b.pulled = (uint32_t*)calloc(view->body_count + 1, sizeof(uint32_t));
-    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL &&
-              b.pulled != NULL;
-    if (ok) {
-        b2s3_check_gravity(&b);
-        for (uint32_t i = 0; i < view->shape_count && !b.list.out_of_memory; ++i) {
-            b2s3_make_shape(&b, i);
-        }
-        for (uint32_t i = 0; i < view->body_count && !b.list.out_of_memory; ++i) {
-            b2s3_make_body(&b, i);
-        }
-        /* Joints come after every body has its final mass: their checks depend on it. */
-        for (uint32_t i = 0; i < view->joint_count && !b.list.out_of_memory; ++i) {
-            b2s3_make_joint(&b, i);
-        }
-    }
-    if (b.geometries != NULL) {
-        for (uint32_t i = 0; i < view->shape_count; ++i) {
-            free(b.geometries[i].points);
-        }
-    }
-    free(b.geometries);
-    free(b.masses);
-    free(b.pulled);
-    if (!ok || b.list.out_of_memory) {
-        b2s_box2d3_built_free(built);
-        return NULL;
-    }
-    return built;
 }
 
 /* ---- capture */

@@ -16,6 +16,7 @@
 #include <box2d/constants.h>
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef BOX2D_DOUBLE_PRECISION
@@ -130,6 +131,65 @@ static b2ChainSegment b2s3_chain_segment(const b2Vec2* p, int n, bool loop, int 
 /* How many shapes a chain of `n` points makes. */
 static int b2s3_chain_segment_count(int n, bool loop) {
     return loop ? n : n - 3;
+}
+
+/* v3.2's loose segments make a loop of any 3 points on. */
+#define B2S3_MIN_LOOP_POINTS 3
+
+/* What a chain loses of its fixture's shape def: nothing. */
+static const char* b2s3_chain_loss(const b2ShapeDef* def) {
+    (void)def;
+    return NULL;
+}
+
+/* The built result's store of chain segments: per fixture slot, the range of its segments
+ * in one pool that grows by doubling. */
+static bool b2s3_allocate_chains(b2s3_built_t* built, uint32_t slots) {
+    built->segments = (b2s_range*)calloc(slots + 1, sizeof(b2s_range));
+    return built->segments != NULL;
+}
+
+static void b2s3_free_chains(b2s3_built_t* built) {
+    free(built->segments);
+    free(built->segment_pool);
+}
+
+/* Room for `more` ids at the end of the built segment pool of `*capacity` ids. */
+static bool b2s3_reserve_segments(b2s3_built_t* built, uint32_t* capacity, uint32_t more) {
+    if (built->segment_pool_count + more <= *capacity) {
+        return true;
+    }
+    uint32_t grown = *capacity < 16u ? 16u : 2u * *capacity;
+    while (grown < built->segment_pool_count + more) {
+        grown *= 2u;
+    }
+    b2ShapeId* pool = (b2ShapeId*)realloc(built->segment_pool, grown * sizeof(b2ShapeId));
+    if (pool == NULL) {
+        return false;
+    }
+    built->segment_pool = pool;
+    *capacity = grown;
+    return true;
+}
+
+/* A chain of `n` points as one loose chain segment per edge, in order, into the segment
+ * pool; false when memory runs out. */
+static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t slot,
+                              b2BodyId body, const b2ShapeDef* def, const b2Vec2* points, int n,
+                              bool loop) {
+    int count = b2s3_chain_segment_count(n, loop);
+    if (!b2s3_reserve_segments(built, capacity, (uint32_t)count)) {
+        return false;
+    }
+    built->segments[slot].first = built->segment_pool_count;
+    built->segments[slot].count = (uint32_t)count;
+    for (int i = 0; i < count; ++i) {
+        b2ChainSegment segment = b2s3_chain_segment(points, n, loop, i);
+        built->segment_pool[built->segment_pool_count++] =
+            b2CreateChainSegmentShape(body, def, &segment);
+    }
+    built->shapes[slot] = built->segment_pool[built->segments[slot].first];
+    return true;
 }
 
 /* ---- joints: anchors, axes and reference angles are the bodies' local frames */
