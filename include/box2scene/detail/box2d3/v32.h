@@ -15,7 +15,9 @@
 
 #include <box2d/constants.h>
 
+#include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -192,6 +194,22 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
     return true;
 }
 
+/* ---- the working range where v3.2's measurements differ from v3.1's (docs/working-range.md) */
+
+/* Friction acts at the anchors, so their levers count. */
+#define B2S3_FRICTION_AT_ANCHORS true
+/* A line or wheel joint to a body that does not move has the lever of any other kind. */
+#define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D32_MAX_LEVER
+/* A line or wheel joint is bounded by how far across its axis it starts between two
+ * dynamic bodies, in radii of gyration, not in metres. */
+#define B2S3_MAX_WHEEL_VIOLATION FLT_MAX
+#define B2S3_WHEEL_VIOLATION_GYRATIONS B2S_BOX2D32_MAX_INITIAL_VIOLATION
+/* v3.2 holds a prismatic joint whose axis runs far from body A's centre to body B's anchor,
+ * and several joints that start violated on one pair of bodies (the line or wheel joint
+ * among them left out). */
+#define B2S3_PRISMATIC_LEVER_TO_B false
+#define B2S3_MAX_PULLED_VIOLATION FLT_MAX
+
 /* ---- joints: anchors, axes and reference angles are the bodies' local frames */
 
 #define B2S3_JOINT_BASE(def) ((def).base)
@@ -221,6 +239,8 @@ static void b2s3_place_frames(b2JointDef* base, b2Vec2 anchor_a, b2Rot qa, b2Vec
 }
 
 /* Revolute and weld: frame A turned by the reference angle. */
+#define B2S3_REVOLUTE_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
+#define B2S3_WELD_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
 #define B2S3_ANGLE_FRAMES(def, f)                                                              \
     b2s3_place_frames(&(def).base, (f).anchor_a, b2s3_rotation((f).reference_angle),           \
                       (f).anchor_b, b2Rot_identity)
@@ -237,13 +257,20 @@ static void b2s3_place_frames(b2JointDef* base, b2Vec2 anchor_a, b2Rot qa, b2Vec
 #define B2S3_ANCHOR_FRAMES(def, f)                                                             \
     b2s3_place_frames(&(def).base, (f).anchor_a, b2Rot_identity, (f).anchor_b, b2Rot_identity)
 
+/* The bytes of a loss a joint def reports. */
+#define B2S3_LOSS_SIZE 320
+
 /* Friction acts at the anchors in v3.2: a motor joint driving no velocity, with the file's
- * force and torque as its limits. */
-static void b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint) {
+ * force and torque as its limits. Loses nothing (returns false). */
+static bool b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint, b2s3_frames f,
+                              char* loss) {
+    (void)loss;
+    B2S3_ANCHOR_FRAMES(*def, f);
     def->linearVelocity = b2Vec2_zero;
     def->angularVelocity = 0.0f;
     def->maxVelocityForce = joint->max_force;
     def->maxVelocityTorque = joint->max_torque;
+    return false;
 }
 
 /* s^-1: the step rate the motor joint's springs assume when they stand in for Box2D 2.x's
@@ -260,8 +287,9 @@ static float b2s3_motor_hertz(float correction_factor) {
  * CorrectionFactor v3.2's has no fields for): frame A at the offsets, so that springs drive
  * body B's origin and angle there, a critically damped spring of CorrectionFactor * 60 / 2pi
  * Hz (as quick as 2.x's correction at 60 steps a second), limited to MaxForce and MaxTorque.
- * Returns what the report says of it. */
-static const char* b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint) {
+ * Writes what the report says of it into `losses` and returns their count. */
+static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
+                          char losses[2][B2S3_LOSS_SIZE]) {
     float hertz = b2s3_motor_hertz(joint->correction_factor);
     b2s3_place_frames(&def->base, b2Vec2_zero, b2Rot_identity, b2Vec2_zero, b2Rot_identity);
     def->base.localFrameA.p.x = joint->linear_offset.x;
@@ -273,9 +301,12 @@ static const char* b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint) 
     def->angularDampingRatio = 1.0f;
     def->maxSpringForce = joint->max_force;
     def->maxSpringTorque = joint->max_torque;
-    return "Box2D v3.2's motor joint has no offsets, force limits or CorrectionFactor: its "
-           "frame A carries LinearOffset and AngularOffset, and critically damped springs of "
-           "CorrectionFactor * 60 / 2pi Hz limited to MaxForce and MaxTorque drive body B there";
+    snprintf(losses[0], B2S3_LOSS_SIZE, "%s",
+             "Box2D v3.2's motor joint has no offsets, force limits or CorrectionFactor: its "
+             "frame A carries LinearOffset and AngularOffset, and critically damped springs of "
+             "CorrectionFactor * 60 / 2pi Hz limited to MaxForce and MaxTorque drive body B "
+             "there");
+    return 1;
 }
 
 /* ---- capture */
