@@ -12,6 +12,21 @@ static inline b2Vec2 v3_position(b2BodyId body) {
     return b2Body_GetPosition(body);
 }
 
+static inline b2Vec2 v3_pos(b2Vec2 v) {
+    return v;
+}
+
+/* A revolute joint def between `a` and `b` at the anchors, its reference angle 0. */
+static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 anchor_a,
+                                                 b2Vec2 anchor_b) {
+    b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = b;
+    def.localAnchorA = anchor_a;
+    def.localAnchorB = anchor_b;
+    return def;
+}
+
 #include "v3_support.h"
 
 #endif /* BOX2SCENE_BOX2D3_SUPPORT_H */
