@@ -73,6 +73,16 @@ inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
 /// (each body's mass is computed once, after all its fixtures). A NULL scene adds nothing.
 inline Built build_world(const b2s_scene* scene, b2World& world);
 
+/// build_world with the whole scene moved by `placement` (a rotation about the world origin,
+/// then a translation), so that one scene can be built into a world several times, as a
+/// level piece or a prefab: every body's position and linear velocity is moved and its angle
+/// turned by the placement's, and a pulley's ground anchors (world points) are moved; joint
+/// anchors, local to their bodies, and everything else are not. The placement's rotation
+/// must be normalised; one that is not, or a translation not finite or beyond
+/// working_range::length, builds nothing and is reported (B2S_CODE_INVALID_ARGUMENT, on the
+/// world). The identity builds the scene as build_world does.
+inline Built build_world_at(const b2s_scene* scene, b2World& world, const b2Transform& placement);
+
 /// The values build_world passes to Box2D 2.4. The format, and the loader, accept any
 /// finite float; Box2D does not: near FLT_MAX its solver computes inf and NaN, or trips an
 /// assertion (Debian's Box2D keeps them). An object with a value beyond these bounds is not

@@ -35,9 +35,20 @@ inline b2Vec2 extrapolated(b2Vec2 end, b2Vec2 inner) {
 /// One build: the scene's view, the world, and what was made so far.
 class WorldBuilder {
 public:
-    WorldBuilder(const struct b2s_scene_view& view, b2World& world) : view_(view), world_(world) {}
+    WorldBuilder(const struct b2s_scene_view& view, b2World& world, const b2Transform& placement)
+        : view_(view), world_(world), placement_(placement),
+          placement_angle_(placement.q.GetAngle()) {}
 
     Built run() {
+        if (!placement_valid()) {
+            report(B2S_CODE_INVALID_ARGUMENT, "world", 0, nullptr,
+                   "the placement (" + decimal(placement_.p.x) + ", " + decimal(placement_.p.y) +
+                       ") turned by (" + decimal(placement_.q.c) + ", " +
+                       decimal(placement_.q.s) + ") is not finite, not within +-" +
+                       decimal(working_range::length) +
+                       " m or not a normalised rotation; nothing was built");
+            return std::move(built_);
+        }
         check_gravity();
         make_shapes();
         built_.bodies.assign(view_.body_count, nullptr);
@@ -250,6 +261,22 @@ private:
         apply_mass_data(index, body, created);
     }
 
+    /// A placement Box2D 2.4 can take: finite, within the working range, its rotation
+    /// normalised (2.4 keeps a body's angle, and the placement's rotation is added to it).
+    bool placement_valid() const {
+        const b2Transform& t = placement_;
+        float qq = t.q.c * t.q.c + t.q.s * t.q.s;
+        return std::isfinite(t.p.x) && std::isfinite(t.p.y) && std::isfinite(t.q.c) &&
+               std::isfinite(t.q.s) && std::fabs(qq - 1.0f) < 1e-4f &&
+               std::fabs(t.p.x) <= working_range::length &&
+               std::fabs(t.p.y) <= working_range::length;
+    }
+
+    /// A point of the scene's world frame where the placement puts it.
+    b2Vec2 placed(b2s_vec2 point) const {
+        return b2Mul(placement_, to_b2(point));
+    }
+
     RangeCheck body_check(const b2s_body& body) const {
         namespace range = working_range;
         RangeCheck check;
@@ -267,6 +294,10 @@ private:
         }
         if (body.mass_data.center_given) {
             check.vector("MassData Center", body.mass_data.center, range::length, "m");
+        }
+        if (check.passed()) {
+            check.vector("its placed Position", to_b2s(placed(body.position)), range::length,
+                         "m");
         }
         return check;
     }
@@ -336,12 +367,12 @@ private:
     b2BodyDef body_def(uint32_t index, const b2s_body& body) {
         b2BodyDef def;
         def.type = static_cast<b2BodyType>(body.kind);
-        def.position = to_b2(body.position);
-        def.angle = body.angle;
+        def.position = placed(body.position);
+        def.angle = body.angle + placement_angle_;
         // Box2D 2.4 keeps the velocity a static body is created with and moves the body
         // by it whenever a joint puts it in an island; static bodies never move.
         if (body.kind != B2S_BODY_KIND_STATIC) {
-            def.linearVelocity = to_b2(body.linear_velocity);
+            def.linearVelocity = b2Mul(placement_.q, to_b2(body.linear_velocity));
             def.angularVelocity = body.angular_velocity;
         }
         def.linearDamping = damping(index, body, body.linear_damping, "LinearDamping");
@@ -571,8 +602,8 @@ private:
             return joint.frequency_hz > 0.0f ? 0.0f : std::fabs(d.Length() - joint.length);
         case B2S_JOINT_KIND_ROPE: return std::max(d.Length() - joint.max_length, 0.0f);
         case B2S_JOINT_KIND_PULLEY: {
-            float now = b2Distance(pa, to_b2(joint.ground_anchor_a)) +
-                        joint.ratio * b2Distance(pb, to_b2(joint.ground_anchor_b));
+            float now = b2Distance(pa, placed(joint.ground_anchor_a)) +
+                        joint.ratio * b2Distance(pb, placed(joint.ground_anchor_b));
             return std::fabs(now - (joint.length_a + joint.ratio * joint.length_b));
         }
         default: return 0.0f; // springs, motors and friction hold nothing in place
@@ -917,8 +948,9 @@ private:
         if (!connect(index, joint, def)) {
             return;
         }
-        def.groundAnchorA = to_b2(joint.ground_anchor_a);
-        def.groundAnchorB = to_b2(joint.ground_anchor_b);
+        // The ground anchors are world points: the placement moves them with the bodies.
+        def.groundAnchorA = placed(joint.ground_anchor_a);
+        def.groundAnchorB = placed(joint.ground_anchor_b);
         def.localAnchorA = to_b2(joint.local_anchor_a);
         def.localAnchorB = to_b2(joint.local_anchor_b);
         def.lengthA = joint.length_a;
@@ -1102,6 +1134,8 @@ private:
 
     const struct b2s_scene_view& view_;
     b2World& world_;
+    b2Transform placement_;
+    float placement_angle_; // rad: what the placement adds to every body's Angle
     std::vector<std::unique_ptr<b2Shape>> shapes_; // indexed like the scene's shapes
     std::vector<b2MassData> masses_; // each dynamic body's, I about its centre of mass
     std::vector<const b2s_joint*> pulled_; // per body: the joint that starts it violated
@@ -1119,12 +1153,19 @@ inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
     return detail::to_b2(view->gravity);
 }
 
-inline Built build_world(const b2s_scene* scene, b2World& world) {
+inline Built build_world_at(const b2s_scene* scene, b2World& world,
+                            const b2Transform& placement) {
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     if (view == nullptr) {
         return Built{};
     }
-    return detail::WorldBuilder(*view, world).run();
+    return detail::WorldBuilder(*view, world, placement).run();
+}
+
+inline Built build_world(const b2s_scene* scene, b2World& world) {
+    b2Transform identity;
+    identity.SetIdentity();
+    return build_world_at(scene, world, identity);
 }
 
 } // namespace box2scene
