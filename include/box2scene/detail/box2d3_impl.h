@@ -21,305 +21,11 @@ static bool b2s3_is_zero(b2s_vec2 v) {
     return v.x == 0.0f && v.y == 0.0f;
 }
 
-static bool b2s3_mass_data_given(const b2s_mass_data* given) {
-    return given->mass_given || given->center_given || given->inertia_given;
-}
 
 #include "box2d3/world.c"
 #include "box2d3/shapes.c"
 
-/* ---- bodies and their shapes */
-
-static b2MassData b2s3_geometry_mass(const b2s3_geometry* g, float density) {
-    b2MassData none = {0.0f, {0.0f, 0.0f}, 0.0f};
-    switch (g->kind) {
-    case B2S3_CIRCLE: return b2ComputeCircleMass(&g->circle, density);
-    case B2S3_POLYGON: return b2ComputePolygonMass(&g->polygon, density);
-    default: return none;
-    }
-}
-
-/* The mass v3 gives a dynamic body with these shapes (b2Body_ApplyMassFromShapes, which
- * walks a body's shapes newest first), operation for operation so that the bits agree,
- * with a body that has none given 1 kg as Box2D 2.x did (the format's files rely on it).
- * `inertia_kept` is false when v3 would assert that the centred inertia is positive. */
-static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* densities,
-                                        size_t count, bool fixed_rotation, bool* inertia_kept) {
-    b2MassData body = {0.0f, {0.0f, 0.0f}, 0.0f};
-    b2Vec2 center = b2Vec2_zero;
-    for (size_t i = count; i-- > 0;) {
-        if (densities[i] == 0.0f) {
-            continue;
-        }
-        body.mass += shapes[i].mass;
-        center = b2MulAdd(center, shapes[i].mass, shapes[i].center);
-        body.rotationalInertia += shapes[i].rotationalInertia;
-    }
-    if (body.mass > 0.0f) {
-        float inverse = 1.0f / body.mass;
-        center = b2MulSV(inverse, center);
-    }
-    *inertia_kept = true;
-    if (body.rotationalInertia > 0.0f && !fixed_rotation) {
-        body.rotationalInertia -= body.mass * b2Dot(center, center);
-        *inertia_kept = body.rotationalInertia > 0.0f;
-    } else {
-        body.rotationalInertia = 0.0f;
-    }
-    body.center = center;
-    return body;
-}
-
-/* Box2D 2.x, which the format's files were made for, gives a dynamic body without mass
- * 1 kg at its origin; v3 would leave it at 0, unmoved by gravity. */
-static b2MassData b2s3_positive_mass(b2MassData m) {
-    if (!(m.mass > 0.0f)) {
-        m.mass = 1.0f;
-    }
-    return m;
-}
-
-/* A dynamic body's final mass data: from its shapes, then what its MassData gives. The
- * file's inertia is about the body origin, v3's about the centre of mass. */
-static b2MassData b2s3_with_mass_data(b2MassData computed, const b2s_body* body) {
-    const b2s_mass_data* given = &body->mass_data;
-    if (!b2s3_mass_data_given(given)) {
-        return computed;
-    }
-    float origin_inertia =
-        computed.rotationalInertia + computed.mass * b2Dot(computed.center, computed.center);
-    b2MassData out = computed;
-    if (given->mass_given) {
-        out.mass = given->mass;
-    }
-    /* Box2D 2.x counts a mass of 0 as 1 kg before it moves the inertia to the centre. */
-    out = b2s3_positive_mass(out);
-    if (given->center_given) {
-        out.center = b2s3_to_b2(given->center);
-    }
-    if (given->inertia_given) {
-        origin_inertia = given->inertia;
-    }
-    out.rotationalInertia = body->fixed_rotation
-                                ? 0.0f
-                                : origin_inertia - out.mass * b2Dot(out.center, out.center);
-    return out;
-}
-
-/* The mass data the adapter gives a dynamic body, or false (with `check` failed) when v3
- * would assert or the result lies beyond the working range. */
-static bool b2s3_predicted_mass(const b2s3_builder* b, const b2s_body* body, b2s3_check* check,
-                                b2MassData* out) {
-    size_t capacity = body->fixtures.count > 0 ? body->fixtures.count : 1;
-    b2MassData* masses = (b2MassData*)malloc(capacity * sizeof(b2MassData));
-    float* densities = (float*)malloc(capacity * sizeof(float));
-    if (masses == NULL || densities == NULL) {
-        free(masses);
-        free(densities);
-        return false;
-    }
-    size_t created = 0;
-    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
-    for (uint64_t slot = body->fixtures.first; slot < end && slot < b->view->fixture_id_count;
-         ++slot) {
-        uint32_t index = b->view->fixture_ids[slot];
-        if (!b2s3_fixture_creatable(b, index)) {
-            continue;
-        }
-        const b2s_fixture* fixture = &b->view->fixtures[index];
-        densities[created] = fixture->density;
-        masses[created] = b2s3_geometry_mass(&b->geometries[fixture->shape], fixture->density);
-        created += 1;
-    }
-    bool inertia_kept = true;
-    b2MassData computed =
-        b2s3_mass_from_shapes(masses, densities, created, body->fixed_rotation, &inertia_kept);
-    free(masses);
-    free(densities);
-    if (!inertia_kept) {
-        b2s3_fail(check, "its shapes leave no positive inertia about its centre of mass in "
-                         "Box2D v3's float arithmetic (which asserts)");
-    }
-    b2s3_vector(check, "its centre of mass", b2s3_to_b2s(computed.center), B2S_BOX2D3_MAX_LENGTH,
-                "m");
-    b2MassData final_mass = b2s3_positive_mass(b2s3_with_mass_data(computed, body));
-    b2s3_zero_or_within(check, "its mass", final_mass.mass, B2S_BOX2D3_MIN_MASS,
-                        B2S_BOX2D3_MAX_MASS, "kg");
-    b2s3_vector(check, "its centre of mass", b2s3_to_b2s(final_mass.center),
-                B2S_BOX2D3_MAX_LENGTH, "m");
-    if (final_mass.rotationalInertia < 0.0f) {
-        b2s3_fail(check, "its MassData leaves a negative inertia about the centre of mass "
-                         "(Inertia < Mass * |Center|^2), which Box2D v3 asserts against");
-    }
-    b2s3_zero_or_within(check, "its inertia about the centre of mass",
-                        final_mass.rotationalInertia, B2S_BOX2D3_MIN_INERTIA,
-                        B2S_BOX2D3_MAX_INERTIA, "kg m^2");
-    *out = final_mass;
-    return true;
-}
-
-static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
-    b2s3_check check = {{0}};
-    b2s3_vector(&check, "Position", body->position, B2S_BOX2D3_MAX_LENGTH, "m");
-    b2s3_magnitude(&check, "Angle", body->angle, B2S_BOX2D3_MAX_ANGLE, "rad");
-    if (body->kind != B2S_BODY_KIND_STATIC) {
-        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, B2S_BOX2D3_MAX_SPEED, "m/s");
-        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, B2S_BOX2D3_MAX_SPEED,
-                       "rad/s");
-        float limit = b2World_GetMaximumLinearSpeed(b->world);
-        float speed = b2Length(b2s3_to_b2(body->linear_velocity));
-        if (b2s3_passed(&check) && !(speed <= limit)) {
-            b2s3_fail(&check,
-                      "LinearVelocity (%.9g, %.9g) is faster than the world's maximum linear "
-                      "speed %g m/s, to which Box2D v3 would clamp it",
-                      (double)body->linear_velocity.x, (double)body->linear_velocity.y,
-                      (double)limit);
-        }
-    }
-    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, B2S_BOX2D3_MAX_DAMPING, "1/s");
-    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, B2S_BOX2D3_MAX_DAMPING,
-                   "1/s");
-    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, B2S_BOX2D3_MAX_GRAVITY_SCALE, "");
-    if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check)) {
-        b2Vec2 gravity = b2MulSV(body->gravity_scale, b2World_GetGravity(b->world));
-        b2s3_vector(&check, "GravityScale times the world's gravity", b2s3_to_b2s(gravity),
-                    B2S_BOX2D3_MAX_ACCELERATION, "m/s^2");
-    }
-    if (body->mass_data.center_given) {
-        b2s3_vector(&check, "MassData Center", body->mass_data.center, B2S_BOX2D3_MAX_LENGTH, "m");
-    }
-    if (b2s3_passed(&check)) {
-        b2Vec2 placed = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
-        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH),
-                    "m");
-    }
-    return check;
-}
-
-/* The fixtures of a body that was not created: they depend on it. */
-static void b2s3_skip_fixtures_of(b2s3_builder* b, uint32_t body_index, const b2s_body* body) {
-    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
-    for (uint64_t slot = body->fixtures.first; slot < end && slot < b->view->fixture_id_count;
-         ++slot) {
-        uint32_t index = b->view->fixture_ids[slot];
-        B2S3_REPORT(b, B2S_CODE_SKIPPED_DEPENDENT, "fixture", index,
-                    index < b->view->fixture_count ? b->view->fixtures[index].name : NULL,
-                    "fixture %u of body %u: the body was not created; fixture skipped",
-                    (unsigned)index, (unsigned)body_index);
-    }
-}
-
-/* v3 asserts against a negative damping, which the format does not forbid. */
-static float b2s3_damping(b2s3_builder* b, uint32_t index, const b2s_body* body, float value,
-                          const char* field) {
-    if (value >= 0.0f) {
-        return value;
-    }
-    B2S3_REPORT(b, B2S_CODE_NEGATIVE_VALUE, "body", index, body->name,
-                "%s %.9g is negative, which Box2D v3 does not allow; 0 was used", field,
-                (double)value);
-    return 0.0f;
-}
-
-static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* body) {
-    b2BodyDef def = b2DefaultBodyDef();
-    def.type = (b2BodyType)body->kind;
-    /* b2MakeRot approximates; the rotation of the file's angle is its cosine and sine. */
-    b2Rot rotation = {cosf(body->angle), sinf(body->angle)};
-    def.position = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
-    def.rotation = b2MulRot(b->placement.q, rotation);
-    if (body->kind != B2S_BODY_KIND_STATIC) {
-        def.linearVelocity = b2RotateVector(b->placement.q, b2s3_to_b2(body->linear_velocity));
-        def.angularVelocity = body->angular_velocity;
-    }
-    def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
-    def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");
-    def.gravityScale = body->gravity_scale;
-    def.enableSleep = body->allow_sleep;
-    def.isAwake = body->awake;
-    def.fixedRotation = body->fixed_rotation;
-    def.isBullet = body->bullet;
-    def.isEnabled = body->active;
-    /* v3 keeps 31 bytes of a name; a longer one is not cut (it could split a character). */
-    if (body->name != NULL && strlen(body->name) <= 31) {
-        def.name = body->name;
-    }
-    return def;
-}
-
-/* b2Body_SetMassData moves the centre of mass without carrying the velocity with it, so a
- * spinning body's origin would start to drift: the centre's velocity gains w x (how far it
- * moved), as Box2D 2.x's SetMassData does, which keeps the origin's velocity the file's.
- * (A body that is not awake has no velocity to carry; setting one would wake it.) */
-static void b2s3_set_mass_data(b2BodyId body, b2MassData mass) {
-    b2Vec2 old_center = b2Body_GetWorldCenterOfMass(body);
-    b2Body_SetMassData(body, mass);
-    float w = b2Body_GetAngularVelocity(body);
-    if (w == 0.0f || !b2Body_IsAwake(body)) {
-        return;
-    }
-    b2Vec2 shift = b2CrossSV(w, b2Sub(b2Body_GetWorldCenterOfMass(body), old_center));
-    b2Body_SetLinearVelocity(body, b2Add(b2Body_GetLinearVelocity(body), shift));
-}
-
-/* v3 creates a body awake when it may not sleep; Box2D 2.x kept it asleep until touched. */
-static void b2s3_check_sleep(b2s3_builder* b, uint32_t index, const b2s_body* body) {
-    if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
-                    "Awake is false and AllowSleep false: Box2D v3 creates a body that may not "
-                    "sleep awake, so it moves from the first step");
-    }
-}
-
-static void b2s3_make_body(b2s3_builder* b, uint32_t index) {
-    const b2s_body* body = &b->view->bodies[index];
-    if (body->kind > B2S_BODY_KIND_DYNAMIC) {
-        B2S3_REPORT(b, B2S_CODE_UNKNOWN_TYPE, "body", index, body->name,
-                    "unknown body kind %u; body skipped", (unsigned)body->kind);
-        b2s3_skip_fixtures_of(b, index, body);
-        return;
-    }
-    uint64_t end = (uint64_t)body->fixtures.first + body->fixtures.count;
-    if (end > b->view->fixture_id_count) {
-        B2S3_REPORT(b, B2S_CODE_ID_OUT_OF_RANGE, "body", index, body->name,
-                    "its fixture list lies outside the scene's fixture ID pool; body skipped");
-        return;
-    }
-    b2s3_check check = b2s3_body_check(b, body);
-    b2MassData mass = {0.0f, {0.0f, 0.0f}, 0.0f};
-    if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check) &&
-        !b2s3_predicted_mass(b, body, &check, &mass)) {
-        b->list.out_of_memory = true;
-        return;
-    }
-    if (!b2s3_passed(&check)) {
-        b2s3_beyond(b, &check, "body", index, body->name, "");
-        b2s3_skip_fixtures_of(b, index, body);
-        return;
-    }
-    if (fabsf(body->angle) > B2S3_PI) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
-                    "Box2D v3 keeps a rotation, not an angle: the whole turns of Angle %.9g "
-                    "are lost, and a capture writes it within +-pi",
-                    (double)body->angle);
-    }
-    b2s3_check_sleep(b, index, body);
-    b2BodyDef def = b2s3_body_def(b, index, body);
-    b2BodyId created = b2CreateBody(b->world, &def);
-    b->built->bodies[index] = created;
-    for (uint32_t slot = body->fixtures.first; slot < end; ++slot) {
-        b2s3_make_fixture(b, index, slot, created);
-    }
-    if (body->kind == B2S_BODY_KIND_DYNAMIC) {
-        b2Body_ApplyMassFromShapes(created);
-        b2MassData applied = b2Body_GetMassData(created);
-        if (b2s3_mass_data_given(&body->mass_data) || !(applied.mass > 0.0f)) {
-            b2s3_set_mass_data(created, mass);
-        }
-        b->masses[index] = mass;
-    }
-}
-
+#include "box2d3/bodies.c"
 #include "box2d3/joints.c"
 
 /* ---- capture */
@@ -452,21 +158,14 @@ static float b2s3_before_shift(float target, float shift) {
     return before;
 }
 
-static b2s_vec2 b2s3_before_shifts(b2s_vec2 velocity, b2Vec2 shift) {
+/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
+ * of mass's, w x (R local_center) away. */
+static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center, float w,
+                                     b2s_vec2 velocity) {
+    b2Vec2 center = b2TransformPoint(transform, local_center);
+    b2Vec2 shift = b2CrossSV(w, b2Sub(center, transform.p));
     b2s_vec2 out = {b2s3_before_shift(velocity.x, shift.x), b2s3_before_shift(velocity.y, shift.y)};
     return out;
-}
-
-/* The linear velocity the file gives a dynamic body is its origin's; v3 reports its centre
- * of mass's, which b2Body_ApplyMassFromShapes moved by w x (the shapes' centre - origin), and
- * the build's b2s3_set_mass_data then by w x (the final centre - the shapes'), each computed
- * as the build computes it; undone in the reverse order. */
-static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 shapes_center,
-                                     b2Vec2 final_center, float w, b2s_vec2 velocity) {
-    b2Vec2 from_shapes = b2TransformPoint(transform, shapes_center);
-    b2Vec2 moved = b2CrossSV(w, b2Sub(b2TransformPoint(transform, final_center), from_shapes));
-    b2s_vec2 before = w != 0.0f ? b2s3_before_shifts(velocity, moved) : velocity;
-    return b2s3_before_shifts(before, b2CrossSV(w, b2Sub(from_shapes, transform.p)));
 }
 
 static bool b2s3_wide_bits(uint64_t bits) {
@@ -725,9 +424,10 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     }
     body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
     if (type == b2_dynamicBody) {
-        body.linear_velocity = b2s3_origin_velocity(
-            b2Body_GetTransform(id), computed.center, b2Body_GetMassData(id).center,
-            b2Body_GetAngularVelocity(id), body.linear_velocity);
+        body.linear_velocity = b2s3_origin_velocity(b2Body_GetTransform(id),
+                                                    b2Body_GetLocalCenterOfMass(id),
+                                                    b2Body_GetAngularVelocity(id),
+                                                    body.linear_velocity);
     }
     body.angular_velocity = b2Body_GetAngularVelocity(id);
     body.linear_damping = b2Body_GetLinearDamping(id);
@@ -742,7 +442,8 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     body.name = name != NULL && name[0] != '\0' ? name : NULL;
     if (type == b2_dynamicBody) {
         b2MassData actual = b2Body_GetMassData(id);
-        if (!b2s3_same_mass(actual, b2s3_positive_mass(computed))) {
+        computed.mass = b2s3_positive(computed.mass);
+        if (!b2s3_same_mass(actual, computed)) {
             body.mass_data.mass_given = true;
             body.mass_data.mass = actual.mass;
             body.mass_data.center_given = true;

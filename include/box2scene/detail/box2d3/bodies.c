@@ -180,8 +180,7 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        /* A fixed rotation's lock does not stop the velocity it starts with. */
-        def.angularVelocity = body->fixed_rotation ? 0.0f : body->angular_velocity;
+        def.angularVelocity = body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
     def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");

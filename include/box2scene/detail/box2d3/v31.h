@@ -28,6 +28,69 @@ typedef b2s_box2d3_built b2s3_built_t;
  * it. */
 #define B2S3_LINEAR_SLOP 0.005f
 
+/* The bytes of a body's name v3.1 keeps (body.h: name[32], NUL-terminated). */
+#define B2S3_NAME_LENGTH ((size_t)31)
+
+/* ---- bodies */
+
+static void b2s3_set_pose(b2BodyDef* def, b2Vec2 position, b2Rot rotation) {
+    def->position = position;
+    def->rotation = rotation;
+}
+
+static b2Vec2 b2s3_body_position(b2BodyId body) {
+    return b2Body_GetPosition(body);
+}
+
+/* v3.1's fixed rotation gives the body no inertia; the velocity it starts with is kept. */
+static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
+    def->fixedRotation = fixed;
+}
+
+static bool b2s3_rotation_locked(b2BodyId body) {
+    return b2Body_IsFixedRotation(body);
+}
+
+/* v3.1 computes a dynamic body's mass; a kinematic one has none to compute. */
+static bool b2s3_needs_mass_update(b2BodyType type) {
+    return type == b2_dynamicBody;
+}
+
+static b2MassData b2s3_shape_mass(b2ShapeId shape) {
+    return b2Shape_GetMassData(shape);
+}
+
+/* The mass v3.1 gives a dynamic body with these shapes (b2Body_ApplyMassFromShapes, which
+ * walks a body's shapes newest first, their inertias about the body origin), operation for
+ * operation so that the bits agree; `shapes` is in creation order.
+ * `inertia_kept` is false when v3 would assert that the centred inertia is positive. */
+static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* densities,
+                                        size_t count, bool fixed_rotation, bool* inertia_kept) {
+    b2MassData body = {0.0f, {0.0f, 0.0f}, 0.0f};
+    b2Vec2 center = b2Vec2_zero;
+    for (size_t i = count; i-- > 0;) {
+        if (densities[i] == 0.0f) {
+            continue;
+        }
+        body.mass += shapes[i].mass;
+        center = b2MulAdd(center, shapes[i].mass, shapes[i].center);
+        body.rotationalInertia += shapes[i].rotationalInertia;
+    }
+    if (body.mass > 0.0f) {
+        float inverse = 1.0f / body.mass;
+        center = b2MulSV(inverse, center);
+    }
+    *inertia_kept = true;
+    if (body.rotationalInertia > 0.0f && !fixed_rotation) {
+        body.rotationalInertia -= body.mass * b2Dot(center, center);
+        *inertia_kept = body.rotationalInertia > 0.0f;
+    } else {
+        body.rotationalInertia = 0.0f;
+    }
+    body.center = center;
+    return body;
+}
+
 /* ---- chains: v3.1's own (b2ChainDef), one b2ChainId per fixture slot */
 
 /* v3.1 asserts that a loop has 4 points or more. */
