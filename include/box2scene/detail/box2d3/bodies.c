@@ -180,7 +180,11 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        def.angularVelocity = body->angular_velocity;
+        /* v3 does not turn a body whose rotation is fixed: v3.1 ignores an angular velocity
+         * set on one, and v3.2's lock does not stop the one it starts with. A spin kept
+         * under the lock throws what a joint ties to it off (it killed v3.1 in a generated
+         * level: box2d3_working_range_test). */
+        def.angularVelocity = body->fixed_rotation ? 0.0f : body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
     def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");

@@ -42,7 +42,7 @@ static b2Vec2 b2s3_body_position(b2BodyId body) {
     return b2Body_GetPosition(body);
 }
 
-/* v3.1's fixed rotation gives the body no inertia; the velocity it starts with is kept. */
+/* v3.1's fixed rotation gives the body no inertia. */
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->fixedRotation = fixed;
 }

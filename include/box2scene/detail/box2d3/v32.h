@@ -56,10 +56,6 @@ static b2Vec2 b2s3_body_position(b2BodyId body) {
  * sources zero it, so the adapter also gives such a body an inertia of 0 (bodies.c). */
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
-    /* The lock does not stop the velocity the body starts with. */
-    if (fixed) {
-        def->angularVelocity = 0.0f;
-    }
 }
 
 static bool b2s3_rotation_locked(b2BodyId body) {
