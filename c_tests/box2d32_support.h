@@ -29,6 +29,32 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     return def;
 }
 
+static inline b2Vec2 v3_local_center(b2BodyId body) {
+    return b2Body_GetLocalCenter(body);
+}
+
+static inline b2Vec2 v3_local_anchor_a(b2JointId joint) {
+    return b2Joint_GetLocalFrameA(joint).p;
+}
+
+static inline b2Vec2 v3_local_anchor_b(b2JointId joint) {
+    return b2Joint_GetLocalFrameB(joint).p;
+}
+
+/* How many segments the chain of fixture slot `slot` has (0 when it is not a chain), and
+ * up to `capacity` of them in `out` when it is not NULL. */
+static inline int v3_chain_segments(const b2s_box2d32_built* built, uint32_t slot,
+                                    b2ShapeId* out, int capacity) {
+    if (B2_IS_NULL(built->shapes[slot])) {
+        return 0;
+    }
+    int count = (int)built->segments[slot].count;
+    for (int i = 0; out != NULL && count <= capacity && i < count; ++i) {
+        out[i] = built->segment_pool[built->segments[slot].first + (uint32_t)i];
+    }
+    return count;
+}
+
 #include "v3_support.h"
 
 #endif /* BOX2SCENE_BOX2D32_SUPPORT_H */

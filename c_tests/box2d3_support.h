@@ -27,6 +27,33 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     return def;
 }
 
+static inline b2Vec2 v3_local_center(b2BodyId body) {
+    return b2Body_GetLocalCenterOfMass(body);
+}
+
+static inline b2Vec2 v3_local_anchor_a(b2JointId joint) {
+    return b2Joint_GetLocalAnchorA(joint);
+}
+
+static inline b2Vec2 v3_local_anchor_b(b2JointId joint) {
+    return b2Joint_GetLocalAnchorB(joint);
+}
+
+/* How many segments the chain of fixture slot `slot` has (0 when it is not a chain), and
+ * up to `capacity` of them in `out` when it is not NULL. */
+static inline int v3_chain_segments(const b2s_box2d3_built* built, uint32_t slot, b2ShapeId* out,
+                                    int capacity) {
+    b2ChainId chain = built->chains[slot];
+    if (B2_IS_NULL(chain)) {
+        return 0;
+    }
+    int count = b2Chain_GetSegmentCount(chain);
+    if (out != NULL && count <= capacity) {
+        b2Chain_GetSegments(chain, out, capacity);
+    }
+    return count;
+}
+
 #include "v3_support.h"
 
 #endif /* BOX2SCENE_BOX2D3_SUPPORT_H */
