@@ -187,10 +187,14 @@ inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
 
 } // namespace box2scene
 
-// The definitions: what the parts share, the range checks, the build, the capture.
-#include "detail/box2d_common.hpp"
-#include "detail/box2d_working_range.hpp"
-#include "detail/box2d_build.hpp"
-#include "detail/box2d_capture.hpp"
+// The definitions, cut by concept as the v3 adapter's sources are (detail/box2d3/): the
+// reports and working range, the world (the build), its shapes, bodies and joints, the
+// capture.
+#include "detail/box2d/reports.hpp"
+#include "detail/box2d/world.hpp"
+#include "detail/box2d/shapes.hpp"
+#include "detail/box2d/bodies.hpp"
+#include "detail/box2d/joints.hpp"
+#include "detail/box2d/capture.hpp"
 
 #endif // BOX2SCENE_BOX2D_HPP
