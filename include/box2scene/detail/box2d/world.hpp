@@ -33,13 +33,17 @@ public:
         : view_(view), world_(world), placement_(placement),
           placement_angle_(placement.q.GetAngle()) {}
     Built run();
+
 private:
+    // ---- the build and its reports (world.hpp)
     void report(b2s_code code, const char* object, uint32_t index, b2s_str name,
                 std::string message);
     bool within_range(const RangeCheck& check, const char* object, uint32_t index,
                       b2s_str name, const std::string& owner = std::string());
     void check_gravity();
+
     // ---- shapes: made once each, then cloned by Box2D into every fixture that uses them
+    // (shapes.hpp, with the fixtures)
     void make_shapes();
     std::unique_ptr<b2Shape> make_shape(uint32_t index);
     bool vertices_of(const b2s_shape& shape, std::vector<b2Vec2>& points) const;
@@ -52,25 +56,31 @@ private:
                                               const std::vector<b2Vec2>& points);
     static std::unique_ptr<b2Shape> make_chain(const b2s_shape& shape,
                                                const std::vector<b2Vec2>& points);
-    // ---- bodies and their fixtures
-    void make_body(uint32_t index);
+
+    // ---- where the placement puts the scene (world.hpp)
     bool placement_valid() const;
     b2Vec2 placed(b2s_vec2 point) const;
+
+    // ---- bodies and their mass (bodies.hpp)
+    void make_body(uint32_t index);
     RangeCheck body_check(const b2s_body& body) const;
     void skip_fixtures_of(uint32_t body_index, const b2s_body& body);
     b2MassData predicted_mass(const b2s_body& body, RangeCheck& check) const;
     static b2MassData with_mass_data(const b2MassData& mass, const b2s_body& body);
     b2BodyDef body_def(uint32_t index, const b2s_body& body);
     float damping(uint32_t index, const b2s_body& body, float value, const char* field);
+    // a body's fixtures (shapes.hpp)
     void make_fixtures(uint32_t body_index, const b2s_body& body, b2Body* created);
     bool shape_created(const b2s_fixture& fixture) const;
     static RangeCheck fixture_check(const b2s_fixture& fixture);
     bool fixture_creatable(uint32_t index) const;
     b2Fixture* make_fixture(uint32_t body_index, uint32_t index, b2Body* body);
+    // its mass (bodies.hpp)
     void apply_mass_data(uint32_t index, const b2s_body& body, b2Body* created);
     static bool mass_data_given(const b2s_mass_data& given);
     static b2MassData overwritten(b2MassData mass, const b2s_mass_data& given);
-    // ---- joints
+
+    // ---- joints (joints.hpp)
     template <class Def>
     bool connect(uint32_t index, const b2s_joint& joint, Def& def);
     b2Body* created_body(uint32_t index) const;
@@ -111,6 +121,7 @@ private:
     void make_motor(uint32_t index, const b2s_joint& joint);
     void make_gear(uint32_t index);
     b2Joint* gear_input(uint32_t index, const b2s_joint& gear, uint32_t input);
+
     const struct b2s_scene_view& view_;
     b2World& world_;
     b2Transform placement_;
