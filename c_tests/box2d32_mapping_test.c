@@ -1487,7 +1487,7 @@ static int names_longer_than_v32_keeps_are_reported(void) {
          "");
     ENSURE_EQ(B2_NAME_LENGTH, 10);
     ENSURE_REPORT_COUNT(w, 1);
-    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_CAPTURE, "body", 1), 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_BODY, "body", 1), 1);
     ENSURE_STR(b2Body_GetName(BODY(w, 0)), "abcdefghij");
     ENSURE_STR(b2Body_GetName(BODY(w, 1)), "");
     close_world(&w);
@@ -1504,7 +1504,7 @@ static int awake_false_without_sleep_is_reported(void) {
          "<Fixtures><ID>0</ID></Fixtures></Body>",
          "");
     ENSURE_REPORT_COUNT(w, 1);
-    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_CAPTURE, "body", 0), 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_BODY, "body", 0), 1);
     ENSURE(b2Body_IsAwake(BODY(w, 0)));
     ENSURE(!b2Body_IsAwake(BODY(w, 1)));
     close_world(&w);

@@ -1,6 +1,6 @@
 /*
  * What the Box2D v3.2 adapter's tests share: v3_support.h for b2s_box2d32_*, whose
- * positions are b2Pos.
+ * positions are b2Pos and whose joints take local frames.
  */
 #ifndef BOX2SCENE_BOX2D32_SUPPORT_H
 #define BOX2SCENE_BOX2D32_SUPPORT_H
@@ -13,15 +13,48 @@ static inline b2Vec2 v3_position(b2BodyId body) {
     return b2ToVec2(b2Body_GetPosition(body));
 }
 
-#include "v3_support.h"
-
-/* build_v3 at a placement. */
-static inline v3_world build_v3_at(const b2s_scene* scene, b2Transform placement) {
-    v3_world world;
-    b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
-    world.id = b2CreateWorld(&def);
-    world.built = b2s_box2d32_build_world_at(scene, world.id, placement);
-    return world;
+static inline b2Pos v3_pos(b2Vec2 v) {
+    return b2ToPos(v);
 }
+
+/* A revolute joint def between `a` and `b` at the anchors, its reference angle 0. */
+static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 anchor_a,
+                                                 b2Vec2 anchor_b) {
+    b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
+    def.base.bodyIdA = a;
+    def.base.bodyIdB = b;
+    def.base.localFrameA.p = anchor_a;
+    def.base.localFrameA.q = b2Rot_identity;
+    def.base.localFrameB.p = anchor_b;
+    return def;
+}
+
+static inline b2Vec2 v3_local_center(b2BodyId body) {
+    return b2Body_GetLocalCenter(body);
+}
+
+static inline b2Vec2 v3_local_anchor_a(b2JointId joint) {
+    return b2Joint_GetLocalFrameA(joint).p;
+}
+
+static inline b2Vec2 v3_local_anchor_b(b2JointId joint) {
+    return b2Joint_GetLocalFrameB(joint).p;
+}
+
+/* How many segments the chain of fixture slot `slot` has (0 when it is not a chain), and
+ * up to `capacity` of them in `out` when it is not NULL. */
+static inline int v3_chain_segments(const b2s_box2d32_built* built, uint32_t slot,
+                                    b2ShapeId* out, int capacity) {
+    if (B2_IS_NULL(built->shapes[slot])) {
+        return 0;
+    }
+    int count = (int)built->segments[slot].count;
+    for (int i = 0; out != NULL && count <= capacity && i < count; ++i) {
+        out[i] = built->segment_pool[built->segments[slot].first + (uint32_t)i];
+    }
+    return count;
+}
+
+#include "v3_support.h"
 
 #endif /* BOX2SCENE_BOX2D32_SUPPORT_H */

@@ -191,6 +191,39 @@ static int a_prismatic_lever_reaches_body_bs_anchor(void) {
     return 0;
 }
 
+/* Found by the generated levels: a dynamic body whose rotation is fixed, given a spin, and
+ * a line joint 5.5 m out on it. v3.1 does not turn such a body (b2Body_SetAngularVelocity
+ * ignores it), but kept the spin it was created with, and the joint flung its other body to
+ * NaN (an assertion in the solver): the body is created without the spin. */
+static int a_fixed_rotation_body_is_created_without_its_spin(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+        "<Radius>0.29715237</Radius><Position>0.7613584 -0.6578326</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape><Density>2.9804273</Density></Fixture></Fixtures>"
+        "<Bodies><Body Type='Dynamic'><Position>1.8121862 0.1941328</Position>"
+        "<Angle>-2.7758546</Angle><AngularVelocity>-3.6846924</AngularVelocity>"
+        "<FixedRotation>true</FixedRotation><LinearVelocity>-6.984515 5.297557</LinearVelocity>"
+        "</Body><Body Type='Dynamic'><Position>7.0367346 2.0797052</Position>"
+        "<Angle>0.67746687</Angle><AngularVelocity>4.0827465</AngularVelocity>"
+        "<LinearVelocity>-6.605772 -3.3665886</LinearVelocity><Fixtures><ID>0</ID></Fixtures>"
+        "</Body></Bodies><Joints><Joint Type='Line'><BodyA>0</BodyA><BodyB>1</BodyB>"
+        "<CollideConnected>true</CollideConnected>"
+        "<LocalAnchorA>-5.5533504 0.10763967</LocalAnchorA>"
+        "<LocalAxisA>-0.67890894 0.5784466</LocalAxisA><EnableLimit>true</EnableLimit>"
+        "<LowerTranslation>-1.2518371</LowerTranslation>"
+        "<UpperTranslation>1.2518371</UpperTranslation><EnableMotor>true</EnableMotor>"
+        "<MotorSpeed>-2.0851588</MotorSpeed><MaxMotorForce>20.753616</MaxMotorForce>"
+        "</Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(!B2_IS_NULL(w.built->joints[0]));
+    ENSURE_EQ(b2Body_GetAngularVelocity(w.built->bodies[0]), 0.0f);
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
@@ -200,5 +233,6 @@ int main(void) {
     failed += RUN_TEST(satisfied_joints_far_from_small_bodies_are_built);
     failed += RUN_TEST(an_inertia_v3_cannot_hold_is_refused);
     failed += RUN_TEST(a_prismatic_lever_reaches_body_bs_anchor);
+    failed += RUN_TEST(a_fixed_rotation_body_is_created_without_its_spin);
     return failed;
 }

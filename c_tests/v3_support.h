@@ -181,4 +181,13 @@ static inline int for_each_scene(scene_check* check, void* context, int* loaded)
     return failed;
 }
 
+/* build_v3 at a placement. */
+static inline v3_world build_v3_at(const b2s_scene* scene, b2Transform placement) {
+    v3_world world;
+    b2WorldDef def = V3_ADAPTER(world_def)(scene, (b2Vec2){0.0f, -10.0f});
+    world.id = b2CreateWorld(&def);
+    world.built = V3_ADAPTER(build_world_at)(scene, world.id, placement);
+    return world;
+}
+
 #endif /* BOX2SCENE_V3_SUPPORT_H */

@@ -73,6 +73,16 @@ inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
 /// (each body's mass is computed once, after all its fixtures). A NULL scene adds nothing.
 inline Built build_world(const b2s_scene* scene, b2World& world);
 
+/// build_world with the whole scene moved by `placement` (a rotation about the world origin,
+/// then a translation), so that one scene can be built into a world several times, as a
+/// level piece or a prefab: every body's position and linear velocity is moved and its angle
+/// turned by the placement's, and a pulley's ground anchors (world points) are moved; joint
+/// anchors, local to their bodies, and everything else are not. The placement's rotation
+/// must be normalised; one that is not, or a translation not finite or beyond
+/// working_range::length, builds nothing and is reported (B2S_CODE_INVALID_ARGUMENT, on the
+/// world). The identity builds the scene as build_world does.
+inline Built build_world_at(const b2s_scene* scene, b2World& world, const b2Transform& placement);
+
 /// The values build_world passes to Box2D 2.4. The format, and the loader, accept any
 /// finite float; Box2D does not: near FLT_MAX its solver computes inf and NaN, or trips an
 /// assertion (Debian's Box2D keeps them). An object with a value beyond these bounds is not
@@ -177,10 +187,14 @@ inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
 
 } // namespace box2scene
 
-// The definitions: what the parts share, the range checks, the build, the capture.
-#include "detail/box2d_common.hpp"
-#include "detail/box2d_working_range.hpp"
-#include "detail/box2d_build.hpp"
-#include "detail/box2d_capture.hpp"
+// The definitions, cut by concept as the v3 adapter's sources are (detail/box2d3/): the
+// reports and working range, the world (the build), its shapes, bodies and joints, the
+// capture.
+#include "detail/box2d/reports.hpp"
+#include "detail/box2d/world.hpp"
+#include "detail/box2d/shapes.hpp"
+#include "detail/box2d/bodies.hpp"
+#include "detail/box2d/joints.hpp"
+#include "detail/box2d/capture.hpp"
 
 #endif // BOX2SCENE_BOX2D_HPP

@@ -133,6 +133,16 @@ b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity)
  *  scene adds nothing. */
 b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world);
 
+/** b2s_box2d3_build_world with the whole scene moved by `placement` (a rotation about the
+ *  world origin, then a translation), so that one scene can be built into a world several
+ *  times, as a level piece or a prefab: every body's position, rotation and linear velocity
+ *  is moved; joint anchors, which are local to their bodies, and everything else are not.
+ *  The placement's rotation must be normalised. A body's Angle gives its rotation times the
+ *  placement's, so a capture of a placed body reads its angle back to within an ulp or two
+ *  (reported). b2Transform_identity builds the scene as b2s_box2d3_build_world does. */
+b2s_box2d3_built* b2s_box2d3_build_world_at(const b2s_scene* scene, b2WorldId world,
+                                            b2Transform placement);
+
 /** Frees a result of b2s_box2d3_build_world (not the world's objects). NULL is ignored. */
 void b2s_box2d3_built_free(b2s_box2d3_built* built);
 
@@ -162,6 +172,7 @@ void b2s_box2d3_reports_free(b2s_box2d3_reports* reports);
 #endif
 
 #ifdef B2S_BOX2D3_IMPLEMENTATION
+#include "detail/box2d3/v31.h"
 #include "detail/box2d3_impl.h"
 #endif
 

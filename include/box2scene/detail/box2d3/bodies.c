@@ -180,7 +180,10 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        /* A fixed rotation's lock does not stop the velocity it starts with. */
+        /* v3 does not turn a body whose rotation is fixed: v3.1 ignores an angular velocity
+         * set on one, and v3.2's lock does not stop the one it starts with. A spin kept
+         * under the lock throws what a joint ties to it off (it killed v3.1 in a generated
+         * level: box2d3_working_range_test). */
         def.angularVelocity = body->fixed_rotation ? 0.0f : body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
@@ -207,13 +210,13 @@ static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_b
                     (double)body->angle);
     }
     if (body->name != NULL && strlen(body->name) > B2S3_NAME_LENGTH) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
                     "its Name is longer than the %u bytes " B2S3_ENGINE " keeps of a name; "
                     "the body has none, and a capture writes none",
                     (unsigned)B2S3_NAME_LENGTH);
     }
     if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
                     "Awake false with AllowSleep false: " B2S3_ENGINE " creates such a body "
                     "awake (Box2D 2.x keeps it asleep until it is touched)");
     }

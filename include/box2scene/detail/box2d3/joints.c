@@ -71,23 +71,53 @@ static float b2s3_drive_force(const b2s_joint* joint) {
     }
 }
 
-/* How far a line or wheel joint starts from what it holds, in metres: its anchors' distance
- * across the axis (0 for the other kinds, which v3 pulls together however far apart they
- * start). */
-static float b2s3_initial_violation(const b2s3_builder* b, const b2s_joint* joint) {
+/* How far apart a joint's anchors start across its axis, in metres, with its bodies as
+ * created. */
+static float b2s3_across_axis(b2BodyId a, b2Vec2 axis_a, b2Vec2 d) {
+    b2Vec2 axis = b2Normalize(b2Body_GetWorldVector(a, axis_a));
+    return fabsf(b2Cross(axis, d));
+}
+
+/* How far the joint starts from satisfied, in metres, along what its kind holds rigidly,
+ * with its bodies as created (what the load warning joint-starts-violated measures), and in
+ * `*across` how far its anchors start apart across its axis (0 without one). */
+static float b2s3_starting_violation(const b2s3_builder* b, const b2s_joint* joint,
+                                     float* across) {
     b2BodyId a = b->built->bodies[joint->body_a], bb = b->built->bodies[joint->body_b];
-    b2Transform ta = b2Body_GetTransform(a), tb = b2Body_GetTransform(bb);
-    b2Vec2 pa = b2TransformPoint(ta, b2s3_to_b2(joint->local_anchor_a));
-    b2Vec2 pb = b2TransformPoint(tb, b2s3_to_b2(joint->local_anchor_b));
+    b2Vec2 pa = b2Body_GetWorldPoint(a, b2s3_to_b2(joint->local_anchor_a));
+    b2Vec2 pb = b2Body_GetWorldPoint(bb, b2s3_to_b2(joint->local_anchor_b));
     b2Vec2 d = b2Sub(pb, pa);
+    *across = 0.0f;
     switch (joint->kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+    case B2S_JOINT_KIND_WELD: return b2Length(d);
+    case B2S_JOINT_KIND_PRISMATIC:
     case B2S_JOINT_KIND_LINE:
     case B2S_JOINT_KIND_WHEEL: {
-        b2Vec2 axis = b2RotateVector(ta.q, b2Normalize(b2s3_to_b2(joint->local_axis_a)));
-        return fabsf(b2Cross(axis, d));
+        b2Vec2 axis = b2Normalize(b2Body_GetWorldVector(a, b2s3_to_b2(joint->local_axis_a)));
+        float along = b2Dot(axis, d);
+        float beyond = 0.0f;
+        *across = b2s3_across_axis(a, b2s3_to_b2(joint->local_axis_a), d);
+        if (joint->enable_limit && joint->kind != B2S_JOINT_KIND_WHEEL) {
+            beyond = b2MaxFloat(b2MaxFloat(joint->lower_limit - along, along - joint->upper_limit),
+                                0.0f);
+        }
+        return b2MaxFloat(*across, beyond);
     }
-    default: return 0.0f;
+    case B2S_JOINT_KIND_DISTANCE:
+        return joint->frequency_hz > 0.0f ? 0.0f : fabsf(b2Length(d) - joint->length);
+    case B2S_JOINT_KIND_ROPE: return b2MaxFloat(b2Length(d) - joint->max_length, 0.0f);
+    default: return 0.0f; /* springs, motors and friction hold nothing in place */
     }
+}
+
+/* The farthest lever of one body of a joint whose other body is `other`: a line or wheel
+ * joint to a body that does not move leaves the body free to turn about an anchor that the
+ * engine may not hold as far out as other joints (B2S3_MAX_LEVER_FIXED_WHEEL). */
+static float b2s3_lever(const b2s3_builder* b, const b2s_joint* joint, uint32_t other,
+                        float lever) {
+    bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
+    return wheel && !b2s3_is_dynamic(b, other) ? B2S3_MAX_LEVER_FIXED_WHEEL : lever;
 }
 
 static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint) {
@@ -171,34 +201,86 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
                               " asserts against");
         }
     }
-    if (b2s3_passed(&check) && anchored) {
+    bool levered =
+        anchored && (B2S3_FRICTION_AT_ANCHORS || joint->kind != B2S_JOINT_KIND_FRICTION);
+    if (b2s3_passed(&check) && levered) {
         float lever = joint->kind == B2S_JOINT_KIND_REVOLUTE ? B2S3_LIMIT(MAX_LEVER_REVOLUTE)
                                                              : B2S3_LIMIT(MAX_LEVER);
         b2s3_check_anchor(b, &check, "LocalAnchorA", joint->body_a,
-                          b2s3_to_b2(joint->local_anchor_a), lever);
+                          b2s3_to_b2(joint->local_anchor_a),
+                          b2s3_lever(b, joint, joint->body_b, lever));
         b2s3_check_anchor(b, &check, "LocalAnchorB", joint->body_b,
-                          b2s3_to_b2(joint->local_anchor_b), lever);
+                          b2s3_to_b2(joint->local_anchor_b),
+                          b2s3_lever(b, joint, joint->body_a, lever));
+        if (B2S3_PRISMATIC_LEVER_TO_B && joint->kind == B2S_JOINT_KIND_PRISMATIC) {
+            /* Its axis reaches body B's anchor: that is body A's lever too. */
+            b2Vec2 b_anchor = b2Body_GetWorldPoint(b->built->bodies[joint->body_b],
+                                                   b2s3_to_b2(joint->local_anchor_b));
+            b2s3_check_anchor(b, &check, "LocalAnchorB, as body A's lever", joint->body_a,
+                              b2Body_GetLocalPoint(b->built->bodies[joint->body_a], b_anchor),
+                              lever);
+        }
     }
     if (b2s3_passed(&check)) {
         b2s3_check_drive(b, &check, joint->body_a, b2s3_drive_force(joint));
         b2s3_check_drive(b, &check, joint->body_b, b2s3_drive_force(joint));
     }
-    if (b2s3_passed(&check) && b2s3_is_dynamic(b, joint->body_a) &&
-        b2s3_is_dynamic(b, joint->body_b)) {
-        float violation = b2s3_initial_violation(b, joint);
+    return check;
+}
+
+/* What the working-range sweeps of docs/working-range.md measured of joints that start
+ * violated: a line or wheel joint further than B2S3_MAX_WHEEL_VIOLATION from satisfied, or
+ * whose anchors start more than B2S3_WHEEL_VIOLATION_GYRATIONS radii of gyration apart
+ * across its axis between two dynamic bodies, flings its bodies off; a body pulled by two
+ * joints that start more than B2S3_MAX_PULLED_VIOLATION from satisfied makes the solver
+ * assert. The first such joint of any other kind on a body is built, the later ones are
+ * not. */
+static void b2s3_check_violation(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                 b2s3_check* check) {
+    float across = 0.0f;
+    float violation = b2s3_starting_violation(b, joint, &across);
+    bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
+    if (wheel && violation > B2S3_MAX_WHEEL_VIOLATION) {
+        b2s3_fail(check,
+                  "it starts %.9g m from satisfied: a line or wheel joint further than %g m from "
+                  "satisfied lies beyond " B2S3_ENGINE "'s working range (its solver flings the "
+                  "bodies apart)",
+                  (double)violation, (double)B2S3_MAX_WHEEL_VIOLATION);
+        return;
+    }
+    if (wheel && b2s3_is_dynamic(b, joint->body_a) && b2s3_is_dynamic(b, joint->body_b)) {
         float gyration = fminf(b2s3_gyration(&b->masses[joint->body_a]),
                                b2s3_gyration(&b->masses[joint->body_b]));
-        float bound = B2S3_LIMIT(MAX_INITIAL_VIOLATION) * gyration;
-        if (violation > B2S3_LINEAR_SLOP && !(violation <= bound)) {
-            b2s3_fail(&check,
+        float bound = B2S3_WHEEL_VIOLATION_GYRATIONS * gyration;
+        if (across > B2S3_LINEAR_SLOP && !(across <= bound)) {
+            b2s3_fail(check,
                       "it starts violated by %.9g m across its axis between two dynamic "
                       "bodies, beyond " B2S3_ENGINE "'s working range (at most %g radii of "
                       "gyration, %.9g m), where its solver throws them off",
-                      (double)violation, (double)B2S3_LIMIT(MAX_INITIAL_VIOLATION),
-                      (double)bound);
+                      (double)across, (double)B2S3_WHEEL_VIOLATION_GYRATIONS, (double)bound);
+            return;
         }
     }
-    return check;
+    if (wheel || !(violation > B2S3_MAX_PULLED_VIOLATION)) {
+        return;
+    }
+    uint32_t bodies[2] = {joint->body_a, joint->body_b};
+    for (int i = 0; i < 2; ++i) {
+        if (b->pulled[bodies[i]] != 0) {
+            b2s3_fail(check,
+                      "it starts %.9g m from satisfied, and joint %u already pulls body %u from "
+                      "further than %g m: two such joints on one body lie beyond " B2S3_ENGINE
+                      "'s working range (its solver asserts)",
+                      (double)violation, (unsigned)(b->pulled[bodies[i]] - 1),
+                      (unsigned)bodies[i], (double)B2S3_MAX_PULLED_VIOLATION);
+            return;
+        }
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (b2s3_is_dynamic(b, bodies[i])) {
+            b->pulled[bodies[i]] = index + 1;
+        }
+    }
 }
 
 /* The bodies every joint def has; false (and a report) when one is missing. */
@@ -267,7 +349,7 @@ static b2JointId b2s3_make_revolute(b2s3_builder* b, uint32_t index, const b2s_j
     b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
     B2S3_CONNECT(def, joint, a, bb);
     b2s3_frames f = b2s3_frames_from(joint);
-    B2S3_ANGLE_FRAMES(def, f);
+    B2S3_REVOLUTE_FRAMES(def, f);
     float lower = joint->lower_limit, upper = joint->upper_limit;
     b2s3_ordered_limits(b, index, joint, "LowerAngle", "UpperAngle", &lower, &upper);
     def.lowerAngle = b2s3_clamped(lower, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
@@ -393,21 +475,23 @@ static b2JointId b2s3_make_weld(b2s3_builder* b, const b2s_joint* joint, b2BodyI
     b2WeldJointDef def = b2DefaultWeldJointDef();
     B2S3_CONNECT(def, joint, a, bb);
     b2s3_frames f = b2s3_frames_from(joint);
-    B2S3_ANGLE_FRAMES(def, f);
+    B2S3_WELD_FRAMES(def, f);
     def.linearHertz = 0.0f;
     def.angularHertz = joint->frequency_hz;
     def.angularDampingRatio = joint->damping_ratio;
     return b2CreateWeldJoint(b->world, &def);
 }
 
-/* v3 has no friction joint: a motor joint that drives no velocity does its work (v32.h). */
-static b2JointId b2s3_make_friction(b2s3_builder* b, const b2s_joint* joint, b2BodyId a,
-                                    b2BodyId bb) {
+/* v3 has no friction joint: a motor joint that drives no velocity does its work, the
+ * version's way (v31.h, v32.h). */
+static b2JointId b2s3_make_friction(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
+                                    b2BodyId a, b2BodyId bb) {
     b2MotorJointDef def = b2DefaultMotorJointDef();
     B2S3_CONNECT(def, joint, a, bb);
-    b2s3_frames f = b2s3_frames_from(joint);
-    B2S3_ANCHOR_FRAMES(def, f);
-    b2s3_friction_def(&def, joint);
+    char loss[B2S3_LOSS_SIZE];
+    if (b2s3_friction_def(&def, joint, b2s3_frames_from(joint), loss)) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name, "%s", loss);
+    }
     return b2CreateMotorJoint(b->world, &def);
 }
 
@@ -415,9 +499,10 @@ static b2JointId b2s3_make_motor(b2s3_builder* b, uint32_t index, const b2s_join
                                  b2BodyId a, b2BodyId bb) {
     b2MotorJointDef def = b2DefaultMotorJointDef();
     B2S3_CONNECT(def, joint, a, bb);
-    const char* loss = b2s3_motor_def(&def, joint);
-    if (loss != NULL) {
-        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name, "%s", loss);
+    char losses[2][B2S3_LOSS_SIZE];
+    int count = b2s3_motor_def(&def, joint, losses);
+    for (int i = 0; i < count; ++i) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name, "%s", losses[i]);
     }
     return b2CreateMotorJoint(b->world, &def);
 }
@@ -446,6 +531,9 @@ static void b2s3_make_joint(b2s3_builder* b, uint32_t index) {
         return;
     }
     b2s3_check check = b2s3_joint_check(b, joint);
+    if (b2s3_passed(&check)) {
+        b2s3_check_violation(b, index, joint, &check);
+    }
     if (!b2s3_passed(&check)) {
         b2s3_beyond(b, &check, "joint", index, joint->name, "");
         return;
@@ -459,7 +547,7 @@ static void b2s3_make_joint(b2s3_builder* b, uint32_t index) {
     case B2S_JOINT_KIND_LINE: *out = b2s3_make_line(b, index, joint, a, bb); break;
     case B2S_JOINT_KIND_WHEEL: *out = b2s3_make_wheel(b, joint, a, bb); break;
     case B2S_JOINT_KIND_WELD: *out = b2s3_make_weld(b, joint, a, bb); break;
-    case B2S_JOINT_KIND_FRICTION: *out = b2s3_make_friction(b, joint, a, bb); break;
+    case B2S_JOINT_KIND_FRICTION: *out = b2s3_make_friction(b, index, joint, a, bb); break;
     case B2S_JOINT_KIND_MOTOR: *out = b2s3_make_motor(b, index, joint, a, bb); break;
     default: break;
     }

@@ -149,10 +149,19 @@ static bool b2s3_make_open_chain(b2s3_builder* b, uint32_t index, const b2s_shap
     return made;
 }
 
-/* A loop: its vertices, from 3 on. */
+/* A loop: its vertices, from 3 on; where the version needs more points than that, the
+ * midpoint of the closing edge, which changes no geometry. */
 static bool b2s3_make_loop(b2s3_builder* b, const b2Vec2* vertices, uint32_t count,
                            b2s3_geometry* out) {
-    if (!b2s3_set_chain_points(out, vertices, (int)count)) {
+    b2Vec2 points[B2S3_MIN_LOOP_POINTS];
+    const b2Vec2* used = vertices;
+    if (count < B2S3_MIN_LOOP_POINTS) {
+        memcpy(points, vertices, count * sizeof(b2Vec2));
+        points[count] = b2Lerp(vertices[count - 1], vertices[0], 0.5f);
+        used = points;
+        count += 1;
+    }
+    if (!b2s3_set_chain_points(out, used, (int)count)) {
         b->list.out_of_memory = true;
         return false;
     }
@@ -290,42 +299,18 @@ static b2Filter b2s3_filter(const b2s_filter* filter) {
     return out;
 }
 
-/* Room for `more` ids at the end of the built segment pool. */
-static bool b2s3_reserve_segments(b2s3_builder* b, uint32_t more) {
-    b2s3_built_t* built = b->built;
-    if (built->segment_pool_count + more <= b->segment_capacity) {
-        return true;
+/* A chain, the version's way (v31.h, v32.h), with what it loses of the fixture reported. */
+static void b2s3_make_chain(b2s3_builder* b, uint32_t index, uint32_t body_index, uint32_t slot,
+                            b2BodyId body, const b2ShapeDef* def, const b2s3_geometry* g) {
+    const char* loss = b2s3_chain_loss(def);
+    if (loss != NULL) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "fixture", index, b->view->fixtures[index].name,
+                    "fixture %u of body %u %s", (unsigned)index, (unsigned)body_index, loss);
     }
-    uint32_t capacity = b->segment_capacity < 16u ? 16u : 2u * b->segment_capacity;
-    while (capacity < built->segment_pool_count + more) {
-        capacity *= 2u;
-    }
-    b2ShapeId* pool = (b2ShapeId*)realloc(built->segment_pool, capacity * sizeof(b2ShapeId));
-    if (pool == NULL) {
+    if (!b2s3_create_chain(b->built, &b->chain_capacity, slot, body, def, g->points,
+                           g->point_count, g->is_loop)) {
         b->list.out_of_memory = true;
-        return false;
     }
-    built->segment_pool = pool;
-    b->segment_capacity = capacity;
-    return true;
-}
-
-/* A chain as one loose chain segment per edge, in order, into the segment pool. */
-static void b2s3_make_chain(b2s3_builder* b, uint32_t slot, b2BodyId body, b2ShapeDef* def,
-                            const b2s3_geometry* g) {
-    int n = b2s3_chain_segment_count(g->point_count, g->is_loop);
-    if (!b2s3_reserve_segments(b, (uint32_t)n)) {
-        return;
-    }
-    b2s3_built_t* built = b->built;
-    built->segments[slot].first = built->segment_pool_count;
-    built->segments[slot].count = (uint32_t)n;
-    for (int i = 0; i < n; ++i) {
-        b2ChainSegment segment = b2s3_chain_segment(g->points, g->point_count, g->is_loop, i);
-        built->segment_pool[built->segment_pool_count++] =
-            b2CreateChainSegmentShape(body, def, &segment);
-    }
-    built->shapes[slot] = built->segment_pool[built->segments[slot].first];
 }
 
 static void b2s3_make_fixture(b2s3_builder* b, uint32_t body_index, uint32_t slot,
@@ -373,7 +358,7 @@ static void b2s3_make_fixture(b2s3_builder* b, uint32_t body_index, uint32_t slo
     case B2S3_SEGMENT:
         b->built->shapes[slot] = b2CreateSegmentShape(body, &def, &g->segment);
         break;
-    case B2S3_CHAIN: b2s3_make_chain(b, slot, body, &def, g); break;
+    case B2S3_CHAIN: b2s3_make_chain(b, index, body_index, slot, body, &def, g); break;
     default: break;
     }
 }

@@ -15,7 +15,10 @@
 
 #include <box2d/constants.h>
 
+#include <float.h>
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef BOX2D_DOUBLE_PRECISION
@@ -132,6 +135,81 @@ static int b2s3_chain_segment_count(int n, bool loop) {
     return loop ? n : n - 3;
 }
 
+/* v3.2's loose segments make a loop of any 3 points on. */
+#define B2S3_MIN_LOOP_POINTS 3
+
+/* What a chain loses of its fixture's shape def: nothing. */
+static const char* b2s3_chain_loss(const b2ShapeDef* def) {
+    (void)def;
+    return NULL;
+}
+
+/* The built result's store of chain segments: per fixture slot, the range of its segments
+ * in one pool that grows by doubling. */
+static bool b2s3_allocate_chains(b2s3_built_t* built, uint32_t slots) {
+    built->segments = (b2s_range*)calloc(slots + 1, sizeof(b2s_range));
+    return built->segments != NULL;
+}
+
+static void b2s3_free_chains(b2s3_built_t* built) {
+    free(built->segments);
+    free(built->segment_pool);
+}
+
+/* Room for `more` ids at the end of the built segment pool of `*capacity` ids. */
+static bool b2s3_reserve_segments(b2s3_built_t* built, uint32_t* capacity, uint32_t more) {
+    if (built->segment_pool_count + more <= *capacity) {
+        return true;
+    }
+    uint32_t grown = *capacity < 16u ? 16u : 2u * *capacity;
+    while (grown < built->segment_pool_count + more) {
+        grown *= 2u;
+    }
+    b2ShapeId* pool = (b2ShapeId*)realloc(built->segment_pool, grown * sizeof(b2ShapeId));
+    if (pool == NULL) {
+        return false;
+    }
+    built->segment_pool = pool;
+    *capacity = grown;
+    return true;
+}
+
+/* A chain of `n` points as one loose chain segment per edge, in order, into the segment
+ * pool; false when memory runs out. */
+static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t slot,
+                              b2BodyId body, const b2ShapeDef* def, const b2Vec2* points, int n,
+                              bool loop) {
+    int count = b2s3_chain_segment_count(n, loop);
+    if (!b2s3_reserve_segments(built, capacity, (uint32_t)count)) {
+        return false;
+    }
+    built->segments[slot].first = built->segment_pool_count;
+    built->segments[slot].count = (uint32_t)count;
+    for (int i = 0; i < count; ++i) {
+        b2ChainSegment segment = b2s3_chain_segment(points, n, loop, i);
+        built->segment_pool[built->segment_pool_count++] =
+            b2CreateChainSegmentShape(body, def, &segment);
+    }
+    built->shapes[slot] = built->segment_pool[built->segments[slot].first];
+    return true;
+}
+
+/* ---- the working range where v3.2's measurements differ from v3.1's (docs/working-range.md) */
+
+/* Friction acts at the anchors, so their levers count. */
+#define B2S3_FRICTION_AT_ANCHORS true
+/* A line or wheel joint to a body that does not move has the lever of any other kind. */
+#define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D32_MAX_LEVER
+/* A line or wheel joint is bounded by how far across its axis it starts between two
+ * dynamic bodies, in radii of gyration, not in metres. */
+#define B2S3_MAX_WHEEL_VIOLATION FLT_MAX
+#define B2S3_WHEEL_VIOLATION_GYRATIONS B2S_BOX2D32_MAX_INITIAL_VIOLATION
+/* v3.2 holds a prismatic joint whose axis runs far from body A's centre to body B's anchor,
+ * and several joints that start violated on one pair of bodies (the line or wheel joint
+ * among them left out). */
+#define B2S3_PRISMATIC_LEVER_TO_B false
+#define B2S3_MAX_PULLED_VIOLATION FLT_MAX
+
 /* ---- joints: anchors, axes and reference angles are the bodies' local frames */
 
 #define B2S3_JOINT_BASE(def) ((def).base)
@@ -161,6 +239,8 @@ static void b2s3_place_frames(b2JointDef* base, b2Vec2 anchor_a, b2Rot qa, b2Vec
 }
 
 /* Revolute and weld: frame A turned by the reference angle. */
+#define B2S3_REVOLUTE_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
+#define B2S3_WELD_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
 #define B2S3_ANGLE_FRAMES(def, f)                                                              \
     b2s3_place_frames(&(def).base, (f).anchor_a, b2s3_rotation((f).reference_angle),           \
                       (f).anchor_b, b2Rot_identity)
@@ -177,13 +257,20 @@ static void b2s3_place_frames(b2JointDef* base, b2Vec2 anchor_a, b2Rot qa, b2Vec
 #define B2S3_ANCHOR_FRAMES(def, f)                                                             \
     b2s3_place_frames(&(def).base, (f).anchor_a, b2Rot_identity, (f).anchor_b, b2Rot_identity)
 
+/* The bytes of a loss a joint def reports. */
+#define B2S3_LOSS_SIZE 320
+
 /* Friction acts at the anchors in v3.2: a motor joint driving no velocity, with the file's
- * force and torque as its limits. */
-static void b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint) {
+ * force and torque as its limits. Loses nothing (returns false). */
+static bool b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint, b2s3_frames f,
+                              char* loss) {
+    (void)loss;
+    B2S3_ANCHOR_FRAMES(*def, f);
     def->linearVelocity = b2Vec2_zero;
     def->angularVelocity = 0.0f;
     def->maxVelocityForce = joint->max_force;
     def->maxVelocityTorque = joint->max_torque;
+    return false;
 }
 
 /* s^-1: the step rate the motor joint's springs assume when they stand in for Box2D 2.x's
@@ -200,8 +287,9 @@ static float b2s3_motor_hertz(float correction_factor) {
  * CorrectionFactor v3.2's has no fields for): frame A at the offsets, so that springs drive
  * body B's origin and angle there, a critically damped spring of CorrectionFactor * 60 / 2pi
  * Hz (as quick as 2.x's correction at 60 steps a second), limited to MaxForce and MaxTorque.
- * Returns what the report says of it. */
-static const char* b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint) {
+ * Writes what the report says of it into `losses` and returns their count. */
+static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
+                          char losses[2][B2S3_LOSS_SIZE]) {
     float hertz = b2s3_motor_hertz(joint->correction_factor);
     b2s3_place_frames(&def->base, b2Vec2_zero, b2Rot_identity, b2Vec2_zero, b2Rot_identity);
     def->base.localFrameA.p.x = joint->linear_offset.x;
@@ -213,9 +301,12 @@ static const char* b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint) 
     def->angularDampingRatio = 1.0f;
     def->maxSpringForce = joint->max_force;
     def->maxSpringTorque = joint->max_torque;
-    return "Box2D v3.2's motor joint has no offsets, force limits or CorrectionFactor: its "
-           "frame A carries LinearOffset and AngularOffset, and critically damped springs of "
-           "CorrectionFactor * 60 / 2pi Hz limited to MaxForce and MaxTorque drive body B there";
+    snprintf(losses[0], B2S3_LOSS_SIZE, "%s",
+             "Box2D v3.2's motor joint has no offsets, force limits or CorrectionFactor: its "
+             "frame A carries LinearOffset and AngularOffset, and critically damped springs of "
+             "CorrectionFactor * 60 / 2pi Hz limited to MaxForce and MaxTorque drive body B "
+             "there");
+    return 1;
 }
 
 /* ---- capture */

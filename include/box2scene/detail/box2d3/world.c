@@ -54,7 +54,8 @@ typedef struct b2s3_builder {
     b2s3_list list;
     b2s3_geometry* geometries; /* indexed like the scene's shapes */
     b2MassData* masses;        /* each created dynamic body's, inertia about its centre */
-    uint32_t segment_capacity; /* of built->segment_pool */
+    uint32_t chain_capacity;   /* of the version's store of chain shapes, where it grows */
+    uint32_t* pulled;          /* per body: 1 + the joint that starts it violated, or 0 */
 } b2s3_builder;
 
 static void b2s3_beyond(b2s3_builder* b, const b2s3_check* check, const char* object,
@@ -93,10 +94,9 @@ static bool b2s3_allocate(b2s3_built_t* built, const struct b2s_scene_view* view
     built->joint_count = view->joint_count;
     built->bodies = (b2BodyId*)calloc(view->body_count + 1, sizeof(b2BodyId));
     built->shapes = (b2ShapeId*)calloc(view->fixture_id_count + 1, sizeof(b2ShapeId));
-    built->segments = (b2s_range*)calloc(view->fixture_id_count + 1, sizeof(b2s_range));
     built->joints = (b2JointId*)calloc(view->joint_count + 1, sizeof(b2JointId));
-    return built->bodies != NULL && built->shapes != NULL && built->segments != NULL &&
-           built->joints != NULL;
+    return built->bodies != NULL && built->shapes != NULL && built->joints != NULL &&
+           b2s3_allocate_chains(built, view->fixture_id_count);
 }
 
 void B2S3_API(built_free)(b2s3_built_t* built) {
@@ -105,8 +105,7 @@ void B2S3_API(built_free)(b2s3_built_t* built) {
     }
     free(built->bodies);
     free(built->shapes);
-    free(built->segments);
-    free(built->segment_pool);
+    b2s3_free_chains(built);
     free(built->joints);
     B2S3_API(reports_free)(&built->reports);
     free(built);
@@ -128,7 +127,9 @@ b2s3_built_t* B2S3_API(build_world_at)(const b2s_scene* scene, b2WorldId world,
     b.list.reports = &built->reports;
     b.geometries = (b2s3_geometry*)calloc(view->shape_count + 1, sizeof(b2s3_geometry));
     b.masses = (b2MassData*)calloc(view->body_count + 1, sizeof(b2MassData));
-    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL;
+    b.pulled = (uint32_t*)calloc(view->body_count + 1, sizeof(uint32_t));
+    bool ok = b2s3_allocate(built, view) && b.geometries != NULL && b.masses != NULL &&
+              b.pulled != NULL;
     if (ok && !b2s3_placement_valid(placement)) {
         B2S3_REPORT(&b, B2S_CODE_INVALID_ARGUMENT, "world", 0, NULL,
                     "the placement (%.9g, %.9g) turned by (%.9g, %.9g) is not finite, not "
@@ -155,6 +156,7 @@ b2s3_built_t* B2S3_API(build_world_at)(const b2s_scene* scene, b2WorldId world,
     }
     free(b.geometries);
     free(b.masses);
+    free(b.pulled);
     if (!ok || b.list.out_of_memory) {
         B2S3_API(built_free)(built);
         return NULL;

@@ -1,23 +1,23 @@
 /*
- * b2s_box2d32_build_world takes time linear in shapes, bodies and joints: each scene of
+ * V3_ADAPTER(build_world) takes time linear in shapes, bodies and joints: each scene of
  * growth_scenes.h is built at 4 000 and 16 000 objects, the fastest of several runs of each
  * counts, and the larger must take less than 8 times as long (a quadratic build takes 16).
  * The adapter creates a body's shapes without updating its mass and has v3 compute it once;
  * the one-body scene checks that mass, bit for bit, against v3's sum over those shapes.
  *
- * b2s_box2d32_capture_world is held to the same bound: each scene is built once at each size
+ * V3_ADAPTER(capture_world) is held to the same bound: each scene is built once at each size
  * and its capture timed, so that a host saving a large level does not wait on it. Bodies and
  * joints grow together in one of the scenes, since a capture looks up both bodies of every
  * joint; chains are captured once each however many segments a body holds. Each capture is
  * checked against the world it came from: its counts, and the values of a few objects.
  */
-#include "box2d32_support.h"
+#include V3_SUPPORT
 #include "growth_scenes.h"
 
 #include <float.h>
 
 /* What a build of one size must have made. */
-typedef bool built_check(const b2s_box2d32_built* built, uint32_t count);
+typedef bool built_check(const v3_built* built, uint32_t count);
 
 /* What b2Body_ApplyMassFromShapes makes of the one-body scene's shapes, summed as it sums
  * them (its shape list is newest first): mass, and centre in body coordinates. */
@@ -38,7 +38,7 @@ static bool same_float(float a, float b) {
     return memcmp(&a, &b, sizeof a) == 0;
 }
 
-static bool one_body_built(const b2s_box2d32_built* built, uint32_t count) {
+static bool one_body_built(const v3_built* built, uint32_t count) {
     if (built->body_count != 1 || built->fixture_count != count) {
         return false;
     }
@@ -48,13 +48,13 @@ static bool one_body_built(const b2s_box2d32_built* built, uint32_t count) {
         }
     }
     b2MassData expected = by_hand(count);
-    b2Vec2 center = b2Body_GetLocalCenter(built->bodies[0]);
+    b2Vec2 center = v3_local_center(built->bodies[0]);
     return b2Body_GetShapeCount(built->bodies[0]) == (int)count &&
            same_float(b2Body_GetMass(built->bodies[0]), expected.mass) &&
            same_float(center.x, expected.center.x) && same_float(center.y, expected.center.y);
 }
 
-static bool bodies_built(const b2s_box2d32_built* built, uint32_t count) {
+static bool bodies_built(const v3_built* built, uint32_t count) {
     if (built->body_count != count) {
         return false;
     }
@@ -66,7 +66,7 @@ static bool bodies_built(const b2s_box2d32_built* built, uint32_t count) {
     return true;
 }
 
-static bool joints_built(const b2s_box2d32_built* built, uint32_t count) {
+static bool joints_built(const v3_built* built, uint32_t count) {
     if (built->joint_count != count) {
         return false;
     }
@@ -84,16 +84,16 @@ static bool joints_built(const b2s_box2d32_built* built, uint32_t count) {
 static double fastest_build(const b2s_scene* scene, uint32_t count, built_check* check) {
     double fastest = DBL_MAX;
     for (int run = 0; run < GROWTH_RUNS; ++run) {
-        b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
+        b2WorldDef def = V3_ADAPTER(world_def)(scene, (b2Vec2){0.0f, -10.0f});
         b2WorldId world = b2CreateWorld(&def);
         double start = growth_clock();
-        b2s_box2d32_built* built = b2s_box2d32_build_world(scene, world);
+        v3_built* built = V3_ADAPTER(build_world)(scene, world);
         double time = growth_clock() - start;
         bool expected = built != NULL && built->reports.count == 0 && check(built, count);
         if (built != NULL) {
             print_reports(&built->reports);
         }
-        b2s_box2d32_built_free(built);
+        V3_ADAPTER(built_free)(built);
         b2DestroyWorld(world);
         if (!expected) {
             fprintf(stderr, "the build of %u is not as expected\n", (unsigned)count);
@@ -107,7 +107,7 @@ static double fastest_build(const b2s_scene* scene, uint32_t count, built_check*
 /* ---- capture */
 
 /* What the capture of a world built from a scene of one size must hold. */
-typedef bool captured_check(const b2s_scene_view* view, const b2s_box2d32_built* built,
+typedef bool captured_check(const b2s_scene_view* view, const v3_built* built,
                             uint32_t count);
 
 static bool same_vec(b2s_vec2 a, b2Vec2 b) {
@@ -128,7 +128,7 @@ static const b2s_fixture* fixture_of(const b2s_scene_view* view, const b2s_body*
     return &view->fixtures[view->fixture_ids[body->fixtures.first + k]];
 }
 
-static bool one_body_captured(const b2s_scene_view* view, const b2s_box2d32_built* built,
+static bool one_body_captured(const b2s_scene_view* view, const v3_built* built,
                               uint32_t count) {
     if (view->body_count != 1 || view->fixture_count != count || view->shape_count != count ||
         view->joint_count != 0 || view->bodies[0].fixtures.count != count) {
@@ -156,7 +156,7 @@ static bool one_body_captured(const b2s_scene_view* view, const b2s_box2d32_buil
     return true;
 }
 
-static bool bodies_captured(const b2s_scene_view* view, const b2s_box2d32_built* built,
+static bool bodies_captured(const b2s_scene_view* view, const v3_built* built,
                             uint32_t count) {
     if (view->body_count != count || view->fixture_count != count ||
         view->shape_count != count || view->joint_count != 0) {
@@ -182,7 +182,7 @@ static bool bodies_captured(const b2s_scene_view* view, const b2s_box2d32_built*
 }
 
 /* The index of v3 body `id` among the built bodies, or B2S_NONE. */
-static uint32_t built_index(const b2s_box2d32_built* built, b2BodyId id) {
+static uint32_t built_index(const v3_built* built, b2BodyId id) {
     for (uint32_t i = 0; i < built->body_count; ++i) {
         if (B2_ID_EQUALS(built->bodies[i], id)) {
             return i;
@@ -200,7 +200,7 @@ static uint32_t kind_of(b2JointId id) {
     }
 }
 
-static bool joints_captured(const b2s_scene_view* view, const b2s_box2d32_built* built,
+static bool joints_captured(const b2s_scene_view* view, const v3_built* built,
                             uint32_t count) {
     if (view->joint_count != count || view->body_count != built->body_count) {
         return false;
@@ -212,27 +212,27 @@ static bool joints_captured(const b2s_scene_view* view, const b2s_box2d32_built*
         if (joint->kind != kind_of(id) ||
             joint->body_a != built_index(built, b2Joint_GetBodyA(id)) ||
             joint->body_b != built_index(built, b2Joint_GetBodyB(id)) ||
-            !same_vec(joint->local_anchor_a, b2Joint_GetLocalFrameA(id).p) ||
-            !same_vec(joint->local_anchor_b, b2Joint_GetLocalFrameB(id).p)) {
+            !same_vec(joint->local_anchor_a, v3_local_anchor_a(id)) ||
+            !same_vec(joint->local_anchor_b, v3_local_anchor_b(id))) {
             return false;
         }
     }
     return true;
 }
 
-static bool chains_built(const b2s_box2d32_built* built, uint32_t count) {
+static bool chains_built(const v3_built* built, uint32_t count) {
     if (built->body_count != 1 || built->fixture_count != count) {
         return false;
     }
     for (uint32_t i = 0; i < count; ++i) {
-        if (B2_IS_NULL(built->shapes[i]) || built->segments[i].count != 4) {
+        if (v3_chain_segments(built, i, NULL, 4) != 4) {
             return false;
         }
     }
     return true;
 }
 
-static bool chains_captured(const b2s_scene_view* view, const b2s_box2d32_built* built,
+static bool chains_captured(const b2s_scene_view* view, const v3_built* built,
                             uint32_t count) {
     if (view->body_count != 1 || view->shape_count != count || view->fixture_count != count ||
         view->bodies[0].fixtures.count != count) {
@@ -241,8 +241,8 @@ static bool chains_captured(const b2s_scene_view* view, const b2s_box2d32_built*
     for (uint32_t k = 0; k < SAMPLES; ++k) {
         uint32_t i = sample(k, count);
         const b2s_shape* shape = &view->shapes[fixture_of(view, &view->bodies[0], i)->shape];
-        const b2ShapeId* segments = built->segment_pool + built->segments[i].first;
-        if (built->segments[i].count != 4 || shape->kind != B2S_SHAPE_KIND_CHAIN ||
+        b2ShapeId segments[4];
+        if (v3_chain_segments(built, i, segments, 4) != 4 || shape->kind != B2S_SHAPE_KIND_CHAIN ||
             !shape->is_loop || shape->vertices.count != 4) {
             return false;
         }
@@ -274,10 +274,10 @@ static double fastest_capture(const b2s_scene* scene, uint32_t count, built_chec
     double fastest = DBL_MAX;
     for (int run = 0; run < GROWTH_RUNS && fastest >= 0.0; ++run) {
         b2s_scene* capture = NULL;
-        b2s_box2d32_reports reports;
+        v3_reports reports;
         b2s_error error;
         double start = growth_clock();
-        b2s_code code = b2s_box2d32_capture_world(world.id, world.built->bodies,
+        b2s_code code = V3_ADAPTER(capture_world)(world.id, world.built->bodies,
                                                  world.built->body_count, &capture, &reports,
                                                  &error);
         double time = growth_clock() - start;
@@ -293,7 +293,7 @@ static double fastest_capture(const b2s_scene* scene, uint32_t count, built_chec
         } else {
             fastest = time < fastest ? time : fastest;
         }
-        b2s_box2d32_reports_free(&reports);
+        V3_ADAPTER(reports_free)(&reports);
         b2s_scene_free(capture);
     }
     free_v3(&world);

@@ -8,7 +8,7 @@
 #error "include <box2scene/box2d.hpp>, not its parts"
 #endif
 
-#include "box2d_common.hpp"
+#include "reports.hpp"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,10 +1,11 @@
 /*
- * Building at a placement (b2s_box2d32_build_world_at): one scene built twice into one world,
- * at two placements, evolves bit for bit like the same bodies, shapes and joints built by
- * hand through v3.2's own API at the placed poses (the position and the velocity turned and
+ * Building at a placement (build_world_at), compiled once per v3 adapter (V3_SUPPORT names its
+ * support header): one scene built twice into one world, at two placements, evolves bit for
+ * bit like the same bodies, shapes and joints built by hand through the engine's own API at
+ * the placed poses (the position and the velocity turned and
  * moved, the rotation turned; anchors, local to their bodies, unchanged), over 600 steps.
  */
-#include "box2d32_support.h"
+#include V3_SUPPORT
 
 #define STEPS 600
 
@@ -51,7 +52,7 @@ static b2ShapeDef shape_def(float density) {
 /* The scene's bodies at `placement`, built by hand: `bodies` gets the three. */
 static void build_by_hand(b2WorldId world, b2Transform placement, b2BodyId* bodies) {
     b2BodyDef def = b2DefaultBodyDef();
-    def.position = b2ToPos(b2TransformPoint(placement, (b2Vec2){0.0f, 0.0f}));
+    def.position = v3_pos(b2TransformPoint(placement, (b2Vec2){0.0f, 0.0f}));
     def.rotation = b2MulRot(placement.q, rotation_of(0.0f));
     bodies[0] = b2CreateBody(world, &def);
     b2ShapeDef ground = shape_def(0.0f);
@@ -59,7 +60,7 @@ static void build_by_hand(b2WorldId world, b2Transform placement, b2BodyId* bodi
     b2CreatePolygonShape(bodies[0], &ground, &ground_box);
 
     def.type = b2_dynamicBody;
-    def.position = b2ToPos(b2TransformPoint(placement, (b2Vec2){1.0f, 3.0f}));
+    def.position = v3_pos(b2TransformPoint(placement, (b2Vec2){1.0f, 3.0f}));
     def.rotation = b2MulRot(placement.q, rotation_of(0.3f));
     def.linearVelocity = b2RotateVector(placement.q, (b2Vec2){2.0f, -1.0f});
     def.angularVelocity = 1.5f;
@@ -69,7 +70,7 @@ static void build_by_hand(b2WorldId world, b2Transform placement, b2BodyId* bodi
     b2CreatePolygonShape(bodies[1], &thrown, &thrown_box);
     b2Body_ApplyMassFromShapes(bodies[1]);
 
-    def.position = b2ToPos(b2TransformPoint(placement, (b2Vec2){4.0f, 4.0f}));
+    def.position = v3_pos(b2TransformPoint(placement, (b2Vec2){4.0f, 4.0f}));
     def.rotation = b2MulRot(placement.q, rotation_of(0.0f));
     def.linearVelocity = b2RotateVector(placement.q, (b2Vec2){0.0f, 0.0f});
     def.angularVelocity = 0.0f;
@@ -79,12 +80,8 @@ static void build_by_hand(b2WorldId world, b2Transform placement, b2BodyId* bodi
     b2CreateCircleShape(bodies[2], &ball, &circle);
     b2Body_ApplyMassFromShapes(bodies[2]);
 
-    b2RevoluteJointDef hinge = b2DefaultRevoluteJointDef();
-    hinge.base.bodyIdA = bodies[0];
-    hinge.base.bodyIdB = bodies[2];
-    hinge.base.localFrameA.p = (b2Vec2){4.0f, 5.0f};
-    hinge.base.localFrameA.q = rotation_of(0.0f);
-    hinge.base.localFrameB.p = (b2Vec2){0.0f, 1.0f};
+    b2RevoluteJointDef hinge =
+        v3_revolute_def(bodies[0], bodies[2], (b2Vec2){4.0f, 5.0f}, (b2Vec2){0.0f, 1.0f});
     b2CreateRevoluteJoint(world, &hinge);
 }
 
@@ -101,12 +98,12 @@ static int two_placed_instances_evolve_as_built_by_hand(void) {
     ENSURE(scene != NULL);
     const b2Transform placements[2] = {{{100.0f, 0.0f}, {cosf(0.5f), sinf(0.5f)}},
                                        {{-100.0f, 50.0f}, {cosf(-2.0f), sinf(-2.0f)}}};
-    b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
+    b2WorldDef def = V3_ADAPTER(world_def)(scene, (b2Vec2){0.0f, -10.0f});
     b2WorldId placed = b2CreateWorld(&def), by_hand = b2CreateWorld(&def);
-    b2s_box2d32_built* built[2];
+    v3_built* built[2];
     b2BodyId hand[2][3];
     for (int k = 0; k < 2; ++k) {
-        built[k] = b2s_box2d32_build_world_at(scene, placed, placements[k]);
+        built[k] = V3_ADAPTER(build_world_at)(scene, placed, placements[k]);
         ENSURE(built[k] != NULL);
         if (built[k]->reports.count != 0) {
             print_reports(&built[k]->reports);
@@ -135,7 +132,7 @@ static int two_placed_instances_evolve_as_built_by_hand(void) {
     b2Vec2 start = b2TransformPoint(placements[1], (b2Vec2){1.0f, 3.0f});
     ENSURE(b2Distance(v3_position(built[1]->bodies[1]), start) > 0.5f);
     for (int k = 0; k < 2; ++k) {
-        b2s_box2d32_built_free(built[k]);
+        V3_ADAPTER(built_free)(built[k]);
     }
     b2DestroyWorld(placed);
     b2DestroyWorld(by_hand);
@@ -147,9 +144,9 @@ static int the_identity_placement_is_the_plain_build(void) {
     b2s_scene* scene = load_text(scene_text);
     ENSURE(scene != NULL);
     v3_world plain = build_v3(scene);
-    b2WorldDef def = b2s_box2d32_world_def(scene, (b2Vec2){0.0f, -10.0f});
+    b2WorldDef def = V3_ADAPTER(world_def)(scene, (b2Vec2){0.0f, -10.0f});
     b2WorldId world = b2CreateWorld(&def);
-    b2s_box2d32_built* at = b2s_box2d32_build_world_at(scene, world, b2Transform_identity);
+    v3_built* at = V3_ADAPTER(build_world_at)(scene, world, b2Transform_identity);
     ENSURE(at != NULL);
     for (int step = 0; step < STEPS; ++step) {
         b2World_Step(plain.id, TIME_STEP, SUB_STEPS);
@@ -158,7 +155,7 @@ static int the_identity_placement_is_the_plain_build(void) {
     for (uint32_t i = 0; i < at->body_count; ++i) {
         ENSURE(same_state(plain.built->bodies[i], at->bodies[i]));
     }
-    b2s_box2d32_built_free(at);
+    V3_ADAPTER(built_free)(at);
     b2DestroyWorld(world);
     free_v3(&plain);
     b2s_scene_free(scene);
@@ -176,13 +173,13 @@ static int a_placement_v3_cannot_take_builds_nothing(void) {
     for (int k = 0; k < 3; ++k) {
         b2WorldDef def = b2DefaultWorldDef();
         b2WorldId world = b2CreateWorld(&def);
-        b2s_box2d32_built* built = b2s_box2d32_build_world_at(scene, world, bad[k]);
+        v3_built* built = V3_ADAPTER(build_world_at)(scene, world, bad[k]);
         ENSURE(built != NULL);
         ENSURE_EQ(built->reports.count, 1);
         ENSURE_EQ(count_reports(&built->reports, B2S_CODE_INVALID_ARGUMENT, "world", 0), 1);
         ENSURE_EQ(b2World_GetCounters(world).bodyCount, 0);
         ENSURE(B2_IS_NULL(built->bodies[0]));
-        b2s_box2d32_built_free(built);
+        V3_ADAPTER(built_free)(built);
         b2DestroyWorld(world);
     }
     b2s_scene_free(scene);

@@ -1,0 +1,254 @@
+/*
+ * What the Box2D v3 adapter's sources (adapter.c and the files it includes) need to know of
+ * Box2D v3.1, the one place where the adapter for v3.1 differs from one for another v3
+ * (v32.h is v3.2's): its public names and constants. Names starting with b2s3_ are private
+ * to the adapter's one translation unit.
+ */
+#ifndef BOX2SCENE_BOX2D3_V31_H
+#define BOX2SCENE_BOX2D3_V31_H
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* The public names: b2s_box2d3_NAME, B2S_BOX2D3_LIMIT (box2scene/box2d3.h keeps v3.1's names
+ * as they were before v3.2 was served). */
+#define B2S3_API(name) b2s_box2d3_##name
+#define B2S3_LIMIT(name) B2S_BOX2D3_##name
+/* The engine, as reports name it. */
+#define B2S3_ENGINE "Box2D v3"
+
+typedef b2s_box2d3_report b2s3_report_t;
+typedef b2s_box2d3_reports b2s3_reports_t;
+typedef b2s_box2d3_built b2s3_built_t;
+
+/* v3.1's linear slop (B2_LINEAR_SLOP in its private constants.h) at one length unit per
+ * metre: v3.1 refuses a segment no longer than it and raises a distance joint's length to
+ * it. */
+#define B2S3_LINEAR_SLOP 0.005f
+
+/* The bytes of a body's name v3.1 keeps (body.h: name[32], NUL-terminated). */
+#define B2S3_NAME_LENGTH ((size_t)31)
+
+/* ---- bodies */
+
+static void b2s3_set_pose(b2BodyDef* def, b2Vec2 position, b2Rot rotation) {
+    def->position = position;
+    def->rotation = rotation;
+}
+
+static b2Vec2 b2s3_body_position(b2BodyId body) {
+    return b2Body_GetPosition(body);
+}
+
+/* v3.1's fixed rotation gives the body no inertia. */
+static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
+    def->fixedRotation = fixed;
+}
+
+static bool b2s3_rotation_locked(b2BodyId body) {
+    return b2Body_IsFixedRotation(body);
+}
+
+/* v3.1 computes a dynamic body's mass; a kinematic one has none to compute. */
+static bool b2s3_needs_mass_update(b2BodyType type) {
+    return type == b2_dynamicBody;
+}
+
+static b2MassData b2s3_shape_mass(b2ShapeId shape) {
+    return b2Shape_GetMassData(shape);
+}
+
+/* The mass v3.1 gives a dynamic body with these shapes (b2Body_ApplyMassFromShapes, which
+ * walks a body's shapes newest first, their inertias about the body origin), operation for
+ * operation so that the bits agree; `shapes` is in creation order.
+ * `inertia_kept` is false when v3 would assert that the centred inertia is positive. */
+static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* densities,
+                                        size_t count, bool fixed_rotation, bool* inertia_kept) {
+    b2MassData body = {0.0f, {0.0f, 0.0f}, 0.0f};
+    b2Vec2 center = b2Vec2_zero;
+    for (size_t i = count; i-- > 0;) {
+        if (densities[i] == 0.0f) {
+            continue;
+        }
+        body.mass += shapes[i].mass;
+        center = b2MulAdd(center, shapes[i].mass, shapes[i].center);
+        body.rotationalInertia += shapes[i].rotationalInertia;
+    }
+    if (body.mass > 0.0f) {
+        float inverse = 1.0f / body.mass;
+        center = b2MulSV(inverse, center);
+    }
+    *inertia_kept = true;
+    if (body.rotationalInertia > 0.0f && !fixed_rotation) {
+        body.rotationalInertia -= body.mass * b2Dot(center, center);
+        *inertia_kept = body.rotationalInertia > 0.0f;
+    } else {
+        body.rotationalInertia = 0.0f;
+    }
+    body.center = center;
+    return body;
+}
+
+/* ---- chains: v3.1's own (b2ChainDef), one b2ChainId per fixture slot */
+
+/* v3.1 asserts that a loop has 4 points or more. */
+#define B2S3_MIN_LOOP_POINTS 4
+
+/* What a chain loses of its fixture's shape def: v3.1's chains cannot be sensors. */
+static const char* b2s3_chain_loss(const b2ShapeDef* def) {
+    return def->isSensor ? "is a sensor, but Box2D v3's chains have no sensor form; it was "
+                           "made a solid chain"
+                         : NULL;
+}
+
+static bool b2s3_allocate_chains(b2s3_built_t* built, uint32_t slots) {
+    built->chains = (b2ChainId*)calloc(slots + 1, sizeof(b2ChainId));
+    return built->chains != NULL;
+}
+
+static void b2s3_free_chains(b2s3_built_t* built) {
+    free(built->chains);
+}
+
+/* A chain of `n` points ([ghost, vertices..., ghost], or a loop) with the shape def's
+ * material, filter and events. Never runs out of memory: v3.1 keeps the chain. */
+static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t slot,
+                              b2BodyId body, const b2ShapeDef* shape, const b2Vec2* points, int n,
+                              bool loop) {
+    (void)capacity;
+    b2ChainDef def = b2DefaultChainDef();
+    def.points = points;
+    def.count = n;
+    def.isLoop = loop;
+    def.materials = &shape->material;
+    def.materialCount = 1;
+    def.filter = shape->filter;
+    def.enableSensorEvents = shape->enableSensorEvents;
+    built->chains[slot] = b2CreateChain(body, &def);
+    return true;
+}
+
+/* ---- the working range as v3.1's sweep measured it (docs/working-range.md) */
+
+/* v3.1's friction (motor) joint acts at the body origins: its anchors play no part. */
+#define B2S3_FRICTION_AT_ANCHORS false
+/* A line or wheel joint to a body that does not move leaves its body free to turn about an
+ * anchor that v3.1 cannot hold far out on a small body. */
+#define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D3_MAX_LEVER_WHEEL
+/* A line or wheel joint is bounded by how far from satisfied it starts, in metres. */
+#define B2S3_MAX_WHEEL_VIOLATION B2S_BOX2D3_MAX_VIOLATION
+#define B2S3_WHEEL_VIOLATION_GYRATIONS FLT_MAX
+/* A prismatic joint's axis reaches body B's anchor, which is body A's lever too; a second
+ * joint on a body another already pulls from further than B2S_BOX2D3_MAX_VIOLATION makes
+ * v3.1's solver assert. */
+#define B2S3_PRISMATIC_LEVER_TO_B true
+#define B2S3_MAX_PULLED_VIOLATION B2S_BOX2D3_MAX_VIOLATION
+
+/* ---- joints: anchors, axis and reference angle are fields of each def */
+
+#define B2S3_JOINT_BASE(def) (def)
+
+typedef struct b2s3_frames {
+    b2Vec2 anchor_a, anchor_b;
+    b2Vec2 axis; /* unit, where the joint kind has one */
+    float reference_angle;
+} b2s3_frames;
+
+/* v3.1 clamps a revolute reference angle to +-pi but measures the joint angle unwound: the
+ * same angle less its whole turns keeps the joint as it was. */
+#define B2S3_REVOLUTE_FRAMES(def, f)                                                           \
+    do {                                                                                       \
+        (def).localAnchorA = (f).anchor_a;                                                     \
+        (def).localAnchorB = (f).anchor_b;                                                     \
+        (def).referenceAngle =                                                                 \
+            (float)remainder((double)(f).reference_angle, 6.283185307179586);                  \
+    } while (0)
+#define B2S3_WELD_FRAMES(def, f)                                                               \
+    do {                                                                                       \
+        (def).localAnchorA = (f).anchor_a;                                                     \
+        (def).localAnchorB = (f).anchor_b;                                                     \
+        (def).referenceAngle = (f).reference_angle;                                            \
+    } while (0)
+#define B2S3_PRISMATIC_FRAMES(def, f)                                                          \
+    do {                                                                                       \
+        (def).localAnchorA = (f).anchor_a;                                                     \
+        (def).localAnchorB = (f).anchor_b;                                                     \
+        (def).localAxisA = (f).axis;                                                           \
+        (def).referenceAngle = (f).reference_angle;                                            \
+    } while (0)
+#define B2S3_AXIS_FRAMES(def, f)                                                               \
+    do {                                                                                       \
+        (def).localAnchorA = (f).anchor_a;                                                     \
+        (def).localAnchorB = (f).anchor_b;                                                     \
+        (def).localAxisA = (f).axis;                                                           \
+    } while (0)
+#define B2S3_ANCHOR_FRAMES(def, f)                                                             \
+    do {                                                                                       \
+        (def).localAnchorA = (f).anchor_a;                                                     \
+        (def).localAnchorB = (f).anchor_b;                                                     \
+    } while (0)
+
+/* The bytes of a loss a joint def reports. */
+#define B2S3_LOSS_SIZE 320
+
+/* v3.1's friction is a motor joint that holds no offset, at the body origins; returns true
+ * with `loss` written when the file's anchors are not there. */
+static bool b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint, b2s3_frames f,
+                              char* loss) {
+    def->linearOffset = b2Vec2_zero;
+    def->angularOffset = 0.0f;
+    def->correctionFactor = 0.0f;
+    def->maxForce = joint->max_force;
+    def->maxTorque = joint->max_torque;
+    bool at_origins = f.anchor_a.x == 0.0f && f.anchor_a.y == 0.0f && f.anchor_b.x == 0.0f &&
+                      f.anchor_b.y == 0.0f;
+    if (!at_origins) {
+        snprintf(loss, B2S3_LOSS_SIZE,
+                 "Box2D v3's friction (motor) joint acts at the body origins, not at "
+                 "LocalAnchorA (%.9g, %.9g) and LocalAnchorB (%.9g, %.9g)",
+                 (double)f.anchor_a.x, (double)f.anchor_a.y, (double)f.anchor_b.x,
+                 (double)f.anchor_b.y);
+    }
+    return !at_origins;
+}
+
+/* Box2D 2.3's motor joint, whose form v3.1's is, but for one thing: the file's LinearOffset
+ * is in body A's frame (as Box2D 2.x and v3's types.h say), and v3.1.1's solver subtracts it
+ * from the centres' separation in world axes, so it is passed turned by body A's rotation,
+ * which holds only while A cannot turn (reported otherwise). v3.1 clamps CorrectionFactor to
+ * [0, 1] (reported). Writes the losses into `losses`, returns their count. */
+static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
+                          char losses[2][B2S3_LOSS_SIZE]) {
+    int count = 0;
+    b2BodyId a = def->bodyIdA;
+    b2Vec2 offset = {joint->linear_offset.x, joint->linear_offset.y};
+    if (offset.x != 0.0f || offset.y != 0.0f) {
+        b2BodyType type = b2Body_GetType(a);
+        bool fixed = type == b2_staticBody ||
+                     (type == b2_kinematicBody && b2Body_GetAngularVelocity(a) == 0.0f) ||
+                     (type == b2_dynamicBody && b2Body_IsFixedRotation(a));
+        if (!fixed) {
+            snprintf(losses[count++], B2S3_LOSS_SIZE,
+                     "Box2D v3.1 holds LinearOffset (%.9g, %.9g) in world axes, not in body "
+                     "A's frame: it was turned by body A's angle as the joint starts, and stays "
+                     "so as body A turns",
+                     (double)offset.x, (double)offset.y);
+        }
+        offset = b2RotateVector(b2Body_GetRotation(a), offset);
+    }
+    def->linearOffset = offset;
+    def->angularOffset = joint->angular_offset;
+    def->maxForce = joint->max_force;
+    def->maxTorque = joint->max_torque;
+    def->correctionFactor = joint->correction_factor;
+    if (!(joint->correction_factor >= 0.0f && joint->correction_factor <= 1.0f)) {
+        snprintf(losses[count++], B2S3_LOSS_SIZE,
+                 "CorrectionFactor %.9g lies outside [0, 1], to which Box2D v3 clamps it",
+                 (double)joint->correction_factor);
+    }
+    return count;
+}
+
+#endif /* BOX2SCENE_BOX2D3_V31_H */
