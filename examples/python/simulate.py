@@ -36,6 +36,15 @@ STYLE = (
 )
 
 
+def turn_between(start, end) -> np.float32:
+    """How far rotation `end` is turned from `start`, within +-pi, as simulate_v3.c computes
+    it: atan2 of the float products (Box2D's own relative angle approximates atan2)."""
+    f = np.float32
+    s = f(start.c) * f(end.s) - f(start.s) * f(end.c)
+    c = f(start.c) * f(end.c) + f(start.s) * f(end.s)
+    return np.arctan2(s, c)
+
+
 def transform(body):
     t = body.transform
     return (t.p.x, t.p.y, t.q.c, t.q.s)
@@ -145,7 +154,7 @@ def main(argv=None) -> int:
         world.step(TIME_STEP, SUB_STEPS)
         for i, b in live:
             rotation = b.rotation
-            turned[i] += np.float32(pyb2d3.relative_angle(rotation, rotations[i]))
+            turned[i] += turn_between(rotations[i], rotation)
             rotations[i] = rotation
         if step % TRAJECTORY_SAMPLE_STEPS == 0 or step == args.steps:
             for i, b in live:

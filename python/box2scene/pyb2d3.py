@@ -63,6 +63,9 @@ MAX_JOINT_ACCELERATION = 1e5
 # start off its axis: measured with pyb2d3, such a pair of bodies of any size blows up
 # within a step from 4.5 on (docs/python.md, "The working range").
 MAX_AXIS_VIOLATION = 4.0
+# Metres from satisfied at which a joint starts beyond v3's working range (the C adapter's
+# B2S_BOX2D3_MAX_VIOLATION).
+MAX_VIOLATION = 0.5
 WORLD_MAX_LINEAR_SPEED = 1.5e3
 
 ENGINE = "Box2D v3"
@@ -296,6 +299,8 @@ class _Build:
         self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * slots, [None] * len(scene.joints), self.reports)
         self.geometries: List[Optional[_Geometry]] = [None] * len(scene.shapes)
         self.masses: Dict[int, tuple] = {}
+        # Per body: the joint that already pulls it from further than MAX_VIOLATION.
+        self.pulled: Dict[int, int] = {}
         self.has_sensor = any(f.is_sensor for f in scene.fixtures)
         self.slot_starts = []
         slot = 0
@@ -632,13 +637,13 @@ class _Build:
                 body.name,
                 f"Box2D v3 keeps a rotation, not an angle: the whole turns of Angle {body.angle:.9g} are lost, and a capture writes it within +-pi",
             )
-        if not body.awake and not body.allow_sleep:
+        if not body.awake and not body.allow_sleep and body.kind != "static":
             self.report(
                 "lossy-body",
                 "body",
                 index,
                 body.name,
-                "Awake is false but AllowSleep is false too: Box2D v3 creates such a body awake (Box2D 2.x kept it asleep until touched)",
+                "Awake is false and AllowSleep false: Box2D v3 creates a body that may not sleep awake, so it moves from the first step",
             )
         created = self.world.create_body_from_def(self.body_def(index, body))
         self.built.bodies[index] = created
@@ -710,6 +715,51 @@ class _Build:
             check.fail(
                 f"it starts violated: LocalAnchorB lies {off:.9g} m off the axis through LocalAnchorA, more than {MAX_AXIS_VIOLATION:g} radii of gyration ({bound:.9g} m) of the smaller body, beyond Box2D v3's working range for a {j.kind} joint between two dynamic bodies"
             )
+
+    def starting_violation(self, j: Joint) -> float:
+        """How far the joint starts from satisfied, in metres, along what its kind holds
+        rigidly, with its bodies as created (the C adapter's measure)."""
+        a, b = self.scene.bodies[j.body_a], self.scene.bodies[j.body_b]
+        ca, sa = cosf(a.angle), sinf(a.angle)
+        pa = _transform_point(a.position, ca, sa, j.local_anchor_a)
+        pb = _transform_point(b.position, cosf(b.angle), sinf(b.angle), j.local_anchor_b)
+        d = _sub(pb, pa)
+        if j.kind in ("revolute", "weld"):
+            return float(_length(d))
+        if j.kind in ("prismatic", "line", "wheel"):
+            axis = _rotate(ca, sa, _normalize(j.local_axis_a))
+            across, along = abs(float(_cross(axis, d))), float(_dot(axis, d))
+            beyond = 0.0
+            if j.enable_limit and j.kind != "wheel":
+                beyond = max(j.lower_limit - along, along - j.upper_limit, 0.0)
+            return max(across, beyond)
+        if j.kind == "distance":
+            return 0.0 if j.frequency_hz > 0 else abs(float(_length(d)) - j.length)
+        if j.kind == "rope":
+            return max(float(_length(d)) - j.max_length, 0.0)
+        return 0.0  # springs, motors and friction hold nothing in place
+
+    def check_violation(self, index: int, j: Joint, check: Check) -> None:
+        """What the sweep of docs/working-range.md measured: v3 flies a line or wheel joint
+        that starts more than MAX_VIOLATION from satisfied apart, and asserts on a body that
+        two such joints pull; the first such joint of another kind on a body is built."""
+        violation = self.starting_violation(j)
+        if not violation > MAX_VIOLATION:
+            return
+        if j.kind in ("line", "wheel"):
+            check.fail(
+                f"it starts {violation:.9g} m from satisfied: a line or wheel joint further than {MAX_VIOLATION:g} m from satisfied lies beyond Box2D v3's working range (its solver flings the bodies apart)"
+            )
+            return
+        for body in (j.body_a, j.body_b):
+            if body in self.pulled:
+                check.fail(
+                    f"it starts {violation:.9g} m from satisfied, and joint {self.pulled[body]} already pulls body {body} from further than {MAX_VIOLATION:g} m: two such joints on one body lie beyond Box2D v3's working range (its solver asserts)"
+                )
+                return
+        for body in (j.body_a, j.body_b):
+            if self.scene.bodies[body].kind == "dynamic":
+                self.pulled[body] = index
 
     @staticmethod
     def drive_force(j: Joint) -> float:
@@ -815,6 +865,8 @@ class _Build:
             self.report("joint-self-reference", "joint", index, j.name, "it connects a body to itself; joint skipped")
             return
         check = self.joint_check(j)
+        if check.passed:
+            self.check_violation(index, j, check)
         if not check.passed:
             self.beyond(check, "joint", index, j.name)
             return
@@ -927,7 +979,7 @@ class _Build:
         turns = not (
             body_a.kind == "static"
             or (body_a.kind == "kinematic" and body_a.angular_velocity == 0.0)
-            or body_a.fixed_rotation
+            or (body_a.kind == "dynamic" and body_a.fixed_rotation)
         )
         if turns and j.linear_offset != (0.0, 0.0):
             self.report(
@@ -935,7 +987,7 @@ class _Build:
                 "joint",
                 index,
                 j.name,
-                f"Box2D v3.1 applies LinearOffset in world axes, not in body A's frame: it was turned by body A's Angle {body_a.angle:.9g} as built, and does not turn with body A afterwards",
+                f"Box2D v3.1 holds LinearOffset ({j.linear_offset[0]:.9g}, {j.linear_offset[1]:.9g}) in world axes, not in body A's frame: it was turned by body A's angle as the joint starts, and stays so as body A turns",
             )
         d.linear_offset = offset
         d.angular_offset = j.angular_offset
