@@ -26,7 +26,23 @@
 #ifndef BOX2SCENE_BOX2D32_H
 #define BOX2SCENE_BOX2D32_H
 
+/* Box2D 2.4's <box2d/box2d.h> is C++ behind the guard BOX2D_H (v3's has none): defined here, it
+ * reads as empty, so that the check below, not 2.4's C++, says what is wrong. */
+#ifndef BOX2D_H
+#define BOX2D_H
+#define B2S_BOX2D32_HID_BOX2D_24
+#endif
 #include <box2d/box2d.h>
+#ifdef B2S_BOX2D32_HID_BOX2D_24
+#undef BOX2D_H
+#undef B2S_BOX2D32_HID_BOX2D_24
+#endif
+
+/* The <box2d/base.h> of v3.1 and of v3.2 define B2_HASH_INIT; only v3.2's defines B2_NULL_INDEX. */
+#if !defined(B2_NULL_INDEX)
+#error "box2scene/box2d32.h needs Box2D 3.2, and <box2d/box2d.h> is another version (box2scene/box2d3.h is for 3.1, box2scene/box2d.hpp for 2.4)"
+#else
+
 #include <box2scene.h>
 
 #include <stdbool.h>
@@ -165,5 +181,7 @@ void b2s_box2d32_reports_free(b2s_box2d32_reports* reports);
 #include "detail/box2d3/v32.h"
 #include "detail/box2d3/adapter.c"
 #endif
+
+#endif /* Box2D 3.2 */
 
 #endif /* BOX2SCENE_BOX2D32_H */
