@@ -111,6 +111,28 @@ check_symbols() {
   echo "exports the $(echo "$exported" | wc -l) functions of box2scene.h and nothing else"
 }
 
+# A release build installs its library and command without debug info; `--strip` also drops
+# their symbol tables, and what it installs still loads and runs.
+check_strip() {
+  local stripped=$work/stripped file
+  if [ "$CARGO_PROFILE_DIR" = release ]; then
+    for file in "$libdir/libbox2scene.so.$VERSION" "$PREFIX/bin/box2scene"; do
+      ! readelf -S "$file" | grep -q '\.debug_' || fail "$file carries debug info"
+    done
+  fi
+  "$CMAKE" --install "$BOX2SCENE_BUILD_DIR" --prefix "$stripped" --strip >"$work/log"
+  for file in "$stripped/$LIBDIR/libbox2scene.so.$VERSION" "$stripped/bin/box2scene"; do
+    ! readelf -S "$file" | grep -qE '\.(symtab|debug_)' || fail "--strip left $file unstripped"
+    [ "$(stat -c %s "$file")" -lt "$(stat -c %s "$PREFIX/${file#"$stripped/"}")" ] ||
+      fail "--strip did not make $file smaller"
+  done
+  nm -D --defined-only "$stripped/$LIBDIR/libbox2scene.so.$VERSION" | grep -q ' b2s_load_file$' ||
+    fail "the stripped library lost its exports"
+  "$stripped/bin/box2scene" --version | grep -q "box2scene $VERSION" ||
+    fail "the stripped command does not run"
+  echo "installed without debug info; --strip: $(stat -c %s "$stripped/$LIBDIR/libbox2scene.so.$VERSION") bytes of library"
+}
+
 # The package's box2scene::cli is the installed command, and it runs.
 check_cli() {
   local cli
