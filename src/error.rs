@@ -403,6 +403,18 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl Error {
+    /// The `io` error of a file that cannot be read: its name and the system's reason, as a
+    /// load reports one (a host that opens the file itself says it the same way).
+    pub fn cannot_read(path: &std::path::Path, e: &std::io::Error) -> Error {
+        Error {
+            code: Code::Io,
+            position: Position::default(),
+            message: format!("cannot read {}: {e}", path.display()),
+        }
+    }
+}
+
 /// A coded finding of any load stage, a warning or an error alike: what, and where, as a
 /// byte offset of the decoded text and, once the reader has placed it, as a position in the
 /// file (worked out while its text was at hand).

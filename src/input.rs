@@ -164,7 +164,7 @@ impl<'a> Source<'a> {
     /// The text of the file at `path`: UTF-8 is read a chunk at a time as the parser needs
     /// it; UTF-16 is read and converted whole, within the input limit.
     pub fn path(path: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
-        let file = File::open(path).map_err(|e| io_error(path, &e))?;
+        let file = File::open(path).map_err(|e| Error::cannot_read(path, &e))?;
         Source::file(file, path, options)
     }
 
@@ -172,7 +172,7 @@ impl<'a> Source<'a> {
     /// is its name in messages. A regular file larger than the input limit is refused
     /// from its size; a pipe or a device is read until it goes past the limit.
     pub fn file(file: File, name: &'a Path, options: &LoadOptions) -> Result<Source<'a>, Error> {
-        let meta = file.metadata().map_err(|e| io_error(name, &e))?;
+        let meta = file.metadata().map_err(|e| Error::cannot_read(name, &e))?;
         let len = meta.is_file().then_some(meta.len());
         if let Some(len) = len.filter(|&len| len > options.max_input_bytes) {
             return Err(too_big(len, options.max_input_bytes));
@@ -198,7 +198,7 @@ impl<'a> Source<'a> {
         path: &'a Path,
         options: &LoadOptions,
     ) -> Result<Source<'a>, Error> {
-        let io = |e: std::io::Error| io_error(path, &e);
+        let io = |e: std::io::Error| Error::cannot_read(path, &e);
         let max = options.max_input_bytes;
         // The byte-order mark alone first, so that the text is read in place after it; room
         // for a chunk and what is kept of the one before, so the buffer seldom grows.
@@ -334,7 +334,7 @@ impl<'a> Source<'a> {
             }
             Err(e) => {
                 let message = match &self.origin {
-                    Origin::Path(path) => io_error(path, &e).message,
+                    Origin::Path(path) => Error::cannot_read(path, &e).message,
                     Origin::Memory => e.to_string(),
                 };
                 Finding::new(Code::Io, end, message)
@@ -776,14 +776,6 @@ fn cut_to_char(bytes: &mut Vec<u8>, at: usize) {
     if missing_of_last_char(bytes) > 0 {
         let lead = bytes.iter().rposition(|b| b & 0xC0 != 0x80).unwrap_or(0);
         bytes.truncate(lead);
-    }
-}
-
-pub fn io_error(path: &Path, e: &std::io::Error) -> Error {
-    Error {
-        code: Code::Io,
-        position: Position::default(),
-        message: format!("cannot read {}: {e}", path.display()),
     }
 }
 

@@ -19,11 +19,10 @@
 mod arena;
 mod builder;
 #[doc(hidden)]
-pub mod cli;
 mod containers;
 mod dump;
 pub mod error;
-mod escape;
+pub mod escape;
 pub mod ffi;
 mod input;
 mod load;
@@ -35,6 +34,8 @@ mod text;
 mod validate;
 mod write;
 
+use std::fs::File;
+use std::io::Read;
 use std::path::Path;
 
 pub use builder::Builder;
@@ -94,6 +95,33 @@ pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
 /// Loads a scene from a file.
 pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, Error> {
     load::load_path(path.as_ref(), options)
+}
+
+/// Loads a scene from a file already open (a regular file, a pipe, a terminal), read from
+/// its start a window at a time, as [`load_path`] reads one; `name` is the file's name
+/// in messages.
+pub fn load_file(
+    file: File,
+    name: impl AsRef<Path>,
+    options: &LoadOptions,
+) -> Result<Scene, Error> {
+    load::load_file(file, name.as_ref(), options)
+}
+
+/// Loads a scene from a stream read once, a window at a time, never held whole; `name` is
+/// its name in messages.
+pub fn load_reader(
+    reader: impl Read,
+    name: impl AsRef<Path>,
+    options: &LoadOptions,
+) -> Result<Scene, Error> {
+    load::load_stream(reader, name.as_ref(), options)
+}
+
+/// Replaces the file at `path` by `bytes` as [`write_path`] replaces one: atomically, with
+/// the old file's permissions, through a link to its target.
+pub fn write_file(path: impl AsRef<Path>, bytes: &[u8]) -> std::io::Result<()> {
+    output::replace(path.as_ref(), bytes)
 }
 
 /// Writes `scene` to a file (see [`write()`]), replacing it atomically: the text goes to a

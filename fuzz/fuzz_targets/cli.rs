@@ -27,7 +27,7 @@ fn unsafe_on_a_terminal(c: char) -> bool {
 fn run(args: &[&str]) -> (String, String) {
     let args: Vec<OsString> = args.iter().map(OsString::from).collect();
     let (mut out, mut err) = (Vec::new(), Vec::new());
-    let status = box2scene::cli::run(&args, &mut out, &mut err);
+    let status = box2scene_cli::run(&args, &mut out, &mut err);
     assert!(status <= 2, "exit status {status}");
     let (out, err) = (String::from_utf8(out).unwrap(), String::from_utf8(err).unwrap());
     for text in [&out, &err] {

@@ -9,8 +9,8 @@
 
 use std::fmt::Write;
 
-use crate::escape::svg_text;
-use crate::{Body, BodyKind, Joint, JointKind, Scene, Shape, ShapeKind, Str, Vec2};
+use box2scene::escape::svg_text;
+use box2scene::{Body, BodyKind, Joint, JointKind, Scene, Shape, ShapeKind, Str, Vec2};
 
 /// Fill and stroke by body type: the colours of the simulate example's drawings.
 fn colours(kind: Option<BodyKind>) -> (&'static str, &'static str) {

@@ -1,6 +1,6 @@
 //! The `box2scene` command: check, dump, format and draw Box2Scene files in a level
-//! pipeline. It lives in the library, behind [`run`], so that the fuzz targets run what the
-//! command runs; it uses only what a host uses, and the loader's own reading of a file.
+//! pipeline. Its library target holds [`run`], so that the fuzz targets run what the
+//! command runs; it uses only the box2scene library's public API, as any host would.
 //!
 //! `check` prints each diagnostic as compilers do (`FILE:LINE:COLUMN: warning[CODE]:
 //! message`, the line, a caret under the column) so that editors and CI logs can jump to
@@ -22,8 +22,8 @@ use std::fs::File;
 use std::io::{self, Write};
 use std::path::Path;
 
-use crate::escape::terminal_text;
-use crate::{Code, Error, LoadOptions, Scene, input, load, output};
+use box2scene::escape::terminal_text;
+use box2scene::{Code, Error, LoadOptions, Scene};
 
 use args::{Command, Format, Input, Run, Verb};
 use quote::Quoted;
@@ -96,7 +96,7 @@ impl Loaded {
         let (scene, quoted) = match input {
             Input::Path(path) => match File::open(path) {
                 Ok(file) => load_file(file, path, options),
-                Err(e) => (Err(input::io_error(path, &e)), Quoted::nothing()),
+                Err(e) => (Err(Error::cannot_read(path, &e)), Quoted::nothing()),
             },
             Input::Stdin => load_stdin(Path::new(&name), options),
         };
@@ -118,7 +118,7 @@ fn load_file(file: File, name: &Path, options: &LoadOptions) -> (Result<Scene, E
     match file.metadata() {
         Ok(meta) if meta.is_file() => {
             let quoted = Quoted::from(file.try_clone().ok());
-            (load::load_file(file, name, options), quoted)
+            (box2scene::load_file(file, name, options), quoted)
         }
         _ => load_stream(file, name, options),
     }
@@ -132,7 +132,7 @@ fn load_stream(
     options: &LoadOptions,
 ) -> (Result<Scene, Error>, Quoted) {
     let quoted = Quoted::spool();
-    let scene = load::load_stream(quoted.copying(stream), name, options);
+    let scene = box2scene::load_reader(quoted.copying(stream), name, options);
     (scene, quoted)
 }
 
@@ -195,7 +195,7 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
     };
     let written = match &run.out {
         None => scene.to_xml(&run.write).map(|text| io.emit(&text)),
-        Some(out) => crate::write_path(scene, out, &run.write).map(|()| Status::Clean),
+        Some(out) => box2scene::write_path(scene, out, &run.write).map(|()| Status::Clean),
     };
     written.unwrap_or_else(|error| {
         let name = run.out.as_ref().map_or(loaded.name.clone(), |out| out.display().to_string());
@@ -212,7 +212,7 @@ fn render(run: &Run, io: &mut Io<'_>) -> Status {
         Err(status) => return status,
     };
     let Some(out) = &run.out else { return io.emit(&svg) };
-    match output::replace(out, svg.as_bytes()) {
+    match box2scene::write_file(out, svg.as_bytes()) {
         Ok(()) => Status::Clean,
         Err(e) => io.complain(&format!("cannot write {}: {e}", out.display())),
     }

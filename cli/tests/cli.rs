@@ -522,14 +522,16 @@ fn each_command_has_its_own_help() {
 
 #[test]
 fn version_is_the_one_in_cargo_toml() {
-    let manifest = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/Cargo.toml"))
+    let manifest = fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../Cargo.toml"))
         .expect("Cargo.toml is readable");
-    // The first `version` of the manifest is the package's: [package] comes first.
+    // The library's manifest, the workspace's root: its first `version` is the package's,
+    // as [package] comes first.
     let version = manifest
         .lines()
         .find_map(|line| line.strip_prefix("version = \""))
         .and_then(|rest| rest.strip_suffix('"'))
         .expect("Cargo.toml has a version");
+    assert_eq!(env!("CARGO_PKG_VERSION"), version, "the command's crate has the library's version");
     let run = Sandbox::new("version").run(&["--version"]);
     assert_eq!((run.status, run.stderr.as_str()), (0, ""));
     assert_eq!(run.stdout, format!("box2scene {version}\n"));

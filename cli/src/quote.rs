@@ -8,8 +8,8 @@ use std::io::{self, Read, Seek, SeekFrom, Write};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicU32, Ordering};
 
-use crate::Position;
-use crate::escape::terminal_char;
+use box2scene::Position;
+use box2scene::escape::terminal_char;
 
 /// Characters of a long line shown around the column: a file written on one line still
 /// gives a report that fits a terminal.

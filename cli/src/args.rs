@@ -5,7 +5,7 @@ use std::ffi::{OsStr, OsString};
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::{Dialect, LoadOptions, WriteOptions};
+use box2scene::{Dialect, LoadOptions, WriteOptions};
 
 const HELP: &str = "\
 box2scene: check, dump, format and draw Box2Scene physics scenes.

@@ -5,8 +5,8 @@
 //! output it goes to, so that no file can forge a report or drive a terminal.
 
 use super::quote::Quoted;
-use crate::escape::{json_string, terminal_text};
-use crate::{Diagnostic, Error, Position, Scene, Severity};
+use box2scene::escape::{json_string, terminal_text};
+use box2scene::{Diagnostic, Error, Position, Scene, Severity};
 
 /// One warning or error, with the names of its severity and code.
 pub struct Report {
