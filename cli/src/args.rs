@@ -30,7 +30,8 @@ Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O er
 const CHECK_HELP: &str = "\
 Usage: box2scene check [--strict] [--format=text|json] FILE...
 
-Loads each FILE and prints its warnings and errors; a file that cannot be loaded does not
+Loads each FILE and prints its warnings, or the error that stopped its load, then (in text)
+a line with its counts: FILE: N errors, M warnings. A file that cannot be loaded does not
 stop the others.
 
 Options:

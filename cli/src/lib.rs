@@ -164,16 +164,33 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
             }
             Err(error) => (status_of(error), vec![Report::of_error(error)]),
         };
-        let text: String = reports
+        let mut text: String = reports
             .iter()
             .map(|report| match run.format {
                 Format::Text => report.text(&loaded.name, &loaded.quoted),
                 Format::Json => report.json(&loaded.name),
             })
             .collect();
+        if run.format == Format::Text {
+            text.push_str(&summary(&loaded.name, &reports));
+        }
         worst = worst.max(status).max(io.emit(&text));
     }
     worst
+}
+
+/// `FILE: N errors, M warnings` (or `no errors or warnings`), the last line of a file's
+/// text check, as compilers end theirs.
+fn summary(file: &str, reports: &[Report]) -> String {
+    let errors = reports.iter().filter(|r| r.is_error()).count();
+    let counted = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+    let counts = match (errors, reports.len() - errors) {
+        (0, 0) => "no errors or warnings".to_owned(),
+        (errors, warnings) => {
+            format!("{}, {}", counted(errors, "error"), counted(warnings, "warning"))
+        }
+    };
+    format!("{}: {counts}\n", terminal_text(file))
 }
 
 fn dump(run: &Run, io: &mut Io<'_>) -> Status {

@@ -37,6 +37,11 @@ impl Report {
         }
     }
 
+    /// Whether it is an error rather than a warning.
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error.name()
+    }
+
     /// `FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE`, leaving out the parts of the position
     /// that are unknown (0) as compilers do; then, when the line is known, the line and a
     /// caret line.

@@ -131,11 +131,24 @@ fn lines(text: &str) -> Vec<&str> {
 }
 
 /// `check`'s report of one diagnostic: the `FILE:LINE:COLUMN: ...` line, the line of the
-/// file it points at, and the caret line.
-fn one_report(stdout: &str) -> [&str; 3] {
-    match lines(stdout)[..] {
+/// file it points at, and the caret line; in check's text output, then the file's summary,
+/// which counts that one report (an error report in `dump`'s or `fmt`'s has none).
+fn one_report(output: &str) -> [&str; 3] {
+    match lines(output)[..] {
         [report, shown, caret] => [report, shown, caret],
-        _ => panic!("one report of three lines expected:\n{stdout}"),
+        [report, shown, caret, summary] => {
+            let one = if report.contains(": error[") {
+                "1 error, 0 warnings"
+            } else {
+                "0 errors, 1 warning"
+            };
+            assert!(
+                summary.ends_with(&format!(": {one}")),
+                "{summary:?} does not count {report:?}"
+            );
+            [report, shown, caret]
+        }
+        _ => panic!("one report of three lines expected:\n{output}"),
     }
 }
 
@@ -152,10 +165,32 @@ fn assert_points_at(shown: &str, caret: &str, text: &str, needle: &str) {
 }
 
 #[test]
-fn check_prints_nothing_for_a_clean_file_and_exits_0() {
+fn check_prints_only_the_summary_of_a_clean_file_and_exits_0() {
     let sandbox = Sandbox::new("clean");
     let run = sandbox.write("clean.xml", CLEAN).run(&["check", "clean.xml"]);
-    assert_eq!((run.status, run.stdout.as_str(), run.stderr.as_str()), (0, "", ""));
+    assert_eq!(
+        (run.status, run.stdout.as_str(), run.stderr.as_str()),
+        (0, "clean.xml: no errors or warnings\n", "")
+    );
+}
+
+#[test]
+fn check_ends_each_file_with_its_counts() {
+    let sandbox = Sandbox::new("counts");
+    sandbox.write("level.xml", &with_unknown_element()).write("bad.xml", &with_bad_density());
+    sandbox.write("clean.xml", CLEAN);
+    let run = sandbox.run(&["check", "level.xml", "bad.xml", "clean.xml", "absent.xml"]);
+    assert_eq!(run.status, 2, "{}", run.stderr);
+    for summary in [
+        "level.xml: 0 errors, 1 warning",
+        "bad.xml: 1 error, 0 warnings",
+        "clean.xml: no errors or warnings",
+        "absent.xml: 1 error, 0 warnings",
+    ] {
+        assert!(run.stdout.lines().any(|line| line == summary), "{summary}: {}", run.stdout);
+    }
+    let json = sandbox.run(&["check", "--format=json", "level.xml", "clean.xml"]);
+    assert_eq!(json.stdout.lines().count(), 1, "JSON lines are reports only: {}", json.stdout);
 }
 
 #[test]
@@ -220,7 +255,7 @@ fn check_warns_of_a_joint_that_starts_violated() {
 fn strict_check_of_a_clean_file_exits_0() {
     let sandbox = Sandbox::new("strict-clean");
     let run = sandbox.write("clean.xml", CLEAN).run(&["check", "clean.xml", "--strict"]);
-    assert_eq!((run.status, run.stdout.as_str()), (0, ""));
+    assert_eq!((run.status, run.stdout.as_str()), (0, "clean.xml: no errors or warnings\n"));
 }
 
 #[test]
@@ -295,8 +330,11 @@ fn check_goes_on_after_an_unreadable_file_and_exits_2() {
     let run = sandbox.run(&["check", "absent.xml", "level.xml", "bad.xml"]);
     assert_eq!(run.status, 2, "{}", run.stderr);
     // A report without a position has no line to show.
-    let [absent, warning, _, _, error, _, _] = lines(&run.stdout)[..] else {
-        panic!("one line and two reports of three lines expected:\n{}", run.stdout)
+    let [absent, _, warning, _, _, _, error, _, _, _] = lines(&run.stdout)[..] else {
+        panic!(
+            "one line and two reports of three lines, each file's summary after, expected:\n{}",
+            run.stdout
+        )
     };
     assert_report(absent, "absent.xml: error[io-error]: ", "absent.xml");
     assert!(warning.starts_with("level.xml:"), "{warning}");
@@ -309,8 +347,10 @@ fn check_exits_1_when_any_file_has_an_error() {
     sandbox.write("bad.xml", &with_bad_density()).write("clean.xml", CLEAN);
     let run = sandbox.run(&["check", "bad.xml", "clean.xml"]);
     assert_eq!(run.status, 1, "{}", run.stderr);
-    let [error, _, _] = one_report(&run.stdout);
+    let (bad, clean) = run.stdout.split_at(run.stdout.find("clean.xml:").expect("a summary"));
+    let [error, _, _] = one_report(bad);
     assert!(error.starts_with("bad.xml:"), "{error}");
+    assert_eq!(clean, "clean.xml: no errors or warnings\n");
 }
 
 #[test]
@@ -965,7 +1005,11 @@ fn render(test: &str, xml: &str) -> Element {
 #[test]
 fn render_draws_every_shape_where_its_body_puts_it() {
     let check = Sandbox::new("render-check").write("level.xml", DRAWN).run(&["check", "level.xml"]);
-    assert_eq!((check.status, check.stdout.as_str()), (0, ""), "the scene is clean");
+    assert_eq!(
+        (check.status, check.stdout.as_str()),
+        (0, "level.xml: no errors or warnings\n"),
+        "the scene is clean"
+    );
     let svg = render("render-shapes", DRAWN);
     assert_eq!(svg.name, "svg");
     assert_eq!(svg.attribute("xmlns"), "http://www.w3.org/2000/svg");
@@ -1192,9 +1236,9 @@ fn every_output_escapes_what_comes_from_the_file() {
     let text = sandbox.run(&[&["check"][..], &files].concat());
     assert_eq!(text.status, 1);
     assert_terminal_safe(&text.stdout);
-    let reports = text.stdout.lines().filter(|line| line.contains(".xml:")).count();
+    let reports = text.stdout.lines().filter(|line| line.contains(".xml:")).count() - files.len();
     assert!(reports >= 5, "{}", text.stdout);
-    assert_eq!(text.stdout.lines().count(), 3 * reports, "{}", text.stdout);
+    assert_eq!(text.stdout.lines().count(), 3 * reports + files.len(), "{}", text.stdout);
     assert!(text.stdout.contains("\\u{1b}[2J"), "{}", text.stdout);
     assert!(text.stdout.contains("\u{FFFD}("), "the bytes that are not text: {}", text.stdout);
 
@@ -1317,7 +1361,7 @@ fn the_text_report_of_a_one_line_file_is_linear_in_the_file_and_the_warnings() {
     sandbox.write("large.xml", &one_line_with_warnings(400, pad));
     for (name, count) in [("small.xml", 100), ("large.xml", 400)] {
         let text = sandbox.run(&["check", name]).stdout;
-        assert_eq!(text.lines().count(), 3 * count, "three short lines a warning");
+        assert_eq!(text.lines().count(), 3 * count + 1, "three short lines a warning, a summary");
         assert!(text.lines().all(|line| line.len() < 400), "{text}");
     }
     let ratio = instructions("large.xml", &sandbox.dir) as f64
@@ -1326,7 +1370,7 @@ fn the_text_report_of_a_one_line_file_is_linear_in_the_file_and_the_warnings() {
     // Large enough that the file, not the program, is what a copy of it would weigh.
     sandbox.write("larger.xml", &one_line_with_warnings(1000, pad));
     let (output, peak) = peak_rss(&["check", "larger.xml"], &sandbox.dir, Stdio::null());
-    assert_eq!(String::from_utf8(output.stdout).unwrap().lines().count(), 3 * 1000);
+    assert_eq!(String::from_utf8(output.stdout).unwrap().lines().count(), 3 * 1000 + 1);
     let size = fs::metadata(sandbox.dir.join("larger.xml")).unwrap().len();
     assert!(peak < size, "{peak} bytes resident checking a {size} byte file");
 }
@@ -1343,7 +1387,13 @@ fn check_refuses_a_file_over_the_limit_from_its_size() {
     let expected = box2scene::load_path(&path, &box2scene::LoadOptions::default()).unwrap_err();
     let (output, peak) = peak_rss(&["check", "huge.xml"], &sandbox.dir, Stdio::null());
     let stdout = String::from_utf8(output.stdout).unwrap();
-    assert_eq!(stdout, format!("huge.xml: error[limit-exceeded]: {}\n", expected.message));
+    assert_eq!(
+        stdout,
+        format!(
+            "huge.xml: error[limit-exceeded]: {}\nhuge.xml: 1 error, 0 warnings\n",
+            expected.message
+        )
+    );
     assert!(peak < 32 << 20, "{peak} bytes resident refusing a 2 GiB file");
 }
 
