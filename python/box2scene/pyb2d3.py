@@ -39,6 +39,9 @@ from ._scene import Builder, Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
+# The bytes of a body's name Box2D v3.1 keeps (B2_NAME_LENGTH less its terminating NUL).
+NAME_LENGTH = 31
+
 # The working range: the C adapter's B2S_BOX2D3_* bounds (include/box2scene/box2d3.h).
 MAX_LENGTH = 1e4
 MAX_ANGLE = 1e5
@@ -402,7 +405,7 @@ class _Build:
                 "shape",
                 index,
                 shape.name,
-                f"Box2D v3's chain needs a ghost vertex at each end: {which} extrapolated along the end segment",
+                f"Box2D v3's chain segments need a ghost vertex at each end: {which} extrapolated along the end segment",
             )
         return _Geometry("chain", None, [tuple(first)] + list(vertices) + [tuple(last)])
 
@@ -545,8 +548,9 @@ class _Build:
         d.fixed_rotation = body.fixed_rotation
         d.is_bullet = body.bullet
         d.is_enabled = body.active
-        # v3 keeps 31 bytes of a name; a longer one is not cut (it could split a character).
-        if body.name is not None and len(body.name.encode()) <= 31:
+        # v3 keeps NAME_LENGTH bytes of a name; a longer one is not cut (it could split a
+        # character), and is reported.
+        if body.name is not None and len(body.name.encode()) <= NAME_LENGTH:
             d.name = body.name
         return d
 
@@ -637,13 +641,21 @@ class _Build:
                 body.name,
                 f"Box2D v3 keeps a rotation, not an angle: the whole turns of Angle {body.angle:.9g} are lost, and a capture writes it within +-pi",
             )
+        if body.name is not None and len(body.name.encode()) > NAME_LENGTH:
+            self.report(
+                "lossy-body",
+                "body",
+                index,
+                body.name,
+                f"its Name is longer than the {NAME_LENGTH} bytes Box2D v3 keeps of a name; the body has none, and a capture writes none",
+            )
         if not body.awake and not body.allow_sleep and body.kind != "static":
             self.report(
                 "lossy-body",
                 "body",
                 index,
                 body.name,
-                "Awake is false and AllowSleep false: Box2D v3 creates a body that may not sleep awake, so it moves from the first step",
+                "Awake false with AllowSleep false: Box2D v3 creates such a body awake (Box2D 2.x keeps it asleep until it is touched)",
             )
         created = self.world.create_body_from_def(self.body_def(index, body))
         self.built.bodies[index] = created
