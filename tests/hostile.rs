@@ -1,27 +1,14 @@
 //! Hostile input: every case gets a clear error with its code and position (or loads), never
 //! a crash, a hang, runaway memory or a partial scene.
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Write;
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-use box2scene::{Code, Error, LoadOptions, Scene, load};
+use box2scene::{Code, Error, LoadOptions, load};
 
-fn load_bytes(bytes: &[u8]) -> Result<Scene, Error> {
-    load(bytes, &LoadOptions::default())
-}
-
-fn expect(bytes: &[u8], code: Code, line: u32, column: u32) -> Error {
-    let error = load_bytes(bytes).expect_err("hostile input must not load");
-    assert_eq!(
-        (error.code, error.position.line, error.position.column),
-        (code, line, column),
-        "{}",
-        error.message
-    );
-    error
-}
+mod support;
+#[cfg(unix)]
+use support::named_pipe;
+use support::{expect, load_bytes, load_from_a_file};
 
 const MARK: char = '⌖';
 
@@ -32,48 +19,6 @@ fn expect_at(marked: &str, code: Code) -> Error {
     let line = before.matches('\n').count() as u32 + 1;
     let column = before.rsplit('\n').next().unwrap().chars().count() as u32 + 1;
     expect(marked.replacen(MARK, "", 1).as_bytes(), code, line, column)
-}
-
-/// Counts the bytes this test binary holds, so that a test can see what a load allocates.
-struct Counting;
-
-static HELD: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-// SAFETY: every call is forwarded to the system allocator unchanged; only counted.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        let held = HELD.fetch_add(layout.size(), Ordering::Relaxed) + layout.size();
-        PEAK.fetch_max(held, Ordering::Relaxed);
-        // SAFETY: the caller's layout, as GlobalAlloc requires.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        HELD.fetch_sub(layout.size(), Ordering::Relaxed);
-        // SAFETY: allocated above with this layout.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static ALLOCATOR: Counting = Counting;
-
-/// Held for the whole of each test that measures memory or allocates a lot, since what
-/// tests on other threads allocate is counted too.
-static MEASURING: Mutex<()> = Mutex::new(());
-
-fn measuring() -> std::sync::MutexGuard<'static, ()> {
-    MEASURING.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
-}
-
-/// The most bytes held at once while `run` ran, beyond those held when it started. The
-/// caller holds [`measuring`].
-fn extra_bytes_while(run: impl FnOnce()) -> usize {
-    let base = HELD.load(Ordering::Relaxed);
-    PEAK.store(base, Ordering::Relaxed);
-    run();
-    PEAK.load(Ordering::Relaxed) - base
 }
 
 const SCENE: &str = "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/></World>";
@@ -184,7 +129,6 @@ fn external_entities_are_never_fetched() {
 
 #[test]
 fn deep_nesting_is_stopped_by_the_depth_limit() {
-    let _measuring = measuring();
     let depth = 100_000;
     let xml =
         format!("<World Version=\"1\">{}{}</World>", "<a>".repeat(depth), "</a>".repeat(depth));
@@ -194,7 +138,6 @@ fn deep_nesting_is_stopped_by_the_depth_limit() {
 
 #[test]
 fn deep_nesting_without_the_limit_does_not_overflow_the_stack() {
-    let _measuring = measuring();
     let depth = 100_000;
     let xml = format!(
         "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}{}</World>",
@@ -204,31 +147,6 @@ fn deep_nesting_without_the_limit_does_not_overflow_the_stack() {
     let options = LoadOptions { max_depth: u32::MAX, ..LoadOptions::default() };
     let scene = load(xml.as_bytes(), &options).unwrap();
     assert_eq!(scene.diagnostics()[0].code(), Some(Code::UnknownElement));
-}
-
-#[test]
-fn a_100_mb_text_node_is_stopped_by_the_text_limit() {
-    let _measuring = measuring();
-    let mut xml = String::from("<World Version=\"1\"><Bodies><Body Type=\"Static\"><Name>");
-    xml.push_str(&"x".repeat(100 << 20));
-    xml.push_str("</Name></Body></Bodies></World>");
-    let text_starts = xml.find("<Name>").unwrap() + "<Name>".len();
-    let extra = extra_bytes_while(|| {
-        let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, text_starts as u32 + 1);
-        assert!(error.message.contains("max_text_bytes"));
-    });
-    assert!(extra < 1 << 20, "the load held {extra} bytes more: the text must not be copied");
-}
-
-#[test]
-fn twenty_million_elements_are_stopped_by_the_element_limit() {
-    let _measuring = measuring();
-    let xml = format!("<World Version=\"1\">{}</World>", "<a/>".repeat(20_000_000));
-    let extra = extra_bytes_while(|| {
-        let error = expect(xml.as_bytes(), Code::LimitExceeded, 1, 20 + 4 * 9_999_999);
-        assert!(error.message.contains("max_elements"));
-    });
-    assert!(extra < 1 << 20, "the load held {extra} bytes more: its warnings must be capped");
 }
 
 #[test]
@@ -297,15 +215,6 @@ fn fuzz_roundtrip_a_reference_to_a_character_xml_does_not_allow() {
     let scene = load_bytes(body(&format!("><Name>{allowed}</Name>")).as_bytes()).unwrap();
     let name = scene.text(scene.bodies()[0].name).unwrap();
     assert_eq!(name, "a\t\n\r \u{D7FF}\u{E000}\u{FFFD}\u{10000}\u{10FFFF}");
-}
-
-/// Loads `bytes` through a file of their own, with the default options.
-fn load_from_a_file(bytes: &[u8], name: &str) -> Result<Scene, Error> {
-    let file = std::env::temp_dir().join(format!("box2scene-{name}-{}.xml", std::process::id()));
-    std::fs::write(&file, bytes).unwrap();
-    let scene = box2scene::load_path(&file, &LoadOptions::default());
-    std::fs::remove_file(&file).unwrap();
-    scene
 }
 
 fn world(shapes: &str, fixtures: &str, bodies: &str, joints: &str) -> String {
@@ -511,36 +420,6 @@ fn every_corpus_file_with_random_single_byte_changes_loads_or_fails_cleanly() {
     }
 }
 
-#[test]
-fn a_load_from_a_path_does_not_hold_the_file() {
-    let _measuring = measuring();
-    let body = "<Body Type=\"Dynamic\"><Name>a body</Name><Position>1.5 -2.25</Position>\
-                <Angle>0.5</Angle><LinearVelocity>0 -1</LinearVelocity><Fixtures/></Body>\n";
-    let count = 100_000;
-    let xml = format!(
-        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies>\n{}</Bodies><Joints/></World>",
-        body.repeat(count)
-    );
-    let load_from = |from_path: bool| {
-        extra_bytes_while(|| {
-            let scene = match from_path {
-                true => load_from_a_file(xml.as_bytes(), "held"),
-                false => load_bytes(xml.as_bytes()),
-            };
-            assert_eq!(scene.unwrap().bodies().len(), count);
-        })
-    };
-    let (from_memory, from_path) = (load_from(false), load_from(true));
-    // From memory the input is the caller's; from a path only a window of it is held
-    // (a chunk or two), with room for what other tests allocate meanwhile.
-    let window = 2 << 20;
-    assert!(
-        from_path < from_memory + window,
-        "a {} byte file: {from_path} bytes held loading from its path, {from_memory} from memory",
-        xml.len()
-    );
-}
-
 /// `bytes` fail with `code` at `line` and `column`, loaded from memory and from a file.
 fn expect_in_both(bytes: &[u8], name: &str, code: Code, line: u32, column: u32) {
     expect(bytes, code, line, column);
@@ -670,16 +549,6 @@ fn markup_xml_forbids_in_values_is_malformed() {
     load_bytes(fine.as_bytes()).expect("CDATA ends, escaped markup and names differing in case");
 }
 
-/// A new named pipe in the temporary directory.
-#[cfg(unix)]
-fn named_pipe(name: &str) -> std::path::PathBuf {
-    let path = std::env::temp_dir().join(format!("box2scene-fifo-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_file(&path);
-    let made = std::process::Command::new("mkfifo").arg(&path).status().unwrap();
-    assert!(made.success(), "mkfifo {}", path.display());
-    path
-}
-
 /// A scene of several MiB read through a named pipe, after a UTF-8 byte-order mark, is the
 /// scene of the same bytes in memory: a pipe has no size to cut into pieces, and is read
 /// on one thread, a window at a time.
@@ -705,59 +574,4 @@ fn a_named_pipe_loads_as_its_bytes_from_memory() {
     let from_memory = load_bytes(xml.as_bytes()).unwrap();
     assert_eq!(from_pipe.bodies().len(), 50_000);
     assert_eq!(from_pipe.to_json(), from_memory.to_json());
-}
-
-/// A named pipe of 64 MiB that starts with a UTF-16 byte-order mark is read no further than
-/// the 1 MiB input limit, holding little more than that, and the error is where the limit
-/// stopped the reading (its line and byte), as for the same pipe in UTF-8.
-#[cfg(unix)]
-#[test]
-fn max_input_bytes_bounds_a_utf16_stream() {
-    let _measuring = measuring();
-    let max = 1u64 << 20;
-    let options = LoadOptions { max_input_bytes: max, ..LoadOptions::default() };
-    let start = "<World Version=\"1\">";
-    for utf16 in [true, false] {
-        let path = named_pipe(&format!("limit-{utf16}"));
-        let encode = move |text: &str| -> Vec<u8> {
-            match utf16 {
-                true => text.encode_utf16().flat_map(u16::to_le_bytes).collect(),
-                false => text.as_bytes().to_vec(),
-            }
-        };
-        let writer = {
-            let (path, first, lines) = (path.clone(), encode(start), encode(&"\n".repeat(1 << 16)));
-            std::thread::spawn(move || {
-                let mut pipe = std::fs::OpenOptions::new().write(true).open(path).unwrap();
-                let bom: &[u8] = if utf16 { &[0xFF, 0xFE] } else { &[] };
-                let mut sent = pipe.write_all(bom).and_then(|()| pipe.write_all(&first));
-                let mut total = 0;
-                while sent.is_ok() && total < 64 << 20 {
-                    sent = pipe.write_all(&lines);
-                    total += lines.len();
-                }
-                // The reader stopped reading long before the end.
-                sent.is_err()
-            })
-        };
-        let mut error = None;
-        let held = extra_bytes_while(|| error = box2scene::load_path(&path, &options).err());
-        let error = error.expect("the limit stops the load");
-        assert!(writer.join().unwrap(), "the pipe was not read to its end");
-        std::fs::remove_file(&path).unwrap();
-        // The text within the limit: the byte-order mark, then whole characters.
-        let (units, offset) = match utf16 {
-            true => ((max - 2) / 2, max),
-            false => (max, max),
-        };
-        let line = 1 + units - start.len() as u64;
-        assert_eq!(error.code, Code::LimitExceeded, "{error:?}");
-        assert_eq!(
-            (u64::from(error.position.line), error.position.column, error.position.byte_offset),
-            (line, 1, offset),
-            "{error:?}"
-        );
-        assert!(error.message.contains("max_input_bytes = 1048576"), "{}", error.message);
-        assert!(held < 4 * max as usize, "{held} bytes held reading a 64 MiB pipe (utf16 {utf16})");
-    }
 }
