@@ -1,5 +1,16 @@
-# The example_simulate, example_simulate_v3 and example_simulate_v32 tests: a short run of
-# the bundled scene by SIMULATE (simulate, simulate_v3 or simulate_v32) must succeed and write its SVG. The old SVG is removed first so that a stale file cannot pass.
+# The example_simulate, example_simulate_v3 and example_simulate_v32 tests, for SIMULATE
+# (simulate, simulate_v3 or simulate_v32):
+# - `--help` prints the usage on standard output and succeeds;
+# - a short run of the bundled scene succeeds and writes SVG (given with --svg);
+# - the same run without --svg, started in WORKDIR, writes DEFAULT_SVG (the build folder's)
+#   and nothing in WORKDIR.
+# Old pictures are removed first so that a stale file cannot pass.
+
+execute_process(COMMAND "${SIMULATE}" --help RESULT_VARIABLE result
+                OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT result EQUAL 0 OR NOT out MATCHES "^usage: " OR NOT err STREQUAL "")
+  message(FATAL_ERROR "${SIMULATE} --help: exit ${result}, stdout '${out}', stderr '${err}'")
+endif()
 
 file(REMOVE "${SVG}")
 execute_process(COMMAND "${SIMULATE}" --steps 30 --svg "${SVG}" RESULT_VARIABLE result)
@@ -8,4 +19,16 @@ if(NOT result EQUAL 0)
 endif()
 if(NOT EXISTS "${SVG}")
   message(FATAL_ERROR "simulate succeeded but wrote no ${SVG}")
+endif()
+
+file(REMOVE "${DEFAULT_SVG}")
+file(REMOVE_RECURSE "${WORKDIR}")
+file(MAKE_DIRECTORY "${WORKDIR}")
+execute_process(COMMAND "${SIMULATE}" --steps 30 RESULT_VARIABLE result
+                WORKING_DIRECTORY "${WORKDIR}")
+file(GLOB left "${WORKDIR}/*")
+if(NOT result EQUAL 0 OR NOT EXISTS "${DEFAULT_SVG}" OR left)
+  message(FATAL_ERROR
+          "${SIMULATE} without --svg: exit ${result}, expected ${DEFAULT_SVG}, "
+          "found in its working directory: ${left}")
 endif()

@@ -2,7 +2,8 @@
 //
 //     simulate [SCENE] [--steps N] [--svg OUT.svg]
 //
-// SCENE defaults to the bundled showcase, N to 300 steps of 1/60 s, OUT.svg to showcase.svg.
+// SCENE defaults to the bundled showcase, N to 300 steps of 1/60 s, OUT.svg to simulate.svg in
+// the build folder beside the program (build/examples/).
 // Prints the load's warnings, what Box2D could not represent, and a table of every body's
 // start and end position; the SVG shows the start (faint), the end (solid), the joints and
 // each moving body's trajectory.
@@ -33,7 +34,8 @@ const b2Vec2 kDefaultGravity(0.0f, -10.0f);
 struct Options {
     std::string scene_path = BOX2SCENE_EXAMPLE_SCENE;
     int steps = 300;
-    std::string svg_path = "showcase.svg";
+    std::string svg_path = BOX2SCENE_EXAMPLE_SVG;
+    bool help = false;
 };
 
 using ScenePtr = std::unique_ptr<b2s_scene, decltype(&b2s_scene_free)>;
@@ -56,8 +58,8 @@ struct Frame {
 // For each body (indexed like the scene's bodies), its origin sampled along the run.
 using Trajectories = std::vector<std::vector<b2Vec2>>;
 
-void print_usage() {
-    std::fprintf(stderr, "usage: simulate [SCENE] [--steps N] [--svg OUT.svg]\n");
+void print_usage(std::FILE* to) {
+    std::fprintf(to, "usage: simulate [SCENE] [--steps N] [--svg OUT.svg]\n");
 }
 
 std::optional<int> parse_step_count(const char* text) {
@@ -73,7 +75,9 @@ std::optional<Options> parse_options(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         const bool has_value = i + 1 < argc;
-        if (arg == "--steps" && has_value) {
+        if (arg == "--help" || arg == "-h") {
+            options.help = true;
+        } else if (arg == "--steps" && has_value) {
             const std::optional<int> steps = parse_step_count(argv[++i]);
             if (!steps) {
                 std::fprintf(stderr, "simulate: --steps wants a whole number from 0 to 1000000\n");
@@ -86,7 +90,7 @@ std::optional<Options> parse_options(int argc, char** argv) {
             options.scene_path = arg;
             scene_given = true;
         } else {
-            print_usage();
+            print_usage(stderr);
             return std::nullopt;
         }
     }
@@ -403,6 +407,10 @@ bool write_file(const std::string& path, const std::string& content) {
 int main(int argc, char** argv) {
     const std::optional<Options> options = parse_options(argc, argv);
     if (!options) return 2;
+    if (options->help) {
+        print_usage(stdout);
+        return 0;
+    }
 
     const ScenePtr scene = load_scene(options->scene_path);
     if (!scene) return 1;

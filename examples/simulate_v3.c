@@ -7,7 +7,8 @@
  *     simulate_v3 [SCENE] [--steps N] [--svg OUT.svg]
  *     simulate_v32 [SCENE] [--steps N] [--svg OUT.svg]
  *
- * SCENE defaults to the bundled showcase, N to 300 steps of 1/60 s, OUT.svg to showcase.svg.
+ * SCENE defaults to the bundled showcase, N to 300 steps of 1/60 s, OUT.svg to the program's
+ * name with .svg in the build folder beside it (build/examples/).
  * Prints the load's warnings, what Box2D v3 could not represent, and a table of every body's
  * start and end position; the SVG shows the start (faint), the end (solid), the joints and
  * each moving body's trajectory.
@@ -57,6 +58,7 @@ typedef struct options {
     const char* scene_path;
     int steps;
     const char* svg_path;
+    bool help;
 } options;
 
 /* Where each body is at one instant (indexed like the scene's bodies; unused where the adapter
@@ -89,8 +91,8 @@ typedef struct text {
     bool failed;
 } text;
 
-static void print_usage(void) {
-    fprintf(stderr, "usage: " PROGRAM " [SCENE] [--steps N] [--svg OUT.svg]\n");
+static void print_usage(FILE* to) {
+    fprintf(to, "usage: " PROGRAM " [SCENE] [--steps N] [--svg OUT.svg]\n");
 }
 
 static bool parse_step_count(const char* value, int* steps) {
@@ -102,12 +104,14 @@ static bool parse_step_count(const char* value, int* steps) {
 }
 
 static bool parse_options(int argc, char** argv, options* out) {
-    options result = {BOX2SCENE_EXAMPLE_SCENE, 300, "showcase.svg"};
+    options result = {BOX2SCENE_EXAMPLE_SCENE, 300, BOX2SCENE_EXAMPLE_SVG, false};
     bool scene_given = false;
     for (int i = 1; i < argc; ++i) {
         const char* arg = argv[i];
         const bool has_value = i + 1 < argc;
-        if (strcmp(arg, "--steps") == 0 && has_value) {
+        if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
+            result.help = true;
+        } else if (strcmp(arg, "--steps") == 0 && has_value) {
             if (!parse_step_count(argv[++i], &result.steps)) {
                 fprintf(stderr, PROGRAM ": --steps wants a whole number from 0 to 1000000\n");
                 return false;
@@ -118,7 +122,7 @@ static bool parse_options(int argc, char** argv, options* out) {
             result.scene_path = arg;
             scene_given = true;
         } else {
-            print_usage();
+            print_usage(stderr);
             return false;
         }
     }
@@ -505,6 +509,10 @@ static bool write_file(const char* path, const text* content) {
 int main(int argc, char** argv) {
     options opts;
     if (!parse_options(argc, argv, &opts)) return 2;
+    if (opts.help) {
+        print_usage(stdout);
+        return 0;
+    }
 
     b2s_scene* scene = load_scene(opts.scene_path);
     if (scene == NULL) return 1;
