@@ -1052,3 +1052,45 @@ fn a_shape_named_twice_is_warned_about() {
     assert!(scene.diagnostics().is_empty(), "a Name attribute alone is fine");
     assert_eq!(scene.find_shape("only"), Some(0));
 }
+
+/// The message of the one warning `marked` gives at its marker, with `code`.
+fn warning_message(marked: &str, code: Code) -> String {
+    let (xml, line, column) = unmark(marked);
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).expect("a warning is no failure");
+    let found: Vec<_> = scene
+        .diagnostics()
+        .iter()
+        .map(|d| {
+            (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap())
+        })
+        .collect();
+    match found.as_slice() {
+        [(c, l, col, message)] if (*c, *l, *col) == (code, line, column) => message.to_string(),
+        _ => panic!("expected one {code} at {line}:{column}, found {found:?}"),
+    }
+}
+
+/// A misspelt element or attribute is named with the nearest name its object knows, in the
+/// format's spelling; a name far from every known one gets no hint.
+#[test]
+fn an_unknown_name_near_a_known_one_gets_a_hint() {
+    let fixture = world(CIRCLE, "<Fixture><Shape>0</Shape>⌖<Densty>1</Densty></Fixture>", "", "");
+    let message = warning_message(&fixture, Code::UnknownElement);
+    assert_eq!(message, "unknown element <Densty> in <Fixture> ignored (did you mean <Density>?)");
+    // Two letters swapped are one edit; case does not count.
+    let body = world("", "", "<Body Type=\"Static\">⌖<POSITOIN>1 2</POSITOIN></Body>", "");
+    let message = warning_message(&body, Code::UnknownElement);
+    assert_eq!(message, "unknown element <POSITOIN> in <Body> ignored (did you mean <Position>?)");
+    let joint = joint("Revolute", "⌖<EnableLimt>true</EnableLimt>");
+    let message = warning_message(&joint, Code::UnknownElement);
+    assert!(message.ends_with("(did you mean <EnableLimit>?)"), "{message}");
+    let attribute =
+        "<World Version=\"1\" Verison=\"⌖2\"><Shapes/><Fixtures/><Bodies/><Joints/></World>";
+    let message = warning_message(attribute, Code::UnknownElement);
+    assert_eq!(message, "unknown attribute Verison on <World> ignored (did you mean Version?)");
+    for far in ["<Wind/>", "<D/>", "<Dens/>", "<DensityOfTheMaterialUsedHere/>"] {
+        let fixture = world(CIRCLE, &format!("<Fixture><Shape>0</Shape>⌖{far}</Fixture>"), "", "");
+        let message = warning_message(&fixture, Code::UnknownElement);
+        assert!(!message.contains("did you mean"), "{far}: {message}");
+    }
+}

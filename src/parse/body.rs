@@ -82,7 +82,7 @@ impl<'a> Reader<'a> {
                 BodyChild::UserData => body.user_data = self.user_data(&child)?,
                 BodyChild::Tag => match self.arena.tag_is_user_data() {
                     true => body.user_data = self.tagged_user_data(&child)?,
-                    false => self.unknown(tag, &child)?,
+                    false => self.unknown(tag, &child, &[])?,
                 },
             }
         }
@@ -111,7 +111,7 @@ impl<'a> Reader<'a> {
         let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
             let attrs = p.tok.attributes(pair)?;
-            p.unknown_attributes(pair, &attrs, &["fixtureid", "shapeid"])?;
+            p.unknown_attributes(pair, &attrs, &["FixtureId", "ShapeId"])?;
             let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
                 Some(attr) => p.tok.attribute(pair, attr, crate::text::id),
                 None => Err(problem(
@@ -130,7 +130,7 @@ impl<'a> Reader<'a> {
     fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] =
-            if self.arena.id_is_informational() { &["type", "id"] } else { &["type"] };
+            if self.arena.id_is_informational() { &["Type", "Id"] } else { &["Type"] };
         self.unknown_attributes(tag, &attrs, known)?;
         self.arena.origins.signs.ids |= known.len() > 1 && attrs.iter().any(|a| a.is("id"));
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {

@@ -27,7 +27,7 @@ impl<'a> Reader<'a> {
     pub(super) fn fixture(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
         let attrs = self.tok.attributes(tag)?;
-        let known: &[&str] = if self.arena.id_is_informational() { &["id"] } else { &[] };
+        let known: &[&str] = if self.arena.id_is_informational() { &["Id"] } else { &[] };
         self.unknown_attributes(tag, &attrs, known)?;
         self.arena.origins.signs.ids |= !known.is_empty() && attrs.iter().any(|a| a.is("id"));
         let mut fixture = Fixture::default();
@@ -69,7 +69,7 @@ impl<'a> Reader<'a> {
                 UserData => fixture.user_data = self.user_data(&child)?,
                 FixtureChild::Tag => match self.arena.tag_is_user_data() {
                     true => fixture.user_data = self.tagged_user_data(&child)?,
-                    false => self.unknown(tag, &child)?,
+                    false => self.unknown(tag, &child, &[])?,
                 },
             }
         }

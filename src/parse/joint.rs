@@ -316,7 +316,7 @@ impl<'a> Reader<'a> {
 
     fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
         let attrs = self.tok.attributes(tag)?;
-        self.unknown_attributes(tag, &attrs, &["type"])?;
+        self.unknown_attributes(tag, &attrs, &["Type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(Code::MissingAttribute, tag.at, "<Joint> has no Type attribute"));
         };

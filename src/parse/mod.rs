@@ -164,20 +164,32 @@ impl<'a> Reader<'a> {
         Ok(self.arena.scene.add_str(self.tok.text_of(&value.text)))
     }
 
-    /// Warns about every attribute of `tag` except the lowercase names in `known`, and keeps
-    /// them for the start tag of the object being read.
+    /// Warns about every attribute of `tag` except those named in `known` (in any case), with
+    /// the nearest known name as a hint, and keeps them for the start tag of the object
+    /// being read.
     pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
-            let message = format!("unknown attribute {} on <{}> ignored", attr.key, tag.name());
+            let hint = match names::nearest(attr.key, known) {
+                Some(near) => format!(" (did you mean {near}?)"),
+                None => String::new(),
+            };
+            let message =
+                format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
             self.keep_str(Place::Attribute, &verbatim(tag, attr));
         }
         Ok(())
     }
 
-    /// Warns that `child` is not part of `parent` and skips it (see [`Reader::ignore`]).
-    pub fn unknown(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
-        let message = format!("unknown element <{}> in <{}> ignored", child.name(), parent.name());
+    /// Warns that `child` is not part of `parent`, with the nearest of `parent`'s `known`
+    /// elements as a hint, and skips it (see [`Reader::ignore`]).
+    pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Parsed<()> {
+        let hint = match names::nearest(child.name(), known) {
+            Some(near) => format!(" (did you mean <{near}>?)"),
+            None => String::new(),
+        };
+        let message =
+            format!("unknown element <{}> in <{}> ignored{hint}", child.name(), parent.name());
         self.ignore(child, message)
     }
 
@@ -296,7 +308,7 @@ impl<'a> Reader<'a> {
             self.keep_comments(self.object, Place::Inside { within: self.within, before });
         }
         let Some(index) = found else {
-            self.unknown(parent, child)?;
+            self.unknown(parent, child, E::NAMES.names)?;
             return Ok(None);
         };
         let bit = 1u64 << index;

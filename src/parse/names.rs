@@ -256,6 +256,58 @@ impl Names {
     }
 }
 
+/// The known name nearest `name` in spelling (letters compared in any case), for a "did
+/// you mean" hint: one whose edit distance, counting a swap of two neighbouring letters as
+/// one edit, is at most a third of the longer name's length (and at least 1), the first
+/// of the nearest in `known`'s order. None when no name is that near, and for a name
+/// longer than any known one could be near.
+pub(crate) fn nearest<'k>(name: &str, known: &[&'k str]) -> Option<&'k str> {
+    const LONGEST: usize = 2 * SHORT;
+    let name = name.as_bytes();
+    if name.is_empty() || name.len() > LONGEST {
+        return None;
+    }
+    let mut best: Option<(usize, &str)> = None;
+    for &candidate in known {
+        let bound = name.len().max(candidate.len()).max(3) / 3;
+        if candidate.len() > LONGEST || name.len().abs_diff(candidate.len()) > bound {
+            continue;
+        }
+        let distance = edit_distance(name, candidate.as_bytes());
+        if distance <= bound && best.is_none_or(|(d, _)| distance < d) {
+            best = Some((distance, candidate));
+        }
+    }
+    best.map(|(_, candidate)| candidate)
+}
+
+/// The optimal string alignment distance between `a` and `b` (at most `2 * SHORT` bytes
+/// each): insertions, deletions, substitutions and swaps of neighbours, ASCII letters
+/// equal in any case.
+fn edit_distance(a: &[u8], b: &[u8]) -> usize {
+    const WIDTH: usize = 2 * SHORT + 1;
+    let same = |x: u8, y: u8| x.eq_ignore_ascii_case(&y);
+    // Three rows of the table: two back, one back, this one.
+    let mut rows = [[0usize; WIDTH]; 3];
+    for (j, cell) in rows[0].iter_mut().enumerate().take(b.len() + 1) {
+        *cell = j;
+    }
+    for i in 1..=a.len() {
+        let (back2, back1, row) = ((i + 1) % 3, (i + 2) % 3, i % 3);
+        rows[row][0] = i;
+        for j in 1..=b.len() {
+            let cost = usize::from(!same(a[i - 1], b[j - 1]));
+            let mut d =
+                (rows[back1][j] + 1).min(rows[row][j - 1] + 1).min(rows[back1][j - 1] + cost);
+            if i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]) {
+                d = d.min(rows[back2][j - 2] + 1);
+            }
+            rows[row][j] = d;
+        }
+    }
+    rows[a.len() % 3][b.len()]
+}
+
 #[cfg(test)]
 mod tests {
     use super::{Name, Names, key};
@@ -396,5 +448,21 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn the_edit_distance_counts_a_swap_of_neighbours_as_one_edit() {
+        let d = |a: &str, b: &str| super::edit_distance(a.as_bytes(), b.as_bytes());
+        assert_eq!(d("", ""), 0);
+        assert_eq!(d("", "Type"), 4);
+        assert_eq!(d("Tpye", "Type"), 1);
+        assert_eq!(d("DENSTY", "Density"), 1);
+        assert_eq!(d("ab", "ba"), 1);
+        assert_eq!(d("abc", "ca"), 3);
+        assert_eq!(d("Radius", "Position"), 7);
+        let long = "x".repeat(32);
+        assert_eq!(d(&long, "Position"), 32);
+        assert_eq!(super::nearest(&long, &["Position"]), None);
+        assert_eq!(super::nearest("Poisiton", &["Position", "Positions"]), Some("Position"));
     }
 }

@@ -137,9 +137,9 @@ impl<'a> Reader<'a> {
     fn shape_type(&mut self, tag: &Tag) -> Parsed<Shape> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.farseer_layout() {
-            &["type", "name", "density"]
+            &["Type", "Name", "Density"]
         } else {
-            &["type", "name"]
+            &["Type", "Name"]
         };
         self.unknown_attributes(tag, &attrs, known)?;
         let density =

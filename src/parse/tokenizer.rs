@@ -166,10 +166,11 @@ pub(super) struct Attr<'t> {
 }
 
 impl Attr<'_> {
-    /// Inlined: it is called with a literal name, against which the comparison folds.
+    /// Whether the attribute is named `name`, in any case. Inlined: it is called with a
+    /// literal name, against which the comparison folds.
     #[inline]
-    pub fn is(&self, lowercase_name: &str) -> bool {
-        self.key.eq_ignore_ascii_case(lowercase_name)
+    pub fn is(&self, name: &str) -> bool {
+        self.key.eq_ignore_ascii_case(name)
     }
 }
 

@@ -172,7 +172,7 @@ impl<'a> Reader<'a> {
 
     pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
         let attrs = self.tok.attributes(root)?;
-        self.unknown_attributes(root, &attrs, &["version"])?;
+        self.unknown_attributes(root, &attrs, &["Version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
             return self.warn(
                 Code::LegacyUnversioned,
