@@ -1,9 +1,12 @@
 //! What a load builds as it reads: the scene's records and pools, where each object was
-//! written (for the checks that need the whole file), and the warnings found. It only
-//! builds; the reader fills it, and resolve and validate finish it.
+//! written (for the checks that need the whole file), and the warnings found (and, in a
+//! load that goes on past errors, the errors). It only builds; the reader fills it, and
+//! resolve and validate finish it.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Finding, MAX_WARNINGS, Parsed, Position, Spot, Step};
+use crate::error::{
+    Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem, Spot, Step,
+};
 use crate::scene::{SceneBuilder, Vec2};
 
 /// A scene under construction, with what the later stages need to check it.
@@ -14,6 +17,10 @@ pub(crate) struct Arena {
     pub origins: Origins,
     /// Every warning becomes the load's error.
     strict: bool,
+    /// The load goes on past the errors it can: see [`Arena::recover`].
+    recovering: bool,
+    /// The errors gone on past, each placed, in the order found.
+    errors: Vec<Finding>,
     /// The warnings kept, at most [`MAX_WARNINGS`], in the order found, each placed.
     warnings: Vec<Finding>,
     /// Warnings past [`MAX_WARNINGS`]: how many, and the first.
@@ -201,25 +208,49 @@ impl std::fmt::Debug for JointOrigins {
 }
 
 impl Arena {
-    pub fn new(strict: bool) -> Arena {
+    pub fn new(strict: bool, recovering: bool) -> Arena {
         Arena {
             version: 0,
             scene: SceneBuilder::default(),
             origins: Origins::default(),
             strict,
+            recovering,
+            errors: Vec::new(),
             warnings: Vec::new(),
             dropped: (0, None),
         }
     }
 
-    /// Records `warning`; in strict mode it is the load's error instead.
+    /// Records `warning`; in strict mode it is an error instead (see [`Arena::recover`]).
     pub fn note(&mut self, warning: Finding) -> Parsed<()> {
         if self.strict {
             let message = format!("{} (strict mode)", warning.message);
-            return Err(Box::new(Finding { message, ..warning }));
+            return self.recover(Box::new(Finding { message, ..warning }));
         }
         self.keep(warning);
         Ok(())
+    }
+
+    /// An error after which the reading can go on as if the object had not said what it
+    /// got wrong (a value, a reference). A load that stops at its first error stops at it;
+    /// one that goes on records it, up to [`MAX_ERRORS`], and goes on.
+    pub fn recover(&mut self, error: Problem) -> Parsed<()> {
+        if !self.recovering || self.errors.len() >= MAX_ERRORS {
+            return Err(error);
+        }
+        self.errors.push(*error);
+        Ok(())
+    }
+
+    /// Whether the load went on past an error: then nothing is checked that needs the
+    /// scene whole, and no scene is made.
+    pub fn has_errors(&self) -> bool {
+        !self.errors.is_empty()
+    }
+
+    /// The errors gone on past, in the order found.
+    pub fn take_errors(&mut self) -> Vec<Finding> {
+        std::mem::take(&mut self.errors)
     }
 
     /// Keeps `warning` unless [`MAX_WARNINGS`] are kept already; then counts it.

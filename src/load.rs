@@ -8,54 +8,126 @@ use std::fs::File;
 use std::io::Read;
 use std::path::Path;
 
-use crate::arena::Arena;
-use crate::error::{Error, Finding, Parsed, Severity};
+use crate::error::{Error, Finding, Severity};
 use crate::input::Source;
 use crate::scene::{Diagnostic, Scene};
 use crate::{LoadOptions, parse, resolve, validate};
 
 /// Loads a scene from the bytes of a file.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
-    finish(parse::read(Source::memory(bytes, options)?, options))
+    first_error(finish(parse::read(Source::memory(bytes, options)?, options, false)))
 }
 
 /// Loads a scene from a file, reading it a window at a time.
 pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Scene, Error> {
-    finish(parse::read(Source::path(path, options)?, options))
+    first_error(finish(parse::read(Source::path(path, options)?, options, false)))
 }
 
 /// Loads a scene from an open file (a pipe too), read from its start as from its path;
 /// `name` is its name in messages.
 pub fn load_file(file: File, name: &Path, options: &LoadOptions) -> Result<Scene, Error> {
-    finish(parse::read(Source::file(file, name, options)?, options))
+    first_error(finish(parse::read(Source::file(file, name, options)?, options, false)))
 }
 
 /// Loads a scene from a stream read once, a window at a time; `name` is its name in
 /// messages.
 pub fn load_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Result<Scene, Error> {
-    finish(parse::read(Source::stream(stream, name, options)?, options))
+    first_error(finish(parse::read(Source::stream(stream, name, options)?, options, false)))
 }
 
-/// Resolves, validates and freezes what was read, or reports the problem, everything
-/// placed at its line and column.
-fn finish((read, placer): (Parsed<Arena>, parse::Placer<'_>)) -> Result<Scene, Error> {
+/// What a load that goes on past the errors it can found: the scene when there was no
+/// error, else every error (see [`crate::check`]).
+#[derive(Debug)]
+pub struct Checked {
+    /// The scene, when the file has no error.
+    pub scene: Option<Scene>,
+    /// Every error, in the order of the file: those the load went on past (a value that
+    /// does not convert or is out of range, an ID that names nothing), and the one that
+    /// ended it, when one did (a markup error, a limit, a missing element or attribute). At
+    /// most one error a place. Empty when `scene` is some.
+    pub errors: Vec<Error>,
+    /// The warnings, in the order of the file, each as an [`Error`] value holds one: its
+    /// code, position and message. A scene's are its diagnostics too.
+    pub warnings: Vec<Error>,
+}
+
+/// Checks a file as [`load_file`] loads it, going on past the errors it can (see
+/// [`Checked`]), on one thread.
+pub fn check_file(file: File, name: &Path, options: &LoadOptions) -> Checked {
+    let options = &one_thread(options);
+    match Source::file(file, name, options) {
+        Ok(source) => finish(parse::read(source, options, true)),
+        Err(error) => Checked::failed(error),
+    }
+}
+
+/// Checks a stream as [`load_stream`] loads it, going on past the errors it can.
+pub fn check_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Checked {
+    let options = &one_thread(options);
+    match Source::stream(stream, name, options) {
+        Ok(source) => finish(parse::read(source, options, true)),
+        Err(error) => Checked::failed(error),
+    }
+}
+
+/// Checks the bytes of a file as [`load`] loads them, going on past the errors it can.
+pub fn check(bytes: &[u8], options: &LoadOptions) -> Checked {
+    let options = &one_thread(options);
+    match Source::memory(bytes, options) {
+        Ok(source) => finish(parse::read(source, options, true)),
+        Err(error) => Checked::failed(error),
+    }
+}
+
+/// A read that goes on past errors reads on one thread: what a second thread reads ahead
+/// stops at an error of its piece, and its pieces would have to carry errors as they carry
+/// warnings.
+fn one_thread(options: &LoadOptions) -> LoadOptions {
+    LoadOptions { threads: 1, ..*options }
+}
+
+impl Checked {
+    fn failed(error: Error) -> Checked {
+        Checked { scene: None, errors: vec![error], warnings: Vec::new() }
+    }
+}
+
+/// A load's result: the scene or its first error.
+fn first_error(checked: Checked) -> Result<Scene, Error> {
+    match checked.scene {
+        Some(scene) => Ok(scene),
+        None => {
+            Err(checked.errors.into_iter().next().expect("a load without a scene has an error"))
+        }
+    }
+}
+
+/// Resolves, validates and freezes what was read, or reports the errors, everything placed
+/// at its line and column.
+fn finish((read, mut errors, placer): parse::Read<'_>) -> Checked {
     let checked = read.and_then(|mut arena| {
         resolve::resolve(&mut arena)?;
-        validate::dynamic_bodies_without_mass(&mut arena)?;
-        validate::joints_start_satisfied(&mut arena)?;
+        if !arena.has_errors() {
+            validate::dynamic_bodies_without_mass(&mut arena)?;
+            validate::joints_start_satisfied(&mut arena)?;
+        }
         Ok(arena)
     });
     let mut arena = match checked {
         Ok(arena) => arena,
         Err(problem) => {
-            let mut found = [*problem];
-            placer.place(&mut found);
-            let [Finding { code, position, message, .. }] = found;
-            return Err(Error { code, position: position.unwrap_or_default(), message });
+            errors.push(*problem);
+            return Checked { scene: None, errors: placed(errors, &placer), warnings: Vec::new() };
         }
     };
+    errors.append(&mut arena.take_errors());
     let mut warnings = arena.take_warnings();
     placer.place(&mut warnings);
+    if !errors.is_empty() {
+        let warnings = warnings.into_iter().map(error_of).collect();
+        return Checked { scene: None, errors: placed(errors, &placer), warnings };
+    }
+    let mut kept = Vec::with_capacity(warnings.len());
     for w in warnings {
         let position = w.position.unwrap_or_default();
         let message = arena.scene.add_str(&w.message);
@@ -67,8 +139,22 @@ fn finish((read, placer): (Parsed<Arena>, parse::Placer<'_>)) -> Result<Scene, E
             line: position.line,
             column: position.column,
         });
+        kept.push(error_of(w));
     }
-    Ok(arena.scene.freeze())
+    Checked { scene: Some(arena.scene.freeze()), errors: Vec::new(), warnings: kept }
+}
+
+/// `errors` placed at their lines and columns, in the order of the file, one a place: an ID
+/// that did not convert is not reported again as naming nothing.
+fn placed(mut errors: Vec<Finding>, placer: &parse::Placer<'_>) -> Vec<Error> {
+    errors.sort_by_key(Finding::order);
+    errors.dedup_by_key(|e| e.order());
+    placer.place(&mut errors);
+    errors.into_iter().map(error_of).collect()
+}
+
+fn error_of(Finding { code, position, message, .. }: Finding) -> Error {
+    Error { code, position: position.unwrap_or_default(), message }
 }
 
 #[cfg(test)]
@@ -97,7 +183,7 @@ mod tests {
         let options = LoadOptions::default();
         let source = Source::path(&path, &options).unwrap();
         std::fs::rename(&other, &path).unwrap();
-        let scene = finish(parse::read(source, &options)).unwrap();
+        let scene = first_error(finish(parse::read(source, &options, false))).unwrap();
         std::fs::remove_file(&path).unwrap();
         let warning = &scene.diagnostics()[0];
         assert_eq!((warning.line, warning.column, warning.byte_offset), (3, 3, 61));

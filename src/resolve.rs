@@ -11,11 +11,18 @@ use crate::error::{Code, Parsed, Problem, Spot};
 use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
 use crate::validate;
 
+/// Normalises the dialects and checks every reference. A load that goes on past errors
+/// records every reference that names nothing, and stops there if it found any error.
 pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
     if p.farseer_layout() {
         normalise_farseer_layout(p)?;
     }
-    check_references(p)?;
+    for error in check_references(p) {
+        p.recover(error)?;
+    }
+    if p.has_errors() {
+        return Ok(());
+    }
     let dialect = dialect(p);
     p.scene.dialect = Some(dialect);
     if matches!(dialect, Dialect::Farseer2013 | Dialect::Farseer35 | Dialect::Aether) {
@@ -176,9 +183,9 @@ fn has(n: usize, one: &str, many: &str) -> String {
     format!("the file has {n} {}", if n == 1 { one } else { many })
 }
 
-/// Checks every ID against its container, and the gear joints' targets; reports the error
-/// earliest in the file.
-fn check_references(p: &Arena) -> Parsed<()> {
+/// Checks every ID against its container, and the gear joints' targets: the errors, in the
+/// order of the file.
+fn check_references(p: &Arena) -> Vec<Problem> {
     let s = &p.scene;
     let mut errors: Vec<Problem> = Vec::new();
     for (i, (f, at)) in s.fixtures.iter().zip(p.origins.fixture_shapes.iter()).enumerate() {
@@ -238,10 +245,8 @@ fn check_references(p: &Arena) -> Parsed<()> {
             )));
         }
     }
-    match errors.into_iter().min_by_key(|e| e.order()) {
-        Some(first) => Err(first),
-        None => Ok(()),
-    }
+    errors.sort_by_key(|e| e.order());
+    errors
 }
 
 /// A problem at `spot`.

@@ -1,18 +1,29 @@
 //! Any bytes into the Rust loader: it returns a scene or an error, never panics, hangs or
-//! runs out of memory; a scene's cross references all hold.
+//! runs out of memory; a scene's cross references all hold. A check of the same bytes
+//! gives the same scene, or errors among which is the load's.
 #![no_main]
 
-use box2scene::{LoadOptions, NONE, Scene, load};
+use box2scene::{LoadOptions, NONE, Scene, check, load};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     for strict in [false, true] {
-        if let Ok(scene) = load(data, &LoadOptions { strict, ..LoadOptions::default() }) {
-            check_references(&scene);
-            assert!(
-                !strict || scene.diagnostics().is_empty(),
-                "strict mode turns warnings into errors"
-            );
+        let options = LoadOptions { strict, ..LoadOptions::default() };
+        let checked = check(data, &options);
+        match load(data, &options) {
+            Ok(scene) => {
+                check_references(&scene);
+                assert!(
+                    !strict || scene.diagnostics().is_empty(),
+                    "strict mode turns warnings into errors"
+                );
+                let same = checked.scene.expect("a file that loads checks without errors");
+                assert_eq!(same.to_json(), scene.to_json());
+            }
+            Err(error) => {
+                assert!(checked.scene.is_none() && checked.errors.len() <= 101);
+                assert!(checked.errors.contains(&error), "{error:?} not in {:?}", checked.errors);
+            }
         }
     }
 });

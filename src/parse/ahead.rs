@@ -262,7 +262,7 @@ fn root(
 ) -> Option<(Tag, u32)> {
     let head = text.bytes(0, first.min(SEARCH_BYTES))?;
     let end = memchr::memrchr(b'<', &head)?;
-    let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options));
+    let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options), false);
     let root = reader.root().ok()?;
     reader.read_version(&root).ok()?;
     Some((root, reader.arena.version))
@@ -278,7 +278,7 @@ fn read_piece(
     (at, container): Boundary,
     end: Option<Boundary>,
 ) -> Option<Done> {
-    let mut reader = Reader::new(Tokenizer::new(source, options));
+    let mut reader = Reader::new(Tokenizer::new(source, options), false);
     reader.arena.version = version;
     let tag = Tag::item(Name::new(container.name()), at);
     reader.tok.start_item(at, vec![(root.name.clone(), root.at), (tag.name.clone(), at)]);
@@ -404,7 +404,7 @@ mod tests {
         let threads = if split.is_some() { 2 } else { 1 };
         let options = &LoadOptions { threads, ..*options };
         match Source::memory(bytes, options) {
-            Ok(source) => shown(super::super::read_split(source, options, split).0),
+            Ok(source) => shown(super::super::read_split(source, options, false, split).0),
             Err(e) => format!("{e:?}"),
         }
     }
@@ -633,7 +633,7 @@ mod tests {
                 false => Source::memory(text.as_bytes(), &options).unwrap(),
                 true => Source::path(&file, &options).unwrap(),
             };
-            let mut reader = Reader::new(Tokenizer::new(source, &options));
+            let mut reader = Reader::new(Tokenizer::new(source, &options), false);
             reader.tok.end_before(ends.clone());
             let mut seen = Seen::default();
             let mut read = reader.document(&mut seen);
@@ -752,7 +752,7 @@ mod tests {
         }
         for _ in 0..20 {
             let source = Source::memory(bytes, &options).unwrap();
-            let got = shown(super::super::read(source, &options).0);
+            let got = shown(super::super::read(source, &options, false).0);
             assert_same(&got, &expected, format_args!("as the two threads met"));
         }
         // A character XML does not allow, in a comment in each piece: whoever reads it
@@ -788,7 +788,7 @@ mod tests {
         for in_file in [false, true] {
             for first in 0..2 {
                 let source = Source::memory(mine.as_bytes(), &options).unwrap();
-                let mut reader = Reader::new(Tokenizer::new(source, &options));
+                let mut reader = Reader::new(Tokenizer::new(source, &options), false);
                 let second = match in_file {
                     false => Pieces::Memory { text: &theirs, bom: false },
                     true => {
@@ -837,7 +837,7 @@ mod tests {
         let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
         let options = LoadOptions::default();
         let source = Source::memory(mine.as_bytes(), &options).unwrap();
-        let mut reader = Reader::new(Tokenizer::new(source, &options));
+        let mut reader = Reader::new(Tokenizer::new(source, &options), false);
         // One piece: the helper's text matches the caller's up to its start.
         let pieces = vec![(starts[2], Container::Bodies)];
         std::thread::scope(|scope| {

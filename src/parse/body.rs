@@ -55,23 +55,23 @@ impl<'a> Reader<'a> {
             }
             match name {
                 BodyChild::Name => body.name = self.string(&child)?,
-                BodyChild::Active => body.active = self.tok.boolean(&child)?,
-                BodyChild::AllowSleep => body.allow_sleep = self.tok.boolean(&child)?,
-                BodyChild::Awake => body.awake = self.tok.boolean(&child)?,
-                BodyChild::Bullet => body.bullet = self.tok.boolean(&child)?,
-                BodyChild::FixedRotation => body.fixed_rotation = self.tok.boolean(&child)?,
-                BodyChild::Angle => body.angle = self.tok.float(&child)?,
+                BodyChild::Active => body.active = self.boolean(&child)?,
+                BodyChild::AllowSleep => body.allow_sleep = self.boolean(&child)?,
+                BodyChild::Awake => body.awake = self.boolean(&child)?,
+                BodyChild::Bullet => body.bullet = self.boolean(&child)?,
+                BodyChild::FixedRotation => body.fixed_rotation = self.boolean(&child)?,
+                BodyChild::Angle => body.angle = self.float(&child)?,
                 // Negative damping is not an error of the format; the Box2D adapter, whose
                 // engine asserts against it, reports it and uses 0.
-                BodyChild::AngularDamping => body.angular_damping = self.tok.float(&child)?,
-                BodyChild::AngularVelocity => body.angular_velocity = self.tok.float(&child)?,
-                BodyChild::LinearDamping => body.linear_damping = self.tok.float(&child)?,
-                BodyChild::LinearVelocity => body.linear_velocity = self.tok.vector(&child)?,
-                BodyChild::Position => body.position = self.tok.vector(&child)?,
-                BodyChild::InertiaScale => body.inertia_scale = self.tok.float(&child)?,
+                BodyChild::AngularDamping => body.angular_damping = self.float(&child)?,
+                BodyChild::AngularVelocity => body.angular_velocity = self.float(&child)?,
+                BodyChild::LinearDamping => body.linear_damping = self.float(&child)?,
+                BodyChild::LinearVelocity => body.linear_velocity = self.vector(&child)?,
+                BodyChild::Position => body.position = self.vector(&child)?,
+                BodyChild::InertiaScale => body.inertia_scale = self.float(&child)?,
                 BodyChild::GravityScale => {
                     self.newer_construct(child.at, "<GravityScale>")?;
-                    body.gravity_scale = self.tok.float(&child)?;
+                    body.gravity_scale = self.float(&child)?;
                 }
                 BodyChild::MassData => {
                     let mass = &mut body.mass_data;
@@ -141,7 +141,7 @@ impl<'a> Reader<'a> {
             ));
         };
         let value = super::trim_xml(&ty.value);
-        match super::lowercase(value, &mut [0; 16]) {
+        let kind = match super::lowercase(value, &mut [0; 16]) {
             "static" => Ok(BodyKind::Static),
             "kinematic" => Ok(BodyKind::Kinematic),
             "dynamic" => Ok(BodyKind::Dynamic),
@@ -153,7 +153,9 @@ impl<'a> Reader<'a> {
                     super::shorten(value)
                 ),
             )),
-        }
+        };
+        // Every kind of body reads the same elements: the reading goes on as if Static.
+        self.recovered(kind, BodyKind::Static)
     }
 
     fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
@@ -171,7 +173,7 @@ impl<'a> Reader<'a> {
                     (mass.mass, mass.mass_given) = (self.non_negative(&child)?, true)
                 }
                 MassChild::Center => {
-                    (mass.center, mass.center_given) = (self.tok.vector(&child)?, true)
+                    (mass.center, mass.center_given) = (self.vector(&child)?, true)
                 }
                 MassChild::Inertia => {
                     (mass.inertia, mass.inertia_given) = (self.non_negative(&child)?, true)
@@ -186,7 +188,7 @@ impl<'a> Reader<'a> {
     fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
         let first = self.arena.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
-            let (index, at) = p.tok.id(id)?;
+            let (index, at) = p.id(id)?;
             p.arena.scene.fixture_ids.push(index);
             let origin = p.spot(at);
             p.arena.origins.fixture_ids.push(origin);

@@ -54,14 +54,14 @@ impl<'a> Reader<'a> {
                     self.discard(&child, message)?;
                 }
                 Shape => {
-                    let (shape, at) = self.tok.id(&child)?;
+                    let (shape, at) = self.id(&child)?;
                     (fixture.shape, shape_at) = (shape, Some(self.spot(at)));
                 }
                 Name => fixture.name = self.string(&child)?,
                 Density => fixture.density = self.non_negative(&child)?,
                 Friction => fixture.friction = self.non_negative(&child)?,
                 Restitution => fixture.restitution = self.non_negative(&child)?,
-                IsSensor => fixture.is_sensor = self.tok.boolean(&child)?,
+                IsSensor => fixture.is_sensor = self.boolean(&child)?,
                 FilterData => {
                     let filter = &mut fixture.filter;
                     self.within(FilterData.name(), |p| p.filter(&child, filter))?
@@ -98,9 +98,7 @@ impl<'a> Reader<'a> {
             match name {
                 FilterChild::CategoryBits => filter.category_bits = self.bits(&child)?,
                 FilterChild::MaskBits => filter.mask_bits = self.bits(&child)?,
-                FilterChild::GroupIndex => {
-                    filter.group_index = self.tok.parsed(&child, text::int16)?.0
-                }
+                FilterChild::GroupIndex => filter.group_index = self.value(&child, text::int16)?.0,
                 // Farseer's per-body collision exceptions: Box2D has no such thing.
                 FilterChild::CollisionIgnores => {
                     self.arena.origins.signs.collision_ignores = true;
@@ -113,6 +111,6 @@ impl<'a> Reader<'a> {
 
     /// Collision bits, all 32 kept.
     fn bits(&mut self, tag: &Tag) -> Parsed<u32> {
-        Ok(self.tok.parsed(tag, text::bits)?.0)
+        Ok(self.value(tag, text::bits)?.0)
     }
 }

@@ -248,19 +248,19 @@ impl<'a> Reader<'a> {
                 Name => joint.name = self.string(&child)?,
                 UserData => joint.user_data = self.user_data(&child)?,
                 Tag => joint.user_data = self.tagged_user_data(&child)?,
-                CollideConnected => joint.collide_connected = self.tok.boolean(&child)?,
-                BodyA => (joint.body_a, at.body_a) = self.tok.id(&child)?,
-                BodyB => (joint.body_b, at.body_b) = self.tok.id(&child)?,
+                CollideConnected => joint.collide_connected = self.boolean(&child)?,
+                BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
+                BodyB => (joint.body_b, at.body_b) = self.id(&child)?,
                 // Legacy files name the bodies JointA and JointB.
-                JointA if legacy => (joint.body_a, at.body_a) = self.tok.id(&child)?,
-                JointB if legacy => (joint.body_b, at.body_b) = self.tok.id(&child)?,
-                JointA => (joint.joint_a, at.joint_a) = self.tok.id(&child)?,
-                JointB => (joint.joint_b, at.joint_b) = self.tok.id(&child)?,
+                JointA if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
+                JointB if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
+                JointA => (joint.joint_a, at.joint_a) = self.id(&child)?,
+                JointB => (joint.joint_b, at.joint_b) = self.id(&child)?,
                 _ => match slot.expect("elements without a slot were skipped above") {
-                    Slot::Vector(field) => *field(&mut joint) = self.tok.vector(&child)?,
-                    Slot::Float(field) => *field(&mut joint) = self.tok.float(&child)?,
+                    Slot::Vector(field) => *field(&mut joint) = self.vector(&child)?,
+                    Slot::Float(field) => *field(&mut joint) = self.float(&child)?,
                     Slot::NonNegative(field) => *field(&mut joint) = self.non_negative(&child)?,
-                    Slot::Flag(field) => *field(&mut joint) = self.tok.boolean(&child)?,
+                    Slot::Flag(field) => *field(&mut joint) = self.boolean(&child)?,
                     Slot::Ignored => self.tok.skip(&child)?,
                 },
             }
@@ -349,7 +349,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The rules one joint can break on its own (cross references come later).
-    fn check_joint(&self, tag: &Tag, joint: &Joint, at: &Refs) -> Parsed<()> {
+    fn check_joint(&mut self, tag: &Tag, joint: &Joint, at: &Refs) -> Parsed<()> {
         let legacy = self.arena.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]
@@ -372,6 +372,6 @@ impl<'a> Reader<'a> {
                 }
             }
         }
-        validate::joint(joint, tag.at, at.body_b)
+        self.recovered(validate::joint(joint, tag.at, at.body_b), ())
     }
 }

@@ -34,25 +34,30 @@ use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
 
 /// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
 /// worth it. What it finds is placed at its line and column as it reads, or by the
-/// [`Placer`] it gives back when the text stays in memory.
-pub(crate) fn read<'a>(
-    source: Source<'a>,
-    options: &'a LoadOptions,
-) -> (Parsed<Arena>, Placer<'a>) {
-    read_split(source, options, None)
+/// [`Placer`] it gives back when the text stays in memory. A read that goes on past errors
+/// (`recovering`, on one thread) gives back those it went on past beside its result.
+pub(crate) fn read<'a>(source: Source<'a>, options: &'a LoadOptions, recovering: bool) -> Read<'a> {
+    read_split(source, options, recovering, None)
 }
+
+/// What [`read`] gives: the arena or the error that stopped the read, the errors it went on
+/// past, and what places the findings left for later.
+pub(crate) type Read<'a> = (Parsed<Arena>, Vec<Finding>, Placer<'a>);
 
 /// [`read`], with the pieces and the helper's first one forced by `split` (for tests).
 fn read_split<'a>(
     source: Source<'a>,
     options: &'a LoadOptions,
+    recovering: bool,
     split: Option<(Vec<ahead::Boundary>, usize)>,
-) -> (Parsed<Arena>, Placer<'a>) {
+) -> Read<'a> {
+    debug_assert!(!recovering || options.threads == 1, "a read that goes on is one thread's");
     std::thread::scope(|scope| {
         let helper = ahead::start(scope, source.pieces(), options, split);
-        let mut reader = Reader::new(Tokenizer::new(source, options));
+        let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
         let read = ahead::read(&mut reader, helper);
         let Reader { mut tok, mut arena, .. } = reader;
+        let errors = arena.take_errors();
         let read = match read {
             Ok(()) => {
                 arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
@@ -60,7 +65,7 @@ fn read_split<'a>(
             }
             Err(problem) => Err(Box::new(tok.place(*problem))),
         };
-        (read, Placer::new(tok.into_source()))
+        (read, errors, Placer::new(tok.into_source()))
     })
 }
 
@@ -114,9 +119,60 @@ struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    fn new(tok: Tokenizer<'a>) -> Reader<'a> {
-        let arena = Arena::new(tok.options().strict);
+    fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
+        let arena = Arena::new(tok.options().strict, recovering);
         Reader { tok, arena, object: Object::World, within: "" }
+    }
+
+    /// An error the reading can go on past (see [`Arena::recover`]), placed at its line and
+    /// column while its text is at hand.
+    pub fn recover(&mut self, error: Finding) -> Parsed<()> {
+        let error = self.tok.place(error);
+        self.arena.recover(Box::new(error))
+    }
+
+    /// What `checked` gives, or `otherwise` after its error when the reading goes on past
+    /// it (see [`Reader::recover`]): for a check of a value already read.
+    pub fn recovered<T>(&mut self, checked: Parsed<T>, otherwise: T) -> Parsed<T> {
+        match checked {
+            Ok(value) => Ok(value),
+            Err(error) => self.recover(*error).map(|()| otherwise),
+        }
+    }
+
+    /// Reads value element `tag` with `convert`. A value that does not convert is an error
+    /// the reading goes on past (see [`Reader::recover`]), as if it were `T`'s default
+    /// written where the error points: a check of it made later (an ID's) points there
+    /// too, and is the same error.
+    pub fn value<T: Default>(
+        &mut self,
+        tag: &Tag,
+        convert: impl FnOnce(&str) -> Result<T, Finding>,
+    ) -> Parsed<(T, usize)> {
+        match self.tok.parsed(tag, convert)? {
+            Ok(value) => Ok(value),
+            Err(error) => {
+                let at = error.at;
+                self.recover(*error).map(|()| (T::default(), at))
+            }
+        }
+    }
+
+    pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
+        Ok(self.value(tag, text::float)?.0)
+    }
+
+    pub fn vector(&mut self, tag: &Tag) -> Parsed<crate::scene::Vec2> {
+        Ok(self.value(tag, text::vector2)?.0)
+    }
+
+    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
+        Ok(self.value(tag, text::boolean)?.0)
+    }
+
+    /// An ID value and its offset.
+    pub fn id(&mut self, tag: &Tag) -> Parsed<(u32, usize)> {
+        self.value(tag, text::id)
     }
 
     /// Records a warning at `at`, placed at its line and column while its text is at hand.
@@ -154,8 +210,9 @@ impl<'a> Reader<'a> {
 
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
-        let (v, at) = self.tok.parsed(tag, text::float)?;
-        validate::not_negative(format_args!("<{}>", tag.name), v, at)
+        let (v, at) = self.value(tag, text::float)?;
+        let checked = validate::not_negative(format_args!("<{}>", tag.name), v, at);
+        self.recovered(checked, 0.0)
     }
 
     /// A string value, stored in the scene's string pool.

@@ -73,22 +73,20 @@ impl<'a> Reader<'a> {
                     }
                     shape.name = self.string(&child)?;
                 }
-                Radius => {
-                    (shape.radius, radius_at) = self.tok.parsed(&child, crate::text::float)?
-                }
-                Position => shape.position = self.tok.vector(&child)?,
+                Radius => (shape.radius, radius_at) = self.value(&child, crate::text::float)?,
+                Position => shape.position = self.vector(&child)?,
                 Vertices => shape.vertices = self.vertices(&child, kind)?,
                 Centroid => {
-                    shape.centroid = self.tok.vector(&child)?;
+                    shape.centroid = self.vector(&child)?;
                     shape.centroid_given = true;
                 }
-                Vertex0 | PrevVertex => shape.prev_vertex = self.tok.vector(&child)?,
-                Vertex1 => edge[0] = self.tok.vector(&child)?,
-                Vertex2 => edge[1] = self.tok.vector(&child)?,
-                Vertex3 | NextVertex => shape.next_vertex = self.tok.vector(&child)?,
-                HasVertex0 | HasPrevVertex => shape.has_prev_vertex = self.tok.boolean(&child)?,
-                HasVertex3 | HasNextVertex => shape.has_next_vertex = self.tok.boolean(&child)?,
-                Loop => shape.is_loop |= self.tok.boolean(&child)?,
+                Vertex0 | PrevVertex => shape.prev_vertex = self.vector(&child)?,
+                Vertex1 => edge[0] = self.vector(&child)?,
+                Vertex2 => edge[1] = self.vector(&child)?,
+                Vertex3 | NextVertex => shape.next_vertex = self.vector(&child)?,
+                HasVertex0 | HasPrevVertex => shape.has_prev_vertex = self.boolean(&child)?,
+                HasVertex3 | HasNextVertex => shape.has_next_vertex = self.boolean(&child)?,
+                Loop => shape.is_loop |= self.boolean(&child)?,
             }
         }
         match kind {
@@ -100,7 +98,7 @@ impl<'a> Reader<'a> {
                             .missing(tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
-                validate::circle(shape.radius, radius_at)?;
+                self.recovered(validate::circle(shape.radius, radius_at), ())?;
             }
             ShapeKind::Edge => {
                 for needed in [ShapeChild::Vertex1, ShapeChild::Vertex2] {
@@ -144,10 +142,13 @@ impl<'a> Reader<'a> {
         self.unknown_attributes(tag, &attrs, known)?;
         let density =
             match attrs.iter().find(|a| a.is("density")).filter(|_| self.arena.farseer_layout()) {
-                Some(attr) => self
-                    .tok
-                    .attribute(tag, attr, crate::text::float)
-                    .and_then(|(d, at)| validate::not_negative("the shape's Density", d, at))?,
+                Some(attr) => {
+                    let checked = self
+                        .tok
+                        .attribute(tag, attr, crate::text::float)
+                        .and_then(|(d, at)| validate::not_negative("the shape's Density", d, at));
+                    self.recovered(checked, 0.0)?
+                }
                 None => 0.0,
             };
         self.arena.origins.shape_densities.push(density);
@@ -205,7 +206,7 @@ impl<'a> Reader<'a> {
                     _ => p.tok.limit(vertex.at, "max_chain_vertices", most as u64),
                 });
             }
-            let v = p.tok.vector(vertex)?;
+            let v = p.vector(vertex)?;
             p.arena.scene.vertices.push(v);
             Ok(())
         })?;
@@ -214,12 +215,13 @@ impl<'a> Reader<'a> {
 
     fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Parsed<()> {
         let vertices = &self.arena.scene.vertices[shape.vertices.indices()];
-        let warning = match shape.kind() {
-            Some(ShapeKind::Polygon) => validate::polygon(vertices, tag.at)?,
-            Some(ShapeKind::Edge) => validate::edge(vertices, tag.at)?,
-            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop, tag.at)?,
-            _ => None,
+        let checked = match shape.kind() {
+            Some(ShapeKind::Polygon) => validate::polygon(vertices, tag.at),
+            Some(ShapeKind::Edge) => validate::edge(vertices, tag.at),
+            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop, tag.at),
+            _ => Ok(None),
         };
+        let warning = self.recovered(checked, None)?;
         match warning {
             Some(warning) => self.note(warning),
             None => Ok(()),

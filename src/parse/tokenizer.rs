@@ -25,7 +25,6 @@ use super::shorten;
 use crate::LoadOptions;
 use crate::error::{Code, Finding, Parsed, Position, Problem, Spot, problem};
 use crate::input::{Encoding, Source, first_non_char};
-use crate::scene::Vec2;
 use crate::text::{self, trim_xml, trim_xml_at};
 
 /// How a reading stops where its text ends before an item (see
@@ -871,29 +870,31 @@ impl<'a> Tokenizer<'a> {
         Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
     }
 
-    /// Reads a value element and converts its text with `convert`. Generic, not a `fn`
-    /// pointer, so that the usual conversions are inlined into their readers.
+    /// Reads a value element and converts its text with `convert`: the value and its offset,
+    /// or (inside) the error for a text that does not convert, which leaves the reading
+    /// where a value that converts would. Generic, not a `fn` pointer, so that the usual
+    /// conversions are inlined into their readers.
     #[inline]
     pub fn parsed<T>(
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Parsed<(T, usize)> {
+    ) -> Parsed<Result<(T, usize), Problem>> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
-            return match convert(self.source.slice(at, end)) {
+            return Ok(match convert(self.source.slice(at, end)) {
                 Ok(v) => Ok((v, at)),
                 Err(e) => {
                     let value = Value { text: Text { at, end, resolved: None }, at };
                     Err(self.bad_value(tag, &value, e))
                 }
-            };
+            });
         }
         let value = self.value_of_nodes(tag)?;
-        match convert(self.text_of(&value.text)) {
+        Ok(match convert(self.text_of(&value.text)) {
             Ok(v) => Ok((v, value.at)),
             Err(e) => Err(self.bad_value(tag, &value, e)),
-        }
+        })
     }
 
     /// The error for the value of `tag`, which `convert` refused with `e`.
@@ -901,23 +902,6 @@ impl<'a> Tokenizer<'a> {
     fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
         let at = value.text.written_at(e.at);
         problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
-    }
-
-    pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
-        Ok(self.parsed(tag, text::float)?.0)
-    }
-
-    pub fn vector(&mut self, tag: &Tag) -> Parsed<Vec2> {
-        Ok(self.parsed(tag, text::vector2)?.0)
-    }
-
-    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
-        Ok(self.parsed(tag, text::boolean)?.0)
-    }
-
-    /// An ID value and its offset.
-    pub fn id(&mut self, tag: &Tag) -> Parsed<(u32, usize)> {
-        self.parsed(tag, text::id)
     }
 
     /// Converts an attribute's value with `convert`; errors point into the value.

@@ -145,7 +145,7 @@ impl<'a> Reader<'a> {
                 if repeated {
                     self.duplicate(root, &child)?;
                 }
-                self.arena.scene.gravity = Some(self.tok.vector(&child)?);
+                self.arena.scene.gravity = Some(self.vector(&child)?);
                 continue;
             };
             if repeated {
