@@ -25,7 +25,7 @@ use std::path::Path;
 use box2scene::escape::terminal_text;
 use box2scene::{Code, Error, LoadOptions, Scene};
 
-use args::{Command, Format, Input, Run, Verb};
+use args::{Format, Input, Run, Verb};
 use quote::Quoted;
 use report::Report;
 
@@ -38,19 +38,40 @@ enum Status {
 }
 
 /// Runs the command line `args` (without the program's name), printing to `out` and
-/// `err` what the command prints to standard output and standard error, and returns its
-/// exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
+/// `err` what the command prints to standard output and standard error, in plain text,
+/// and returns its exit status: 0 when no file has an error, 1 when one has, 2 on a usage
+/// or I/O error.
 pub fn run(args: &[OsString], out: &mut dyn Write, err: &mut dyn Write) -> u8 {
+    run_coloured(args, out, err, false)
+}
+
+/// [`run`], with what goes to `out` in colour when `colour` says so (standard output is a
+/// terminal); standard error is always plain, escaped text.
+pub fn run_coloured(
+    args: &[OsString],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+    colour: bool,
+) -> u8 {
     let mut io = Io { out, err };
     let status = match args::parse(args) {
-        Ok(Command::Print(text)) => io.emit(&text),
-        Ok(Command::Run(run)) => match run.verb {
+        Ok(run) => match run.verb {
             Verb::Check => check(&run, &mut io),
             Verb::Dump => dump(&run, &mut io),
             Verb::Fmt => fmt(&run, &mut io),
             Verb::Render => render(&run, &mut io),
         },
-        Err(slip) => io.complain(&slip.to_string()),
+        // The help and the version, asked for.
+        Err(error) if !error.use_stderr() => {
+            let text = error.render();
+            io.emit(&if colour { text.ansi().to_string() } else { text.to_string() })
+        }
+        Err(error) => {
+            let text = error.render().to_string();
+            let escaped: Vec<String> = text.lines().map(terminal_text).collect();
+            io.report(&(escaped.join("\n") + "\n"));
+            Status::UsageOrIo
+        }
     };
     status as u8
 }
