@@ -4,9 +4,14 @@
 //! that may come from a file (the file's name, the message, the line) is escaped for the
 //! output it goes to, so that no file can forge a report or drive a terminal.
 
-use super::quote::Quoted;
-use box2scene::escape::{json_string, terminal_text};
+use std::io;
+
+use box2scene::escape::{terminal_char, terminal_text};
 use box2scene::{Diagnostic, Error, Position, Scene, Severity};
+use serde::Serialize;
+use serde_json::ser::{CompactFormatter, Formatter, Serializer};
+
+use super::quote::Quoted;
 
 /// One warning or error, with the names of its severity and code.
 pub struct Report {
@@ -64,13 +69,61 @@ impl Report {
     /// library's diagnostics.
     pub fn json(&self, file: &str) -> String {
         let Position { line, column, byte_offset } = self.position;
-        format!(
-            "{{\"file\":{},\"line\":{line},\"column\":{column},\"byte_offset\":{byte_offset},\
-             \"severity\":{},\"code\":{},\"message\":{}}}\n",
-            json_string(file),
-            json_string(&self.severity),
-            json_string(&self.code),
-            json_string(&self.message),
-        )
+        let fields = Json {
+            file,
+            line,
+            column,
+            byte_offset,
+            severity: &self.severity,
+            code: &self.code,
+            message: &self.message,
+        };
+        let mut json = Vec::new();
+        let written = fields.serialize(&mut Serializer::with_formatter(&mut json, TerminalSafe));
+        written.expect("a report of strings and numbers serializes");
+        json.push(b'\n');
+        String::from_utf8(json).expect("serde_json writes UTF-8")
+    }
+}
+
+/// A report's fields, in the order JSON lines give them.
+#[derive(Serialize)]
+struct Json<'a> {
+    file: &'a str,
+    line: u32,
+    column: u32,
+    byte_offset: u64,
+    severity: &'a str,
+    code: &'a str,
+    message: &'a str,
+}
+
+/// serde_json's compact form, where a string also escapes, as `\uXXXX`, every character
+/// that a terminal must not get raw and JSON allows raw (DEL, the C1 controls, the line
+/// and paragraph separators, the direction marks and overrides), so that a record stays
+/// one line on any terminal or log and shows them visibly.
+struct TerminalSafe;
+
+impl Formatter for TerminalSafe {
+    fn write_string_fragment<W: ?Sized + io::Write>(
+        &mut self,
+        writer: &mut W,
+        fragment: &str,
+    ) -> io::Result<()> {
+        let mut shown = String::new();
+        let mut raw_from = 0;
+        for (at, c) in fragment.char_indices() {
+            shown.clear();
+            terminal_char(c, &mut shown);
+            if shown.len() == c.len_utf8() {
+                continue;
+            }
+            CompactFormatter.write_string_fragment(writer, &fragment[raw_from..at])?;
+            for unit in c.encode_utf16(&mut [0; 2]) {
+                write!(writer, "\\u{unit:04x}")?;
+            }
+            raw_from = at + c.len_utf8();
+        }
+        CompactFormatter.write_string_fragment(writer, &fragment[raw_from..])
     }
 }
