@@ -53,7 +53,7 @@ pub fn run_coloured(
     err: &mut dyn Write,
     colour: bool,
 ) -> u8 {
-    let mut io = Io { out, err };
+    let mut io = Io { out, err, colour };
     let status = match args::parse(args) {
         Ok(run) => match run.verb {
             Verb::Check => check(&run, &mut io),
@@ -76,10 +76,11 @@ pub fn run_coloured(
     status as u8
 }
 
-/// Where a command prints.
+/// Where a command prints, and whether standard output takes colour.
 struct Io<'a> {
     out: &'a mut dyn Write,
     err: &'a mut dyn Write,
+    colour: bool,
 }
 
 impl Io<'_> {
@@ -127,7 +128,7 @@ impl Loaded {
     /// The scene, or None once its error is on standard error.
     fn scene_or_report(&self, io: &mut Io<'_>) -> Result<&Scene, Status> {
         self.scene.as_ref().map_err(|error| {
-            io.report(&Report::of_error(error).text(&self.name, &self.quoted));
+            io.report(&Report::of_error(error).text(&self.name, &self.quoted, false));
             status_of(error)
         })
     }
@@ -188,7 +189,7 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
         let mut text: String = reports
             .iter()
             .map(|report| match run.format {
-                Format::Text => report.text(&loaded.name, &loaded.quoted),
+                Format::Text => report.text(&loaded.name, &loaded.quoted, io.colour),
                 Format::Json => report.json(&loaded.name),
             })
             .collect();
@@ -237,7 +238,7 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
     };
     written.unwrap_or_else(|error| {
         let name = run.out.as_ref().map_or(loaded.name.clone(), |out| out.display().to_string());
-        io.report(&Report::of_error(&error).text(&name, &Quoted::nothing()));
+        io.report(&Report::of_error(&error).text(&name, &Quoted::nothing(), false));
         status_of(&error)
     })
 }
