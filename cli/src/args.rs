@@ -203,31 +203,27 @@ pub struct Run {
 /// what is wrong with the command line.
 pub fn parse(args: &[OsString]) -> Result<Run, clap::Error> {
     let program = OsStr::new("box2scene");
-    let cli =
-        Cli::try_parse_from(std::iter::once(program).chain(args.iter().map(OsString::as_os_str)))
-            .map_err(|error| match help_asked(args) {
-            // clap stops at the first slip; `--help` after a command wins over any other.
-            Some(verb) if error.use_stderr() => {
-                let asked = [program, verb, OsStr::new("--help")];
-                Cli::try_parse_from(asked).err().unwrap_or(error)
-            }
-            _ => error,
-        })?;
-    let mut load = LoadOptions::default();
+    let argv = std::iter::once(program).chain(args.iter().map(OsString::as_os_str));
+    let cli = Cli::try_parse_from(argv).map_err(|error| match help_asked(args) {
+        // clap stops at the first slip; `--help` after a command wins over any other.
+        Some(verb) if error.use_stderr() => {
+            let asked = [program, verb, OsStr::new("--help")];
+            Cli::try_parse_from(asked).err().unwrap_or(error)
+        }
+        _ => error,
+    })?;
     let mut write = WriteOptions::default();
-    let (verb, files, format, out, strict) = match cli.verb {
-        VerbArgs::Check { load, format, files } => (Verb::Check, files, format, None, load.strict),
-        VerbArgs::Dump { load, file } => (Verb::Dump, vec![file], Format::Text, None, load.strict),
+    let (verb, files, format, out, Load { strict }) = match cli.verb {
+        VerbArgs::Check { load, format, files } => (Verb::Check, files, format, None, load),
+        VerbArgs::Dump { load, file } => (Verb::Dump, vec![file], Format::Text, None, load),
         VerbArgs::Fmt { load, all_fields, dialect, out, file } => {
             write.all_fields = all_fields;
             write.dialect = dialect.map_or(write.dialect, |d| d as u32);
-            (Verb::Fmt, vec![file], Format::Text, out, load.strict)
+            (Verb::Fmt, vec![file], Format::Text, out, load)
         }
-        VerbArgs::Render { load, out, file } => {
-            (Verb::Render, vec![file], Format::Text, out, load.strict)
-        }
+        VerbArgs::Render { load, out, file } => (Verb::Render, vec![file], Format::Text, out, load),
     };
-    load.strict = strict;
+    let load = LoadOptions { strict, ..LoadOptions::default() };
     let inputs: Vec<Input> = files.into_iter().map(Input::named).collect();
     // Standard input can be read only once.
     if inputs.iter().filter(|&input| *input == Input::Stdin).count() > 1 {
