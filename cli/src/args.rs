@@ -1,104 +1,153 @@
-//! The command line: what to run, each command's help, and the one-line message for a
-//! command line that cannot be run.
+//! The command line, parsed by clap: the commands, their options and help, and what to
+//! run. A command line that cannot be run is clap's error, which names the argument.
 
 use std::ffi::{OsStr, OsString};
-use std::fmt;
 use std::path::PathBuf;
 
 use box2scene::{Dialect, LoadOptions, WriteOptions};
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::error::ErrorKind;
+use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
-const HELP: &str = "\
-box2scene: check, dump, format and draw Box2Scene physics scenes.
+/// Each command's help starts with its usage, then says what the command does.
+const COMMAND_HELP: &str = "{usage-heading} {usage}\n\n{before-help}{all-args}{after-help}";
 
-Usage: box2scene COMMAND [OPTIONS] FILE...
+#[derive(Parser)]
+#[command(
+    name = "box2scene",
+    version,
+    about = "box2scene: check, dump, format and draw Box2Scene physics scenes.",
+    override_usage = "box2scene COMMAND [OPTIONS] FILE...",
+    after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
+                  Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or \
+                  I/O error.",
+    subcommand_required = true,
+    arg_required_else_help = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    verb: VerbArgs,
+}
 
-Commands:
-  check    print every warning and error of each file, with the line it points at
-  dump     print the loaded scene as JSON
-  fmt      write a file in canonical form
-  render   draw the scene as it starts, as SVG
-  help     print this help, or a command's (box2scene help COMMAND)
+/// What every command that loads a file takes.
+#[derive(Args)]
+struct Load {
+    #[arg(long, help = "Treat every warning as an error")]
+    strict: bool,
+}
 
-Options:
-  -h, --help   print this help; after a command, that command's help
-  --version    print the version
+#[derive(Subcommand)]
+enum VerbArgs {
+    #[command(
+        about = "Print every warning and error of each file, with the line it points at",
+        override_usage = "box2scene check [--strict] [--format=text|json] FILE...",
+        help_template = COMMAND_HELP,
+        before_help = "Loads each FILE and prints its warnings, or the error that stopped its load,\n\
+                       then (in text) a line with its counts: FILE: N errors, M warnings. A file\n\
+                       that cannot be loaded does not stop the others.",
+        after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
+                      Lines and columns count from 1, columns in characters.\n\
+                      Exit status: 0 when no file has an error, 1 when one has, 2 on a usage \
+                      or I/O error."
+    )]
+    Check {
+        #[command(flatten)]
+        load: Load,
+        #[arg(
+            long,
+            value_enum,
+            default_value_t = Format::Text,
+            value_name = "FORMAT",
+            hide_default_value = true,
+            hide_possible_values = true,
+            help = "text: FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE, then the line it\n\
+                    points at and a caret under the column (the default);\n\
+                    json: one JSON object a line with file, line, column, byte_offset,\n\
+                    severity, code and message (line and column 0 when unknown)"
+        )]
+        format: Format,
+        #[arg(required = true, value_name = "FILE", help = "The scenes to check")]
+        files: Vec<PathBuf>,
+    },
+    #[command(
+        about = "Print the loaded scene as JSON",
+        override_usage = "box2scene dump [--strict] FILE",
+        help_template = COMMAND_HELP,
+        before_help = "Prints the loaded scene as JSON: its version and dialect, every field of every\n\
+                       record, floats in their shortest round-trip form, the warnings included.",
+        after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
+                      Exit status: 0 when the file loads, 1 when it has an error, 2 on a usage \
+                      or I/O error."
+    )]
+    Dump {
+        #[command(flatten)]
+        load: Load,
+        #[arg(value_name = "FILE", help = "The scene to dump")]
+        file: PathBuf,
+    },
+    #[command(
+        about = "Write a file in canonical form",
+        override_usage = "box2scene fmt [--strict] [--all-fields] [--dialect NAME] [-o OUT] FILE",
+        help_template = COMMAND_HELP,
+        before_help = "Writes FILE in canonical form, keeping its comments and the elements box2scene\n\
+                       does not know, to standard output or to OUT (which may be FILE itself: it is\n\
+                       replaced atomically). It keeps the dialect FILE was in (an engine's file\n\
+                       stays that engine's) unless --dialect names another.",
+        after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
+                      Exit status: 0 when the file loads and is written, 1 when it has an error,\n\
+                      2 on a usage or I/O error."
+    )]
+    Fmt {
+        #[command(flatten)]
+        load: Load,
+        #[arg(long, help = "Write every field, also those equal to their defaults")]
+        all_fields: bool,
+        #[arg(
+            long,
+            value_name = "NAME",
+            value_parser = dialect_named(),
+            hide_possible_values = true,
+            help = "Write for the reader NAME: box2scene (the editor's form),\n\
+                    farseer-3.3, farseer-2013, farseer-3.5 (Velcro too) or aether;\n\
+                    what that reader cannot hold is an error naming the object"
+        )]
+        dialect: Option<Dialect>,
+        #[arg(short = 'o', value_name = "OUT", help = "Write to OUT instead of standard output")]
+        out: Option<PathBuf>,
+        #[arg(value_name = "FILE", help = "The scene to format")]
+        file: PathBuf,
+    },
+    #[command(
+        about = "Draw the scene as it starts, as SVG",
+        override_usage = "box2scene render [--strict] [-o OUT.svg] FILE",
+        help_template = COMMAND_HELP,
+        before_help = "Draws the scene as it starts, as SVG, y up: every shape of every fixture where\n\
+                       its body puts it, coloured by body type (static grey, kinematic green,\n\
+                       dynamic blue), and each joint's anchors and the link between them in red.\n\
+                       Names show as tooltips.",
+        after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
+                      Exit status: 0 when the file loads and is drawn, 1 when it has an error,\n\
+                      2 on a usage or I/O error."
+    )]
+    Render {
+        #[command(flatten)]
+        load: Load,
+        #[arg(
+            short = 'o',
+            value_name = "OUT.svg",
+            help = "Write to OUT.svg instead of standard output"
+        )]
+        out: Option<PathBuf>,
+        #[arg(value_name = "FILE", help = "The scene to draw")]
+        file: PathBuf,
+    },
+}
 
-A FILE named '-' is standard input; after '--', every argument is a FILE.
-Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
-";
-
-const CHECK_HELP: &str = "\
-Usage: box2scene check [--strict] [--format=text|json] FILE...
-
-Loads each FILE and prints its warnings, or the error that stopped its load, then (in text)
-a line with its counts: FILE: N errors, M warnings. A file that cannot be loaded does not
-stop the others.
-
-Options:
-  --strict          treat every warning as an error
-  --format=text     FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE, then the line it points at
-                    and a caret under the column (the default)
-  --format=json     one JSON object a line with file, line, column, byte_offset, severity,
-                    code and message (line and column 0 when unknown)
-  -h, --help        print this help
-
-A FILE named '-' is standard input; after '--', every argument is a FILE.
-Lines and columns count from 1, columns in characters.
-Exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
-";
-
-const DUMP_HELP: &str = "\
-Usage: box2scene dump [--strict] FILE
-
-Prints the loaded scene as JSON: its version and dialect, every field of every record,
-floats in their shortest round-trip form, the warnings included.
-
-Options:
-  --strict     treat every warning as an error
-  -h, --help   print this help
-
-A FILE named '-' is standard input; after '--', every argument is a FILE.
-Exit status: 0 when the file loads, 1 when it has an error, 2 on a usage or I/O error.
-";
-
-const FMT_HELP: &str = "\
-Usage: box2scene fmt [--strict] [--all-fields] [--dialect NAME] [-o OUT] FILE
-
-Writes FILE in canonical form, keeping its comments and the elements box2scene does not
-know, to standard output or to OUT (which may be FILE itself: it is replaced atomically).
-It keeps the dialect FILE was in (an engine's file stays that engine's) unless --dialect
-names another.
-
-Options:
-  --strict          treat every warning as an error
-  --all-fields      write every field, also those equal to their defaults
-  --dialect NAME    write for the reader NAME: box2scene (the editor's form),
-                    farseer-3.3, farseer-2013, farseer-3.5 (Velcro too) or aether; what
-                    that reader cannot hold is an error naming the object
-  -o OUT            write to OUT instead of standard output
-  -h, --help     print this help
-
-A FILE named '-' is standard input; after '--', every argument is a FILE.
-Exit status: 0 when the file loads and is written, 1 when it has an error, 2 on a usage or
-I/O error.
-";
-
-const RENDER_HELP: &str = "\
-Usage: box2scene render [--strict] [-o OUT.svg] FILE
-
-Draws the scene as it starts, as SVG, y up: every shape of every fixture where its body
-puts it, coloured by body type (static grey, kinematic green, dynamic blue), and each
-joint's anchors and the link between them in red. Names show as tooltips.
-
-Options:
-  --strict       treat every warning as an error
-  -o OUT.svg     write to OUT.svg instead of standard output
-  -h, --help     print this help
-
-A FILE named '-' is standard input; after '--', every argument is a FILE.
-Exit status: 0 when the file loads and is drawn, 1 when it has an error, 2 on a usage or
-I/O error.
-";
+/// `--dialect NAME`: one of the dialects' own names, which clap lists and suggests.
+fn dialect_named() -> impl TypedValueParser<Value = Dialect> {
+    PossibleValuesParser::new(Dialect::ALL.map(Dialect::name))
+        .map(|name| Dialect::named(&name).expect("clap passes only a dialect's own name"))
+}
 
 /// The commands that read scene files.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -107,36 +156,6 @@ pub enum Verb {
     Dump,
     Fmt,
     Render,
-}
-
-impl Verb {
-    fn named(name: &OsStr) -> Option<Verb> {
-        match name.to_str()? {
-            "check" => Some(Verb::Check),
-            "dump" => Some(Verb::Dump),
-            "fmt" => Some(Verb::Fmt),
-            "render" => Some(Verb::Render),
-            _ => None,
-        }
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Verb::Check => "check",
-            Verb::Dump => "dump",
-            Verb::Fmt => "fmt",
-            Verb::Render => "render",
-        }
-    }
-
-    fn help(self) -> &'static str {
-        match self {
-            Verb::Check => CHECK_HELP,
-            Verb::Dump => DUMP_HELP,
-            Verb::Fmt => FMT_HELP,
-            Verb::Render => RENDER_HELP,
-        }
-    }
 }
 
 /// Where a scene is read from.
@@ -148,8 +167,8 @@ pub enum Input {
 
 impl Input {
     /// `-` is standard input, as for most tools; `./-` names a file called `-`.
-    fn named(arg: &OsStr) -> Input {
-        if arg == "-" { Input::Stdin } else { Input::Path(PathBuf::from(arg)) }
+    fn named(path: PathBuf) -> Input {
+        if path.as_os_str() == "-" { Input::Stdin } else { Input::Path(path) }
     }
 
     /// The name reports give it.
@@ -162,7 +181,7 @@ impl Input {
 }
 
 /// How `check` prints.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     Text,
     Json,
@@ -179,152 +198,47 @@ pub struct Run {
     pub out: Option<PathBuf>,
 }
 
-pub enum Command {
-    /// Prints this text and exits 0.
-    Print(String),
-    Run(Run),
-}
-
-/// What is wrong with a command line, and the help to read about it.
-#[derive(Debug)]
-pub struct Slip {
-    problem: String,
-    help: String,
-}
-
-impl Slip {
-    fn general(problem: String) -> Slip {
-        Slip { problem, help: "box2scene help".to_owned() }
-    }
-
-    fn of(verb: Verb, problem: String) -> Slip {
-        Slip { problem, help: format!("box2scene {} --help", verb.name()) }
-    }
-}
-
-impl fmt::Display for Slip {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}; see '{}'", self.problem, self.help)
-    }
-}
-
-pub fn parse(args: &[OsString]) -> Result<Command, Slip> {
-    let Some((first, rest)) = args.split_first() else {
-        return Err(Slip::general("no command given".to_owned()));
-    };
-    let print = |text: &str| match rest.first() {
-        None => Ok(Command::Print(text.to_owned())),
-        Some(extra) => Err(Slip::general(format!("unexpected '{}'", extra.to_string_lossy()))),
-    };
-    match first.to_str() {
-        Some("--help" | "-h") => print(HELP),
-        Some("--version") => print(&format!("box2scene {}\n", env!("CARGO_PKG_VERSION"))),
-        Some("help") => help(rest),
-        _ => match Verb::named(first) {
-            Some(verb) => parse_run(verb, rest),
-            None => Err(Slip::general(format!("unknown command '{}'", first.to_string_lossy()))),
-        },
-    }
-}
-
-/// `help` alone, or `help COMMAND`.
-fn help(args: &[OsString]) -> Result<Command, Slip> {
-    match args {
-        [] => Ok(Command::Print(HELP.to_owned())),
-        [name] => match Verb::named(name) {
-            Some(verb) => Ok(Command::Print(verb.help().to_owned())),
-            None if name == "help" => Ok(Command::Print(HELP.to_owned())),
-            None => Err(Slip::general(format!("unknown command '{}'", name.to_string_lossy()))),
-        },
-        [_, extra, ..] => Err(Slip::general(format!("unexpected '{}'", extra.to_string_lossy()))),
-    }
-}
-
-/// A command's options and files; options may come anywhere before a `--`, after which
-/// every argument is a file. `--help` anywhere before it wins over any other slip.
-fn parse_run(verb: Verb, all: &[OsString]) -> Result<Command, Slip> {
-    let options_end = all.iter().position(|a| a == "--").unwrap_or(all.len());
-    let (options, files) = all.split_at(options_end);
-    if options.iter().any(|a| a == "--help" || a == "-h") {
-        return Ok(Command::Print(verb.help().to_owned()));
-    }
-    let slip = |problem: String| Slip::of(verb, problem);
-    let mut run = Run {
-        verb,
-        inputs: Vec::new(),
-        load: LoadOptions::default(),
-        write: WriteOptions::default(),
-        format: Format::Text,
-        out: None,
-    };
-    let mut args = options.iter();
-    while let Some(arg) = args.next() {
-        let text = arg.to_str().unwrap_or_default();
-        match text {
-            "--strict" => run.load.strict = true,
-            "--all-fields" if verb == Verb::Fmt => run.write.all_fields = true,
-            "--dialect" if verb == Verb::Fmt => {
-                let name = args.next().ok_or_else(|| slip("--dialect needs a NAME".to_owned()))?;
-                run.write.dialect = dialect_named(&name.to_string_lossy()).map_err(slip)?;
-            }
-            _ if verb == Verb::Fmt && text.starts_with("--dialect=") => {
-                run.write.dialect = dialect_named(&text["--dialect=".len()..]).map_err(slip)?;
-            }
-            "-o" if matches!(verb, Verb::Fmt | Verb::Render) => {
-                let out = args.next().ok_or_else(|| slip("-o needs a file name".to_owned()))?;
-                run.out = Some(PathBuf::from(out));
-            }
-            "--format" if verb == Verb::Check => {
-                let name =
-                    args.next().ok_or_else(|| slip("--format needs text or json".to_owned()))?;
-                run.format = format_named(&name.to_string_lossy()).map_err(slip)?;
-            }
-            _ if verb == Verb::Check && text.starts_with("--format=") => {
-                run.format = format_named(&text["--format=".len()..]).map_err(slip)?;
-            }
-            _ if arg != "-" && arg.as_encoded_bytes().starts_with(b"-") => {
-                return Err(slip(format!(
-                    "unknown option '{}' for {}",
-                    arg.to_string_lossy(),
-                    verb.name()
-                )));
-            }
-            _ => run.inputs.push(Input::named(arg)),
+/// The command line `args` (without the program's name) as a command to run; otherwise
+/// clap's error, which is the help or the version to print (its `use_stderr` false) or
+/// what is wrong with the command line.
+pub fn parse(args: &[OsString]) -> Result<Run, clap::Error> {
+    let program = OsStr::new("box2scene");
+    let argv = std::iter::once(program).chain(args.iter().map(OsString::as_os_str));
+    let cli = Cli::try_parse_from(argv).map_err(|error| match help_asked(args) {
+        // clap stops at the first slip; `--help` after a command wins over any other.
+        Some(verb) if error.use_stderr() => {
+            let asked = [program, verb, OsStr::new("--help")];
+            Cli::try_parse_from(asked).err().unwrap_or(error)
         }
+        _ => error,
+    })?;
+    let mut write = WriteOptions::default();
+    let (verb, files, format, out, Load { strict }) = match cli.verb {
+        VerbArgs::Check { load, format, files } => (Verb::Check, files, format, None, load),
+        VerbArgs::Dump { load, file } => (Verb::Dump, vec![file], Format::Text, None, load),
+        VerbArgs::Fmt { load, all_fields, dialect, out, file } => {
+            write.all_fields = all_fields;
+            write.dialect = dialect.map_or(write.dialect, |d| d as u32);
+            (Verb::Fmt, vec![file], Format::Text, out, load)
+        }
+        VerbArgs::Render { load, out, file } => (Verb::Render, vec![file], Format::Text, out, load),
+    };
+    let load = LoadOptions { strict, ..LoadOptions::default() };
+    let inputs: Vec<Input> = files.into_iter().map(Input::named).collect();
+    // Standard input can be read only once.
+    if inputs.iter().filter(|&input| *input == Input::Stdin).count() > 1 {
+        let mut cli = Cli::command();
+        cli.build();
+        let check = cli.find_subcommand_mut("check").expect("check is a command");
+        let problem = "standard input ('-') can be read only once";
+        return Err(check.error(ErrorKind::ArgumentConflict, problem));
     }
-    // `files` starts with the `--`, if there is one.
-    run.inputs.extend(files.iter().skip(1).map(|file| Input::named(file)));
-    check_inputs(&run).map_err(slip)?;
-    Ok(Command::Run(run))
+    Ok(Run { verb, inputs, load, write, format, out })
 }
 
-fn dialect_named(name: &str) -> Result<u32, String> {
-    Dialect::named(name).map(|d| d as u32).ok_or_else(|| {
-        let names: Vec<&str> = Dialect::ALL.iter().map(|d| d.name()).collect();
-        format!("unknown dialect '{name}' ({})", names.join(", "))
-    })
-}
-
-fn format_named(name: &str) -> Result<Format, String> {
-    match name {
-        "text" => Ok(Format::Text),
-        "json" => Ok(Format::Json),
-        _ => Err(format!("unknown format '{name}' (text or json)")),
-    }
-}
-
-/// One FILE for every command but `check`, which takes any number but none; standard
-/// input at most once, as it can be read only once.
-fn check_inputs(run: &Run) -> Result<(), String> {
-    let name = run.verb.name();
-    match (run.verb, run.inputs.len()) {
-        (Verb::Check, 0) => return Err("check needs at least one FILE".to_owned()),
-        (Verb::Check, _) | (_, 1) => {}
-        (_, 0) => return Err(format!("{name} needs a FILE")),
-        (_, _) => return Err(format!("{name} takes one FILE")),
-    }
-    if run.inputs.iter().filter(|&input| *input == Input::Stdin).count() > 1 {
-        return Err("standard input ('-') can be read only once".to_owned());
-    }
-    Ok(())
+/// The command `-h` or `--help` follows, before any `--`.
+fn help_asked(args: &[OsString]) -> Option<&OsStr> {
+    let (verb, rest) = args.split_first()?;
+    let mut options = rest.iter().take_while(|arg| *arg != "--");
+    options.any(|arg| arg == "-h" || arg == "--help").then_some(verb.as_os_str())
 }

@@ -25,7 +25,7 @@ use std::path::Path;
 use box2scene::escape::terminal_text;
 use box2scene::{Code, Error, LoadOptions, Scene};
 
-use args::{Command, Format, Input, Run, Verb};
+use args::{Format, Input, Run, Verb};
 use quote::Quoted;
 use report::Report;
 
@@ -38,27 +38,49 @@ enum Status {
 }
 
 /// Runs the command line `args` (without the program's name), printing to `out` and
-/// `err` what the command prints to standard output and standard error, and returns its
-/// exit status: 0 when no file has an error, 1 when one has, 2 on a usage or I/O error.
+/// `err` what the command prints to standard output and standard error, in plain text,
+/// and returns its exit status: 0 when no file has an error, 1 when one has, 2 on a usage
+/// or I/O error.
 pub fn run(args: &[OsString], out: &mut dyn Write, err: &mut dyn Write) -> u8 {
-    let mut io = Io { out, err };
+    run_coloured(args, out, err, false)
+}
+
+/// [`run`], with what goes to `out` in colour when `colour` says so (standard output is a
+/// terminal); standard error is always plain, escaped text.
+pub fn run_coloured(
+    args: &[OsString],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+    colour: bool,
+) -> u8 {
+    let mut io = Io { out, err, colour };
     let status = match args::parse(args) {
-        Ok(Command::Print(text)) => io.emit(&text),
-        Ok(Command::Run(run)) => match run.verb {
+        Ok(run) => match run.verb {
             Verb::Check => check(&run, &mut io),
             Verb::Dump => dump(&run, &mut io),
             Verb::Fmt => fmt(&run, &mut io),
             Verb::Render => render(&run, &mut io),
         },
-        Err(slip) => io.complain(&slip.to_string()),
+        // The help and the version, asked for.
+        Err(error) if !error.use_stderr() => {
+            let text = error.render();
+            io.emit(&if colour { text.ansi().to_string() } else { text.to_string() })
+        }
+        Err(error) => {
+            let text = error.render().to_string();
+            let escaped: Vec<String> = text.lines().map(terminal_text).collect();
+            io.report(&(escaped.join("\n") + "\n"));
+            Status::UsageOrIo
+        }
     };
     status as u8
 }
 
-/// Where a command prints.
+/// Where a command prints, and whether standard output takes colour.
 struct Io<'a> {
     out: &'a mut dyn Write,
     err: &'a mut dyn Write,
+    colour: bool,
 }
 
 impl Io<'_> {
@@ -106,7 +128,7 @@ impl Loaded {
     /// The scene, or None once its error is on standard error.
     fn scene_or_report(&self, io: &mut Io<'_>) -> Result<&Scene, Status> {
         self.scene.as_ref().map_err(|error| {
-            io.report(&Report::of_error(error).text(&self.name, &self.quoted));
+            io.report(&Report::of_error(error).text(&self.name, &self.quoted, false));
             status_of(error)
         })
     }
@@ -167,7 +189,7 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
         let mut text: String = reports
             .iter()
             .map(|report| match run.format {
-                Format::Text => report.text(&loaded.name, &loaded.quoted),
+                Format::Text => report.text(&loaded.name, &loaded.quoted, io.colour),
                 Format::Json => report.json(&loaded.name),
             })
             .collect();
@@ -216,7 +238,7 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
     };
     written.unwrap_or_else(|error| {
         let name = run.out.as_ref().map_or(loaded.name.clone(), |out| out.display().to_string());
-        io.report(&Report::of_error(&error).text(&name, &Quoted::nothing()));
+        io.report(&Report::of_error(&error).text(&name, &Quoted::nothing(), false));
         status_of(&error)
     })
 }

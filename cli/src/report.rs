@@ -3,10 +3,28 @@
 //! Positions are the library's; the line they name is read back by [`Quoted`]. Every text
 //! that may come from a file (the file's name, the message, the line) is escaped for the
 //! output it goes to, so that no file can forge a report or drive a terminal.
+//!
+//! The text form is drawn here rather than by annotate-snippets (rustc's renderer, 0.12):
+//! that crate takes the position it prints from the source it is handed, and a report
+//! hands it only the window of the line that [`Quoted`] reads back, so on a long line it
+//! would print the window's column (handing it the line from its start is what made a
+//! one-line file's report quadratic); it writes a path's ESC and a message's C1 controls
+//! raw, so the escaping here would stay; and its two-line `warning[code]: message` /
+//! `--> file:line:column` header is not the one-line `file:line:column: warning[code]:`
+//! that GCC-style matchers and grep read. What it would draw, the caret line, is a few
+//! lines of [`Quoted::excerpt`].
+
+use std::io;
+
+use anstyle::{AnsiColor, Style};
+use box2scene::escape::{terminal_char, terminal_text};
+use box2scene::{Diagnostic, Error, Position, Scene, Severity};
+use serde::Serialize;
+use serde_json::ser::{CompactFormatter, Formatter, Serializer};
 
 use super::quote::Quoted;
-use box2scene::escape::{json_string, terminal_text};
-use box2scene::{Diagnostic, Error, Position, Scene, Severity};
+
+const BOLD: Style = Style::new().bold();
 
 /// One warning or error, with the names of its severity and code.
 pub struct Report {
@@ -44,8 +62,14 @@ impl Report {
 
     /// `FILE:LINE:COLUMN: SEVERITY[CODE]: MESSAGE`, leaving out the parts of the position
     /// that are unknown (0) as compilers do; then, when the line is known, the line and a
-    /// caret line.
-    pub fn text(&self, file: &str, quoted: &Quoted) -> String {
+    /// caret line. With `colour`, for a terminal, styled as rustc styles its reports: the
+    /// place bold, the severity, its code and the caret in the severity's colour, the
+    /// message bold; the text is the same.
+    pub fn text(&self, file: &str, quoted: &Quoted, colour: bool) -> String {
+        let paint = |style: Style, text: &str| match colour {
+            true => format!("{style}{text}{style:#}"),
+            false => text.to_owned(),
+        };
         let file = terminal_text(file);
         let place = match (self.position.line, self.position.column) {
             (0, _) => file.to_owned(),
@@ -53,24 +77,119 @@ impl Report {
             (line, column) => format!("{file}:{line}:{column}"),
         };
         let (severity, code) = (terminal_text(&self.severity), terminal_text(&self.code));
-        let mut text = format!("{place}: {severity}[{code}]: {}\n", terminal_text(&self.message));
+        let marked = self.marked();
+        let mut text = format!(
+            "{}: {}: {}\n",
+            paint(BOLD, &place),
+            paint(marked, &format!("{severity}[{code}]")),
+            paint(BOLD, &terminal_text(&self.message)),
+        );
         if let Some((line, caret)) = quoted.excerpt(self.position) {
-            text.push_str(&format!("{line}\n{caret}\n"));
+            let under = caret.strip_suffix('^').unwrap_or(&caret);
+            text.push_str(&format!("{line}\n{under}{}\n", paint(marked, "^")));
         }
         text
+    }
+
+    /// The style of the severity and the caret: red for an error, yellow for a warning.
+    fn marked(&self) -> Style {
+        let colour = match self.severity.as_str() {
+            name if name == Severity::Error.name() => Some(AnsiColor::BrightRed.into()),
+            name if name == Severity::Warning.name() => Some(AnsiColor::BrightYellow.into()),
+            _ => None,
+        };
+        BOLD.fg_color(colour)
     }
 
     /// The report as one line of JSON; line and column are 0 when unknown, as in the
     /// library's diagnostics.
     pub fn json(&self, file: &str) -> String {
         let Position { line, column, byte_offset } = self.position;
-        format!(
-            "{{\"file\":{},\"line\":{line},\"column\":{column},\"byte_offset\":{byte_offset},\
-             \"severity\":{},\"code\":{},\"message\":{}}}\n",
-            json_string(file),
-            json_string(&self.severity),
-            json_string(&self.code),
-            json_string(&self.message),
-        )
+        let fields = Json {
+            file,
+            line,
+            column,
+            byte_offset,
+            severity: &self.severity,
+            code: &self.code,
+            message: &self.message,
+        };
+        let mut json = Vec::new();
+        let written = fields.serialize(&mut Serializer::with_formatter(&mut json, TerminalSafe));
+        written.expect("a report of strings and numbers serializes");
+        json.push(b'\n');
+        String::from_utf8(json).expect("serde_json writes UTF-8")
+    }
+}
+
+/// A report's fields, in the order JSON lines give them.
+#[derive(Serialize)]
+struct Json<'a> {
+    file: &'a str,
+    line: u32,
+    column: u32,
+    byte_offset: u64,
+    severity: &'a str,
+    code: &'a str,
+    message: &'a str,
+}
+
+/// serde_json's compact form, where a string also escapes, as `\uXXXX`, every character
+/// that a terminal must not get raw and JSON allows raw (DEL, the C1 controls, the line
+/// and paragraph separators, the direction marks and overrides), so that a record stays
+/// one line on any terminal or log and shows them visibly.
+struct TerminalSafe;
+
+impl Formatter for TerminalSafe {
+    fn write_string_fragment<W: ?Sized + io::Write>(
+        &mut self,
+        writer: &mut W,
+        fragment: &str,
+    ) -> io::Result<()> {
+        let mut shown = String::new();
+        let mut raw_from = 0;
+        for (at, c) in fragment.char_indices() {
+            shown.clear();
+            terminal_char(c, &mut shown);
+            if shown.len() == c.len_utf8() {
+                continue;
+            }
+            CompactFormatter.write_string_fragment(writer, &fragment[raw_from..at])?;
+            for unit in c.encode_utf16(&mut [0; 2]) {
+                write!(writer, "\\u{unit:04x}")?;
+            }
+            raw_from = at + c.len_utf8();
+        }
+        CompactFormatter.write_string_fragment(writer, &fragment[raw_from..])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Position, Quoted, Report};
+
+    /// On a terminal a report is styled, and is the plain report once the styles are taken
+    /// out: the same text, escaped the same way.
+    #[test]
+    fn a_coloured_report_is_the_plain_one_styled() {
+        let report = Report {
+            severity: "warning".to_owned(),
+            code: "unknown-element".to_owned(),
+            message: "unknown element <Foo\u{1b}[2J>".to_owned(),
+            position: Position { line: 19, column: 32, byte_offset: 500 },
+        };
+        let plain = report.text("level.xml", &Quoted::nothing(), false);
+        let coloured = report.text("level.xml", &Quoted::nothing(), true);
+        assert!(coloured.contains("\u{1b}[1m\u{1b}[93mwarning[unknown-element]"), "{coloured:?}");
+        let mut stripped = String::new();
+        let mut rest = coloured.as_str();
+        while let Some(at) = rest.find('\u{1b}') {
+            stripped.push_str(&rest[..at]);
+            let end = rest[at..].find('m').expect("an SGR sequence ends with m");
+            rest = &rest[at + end + 1..];
+        }
+        stripped.push_str(rest);
+        assert_eq!(stripped, plain);
+        assert!(plain.starts_with("level.xml:19:32: warning[unknown-element]: "), "{plain}");
     }
 }
