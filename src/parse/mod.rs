@@ -35,13 +35,13 @@ use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
 /// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
 /// worth it. What it finds is placed at its line and column as it reads, or by the
 /// [`Placer`] it gives back when the text stays in memory. A read that goes on past errors
-/// (`recovering`, on one thread) gives back those it went on past beside its result.
+/// (`recovering`, on one thread) keeps those it went on past (see [`Read`]).
 pub(crate) fn read<'a>(source: Source<'a>, options: &'a LoadOptions, recovering: bool) -> Read<'a> {
     read_split(source, options, recovering, None)
 }
 
-/// What [`read`] gives: the arena or the error that stopped the read, the errors it went on
-/// past, and what places the findings left for later.
+/// What [`read`] gives: the arena (holding the errors the read went on past) or the error
+/// that stopped the read with those before it, and what places the findings left for later.
 pub(crate) type Read<'a> = (Parsed<Arena>, Vec<Finding>, Placer<'a>);
 
 /// [`read`], with the pieces and the helper's first one forced by `split` (for tests).
@@ -57,13 +57,12 @@ fn read_split<'a>(
         let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
         let read = ahead::read(&mut reader, helper);
         let Reader { mut tok, mut arena, .. } = reader;
-        let errors = arena.take_errors();
-        let read = match read {
+        let (read, errors) = match read {
             Ok(()) => {
                 arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
-                Ok(arena)
+                (Ok(arena), Vec::new())
             }
-            Err(problem) => Err(Box::new(tok.place(*problem))),
+            Err(problem) => (Err(Box::new(tok.place(*problem))), arena.take_errors()),
         };
         (read, errors, Placer::new(tok.into_source()))
     })
