@@ -42,9 +42,10 @@ enum VerbArgs {
         about = "Print every warning and error of each file, with the line it points at",
         override_usage = "box2scene check [--strict] [--format=text|json] FILE...",
         help_template = COMMAND_HELP,
-        before_help = "Loads each FILE and prints its warnings, or the error that stopped its load,\n\
-                       then (in text) a line with its counts: FILE: N errors, M warnings. A file\n\
-                       that cannot be loaded does not stop the others.",
+        before_help = "Loads each FILE and prints its errors and warnings in the order of the file,\n\
+                       going on past a bad value or an ID that names nothing (a markup error\n\
+                       ends the file), then (in text) a line with its counts: FILE: N errors,\n\
+                       M warnings. A file that cannot be loaded does not stop the others.",
         after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
                       Lines and columns count from 1, columns in characters.\n\
                       Exit status: 0 when no file has an error, 1 when one has, 2 on a usage \

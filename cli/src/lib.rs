@@ -23,7 +23,7 @@ use std::io::{self, Write};
 use std::path::Path;
 
 use box2scene::escape::terminal_text;
-use box2scene::{Code, Error, LoadOptions, Scene};
+use box2scene::{Checked, Code, Error, LoadOptions, Scene, Severity};
 
 use args::{Format, Input, Run, Verb};
 use quote::Quoted;
@@ -105,87 +105,124 @@ impl Io<'_> {
     }
 }
 
-/// A file loaded as a host loads it, and where its lines are read back from.
+/// How a command reads its file: as a host loads it, stopping at the first error, or
+/// checked, going on past the errors it can (`check`).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Reading {
+    Load,
+    Check,
+}
+
+/// A file read as a command reads it, and where its lines are read back from.
 struct Loaded {
     name: String,
-    scene: Result<Scene, Error>,
+    checked: Checked,
     quoted: Quoted,
 }
 
 impl Loaded {
-    fn read(input: &Input, options: &LoadOptions) -> Loaded {
+    fn read(input: &Input, options: &LoadOptions, reading: Reading) -> Loaded {
         let name = input.name();
-        let (scene, quoted) = match input {
+        let (checked, quoted) = match input {
             Input::Path(path) => match File::open(path) {
-                Ok(file) => load_file(file, path, options),
-                Err(e) => (Err(Error::cannot_read(path, &e)), Quoted::nothing()),
+                Ok(file) => load_file(file, path, options, reading),
+                Err(e) => (failed(Error::cannot_read(path, &e)), Quoted::nothing()),
             },
-            Input::Stdin => load_stdin(Path::new(&name), options),
+            Input::Stdin => load_stdin(Path::new(&name), options, reading),
         };
-        Loaded { name, scene, quoted }
+        Loaded { name, checked, quoted }
     }
 
     /// The scene, or None once its error is on standard error.
     fn scene_or_report(&self, io: &mut Io<'_>) -> Result<&Scene, Status> {
-        self.scene.as_ref().map_err(|error| {
-            io.report(&Report::of_error(error).text(&self.name, &self.quoted, false));
-            status_of(error)
-        })
+        if let Some(scene) = &self.checked.scene {
+            return Ok(scene);
+        }
+        let error = &self.checked.errors[0];
+        io.report(&Report::of_error(error).text(&self.name, &self.quoted, false));
+        Err(status_of(error))
     }
 }
 
-/// Loads an open file: a regular one as a path is loaded, read back from where a report
+/// What a load gives, as a check gives it.
+fn loaded(scene: Result<Scene, Error>) -> Checked {
+    match scene {
+        Ok(scene) => Checked { scene: Some(scene), errors: Vec::new(), warnings: Vec::new() },
+        Err(error) => failed(error),
+    }
+}
+
+fn failed(error: Error) -> Checked {
+    Checked { scene: None, errors: vec![error], warnings: Vec::new() }
+}
+
+/// Reads an open file: a regular one as a path is read, read back from where a report
 /// quotes it; anything else (a pipe, a terminal) as a stream, copied as it is read.
-fn load_file(file: File, name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
+fn load_file(
+    file: File,
+    name: &Path,
+    options: &LoadOptions,
+    reading: Reading,
+) -> (Checked, Quoted) {
     match file.metadata() {
         Ok(meta) if meta.is_file() => {
             let quoted = Quoted::from(file.try_clone().ok());
-            (box2scene::load_file(file, name, options), quoted)
+            let checked = match reading {
+                Reading::Load => loaded(box2scene::load_file(file, name, options)),
+                Reading::Check => box2scene::check_file(file, name, options),
+            };
+            (checked, quoted)
         }
-        _ => load_stream(file, name, options),
+        _ => load_stream(file, name, options, reading),
     }
 }
 
-/// Loads a stream a window at a time, as a file, while a copy of what is read goes to a
+/// Reads a stream a window at a time, as a file, while a copy of what is read goes to a
 /// file of this run's own (removed when it ends), which is all a report reads back.
 fn load_stream(
     stream: impl io::Read,
     name: &Path,
     options: &LoadOptions,
-) -> (Result<Scene, Error>, Quoted) {
+    reading: Reading,
+) -> (Checked, Quoted) {
     let quoted = Quoted::spool();
-    let scene = box2scene::load_reader(quoted.copying(stream), name, options);
-    (scene, quoted)
+    let stream = quoted.copying(stream);
+    let checked = match reading {
+        Reading::Load => loaded(box2scene::load_reader(stream, name, options)),
+        Reading::Check => box2scene::check_reader(stream, name, options),
+    };
+    (checked, quoted)
 }
 
 /// Standard input, through a handle of its own that is a file, so that a redirected file
-/// is loaded as a file is.
+/// is read as a file is.
 #[cfg(unix)]
-fn load_stdin(name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
+fn load_stdin(name: &Path, options: &LoadOptions, reading: Reading) -> (Checked, Quoted) {
     use std::os::fd::AsFd;
     match io::stdin().as_fd().try_clone_to_owned() {
-        Ok(handle) => load_file(File::from(handle), name, options),
-        Err(_) => load_stream(io::stdin().lock(), name, options),
+        Ok(handle) => load_file(File::from(handle), name, options, reading),
+        Err(_) => load_stream(io::stdin().lock(), name, options, reading),
     }
 }
 
 #[cfg(not(unix))]
-fn load_stdin(name: &Path, options: &LoadOptions) -> (Result<Scene, Error>, Quoted) {
-    load_stream(io::stdin().lock(), name, options)
+fn load_stdin(name: &Path, options: &LoadOptions, reading: Reading) -> (Checked, Quoted) {
+    load_stream(io::stdin().lock(), name, options, reading)
 }
 
-/// Checks every file, even after one fails, so that one run reports everything.
+/// Checks every file, even after one fails, so that one run reports everything: every
+/// error the check could go on past and every warning, in the order of the file.
 fn check(run: &Run, io: &mut Io<'_>) -> Status {
     let mut worst = Status::Clean;
     for input in &run.inputs {
-        let loaded = Loaded::read(input, &run.load);
-        let (status, reports) = match &loaded.scene {
-            Ok(scene) => {
-                let reports = scene.diagnostics().iter().map(|d| Report::of_diagnostic(scene, d));
-                (Status::Clean, reports.collect())
-            }
-            Err(error) => (status_of(error), vec![Report::of_error(error)]),
-        };
+        let loaded = Loaded::read(input, &run.load, Reading::Check);
+        let Checked { errors, warnings, .. } = &loaded.checked;
+        let status = errors.iter().map(status_of).max().unwrap_or(Status::Clean);
+        let mut found: Vec<(Severity, &Error)> =
+            errors.iter().map(|e| (Severity::Error, e)).collect();
+        found.extend(warnings.iter().map(|w| (Severity::Warning, w)));
+        found.sort_by_key(|(_, e)| e.position.byte_offset);
+        let reports: Vec<Report> = found.into_iter().map(|(s, e)| Report::of(s, e)).collect();
         let mut text: String = reports
             .iter()
             .map(|report| match run.format {
@@ -216,7 +253,7 @@ fn summary(file: &str, reports: &[Report]) -> String {
 }
 
 fn dump(run: &Run, io: &mut Io<'_>) -> Status {
-    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let loaded = Loaded::read(&run.inputs[0], &run.load, Reading::Load);
     match loaded.scene_or_report(io) {
         Ok(scene) => io.emit(&scene.to_json()),
         Err(status) => status,
@@ -227,7 +264,7 @@ fn dump(run: &Run, io: &mut Io<'_>) -> Status {
 /// unknown elements and attributes and Farseer-only joints in their places. The file is
 /// read whole before anything is written, so the output may be the file itself.
 fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
-    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let loaded = Loaded::read(&run.inputs[0], &run.load, Reading::Load);
     let scene = match loaded.scene_or_report(io) {
         Ok(scene) => scene,
         Err(status) => return status,
@@ -245,7 +282,7 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
 
 /// Draws the scene to `-o` (replaced as `fmt -o` replaces a file) or standard output.
 fn render(run: &Run, io: &mut Io<'_>) -> Status {
-    let loaded = Loaded::read(&run.inputs[0], &run.load);
+    let loaded = Loaded::read(&run.inputs[0], &run.load, Reading::Load);
     let svg = match loaded.scene_or_report(io) {
         Ok(scene) => render::svg(scene),
         Err(status) => return status,

@@ -18,7 +18,7 @@ use std::io;
 
 use anstyle::{AnsiColor, Style};
 use box2scene::escape::{terminal_char, terminal_text};
-use box2scene::{Diagnostic, Error, Position, Scene, Severity};
+use box2scene::{Error, Position, Severity};
 use serde::Serialize;
 use serde_json::ser::{CompactFormatter, Formatter, Serializer};
 
@@ -35,24 +35,18 @@ pub struct Report {
 }
 
 impl Report {
-    pub fn of_error(error: &Error) -> Report {
+    /// A finding of `severity`: its code, position and message.
+    pub fn of(severity: Severity, found: &Error) -> Report {
         Report {
-            severity: Severity::Error.name().to_owned(),
-            code: error.code.name().to_owned(),
-            message: error.message.clone(),
-            position: error.position,
+            severity: severity.name().to_owned(),
+            code: found.code.name().to_owned(),
+            message: found.message.clone(),
+            position: found.position,
         }
     }
 
-    pub fn of_diagnostic(scene: &Scene, d: &Diagnostic) -> Report {
-        // A loaded scene's diagnostics carry known codes and severities; a value without a
-        // name is shown as its number rather than guessed.
-        Report {
-            severity: d.severity().map_or_else(|| d.severity.to_string(), |s| s.name().to_owned()),
-            code: d.code().map_or_else(|| d.code.to_string(), |c| c.name().to_owned()),
-            message: scene.text(d.message).unwrap_or_default().to_owned(),
-            position: d.position(),
-        }
+    pub fn of_error(error: &Error) -> Report {
+        Report::of(Severity::Error, error)
     }
 
     /// Whether it is an error rather than a warning.

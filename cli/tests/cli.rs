@@ -353,6 +353,43 @@ fn check_exits_1_when_any_file_has_an_error() {
     assert_eq!(clean, "clean.xml: no errors or warnings\n");
 }
 
+/// `check` reports every error it can go on past with the warnings, in the order of the
+/// file, and counts them; a misspelt element is named with the one it may be.
+#[test]
+fn check_reports_every_error_and_warning_of_a_file_in_order() {
+    let sandbox = Sandbox::new("every-error");
+    let xml = clean_with("<Density>1</Density>", "<Density>abc</Density>")
+        .replacen("<Bullet>False</Bullet>", "<Bulet>False</Bulet>", 1)
+        .replacen("<ID>0</ID>", "<ID>3</ID>", 1);
+    sandbox.write("level.xml", &xml);
+    let run = sandbox.run(&["check", "level.xml"]);
+    assert_eq!(run.status, 1, "{}", run.stderr);
+    let headers: Vec<&str> = lines(&run.stdout).into_iter().step_by(3).collect();
+    let at = |needle: &str| {
+        let (line, column) = locate(&xml, needle);
+        format!("level.xml:{line}:{column}: ")
+    };
+    let expected = [
+        format!("{}error[invalid-float]: <Density>: 'abc' is not a number", at("abc")),
+        format!(
+            "{}warning[unknown-element]: unknown element <Bulet> in <Body> ignored (did you mean <Bullet>?)",
+            at("<Bulet>")
+        ),
+        format!(
+            "{}error[id-out-of-range]: body 0 names fixture 3, but the file has 1 fixture",
+            at("3</ID>")
+        ),
+        "level.xml: 2 errors, 1 warning".to_owned(),
+    ];
+    assert_eq!(headers, expected, "{}", run.stdout);
+    let json = sandbox.run(&["check", "--format=json", "level.xml"]);
+    let codes: Vec<String> = lines(&json.stdout)
+        .iter()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap()["code"].to_string())
+        .collect();
+    assert_eq!(codes, ["\"invalid-float\"", "\"unknown-element\"", "\"id-out-of-range\""]);
+}
+
 #[test]
 fn check_json_prints_one_object_a_line_per_diagnostic() {
     let sandbox = Sandbox::new("json");
