@@ -8,6 +8,8 @@
 #include <box2scene/box2d32.h>
 
 #define V3_ADAPTER(name) b2s_box2d32_##name
+/* The minor version of the Box2D v3 the adapter serves. */
+#define V3_MINOR 2
 
 static inline b2Vec2 v3_position(b2BodyId body) {
     return b2ToVec2(b2Body_GetPosition(body));

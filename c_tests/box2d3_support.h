@@ -7,6 +7,8 @@
 #include <box2scene/box2d3.h>
 
 #define V3_ADAPTER(name) b2s_box2d3_##name
+/* The minor version of the Box2D v3 the adapter serves. */
+#define V3_MINOR 1
 
 static inline b2Vec2 v3_position(b2BodyId body) {
     return b2Body_GetPosition(body);
