@@ -31,6 +31,10 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     return def;
 }
 
+static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
+    def->motionLocks.angularZ = fixed;
+}
+
 static inline b2Vec2 v3_local_center(b2BodyId body) {
     return b2Body_GetLocalCenter(body);
 }
