@@ -31,6 +31,18 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     return def;
 }
 
+/* The part of a joint def that names its bodies (v3.2: its base). */
+#define V3_JOINT_BASE(def) ((def).base)
+
+/* A joint between `a` and `b` of a kind the format has no form for: a filter joint (v3.2
+ * has no mouse joint). */
+static inline b2JointId v3_joint_without_form(b2WorldId world, b2BodyId a, b2BodyId b) {
+    b2FilterJointDef filter = b2DefaultFilterJointDef();
+    filter.base.bodyIdA = a;
+    filter.base.bodyIdB = b;
+    return b2CreateFilterJoint(world, &filter);
+}
+
 static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
 }

@@ -29,6 +29,17 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     return def;
 }
 
+/* The part of a joint def that names its bodies (v3.1: the def itself). */
+#define V3_JOINT_BASE(def) (def)
+
+/* A joint between `a` and `b` of a kind the format has no form for: a mouse joint. */
+static inline b2JointId v3_joint_without_form(b2WorldId world, b2BodyId a, b2BodyId b) {
+    b2MouseJointDef mouse = b2DefaultMouseJointDef();
+    mouse.bodyIdA = a;
+    mouse.bodyIdB = b;
+    return b2CreateMouseJoint(world, &mouse);
+}
+
 static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->fixedRotation = fixed;
 }
