@@ -17,7 +17,7 @@
 #define BOX2SCENE_BOX2D3_ADAPTER_C
 
 #ifndef B2S3_API
-#error "compile the Box2D v3 adapter through its version's header (box2scene/box2d3.h, box2scene/box2d32.h)"
+#error "compile the Box2D v3 adapter through its version's header (box2scene/box2d3.h or box2d32.h)"
 #endif
 
 #include <float.h>
