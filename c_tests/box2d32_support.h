@@ -8,6 +8,8 @@
 #include <box2scene/box2d32.h>
 
 #define V3_ADAPTER(name) b2s_box2d32_##name
+/* The minor version of the Box2D v3 the adapter serves. */
+#define V3_MINOR 2
 
 static inline b2Vec2 v3_position(b2BodyId body) {
     return b2ToVec2(b2Body_GetPosition(body));
@@ -27,6 +29,22 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     def.base.localFrameA.q = b2Rot_identity;
     def.base.localFrameB.p = anchor_b;
     return def;
+}
+
+/* The part of a joint def that names its bodies (v3.2: its base). */
+#define V3_JOINT_BASE(def) ((def).base)
+
+/* A joint between `a` and `b` of a kind the format has no form for: a filter joint (v3.2
+ * has no mouse joint). */
+static inline b2JointId v3_joint_without_form(b2WorldId world, b2BodyId a, b2BodyId b) {
+    b2FilterJointDef filter = b2DefaultFilterJointDef();
+    filter.base.bodyIdA = a;
+    filter.base.bodyIdB = b;
+    return b2CreateFilterJoint(world, &filter);
+}
+
+static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
+    def->motionLocks.angularZ = fixed;
 }
 
 static inline b2Vec2 v3_local_center(b2BodyId body) {

@@ -7,6 +7,8 @@
 #include <box2scene/box2d3.h>
 
 #define V3_ADAPTER(name) b2s_box2d3_##name
+/* The minor version of the Box2D v3 the adapter serves. */
+#define V3_MINOR 1
 
 static inline b2Vec2 v3_position(b2BodyId body) {
     return b2Body_GetPosition(body);
@@ -25,6 +27,21 @@ static inline b2RevoluteJointDef v3_revolute_def(b2BodyId a, b2BodyId b, b2Vec2 
     def.localAnchorA = anchor_a;
     def.localAnchorB = anchor_b;
     return def;
+}
+
+/* The part of a joint def that names its bodies (v3.1: the def itself). */
+#define V3_JOINT_BASE(def) (def)
+
+/* A joint between `a` and `b` of a kind the format has no form for: a mouse joint. */
+static inline b2JointId v3_joint_without_form(b2WorldId world, b2BodyId a, b2BodyId b) {
+    b2MouseJointDef mouse = b2DefaultMouseJointDef();
+    mouse.bodyIdA = a;
+    mouse.bodyIdB = b;
+    return b2CreateMouseJoint(world, &mouse);
+}
+
+static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
+    def->fixedRotation = fixed;
 }
 
 static inline b2Vec2 v3_local_center(b2BodyId body) {

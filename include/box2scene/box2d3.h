@@ -189,7 +189,7 @@ void b2s_box2d3_reports_free(b2s_box2d3_reports* reports);
 
 #ifdef B2S_BOX2D3_IMPLEMENTATION
 #include "detail/box2d3/v31.h"
-#include "detail/box2d3_impl.h"
+#include "detail/box2d3/adapter.c"
 #endif
 
 #endif /* Box2D 3.1 */

@@ -80,9 +80,10 @@ check_install() {
 check_layout() {
   local file
   for file in include/box2scene.h include/box2scene/box2d.hpp include/box2scene/box2d3.h \
-    include/box2scene/detail/box2d3_impl.h share/box2scene/box2d3.c \
+    include/box2scene/detail/box2d3/v31.h share/box2scene/box2d3.c \
     include/box2scene/box2d32.h include/box2scene/detail/box2d3/v32.h \
-    include/box2scene/detail/box2d3/adapter.c share/box2scene/box2d32.c \
+    include/box2scene/detail/box2d3/adapter.c include/box2scene/detail/box2d3/capture.c \
+    share/box2scene/box2d32.c \
     "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
     "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
     "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \

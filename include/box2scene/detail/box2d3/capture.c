@@ -2,7 +2,8 @@
  * Capture: bodies of a live world that the host names, with their shapes and the joints
  * between them, back into a scene that builds into a world evolving bit for bit like it.
  * Derived values are inverted exactly: the float whose forward computation in the build
- * gives the bits the world holds.
+ * gives the bits the world holds. What the version holds differently (a body's centre, a
+ * chain, a joint's frames, the motor joint) it reads back through its hooks (v31.h, v32.h).
  */
 
 /* A body the host named and the index it gave it. */
@@ -107,13 +108,6 @@ static bool b2s3_angle_of(b2Rot q, float* angle) {
     return b2s3_search_ulps(atan2f(q.s, q.c), b2s3_rotation_of, wanted, angle);
 }
 
-/* wanted: an axis rotation (c, s), then the rotation of frame B the build makes of it. */
-static bool b2s3_prismatic_reference_of(float angle, const float* wanted) {
-    b2Rot axis = {wanted[0], wanted[1]};
-    b2Rot q = b2InvMulRot(b2s3_rotation(angle), axis);
-    return q.c == wanted[2] && q.s == wanted[3];
-}
-
 /* wanted: a result and what the build subtracts from x to get it. */
 static bool b2s3_less_gives(float x, const float* wanted) {
     return x - wanted[1] == wanted[0];
@@ -176,9 +170,9 @@ static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) 
     if (!exact) {
         B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "fixture", fixture, NULL,
                     "its filter (category 0x%llx, mask 0x%llx, group %d) has bits above the "
-                    "format's %u or a group beyond %u bits; the low bits were written",
+                    "format's %u or a group beyond %u bits; the low %u bits were written",
                     (unsigned long long)f.categoryBits, (unsigned long long)f.maskBits,
-                    f.groupIndex, B2S3_FILTER_BITS, B2S3_GROUP_BITS);
+                    f.groupIndex, B2S3_FILTER_BITS, B2S3_GROUP_BITS, B2S3_FILTER_BITS);
     }
     return out;
 }
@@ -217,10 +211,11 @@ static bool b2s3_continues(b2ChainSegment cur, b2ChainSegment next) {
            b2s3_same_point(next.segment.point2, cur.ghost2);
 }
 
-/* The chain (or edge with ghost vertices) that `count` consecutive chain segments make: a
- * loop when the last continues into the first, else open with its ghosts. */
+/* The chain (or edge with ghost vertices) that `count` chain segments make, in their order:
+ * a loop when the last continues into the first, else open with its ghosts; its material
+ * and filter are those of `from`. */
 static bool b2s3_capture_chain(b2s3_capture* c, const b2ShapeId* shapes, int count,
-                               uint32_t* out_fixture) {
+                               b2ShapeId from, uint32_t* out_fixture) {
     b2s_vec2* points = (b2s_vec2*)malloc(((size_t)count + 1) * sizeof(b2s_vec2));
     if (points == NULL) {
         c->list.out_of_memory = true;
@@ -230,7 +225,7 @@ static bool b2s3_capture_chain(b2s3_capture* c, const b2ShapeId* shapes, int cou
     b2ChainSegment tail = b2Shape_GetChainSegment(shapes[count - 1]);
     bool loop = count >= 3 && b2s3_continues(tail, head);
     b2s_shape shape;
-    b2s_shape_default(count == 1 ? B2S_SHAPE_KIND_EDGE : B2S_SHAPE_KIND_CHAIN, &shape);
+    b2s_shape_default(count == 1 ? B2S3_LONE_SEGMENT_KIND : B2S_SHAPE_KIND_CHAIN, &shape);
     uint32_t n = 0;
     for (int i = 0; i < count; ++i) {
         points[n++] = b2s3_to_b2s(b2Shape_GetChainSegment(shapes[i]).segment.point1);
@@ -244,7 +239,7 @@ static bool b2s3_capture_chain(b2s3_capture* c, const b2ShapeId* shapes, int cou
         shape.has_next_vertex = true;
         shape.next_vertex = b2s3_to_b2s(tail.ghost2);
     }
-    bool made = b2s3_add_fixture(c, &shape, points, n, shapes[0], 0.0f, out_fixture);
+    bool made = b2s3_add_fixture(c, &shape, points, n, from, 0.0f, out_fixture);
     free(points);
     return made;
 }
@@ -296,26 +291,9 @@ static int b2s3_by_index(const void* a, const void* b) {
     return (x > y) - (x < y);
 }
 
-/* How many chain segments from `first` on continue one another, up to the one that closes
- * a loop (a loop built beside another of the same points must not run into it). */
-static int b2s3_segment_run(const b2ShapeId* shapes, int first, int count) {
-    int run = 1;
-    b2ChainSegment head = b2Shape_GetChainSegment(shapes[first]);
-    b2ChainSegment cur = head;
-    while (first + run < count && b2Shape_GetType(shapes[first + run]) == b2_chainSegmentShape &&
-           !(run >= 3 && b2s3_continues(cur, head))) {
-        b2ChainSegment next = b2Shape_GetChainSegment(shapes[first + run]);
-        if (!b2s3_continues(cur, next)) {
-            break;
-        }
-        cur = next;
-        run += 1;
-    }
-    return run;
-}
-
-/* The fixtures of one body, in the order its shapes were created (consecutive chain
- * segments regrouped into one chain), with the mass their densities give. */
+/* The fixtures of one body, in the order its shapes were created (a chain where its first
+ * segment stands, its segments as the version groups them), with the mass their densities
+ * give. */
 static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fixtures,
                                   uint32_t* count, b2MassData* computed) {
     int capacity = b2Body_GetShapeCount(body);
@@ -331,15 +309,23 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
     }
     int shape_count = ok ? b2Body_GetShapes(body, shapes, capacity) : 0;
     qsort(shapes, (size_t)shape_count, sizeof(b2ShapeId), b2s3_by_index);
+    b2s3_chains chains;
+    if (!b2s3_chains_of(&chains, shapes, shape_count)) {
+        c->list.out_of_memory = true;
+        ok = false;
+    }
     size_t massive = 0;
-    for (int i = 0; i < shape_count && ok;) {
+    for (int i = 0; i < shape_count && ok; ++i) {
         b2ShapeId id = shapes[i];
         uint32_t fixture = 0;
         bool made;
         if (b2Shape_GetType(id) == b2_chainSegmentShape) {
-            int run = b2s3_segment_run(shapes, i, shape_count);
-            made = b2s3_capture_chain(c, shapes + i, run, &fixture);
-            i += run;
+            const b2ShapeId* segments = NULL;
+            int run = b2s3_chain_at(&chains, shapes, i, shape_count, &segments);
+            if (run == 0) {
+                continue; /* its chain's fixture is made */
+            }
+            made = b2s3_capture_chain(c, segments, run, id, &fixture);
         } else {
             made = b2s3_capture_shape(c, id, &fixture);
             if (made) {
@@ -347,7 +333,6 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
                 masses[massive] = b2s3_shape_mass(id);
                 massive += 1;
             }
-            i += 1;
         }
         if (!made) {
             ok = c->failure == B2S_CODE_OK && !c->list.out_of_memory;
@@ -359,6 +344,7 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
     *computed = b2s3_mass_from_shapes(masses, densities, massive, b2s3_rotation_locked(body),
                                       &kept);
     computed->mass = b2s3_positive(computed->mass);
+    b2s3_chains_free(&chains);
     free(shapes);
     free(masses);
     free(densities);
@@ -392,7 +378,7 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
     if (type == b2_dynamicBody) {
         body.linear_velocity = b2s3_origin_velocity(b2Body_GetTransform(id),
-                                                    b2Body_GetLocalCenter(id),
+                                                    b2s3_local_center(id),
                                                     b2Body_GetAngularVelocity(id),
                                                     body.linear_velocity);
     }
@@ -438,78 +424,14 @@ static void b2s3_capture_lossy(b2s3_capture* c, const char* what) {
                 "%s has no Box2Scene form; written without it", what);
 }
 
-/* The reference angle of frames whose frame A is turned by it. */
-static void b2s3_reference_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
-    b2Rot q = b2Joint_GetLocalFrameA(id).q;
-    if (!b2s3_angle_of(q, &joint->reference_angle)) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
-                    "no angle has exactly the rotation of its frame A; the nearest, %.9g rad, "
-                    "was written as ReferenceAngle",
-                    (double)joint->reference_angle);
-    }
-}
-
-/* The axis whose normalisation in the build gives frame A's x axis bit for bit: the axis
- * itself, or one a few ulps from it (a unit vector is not always its own normalisation). */
-static void b2s3_axis_of(b2s3_capture* c, const b2s3_frames* f, b2s_joint* joint) {
-    for (int k = 0; k <= 8; ++k) {
-        for (int dx = -k; dx <= k; ++dx) {
-            for (int dy = -k; dy <= k; ++dy) {
-                if (abs(dx) != k && abs(dy) != k) {
-                    continue; /* the ring at distance k only */
-                }
-                b2Vec2 axis = {b2s3_ulps_away(f->axis.x, dx), b2s3_ulps_away(f->axis.y, dy)};
-                if (b2s3_same_point(b2Normalize(axis), f->axis)) {
-                    joint->local_axis_a = b2s3_to_b2s(axis);
-                    return;
-                }
-            }
-        }
-    }
-    joint->local_axis_a = b2s3_to_b2s(f->axis);
-    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
-                "no axis near (%.9g, %.9g) normalises to it exactly; it was written",
-                (double)f->axis.x, (double)f->axis.y);
-}
-
-static void b2s3_prismatic_reference(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
-    b2Rot a = b2Joint_GetLocalFrameA(id).q, b = b2Joint_GetLocalFrameB(id).q;
-    float wanted[4] = {a.c, a.s, b.c, b.s};
-    float guess = atan2f(a.s, a.c) - atan2f(b.s, b.c);
-    if (!b2s3_search_ulps(guess, b2s3_prismatic_reference_of, wanted, &joint->reference_angle)) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
-                    "no reference angle gives exactly the rotation of its frame B; the "
-                    "nearest, %.9g rad, was written",
-                    (double)joint->reference_angle);
-    }
-}
-
-/* wanted: the spring frequency the build makes of a CorrectionFactor. */
-static bool b2s3_motor_hertz_of(float correction_factor, const float* wanted) {
-    return b2s3_motor_hertz(correction_factor) == wanted[0];
-}
-
-/* A motor joint as the Friction or Motor the build makes it of, inverted exactly; one of
- * another form is read as the nearest Motor and reported. */
+/* A motor joint as the Friction or Motor joint the build makes of it (the version's
+ * b2s3_motor_of); one of another form is read as the nearest Motor and reported. */
 static void b2s3_motor_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint,
                                 uint32_t* kind) {
-    bool friction = false;
-    float hertz = 0.0f;
-    bool exact = b2s3_motor_of(id, joint, &friction, &hertz);
-    *kind = friction ? B2S_JOINT_KIND_FRICTION : B2S_JOINT_KIND_MOTOR;
-    if (friction) {
-        return;
-    }
-    float wanted[1] = {hertz};
-    exact = b2s3_search_ulps(hertz * B2S3_TWO_PI / B2S3_MOTOR_STEP_RATE, b2s3_motor_hertz_of,
-                             wanted, &joint->correction_factor) &&
-            exact;
-    exact = b2s3_angle_of(b2Joint_GetLocalFrameA(id).q, &joint->angular_offset) && exact;
-    if (!exact) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
-                    "a motor joint other than the build makes of a Motor joint: written as "
-                    "the nearest, from the offsets of its frame A, its spring limits and a "
-                    "CorrectionFactor from its linear spring's frequency");
+    const char* loss = b2s3_motor_of(id, joint);
+    *kind = joint->kind;
+    if (loss != NULL) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL, "%s", loss);
     }
 }
 
@@ -550,15 +472,13 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
     if (kind == B2S_JOINT_KIND_FRICTION || kind == B2S_JOINT_KIND_MOTOR) {
         return true;
     }
-    b2s3_frames f;
-    if (!b2s3_frames_of(id, &f, kind == B2S_JOINT_KIND_PRISMATIC)) {
-        b2s3_capture_lossy(c, "a turn of its frame B");
+    char losses[2][B2S3_LOSS_SIZE];
+    int lost = b2s3_frames_of(id, joint, losses);
+    for (int i = 0; i < lost; ++i) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL, "%s", losses[i]);
     }
-    joint->local_anchor_a = b2s3_to_b2s(f.anchor_a);
-    joint->local_anchor_b = b2s3_to_b2s(f.anchor_b);
     switch (kind) {
     case B2S_JOINT_KIND_REVOLUTE:
-        b2s3_reference_of(c, id, joint);
         joint->enable_limit = b2RevoluteJoint_IsLimitEnabled(id);
         joint->lower_limit = b2RevoluteJoint_GetLowerLimit(id);
         joint->upper_limit = b2RevoluteJoint_GetUpperLimit(id);
@@ -570,8 +490,6 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
         }
         break;
     case B2S_JOINT_KIND_PRISMATIC:
-        b2s3_axis_of(c, &f, joint);
-        b2s3_prismatic_reference(c, id, joint);
         joint->enable_limit = b2PrismaticJoint_IsLimitEnabled(id);
         joint->lower_limit = b2PrismaticJoint_GetLowerLimit(id);
         joint->upper_limit = b2PrismaticJoint_GetUpperLimit(id);
@@ -605,7 +523,6 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
         }
         break;
     case B2S_JOINT_KIND_WHEEL:
-        b2s3_axis_of(c, &f, joint);
         joint->frequency_hz = b2WheelJoint_GetSpringHertz(id);
         joint->damping_ratio = b2WheelJoint_GetSpringDampingRatio(id);
         joint->enable_motor = b2WheelJoint_IsMotorEnabled(id);
@@ -616,7 +533,6 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
         }
         break;
     case B2S_JOINT_KIND_LINE:
-        b2s3_axis_of(c, &f, joint);
         joint->enable_limit = b2WheelJoint_IsLimitEnabled(id);
         joint->lower_limit = b2WheelJoint_GetLowerLimit(id);
         joint->upper_limit = b2WheelJoint_GetUpperLimit(id);
@@ -625,7 +541,6 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
         }
         break;
     case B2S_JOINT_KIND_WELD:
-        b2s3_reference_of(c, id, joint);
         joint->frequency_hz = b2WeldJoint_GetAngularHertz(id);
         joint->damping_ratio = b2WeldJoint_GetAngularDampingRatio(id);
         if (b2WeldJoint_GetLinearHertz(id) != 0.0f) {
@@ -692,6 +607,10 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
 
 /* ---- the capture */
 
+/* A public name as text. */
+#define B2S3_NAME_OF(name) B2S3_TEXT(name)
+#define B2S3_TEXT(name) #name
+
 static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* message) {
     if (error != NULL) {
         memset(error, 0, sizeof *error);
@@ -706,8 +625,8 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
                                  b2s_error* error) {
     if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
         return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
-                                  "capture_world needs out_scene, reports and, for a body "
-                                  "count above 0, bodies");
+                                  B2S3_NAME_OF(B2S3_API(capture_world)) " needs out_scene, "
+                                  "reports and, for a body count above 0, bodies");
     }
     *out_scene = NULL;
     reports->items = NULL;

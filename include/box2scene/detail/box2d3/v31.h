@@ -1,8 +1,11 @@
 /*
  * What the Box2D v3 adapter's sources (adapter.c and the files it includes) need to know of
  * Box2D v3.1, the one place where the adapter for v3.1 differs from one for another v3
- * (v32.h is v3.2's): its public names and constants. Names starting with b2s3_ are private
- * to the adapter's one translation unit.
+ * (v32.h is v3.2's): its public names, its constants, how a body takes its position and
+ * fixed rotation, how a body's mass is summed, how chains are made (b2ChainDef) and read
+ * back, how joints take their anchors, axes and reference angles (fields of each def) and
+ * give them back, and its motor joint. Names starting with b2s3_ are private to the
+ * adapter's one translation unit.
  */
 #ifndef BOX2SCENE_BOX2D3_V31_H
 #define BOX2SCENE_BOX2D3_V31_H
@@ -40,6 +43,10 @@ static void b2s3_set_pose(b2BodyDef* def, b2Vec2 position, b2Rot rotation) {
 
 static b2Vec2 b2s3_body_position(b2BodyId body) {
     return b2Body_GetPosition(body);
+}
+
+static b2Vec2 b2s3_local_center(b2BodyId body) {
+    return b2Body_GetLocalCenterOfMass(body);
 }
 
 /* v3.1's fixed rotation gives the body no inertia. */
@@ -249,6 +256,150 @@ static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
                  (double)joint->correction_factor);
     }
     return count;
+}
+
+/* ---- capture: v3.1 holds what the build passed, and its chains are objects */
+
+/* A chain is a b2ChainId that lists its segments in order: capture finds each chain where
+ * its first segment stands among the body's shapes and makes one fixture of all of them. */
+typedef struct b2s3_chain_seen {
+    b2ChainId id;
+    bool captured;
+} b2s3_chain_seen;
+
+typedef struct b2s3_chains {
+    b2s3_chain_seen* seen; /* the body's chains, each once and sorted */
+    size_t count;
+    b2ShapeId* segments; /* one chain's, room for all the body's shapes */
+    int capacity;
+} b2s3_chains;
+
+static int b2s3_chain_order(const void* a, const void* b) {
+    b2ChainId x = ((const b2s3_chain_seen*)a)->id, y = ((const b2s3_chain_seen*)b)->id;
+    if (x.index1 != y.index1) {
+        return x.index1 < y.index1 ? -1 : 1;
+    }
+    return (x.generation > y.generation) - (x.generation < y.generation);
+}
+
+/* The chains among a body's `count` shapes, each once and sorted, so that a segment finds
+ * its chain's entry by a binary search however many chains the body holds. False when
+ * memory runs out (b2s3_chains_free frees what was made). */
+static bool b2s3_chains_of(b2s3_chains* chains, const b2ShapeId* shapes, int count) {
+    size_t room = (size_t)(count > 0 ? count : 1);
+    chains->seen = (b2s3_chain_seen*)malloc(room * sizeof(b2s3_chain_seen));
+    chains->segments = (b2ShapeId*)malloc(room * sizeof(b2ShapeId));
+    chains->count = 0;
+    chains->capacity = count;
+    if (chains->seen == NULL || chains->segments == NULL) {
+        return false;
+    }
+    size_t found = 0;
+    for (int i = 0; i < count; ++i) {
+        if (b2Shape_GetType(shapes[i]) == b2_chainSegmentShape) {
+            chains->seen[found].id = b2Shape_GetParentChain(shapes[i]);
+            chains->seen[found].captured = false;
+            found += 1;
+        }
+    }
+    qsort(chains->seen, found, sizeof(b2s3_chain_seen), b2s3_chain_order);
+    for (size_t k = 0; k < found; ++k) {
+        if (chains->count == 0 ||
+            b2s3_chain_order(&chains->seen[chains->count - 1], &chains->seen[k]) != 0) {
+            chains->seen[chains->count++] = chains->seen[k];
+        }
+    }
+    return true;
+}
+
+static void b2s3_chains_free(b2s3_chains* chains) {
+    free(chains->seen);
+    free(chains->segments);
+}
+
+/* The segments, in their chain's order, of the chain that `shapes[i]` (a chain segment)
+ * belongs to, the first time one of them is met; 0 once its chain has been met. */
+static int b2s3_chain_at(b2s3_chains* chains, const b2ShapeId* shapes, int i, int count,
+                         const b2ShapeId** segments) {
+    (void)count;
+    b2s3_chain_seen key = {b2Shape_GetParentChain(shapes[i]), false};
+    b2s3_chain_seen* chain = (b2s3_chain_seen*)bsearch(&key, chains->seen, chains->count,
+                                                       sizeof(b2s3_chain_seen),
+                                                       b2s3_chain_order);
+    if (chain->captured) {
+        return 0;
+    }
+    chain->captured = true;
+    *segments = chains->segments;
+    return b2Chain_GetSegments(chain->id, chains->segments, chains->capacity);
+}
+
+/* A chain of one segment was made of an edge with ghost vertices or of a chain of two
+ * vertices: v3.1's capture writes it as the chain. */
+#define B2S3_LONE_SEGMENT_KIND B2S_SHAPE_KIND_CHAIN
+
+/* What the scene calls a v3.1 joint kind without a Box2Scene form (NULL for the kinds the
+ * capture writes). */
+static const char* b2s3_unwritten_joint(b2JointType type) {
+    switch (type) {
+    case b2_distanceJoint:
+    case b2_motorJoint:
+    case b2_prismaticJoint:
+    case b2_revoluteJoint:
+    case b2_weldJoint:
+    case b2_wheelJoint: return NULL;
+    case b2_mouseJoint: return "a mouse joint";
+    case b2_filterJoint: return "a filter joint";
+    default: return "a joint of a kind this adapter does not know";
+    }
+}
+
+/* A joint's anchors, and its axis and reference angle where its kind has them, read back
+ * as the joint holds them: as the build passed them, nothing to invert and nothing lost
+ * (returns 0, the count of losses written into `losses`). */
+static int b2s3_frames_of(b2JointId id, b2s_joint* joint, char losses[2][B2S3_LOSS_SIZE]) {
+    (void)losses;
+    b2Vec2 anchor_a = b2Joint_GetLocalAnchorA(id), anchor_b = b2Joint_GetLocalAnchorB(id);
+    joint->local_anchor_a.x = anchor_a.x;
+    joint->local_anchor_a.y = anchor_a.y;
+    joint->local_anchor_b.x = anchor_b.x;
+    joint->local_anchor_b.y = anchor_b.y;
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_PRISMATIC:
+    case B2S_JOINT_KIND_WHEEL:
+    case B2S_JOINT_KIND_LINE: {
+        b2Vec2 axis = b2Joint_GetLocalAxisA(id);
+        joint->local_axis_a.x = axis.x;
+        joint->local_axis_a.y = axis.y;
+        break;
+    }
+    default: break;
+    }
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_PRISMATIC:
+    case B2S_JOINT_KIND_REVOLUTE:
+    case B2S_JOINT_KIND_WELD: joint->reference_angle = b2Joint_GetReferenceAngle(id); break;
+    default: break;
+    }
+    return 0;
+}
+
+/* A motor joint read back as it holds its fields: Friction when it holds no offset and no
+ * CorrectionFactor (what the build makes of one), else Motor. Loses nothing (returns NULL,
+ * where a loss would be said). */
+static const char* b2s3_motor_of(b2JointId id, b2s_joint* joint) {
+    b2Vec2 offset = b2MotorJoint_GetLinearOffset(id);
+    float angular = b2MotorJoint_GetAngularOffset(id);
+    float correction = b2MotorJoint_GetCorrectionFactor(id);
+    bool friction = correction == 0.0f && offset.x == 0.0f && offset.y == 0.0f && angular == 0.0f;
+    b2s_joint_default(friction ? B2S_JOINT_KIND_FRICTION : B2S_JOINT_KIND_MOTOR, joint);
+    joint->linear_offset.x = offset.x;
+    joint->linear_offset.y = offset.y;
+    joint->angular_offset = angular;
+    joint->max_force = b2MotorJoint_GetMaxForce(id);
+    joint->max_torque = b2MotorJoint_GetMaxTorque(id);
+    joint->correction_factor = correction;
+    return NULL;
 }
 
 #endif /* BOX2SCENE_BOX2D3_V31_H */

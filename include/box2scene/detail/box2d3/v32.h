@@ -3,7 +3,7 @@
  * Box2D v3.2, the one place where the adapter for v3.2 differs from one for another v3:
  * its public names, its constants, how a body takes its position and fixed rotation, how a
  * body's mass is summed, how chains are made and read back, how joints take their anchors,
- * axes and reference angles (local frames), and its motor joint.
+ * axes and reference angles (local frames) and give them back, and its motor joint.
  *
  * Only the part of the API that Box2D's 3.2 development snapshot (boxdd-sys 0.6.0), its
  * upstream of August 2026 and the 3.2.0 release share is used: no b2ChainDef, no
@@ -50,6 +50,10 @@ static void b2s3_set_pose(b2BodyDef* def, b2Vec2 position, b2Rot rotation) {
 
 static b2Vec2 b2s3_body_position(b2BodyId body) {
     return b2ToVec2(b2Body_GetPosition(body));
+}
+
+static b2Vec2 b2s3_local_center(b2BodyId body) {
+    return b2Body_GetLocalCenter(body);
 }
 
 /* A fixed rotation is a motion lock; the snapshot keeps the inertia under it and later
@@ -309,55 +313,69 @@ static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
     return 1;
 }
 
-/* ---- capture */
+/* ---- capture: v3.2 holds local frames, which capture inverts, and loose chain segments,
+ * which it regroups */
 
-/* The frames of a joint, as the build set them: false when they do not have the build's
- * form (frame B turned for a kind whose frame B the build leaves unturned). */
-static bool b2s3_frames_of(b2JointId id, b2s3_frames* f, bool prismatic) {
-    b2Transform a = b2Joint_GetLocalFrameA(id), b = b2Joint_GetLocalFrameB(id);
-    f->anchor_a = a.p;
-    f->anchor_b = b.p;
-    f->axis.x = a.q.c;
-    f->axis.y = a.q.s;
-    f->reference_angle = 0.0f;
-    return prismatic || (b.q.c == 1.0f && b.q.s == 0.0f);
+/* capture.c's exact inverses and its test of consecutive chain segments, which the hooks
+ * below use. */
+static float b2s3_ulps_away(float x, int steps);
+static bool b2s3_search_ulps(float guess, bool (*gives)(float x, const float* wanted),
+                             const float* wanted, float* out);
+static bool b2s3_angle_of(b2Rot q, float* angle);
+static bool b2s3_continues(b2ChainSegment cur, b2ChainSegment next);
+
+/* Loose segments belong to no chain: consecutive ones that continue one another (the body's
+ * shapes sorted by id, as they were created) are one chain. `end`: the shapes before it
+ * belong to a chain already met. */
+typedef struct b2s3_chains {
+    int end;
+} b2s3_chains;
+
+static bool b2s3_chains_of(b2s3_chains* chains, const b2ShapeId* shapes, int count) {
+    (void)shapes;
+    (void)count;
+    chains->end = 0;
+    return true;
 }
 
-/* A motor joint read back: Friction when it drives no velocity and has no springs, frames
- * unturned (what the build makes of one); else the Motor the build approximates by it, its
- * offsets in frame A and its spring frequency in `*hertz`, for the caller to invert. False
- * when the joint does not have the form the build gives either. */
-static bool b2s3_motor_of(b2JointId id, b2s_joint* joint, bool* friction, float* hertz) {
-    b2Transform a = b2Joint_GetLocalFrameA(id), b = b2Joint_GetLocalFrameB(id);
-    b2Vec2 v = b2MotorJoint_GetLinearVelocity(id);
-    bool still = v.x == 0.0f && v.y == 0.0f && b2MotorJoint_GetAngularVelocity(id) == 0.0f;
-    bool unturned_b = b.q.c == 1.0f && b.q.s == 0.0f;
-    *friction = still && b2MotorJoint_GetMaxSpringForce(id) == 0.0f &&
-                b2MotorJoint_GetMaxSpringTorque(id) == 0.0f && a.q.c == 1.0f && a.q.s == 0.0f &&
-                unturned_b;
-    if (*friction) {
-        b2s_joint_default(B2S_JOINT_KIND_FRICTION, joint);
-        joint->local_anchor_a.x = a.p.x;
-        joint->local_anchor_a.y = a.p.y;
-        joint->local_anchor_b.x = b.p.x;
-        joint->local_anchor_b.y = b.p.y;
-        joint->max_force = b2MotorJoint_GetMaxVelocityForce(id);
-        joint->max_torque = b2MotorJoint_GetMaxVelocityTorque(id);
-        return true;
+static void b2s3_chains_free(b2s3_chains* chains) {
+    (void)chains;
+}
+
+/* How many chain segments from `first` on continue one another, up to the one that closes
+ * a loop (a loop built beside another of the same points must not run into it). */
+static int b2s3_segment_run(const b2ShapeId* shapes, int first, int count) {
+    int run = 1;
+    b2ChainSegment head = b2Shape_GetChainSegment(shapes[first]);
+    b2ChainSegment cur = head;
+    while (first + run < count && b2Shape_GetType(shapes[first + run]) == b2_chainSegmentShape &&
+           !(run >= 3 && b2s3_continues(cur, head))) {
+        b2ChainSegment next = b2Shape_GetChainSegment(shapes[first + run]);
+        if (!b2s3_continues(cur, next)) {
+            break;
+        }
+        cur = next;
+        run += 1;
     }
-    b2s_joint_default(B2S_JOINT_KIND_MOTOR, joint);
-    joint->linear_offset.x = a.p.x;
-    joint->linear_offset.y = a.p.y;
-    joint->max_force = b2MotorJoint_GetMaxSpringForce(id);
-    joint->max_torque = b2MotorJoint_GetMaxSpringTorque(id);
-    *hertz = b2MotorJoint_GetLinearHertz(id);
-    return still && unturned_b && b.p.x == 0.0f && b.p.y == 0.0f &&
-           b2MotorJoint_GetMaxVelocityForce(id) == 0.0f &&
-           b2MotorJoint_GetMaxVelocityTorque(id) == 0.0f &&
-           b2MotorJoint_GetAngularHertz(id) == *hertz &&
-           b2MotorJoint_GetLinearDampingRatio(id) == 1.0f &&
-           b2MotorJoint_GetAngularDampingRatio(id) == 1.0f;
+    return run;
 }
+
+/* The segments of the chain that starts at `shapes[i]` (a chain segment), the run of those
+ * that continue it; 0 when `shapes[i]` lies inside a chain already met. */
+static int b2s3_chain_at(b2s3_chains* chains, const b2ShapeId* shapes, int i, int count,
+                         const b2ShapeId** segments) {
+    if (i < chains->end) {
+        return 0;
+    }
+    int run = b2s3_segment_run(shapes, i, count);
+    chains->end = i + run;
+    *segments = shapes + i;
+    return run;
+}
+
+/* One loose segment was made of an edge with ghost vertices or of a chain of two vertices:
+ * written as the edge. */
+#define B2S3_LONE_SEGMENT_KIND B2S_SHAPE_KIND_EDGE
 
 /* What the scene calls a v3.2 joint kind without a Box2Scene form (NULL for the kinds the
  * capture writes). Kinds are compared by name: their numbers moved between 3.2 sources. */
@@ -372,6 +390,145 @@ static const char* b2s3_unwritten_joint(b2JointType type) {
     case b2_filterJoint: return "a filter joint";
     default: return "a joint of a kind this adapter does not know";
     }
+}
+
+/* wanted: an axis rotation (c, s), then the rotation of frame B the build makes of it. */
+static bool b2s3_prismatic_reference_of(float angle, const float* wanted) {
+    b2Rot axis = {wanted[0], wanted[1]};
+    b2Rot q = b2InvMulRot(b2s3_rotation(angle), axis);
+    return q.c == wanted[2] && q.s == wanted[3];
+}
+
+/* The axis whose normalisation in the build gives frame A's x axis `unit` bit for bit: the
+ * axis itself, or one a few ulps from it (a unit vector is not always its own
+ * normalisation). False, with `unit` written, when none is. */
+static bool b2s3_axis_of(b2Vec2 unit, b2s_joint* joint) {
+    for (int k = 0; k <= 8; ++k) {
+        for (int dx = -k; dx <= k; ++dx) {
+            for (int dy = -k; dy <= k; ++dy) {
+                if (abs(dx) != k && abs(dy) != k) {
+                    continue; /* the ring at distance k only */
+                }
+                b2Vec2 axis = {b2s3_ulps_away(unit.x, dx), b2s3_ulps_away(unit.y, dy)};
+                b2Vec2 normalised = b2Normalize(axis);
+                if (normalised.x == unit.x && normalised.y == unit.y) {
+                    joint->local_axis_a.x = axis.x;
+                    joint->local_axis_a.y = axis.y;
+                    return true;
+                }
+            }
+        }
+    }
+    joint->local_axis_a.x = unit.x;
+    joint->local_axis_a.y = unit.y;
+    return false;
+}
+
+/* A joint's anchors, and its axis and reference angle where its kind has them, from its
+ * frames as the build sets them (frame A carries the axis or the reference angle, frame B
+ * is unturned but for a prismatic joint's), inverted exactly. What has no exact inverse, or
+ * is not of the build's form, is written into `losses` as the nearest; returns their count. */
+static int b2s3_frames_of(b2JointId id, b2s_joint* joint, char losses[2][B2S3_LOSS_SIZE]) {
+    b2Transform a = b2Joint_GetLocalFrameA(id), b = b2Joint_GetLocalFrameB(id);
+    int count = 0;
+    if (joint->kind != B2S_JOINT_KIND_PRISMATIC && !(b.q.c == 1.0f && b.q.s == 0.0f)) {
+        snprintf(losses[count++], B2S3_LOSS_SIZE, "%s",
+                 "a turn of its frame B has no Box2Scene form; written without it");
+    }
+    joint->local_anchor_a.x = a.p.x;
+    joint->local_anchor_a.y = a.p.y;
+    joint->local_anchor_b.x = b.p.x;
+    joint->local_anchor_b.y = b.p.y;
+    b2Vec2 unit = {a.q.c, a.q.s};
+    switch (joint->kind) {
+    case B2S_JOINT_KIND_REVOLUTE:
+    case B2S_JOINT_KIND_WELD:
+        if (!b2s3_angle_of(a.q, &joint->reference_angle)) {
+            snprintf(losses[count++], B2S3_LOSS_SIZE,
+                     "no angle has exactly the rotation of its frame A; the nearest, %.9g rad, "
+                     "was written as ReferenceAngle",
+                     (double)joint->reference_angle);
+        }
+        break;
+    case B2S_JOINT_KIND_PRISMATIC: {
+        if (!b2s3_axis_of(unit, joint)) {
+            snprintf(losses[count++], B2S3_LOSS_SIZE,
+                     "no axis near (%.9g, %.9g) normalises to it exactly; it was written",
+                     (double)unit.x, (double)unit.y);
+        }
+        float wanted[4] = {a.q.c, a.q.s, b.q.c, b.q.s};
+        float guess = atan2f(a.q.s, a.q.c) - atan2f(b.q.s, b.q.c);
+        if (!b2s3_search_ulps(guess, b2s3_prismatic_reference_of, wanted,
+                              &joint->reference_angle)) {
+            snprintf(losses[count++], B2S3_LOSS_SIZE,
+                     "no reference angle gives exactly the rotation of its frame B; the "
+                     "nearest, %.9g rad, was written",
+                     (double)joint->reference_angle);
+        }
+        break;
+    }
+    case B2S_JOINT_KIND_WHEEL:
+    case B2S_JOINT_KIND_LINE:
+        if (!b2s3_axis_of(unit, joint)) {
+            snprintf(losses[count++], B2S3_LOSS_SIZE,
+                     "no axis near (%.9g, %.9g) normalises to it exactly; it was written",
+                     (double)unit.x, (double)unit.y);
+        }
+        break;
+    default: break;
+    }
+    return count;
+}
+
+/* wanted: the spring frequency the build makes of a CorrectionFactor. */
+static bool b2s3_motor_hertz_of(float correction_factor, const float* wanted) {
+    return b2s3_motor_hertz(correction_factor) == wanted[0];
+}
+
+/* A motor joint read back: Friction when it drives no velocity and has no springs, frames
+ * unturned (what the build makes of one); else the Motor the build approximates by it, its
+ * offsets from frame A and its CorrectionFactor from its spring frequency, inverted
+ * exactly. One that has neither form is read as the nearest Motor: returns what the report
+ * says of it, else NULL. */
+static const char* b2s3_motor_of(b2JointId id, b2s_joint* joint) {
+    b2Transform a = b2Joint_GetLocalFrameA(id), b = b2Joint_GetLocalFrameB(id);
+    b2Vec2 v = b2MotorJoint_GetLinearVelocity(id);
+    bool still = v.x == 0.0f && v.y == 0.0f && b2MotorJoint_GetAngularVelocity(id) == 0.0f;
+    bool unturned_b = b.q.c == 1.0f && b.q.s == 0.0f;
+    bool friction = still && b2MotorJoint_GetMaxSpringForce(id) == 0.0f &&
+                    b2MotorJoint_GetMaxSpringTorque(id) == 0.0f && a.q.c == 1.0f &&
+                    a.q.s == 0.0f && unturned_b;
+    if (friction) {
+        b2s_joint_default(B2S_JOINT_KIND_FRICTION, joint);
+        joint->local_anchor_a.x = a.p.x;
+        joint->local_anchor_a.y = a.p.y;
+        joint->local_anchor_b.x = b.p.x;
+        joint->local_anchor_b.y = b.p.y;
+        joint->max_force = b2MotorJoint_GetMaxVelocityForce(id);
+        joint->max_torque = b2MotorJoint_GetMaxVelocityTorque(id);
+        return NULL;
+    }
+    b2s_joint_default(B2S_JOINT_KIND_MOTOR, joint);
+    joint->linear_offset.x = a.p.x;
+    joint->linear_offset.y = a.p.y;
+    joint->max_force = b2MotorJoint_GetMaxSpringForce(id);
+    joint->max_torque = b2MotorJoint_GetMaxSpringTorque(id);
+    float hertz = b2MotorJoint_GetLinearHertz(id);
+    bool exact = still && unturned_b && b.p.x == 0.0f && b.p.y == 0.0f &&
+                 b2MotorJoint_GetMaxVelocityForce(id) == 0.0f &&
+                 b2MotorJoint_GetMaxVelocityTorque(id) == 0.0f &&
+                 b2MotorJoint_GetAngularHertz(id) == hertz &&
+                 b2MotorJoint_GetLinearDampingRatio(id) == 1.0f &&
+                 b2MotorJoint_GetAngularDampingRatio(id) == 1.0f;
+    float wanted[1] = {hertz};
+    exact = b2s3_search_ulps(hertz * B2S3_TWO_PI / B2S3_MOTOR_STEP_RATE, b2s3_motor_hertz_of,
+                             wanted, &joint->correction_factor) &&
+            exact;
+    exact = b2s3_angle_of(a.q, &joint->angular_offset) && exact;
+    return exact ? NULL
+                 : "a motor joint other than the build makes of a Motor joint: written as the "
+                   "nearest, from the offsets of its frame A, its spring limits and a "
+                   "CorrectionFactor from its linear spring's frequency";
 }
 
 #endif /* BOX2SCENE_BOX2D3_V32_H */

@@ -1,10 +1,12 @@
 /*
  * Capture against real Box2D v3: a world built from a scene, captured, written, loaded and
  * built again evolves bit for bit like the first over 600 steps, for every scene file of the
- * project; and what the format cannot hold (capsules, mouse and filter joints, bits above 16,
- * joints to bodies not named) is reported by code.
+ * project; and what the format cannot hold (capsules, mouse and filter joints, filter bits
+ * above the format's, joints to bodies not named) is reported by code. Compiled once per v3
+ * adapter (V3_SUPPORT names its support header) as box2d3_roundtrip_test and
+ * box2d32_roundtrip_test.
  */
-#include "box2d3_support.h"
+#include V3_SUPPORT
 
 #define STEPS 600
 
@@ -14,7 +16,7 @@ static bool same_bits(const void* a, const void* b, size_t size) {
 
 /* The scene captured from `world` (every body built from the scene, in order), written and
  * loaded back; NULL on failure (printed). */
-static b2s_scene* captured_and_reloaded(const v3_world* world, b2s_box2d3_reports* reports) {
+static b2s_scene* captured_and_reloaded(const v3_world* world, v3_reports* reports) {
     b2BodyId* bodies = (b2BodyId*)malloc((world->built->body_count + 1) * sizeof(b2BodyId));
     uint32_t count = 0;
     for (uint32_t i = 0; i < world->built->body_count; ++i) {
@@ -25,7 +27,7 @@ static b2s_scene* captured_and_reloaded(const v3_world* world, b2s_box2d3_report
     b2s_scene* captured = NULL;
     b2s_error error;
     b2s_code code =
-        b2s_box2d3_capture_world(world->id, bodies, count, &captured, reports, &error);
+        V3_ADAPTER(capture_world)(world->id, bodies, count, &captured, reports, &error);
     free(bodies);
     if (code != B2S_CODE_OK) {
         fprintf(stderr, "capture failed: %s: %s\n", b2s_code_name(code), error.message);
@@ -74,7 +76,7 @@ static int round_trip(const char* path, const b2s_scene* scene, void* unused) {
     (void)unused;
     v3_world first = build_v3(scene);
     ENSURE(first.built != NULL);
-    b2s_box2d3_reports reports;
+    v3_reports reports;
     b2s_scene* reloaded = captured_and_reloaded(&first, &reports);
     ENSURE(reloaded != NULL);
     /* a world built from a scene has nothing the format cannot hold */
@@ -83,7 +85,7 @@ static int round_trip(const char* path, const b2s_scene* scene, void* unused) {
         print_reports(&reports);
     }
     ENSURE_EQ(reports.count, 0);
-    b2s_box2d3_reports_free(&reports);
+    V3_ADAPTER(reports_free)(&reports);
 
     v3_world second = build_v3(reloaded);
     ENSURE(second.built != NULL);
@@ -113,13 +115,99 @@ static int every_scene_file_round_trips_bit_for_bit(void) {
     return failed;
 }
 
+#if V3_MINOR >= 2
+/* The forms that are v3.2's own round-trip too, with nothing reported and the same shapes
+ * and joints read back: two loops of the same points side by side on one body (each closes
+ * before the other begins), a 3-vertex loop, a sensor chain, an edge with ghosts, a
+ * prismatic joint with a reference angle on a skew axis, a friction joint off the origins
+ * and a motor joint (read back as the Motor it was built from). v3.1 splits a 3-vertex
+ * loop's edge, makes a sensor chain solid and acts at the body origins for friction. */
+static int v32_forms_round_trip(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes>"
+        "<Shape Type='Loop'><Vertices><Vertex>-5 0</Vertex><Vertex>5 0</Vertex>"
+        "<Vertex>5 10</Vertex><Vertex>-5 10</Vertex></Vertices></Shape>"
+        "<Shape Type='Loop'><Vertices><Vertex>0 -3</Vertex><Vertex>4 0</Vertex>"
+        "<Vertex>-4 0</Vertex></Vertices></Shape>"
+        "<Shape Type='Chain'><Vertices><Vertex>-3 5</Vertex><Vertex>0 4</Vertex>"
+        "<Vertex>3 5</Vertex></Vertices><PrevVertex>-4 6</PrevVertex><NextVertex>4 6"
+        "</NextVertex><HasPrevVertex>true</HasPrevVertex><HasNextVertex>true</HasNextVertex>"
+        "</Shape>"
+        "<Shape Type='Edge'><Vertex1>-2 2</Vertex1><Vertex2>2 2</Vertex2><Vertex0>-3 2"
+        "</Vertex0><Vertex3>3 2</Vertex3><HasVertex0>true</HasVertex0><HasVertex3>true"
+        "</HasVertex3></Shape>"
+        "<Shape Type='Circle'><Radius>0.25</Radius><Position>0 0</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture>"
+        "<Fixture><Shape>2</Shape><IsSensor>true</IsSensor></Fixture>"
+        "<Fixture><Shape>3</Shape></Fixture>"
+        "<Fixture><Shape>4</Shape><Density>1</Density></Fixture></Fixtures><Bodies>"
+        "<Body Type='Static'><Fixtures><ID>0</ID><ID>0</ID><ID>1</ID><ID>2</ID><ID>3</ID>"
+        "</Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>1 8</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>-1 8</Position><Angle>0.4</Angle><Fixtures><ID>4</ID>"
+        "</Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>2 6</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>-2 6</Position><Fixtures><ID>4</ID></Fixtures></Body>"
+        "</Bodies><Joints>"
+        "<Joint Type='Prismatic'><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>1 8"
+        "</LocalAnchorA><LocalAxisA>2 1</LocalAxisA><ReferenceAngle>0.3</ReferenceAngle>"
+        "<EnableLimit>true</EnableLimit><LowerTranslation>-1</LowerTranslation>"
+        "<UpperTranslation>1</UpperTranslation></Joint>"
+        "<Joint Type='Friction'><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>-1 8"
+        "</LocalAnchorA><LocalAnchorB>0.1 0.1</LocalAnchorB><MaxForce>2</MaxForce>"
+        "<MaxTorque>1</MaxTorque></Joint>"
+        "<Joint Type='Motor'><BodyA>0</BodyA><BodyB>3</BodyB><LinearOffset>2 6.5"
+        "</LinearOffset><AngularOffset>0.7</AngularOffset><MaxForce>30</MaxForce>"
+        "<MaxTorque>5</MaxTorque><CorrectionFactor>0.37</CorrectionFactor></Joint>"
+        "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>4</BodyB><LocalAnchorA>-2 7"
+        "</LocalAnchorA><LocalAnchorB>0 1</LocalAnchorB><ReferenceAngle>-2.5</ReferenceAngle>"
+        "</Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    ENSURE_EQ(round_trip("inline v3.2 forms", scene, NULL), 0);
+    /* and what came back is what went in */
+    v3_world world = build_v3(scene);
+    v3_reports reports;
+    b2s_scene* reloaded = captured_and_reloaded(&world, &reports);
+    ENSURE(reloaded != NULL);
+    const struct b2s_scene_view* view = b2s_scene_get_view(reloaded);
+    ENSURE_EQ(view->bodies[0].fixtures.count, 5);
+    uint32_t kinds[5], counts[5];
+    for (uint32_t k = 0; k < 5; ++k) {
+        uint32_t fixture = view->fixture_ids[view->bodies[0].fixtures.first + k];
+        const b2s_shape* shape = &view->shapes[view->fixtures[fixture].shape];
+        kinds[k] = shape->kind;
+        counts[k] = shape->vertices.count;
+    }
+    ENSURE(kinds[0] == B2S_SHAPE_KIND_CHAIN && counts[0] == 4);
+    ENSURE(kinds[1] == B2S_SHAPE_KIND_CHAIN && counts[1] == 4);
+    ENSURE(kinds[2] == B2S_SHAPE_KIND_CHAIN && counts[2] == 3);
+    ENSURE(kinds[3] == B2S_SHAPE_KIND_CHAIN && counts[3] == 3);
+    ENSURE(kinds[4] == B2S_SHAPE_KIND_EDGE && counts[4] == 2);
+    ENSURE(view->fixtures[view->fixture_ids[view->bodies[0].fixtures.first + 3]].is_sensor);
+    ENSURE_EQ(view->joint_count, 4);
+    ENSURE_EQ(view->joints[0].kind, B2S_JOINT_KIND_PRISMATIC);
+    ENSURE_NEAR(view->joints[0].reference_angle, 0.3, 1e-6);
+    ENSURE_EQ(view->joints[1].kind, B2S_JOINT_KIND_FRICTION);
+    ENSURE_FLOAT(view->joints[1].local_anchor_b.x, 0.1f);
+    ENSURE_EQ(view->joints[2].kind, B2S_JOINT_KIND_MOTOR);
+    ENSURE_FLOAT(view->joints[2].correction_factor, 0.37f);
+    ENSURE_FLOAT(view->joints[2].angular_offset, 0.7f);
+    ENSURE_FLOAT(view->joints[3].reference_angle, -2.5f);
+    V3_ADAPTER(reports_free)(&reports);
+    b2s_scene_free(reloaded);
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+#endif
+
 /* ---- what a host's own world holds that the format cannot */
 
 static b2s_scene* capture(b2WorldId world, const b2BodyId* bodies, uint32_t count,
-                          b2s_box2d3_reports* reports) {
+                          v3_reports* reports) {
     b2s_scene* scene = NULL;
     b2s_error error;
-    b2s_code code = b2s_box2d3_capture_world(world, bodies, count, &scene, reports, &error);
+    b2s_code code = V3_ADAPTER(capture_world)(world, bodies, count, &scene, reports, &error);
     if (code != B2S_CODE_OK) {
         fprintf(stderr, "capture failed: %s\n", error.message);
     }
@@ -133,53 +221,54 @@ static int what_the_format_cannot_hold_is_reported(void) {
     body_def.type = b2_dynamicBody;
     b2BodyId bodies[3];
     for (int i = 0; i < 3; ++i) {
-        body_def.position = (b2Vec2){(float)i * 3.0f, 0.0f};
+        body_def.position = v3_pos((b2Vec2){(float)i * 3.0f, 0.0f});
         bodies[i] = b2CreateBody(world, &body_def);
     }
     b2ShapeDef shape_def = b2DefaultShapeDef();
     b2Capsule capsule = {{-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f};
     b2CreateCapsuleShape(bodies[0], &shape_def, &capsule);
     b2Circle circle = {{0.0f, 0.0f}, 0.5f};
-    shape_def.filter.categoryBits = 0x100000000ull; /* above the format's 32 bits */
+    /* the bit just above the format's (the width of b2s_filter's fields) */
+    const unsigned bits = 8u * (unsigned)sizeof(((b2s_filter*)0)->category_bits);
+    shape_def.filter.categoryBits = UINT64_C(1) << bits;
     b2CreateCircleShape(bodies[1], &shape_def, &circle);
     shape_def.filter = b2DefaultFilter(); /* mask UINT64_MAX: "all", held exactly */
     b2CreateCircleShape(bodies[2], &shape_def, &circle);
 
-    b2MouseJointDef mouse = b2DefaultMouseJointDef();
-    mouse.bodyIdA = bodies[0];
-    mouse.bodyIdB = bodies[1];
-    b2CreateMouseJoint(world, &mouse);
+    v3_joint_without_form(world, bodies[0], bodies[1]); /* a mouse joint in v3.1 */
     b2FilterJointDef filter = b2DefaultFilterJointDef();
-    filter.bodyIdA = bodies[1];
-    filter.bodyIdB = bodies[2];
+    V3_JOINT_BASE(filter).bodyIdA = bodies[1];
+    V3_JOINT_BASE(filter).bodyIdB = bodies[2];
     b2CreateFilterJoint(world, &filter);
     b2RevoluteJointDef hinge = b2DefaultRevoluteJointDef();
-    hinge.bodyIdA = bodies[0];
-    hinge.bodyIdB = bodies[2];
+    V3_JOINT_BASE(hinge).bodyIdA = bodies[0];
+    V3_JOINT_BASE(hinge).bodyIdB = bodies[2];
     b2CreateRevoluteJoint(world, &hinge);
     b2WeldJointDef weld = b2DefaultWeldJointDef();
-    weld.bodyIdA = bodies[1];
-    weld.bodyIdB = bodies[2];
+    V3_JOINT_BASE(weld).bodyIdA = bodies[1];
+    V3_JOINT_BASE(weld).bodyIdB = bodies[2];
     b2CreateWeldJoint(world, &weld);
 
     /* Only bodies 1 and 2 are named: the hinge reaches body 0, which is not. */
-    b2s_box2d3_reports reports;
+    v3_reports reports;
     b2s_scene* scene = capture(world, bodies + 1, 2, &reports);
     ENSURE(scene != NULL);
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     ENSURE_EQ(view->body_count, 2);
     ENSURE_EQ(view->fixture_count, 2);
-    ENSURE_EQ(view->fixtures[0].filter.category_bits, 0); /* the low 32 bits of 2^32 */
-    ENSURE_EQ(view->fixtures[1].filter.mask_bits, 0xFFFFFFFFu);
+    ENSURE_EQ(view->fixtures[0].filter.category_bits, 0); /* its low bits */
+    ENSURE_EQ((uint64_t)view->fixtures[1].filter.mask_bits, UINT64_MAX >> (64u - bits));
     ENSURE_EQ(view->joint_count, 1); /* the weld */
     ENSURE_EQ(view->joints[0].kind, B2S_JOINT_KIND_WELD);
     ENSURE_EQ(count_reports(&reports, B2S_CODE_LOSSY_CAPTURE, "fixture", 0), 1);
-    /* the filter bits, the joints to body 0 (hinge, mouse) and the filter joint */
+    /* the filter bits, the joints to body 0 (the one without a form, the hinge) and the
+     * filter joint */
     ENSURE_EQ(count_reports(&reports, B2S_CODE_LOSSY_CAPTURE, NULL, 0), 4);
-    b2s_box2d3_reports_free(&reports);
+    V3_ADAPTER(reports_free)(&reports);
     b2s_scene_free(scene);
 
-    /* All three: the capsule, the mouse joint and the filter joint are not written. */
+    /* All three: the capsule, the joint without a form and the filter joint are not
+     * written. */
     scene = capture(world, bodies, 3, &reports);
     ENSURE(scene != NULL);
     view = b2s_scene_get_view(scene);
@@ -192,7 +281,7 @@ static int what_the_format_cannot_hold_is_reported(void) {
     ENSURE_EQ(count_reports(&reports, B2S_CODE_LOSSY_CAPTURE, "shape", 0), 1);
     ENSURE_EQ(count_reports(&reports, B2S_CODE_LOSSY_CAPTURE, "joint", 0), 2);
     ENSURE_EQ(reports.count, 4); /* and the category bits */
-    b2s_box2d3_reports_free(&reports);
+    V3_ADAPTER(reports_free)(&reports);
     b2s_scene_free(scene);
     b2DestroyWorld(world);
     return 0;
@@ -205,17 +294,17 @@ static int capture_refuses_bodies_it_cannot_name(void) {
     b2BodyDef body_def = b2DefaultBodyDef();
     b2BodyId bodies[2] = {b2CreateBody(world, &body_def), b2CreateBody(other, &body_def)};
     b2s_scene* scene = (b2s_scene*)1;
-    b2s_box2d3_reports reports;
+    v3_reports reports;
     b2s_error error;
-    ENSURE_EQ(b2s_box2d3_capture_world(world, bodies, 2, &scene, &reports, &error),
+    ENSURE_EQ(V3_ADAPTER(capture_world)(world, bodies, 2, &scene, &reports, &error),
               B2S_CODE_INVALID_ARGUMENT);
     ENSURE(scene == NULL);
     ENSURE_EQ(error.code, B2S_CODE_INVALID_ARGUMENT);
     ENSURE(strstr(error.message, "body 1") != NULL);
     b2BodyId twice[2] = {bodies[0], bodies[0]};
-    ENSURE_EQ(b2s_box2d3_capture_world(world, twice, 2, &scene, &reports, &error),
+    ENSURE_EQ(V3_ADAPTER(capture_world)(world, twice, 2, &scene, &reports, &error),
               B2S_CODE_INVALID_ARGUMENT);
-    ENSURE_EQ(b2s_box2d3_capture_world(world, NULL, 1, &scene, &reports, &error),
+    ENSURE_EQ(V3_ADAPTER(capture_world)(world, NULL, 1, &scene, &reports, &error),
               B2S_CODE_NULL_ARGUMENT);
     b2DestroyWorld(other);
     b2DestroyWorld(world);
@@ -226,10 +315,10 @@ static int capture_refuses_bodies_it_cannot_name(void) {
 static const char* refusal(b2WorldId world, const b2BodyId* bodies, uint32_t count,
                            b2s_error* error) {
     b2s_scene* scene = NULL;
-    b2s_box2d3_reports reports;
-    if (b2s_box2d3_capture_world(world, bodies, count, &scene, &reports, error) !=
+    v3_reports reports;
+    if (V3_ADAPTER(capture_world)(world, bodies, count, &scene, &reports, error) !=
         B2S_CODE_INVALID_ARGUMENT) {
-        b2s_box2d3_reports_free(&reports);
+        V3_ADAPTER(reports_free)(&reports);
         b2s_scene_free(scene);
         return "";
     }
@@ -273,7 +362,7 @@ static int mass_data_and_rotation_survive_capture(void) {
         "<Fixtures><ID>0</ID></Fixtures></Body></Bodies><Joints/></World>");
     ENSURE(scene != NULL);
     v3_world world = build_v3(scene);
-    b2s_box2d3_reports reports;
+    v3_reports reports;
     b2s_scene* reloaded = captured_and_reloaded(&world, &reports);
     ENSURE(reloaded != NULL);
     ENSURE_EQ(reports.count, 0);
@@ -287,7 +376,7 @@ static int mass_data_and_rotation_survive_capture(void) {
     ENSURE_FLOAT(body->mass_data.center.x, 0.25f);
     ENSURE_FLOAT(body->mass_data.center.y, 0.125f);
     ENSURE_FLOAT(body->mass_data.inertia, 9.0f);
-    b2s_box2d3_reports_free(&reports);
+    V3_ADAPTER(reports_free)(&reports);
     b2s_scene_free(reloaded);
     free_v3(&world);
     b2s_scene_free(scene);
@@ -297,6 +386,9 @@ static int mass_data_and_rotation_survive_capture(void) {
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(every_scene_file_round_trips_bit_for_bit);
+#if V3_MINOR >= 2
+    failed += RUN_TEST(v32_forms_round_trip);
+#endif
     failed += RUN_TEST(what_the_format_cannot_hold_is_reported);
     failed += RUN_TEST(capture_refuses_bodies_it_cannot_name);
     failed += RUN_TEST(capture_names_the_first_body_it_refuses);

@@ -3,17 +3,18 @@
  * assertions on): each body, shape and joint v3 can represent is created, the rest is
  * reported, the world stays finite over 600 steps; and every body's mass, centre and
  * inertia equal what a body built by hand with v3's own API gets (for a MassData override:
- * the file's values moved to v3's convention, inertia about the centre of mass).
+ * the file's values moved to v3's convention, inertia about the centre of mass). Compiled
+ * once per v3 adapter (V3_SUPPORT names its support header) as box2d3_scenes_test and
+ * box2d32_scenes_test.
  */
-#include "box2d32_support.h"
+#include V3_SUPPORT
 
-static bool created_shape(const b2s_box2d32_built* built, uint32_t slot) {
-    return !B2_IS_NULL(built->shapes[slot]);
+static bool created_shape(const v3_built* built, uint32_t slot) {
+    return !B2_IS_NULL(built->shapes[slot]) || v3_chain_segments(built, slot, NULL, 0) > 0;
 }
 
 /* Whether a report names `object` `index`, with one of the codes that mean "not created". */
-static bool reported_missing(const b2s_box2d32_reports* reports, const char* object,
-                             uint32_t index) {
+static bool reported_missing(const v3_reports* reports, const char* object, uint32_t index) {
     static const b2s_code not_created[] = {
         B2S_CODE_SKIPPED_JOINT,      B2S_CODE_SKIPPED_DEPENDENT,  B2S_CODE_BEYOND_BOX2D_RANGE,
         B2S_CODE_JOINT_SELF_REFERENCE, B2S_CODE_DEGENERATE_POLYGON, B2S_CODE_DEGENERATE_EDGE,
@@ -31,7 +32,7 @@ static int build_and_step(const char* path, const b2s_scene* scene, void* unused
     const struct b2s_scene_view* view = b2s_scene_get_view(scene);
     v3_world world = build_v3(scene);
     ENSURE(world.built != NULL);
-    const b2s_box2d32_built* built = world.built;
+    const v3_built* built = world.built;
     ENSURE_EQ(built->body_count, view->body_count);
     ENSURE_EQ(built->fixture_count, view->fixture_id_count);
     ENSURE_EQ(built->joint_count, view->joint_count);
@@ -148,7 +149,7 @@ static int masses_match_hand_built_bodies(const char* path, const b2s_scene* sce
         }
         b2BodyDef body_def = b2DefaultBodyDef();
         body_def.type = b2_dynamicBody;
-        body_def.motionLocks.angularZ = body->fixed_rotation;
+        v3_lock_rotation(&body_def, body->fixed_rotation);
         b2BodyId hand = b2CreateBody(by_hand, &body_def);
         for (uint32_t k = 0; k < body->fixtures.count; ++k) {
             uint32_t slot = body->fixtures.first + k;
