@@ -87,7 +87,8 @@ check_layout() {
     "$LIBDIR/libbox2scene.a" "$LIBDIR/libbox2scene.so.$VERSION" \
     "$LIBDIR/cmake/box2scene/box2sceneConfig.cmake" \
     "$LIBDIR/cmake/box2scene/box2sceneConfigVersion.cmake" \
-    "$LIBDIR/pkgconfig/box2scene.pc" share/doc/box2scene/LICENSE bin/box2scene; do
+    "$LIBDIR/pkgconfig/box2scene.pc" "$LIBDIR/pkgconfig/box2scene-static.pc" \
+    share/doc/box2scene/LICENSE bin/box2scene; do
     [ -f "$PREFIX/$file" ] && [ ! -L "$PREFIX/$file" ] || fail "no file $PREFIX/$file"
   done
   [ "$(readlink "$libdir/$soname")" = "libbox2scene.so.$VERSION" ] ||
@@ -218,6 +219,23 @@ check_pkg_config() {
   cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)
   expect_shared scene_info
   LD_LIBRARY_PATH=$libdir expect_output "$c_output" ./scene_info ../scene.xml
+}
+
+# box2scene-static.pc links the archive itself, though the shared library lies beside it.
+check_pkg_config_static() {
+  local libs
+  export PKG_CONFIG_LIBDIR=$libdir/pkgconfig PKG_CONFIG_PATH=
+  [ "$(pkg-config --modversion box2scene-static)" = "$VERSION" ] ||
+    fail "pkg-config: wrong version of box2scene-static"
+  [ -e "$libdir/libbox2scene.so" ] || fail "no shared library beside the static one"
+  libs=$(rust_native_libs)
+  pkg-config --libs box2scene-static | grep -qF -- "libbox2scene.a $libs" ||
+    fail "box2scene-static.pc does not link the archive and $libs"
+  cd "$work/src/c"
+  cc -o scene_info main.c $(pkg-config --cflags --libs box2scene-static)
+  expect_static scene_info
+  expect_output "$c_output" ./scene_info ../scene.xml
+  echo "links $(pkg-config --libs box2scene-static)"
 }
 
 check_subdirectory() {
