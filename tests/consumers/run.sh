@@ -251,6 +251,23 @@ check_subdirectory() {
   expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
 }
 
+# FetchContent clones this source tree's repository at its HEAD, as a host clones a release.
+check_fetchcontent() {
+  local head
+  head=$(git -C "$BOX2SCENE_SOURCE_DIR" rev-parse HEAD) || fail "the source tree is no git repository"
+  if ! "$CMAKE" -S "$work/src/fetchcontent" -B "$work/build" \
+      -DBOX2SCENE_GIT_REPOSITORY="file://$BOX2SCENE_SOURCE_DIR" -DBOX2SCENE_GIT_TAG="$head" \
+      -DBOX2SCENE_CARGO_TARGET_DIR="$work/cargo" >"$work/log" 2>&1 ||
+    ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
+    cat "$work/log" >&2
+    fail "the FetchContent consumer did not build"
+  fi
+  [ ! -e "$work/build/_deps/box2scene-build/c_tests" ] || fail "box2scene's tests were built"
+  expect_shared "$work/build/scene_info"
+  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+  echo "built box2scene $head through FetchContent"
+}
+
 # The README and docs/install.md show these files as they are.
 check_readme() {
   local readme install file
@@ -260,10 +277,12 @@ check_readme() {
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
   for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt \
-    box2d32/CMakeLists.txt; do
+    box2d32/CMakeLists.txt fetchcontent/CMakeLists.txt; do
     [[ $install == *"$(cat "$here/$file")"* ]] ||
       fail "docs/install.md does not show $file as it is"
   done
+  [[ $install == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene-static)'* ]] ||
+    fail "docs/install.md does not show the static pkg-config command line"
   for text in "$readme" "$install"; do
     [[ $text == *'cc -o scene_info main.c $(pkg-config --cflags --libs box2scene)'* ]] ||
       fail "README.md or docs/install.md does not show the pkg-config command line"
