@@ -195,6 +195,25 @@ check_c_box2d3() {
     "$work/build/fall_v3" "$work/src/scene.xml"
 }
 
+# The same host with Box2D v3.1 built and installed by Box2D's own CMake, found with
+# find_package(box2d 3.1) as box2d::box2d, whose export does not link the maths library
+# the adapter needs.
+check_box2d3_package() {
+  : "${BOX2D3_INCLUDE_DIR:?}"
+  local box2d=$work/box2d-prefix
+  if ! "$CMAKE" -S "$work/src/box2d3_package/box2d" -B "$work/box2d-build" \
+      -DBOX2D_SOURCE_DIR="$BOX2D3_INCLUDE_DIR/.." -DCMAKE_BUILD_TYPE=Release >"$work/log" 2>&1 ||
+    ! "$CMAKE" --build "$work/box2d-build" -j2 >>"$work/log" 2>&1 ||
+    ! "$CMAKE" --install "$work/box2d-build" --prefix "$box2d" >>"$work/log" 2>&1; then
+    cat "$work/log" >&2
+    fail "Box2D v3.1 did not build and install with its own CMake"
+  fi
+  [ -f "$box2d/lib/cmake/box2d/box2dConfig.cmake" ] || fail "Box2D installed no box2dConfig.cmake"
+  build_consumer box2d3_package -DCMAKE_PREFIX_PATH="$PREFIX;$box2d"
+  expect_output "2 bodies; after 1 s the ball is at (0.000, 4.979)" \
+    "$work/build/fall_v3" "$work/src/scene.xml"
+}
+
 # The same with Box2D v3.2 (BOX2D32_INCLUDE_DIR, BOX2D32_LIBRARY) and box2scene::box2d32.
 check_c_box2d32() {
   : "${BOX2D32_INCLUDE_DIR:?}" "${BOX2D32_LIBRARY:?}"
@@ -277,7 +296,7 @@ check_readme() {
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
   for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt \
-    box2d32/CMakeLists.txt fetchcontent/CMakeLists.txt; do
+    box2d32/CMakeLists.txt fetchcontent/CMakeLists.txt box2d3_package/CMakeLists.txt; do
     [[ $install == *"$(cat "$here/$file")"* ]] ||
       fail "docs/install.md does not show $file as it is"
   done
