@@ -31,16 +31,19 @@ fn expect_error(marked: &str, code: Code) -> String {
     expect_error_with(marked, code, &LoadOptions::default())
 }
 
+/// The warnings `xml` loads with: code, line, column and message.
+fn warnings_of(xml: &str) -> Vec<(Code, u32, u32, String)> {
+    let scene = load(xml.as_bytes(), &LoadOptions::default()).expect("a warning is no failure");
+    let found = scene.diagnostics().iter().map(|d| {
+        let message = scene.text(d.message).unwrap().to_string();
+        (Code::from_u32(d.code).unwrap(), d.line, d.column, message)
+    });
+    found.collect()
+}
+
 fn expect_warning(marked: &str, code: Code) {
     let (xml, line, column) = unmark(marked);
-    let scene = load(xml.as_bytes(), &LoadOptions::default()).expect("a warning is no failure");
-    let found: Vec<_> = scene
-        .diagnostics()
-        .iter()
-        .map(|d| {
-            (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap())
-        })
-        .collect();
+    let found = warnings_of(&xml);
     assert!(
         found.iter().any(|&(c, l, col, _)| (c, l, col) == (code, line, column)),
         "expected {code} at {line}:{column}, found {found:?}"
@@ -1056,16 +1059,9 @@ fn a_shape_named_twice_is_warned_about() {
 /// The message of the one warning `marked` gives at its marker, with `code`.
 fn warning_message(marked: &str, code: Code) -> String {
     let (xml, line, column) = unmark(marked);
-    let scene = load(xml.as_bytes(), &LoadOptions::default()).expect("a warning is no failure");
-    let found: Vec<_> = scene
-        .diagnostics()
-        .iter()
-        .map(|d| {
-            (Code::from_u32(d.code).unwrap(), d.line, d.column, scene.text(d.message).unwrap())
-        })
-        .collect();
+    let found = warnings_of(&xml);
     match found.as_slice() {
-        [(c, l, col, message)] if (*c, *l, *col) == (code, line, column) => message.to_string(),
+        [(c, l, col, message)] if (*c, *l, *col) == (code, line, column) => message.clone(),
         _ => panic!("expected one {code} at {line}:{column}, found {found:?}"),
     }
 }

@@ -27,17 +27,32 @@ c_output="box2scene $VERSION (header $VERSION)
 body 0: Ground
 body 1: Ball"
 
-# Configures and builds the consumer in folder $1 against PREFIX alone, into $work/build.
-build_consumer() {
+# Configures the project in folder $1 with the other arguments and builds it into
+# $work/build, or fails with its log.
+configure_and_build() {
   local name=$1
   shift
-  if ! "$CMAKE" -S "$work/src/$name" -B "$work/build" -G "Unix Makefiles" \
-      -DCMAKE_PREFIX_PATH="$PREFIX" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "$@" \
+  if ! "$CMAKE" -S "$work/src/$name" -B "$work/build" -G "Unix Makefiles" "$@" \
       >"$work/log" 2>&1 ||
     ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
     cat "$work/log" >&2
     fail "the $name consumer did not build"
   fi
+}
+
+# Configures and builds the consumer in folder $1 against PREFIX alone, into $work/build.
+build_consumer() {
+  local name=$1
+  shift
+  configure_and_build "$name" -DCMAKE_PREFIX_PATH="$PREFIX" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "$@"
+}
+
+# A parent project that built box2scene's sources into $1 built none of its tests, and its
+# scene_info runs.
+expect_parent_project() {
+  [ ! -e "$1/c_tests" ] || fail "box2scene's tests were built"
+  expect_shared "$work/build/scene_info"
+  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
 }
 
 # Runs a program and compares what it prints with $1.
@@ -258,32 +273,18 @@ check_pkg_config_static() {
 }
 
 check_subdirectory() {
-  if ! "$CMAKE" -S "$work/src/subdirectory" -B "$work/build" \
-      -DBOX2SCENE_SOURCE_DIR="$BOX2SCENE_SOURCE_DIR" \
-      -DBOX2SCENE_CARGO_TARGET_DIR="$BOX2SCENE_CARGO_TARGET_DIR" >"$work/log" 2>&1 ||
-    ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
-    cat "$work/log" >&2
-    fail "the subdirectory consumer did not build"
-  fi
-  [ ! -e "$work/build/box2scene/c_tests" ] || fail "box2scene's tests were built"
-  expect_shared "$work/build/scene_info"
-  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+  configure_and_build subdirectory -DBOX2SCENE_SOURCE_DIR="$BOX2SCENE_SOURCE_DIR" \
+    -DBOX2SCENE_CARGO_TARGET_DIR="$BOX2SCENE_CARGO_TARGET_DIR"
+  expect_parent_project "$work/build/box2scene"
 }
 
 # FetchContent clones this source tree's repository at its HEAD, as a host clones a release.
 check_fetchcontent() {
   local head
   head=$(git -C "$BOX2SCENE_SOURCE_DIR" rev-parse HEAD) || fail "the source tree is no git repository"
-  if ! "$CMAKE" -S "$work/src/fetchcontent" -B "$work/build" \
-      -DBOX2SCENE_GIT_REPOSITORY="file://$BOX2SCENE_SOURCE_DIR" -DBOX2SCENE_GIT_TAG="$head" \
-      -DBOX2SCENE_CARGO_TARGET_DIR="$work/cargo" >"$work/log" 2>&1 ||
-    ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
-    cat "$work/log" >&2
-    fail "the FetchContent consumer did not build"
-  fi
-  [ ! -e "$work/build/_deps/box2scene-build/c_tests" ] || fail "box2scene's tests were built"
-  expect_shared "$work/build/scene_info"
-  expect_output "$c_output" "$work/build/scene_info" "$work/src/scene.xml"
+  configure_and_build fetchcontent -DBOX2SCENE_GIT_REPOSITORY="file://$BOX2SCENE_SOURCE_DIR" \
+    -DBOX2SCENE_GIT_TAG="$head" -DBOX2SCENE_CARGO_TARGET_DIR="$work/cargo"
+  expect_parent_project "$work/build/_deps/box2scene-build"
   echo "built box2scene $head through FetchContent"
 }
 
