@@ -224,6 +224,42 @@ static int a_fixed_rotation_body_is_created_without_its_spin(void) {
     return 0;
 }
 
+/* A stress level of v3.2's stream (box2d3_stress_test): a wheel joint 51 radii of gyration
+ * out on a light body, to a body with fixed rotation, gave a NaN angular velocity in v3.1's
+ * first step (its assertion stopped the program). A body that cannot turn bounds the lever
+ * of a line or wheel joint as a static one does. */
+static int a_wheel_to_a_body_that_cannot_turn_has_the_short_lever(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>-12.283044 11.090363</Gravity><Shapes>"
+        "<Shape Type='Polygon'><Vertices><Vertex>0.18535013 -0.056597352</Vertex>"
+        "<Vertex>0.05903176 0.23567976</Vertex><Vertex>-0.24655235 0.31476894</Vertex>"
+        "<Vertex>-0.502051 0.11341128</Vertex><Vertex>-0.5091145 -0.19972612</Vertex>"
+        "<Vertex>-0.24713 -0.41258976</Vertex><Vertex>0.057919357 -0.33704275</Vertex>"
+        "</Vertices></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape>"
+        "<Density>0.8116647</Density><IsSensor>true</IsSensor></Fixture></Fixtures><Bodies>"
+        "<Body Type='Dynamic'><AllowSleep>false</AllowSleep><Angle>-0.13634157</Angle>"
+        "<AngularVelocity>4.513324</AngularVelocity><LinearVelocity>8.37212 -2.060833"
+        "</LinearVelocity><Position>4.6106596 4.7750406</Position><Fixtures><ID>0</ID>"
+        "</Fixtures></Body><Body Type='Dynamic'><Angle>0.25004768</Angle>"
+        "<FixedRotation>true</FixedRotation><LinearVelocity>6.263666 8.580727</LinearVelocity>"
+        "<Position>13.238903 -3.9475727</Position><Fixtures><ID>0</ID><ID>0</ID></Fixtures>"
+        "</Body></Bodies><Joints><Joint Type='Wheel'><BodyA>0</BodyA><BodyB>1</BodyB>"
+        "<LocalAnchorA>9.733746 -7.4689193</LocalAnchorA>"
+        "<LocalAxisA>0.4653573 0.59141827</LocalAxisA><MotorSpeed>0.6062412</MotorSpeed>"
+        "<MaxMotorTorque>38.72096</MaxMotorTorque><FrequencyHz>5.6326857</FrequencyHz>"
+        "<DampingRatio>0.058253527</DampingRatio></Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NULL(w.built->joints[0]));
+    ENSURE_EQ(count_reports(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1u);
+    ENSURE(strstr(w.built->reports.items[0].message, "radii of gyration") != NULL);
+    ENSURE(strstr(w.built->reports.items[0].message, "(at most 5)") != NULL);
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
@@ -234,5 +270,6 @@ int main(void) {
     failed += RUN_TEST(an_inertia_v3_cannot_hold_is_refused);
     failed += RUN_TEST(a_prismatic_lever_reaches_body_bs_anchor);
     failed += RUN_TEST(a_fixed_rotation_body_is_created_without_its_spin);
+    failed += RUN_TEST(a_wheel_to_a_body_that_cannot_turn_has_the_short_lever);
     return failed;
 }

@@ -6,11 +6,9 @@
  * nothing aborts. Joints are laid out as an editor lays them out (each body that yields hangs
  * from one earlier body at a shared world point, so that no joint starts far from satisfied
  * or contradicts another: v3's solver, like any, cannot hold those whatever their values).
- * In v3.2 every other level is built at a placement of its own, turned and moved by up to
- * 100 m; v3.1 builds them where they are and keeps its own stream of levels, since v3.2's
- * finds one more that v3.1 does not hold (docs/working-range.md). Compiled once per v3
- * adapter (V3_SUPPORT names its support header) as box2d3_stress_test and
- * box2d32_stress_test.
+ * Every other level is built at a placement of its own, turned and moved by up to 100 m.
+ * Both versions take the same stream of levels. Compiled once per v3 adapter (V3_SUPPORT
+ * names its support header) as box2d3_stress_test and box2d32_stress_test.
  */
 #include V3_SUPPORT
 
@@ -322,15 +320,10 @@ static int generated_levels_stay_finite(void) {
             continue;
         }
         levels += 1;
-        v3_world world;
-        if (V3_MINOR >= 2) {
-            float turn = uniform(-3.14159265f, 3.14159265f);
-            b2Transform placement = {{uniform(-100.0f, 100.0f), uniform(-100.0f, 100.0f)},
-                                     {cosf(turn), sinf(turn)}};
-            world = levels % 2 == 0 ? build_v3_at(scene, placement) : build_v3(scene);
-        } else {
-            world = build_v3(scene);
-        }
+        float turn = uniform(-3.14159265f, 3.14159265f);
+        b2Transform placement = {{uniform(-100.0f, 100.0f), uniform(-100.0f, 100.0f)},
+                                 {cosf(turn), sinf(turn)}};
+        v3_world world = levels % 2 == 0 ? build_v3_at(scene, placement) : build_v3(scene);
         ENSURE(world.built != NULL);
         beyond += (int)count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, NULL, 0);
         skipped += (int)count_reports(&world.built->reports, B2S_CODE_SKIPPED_JOINT, NULL, 0);

@@ -118,8 +118,9 @@ typedef struct b2s_box2d3_built {
 /** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
  *  as measured by the working-range sweep (docs/working-range.md): for a revolute joint (a
  *  pendulum: a 10 cm ball can hang 70 m out); for line and wheel joints to a body that does
- *  not move, whose free turn v3 cannot hold on a small body far out; and for every other kind, whose farthest lever in
- *  the sweep (a 20 cm ball 10 m out, 71 radii) holds. A prismatic joint's axis reaches body
+ *  not turn (static, kinematic or with fixed rotation), whose free turn v3 cannot hold on a
+ *  small body far out; and for every other kind, whose farthest lever in the sweep (a 20 cm
+ *  ball 10 m out, 71 radii) holds. A prismatic joint's axis reaches body
  *  B's anchor, which is body A's lever too. A friction joint's anchors play no part. */
 #define B2S_BOX2D3_MAX_LEVER_REVOLUTE 1e3f
 #define B2S_BOX2D3_MAX_LEVER_WHEEL 5.0f

@@ -112,12 +112,14 @@ static float b2s3_starting_violation(const b2s3_builder* b, const b2s_joint* joi
 }
 
 /* The farthest lever of one body of a joint whose other body is `other`: a line or wheel
- * joint to a body that does not move leaves the body free to turn about an anchor that the
+ * joint to a body that does not turn (one that does not move, or a dynamic one without
+ * rotational inertia: fixed rotation) leaves the body free to turn about an anchor that the
  * engine may not hold as far out as other joints (B2S3_MAX_LEVER_FIXED_WHEEL). */
 static float b2s3_lever(const b2s3_builder* b, const b2s_joint* joint, uint32_t other,
                         float lever) {
     bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
-    return wheel && !b2s3_is_dynamic(b, other) ? B2S3_MAX_LEVER_FIXED_WHEEL : lever;
+    bool turns = b2s3_is_dynamic(b, other) && b->masses[other].rotationalInertia > 0.0f;
+    return wheel && !turns ? B2S3_MAX_LEVER_FIXED_WHEEL : lever;
 }
 
 static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint) {

@@ -141,8 +141,10 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
 
 /* v3.1's friction (motor) joint acts at the body origins: its anchors play no part. */
 #define B2S3_FRICTION_AT_ANCHORS false
-/* A line or wheel joint to a body that does not move leaves its body free to turn about an
- * anchor that v3.1 cannot hold far out on a small body. */
+/* A line or wheel joint to a body that does not turn (static, kinematic, or with fixed
+ * rotation) leaves its body free to turn about an anchor that v3.1 cannot hold far out on a
+ * small body: 51 radii of gyration to a body with fixed rotation gave a NaN angular velocity
+ * in the first step (box2d3_stress_test, on v3.2's stream of levels). */
 #define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D3_MAX_LEVER_WHEEL
 /* A line or wheel joint is bounded by how far from satisfied it starts, in metres. */
 #define B2S3_MAX_WHEEL_VIOLATION B2S_BOX2D3_MAX_VIOLATION
