@@ -3,11 +3,11 @@
 # and tested as snippet_PAGE_N, so that what a reader copies builds and runs.
 #
 # The line before a block (blank lines aside) says how it is tested:
-#   <!-- snippet: HARNESS -->         tests/snippets/HARNESS, a C or C++ file (as the block
-#                                     is) that includes the block's #include lines,
+#   <!-- snippet: HARNESS -->         tests/snippets/HARNESS, a C file for a c block, C++
+#                                     for cpp, that includes the block's #include lines,
 #                                     snippet_head.h, at its top and the rest, snippet_body.h,
 #                                     where the block's variables are: as main's body, with a
-#                                     scene loaded, beside a running world (see each harness);
+#                                     scene loaded, beside a built world (see each harness);
 #   <!-- snippet: consumer CHECK -->  a whole CMakeLists.txt, put in place of the one of
 #                                     tests/consumers/ that the test consumer_CHECK builds,
 #                                     then built and run as that test does
