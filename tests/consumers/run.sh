@@ -2,7 +2,9 @@
 # The consumers of an installed box2scene: `run.sh CHECK`, one CTest test per CHECK (see
 # CMakeLists.txt, which sets the environment below). `install` installs the build into
 # PREFIX; every other check but `subdirectory` builds a host against PREFIX alone, from a
-# copy of this folder in a temporary directory, runs it and checks what it prints.
+# copy of this folder in a temporary directory, runs it and checks what it prints. With
+# CMAKELISTS set, the check builds that file in place of its consumer's CMakeLists.txt (the
+# snippet_* tests: a CMakeLists.txt a page shows, built and run as this check's).
 set -euo pipefail
 
 : "${CMAKE:?}" "${RUSTC:?}" "${BOX2SCENE_SOURCE_DIR:?}" "${BOX2SCENE_BUILD_DIR:?}"
@@ -32,6 +34,10 @@ body 1: Ball"
 configure_and_build() {
   local name=$1
   shift
+  if [ -n "${CMAKELISTS:-}" ]; then
+    cp "$CMAKELISTS" "$work/src/$name/CMakeLists.txt"
+    cmakelists_built=yes
+  fi
   if ! "$CMAKE" -S "$work/src/$name" -B "$work/build" -G "Unix Makefiles" "$@" \
       >"$work/log" 2>&1 ||
     ! "$CMAKE" --build "$work/build" -j2 >>"$work/log" 2>&1; then
@@ -312,3 +318,6 @@ check_readme() {
 
 [ $# -eq 1 ] && declare -F "check_$1" >/dev/null || fail "usage: $0 CHECK"
 "check_$1"
+if [ -n "${CMAKELISTS:-}" ] && [ -z "${cmakelists_built:-}" ]; then
+  fail "the $1 check builds no consumer's CMakeLists.txt, so not $CMAKELISTS"
+fi
