@@ -104,29 +104,23 @@ fn first_error(checked: Checked) -> Result<Scene, Error> {
 
 /// Resolves, validates and freezes what was read, or reports the errors, everything placed
 /// at its line and column.
-fn finish((read, mut errors, placer): parse::Read<'_>) -> Checked {
-    let checked = read.and_then(|mut arena| {
-        resolve::resolve(&mut arena)?;
-        if !arena.has_errors() {
-            validate::dynamic_bodies_without_mass(&mut arena)?;
-            validate::joints_start_satisfied(&mut arena)?;
-        }
-        Ok(arena)
-    });
-    let mut arena = match checked {
+fn finish((read, placer): parse::Read<'_>) -> Checked {
+    let mut arena = match read {
         Ok(arena) => arena,
-        Err(problem) => {
-            errors.push(*problem);
-            return Checked { scene: None, errors: placed(errors, &placer), warnings: Vec::new() };
-        }
+        Err(stopped) => return failed(stopped.errors, stopped.warnings, &placer),
     };
-    errors.append(&mut arena.take_errors());
+    let checked = resolve::resolve(&mut arena).and_then(|()| match arena.has_errors() {
+        true => Ok(()),
+        false => validate::dynamic_bodies_without_mass(&mut arena)
+            .and_then(|()| validate::joints_start_satisfied(&mut arena)),
+    });
+    let mut errors = arena.take_errors();
+    errors.extend(checked.err().map(|problem| *problem));
     let mut warnings = arena.take_warnings();
-    placer.place(&mut warnings);
     if !errors.is_empty() {
-        let warnings = warnings.into_iter().map(error_of).collect();
-        return Checked { scene: None, errors: placed(errors, &placer), warnings };
+        return failed(errors, warnings, &placer);
     }
+    placer.place(&mut warnings);
     let mut kept = Vec::with_capacity(warnings.len());
     for w in warnings {
         let position = w.position.unwrap_or_default();
@@ -142,6 +136,13 @@ fn finish((read, mut errors, placer): parse::Read<'_>) -> Checked {
         kept.push(error_of(w));
     }
     Checked { scene: Some(arena.scene.freeze()), errors: Vec::new(), warnings: kept }
+}
+
+/// A load without a scene: its errors and warnings, placed.
+fn failed(errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &parse::Placer<'_>) -> Checked {
+    placer.place(&mut warnings);
+    let warnings = warnings.into_iter().map(error_of).collect();
+    Checked { scene: None, errors: placed(errors, placer), warnings }
 }
 
 /// `errors` placed at their lines and columns, in the order of the file, one a place: an ID

@@ -114,7 +114,13 @@ fn a_markup_error_ends_the_check() {
         "<Body Type=\"Static\"><Angle>wrong</Angle></Body>",
         "",
     );
-    expect_errors(&marked, &[Code::BadRadius, Code::MalformedXml]);
+    let checked = expect_errors(&marked, &[Code::BadRadius, Code::MalformedXml]);
+    assert!(checked.warnings.is_empty());
+    // The warnings found before the end are reported with the errors.
+    let shape = "<Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position><Wind/></Shape>";
+    let warned = world(shape, "<Fixture>⌖</Fixtur>", "", "");
+    let checked = expect_errors(&warned, &[Code::MalformedXml]);
+    assert_eq!(codes_and_places(&checked.warnings), [(Code::UnknownElement, 2, 72)]);
     // A missing element is found at the end of its object, and points at its start.
     let missing = world(
         &format!(
@@ -152,6 +158,15 @@ fn a_check_ends_after_a_hundred_errors() {
     assert_eq!(checked.errors.len(), 101);
     let lines: Vec<u32> = checked.errors.iter().map(|e| e.position.line).collect();
     assert_eq!(lines, (4..105).collect::<Vec<_>>());
+}
+
+/// The cap counts every error alike: a hundred IDs that name nothing, and the next ends it.
+#[test]
+fn a_check_ends_after_a_hundred_errors_of_references_too() {
+    let fixtures = "<Fixture><Shape>5</Shape></Fixture>\n".repeat(150);
+    let checked = check(world("", &fixtures, "", "").as_bytes(), &LoadOptions::default());
+    assert_eq!(checked.errors.len(), 101, "{:#?}", &checked.errors[..3]);
+    assert!(checked.errors.iter().all(|e| e.code == Code::IdOutOfRange));
 }
 
 /// A file without errors checks as the scene a load gives, with the same warnings.

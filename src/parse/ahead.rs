@@ -390,7 +390,7 @@ impl Drop for Caller<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::{Code, Parsed, Position, Spot};
+    use crate::error::{Code, Position, Spot};
     use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
     /// What a read on one thread, or on two with the pieces and the helper's first piece of
@@ -409,7 +409,7 @@ mod tests {
         }
     }
 
-    fn shown(read: Parsed<Arena>) -> String {
+    fn shown(read: Result<Arena, super::super::Stopped>) -> String {
         match read {
             Ok(mut arena) => {
                 let warnings = format!("warnings: {:?}\n", arena.take_warnings());
@@ -417,7 +417,7 @@ mod tests {
                 let scene = arena.scene.freeze();
                 crate::dump::to_json(&scene) + &records(&scene) + &warnings + &origins
             }
-            Err(e) => format!("{e:?}"),
+            Err(stopped) => format!("{:?}", stopped.errors),
         }
     }
 

@@ -40,9 +40,16 @@ pub(crate) fn read<'a>(source: Source<'a>, options: &'a LoadOptions, recovering:
     read_split(source, options, recovering, None)
 }
 
-/// What [`read`] gives: the arena (holding the errors the read went on past) or the error
-/// that stopped the read with those before it, and what places the findings left for later.
-pub(crate) type Read<'a> = (Parsed<Arena>, Vec<Finding>, Placer<'a>);
+/// What [`read`] gives: the arena (holding the errors the read went on past) or what a read
+/// that stopped had found, and what places the findings left for later.
+pub(crate) type Read<'a> = (Result<Arena, Stopped>, Placer<'a>);
+
+/// What a read that stopped at an error had found.
+pub(crate) struct Stopped {
+    /// The errors it went on past, then the one that stopped it.
+    pub errors: Vec<Finding>,
+    pub warnings: Vec<Finding>,
+}
 
 /// [`read`], with the pieces and the helper's first one forced by `split` (for tests).
 fn read_split<'a>(
@@ -57,14 +64,18 @@ fn read_split<'a>(
         let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
         let read = ahead::read(&mut reader, helper);
         let Reader { mut tok, mut arena, .. } = reader;
-        let (read, errors) = match read {
+        let read = match read {
             Ok(()) => {
                 arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
-                (Ok(arena), Vec::new())
+                Ok(arena)
             }
-            Err(problem) => (Err(Box::new(tok.place(*problem))), arena.take_errors()),
+            Err(problem) => {
+                let mut errors = arena.take_errors();
+                errors.push(tok.place(*problem));
+                Err(Stopped { errors, warnings: arena.take_warnings() })
+            }
         };
-        (read, errors, Placer::new(tok.into_source()))
+        (read, Placer::new(tok.into_source()))
     })
 }
 
