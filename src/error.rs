@@ -341,7 +341,7 @@ pub const MAX_WARNINGS: usize = 1000;
 
 /// The most errors a load that goes on past errors records ([`crate::check`]); the next one
 /// ends it, as a markup error does.
-pub const MAX_ERRORS: usize = 100;
+pub(crate) const MAX_ERRORS: usize = 100;
 
 /// How bad a diagnostic is.
 #[repr(u32)]
