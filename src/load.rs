@@ -55,28 +55,19 @@ pub struct Checked {
 /// [`Checked`]), on one thread.
 pub fn check_file(file: File, name: &Path, options: &LoadOptions) -> Checked {
     let options = &one_thread(options);
-    match Source::file(file, name, options) {
-        Ok(source) => finish(parse::read(source, options, true)),
-        Err(error) => Checked::failed(error),
-    }
+    checked(Source::file(file, name, options), options)
 }
 
 /// Checks a stream as [`load_stream`] loads it, going on past the errors it can.
 pub fn check_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Checked {
     let options = &one_thread(options);
-    match Source::stream(stream, name, options) {
-        Ok(source) => finish(parse::read(source, options, true)),
-        Err(error) => Checked::failed(error),
-    }
+    checked(Source::stream(stream, name, options), options)
 }
 
 /// Checks the bytes of a file as [`load`] loads them, going on past the errors it can.
 pub fn check(bytes: &[u8], options: &LoadOptions) -> Checked {
     let options = &one_thread(options);
-    match Source::memory(bytes, options) {
-        Ok(source) => finish(parse::read(source, options, true)),
-        Err(error) => Checked::failed(error),
-    }
+    checked(Source::memory(bytes, options), options)
 }
 
 /// A read that goes on past errors reads on one thread: what a second thread reads ahead
@@ -86,9 +77,22 @@ fn one_thread(options: &LoadOptions) -> LoadOptions {
     LoadOptions { threads: 1, ..*options }
 }
 
-impl Checked {
-    fn failed(error: Error) -> Checked {
-        Checked { scene: None, errors: vec![error], warnings: Vec::new() }
+/// The check of `source`, or the error that kept it from being read.
+fn checked(source: Result<Source<'_>, Error>, options: &LoadOptions) -> Checked {
+    match source {
+        Ok(source) => finish(parse::read(source, options, true)),
+        Err(error) => Checked::from(Err(error)),
+    }
+}
+
+/// A load's result as a check gives it: the scene (its warnings are its diagnostics), or
+/// the one error.
+impl From<Result<Scene, Error>> for Checked {
+    fn from(loaded: Result<Scene, Error>) -> Checked {
+        match loaded {
+            Ok(scene) => Checked { scene: Some(scene), errors: Vec::new(), warnings: Vec::new() },
+            Err(error) => Checked { scene: None, errors: vec![error], warnings: Vec::new() },
+        }
     }
 }
 

@@ -126,7 +126,7 @@ impl Loaded {
         let (checked, quoted) = match input {
             Input::Path(path) => match File::open(path) {
                 Ok(file) => load_file(file, path, options, reading),
-                Err(e) => (failed(Error::cannot_read(path, &e)), Quoted::nothing()),
+                Err(e) => (Checked::from(Err(Error::cannot_read(path, &e))), Quoted::nothing()),
             },
             Input::Stdin => load_stdin(Path::new(&name), options, reading),
         };
@@ -144,18 +144,6 @@ impl Loaded {
     }
 }
 
-/// What a load gives, as a check gives it.
-fn loaded(scene: Result<Scene, Error>) -> Checked {
-    match scene {
-        Ok(scene) => Checked { scene: Some(scene), errors: Vec::new(), warnings: Vec::new() },
-        Err(error) => failed(error),
-    }
-}
-
-fn failed(error: Error) -> Checked {
-    Checked { scene: None, errors: vec![error], warnings: Vec::new() }
-}
-
 /// Reads an open file: a regular one as a path is read, read back from where a report
 /// quotes it; anything else (a pipe, a terminal) as a stream, copied as it is read.
 fn load_file(
@@ -168,7 +156,7 @@ fn load_file(
         Ok(meta) if meta.is_file() => {
             let quoted = Quoted::from(file.try_clone().ok());
             let checked = match reading {
-                Reading::Load => loaded(box2scene::load_file(file, name, options)),
+                Reading::Load => Checked::from(box2scene::load_file(file, name, options)),
                 Reading::Check => box2scene::check_file(file, name, options),
             };
             (checked, quoted)
@@ -188,7 +176,7 @@ fn load_stream(
     let quoted = Quoted::spool();
     let stream = quoted.copying(stream);
     let checked = match reading {
-        Reading::Load => loaded(box2scene::load_reader(stream, name, options)),
+        Reading::Load => Checked::from(box2scene::load_reader(stream, name, options)),
         Reading::Check => box2scene::check_reader(stream, name, options),
     };
     (checked, quoted)

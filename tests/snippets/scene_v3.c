@@ -3,15 +3,11 @@
  * names the v3 version. */
 #include "snippet_head.h"
 
-#include <box2scene.h>
-
-#include <stdio.h>
+#include "level.h"
 
 int main(void) {
-    b2s_scene* scene = NULL;
-    b2s_error error;
-    if (b2s_load_file("level.xml", NULL, &scene, &error) != B2S_CODE_OK) {
-        fprintf(stderr, "level.xml:%u:%u: %s\n", error.line, error.column, error.message);
+    b2s_scene* scene = load_level();
+    if (scene == NULL) {
         return 1;
     }
 #include "snippet_body.h"

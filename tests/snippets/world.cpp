@@ -4,13 +4,11 @@
 
 #include <box2scene/box2d.hpp>
 
-#include <cstdio>
+#include "level.h"
 
 int main() {
-    b2s_scene* scene = nullptr;
-    b2s_error error;
-    if (b2s_load_file("level.xml", nullptr, &scene, &error) != B2S_CODE_OK) {
-        std::fprintf(stderr, "level.xml:%u:%u: %s\n", error.line, error.column, error.message);
+    b2s_scene* scene = load_level();
+    if (scene == nullptr) {
         return 1;
     }
     b2World world(box2scene::scene_gravity(scene, b2Vec2(0.0f, -10.0f)));

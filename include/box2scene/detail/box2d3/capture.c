@@ -435,17 +435,18 @@ static void b2s3_motor_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint,
     }
 }
 
+/* Reports that a joint of `what` kind has no Box2Scene form; false. */
+static bool b2s3_unwritten_joint(b2s3_capture* c, const char* what) {
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
+                "%s has no Box2Scene form; not written", what);
+    return false;
+}
+
 /* The joint kind the build makes a v3 joint of, or false when it has no Box2Scene form
- * (reported). A motor joint is read whole here. */
+ * (reported). A motor joint is read whole here. Kinds are compared by name: their numbers
+ * moved between the 3.2 sources. */
 static bool b2s3_joint_kind(b2s3_capture* c, b2JointId id, b2s_joint* joint, uint32_t* kind) {
-    b2JointType type = b2Joint_GetType(id);
-    const char* unwritten = b2s3_unwritten_joint(type);
-    if (unwritten != NULL) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, NULL,
-                    "%s has no Box2Scene form; not written", unwritten);
-        return false;
-    }
-    switch (type) {
+    switch (b2Joint_GetType(id)) {
     case b2_revoluteJoint: *kind = B2S_JOINT_KIND_REVOLUTE; break;
     case b2_prismaticJoint: *kind = B2S_JOINT_KIND_PRISMATIC; break;
     case b2_weldJoint: *kind = B2S_JOINT_KIND_WELD; break;
@@ -457,7 +458,12 @@ static bool b2s3_joint_kind(b2s3_capture* c, b2JointId id, b2s_joint* joint, uin
     case b2_wheelJoint:
         *kind = b2WheelJoint_IsSpringEnabled(id) ? B2S_JOINT_KIND_WHEEL : B2S_JOINT_KIND_LINE;
         break;
-    default: b2s3_motor_joint_of(c, id, joint, kind); return true;
+    case b2_motorJoint: b2s3_motor_joint_of(c, id, joint, kind); return true;
+    case b2_filterJoint: return b2s3_unwritten_joint(c, "a filter joint");
+#if B2S3_HAS_MOUSE_JOINT
+    case b2_mouseJoint: return b2s3_unwritten_joint(c, "a mouse joint");
+#endif
+    default: return b2s3_unwritten_joint(c, "a joint of a kind this adapter does not know");
     }
     b2s_joint_default(*kind, joint);
     return true;

@@ -340,21 +340,8 @@ static int b2s3_chain_at(b2s3_chains* chains, const b2ShapeId* shapes, int i, in
  * vertices: v3.1's capture writes it as the chain. */
 #define B2S3_LONE_SEGMENT_KIND B2S_SHAPE_KIND_CHAIN
 
-/* What the scene calls a v3.1 joint kind without a Box2Scene form (NULL for the kinds the
- * capture writes). */
-static const char* b2s3_unwritten_joint(b2JointType type) {
-    switch (type) {
-    case b2_distanceJoint:
-    case b2_motorJoint:
-    case b2_prismaticJoint:
-    case b2_revoluteJoint:
-    case b2_weldJoint:
-    case b2_wheelJoint: return NULL;
-    case b2_mouseJoint: return "a mouse joint";
-    case b2_filterJoint: return "a filter joint";
-    default: return "a joint of a kind this adapter does not know";
-    }
-}
+/* v3.1 has a mouse joint, which the format has no form for. */
+#define B2S3_HAS_MOUSE_JOINT 1
 
 /* A joint's anchors, and its axis and reference angle where its kind has them, read back
  * as the joint holds them: as the build passed them, nothing to invert and nothing lost

@@ -377,20 +377,8 @@ static int b2s3_chain_at(b2s3_chains* chains, const b2ShapeId* shapes, int i, in
  * written as the edge. */
 #define B2S3_LONE_SEGMENT_KIND B2S_SHAPE_KIND_EDGE
 
-/* What the scene calls a v3.2 joint kind without a Box2Scene form (NULL for the kinds the
- * capture writes). Kinds are compared by name: their numbers moved between 3.2 sources. */
-static const char* b2s3_unwritten_joint(b2JointType type) {
-    switch (type) {
-    case b2_distanceJoint:
-    case b2_motorJoint:
-    case b2_prismaticJoint:
-    case b2_revoluteJoint:
-    case b2_weldJoint:
-    case b2_wheelJoint: return NULL;
-    case b2_filterJoint: return "a filter joint";
-    default: return "a joint of a kind this adapter does not know";
-    }
-}
+/* v3.2 has no mouse joint. */
+#define B2S3_HAS_MOUSE_JOINT 0
 
 /* wanted: an axis rotation (c, s), then the rotation of frame B the build makes of it. */
 static bool b2s3_prismatic_reference_of(float angle, const float* wanted) {
