@@ -1174,6 +1174,59 @@ typedef struct b2s_write_options {
 } b2s_write_options;
 
 /**
+ * Where a body is: its origin in the world and its angle in radians, as Box2D's
+ * `GetPosition` and `GetAngle` (v3: `b2Body_GetPosition`, `b2Rot_GetAngle`) give them.
+ * A pose with a coordinate or an angle that is not finite is not drawn: a body the host
+ * did not create, or one its engine lost.
+ */
+typedef struct b2s_pose {
+  /**
+   * The body's origin, in metres.
+   */
+  struct b2s_vec2 position;
+  /**
+   * The body's angle, in radians.
+   */
+  float angle;
+} b2s_pose;
+
+/**
+ * What `b2s_draw_svg` draws beside the scene's shapes and joints; `b2s_picture_default`
+ * gives a picture of the scene where its file puts every body, with no title.
+ */
+typedef struct b2s_picture {
+  /**
+   * The line on top, NUL-terminated UTF-8; NULL or empty for none.
+   */
+  const char *title;
+  /**
+   * NULL (where the scene puts each body) or one pose per body of the scene, in its
+   * order. A pose that is not finite is not drawn (a body the host did not create).
+   */
+  const struct b2s_pose *start;
+  /**
+   * NULL (the start alone, solid) or one pose per body: where each ended; the start is
+   * then drawn faint.
+   */
+  const struct b2s_pose *end;
+  /**
+   * NULL (every joint of the scene) or one flag per joint: whether the host created it.
+   * A joint not created is not drawn.
+   */
+  const bool *joints_created;
+  /**
+   * NULL (only with `trajectory_samples` 0) or `trajectory_samples` samples, each one
+   * point per body in the scene's order: the path each body's origin took. A point
+   * that is not finite breaks its body's path.
+   */
+  const struct b2s_vec2 *trajectories;
+  /**
+   * How many samples `trajectories` holds.
+   */
+  size_t trajectory_samples;
+} b2s_picture;
+
+/**
  * Every dialect, in the order of their numbers.
  */
 #define b2s_dialect_ALL { b2s_dialect_Box2scene, b2s_dialect_Farseer33, b2s_dialect_Farseer2013, b2s_dialect_Farseer35, b2s_dialect_Aether, }
@@ -1304,10 +1357,11 @@ b2s_code b2s_write_memory(const struct b2s_scene *scene,
                           struct b2s_error *error);
 
 /**
- * Frees a text from `b2s_write_memory`. NULL is ignored.
+ * Frees a text from `b2s_write_memory` or `b2s_draw_svg`. NULL is ignored.
  *
  * # Safety
- * `text` is NULL or a text from `b2s_write_memory` that was not freed yet.
+ * `text` is NULL or a text from `b2s_write_memory` or `b2s_draw_svg` that was not freed
+ * yet.
  */
 void b2s_text_free(char *text);
 
@@ -1326,6 +1380,32 @@ b2s_code b2s_write_file(const struct b2s_scene *scene,
                         const char *path,
                         const struct b2s_write_options *options,
                         struct b2s_error *error);
+
+/**
+ * A picture of the scene where its file puts every body, with no title.
+ */
+struct b2s_picture b2s_picture_default(void);
+
+/**
+ * Draws `scene` as an SVG document (`docs/api.md` shows one): every body's shapes
+ * coloured by its type, its joints as Box2D's debug draw draws them, the names of named
+ * bodies, a title and a key; where a host's simulation started and ended, and the path
+ * between, when `picture` gives them (NULL: the defaults). Stores the document in
+ * `*out_text` as `b2s_write_memory` does (free it with `b2s_text_free`).
+ * `B2S_CODE_INVALID_ARGUMENT` when a pointer of `picture` is NULL with a count, or the
+ * title is not UTF-8; `*out_text` then stays NULL.
+ *
+ * # Safety
+ * `scene` is NULL or a live scene; `picture` NULL or valid, its `start` and `end` NULL or
+ * holding one pose per body of the scene, its `joints_created` NULL or one flag per joint, its `trajectories` NULL or holding
+ * `trajectory_samples` times that many points; `out_text` NULL or writable; `out_size`
+ * NULL or writable; `error` NULL or writable.
+ */
+b2s_code b2s_draw_svg(const struct b2s_scene *scene,
+                      const struct b2s_picture *picture,
+                      char **out_text,
+                      size_t *out_size,
+                      struct b2s_error *error);
 
 /**
  * A new, empty scene builder. Never NULL.

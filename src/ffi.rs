@@ -10,6 +10,7 @@ use std::ffi::{CStr, CString, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
+use crate::draw::{Picture, Pose};
 use crate::error::{Code, Error, Position};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
 use crate::scene::{Diagnostic, NONE, UserData, Vec2};
@@ -455,28 +456,44 @@ pub unsafe extern "C" fn b2s_write_memory(
     out_size: *mut usize,
     error: *mut ErrorInfo,
 ) -> Code {
-    fallible(error, || {
-        // SAFETY: by the caller's contract.
-        let out = unsafe { out_text.as_mut() }
-            .ok_or_else(|| simple_error(Code::NullArgument, "out_text is NULL"))?;
-        *out = std::ptr::null_mut();
-        // SAFETY: by the caller's contract.
-        let (scene, options) = unsafe { scene_and_options(scene, options)? };
-        let text = CString::new(write_utf8(scene, &options)?)
-            .map_err(|_| simple_error(Code::Internal, "the written text holds a NUL byte"))?;
-        // SAFETY: by the caller's contract.
-        if let Some(size) = unsafe { out_size.as_mut() } {
-            *size = text.as_bytes().len();
-        }
-        *out = text.into_raw();
-        Ok(())
+    // SAFETY: by the caller's contract.
+    fallible(error, || unsafe {
+        hand_out(out_text, out_size, || {
+            let (scene, options) = scene_and_options(scene, options)?;
+            write_utf8(scene, &options)
+        })
     })
 }
 
-/// Frees a text from `b2s_write_memory`. NULL is ignored.
+/// A call that hands out a text: `*out_text` is NULL until `make` made it, then the text,
+/// NUL-terminated, for `b2s_text_free`; its length goes to `*out_size` when that is not NULL.
 ///
 /// # Safety
-/// `text` is NULL or a text from `b2s_write_memory` that was not freed yet.
+/// `out_text` is NULL or writable; `out_size` NULL or writable.
+unsafe fn hand_out<T: Into<Vec<u8>>>(
+    out_text: *mut *mut c_char,
+    out_size: *mut usize,
+    make: impl FnOnce() -> Result<T, Error>,
+) -> Result<(), Error> {
+    // SAFETY: by the caller's contract.
+    let out = unsafe { out_text.as_mut() }
+        .ok_or_else(|| simple_error(Code::NullArgument, "out_text is NULL"))?;
+    *out = std::ptr::null_mut();
+    let text = CString::new(make()?)
+        .map_err(|_| simple_error(Code::Internal, "the text made holds a NUL byte"))?;
+    // SAFETY: by the caller's contract.
+    if let Some(size) = unsafe { out_size.as_mut() } {
+        *size = text.as_bytes().len();
+    }
+    *out = text.into_raw();
+    Ok(())
+}
+
+/// Frees a text from `b2s_write_memory` or `b2s_draw_svg`. NULL is ignored.
+///
+/// # Safety
+/// `text` is NULL or a text from `b2s_write_memory` or `b2s_draw_svg` that was not freed
+/// yet.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn b2s_text_free(text: *mut c_char) {
     guard(
@@ -512,6 +529,89 @@ pub unsafe extern "C" fn b2s_write_file(
         // SAFETY: by the caller's contract.
         let path = unsafe { arg_str(path, "path")? };
         write_path(scene, Path::new(path), &options)
+    })
+}
+
+/// What `b2s_draw_svg` draws beside the scene's shapes and joints; `b2s_picture_default`
+/// gives a picture of the scene where its file puts every body, with no title.
+#[repr(C)]
+#[derive(Clone, Copy)]
+pub struct PictureInfo {
+    /// The line on top, NUL-terminated UTF-8; NULL or empty for none.
+    pub title: *const c_char,
+    /// NULL (where the scene puts each body) or one pose per body of the scene, in its
+    /// order. A pose that is not finite is not drawn (a body the host did not create).
+    pub start: *const Pose,
+    /// NULL (the start alone, solid) or one pose per body: where each ended; the start is
+    /// then drawn faint.
+    pub end: *const Pose,
+    /// NULL (every joint of the scene) or one flag per joint: whether the host created it.
+    /// A joint not created is not drawn.
+    pub joints_created: *const bool,
+    /// NULL (only with `trajectory_samples` 0) or `trajectory_samples` samples, each one
+    /// point per body in the scene's order: the path each body's origin took. A point
+    /// that is not finite breaks its body's path.
+    pub trajectories: *const Vec2,
+    /// How many samples `trajectories` holds.
+    pub trajectory_samples: usize,
+}
+
+/// A picture of the scene where its file puts every body, with no title.
+#[unsafe(no_mangle)]
+pub extern "C" fn b2s_picture_default() -> PictureInfo {
+    PictureInfo {
+        title: std::ptr::null(),
+        start: std::ptr::null(),
+        end: std::ptr::null(),
+        joints_created: std::ptr::null(),
+        trajectories: std::ptr::null(),
+        trajectory_samples: 0,
+    }
+}
+
+/// Draws `scene` as an SVG document (`docs/api.md` shows one): every body's shapes
+/// coloured by its type, its joints as Box2D's debug draw draws them, the names of named
+/// bodies, a title and a key; where a host's simulation started and ended, and the path
+/// between, when `picture` gives them (NULL: the defaults). Stores the document in
+/// `*out_text` as `b2s_write_memory` does (free it with `b2s_text_free`).
+/// `B2S_CODE_INVALID_ARGUMENT` when a pointer of `picture` is NULL with a count, or the
+/// title is not UTF-8; `*out_text` then stays NULL.
+///
+/// # Safety
+/// `scene` is NULL or a live scene; `picture` NULL or valid, its `start` and `end` NULL or
+/// holding one pose per body of the scene, its `joints_created` NULL or one flag per joint, its `trajectories` NULL or holding
+/// `trajectory_samples` times that many points; `out_text` NULL or writable; `out_size`
+/// NULL or writable; `error` NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_draw_svg(
+    scene: *const SceneHandle,
+    picture: *const PictureInfo,
+    out_text: *mut *mut c_char,
+    out_size: *mut usize,
+    error: *mut ErrorInfo,
+) -> Code {
+    // SAFETY: by the caller's contract.
+    fallible(error, || unsafe {
+        hand_out(out_text, out_size, || {
+            let (scene, _) = scene_and_options(scene, std::ptr::null())?;
+            let info = picture.as_ref().copied().unwrap_or_else(|| b2s_picture_default());
+            let bodies = scene.bodies().len();
+            let points = info.trajectory_samples.checked_mul(bodies).ok_or_else(|| {
+                simple_error(Code::InvalidArgument, "trajectory_samples is too large")
+            })?;
+            let title = match info.title.is_null() {
+                true => "",
+                false => arg_str(info.title, "the title")?,
+            };
+            let picture = Picture {
+                title,
+                start: optional_slice(info.start, bodies),
+                end: optional_slice(info.end, bodies),
+                joints: optional_slice(info.joints_created, scene.joints().len()),
+                trajectories: arg_slice(info.trajectories, points, "trajectories")?,
+            };
+            crate::draw::svg(scene, &picture)
+        })
     })
 }
 
@@ -586,13 +686,20 @@ unsafe fn add<T>(
 
 /// # Safety
 /// `items` is NULL (only with `count` 0) or points to `count` readable items.
-unsafe fn arg_slice<'a, T>(items: *const T, count: u32, what: &str) -> Result<&'a [T], Error> {
+unsafe fn arg_slice<'a, T>(items: *const T, count: usize, what: &str) -> Result<&'a [T], Error> {
     match (items.is_null(), count) {
         (true, 0) => Ok(&[]),
         (true, _) => Err(simple_error(Code::NullArgument, &format!("{what} is NULL"))),
         // SAFETY: `count` readable items by the caller's contract.
-        (false, _) => Ok(unsafe { std::slice::from_raw_parts(items, count as usize) }),
+        (false, _) => Ok(unsafe { std::slice::from_raw_parts(items, count) }),
     }
+}
+
+/// # Safety
+/// `items` is NULL or points to `count` readable items.
+unsafe fn optional_slice<'a, T>(items: *const T, count: usize) -> Option<&'a [T]> {
+    // SAFETY: `count` readable items by the caller's contract.
+    (!items.is_null()).then(|| unsafe { std::slice::from_raw_parts(items, count) })
 }
 
 /// Sets the scene's gravity; NULL means none (the host decides).
@@ -661,7 +768,7 @@ pub unsafe extern "C" fn b2s_builder_add_shape(
     // SAFETY: by the caller's contract.
     unsafe {
         add(builder, shape, out_index, error, |b, s| {
-            let vertices = arg_slice(vertices, count, "vertices")?;
+            let vertices = arg_slice(vertices, count as usize, "vertices")?;
             b.add_shape(s, optional_str(s.name, "name")?, vertices)
         })
     }
@@ -704,7 +811,7 @@ pub unsafe extern "C" fn b2s_builder_add_body(
     // SAFETY: by the caller's contract.
     unsafe {
         add(builder, body, out_index, error, |b, body| {
-            let fixtures = arg_slice(fixtures, count, "fixtures")?;
+            let fixtures = arg_slice(fixtures, count as usize, "fixtures")?;
             b.add_body(body, optional_str(body.name, "name")?, fixtures)
         })
     }

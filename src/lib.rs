@@ -20,6 +20,7 @@ mod arena;
 mod builder;
 #[doc(hidden)]
 mod containers;
+pub mod draw;
 mod dump;
 pub mod error;
 pub mod escape;

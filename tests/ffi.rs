@@ -163,6 +163,88 @@ fn a_scene_is_written_to_a_library_owned_text() {
     }
 }
 
+/// `b2s_draw_svg` hands out the library's picture (`tests/draw.rs` says what it holds) for
+/// the poses, flags and samples it is given, and refuses what it cannot read.
+#[test]
+fn a_picture_is_drawn_into_a_library_owned_text() {
+    let (scene, _, _) = load_text(SCENE);
+    let loaded = box2scene::load(SCENE.as_bytes(), &box2scene::LoadOptions::default()).unwrap();
+    let start = [box2scene::draw::Pose::default(); 2];
+    let end = [
+        box2scene::draw::Pose::default(),
+        box2scene::draw::Pose { position: Vec2 { x: 0.0, y: -3.0 }, angle: 1.0 },
+    ];
+    let samples = [
+        Vec2 { x: 0.0, y: 0.0 },
+        Vec2 { x: 0.0, y: 0.0 },
+        Vec2 { x: 0.0, y: 0.0 },
+        Vec2 { x: 0.0, y: -3.0 },
+    ];
+    let created = [false];
+    let title = c"fall";
+    let mut picture = b2s_picture_default();
+    assert!(picture.title.is_null() && picture.start.is_null() && picture.trajectory_samples == 0);
+    picture.title = title.as_ptr();
+    picture.start = start.as_ptr();
+    picture.end = end.as_ptr();
+    picture.joints_created = created.as_ptr();
+    picture.trajectories = samples.as_ptr();
+    picture.trajectory_samples = 2;
+    let expected = box2scene::draw::Picture {
+        title: "fall",
+        start: Some(&start),
+        end: Some(&end),
+        joints: Some(&created),
+        trajectories: &samples,
+    };
+    let mut drawn = null_mut();
+    let mut size = 0usize;
+    let mut error = no_error();
+    unsafe {
+        assert_eq!(b2s_draw_svg(scene, &picture, &mut drawn, &mut size, &mut error), Code::Ok);
+        assert_eq!(text(drawn), box2scene::draw::svg(&loaded, &expected).unwrap());
+        assert_eq!(text(drawn).len(), size);
+        b2s_text_free(drawn);
+
+        // NULL: the default picture, the scene where its file puts every body.
+        assert_eq!(b2s_draw_svg(scene, null(), &mut drawn, null_mut(), null_mut()), Code::Ok);
+        let plain = box2scene::draw::svg(&loaded, &Default::default()).unwrap();
+        assert_eq!(text(drawn), plain);
+        b2s_text_free(drawn);
+
+        picture.trajectories = null();
+        assert_eq!(
+            b2s_draw_svg(scene, &picture, &mut drawn, null_mut(), &mut error),
+            Code::NullArgument
+        );
+        assert!(drawn.is_null());
+        assert_eq!(text(error.message.as_ptr()), "trajectories is NULL");
+        picture.trajectory_samples = usize::MAX;
+        assert_eq!(
+            b2s_draw_svg(scene, &picture, &mut drawn, null_mut(), &mut error),
+            Code::InvalidArgument
+        );
+        assert_eq!(text(error.message.as_ptr()), "trajectory_samples is too large");
+        picture.trajectory_samples = 0;
+        let not_utf8 = [0xFFu8 as c_char, 0];
+        picture.title = not_utf8.as_ptr();
+        assert_eq!(
+            b2s_draw_svg(scene, &picture, &mut drawn, null_mut(), &mut error),
+            Code::InvalidArgument
+        );
+        assert_eq!(text(error.message.as_ptr()), "the title is not valid UTF-8");
+        assert_eq!(
+            b2s_draw_svg(null(), null(), &mut drawn, null_mut(), null_mut()),
+            Code::NullArgument
+        );
+        assert_eq!(
+            b2s_draw_svg(scene, null(), null_mut(), null_mut(), null_mut()),
+            Code::NullArgument
+        );
+        b2s_scene_free(scene);
+    }
+}
+
 #[test]
 #[cfg_attr(miri, ignore = "Miri isolates the process from the file system")]
 fn files_are_loaded_and_written() {

@@ -14,7 +14,6 @@
 
 mod args;
 mod quote;
-mod render;
 mod report;
 
 use std::ffi::OsString;
@@ -22,6 +21,7 @@ use std::fs::File;
 use std::io::{self, Write};
 use std::path::Path;
 
+use box2scene::draw::Picture;
 use box2scene::escape::terminal_text;
 use box2scene::{Checked, Code, Error, LoadOptions, Scene, Severity};
 
@@ -271,9 +271,15 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
 /// Draws the scene to `-o` (replaced as `fmt -o` replaces a file) or standard output.
 fn render(run: &Run, io: &mut Io<'_>) -> Status {
     let loaded = Loaded::read(&run.inputs[0], &run.load, Reading::Load);
-    let svg = match loaded.scene_or_report(io) {
-        Ok(scene) => render::svg(scene),
+    let scene = match loaded.scene_or_report(io) {
+        Ok(scene) => scene,
         Err(status) => return status,
+    };
+    // The scene where its file puts every body, titled with the file's name.
+    let picture = Picture { title: &loaded.name, ..Picture::default() };
+    let svg = match box2scene::draw::svg(scene, &picture) {
+        Ok(svg) => svg,
+        Err(error) => return io.complain(&error.message),
     };
     let Some(out) = &run.out else { return io.emit(&svg) };
     match box2scene::write_file(out, svg.as_bytes()) {

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from typing import Any, Optional, Tuple, Union
+from typing import Any, Optional, Sequence, Tuple, Union
 
 from . import _native
 from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
@@ -88,6 +88,31 @@ class Scene:
     def to_json(self) -> str:
         """Every field of every record as JSON, floats in shortest round-trip form."""
         return self._native.to_json()
+
+    def draw_svg(
+        self,
+        title: str = "",
+        start: "Optional[Sequence[Tuple[float, float, float]]]" = None,
+        end: "Optional[Sequence[Tuple[float, float, float]]]" = None,
+        trajectories: "Sequence[Sequence[Tuple[float, float]]]" = (),
+        joints_created: "Optional[Sequence[bool]]" = None,
+    ) -> str:
+        """The scene drawn as an SVG document, the picture ``box2scene render`` and the
+        examples make (docs/api.md, "Drawing scenes"): where the file puts every body, or
+        where a simulation started (``start``) and ended (``end``), one ``(x, y, angle)`` per
+        body, the start then faint; ``trajectories`` holds samples of one ``(x, y)`` per body
+        each, drawn as paths; ``joints_created`` one flag per joint, False for a joint the
+        host did not create. A pose or point that is not finite is not drawn (a body not
+        created). Raises :class:`Error` (``invalid-argument``) for lists of the wrong
+        length."""
+        points = [point for sample in trajectories for point in sample]
+        return self._native.draw_svg(
+            title,
+            None if start is None else list(start),
+            None if end is None else list(end),
+            None if joints_created is None else list(joints_created),
+            points,
+        )
 
     def find_body(self, name: str) -> Optional[int]:
         """The index of the first body named ``name``, or None."""

@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 use std::sync::Mutex;
 
+use box2scene::draw::{Picture, Pose};
 use box2scene::{
     Body, BodyKind, Builder, Diagnostic, Fixture, Joint, JointKind, LoadOptions, NONE, Scene,
     Shape, ShapeKind, UserData, Vec2, WriteOptions,
@@ -387,6 +388,33 @@ impl NativeScene {
     }
     fn to_json(&self) -> String {
         self.scene.to_json()
+    }
+    /// The library's picture (`box2scene::draw`): poses as (x, y, angle), one per body;
+    /// samples of one point per body each.
+    #[pyo3(signature = (title, start, end, joints_created, trajectories))]
+    fn draw_svg(
+        &self,
+        py: Python<'_>,
+        title: &str,
+        start: Option<Vec<(f32, f32, f32)>>,
+        end: Option<Vec<(f32, f32, f32)>>,
+        joints_created: Option<Vec<bool>>,
+        trajectories: Vec<(f32, f32)>,
+    ) -> PyResult<String> {
+        let poses = |poses: Option<Vec<(f32, f32, f32)>>| {
+            let pose = |(x, y, angle)| Pose { position: Vec2 { x, y }, angle };
+            poses.map(|poses| poses.into_iter().map(pose).collect::<Vec<Pose>>())
+        };
+        let (start, end) = (poses(start), poses(end));
+        let trajectories: Vec<Vec2> = trajectories.into_iter().map(|(x, y)| Vec2 { x, y }).collect();
+        let picture = Picture {
+            title,
+            start: start.as_deref(),
+            end: end.as_deref(),
+            joints: joints_created.as_deref(),
+            trajectories: &trajectories,
+        };
+        box2scene::draw::svg(&self.scene, &picture).map_err(|e| error(py, e))
     }
 }
 

@@ -264,3 +264,22 @@ def test_help_reads_well():
     for words in ("load(source", "class Scene", "class Error", "class Builder", "pyb2d3", "pybox2d"):
         assert words in text, words
     assert box2scene.load.__doc__ and box2scene.Scene.write.__doc__
+
+
+def test_a_scene_is_drawn_as_the_library_draws_it(showcase):
+    """Scene.draw_svg is b2s_draw_svg: the scene where its file puts it, or a run's start,
+    end and paths; lists of the wrong length are the library's invalid-argument."""
+    scene = box2scene.load(showcase)
+    alone = scene.draw_svg("showcase")
+    assert alone.startswith('<?xml version="1.0" encoding="UTF-8"?>\n<svg ')
+    assert "<title>showcase</title>" in alone and '<g class="key">' in alone
+    assert '<g class="start">' in alone and 'class="end"' not in alone
+    lower = [(b.position[0], b.position[1] - 1.0, b.angle) for b in scene.bodies]
+    samples = [[b.position for b in scene.bodies], [(x, y) for x, y, _ in lower]]
+    run = scene.draw_svg(end=lower, trajectories=samples, joints_created=[False] * len(scene.joints))
+    assert '<g class="start" opacity="0.3">' in run and '<g class="end">' in run
+    assert '<g class="paths"' in run and 'class="joints"' not in run
+    with pytest.raises(Error) as raised:
+        scene.draw_svg(end=lower[1:])
+    assert raised.value.code == "invalid-argument"
+    assert raised.value.message == f"end holds {len(lower) - 1} poses for {len(lower)} bodies"
