@@ -1392,14 +1392,15 @@ struct b2s_picture b2s_picture_default(void);
  * bodies, a title and a key; where a host's simulation started and ended, and the path
  * between, when `picture` gives them (NULL: the defaults). Stores the document in
  * `*out_text` as `b2s_write_memory` does (free it with `b2s_text_free`).
- * `B2S_CODE_INVALID_ARGUMENT` when a pointer of `picture` is NULL with a count, or the
- * title is not UTF-8; `*out_text` then stays NULL.
+ * `B2S_CODE_NULL_ARGUMENT` when `trajectories` is NULL with samples;
+ * `B2S_CODE_INVALID_ARGUMENT` when `trajectory_samples` times the body count overflows or
+ * the title is not UTF-8; `*out_text` then stays NULL.
  *
  * # Safety
- * `scene` is NULL or a live scene; `picture` NULL or valid, its `start` and `end` NULL or
- * holding one pose per body of the scene, its `joints_created` NULL or one flag per joint, its `trajectories` NULL or holding
- * `trajectory_samples` times that many points; `out_text` NULL or writable; `out_size`
- * NULL or writable; `error` NULL or writable.
+ * `scene` is NULL or a live scene; `picture` NULL or valid: its `start` and `end` NULL or
+ * one pose per body of the scene, its `joints_created` NULL or one flag per joint, its
+ * `trajectories` NULL or `trajectory_samples` times as many points as bodies; `out_text`
+ * NULL or writable; `out_size` NULL or writable; `error` NULL or writable.
  */
 b2s_code b2s_draw_svg(const struct b2s_scene *scene,
                       const struct b2s_picture *picture,

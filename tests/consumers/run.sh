@@ -278,6 +278,43 @@ check_pkg_config_static() {
   echo "links $(pkg-config --libs box2scene-static)"
 }
 
+# cargo-c installs as docs/install.md says (cargo cinstall from the source tree) the headers
+# and C files cmake --install installs, and the README's C example builds against that
+# prefix with pkg-config and runs. cargo-c is
+# installed once under the build folder, unoptimised (a build of cargo itself: a few minutes;
+# 0.10.24 is the newest that builds with Rust 1.95).
+check_cargo_c() {
+  : "${CARGO:?}"
+  local tools=$BOX2SCENE_BUILD_DIR/tools/cargo-c prefix=$work/cargo-c-prefix folder file cflags
+  if [ ! -x "$tools/bin/cargo-cinstall" ]; then
+    CARGO_TARGET_DIR=$BOX2SCENE_BUILD_DIR/tools/cargo-c-build "$CARGO" install cargo-c \
+      --version 0.10.24 --locked --debug --root "$tools" >"$work/log" 2>&1 ||
+      { cat "$work/log" >&2; fail "cargo-c did not install"; }
+  fi
+  (cd "$BOX2SCENE_SOURCE_DIR" &&
+    PATH=$tools/bin:$PATH CARGO_TARGET_DIR=$BOX2SCENE_BUILD_DIR/cargo-c \
+      "$CARGO" cinstall -p box2scene --release --locked --prefix "$prefix" --libdir lib) \
+    >"$work/log" 2>&1 ||
+    { cat "$work/log" >&2; fail "cargo cinstall failed"; }
+  # The headers and the adapters' C files as cmake --install installs them.
+  for folder in include share/box2scene; do
+    diff -r "$PREFIX/$folder" "$prefix/$folder" >&2 ||
+      fail "cargo cinstall's $folder differs from cmake --install's"
+  done
+  for file in lib/libbox2scene.a "lib/libbox2scene.so.$ABI_VERSION" lib/pkgconfig/box2scene.pc; do
+    [ -e "$prefix/$file" ] || fail "cargo cinstall installed no $file"
+  done
+  export PKG_CONFIG_LIBDIR=$prefix/lib/pkgconfig PKG_CONFIG_PATH=
+  [ "$(pkg-config --modversion box2scene)" = "$VERSION" ] || fail "cargo-c's box2scene.pc: wrong version"
+  cflags=$(pkg-config --cflags box2scene)
+  [ "${cflags% }" = "-I$prefix/include" ] || fail "cargo-c's box2scene.pc gives the flags $cflags"
+  cd "$work/src/c"
+  cc -Wall -Wextra -Werror -o scene_info main.c $(pkg-config --cflags --libs box2scene)
+  expect_shared scene_info
+  LD_LIBRARY_PATH=$prefix/lib expect_output "$c_output" ./scene_info ../scene.xml
+  echo "$("$tools/bin/cargo-cinstall" cinstall --version 2>/dev/null | head -1) installed into a prefix the C example builds against"
+}
+
 check_subdirectory() {
   configure_and_build subdirectory -DBOX2SCENE_SOURCE_DIR="$BOX2SCENE_SOURCE_DIR" \
     -DBOX2SCENE_CARGO_TARGET_DIR="$BOX2SCENE_CARGO_TARGET_DIR"
