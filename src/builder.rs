@@ -11,8 +11,8 @@
 //! load reads in one text, UserData that is not well-formed or nests too deep.
 #![forbid(unsafe_code)]
 
-use crate::LoadOptions;
 use crate::error::{Code, Error, Finding, Parsed, Position, Severity, problem};
+use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
 use crate::scene::{Body, Diagnostic, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};

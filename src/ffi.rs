@@ -12,10 +12,11 @@ use std::path::Path;
 
 use crate::draw::{Picture, Pose};
 use crate::error::{Code, Error, Position};
+use crate::options::{LoadOptions, WriteOptions};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Str};
 use crate::scene::{Diagnostic, NONE, UserData, Vec2};
 use crate::write::write_utf8;
-use crate::{Builder, LoadOptions, WriteOptions, load, load_path, write_path};
+use crate::{Builder, load, load_path, write_path};
 
 // SAFETY: a `Str` points into the string pool of the scene that holds it, which is never
 // mutated after the scene is frozen; sharing or sending it is sharing immutable bytes.

@@ -27,6 +27,7 @@ pub mod escape;
 pub mod ffi;
 mod input;
 mod load;
+mod options;
 mod output;
 mod parse;
 mod resolve;
@@ -42,52 +43,12 @@ use std::path::Path;
 pub use builder::Builder;
 pub use error::{Code, Error, Position, Severity};
 pub use load::Checked;
+pub use options::{LoadOptions, WriteOptions};
 pub use scene::{
     Body, BodyKind, Diagnostic, Dialect, Filter, Fixture, Joint, JointKind, MassData, NONE, Range,
     Scene, Shape, ShapeKind, Str, UserData, Vec2,
 };
-pub use write::{WriteOptions, write};
-
-/// How to load: strictness and the limits of the input. Exceeding a limit is error
-/// `limit-exceeded`, whose message names the limit.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct LoadOptions {
-    /// Largest input accepted, in bytes. Default 1 GiB.
-    pub max_input_bytes: u64,
-    /// Most elements in one file. Default 10 000 000.
-    pub max_elements: u64,
-    /// Longest node, in bytes: a tag (from its `<` to its `>`), a run of text, a CDATA
-    /// section, a comment or a processing instruction (each from its first byte to its
-    /// closing delimiter), and a value joined from several of them. Blank text between
-    /// elements is not held to it. Default 1 MiB.
-    pub max_text_bytes: u64,
-    /// Deepest element nesting. Default 64.
-    pub max_depth: u32,
-    /// Most vertices in one chain shape. Default 100 000.
-    pub max_chain_vertices: u32,
-    /// Every warning becomes an error. Default false.
-    pub strict: bool,
-    /// Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
-    /// 1 MiB or more, in memory or read from its path (on Unix), is read on two threads,
-    /// everything else on the calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
-    /// its warnings and any error are the same however many threads read it.
-    pub threads: u32,
-}
-
-impl Default for LoadOptions {
-    fn default() -> LoadOptions {
-        LoadOptions {
-            max_input_bytes: 1 << 30,
-            max_elements: 10_000_000,
-            max_text_bytes: 1 << 20,
-            max_depth: 64,
-            max_chain_vertices: 100_000,
-            strict: false,
-            threads: 0,
-        }
-    }
-}
+pub use write::write;
 
 /// Loads a scene from the bytes of a file. The result keeps no reference to `bytes`.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {

@@ -10,8 +10,9 @@ use std::path::Path;
 
 use crate::error::{Error, Finding, Severity};
 use crate::input::Source;
+use crate::options::LoadOptions;
 use crate::scene::{Diagnostic, Scene};
-use crate::{LoadOptions, parse, resolve, validate};
+use crate::{parse, resolve, validate};
 
 /// Loads a scene from the bytes of a file.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {

@@ -7,30 +7,14 @@ mod farseer;
 
 use std::fmt::Write as _;
 
-use crate::LoadOptions;
 use crate::containers::Container;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::input::first_non_char;
+use crate::options::{LoadOptions, WriteOptions};
 use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::Object;
 use crate::scene::{Body, BodyKind, Dialect, Filter, Fixture, Joint, JointKind, Kept, NONE};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
-
-/// How to write.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct WriteOptions {
-    /// Write every field of the file's version, even those equal to their defaults.
-    /// Default false: omit them, as the original editor did.
-    pub all_fields: bool,
-    /// Kept so that the struct's layout stays as it was: a write runs on the calling
-    /// thread, whatever this says, as one thread writes faster than a load reads.
-    pub threads: u32,
-    /// The dialect to write: a `b2s_dialect` value, or 0 (the default) for the one the scene
-    /// remembers (that of the file it was loaded from; box2scene's own for a built scene).
-    /// Farseer's dialects write every field, whatever `all_fields` says.
-    pub dialect: u32,
-}
 
 /// Writes `scene` as a Box2Scene file, with no XML declaration (no reader of the format
 /// wants one), in the dialect `options` names or else the one the scene remembers. In

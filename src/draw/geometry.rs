@@ -2,7 +2,7 @@
 //! the labels' places and the bounds of it all, before anything is laid out or written.
 
 use super::{Picture, Pose};
-use crate::{Body, BodyKind, Joint, JointKind, Scene, ShapeKind, Str, Vec2};
+use crate::scene::{Body, BodyKind, Joint, JointKind, Scene, ShapeKind, Str, Vec2};
 
 /// A joint's anchor dot is a fifth of the smaller body it joins (`svg` sets the smallest).
 const ANCHOR_PER_BODY: f64 = 0.2;

@@ -18,7 +18,8 @@
 mod geometry;
 mod svg;
 
-use crate::{Code, Error, Position, Scene, Vec2};
+use crate::error::{Code, Error, Position};
+use crate::scene::{Scene, Vec2};
 use geometry::Drawing;
 
 /// Where a body is: its origin in the world and its angle in radians, as Box2D's

@@ -4,8 +4,8 @@
 use std::fmt::Write;
 
 use super::geometry::{Bounds, Drawing, DrawnBody, Frame, Mark, Point};
-use crate::BodyKind;
 use crate::escape::svg_text;
+use crate::scene::BodyKind;
 
 /// Fill and stroke of a body's shapes by its type (an unknown one as static).
 fn colours(kind: Option<BodyKind>) -> (&'static str, &'static str) {

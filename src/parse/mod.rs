@@ -22,10 +22,10 @@ pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 
 use std::borrow::Cow;
 
-use crate::LoadOptions;
 use crate::arena::Arena;
 use crate::error::{Code, Finding, Parsed, Problem, Spot};
 use crate::input::Source;
+use crate::options::LoadOptions;
 use crate::scene::{Kept, KeptText, Object, Place};
 use crate::text::{self, trim_xml};
 use crate::validate;

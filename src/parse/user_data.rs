@@ -2,9 +2,9 @@
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (docs/format.md, "UserData").
 
 use super::{Node, Reader, Tag, Tokenizer, trim_xml};
-use crate::LoadOptions;
 use crate::error::{Code, Parsed, problem};
 use crate::input::Source;
+use crate::options::LoadOptions;
 use crate::scene::{Str, UserData};
 
 /// Where a UserData is written: inside `<World>`, a container, an item and `<UserData>`.

@@ -1,0 +1,120 @@
+use super::{CHUNK, Pieces, Source, first_non_char};
+use crate::error::Code;
+use crate::options::LoadOptions;
+
+/// A file that grows past the input limit while it is read stops the text after the
+/// last chunk read within the limit.
+#[test]
+fn a_file_that_grows_past_the_limit_stops_the_text() {
+    let path = std::env::temp_dir().join(format!("box2scene-grows-{}.xml", std::process::id()));
+    std::fs::write(&path, "a".repeat(CHUNK + 100)).unwrap();
+    let options = LoadOptions { max_input_bytes: 3 * CHUNK as u64, ..LoadOptions::default() };
+    let mut source = Source::path(&path, &options).unwrap();
+    let mut file = std::fs::OpenOptions::new().append(true).open(&path).unwrap();
+    std::io::Write::write_all(&mut file, "b".repeat(3 * CHUNK).as_bytes()).unwrap();
+    while source.more(source.end()) {}
+    std::fs::remove_file(&path).unwrap();
+    // Three chunks were read within the limit; the fourth passed it.
+    let stop = source.stop().expect("the limit stops the text");
+    assert_eq!((stop.code, stop.at), (Code::LimitExceeded, 3 * CHUNK));
+    assert_eq!(source.end(), 3 * CHUNK);
+}
+
+/// Every character that XML forbids, at every offset of texts of what it allows (plain
+/// lines; tabs and carriage returns; characters past ASCII; those from U+F000 on next
+/// to U+FFFE), is found where a character-by-character look finds it.
+#[test]
+fn first_non_char_finds_what_a_character_by_character_look_finds() {
+    let kinds: [&[&str]; 4] = [
+        &["a\n", "  <b>", "12 "],
+        &["\t", "\r\n", "x"],
+        &["é€", "日本", "\u{10000}", " "],
+        &["\u{EFFF}", "\u{F000}\u{FFFD}", "\u{FEFF}", "\n"],
+    ];
+    let forbidden = ["\0", "\u{1}", "\u{8}", "\u{B}", "\u{C}", "\u{1F}", "\u{FFFE}", "\u{FFFF}"];
+    let by_char = |text: &str| {
+        let non_char = |c| matches!(c, '\0'..='\u{8}' | '\u{B}' | '\u{C}' | '\u{E}'..='\u{1F}' | '\u{FFFE}' | '\u{FFFF}');
+        text.char_indices().find(|&(_, c)| non_char(c)).map(|(at, _)| at)
+    };
+    for pieces in kinds {
+        let clean: String = (0..100).map(|i| pieces[i % pieces.len()]).collect();
+        assert_eq!(first_non_char(clean.as_bytes()), None);
+        for at in (0..=clean.len()).filter(|&at| clean.is_char_boundary(at)) {
+            for bad in forbidden {
+                let text = format!("{}{bad}{}", &clean[..at], &clean[at..]);
+                assert_eq!(by_char(&text), Some(at));
+                assert_eq!(first_non_char(text.as_bytes()), Some(at), "{bad:?} at {at}");
+            }
+        }
+    }
+}
+
+/// A text in memory is checked a chunk at a time as it is read (the longer the text
+/// kept, the more at once): the text at hand stops before the first character XML does
+/// not allow, or the first byte that is not UTF-8, whichever comes first, and only
+/// once it is reached; a piece is a text only when it is checked all through.
+#[test]
+fn a_text_in_memory_is_checked_as_it_is_read() {
+    let text = "a".repeat(5 * CHUNK);
+    let options = LoadOptions::default();
+    let read_keeping = |bytes: &[u8], all: bool| {
+        let mut source = Source::memory(bytes, &options).unwrap();
+        assert_eq!(source.end(), CHUNK.min(bytes.len()));
+        let mut ends = vec![source.end()];
+        while source.more(if all { 0 } else { source.end() }) {
+            ends.push(source.end());
+        }
+        let stop = source.stop().map(|s| (s.code, s.at));
+        (ends, stop)
+    };
+    let read = |bytes: &[u8]| read_keeping(bytes, false);
+    assert_eq!(read(text.as_bytes()), ((1..=5).map(|k| k * CHUNK).collect(), None));
+    let doubling = vec![CHUNK, 2 * CHUNK, 4 * CHUNK, 5 * CHUNK];
+    assert_eq!(read_keeping(text.as_bytes(), true), (doubling, None));
+    let mut bytes = text.clone().into_bytes();
+    bytes[4 * CHUNK + 9] = 0x01;
+    let ends = vec![CHUNK, 2 * CHUNK, 3 * CHUNK, 4 * CHUNK, 4 * CHUNK + 9];
+    assert_eq!(read(&bytes), (ends, Some((Code::MalformedXml, 4 * CHUNK + 9))));
+    bytes[4 * CHUNK + 10] = 0xFF;
+    assert_eq!(read(&bytes).1, Some((Code::MalformedXml, 4 * CHUNK + 9)));
+    bytes[3 * CHUNK] = 0xFF;
+    assert_eq!(read(&bytes).1, Some((Code::InvalidUtf8, 3 * CHUNK)));
+    bytes[3 * CHUNK] = 0;
+    assert_eq!(read(&bytes).1, Some((Code::NulByte, 3 * CHUNK)));
+
+    let mut bytes = text.into_bytes();
+    bytes[2 * CHUNK] = 0x0B;
+    let source = Source::memory(&bytes, &options).unwrap();
+    let pieces = source.pieces().expect("a text in memory has pieces");
+    let mut buffer = Vec::new();
+    assert!(pieces.source(CHUNK, 2 * CHUNK, &mut buffer).is_some());
+    assert!(pieces.source(2 * CHUNK, 3 * CHUNK, &mut buffer).is_none());
+    assert!(pieces.source(2 * CHUNK + 1, 3 * CHUNK, &mut buffer).is_some());
+}
+
+/// The second thread reads the file the first one opened, even when another file has
+/// been renamed over its path since (as editors save).
+#[cfg(unix)]
+#[test]
+fn pieces_of_a_file_come_from_the_file_opened_not_its_path() {
+    let dir = std::env::temp_dir();
+    let (path, other) = (
+        dir.join(format!("box2scene-pieces-{}.xml", std::process::id())),
+        dir.join(format!("box2scene-pieces-{}-new.xml", std::process::id())),
+    );
+    let text = |c: &str| format!("<World>{}</World>", c.repeat(200_000));
+    std::fs::write(&path, text("a")).unwrap();
+    std::fs::write(&other, text("b")).unwrap();
+    let options = LoadOptions::default();
+    let source = Source::path(&path, &options).unwrap();
+    std::fs::rename(&other, &path).unwrap();
+    let Some(pieces @ Pieces::File { .. }) = source.pieces() else {
+        panic!("a UTF-8 file being read has pieces")
+    };
+    assert_eq!(pieces.len(), text("a").len());
+    assert_eq!(&*pieces.bytes(150_000, 150_004).unwrap(), b"aaaa");
+    let mut buffer = Vec::new();
+    let piece = pieces.source(100_000, 100_010, &mut buffer).unwrap();
+    assert_eq!(piece.slice(100_000, 100_010), "aaaaaaaaaa");
+    std::fs::remove_file(&path).unwrap();
+}
