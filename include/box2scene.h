@@ -543,45 +543,18 @@ typedef struct b2s_builder b2s_builder;
 typedef struct b2s_scene b2s_scene;
 
 /**
- * How to load: strictness and the limits of the input. Exceeding a limit is error
- * `limit-exceeded`, whose message names the limit.
+ * A 2D vector. Units depend on the field (metres, m/s, ...).
  */
-typedef struct b2s_load_options {
+typedef struct b2s_vec2 {
   /**
-   * Largest input accepted, in bytes. Default 1 GiB.
+   * The first component.
    */
-  uint64_t max_input_bytes;
+  float x;
   /**
-   * Most elements in one file. Default 10 000 000.
+   * The second component.
    */
-  uint64_t max_elements;
-  /**
-   * Longest node, in bytes: a tag (from its `<` to its `>`), a run of text, a CDATA
-   * section, a comment or a processing instruction (each from its first byte to its
-   * closing delimiter), and a value joined from several of them. Blank text between
-   * elements is not held to it. Default 1 MiB.
-   */
-  uint64_t max_text_bytes;
-  /**
-   * Deepest element nesting. Default 64.
-   */
-  uint32_t max_depth;
-  /**
-   * Most vertices in one chain shape. Default 100 000.
-   */
-  uint32_t max_chain_vertices;
-  /**
-   * Every warning becomes an error. Default false.
-   */
-  bool strict;
-  /**
-   * Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
-   * 1 MiB or more, in memory or read from its path (on Unix), is read on two threads,
-   * everything else on the calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
-   * its warnings and any error are the same however many threads read it.
-   */
-  uint32_t threads;
-} b2s_load_options;
+  float y;
+} b2s_vec2;
 
 /**
  * Why a call failed. Owned by the caller; filled by the library when a call fails.
@@ -616,18 +589,24 @@ typedef struct b2s_error {
 typedef const char *b2s_str;
 
 /**
- * A 2D vector. Units depend on the field (metres, m/s, ...).
+ * Application data attached to a fixture, body or joint, never interpreted.
  */
-typedef struct b2s_vec2 {
+typedef struct b2s_user_data {
   /**
-   * The first component.
+   * The exact XML between `<UserData>` and `</UserData>`, entities not decoded.
    */
-  float x;
+  b2s_str raw;
   /**
-   * The second component.
+   * The `Type` text when the content has the editor's form, whatever the type
+   * (`System.String`, or a program's own class such as `Game.Payload, Game`), else NULL.
    */
-  float y;
-} b2s_vec2;
+  b2s_str type_name;
+  /**
+   * The text of the `Value` element's single child in the editor's form when that child
+   * holds only text (`Ground`), else NULL (an object's fields are in `raw`).
+   */
+  b2s_str value;
+} b2s_user_data;
 
 /**
  * A run of `count` consecutive items of a pool, starting at index `first`. An empty run
@@ -1018,24 +997,45 @@ typedef struct b2s_joint {
 } b2s_joint;
 
 /**
- * Application data attached to a fixture, body or joint, never interpreted.
+ * How to load: strictness and the limits of the input. Exceeding a limit is error
+ * `limit-exceeded`, whose message names the limit.
  */
-typedef struct b2s_user_data {
+typedef struct b2s_load_options {
   /**
-   * The exact XML between `<UserData>` and `</UserData>`, entities not decoded.
+   * Largest input accepted, in bytes. Default 1 GiB.
    */
-  b2s_str raw;
+  uint64_t max_input_bytes;
   /**
-   * The `Type` text when the content has the editor's form, whatever the type
-   * (`System.String`, or a program's own class such as `Game.Payload, Game`), else NULL.
+   * Most elements in one file. Default 10 000 000.
    */
-  b2s_str type_name;
+  uint64_t max_elements;
   /**
-   * The text of the `Value` element's single child in the editor's form when that child
-   * holds only text (`Ground`), else NULL (an object's fields are in `raw`).
+   * Longest node, in bytes: a tag (from its `<` to its `>`), a run of text, a CDATA
+   * section, a comment or a processing instruction (each from its first byte to its
+   * closing delimiter), and a value joined from several of them. Blank text between
+   * elements is not held to it. Default 1 MiB.
    */
-  b2s_str value;
-} b2s_user_data;
+  uint64_t max_text_bytes;
+  /**
+   * Deepest element nesting. Default 64.
+   */
+  uint32_t max_depth;
+  /**
+   * Most vertices in one chain shape. Default 100 000.
+   */
+  uint32_t max_chain_vertices;
+  /**
+   * Every warning becomes an error. Default false.
+   */
+  bool strict;
+  /**
+   * Threads one load may use. 0 (the default) lets box2scene choose: a UTF-8 file of
+   * 1 MiB or more, in memory or read from its path (on Unix), is read on two threads,
+   * everything else on the calling thread. 1 never starts a thread; more than 2 is read as 2. The scene,
+   * its warnings and any error are the same however many threads read it.
+   */
+  uint32_t threads;
+} b2s_load_options;
 
 /**
  * A warning attached to a loaded scene.
@@ -1236,6 +1236,160 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * A new, empty scene builder. Never NULL.
+ */
+struct b2s_builder *b2s_builder_new(void);
+
+/**
+ * Abandons a builder and everything added to it. NULL is ignored.
+ *
+ * # Safety
+ * `builder` is NULL or a builder that was not finished or freed yet.
+ */
+void b2s_builder_free(struct b2s_builder *builder);
+
+/**
+ * Sets the scene's gravity; NULL means none (the host decides).
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `gravity` NULL or valid; `error` NULL or writable.
+ */
+b2s_code b2s_builder_set_gravity(struct b2s_builder *builder,
+                                 const struct b2s_vec2 *gravity,
+                                 struct b2s_error *error);
+
+/**
+ * Adds user data; stores its index in `*out_index` (when not NULL), for the `user_data`
+ * field of fixtures, bodies and joints added later. `raw` (XML content, kept verbatim)
+ * wins; without it, `type_name` and `value` are written in the editor's form. The
+ * stored `type_name` and `value` are those the loader would find in the raw XML.
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `user_data` NULL or valid, its strings NULL or
+ * NUL-terminated; `out_index` and `error` NULL or writable.
+ */
+b2s_code b2s_builder_add_user_data(struct b2s_builder *builder,
+                                   const struct b2s_user_data *user_data,
+                                   uint32_t *out_index,
+                                   struct b2s_error *error);
+
+/**
+ * Adds a shape (its `name` is copied; its `vertices` range is ignored: the `count`
+ * vertices at `vertices` are copied instead) and stores its index in `*out_index`.
+ * Refused with the loader's codes (`bad-radius`, `bad-vertex-count`,
+ * `degenerate-polygon`, ...); the message names the shape's index.
+ *
+ * # Safety
+ * `builder` is NULL or a live builder; `shape` NULL or valid, its name NULL or
+ * NUL-terminated; `vertices` NULL (with `count` 0) or `count` readable vectors;
+ * `out_index` and `error` NULL or writable.
+ */
+b2s_code b2s_builder_add_shape(struct b2s_builder *builder,
+                               const struct b2s_shape *shape,
+                               const struct b2s_vec2 *vertices,
+                               uint32_t count,
+                               uint32_t *out_index,
+                               struct b2s_error *error);
+
+/**
+ * Adds a fixture on a shape added before; stores its index in `*out_index`.
+ *
+ * # Safety
+ * As for `b2s_builder_add_shape`, without vertices.
+ */
+b2s_code b2s_builder_add_fixture(struct b2s_builder *builder,
+                                 const struct b2s_fixture *fixture,
+                                 uint32_t *out_index,
+                                 struct b2s_error *error);
+
+/**
+ * Adds a body (its `fixtures` range is ignored: the `count` fixture indices at
+ * `fixtures` are copied instead, each of a fixture added before); stores its index.
+ *
+ * # Safety
+ * As for `b2s_builder_add_shape`, with `fixtures` NULL (with `count` 0) or `count`
+ * readable indices.
+ */
+b2s_code b2s_builder_add_body(struct b2s_builder *builder,
+                              const struct b2s_body *body,
+                              const uint32_t *fixtures,
+                              uint32_t count,
+                              uint32_t *out_index,
+                              struct b2s_error *error);
+
+/**
+ * Adds a joint between bodies added before (a gear: after the two joints it couples);
+ * stores its index. Fields its kind does not have take that kind's defaults.
+ *
+ * # Safety
+ * As for `b2s_builder_add_fixture`.
+ */
+b2s_code b2s_builder_add_joint(struct b2s_builder *builder,
+                               const struct b2s_joint *joint,
+                               uint32_t *out_index,
+                               struct b2s_error *error);
+
+/**
+ * Finishes the builder into an ordinary immutable scene, stored in `*out_scene` (free it
+ * with `b2s_scene_free`). The builder is freed in every case.
+ *
+ * # Safety
+ * `builder` is NULL or a builder that was not finished or freed yet; `out_scene` NULL or
+ * writable; `error` NULL or writable.
+ */
+b2s_code b2s_builder_finish(struct b2s_builder *builder,
+                            struct b2s_scene **out_scene,
+                            struct b2s_error *error);
+
+/**
+ * Writes into `*out` a shape of `kind` with every field at its default. Returns
+ * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT` for a NULL
+ * `out`.
+ *
+ * # Safety
+ * `out` is NULL or writable.
+ */
+b2s_code b2s_shape_default(b2s_shape_kind kind, struct b2s_shape *out);
+
+/**
+ * Writes into `*out` a fixture with every field at its default.
+ *
+ * # Safety
+ * `out` is NULL or writable.
+ */
+b2s_code b2s_fixture_default(struct b2s_fixture *out);
+
+/**
+ * Writes into `*out` a body of `kind` with every field at its default. Returns
+ * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
+ *
+ * # Safety
+ * `out` is NULL or writable.
+ */
+b2s_code b2s_body_default(b2s_body_kind kind, struct b2s_body *out);
+
+/**
+ * Writes into `*out` a joint of `kind` with every field at the default of that kind
+ * (`docs/format.md` lists them). Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
+ *
+ * # Safety
+ * `out` is NULL or writable.
+ */
+b2s_code b2s_joint_default(b2s_joint_kind kind, struct b2s_joint *out);
+
+/**
+ * The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the
+ * header it was built with). Static storage.
+ */
+const char *b2s_version(void);
+
+/**
+ * The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"` for a number
+ * that is no code (so it takes any integer, not only a `b2s_code`). Static storage.
+ */
+const char *b2s_code_name(uint32_t code);
+
+/**
  * The load options with every field at its default (the limits of `docs/format.md`,
  * strict off, threads chosen by box2scene). Start from this and change what you need.
  */
@@ -1407,160 +1561,6 @@ b2s_code b2s_draw_svg(const struct b2s_scene *scene,
                       char **out_text,
                       size_t *out_size,
                       struct b2s_error *error);
-
-/**
- * A new, empty scene builder. Never NULL.
- */
-struct b2s_builder *b2s_builder_new(void);
-
-/**
- * Abandons a builder and everything added to it. NULL is ignored.
- *
- * # Safety
- * `builder` is NULL or a builder that was not finished or freed yet.
- */
-void b2s_builder_free(struct b2s_builder *builder);
-
-/**
- * Sets the scene's gravity; NULL means none (the host decides).
- *
- * # Safety
- * `builder` is NULL or a live builder; `gravity` NULL or valid; `error` NULL or writable.
- */
-b2s_code b2s_builder_set_gravity(struct b2s_builder *builder,
-                                 const struct b2s_vec2 *gravity,
-                                 struct b2s_error *error);
-
-/**
- * Adds user data; stores its index in `*out_index` (when not NULL), for the `user_data`
- * field of fixtures, bodies and joints added later. `raw` (XML content, kept verbatim)
- * wins; without it, `type_name` and `value` are written in the editor's form. The
- * stored `type_name` and `value` are those the loader would find in the raw XML.
- *
- * # Safety
- * `builder` is NULL or a live builder; `user_data` NULL or valid, its strings NULL or
- * NUL-terminated; `out_index` and `error` NULL or writable.
- */
-b2s_code b2s_builder_add_user_data(struct b2s_builder *builder,
-                                   const struct b2s_user_data *user_data,
-                                   uint32_t *out_index,
-                                   struct b2s_error *error);
-
-/**
- * Adds a shape (its `name` is copied; its `vertices` range is ignored: the `count`
- * vertices at `vertices` are copied instead) and stores its index in `*out_index`.
- * Refused with the loader's codes (`bad-radius`, `bad-vertex-count`,
- * `degenerate-polygon`, ...); the message names the shape's index.
- *
- * # Safety
- * `builder` is NULL or a live builder; `shape` NULL or valid, its name NULL or
- * NUL-terminated; `vertices` NULL (with `count` 0) or `count` readable vectors;
- * `out_index` and `error` NULL or writable.
- */
-b2s_code b2s_builder_add_shape(struct b2s_builder *builder,
-                               const struct b2s_shape *shape,
-                               const struct b2s_vec2 *vertices,
-                               uint32_t count,
-                               uint32_t *out_index,
-                               struct b2s_error *error);
-
-/**
- * Adds a fixture on a shape added before; stores its index in `*out_index`.
- *
- * # Safety
- * As for `b2s_builder_add_shape`, without vertices.
- */
-b2s_code b2s_builder_add_fixture(struct b2s_builder *builder,
-                                 const struct b2s_fixture *fixture,
-                                 uint32_t *out_index,
-                                 struct b2s_error *error);
-
-/**
- * Adds a body (its `fixtures` range is ignored: the `count` fixture indices at
- * `fixtures` are copied instead, each of a fixture added before); stores its index.
- *
- * # Safety
- * As for `b2s_builder_add_shape`, with `fixtures` NULL (with `count` 0) or `count`
- * readable indices.
- */
-b2s_code b2s_builder_add_body(struct b2s_builder *builder,
-                              const struct b2s_body *body,
-                              const uint32_t *fixtures,
-                              uint32_t count,
-                              uint32_t *out_index,
-                              struct b2s_error *error);
-
-/**
- * Adds a joint between bodies added before (a gear: after the two joints it couples);
- * stores its index. Fields its kind does not have take that kind's defaults.
- *
- * # Safety
- * As for `b2s_builder_add_fixture`.
- */
-b2s_code b2s_builder_add_joint(struct b2s_builder *builder,
-                               const struct b2s_joint *joint,
-                               uint32_t *out_index,
-                               struct b2s_error *error);
-
-/**
- * Finishes the builder into an ordinary immutable scene, stored in `*out_scene` (free it
- * with `b2s_scene_free`). The builder is freed in every case.
- *
- * # Safety
- * `builder` is NULL or a builder that was not finished or freed yet; `out_scene` NULL or
- * writable; `error` NULL or writable.
- */
-b2s_code b2s_builder_finish(struct b2s_builder *builder,
-                            struct b2s_scene **out_scene,
-                            struct b2s_error *error);
-
-/**
- * Writes into `*out` a shape of `kind` with every field at its default. Returns
- * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind, `B2S_CODE_NULL_ARGUMENT` for a NULL
- * `out`.
- *
- * # Safety
- * `out` is NULL or writable.
- */
-b2s_code b2s_shape_default(b2s_shape_kind kind, struct b2s_shape *out);
-
-/**
- * Writes into `*out` a fixture with every field at its default.
- *
- * # Safety
- * `out` is NULL or writable.
- */
-b2s_code b2s_fixture_default(struct b2s_fixture *out);
-
-/**
- * Writes into `*out` a body of `kind` with every field at its default. Returns
- * `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
- *
- * # Safety
- * `out` is NULL or writable.
- */
-b2s_code b2s_body_default(b2s_body_kind kind, struct b2s_body *out);
-
-/**
- * Writes into `*out` a joint of `kind` with every field at the default of that kind
- * (`docs/format.md` lists them). Returns `B2S_CODE_INVALID_ARGUMENT` for an unknown kind.
- *
- * # Safety
- * `out` is NULL or writable.
- */
-b2s_code b2s_joint_default(b2s_joint_kind kind, struct b2s_joint *out);
-
-/**
- * The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the
- * header it was built with). Static storage.
- */
-const char *b2s_version(void);
-
-/**
- * The kebab-case name of a code (`"id-out-of-range"`), or `"unknown-code"` for a number
- * that is no code (so it takes any integer, not only a `b2s_code`). Static storage.
- */
-const char *b2s_code_name(uint32_t code);
 
 #ifdef __cplusplus
 }  // extern "C"
