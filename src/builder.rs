@@ -12,13 +12,13 @@
 #![forbid(unsafe_code)]
 
 use crate::error::{Code, Error, Finding, Parsed, Position, Severity, problem};
+use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
 use crate::scene::{Body, Diagnostic, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
 use crate::text::trim_xml;
 use crate::validate;
-use crate::write::{escape, needs_version_2, writable_text};
 
 /// A scene under construction. Objects refer to objects added before them.
 #[derive(Default)]

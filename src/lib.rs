@@ -25,6 +25,7 @@ mod dump;
 pub mod error;
 pub mod escape;
 pub mod ffi;
+mod holds;
 mod input;
 mod load;
 mod options;

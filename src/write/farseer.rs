@@ -6,8 +6,9 @@
 //! engines' element order, and nothing they cannot tokenise; what they cannot hold is refused
 //! with an error naming the object.
 
-use super::{escaped, integer_text, push_float};
+use super::numbers::{integer_text, push_float};
 use crate::error::{Code, Error, Position};
+use crate::holds::escaped;
 use crate::resolve::local_axis;
 use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, Object, Place};
 use crate::scene::{Scene, Shape, ShapeKind, Vec2};
