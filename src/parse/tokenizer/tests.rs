@@ -1,4 +1,5 @@
-use super::{Attr, Name, Source, Tag, Tokenizer, plain_attributes};
+use super::values::plain_attributes;
+use super::{Attr, Name, Source, Tag, Tokenizer};
 use crate::options::LoadOptions;
 
 fn read(attrs: &[Attr]) -> Vec<(String, String, usize)> {
@@ -48,7 +49,7 @@ fn first_equal_flags_the_first_equal_byte_first() {
             state ^= state << 17;
             let bytes: [u8; 8] = std::array::from_fn(|i| near[(state >> (6 * i)) as usize % 10]);
             let expected = bytes.iter().position(|&x| x == b);
-            let mask = super::first_equal(u64::from_le_bytes(bytes), b);
+            let mask = super::bytes::first_equal(u64::from_le_bytes(bytes), b);
             let found = (mask != 0).then(|| (mask.trailing_zeros() / 8) as usize);
             assert_eq!(found, expected, "{bytes:02x?} looking for {b:#04x}");
         }
@@ -73,7 +74,11 @@ fn space_len_and_trimmed_span_agree_with_xml_white_space() {
                 text.extend_from_slice(pieces[if pick < 8 { pick % 4 } else { pick - 7 }]);
             }
             assert_eq!(super::space_len(&text), crate::text::leading_space(&text), "{text:?}");
-            assert_eq!(super::trimmed_span(&text), crate::text::trimmed_span(&text), "{text:?}");
+            assert_eq!(
+                super::bytes::trimmed_span(&text),
+                crate::text::trimmed_span(&text),
+                "{text:?}"
+            );
         }
     }
 }

@@ -1,0 +1,675 @@
+//! The tokenizer: a pull reader of markup over the decoded text (whole, or a window moving
+//! over a streamed file). It enforces the limits, counts lines as it goes, and hands whole
+//! elements, values and attributes to the reader; it builds nothing.
+//!
+//! The usual markup is read here: tags with short names and plain `name="value"`
+//! attributes, values followed by their end tag. Anything else goes to quick-xml: its
+//! element parser finds where a tag ends when the text at hand does not show it, its
+//! attribute iterator reads and checks the other attributes, its reference and declaration
+//! types resolve entities and read the XML declaration, and its errors are the messages.
+//! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
+//! again; the text here was checked once by its source, and slices of it at ASCII markup
+//! are text by construction.
+#![forbid(unsafe_code)]
+
+use std::borrow::Cow;
+
+use quick_xml::errors::{IllFormedError, SyntaxError};
+use quick_xml::events::{BytesDecl, BytesStart};
+use quick_xml::parser::{ElementParser, Parser as _};
+
+use super::lines::{Cursor, Lines};
+use super::names::{Name, SHORT};
+use crate::error::{Code, Parsed, Position, Problem, problem};
+use crate::input::Source;
+use crate::options::LoadOptions;
+use crate::text::{self};
+
+mod bytes;
+mod pieces;
+mod values;
+
+use bytes::{ENDS_NAME, find3, space_len};
+use values::resolve_text;
+pub(super) use values::verbatim;
+
+#[cfg(test)]
+mod tests;
+
+/// How a reading stops where its text ends before an item (see
+/// [`Tokenizer::end_before`]): not a finding of the file, so it has the code of none.
+#[cold]
+pub(super) fn end_of_piece() -> Problem {
+    problem(Code::Ok, 0, "the reading ends before an item here")
+}
+
+/// Whether a reading stopped with [`end_of_piece`].
+pub(super) fn is_end_of_piece(problem: &Problem) -> bool {
+    problem.code == Code::Ok
+}
+
+#[cold]
+fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
+    problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
+}
+
+/// A start tag (`<Name ...>` or `<Name .../>`) and where it begins. It owns what it needs,
+/// so it outlives the text window it was read from.
+pub(super) struct Tag {
+    pub name: Name,
+    /// What lies between `<` and `>` (or `/>`), when the tag has more than its name.
+    content: Option<Box<str>>,
+    /// Offset of its `<`.
+    pub at: usize,
+    /// `<Name/>`: it has no children and no text.
+    pub empty: bool,
+}
+
+impl Tag {
+    /// A start tag with its name alone, open: as a reading that goes on from inside the
+    /// element assumes it.
+    pub fn item(name: Name, at: usize) -> Tag {
+        Tag { name, content: None, at, empty: false }
+    }
+
+    /// A tag that names no element, for a reader's loop to read its children into (see
+    /// [`Tokenizer::child`]).
+    pub fn slot() -> Tag {
+        Tag { name: Name::Short(0, [0; SHORT]), content: None, at: 0, empty: true }
+    }
+
+    pub fn name(&self) -> &str {
+        self.name.as_str()
+    }
+
+    /// Names compare case-insensitively (spec section 2).
+    #[inline]
+    pub fn is(&self, name: &str) -> bool {
+        self.name.key() == super::names::key(name)
+    }
+}
+
+/// A piece of text: a range of the decoded text, or its resolved form when it held
+/// references or carriage returns. Read it with [`Tokenizer::text_of`] before the next node.
+pub(super) struct Text {
+    pub at: usize,
+    end: usize,
+    resolved: Option<Resolved>,
+}
+
+impl Text {
+    /// Its text, from `source` when it is a range of it.
+    fn read<'t>(&'t self, source: &'t Source) -> &'t str {
+        match &self.resolved {
+            Some(resolved) => &resolved.text,
+            None => source.slice(self.at, self.end),
+        }
+    }
+
+    /// Where the character at `offset` of its text is written in the file's text.
+    fn written_at(&self, offset: usize) -> usize {
+        match &self.resolved {
+            Some(resolved) => resolved.written_at(self.at, offset),
+            None => self.at + offset,
+        }
+    }
+}
+
+/// Text that is not as written: its references resolved, its line ends normalised, or
+/// pieces written apart (around a comment, as CDATA) joined.
+#[derive(Default)]
+pub(super) struct Resolved {
+    text: String,
+    /// Where its pieces are written, for positions in messages: at each offset of `text`
+    /// listed, the offset in the file's text it was read from, and from there on one byte
+    /// for one up to the next listed (from the text's start, one for one from where it is).
+    written: Vec<(usize, usize)>,
+}
+
+impl Resolved {
+    /// Where the character at `offset` of the text, which starts at `at`, is written.
+    fn written_at(&self, at: usize, offset: usize) -> usize {
+        let after = self.written.partition_point(|&(piece, _)| piece <= offset);
+        let (piece, from) = after.checked_sub(1).map_or((0, at), |last| self.written[last]);
+        from + (offset - piece)
+    }
+
+    /// Appends `text`, written from `at` on.
+    fn push(&mut self, text: &str, at: usize) {
+        self.written.push((self.text.len(), at));
+        self.text.push_str(text);
+    }
+
+    /// Appends `other`, whose text starts at `at`.
+    fn append(&mut self, other: &Resolved, at: usize) {
+        let base = self.text.len();
+        self.push(&other.text, at);
+        self.written.extend(other.written.iter().map(|&(piece, from)| (base + piece, from)));
+    }
+
+    /// Keeps the text from `start` to `end` only (white space trimmed).
+    fn keep(&mut self, start: usize, end: usize) {
+        self.text.truncate(end);
+        self.text.drain(..start);
+        self.written.retain(|&(piece, _)| piece > start);
+        for (piece, _) in &mut self.written {
+            *piece -= start;
+        }
+    }
+}
+
+/// The trimmed text of a value element and the offset of its first character. Read it
+/// with [`Tokenizer::text_of`] before the next node.
+pub(super) struct Value {
+    pub text: Text,
+    pub at: usize,
+}
+
+/// An attribute of a [`Tag`], borrowed from it: lowercase comparisons go through
+/// [`Attr::is`].
+pub(super) struct Attr<'t> {
+    pub key: &'t str,
+    pub value: Cow<'t, str>,
+    pub at: usize,
+}
+
+impl Attr<'_> {
+    /// Whether the attribute is named `name`, in any case. Inlined: it is called with a
+    /// literal name, against which the comparison folds.
+    #[inline]
+    pub fn is(&self, name: &str) -> bool {
+        self.key.eq_ignore_ascii_case(name)
+    }
+}
+
+pub(super) enum Node {
+    Open(Tag),
+    Text(Text),
+    /// An end tag, at the offset of its `<`.
+    Close(usize),
+    Eof,
+}
+
+/// The reader of markup: where it is in the text, which elements are open, and the
+/// comments it passed since the reader last took them.
+pub(super) struct Tokenizer<'a> {
+    source: Source<'a>,
+    options: &'a LoadOptions,
+    /// The tokenizer's offset: the next node starts here.
+    pos: usize,
+    /// Where the node being read and the one before it began: the text from the one
+    /// before on stays at hand, so a value can be read after the end tag that ends it.
+    started: usize,
+    last: usize,
+    /// Set while text is kept verbatim (UserData, an unknown element, a Farseer-only
+    /// joint, one inside another): the text from the first on stays at hand.
+    pins: Vec<usize>,
+    /// The comments read since the reader last took them, as spans of the text (which
+    /// stay at hand until then).
+    comments: Vec<(usize, usize)>,
+    /// The open elements, outermost first, with the offsets of their start tags: the text
+    /// of the third (an item of a world container, an object) stays at hand while it is
+    /// open, so that its offsets can be placed until it ends.
+    open: Vec<(Name, usize)>,
+    elements: u64,
+    /// Lines and columns, counted over the text as it is passed.
+    lines: Lines,
+    /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
+    /// items' offsets in order, with the names of the containers they are assumed to be
+    /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
+    /// none), where the text at hand ends.
+    ends: Vec<(usize, Name)>,
+    next_end: usize,
+    end_at: usize,
+}
+
+/// Where a tokenizer stopped, for another to go on from there (see [`Tokenizer::resume`]).
+pub(super) struct Stop {
+    pos: usize,
+    started: usize,
+    last: usize,
+    open: Vec<(Name, usize)>,
+    elements: u64,
+    /// The position of `pos`, counted from where the tokenizer started, when it placed
+    /// what it found as it read; None for a text that stays in memory, whose findings are
+    /// placed once the whole is read.
+    end: Option<Position>,
+}
+
+impl Stop {
+    /// The elements the tokenizer read.
+    pub fn elements(&self) -> u64 {
+        self.elements
+    }
+
+    /// The position where it stopped, counted from where it started, when it placed what
+    /// it found as it read.
+    pub fn end(&self) -> Option<Position> {
+        self.end
+    }
+}
+
+impl<'a> Tokenizer<'a> {
+    pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
+        let lines = Lines::new(source.encoding(), Cursor::start(source.base()));
+        Tokenizer {
+            source,
+            options,
+            pos: 0,
+            started: 0,
+            last: 0,
+            pins: Vec::new(),
+            comments: Vec::new(),
+            open: Vec::new(),
+            elements: 0,
+            lines,
+            ends: Vec::new(),
+            next_end: 0,
+            end_at: usize::MAX,
+        }
+    }
+
+    pub fn options(&self) -> &LoadOptions {
+        self.options
+    }
+
+    // ---- the tokenizer
+
+    /// The text at hand from offset `from` on (empty when `from` is past it).
+    #[inline(always)]
+    fn rest(&self, from: usize) -> &[u8] {
+        let text = self.source.text().as_bytes();
+        text.get(from - self.source.base()..).unwrap_or_default()
+    }
+
+    /// Reads more text, keeping what the current node and the last one need. Ok(false)
+    /// at the end of the file; the problem that ends the text early, when that is why;
+    /// [`end_of_piece`] where the reading ends before an item (see
+    /// [`Tokenizer::end_before`]).
+    fn more(&mut self) -> Parsed<bool> {
+        let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
+            .into_iter()
+            .flatten()
+            .fold(self.last, |keep, &at| keep.min(at));
+        let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
+        // A text in memory stays at hand: nothing is let go, so nothing is counted yet.
+        if !self.source.is_whole() {
+            self.lines.release(self.source.text(), self.source.base(), keep);
+        }
+        let end = self.source.end();
+        while !self.source.more(keep) {
+            if self.source.end() != self.end_at {
+                return match self.source.stop() {
+                    Some(stop) => Err(Box::new(stop.clone())),
+                    None => Ok(false),
+                };
+            }
+            if self.pos == self.end_at && self.may_end() {
+                return Err(end_of_piece());
+            }
+            self.pass_end();
+            // A text in memory is at hand past the end at once.
+            if self.source.end() > end {
+                break;
+            }
+        }
+        Ok(true)
+    }
+
+    /// Whether the reading, at the next end, may end there: directly in the container
+    /// assumed, in the root, with nothing read waiting for the reader (text kept
+    /// verbatim, comments, which would go before the item).
+    fn may_end(&self) -> bool {
+        let container = &self.ends[self.next_end].1;
+        matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes())
+            && self.pins.is_empty()
+            && self.comments.is_empty()
+    }
+
+    /// The offset at which `find` first succeeds on the text from `from` on, reading more
+    /// as needed; None at the end of the file. `find` is given the text from where it
+    /// stopped last, less `overlap` bytes (a delimiter of `overlap + 1` bytes may be cut by
+    /// the end of the text at hand), and returns an offset into it. A node longer than
+    /// `max_text_bytes` is refused before it is all read.
+    fn scan(
+        &mut self,
+        start: usize,
+        mut from: usize,
+        overlap: usize,
+        mut find: impl FnMut(&[u8]) -> Option<usize>,
+    ) -> Parsed<Option<usize>> {
+        loop {
+            let rest = self.rest(from);
+            if let Some(i) = find(rest) {
+                return self.within_text_limit(start, from + i).map(Some);
+            }
+            from = (from + rest.len()).saturating_sub(overlap).max(from);
+            if (from - start) as u64 > self.options.max_text_bytes {
+                return Err(self.limit(start, "max_text_bytes", self.options.max_text_bytes));
+            }
+            if !self.more()? {
+                return Ok(None);
+            }
+        }
+    }
+
+    /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
+    /// is held to it, measured from its first byte to its closing delimiter, whether it lies
+    /// in the text at hand or crosses the end of a window: a load from a path refuses
+    /// exactly what a load from memory refuses.
+    fn within_text_limit(&self, start: usize, end: usize) -> Parsed<usize> {
+        if (end - start) as u64 > self.options.max_text_bytes {
+            return Err(self.limit(start, "max_text_bytes", self.options.max_text_bytes));
+        }
+        Ok(end)
+    }
+
+    /// Skips the white space before the next node, reading on when it reaches the end of
+    /// the text at hand: blank text between elements is never a node of its own where
+    /// only elements may follow, however it falls across a window.
+    #[inline(always)]
+    pub fn skip_space(&mut self) -> Parsed<()> {
+        let rest = self.rest(self.pos);
+        let (space, all) = (space_len(rest), rest.len());
+        self.pos += space;
+        match space < all {
+            true => Ok(()),
+            false => self.skip_space_on(),
+        }
+    }
+
+    /// [`Tokenizer::skip_space`] once the white space reaches the end of the text at hand:
+    /// apart, so that the usual skip is a few instructions where it is inlined.
+    #[cold]
+    #[inline(never)]
+    fn skip_space_on(&mut self) -> Parsed<()> {
+        while self.more()? {
+            let rest = self.rest(self.pos);
+            let (space, all) = (space_len(rest), rest.len());
+            self.pos += space;
+            if space < all {
+                break;
+            }
+        }
+        Ok(())
+    }
+
+    /// A node begins at `at`: the one before it stays at hand (see [`Tokenizer::started`]).
+    #[inline(always)]
+    fn begin_node(&mut self, at: usize) {
+        (self.last, self.started) = (self.started, at);
+    }
+
+    pub fn next_node(&mut self) -> Parsed<Node> {
+        self.begin_node(self.pos);
+        loop {
+            let at = self.pos;
+            let second = match *self.rest(at) {
+                [b'<', second, ..] => second,
+                [first, ..] if first != b'<' => return self.text_node(at),
+                // `<` or nothing at the end of the text at hand.
+                ref end => {
+                    let lone = !end.is_empty();
+                    if self.more()? {
+                        continue;
+                    }
+                    return match lone {
+                        true => Err(malformed(at, SyntaxError::UnclosedTag)),
+                        false => Ok(Node::Eof),
+                    };
+                }
+            };
+            match second {
+                b'/' => return self.end_tag(at),
+                b'?' => self.processing_instruction(at)?,
+                b'!' => match self.bang(at)? {
+                    Some(node) => return Ok(node),
+                    None => continue,
+                },
+                _ => return self.start_tag(at),
+            }
+        }
+    }
+
+    /// Text up to the next markup, its references resolved and its line ends normalised.
+    fn text_node(&mut self, at: usize) -> Parsed<Node> {
+        let mut plain = true;
+        let end = self.scan(at, at, 0, |rest| {
+            let mut from = 0;
+            while let Some(i) = find3(&rest[from..], b'<', b'&', b'\r') {
+                if rest[from + i] == b'<' {
+                    return Some(from + i);
+                }
+                plain = false;
+                from += i + 1;
+            }
+            None
+        })?;
+        let end = end.unwrap_or(self.source.end());
+        if (end - at) as u64 > self.options.max_text_bytes {
+            return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+        }
+        self.pos = end;
+        // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
+        if let Some(i) = memchr::memmem::find(self.source.slice(at, end).as_bytes(), b"]]>") {
+            return Err(problem(
+                Code::MalformedXml,
+                at + i,
+                "malformed XML: `]]>` in text outside CDATA (write `]]&gt;`)",
+            ));
+        }
+        let resolved = match plain {
+            true => None,
+            false => Some(resolve_text(self.source.slice(at, end), at)?),
+        };
+        Ok(Node::Text(Text { at, end, resolved }))
+    }
+
+    /// The end of a tag that starts at `at`: the offset of its `>`.
+    fn tag_end(&mut self, at: usize) -> Parsed<usize> {
+        // The tag at hand, its quoted values skipped; the element parser takes the rest.
+        let rest = self.rest(at + 1);
+        let mut from = 0;
+        while let Some(i) = find3(&rest[from..], b'>', b'"', b'\'').map(|i| from + i) {
+            if rest[i] == b'>' {
+                return self.within_text_limit(at, at + 1 + i);
+            }
+            // Values are short: the same byte three times is found eight bytes at a time.
+            let quote = rest[i];
+            match find3(&rest[i + 1..], quote, quote, quote) {
+                Some(len) => from = i + 2 + len,
+                None => break,
+            }
+        }
+        let mut parser = ElementParser::Outside;
+        match self.scan(at, at + 1, 0, |rest| parser.feed(rest))? {
+            Some(end) => Ok(end),
+            None => Err(malformed(at, parser.eof_error(&[]))),
+        }
+    }
+
+    fn start_tag(&mut self, at: usize) -> Parsed<Node> {
+        let tag = match self.short_tag(at) {
+            Some(tag) => tag,
+            None => {
+                let end = self.tag_end(at)?;
+                self.pos = end + 1;
+                let content = self.source.slice(at + 1, end);
+                let (content, empty) = match content.strip_suffix('/') {
+                    Some(content) => (content, true),
+                    None => (content, false),
+                };
+                let name_len =
+                    content.bytes().position(text::is_xml_space_byte).unwrap_or(content.len());
+                let name = &content[..name_len];
+                let content = (content.len() > name_len).then(|| content.into());
+                Tag { name: Name::new(name), content, at, empty }
+            }
+        };
+        self.opened(&tag)?;
+        Ok(Node::Open(tag))
+    }
+
+    /// Reads the usual end tag of the innermost open element, if it is next; whether it
+    /// was.
+    #[inline(always)]
+    fn closes_parent(&mut self) -> bool {
+        let at = self.pos;
+        let closed = self.usual_end_tag(at);
+        if closed {
+            self.begin_node(at);
+        }
+        closed
+    }
+
+    /// Reads the end tag at `at` when it is the usual `</Name>` of the innermost open
+    /// element, closing it; whether it was.
+    #[inline(always)]
+    fn usual_end_tag(&mut self, at: usize) -> bool {
+        let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
+            return false;
+        };
+        self.pos = at + len;
+        self.open.pop();
+        true
+    }
+
+    /// How long the usual end tag of the innermost open element is, when `text` starts
+    /// with it.
+    #[inline(always)]
+    fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
+        let (expected, _) = self.open.last()?;
+        let len = expected.end_tag_len(text)?;
+        // Longer than the limit (measured up to its `>`): the ordinary reading refuses it.
+        ((len - 1) as u64 <= self.options.max_text_bytes).then_some(len)
+    }
+
+    /// Counts a start tag just read against the limits and opens its element.
+    #[inline(always)]
+    fn opened(&mut self, tag: &Tag) -> Parsed<()> {
+        let at = tag.at;
+        self.elements += 1;
+        if self.elements > self.options.max_elements {
+            return Err(self.limit(at, "max_elements", self.options.max_elements));
+        }
+        if !tag.empty {
+            if self.open.len() as u64 >= u64::from(self.options.max_depth) {
+                return Err(self.limit(at, "max_depth", self.options.max_depth.into()));
+            }
+            self.open.push((tag.name.clone(), at));
+        }
+        Ok(())
+    }
+
+    /// `<Name>` or `<Name/>` with a short name, the usual tags, read without looking
+    /// for quotes. None for any other tag, or when too little text is at hand to tell.
+    #[inline(always)]
+    fn short_tag(&mut self, at: usize) -> Option<Tag> {
+        let [b'<', head @ ..] = self.rest(at).first_chunk::<{ SHORT + 3 }>()? else {
+            return None;
+        };
+        if matches!(head[0], b'/' | b'?' | b'!') {
+            return None;
+        }
+        let len = head.iter().position(|&b| ENDS_NAME[usize::from(b)]).filter(|&n| n <= SHORT)?;
+        let empty = match head[len..] {
+            [b'>', ..] => false,
+            [b'/', b'>', ..] => true,
+            _ => return None,
+        };
+        if (1 + len + usize::from(empty)) as u64 > self.options.max_text_bytes {
+            return None;
+        }
+        let name = Name::from_head(head.first_chunk()?, len);
+        self.pos = at + 2 + len + usize::from(empty);
+        Some(Tag { name, content: None, at, empty })
+    }
+
+    fn end_tag(&mut self, at: usize) -> Parsed<Node> {
+        if self.usual_end_tag(at) {
+            return Ok(Node::Close(at));
+        }
+        let end = self.tag_end(at)?;
+        self.pos = end + 1;
+        let found = self.source.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
+        let Some((expected, _)) = self.open.pop() else {
+            return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
+        };
+        if expected.as_str() != found {
+            let expected = expected.as_str().to_owned();
+            let found = found.to_owned();
+            return Err(malformed(at, IllFormedError::MismatchedEndTag { expected, found }));
+        }
+        Ok(Node::Close(at))
+    }
+
+    /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
+    fn processing_instruction(&mut self, at: usize) -> Parsed<()> {
+        let end = self.scan(at, at + 2, 1, |rest| memchr::memmem::find(rest, b"?>"))?;
+        let Some(end) = end else {
+            let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
+            return Err(malformed(at, unclosed));
+        };
+        self.pos = end + 2;
+        let content = self.source.slice(at + 2, end);
+        let is_declaration = content.starts_with("xml")
+            && content.as_bytes().get(3).is_none_or(|&b| text::is_xml_space_byte(b));
+        if is_declaration {
+            if at != 0 {
+                return Err(problem(
+                    Code::MalformedXml,
+                    at,
+                    "malformed XML: an XML declaration (<?xml ...?>) is allowed only at the very \
+                     start of the file",
+                ));
+            }
+            let decl = BytesDecl::from_start(BytesStart::from_content(content, 3));
+            self.check_declared_encoding(&decl, at)?;
+        }
+        Ok(())
+    }
+
+    /// `<!...`: a comment (kept for the writer: None), CDATA (its text), or a DOCTYPE (refused).
+    fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
+        while self.rest(at).len() < 9 && self.more()? {}
+        let head = self.rest(at);
+        if head.starts_with(b"<!--") {
+            // XML allows `--` in a comment only as the start of its `-->`.
+            let mut dashes = false;
+            let end = self.scan(at, at + 4, 2, |rest| {
+                let i = memchr::memmem::find(rest, b"--")?;
+                dashes = *rest.get(i + 2)? != b'>';
+                Some(i)
+            })?;
+            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
+            if dashes {
+                return Err(problem(
+                    Code::MalformedXml,
+                    end,
+                    "malformed XML: `--` inside a comment (a comment ends at the first `--`, \
+                     which must be followed by `>`)",
+                ));
+            }
+            self.pos = end + 3;
+            if self.pins.is_empty() {
+                self.comments.push((at, self.pos));
+            }
+            return Ok(None);
+        }
+        if head.starts_with(b"<![CDATA[") {
+            let end = self.scan(at, at + 9, 2, |rest| memchr::memmem::find(rest, b"]]>"))?;
+            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedCData))?;
+            self.pos = end + 3;
+            return Ok(Some(Node::Text(Text { at: at + 9, end, resolved: None })));
+        }
+        if matches!(head.get(2), Some(b'D' | b'd')) {
+            return Err(problem(
+                Code::DoctypeForbidden,
+                at,
+                "a <!DOCTYPE> is not allowed in a scene file: box2scene never expands entities \
+                 or fetches DTDs",
+            ));
+        }
+        Err(malformed(at, SyntaxError::InvalidBangMarkup))
+    }
+}

@@ -1,0 +1,533 @@
+//! Values and attributes: an element's text joined, trimmed and converted, a tag's
+//! attributes read (the usual ones here, the rest by quick-xml), elements skipped.
+
+use std::borrow::Cow;
+
+use quick_xml::errors::IllFormedError;
+use quick_xml::events::attributes::AttrError;
+use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
+
+use super::super::shorten;
+use super::bytes::{find3, is_plain_name_byte, space_len, trimmed_span};
+use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
+use crate::error::{Code, Finding, Parsed, Problem, problem};
+use crate::input::{Encoding, first_non_char};
+use crate::text::{trim_xml, trim_xml_at};
+
+impl<'a> Tokenizer<'a> {
+    /// The text of `t`, valid until the next node is read.
+    pub fn text_of<'t>(&'t self, t: &'t Text) -> &'t str {
+        t.read(&self.source)
+    }
+
+    pub fn is_blank(&self, t: &Text) -> bool {
+        trim_xml(self.text_of(t)).is_empty()
+    }
+
+    #[cold]
+    pub fn limit(&self, at: usize, name: &str, value: u64) -> Problem {
+        problem(
+            Code::LimitExceeded,
+            at,
+            format!(
+                "the file exceeds a load limit here ({name} = {value}); raise it in the load options if the file is trusted"
+            ),
+        )
+    }
+
+    pub(super) fn check_declared_encoding(&self, decl: &BytesDecl, at: usize) -> Parsed<()> {
+        let Some(Ok(declared)) = decl.encoding() else {
+            return Ok(());
+        };
+        let declared = declared.to_ascii_lowercase();
+        let fits = match self.source.encoding() {
+            Encoding::Utf8 { .. } => matches!(declared.as_str(), "utf-8" | "utf8"),
+            Encoding::Utf16 { .. } => declared.starts_with("utf-16") || declared == "unicode",
+        };
+        if fits {
+            return Ok(());
+        }
+        Err(problem(
+            Code::UnsupportedEncoding,
+            at,
+            format!(
+                "the declaration names encoding '{declared}', but box2scene reads UTF-8 and \
+                 UTF-16 (with a byte-order mark) only; convert the file"
+            ),
+        ))
+    }
+
+    /// Reads the next child element of `parent` into `child`, which the reader keeps over
+    /// its loop, so that the tag is made where the reader holds it rather than moved out of
+    /// a result: whether there was one (false at the end of `parent`). Blank text and
+    /// comments are skipped; other text is an error. Inlined into the readers' loops, so
+    /// that the usual child costs no more than it needs.
+    #[inline(always)]
+    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
+        if parent.empty {
+            return Ok(false);
+        }
+        self.skip_space()?;
+        if let Some(tag) = self.short_tag(self.pos) {
+            self.begin_node(tag.at);
+            self.opened(&tag)?;
+            *child = tag;
+            return Ok(true);
+        }
+        if self.closes_parent() {
+            return Ok(false);
+        }
+        match self.other_child(parent)? {
+            Some(tag) => {
+                *child = tag;
+                Ok(true)
+            }
+            None => Ok(false),
+        }
+    }
+
+    /// [`Tokenizer::child`] when the next node is not the usual start or end tag, and the
+    /// general reading of a child: apart, so that the usual child costs no more than it
+    /// needs.
+    #[inline(never)]
+    pub(super) fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
+        loop {
+            self.skip_space()?;
+            match self.next_node()? {
+                Node::Open(tag) => return Ok(Some(tag)),
+                Node::Close(_) => return Ok(None),
+                Node::Text(t) => {
+                    let (lead, text) = trim_xml_at(self.text_of(&t));
+                    if !text.is_empty() {
+                        return Err(problem(
+                            Code::UnexpectedText,
+                            t.written_at(lead),
+                            format!(
+                                "text '{}' inside <{}>, which holds only elements",
+                                shorten(text),
+                                parent.name()
+                            ),
+                        ));
+                    }
+                }
+                Node::Eof => return Err(self.unclosed(parent)),
+            }
+        }
+    }
+
+    /// The text of a value element (`<Density>5</Density>`), trimmed.
+    pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
+        match self.plain_value(tag) {
+            Some(value) => Ok(value),
+            None => self.value_of_nodes(tag),
+        }
+    }
+
+    /// [`Tokenizer::value`] when it is not the usual one: read node by node.
+    fn value_of_nodes(&mut self, tag: &Tag) -> Parsed<Value> {
+        let mut value: Option<Text> = None;
+        if !tag.empty {
+            loop {
+                match self.next_node()? {
+                    Node::Text(t) => match &mut value {
+                        None => value = Some(t),
+                        Some(first) => {
+                            let joined = self.joined(first, &t);
+                            if joined.text.len() as u64 > self.options.max_text_bytes {
+                                return Err(self.limit(
+                                    t.at,
+                                    "max_text_bytes",
+                                    self.options.max_text_bytes,
+                                ));
+                            }
+                            first.resolved = Some(joined);
+                        }
+                    },
+                    Node::Open(child) => {
+                        return Err(problem(
+                            Code::UnexpectedElement,
+                            child.at,
+                            format!(
+                                "<{}> holds a value, not elements such as <{}>",
+                                tag.name(),
+                                child.name()
+                            ),
+                        ));
+                    }
+                    Node::Close(_) => break,
+                    Node::Eof => return Err(self.unclosed(tag)),
+                }
+            }
+        }
+        let Some(mut text) = value else {
+            return Ok(Value {
+                text: Text { at: tag.at, end: tag.at, resolved: None },
+                at: tag.at,
+            });
+        };
+        let (lead, trimmed) = trim_xml_at(self.text_of(&text));
+        let (at, trimmed) = (text.written_at(lead), trimmed.len());
+        match &mut text.resolved {
+            Some(resolved) => {
+                resolved.keep(lead, lead + trimmed);
+                text.at = at;
+            }
+            None => (text.at, text.end) = (at, at + trimmed),
+        }
+        Ok(Value { text, at })
+    }
+
+    /// The text of `first` followed by that of `second`, which were written apart.
+    fn joined(&self, first: &mut Text, second: &Text) -> Resolved {
+        let mut joined = first.resolved.take().unwrap_or_else(|| {
+            let mut whole = Resolved::default();
+            whole.push(self.source.slice(first.at, first.end), first.at);
+            whole
+        });
+        match &second.resolved {
+            Some(resolved) => joined.append(resolved, second.at),
+            None => joined.push(self.source.slice(second.at, second.end), second.at),
+        }
+        joined
+    }
+
+    /// The usual value, read without nodes: text at hand with no markup, references or
+    /// carriage returns, then the end tag of `tag`. None for anything else.
+    #[inline(always)]
+    fn plain_value(&mut self, tag: &Tag) -> Option<Value> {
+        let (at, end) = self.plain_span(tag)?;
+        Some(Value { text: Text { at, end, resolved: None }, at })
+    }
+
+    /// Where the text of [`Tokenizer::plain_value`] starts and ends.
+    #[inline(always)]
+    fn plain_span(&mut self, tag: &Tag) -> Option<(usize, usize)> {
+        // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
+        // nodes' path checks.
+        if tag.empty || !self.pins.is_empty() {
+            return None;
+        }
+        let at = self.pos;
+        let rest = self.rest(at);
+        let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
+        if len as u64 > self.options.max_text_bytes {
+            return None;
+        }
+        let end_tag = self.usual_end_tag_len(&rest[len..])?;
+        let (start, end) = trimmed_span(&rest[..len]);
+        self.pos = at + len + end_tag;
+        self.open.pop();
+        // `<X></X>` has its value at its tag.
+        Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
+    }
+
+    /// Reads a value element and converts its text with `convert`: the value and its offset,
+    /// or (inside) the error for a text that does not convert, which leaves the reading
+    /// where a value that converts would. Generic, not a `fn` pointer, so that the usual
+    /// conversions are inlined into their readers.
+    #[inline]
+    pub fn parsed<T>(
+        &mut self,
+        tag: &Tag,
+        convert: impl FnOnce(&str) -> Result<T, Finding>,
+    ) -> Parsed<Result<(T, usize), Problem>> {
+        // The usual value converted where it is written, without a Value to carry it.
+        if let Some((at, end)) = self.plain_span(tag) {
+            return Ok(match convert(self.source.slice(at, end)) {
+                Ok(v) => Ok((v, at)),
+                Err(e) => {
+                    let value = Value { text: Text { at, end, resolved: None }, at };
+                    Err(self.bad_value(tag, &value, e))
+                }
+            });
+        }
+        let value = self.value_of_nodes(tag)?;
+        Ok(match convert(self.text_of(&value.text)) {
+            Ok(v) => Ok((v, value.at)),
+            Err(e) => Err(self.bad_value(tag, &value, e)),
+        })
+    }
+
+    /// The error for the value of `tag`, which `convert` refused with `e`.
+    #[cold]
+    fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
+        let at = value.text.written_at(e.at);
+        problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
+    }
+
+    /// Converts an attribute's value with `convert`; errors point into the value.
+    pub fn attribute<T>(
+        &self,
+        tag: &Tag,
+        attr: &Attr,
+        convert: fn(&str) -> Result<T, Finding>,
+    ) -> Parsed<(T, usize)> {
+        let (lead, value) = trim_xml_at(&attr.value);
+        match convert(value) {
+            Ok(v) => Ok((v, written_at(tag, attr, lead))),
+            Err(e) => Err(problem(
+                e.code,
+                written_at(tag, attr, lead + e.at),
+                format!("<{} {}>: {}", tag.name(), attr.key, e.message),
+            )),
+        }
+    }
+
+    /// The attributes of `tag`, unescaped, each with the offset of its value.
+    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Vec<Attr<'t>>> {
+        let Some(content) = tag.content.as_deref() else {
+            return Ok(Vec::new());
+        };
+        let attrs = match plain_attributes(content, tag.name.len(), tag.at) {
+            Some(attrs) => attrs,
+            None => self.xml_attributes(tag, content)?,
+        };
+        // Names compare as the loader reads them, ignoring case: `Type` and `type` are one
+        // attribute, given twice.
+        for (i, attr) in attrs.iter().enumerate() {
+            if attrs[..i].iter().any(|a| a.is(attr.key)) {
+                let offset = attr.key.as_ptr().addr().saturating_sub(content.as_ptr().addr());
+                return Err(problem(
+                    Code::DuplicateAttribute,
+                    tag.at + 1 + offset,
+                    format!(
+                        "<{}> has the attribute {} twice (names ignore case)",
+                        tag.name(),
+                        attr.key
+                    ),
+                ));
+            }
+        }
+        Ok(attrs)
+    }
+
+    /// Checks that the attributes of `tag`, which is kept as written rather than read
+    /// (inside UserData or an ignored element), are well-formed: the writer writes them
+    /// back. Names differing in case are distinct there, as in any XML.
+    pub fn check_attributes(&self, tag: &Tag) -> Parsed<()> {
+        let Some(content) = tag.content.as_deref() else {
+            return Ok(());
+        };
+        if plain_attributes(content, tag.name.len(), tag.at).is_none() {
+            self.xml_attributes(tag, content)?;
+        }
+        Ok(())
+    }
+
+    /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
+    pub(super) fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Vec<Attr<'t>>> {
+        // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
+        // tag, is found by its offset in `content` (which counts from after `<`).
+        let within = |piece: &str| {
+            let from = piece.as_ptr().addr().checked_sub(content.as_ptr().addr())?;
+            Some((from, content.get(from..from + piece.len())?))
+        };
+        let start = BytesStart::from_content(content, tag.name.len());
+        let mut attrs = Vec::new();
+        for attr in start.attributes() {
+            let attr = attr.map_err(|e| self.attr_error(tag, e))?;
+            let raw = within(&attr.value);
+            let at = raw.map_or(tag.at, |(from, _)| tag.at + 1 + from);
+            if let Some(lt) = raw.and_then(|(_, raw)| raw.find('<')) {
+                return Err(problem(
+                    Code::MalformedXml,
+                    at + lt,
+                    "malformed XML: `<` in an attribute value (write `&lt;`)",
+                ));
+            }
+            if let Some((_, raw)) = raw.filter(|(_, raw)| raw.contains('&')) {
+                // quick-xml resolves a reference to any character; ours to those XML allows,
+                // with the position of the first that names another.
+                resolve_text(raw, at)?;
+            }
+            let value = match (attr.normalized_value(quick_xml::XmlVersion::Implicit1_0), raw) {
+                // Unchanged by normalisation: the text as written.
+                (Ok(Cow::Borrowed(_)), Some((_, raw))) => Cow::Borrowed(raw),
+                (Ok(value), _) => Cow::Owned(value.into_owned()),
+                (Err(e), _) => {
+                    return Err(problem(Code::MalformedXml, at, format!("malformed XML: {e}")));
+                }
+            };
+            let key = within(attr.key.as_ref()).map_or("", |(_, key)| key);
+            attrs.push(Attr { key, value, at });
+        }
+        Ok(attrs)
+    }
+
+    #[cold]
+    fn attr_error(&self, tag: &Tag, e: AttrError) -> Problem {
+        // Attribute error positions count from the first byte after `<`.
+        let at = |pos: usize| tag.at + 1 + pos;
+        match e {
+            AttrError::Duplicated(pos, _) => problem(
+                Code::DuplicateAttribute,
+                at(pos),
+                format!("<{}> has the same attribute twice", tag.name()),
+            ),
+            e => problem(Code::MalformedXml, tag.at, format!("malformed XML: {e}")),
+        }
+    }
+
+    /// Skips `tag` and everything inside it.
+    pub fn skip(&mut self, tag: &Tag) -> Parsed<()> {
+        if tag.empty {
+            return Ok(());
+        }
+        let mut depth = 1;
+        while depth > 0 {
+            match self.next_node()? {
+                Node::Open(t) => {
+                    self.check_attributes(&t)?;
+                    depth += usize::from(!t.empty);
+                }
+                Node::Text(..) => {}
+                Node::Close(_) => depth -= 1,
+                Node::Eof => return Err(self.unclosed(tag)),
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The attributes of the usual tag, whose `content` (what follows its `<`) has its name
+/// of `name_len` bytes and then `name="value"` pairs (or single quotes) after white space,
+/// with plain names, values with no reference, `<` or line break, and no name twice.
+/// None for anything else: quick-xml reads that, and tells what is malformed.
+pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
+    let bytes = content.as_bytes();
+    // A tag with more than its name has an attribute or two: one allocation, no growing.
+    let mut attrs: Vec<Attr> = Vec::with_capacity(2);
+    let mut i = name_len;
+    loop {
+        // The tag's text is the source's, so white space is every byte up to 0x20.
+        let space = space_len(&bytes[i..]);
+        i += space;
+        if i == bytes.len() {
+            return Some(attrs);
+        }
+        let key_len = bytes[i..].iter().position(|&b| !is_plain_name_byte(b))?;
+        let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
+        let [b'=', quote @ (b'"' | b'\''), value @ ..] = after else {
+            return None;
+        };
+        let len = value
+            .iter()
+            .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
+        if space == 0 || key_len == 0 || value[len] != *quote || attrs.iter().any(|a| a.is(key)) {
+            return None;
+        }
+        let start = i + key_len + 2;
+        let value = Cow::Borrowed(&content[start..start + len]);
+        attrs.push(Attr { key, value, at: at + 1 + start });
+        i = start + len + 1;
+    }
+}
+
+/// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
+pub(crate) fn verbatim(tag: &Tag, attr: &Attr) -> String {
+    let (quote, value) = written_value(tag, attr);
+    format!(" {}={quote}{value}{quote}", attr.key)
+}
+
+/// The quote around the value of an attribute of `tag`, and the value as written.
+fn written_value<'t>(tag: &'t Tag, attr: &Attr) -> (char, &'t str) {
+    let content = tag.content.as_deref().unwrap_or_default();
+    let value = (attr.at - tag.at - 1).min(content.len());
+    let quote = content[..value].chars().next_back().unwrap_or('"');
+    let len = content[value..].find(quote).unwrap_or(content.len() - value);
+    (quote, &content[value..value + len])
+}
+
+/// Where the character at `offset` of an attribute's value is written. A value unlike what
+/// is written (references resolved, white space normalised) is resolved again to tell, as
+/// only a message needs it: its bytes line up with the resolved text's.
+fn written_at(tag: &Tag, attr: &Attr, offset: usize) -> usize {
+    if let Cow::Borrowed(_) = attr.value {
+        return attr.at + offset;
+    }
+    match resolve_text(written_value(tag, attr).1, attr.at) {
+        Ok(resolved) => resolved.written_at(attr.at, offset),
+        Err(_) => attr.at + offset,
+    }
+}
+
+/// Text with references or carriage returns, written from `at` on: references resolved
+/// (only the five predefined entities and character references exist), line ends
+/// normalised to `\n`.
+pub(super) fn resolve_text(raw: &str, at: usize) -> Parsed<Resolved> {
+    let mut out = Resolved { text: String::with_capacity(raw.len()), written: Vec::new() };
+    let (mut rest, mut offset) = (raw, at);
+    while let Some(amp) = memchr::memchr(b'&', rest.as_bytes()) {
+        push_normalised(&mut out, &rest[..amp], offset);
+        let after = &rest[amp + 1..];
+        let name = match memchr::memchr2(b';', b'&', after.as_bytes()) {
+            Some(semi) if after.as_bytes()[semi] == b';' => &after[..semi],
+            _ => return Err(malformed(offset + amp, IllFormedError::UnclosedReference)),
+        };
+        match name.starts_with('#') {
+            true => out.text.push(char_reference(name, offset + amp)?),
+            false => match quick_xml::escape::resolve_predefined_entity(name) {
+                Some(resolved) => out.text.push_str(resolved),
+                None => return Err(unknown_entity(name, offset + amp)),
+            },
+        }
+        let used = amp + 1 + name.len() + 1;
+        rest = &rest[used..];
+        offset += used;
+        out.written.push((out.text.len(), offset));
+    }
+    push_normalised(&mut out, rest, offset);
+    Ok(out)
+}
+
+/// Appends `text`, written from `at` on, with `\r\n` and lone `\r` made `\n` (XML 1.0
+/// section 2.11).
+fn push_normalised(out: &mut Resolved, text: &str, at: usize) {
+    let mut pieces = text.split('\r');
+    let first = pieces.next().unwrap_or_default();
+    out.text.push_str(first);
+    let mut offset = at + first.len();
+    for piece in pieces {
+        out.text.push('\n');
+        offset += 1;
+        if let Some(line) = piece.strip_prefix('\n') {
+            offset += 1;
+            out.written.push((out.text.len(), offset));
+            out.text.push_str(line);
+            offset += line.len();
+        } else {
+            out.text.push_str(piece);
+            offset += piece.len();
+        }
+    }
+}
+
+/// The character that the reference `&{name};` at `at` names (`name` begins with `#`):
+/// one of those XML allows, as a reference may not name any other (XML 1.0, section 4.1).
+fn char_reference(name: &str, at: usize) -> Parsed<char> {
+    use quick_xml::escape::{EscapeError::InvalidCharRef, ParseCharRefError as Number};
+    let bad =
+        |why: String| problem(Code::MalformedXml, at, format!("malformed XML: &{name}; {why}"));
+    let code = match BytesRef::new(name).resolve_char_ref() {
+        Ok(Some(c)) => u32::from(c),
+        Err(quick_xml::Error::Escape(InvalidCharRef(
+            Number::InvalidCodepoint(code) | Number::IllegalCharacter(code),
+        ))) => code,
+        _ => return Err(bad("is not a character reference (&#DIGITS; or &#xHEX;)".into())),
+    };
+    let allowed = |c: &char| first_non_char(c.encode_utf8(&mut [0; 4]).as_bytes()).is_none();
+    char::from_u32(code)
+        .filter(allowed)
+        .ok_or_else(|| bad(format!("names the character U+{code:04X}, which XML does not allow")))
+}
+
+#[cold]
+fn unknown_entity(name: &str, at: usize) -> Problem {
+    problem(
+        Code::MalformedXml,
+        at,
+        format!(
+            "malformed XML: unknown entity &{name}; (only &amp; &lt; &gt; &quot; &apos; and character references are allowed)"
+        ),
+    )
+}
