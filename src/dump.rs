@@ -38,7 +38,7 @@ pub fn to_json(scene: &Scene) -> String {
 }
 
 fn shape(scene: &Scene, s: &Shape) -> Vec<Line> {
-    let kind = s.kind().map(shape_kind_name);
+    let kind = s.kind().map(ShapeKind::name);
     vec![
         vec![("kind", enum_text(kind, s.kind)), ("name", text(scene, s.name))],
         vec![("radius", float(s.radius)), ("position", vec2(s.position))],
@@ -72,7 +72,7 @@ fn fixture(scene: &Scene, f: &Fixture) -> Vec<Line> {
 }
 
 fn body(scene: &Scene, b: &Body) -> Vec<Line> {
-    let kind = b.kind().map(body_kind_name);
+    let kind = b.kind().map(BodyKind::name);
     let fixtures = list(scene.body_fixtures(b).iter().map(|&id| index(id)));
     vec![
         vec![("kind", enum_text(kind, b.kind)), ("name", text(scene, b.name))],
@@ -112,7 +112,7 @@ fn mass_data(m: &MassData) -> String {
 }
 
 fn joint(scene: &Scene, j: &Joint) -> Vec<Line> {
-    let kind = j.kind().map(joint_kind_name);
+    let kind = j.kind().map(JointKind::name);
     vec![
         vec![
             ("kind", enum_text(kind, j.kind)),
@@ -191,40 +191,6 @@ fn diagnostics(scene: &Scene) -> String {
     };
     let items: Vec<String> = scene.diagnostics().iter().map(one).collect();
     array(&items, 1)
-}
-
-fn shape_kind_name(kind: ShapeKind) -> &'static str {
-    match kind {
-        ShapeKind::Circle => "circle",
-        ShapeKind::Polygon => "polygon",
-        ShapeKind::Edge => "edge",
-        ShapeKind::Chain => "chain",
-    }
-}
-
-fn body_kind_name(kind: BodyKind) -> &'static str {
-    match kind {
-        BodyKind::Static => "static",
-        BodyKind::Kinematic => "kinematic",
-        BodyKind::Dynamic => "dynamic",
-    }
-}
-
-fn joint_kind_name(kind: JointKind) -> &'static str {
-    match kind {
-        JointKind::Revolute => "revolute",
-        JointKind::Prismatic => "prismatic",
-        JointKind::Distance => "distance",
-        JointKind::Pulley => "pulley",
-        JointKind::Line => "line",
-        JointKind::Weld => "weld",
-        JointKind::Friction => "friction",
-        JointKind::Gear => "gear",
-        JointKind::Wheel => "wheel",
-        JointKind::Rope => "rope",
-        JointKind::Motor => "motor",
-        JointKind::Unsupported => "unsupported",
-    }
 }
 
 /// An enumeration by its name; a value with no name (which a loaded scene never holds)

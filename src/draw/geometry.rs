@@ -123,10 +123,9 @@ pub(super) struct DrawnJoint {
 }
 
 pub(super) struct Frame {
-    pub(super) bodies: Vec<DrawnBody>,
+    /// By body index; None where the body's pose is not finite.
+    pub(super) bodies: Vec<Option<DrawnBody>>,
     pub(super) joints: Vec<DrawnJoint>,
-    /// Where each body is drawn (None where its pose is not finite), by body index.
-    pub(super) bounds: Vec<Option<Bounds>>,
 }
 
 /// Everything a picture holds, in metres, before it is laid out.
@@ -136,7 +135,6 @@ pub(super) struct Drawing {
     pub(super) paths: Vec<Vec<Point>>,
     pub(super) labels: Vec<(String, Bounds)>,
     pub(super) bounds: Bounds,
-    pub(super) kinds: [bool; 3],
 }
 
 impl Drawing {
@@ -160,7 +158,7 @@ impl Drawing {
 
         let mut bounds = Bounds::default();
         for frame in std::iter::once(&start).chain(&end) {
-            for body in &frame.bodies {
+            for body in frame.bodies.iter().flatten() {
                 bounds.merge(body.bounds);
             }
             for joint in &frame.joints {
@@ -180,15 +178,13 @@ impl Drawing {
         let labels = scene
             .bodies()
             .iter()
-            .zip(&last.bounds)
-            .filter_map(|(body, drawn)| Some((scene.text(body.name)?.to_owned(), (*drawn)?)))
+            .zip(&last.bodies)
+            .filter_map(|(body, drawn)| {
+                Some((scene.text(body.name)?.to_owned(), drawn.as_ref()?.bounds))
+            })
             .filter(|(_, drawn)| drawn.corners.is_some())
             .collect();
-        let mut kinds = [false; 3];
-        for body in &start.bodies {
-            kinds[key_kind(body.kind)] = true;
-        }
-        Drawing { start, end, paths, labels, bounds, kinds }
+        Drawing { start, end, paths, labels, bounds }
     }
 }
 
@@ -200,12 +196,10 @@ impl Frame {
         sizes: &[Option<f64>],
     ) -> Frame {
         let placements: Vec<Option<Placement>> = poses.iter().map(|&p| Placement::of(p)).collect();
-        let mut frame = Frame { bodies: Vec::new(), joints: Vec::new(), bounds: Vec::new() };
-        for (index, (body, place)) in scene.bodies().iter().zip(&placements).enumerate() {
-            let drawn = place.map(|place| draw_body(scene, index, body, place));
-            frame.bounds.push(drawn.as_ref().map(|d| d.bounds));
-            frame.bodies.extend(drawn);
-        }
+        let bodies = scene.bodies().iter().zip(&placements).enumerate();
+        let bodies = bodies
+            .map(|(index, (body, place))| place.map(|place| draw_body(scene, index, body, place)));
+        let mut frame = Frame { bodies: bodies.collect(), joints: Vec::new() };
         for (index, joint) in scene.joints().iter().enumerate() {
             if created.is_some_and(|created| !created[index]) {
                 continue;
@@ -218,7 +212,7 @@ impl Frame {
 
 pub(super) fn draw_body(scene: &Scene, index: usize, body: &Body, place: Placement) -> DrawnBody {
     let kind = body.kind();
-    let class = kind.map_or_else(|| body.kind.to_string(), |k| lowercase_name(&k));
+    let class = kind.map_or_else(|| body.kind.to_string(), |k| k.name().to_owned());
     let title = format!("{} ({class})", label(scene, "body", index, body.name));
     let mut drawn = DrawnBody { kind, class, title, marks: Vec::new(), bounds: Bounds::default() };
     for &fixture_index in scene.body_fixtures(body) {
@@ -303,7 +297,7 @@ pub(super) fn draw_joint(
         .filter_map(|size| size.copied().flatten())
         .filter(|size| *size > 0.0)
         .reduce(f64::min);
-    let kind = kind.map_or_else(|| joint.kind.to_string(), |k| lowercase_name(&k));
+    let kind = kind.map_or_else(|| joint.kind.to_string(), |k| k.name().to_owned());
     Some(DrawnJoint {
         title: format!("{} ({kind})", label(scene, "joint", index, joint.name)),
         segments,
@@ -317,43 +311,21 @@ pub(super) fn draw_joint(
 /// points that do not all coincide.
 pub(super) fn trajectories(points: &[Vec2], bodies: usize) -> Vec<Vec<Point>> {
     let mut paths = Vec::new();
-    if bodies == 0 {
-        return paths;
-    }
     for body in 0..bodies {
-        let mut piece: Vec<Point> = Vec::new();
-        let samples = points.iter().skip(body).step_by(bodies).map(|&v| Point::of(v));
-        for point in samples.chain(std::iter::once(Point { x: f64::NAN, y: f64::NAN })) {
-            if point.is_finite() {
-                piece.push(point);
-            } else if piece.iter().any(|p| *p != piece[0]) {
-                paths.push(std::mem::take(&mut piece));
-            } else {
-                piece.clear();
+        let samples: Vec<Point> =
+            points.iter().skip(body).step_by(bodies).map(|&v| Point::of(v)).collect();
+        for piece in samples.split(|point| !point.is_finite()) {
+            if piece.iter().any(|point| *point != piece[0]) {
+                paths.push(piece.to_vec());
             }
         }
     }
     paths
 }
-/// The key's slot for a body type (an unknown one shows as static).
-pub(super) fn key_kind(kind: Option<BodyKind>) -> usize {
-    match kind {
-        Some(BodyKind::Static) | None => 0,
-        Some(BodyKind::Kinematic) => 1,
-        Some(BodyKind::Dynamic) => 2,
-    }
-}
-
 /// `body 3 "Crate"`, or `body 3` when it has no name.
 pub(super) fn label(scene: &Scene, what: &str, index: usize, name: Str) -> String {
     match scene.text(name) {
         Some(name) => format!("{what} {index} \"{name}\""),
         None => format!("{what} {index}"),
     }
-}
-
-/// `dynamic`, `revolute`: the enumeration's variant name as the format writes it, lower
-/// case.
-pub(super) fn lowercase_name(kind: &impl std::fmt::Debug) -> String {
-    format!("{kind:?}").to_lowercase()
 }

@@ -50,8 +50,7 @@ impl Drawing {
     pub(super) fn document(&self, title: &str) -> String {
         let key = self.key();
         let layout = Layout::new(&self.bounds, !title.is_empty(), &key);
-        let w = Writer { scale: layout.scale };
-        let px = |pixels: f64| pixels / layout.pixels_per_metre;
+        let w = Writer { scale: layout.scale, pixels_per_metre: layout.pixels_per_metre };
         let mut out = String::new();
         let _ = writeln!(
             out,
@@ -82,28 +81,27 @@ impl Drawing {
             out,
             "<g class=\"world\" transform=\"scale(1,-1)\" stroke-width=\"{}\" \
              stroke-linejoin=\"round\" stroke-linecap=\"round\">",
-            w.n(px(LINE))
+            w.n(w.px(LINE))
         );
-        let smallest_anchor = px(SMALLEST_ANCHOR);
         match &self.end {
             Some(end) => {
                 let _ = writeln!(out, "<g class=\"start\" opacity=\"{START_OPACITY}\">");
-                w.frame(&mut out, &self.start, smallest_anchor, px(ARM_LINE));
+                w.frame(&mut out, &self.start);
                 out.push_str("</g>\n");
-                w.paths(&mut out, &self.paths, px(PATH_LINE));
+                w.paths(&mut out, &self.paths);
                 out.push_str("<g class=\"end\">\n");
-                w.frame(&mut out, end, smallest_anchor, px(ARM_LINE));
+                w.frame(&mut out, end);
                 out.push_str("</g>\n");
             }
             None => {
-                w.paths(&mut out, &self.paths, px(PATH_LINE));
+                w.paths(&mut out, &self.paths);
                 out.push_str("<g class=\"start\">\n");
-                w.frame(&mut out, &self.start, smallest_anchor, px(ARM_LINE));
+                w.frame(&mut out, &self.start);
                 out.push_str("</g>\n");
             }
         }
         out.push_str("</g>\n");
-        w.labels(&mut out, &self.labels, &px);
+        w.labels(&mut out, &self.labels);
         out.push_str("</svg>\n");
         out
     }
@@ -111,14 +109,14 @@ impl Drawing {
     /// The key's entries: a swatch and its words, for what the picture holds.
     fn key(&self) -> Vec<(Swatch, &'static str)> {
         let mut key = Vec::new();
-        let kinds = [
-            (Some(BodyKind::Static), "static"),
-            (Some(BodyKind::Kinematic), "kinematic"),
-            (Some(BodyKind::Dynamic), "dynamic"),
-        ];
-        for (index, (kind, words)) in kinds.into_iter().enumerate() {
-            if self.kinds[index] {
-                key.push((Swatch::Body(kind, 1.0), words));
+        // A body of a kind with no name is coloured, and keyed, as a static one.
+        let drawn = |kind| {
+            let mut bodies = self.start.bodies.iter().flatten();
+            bodies.any(|b| b.kind.unwrap_or(BodyKind::Static) == kind)
+        };
+        for kind in [BodyKind::Static, BodyKind::Kinematic, BodyKind::Dynamic] {
+            if drawn(kind) {
+                key.push((Swatch::Body(Some(kind), 1.0), kind.name()));
             }
         }
         if self.start.joints.iter().chain(self.end.iter().flat_map(|f| &f.joints)).next().is_some()
@@ -143,30 +141,29 @@ impl Drawing {
         title: &str,
         key: &[(Swatch, &str)],
     ) {
-        let px = |pixels: f64| pixels / layout.pixels_per_metre;
         out.push_str("<g class=\"key\">\n");
-        let left = layout.x + px(PAD);
+        let left = layout.x + w.px(PAD);
         if !title.is_empty() {
             let _ = writeln!(
                 out,
                 "<text x=\"{}\" y=\"{}\" font-size=\"{}\" font-weight=\"bold\">{}</text>",
                 w.n(left),
-                w.n(layout.y + px(PAD + TITLE_SIZE)),
-                w.n(px(TITLE_SIZE)),
+                w.n(layout.y + w.px(PAD + TITLE_SIZE)),
+                w.n(w.px(TITLE_SIZE)),
                 svg_text(title)
             );
         }
         for (entry, &(row, column)) in key.iter().zip(&layout.key_places) {
-            let x = left + px(column);
-            let middle = layout.y + px(layout.key_top + row * KEY_ROW + KEY_SIZE / 2.0);
+            let x = left + w.px(column);
+            let middle = layout.y + w.px(layout.key_top + row * KEY_ROW + KEY_SIZE / 2.0);
             let (swatch, words) = entry;
-            w.swatch(out, *swatch, x, middle, &px);
+            w.swatch(out, *swatch, x, middle);
             let _ = writeln!(
                 out,
                 "<text x=\"{}\" y=\"{}\" font-size=\"{}\" dominant-baseline=\"central\">{}</text>",
-                w.n(x + px(SWATCH + SWATCH_GAP)),
+                w.n(x + w.px(SWATCH + SWATCH_GAP)),
                 w.n(middle),
-                w.n(px(KEY_SIZE)),
+                w.n(w.px(KEY_SIZE)),
                 words
             );
         }
@@ -284,9 +281,15 @@ impl Layout {
 /// Writes coordinates and lengths in metres times the layout's scale.
 struct Writer {
     scale: f64,
+    pixels_per_metre: f64,
 }
 
 impl Writer {
+    /// A size in pixels of the picture, in metres of the world.
+    fn px(&self, pixels: f64) -> f64 {
+        pixels / self.pixels_per_metre
+    }
+
     /// A coordinate or a length as written; a negative zero (a y of 0 turned over) as 0.
     fn n(&self, v: f64) -> f32 {
         (v * self.scale) as f32 + 0.0
@@ -309,8 +312,8 @@ impl Writer {
         moves.join(" ")
     }
 
-    fn frame(&self, out: &mut String, frame: &Frame, smallest_anchor: f64, arm_line: f64) {
-        for body in &frame.bodies {
+    fn frame(&self, out: &mut String, frame: &Frame) {
+        for body in frame.bodies.iter().flatten() {
             self.body(out, body);
         }
         if frame.joints.is_empty() {
@@ -331,10 +334,10 @@ impl Writer {
                     "<path class=\"arms\" d=\"{}\" fill=\"none\" stroke-opacity=\"0.45\" \
                      stroke-width=\"{}\"/>",
                     self.path(&joint.arms),
-                    self.n(arm_line)
+                    self.n(self.px(ARM_LINE))
                 );
             }
-            let radius = self.n(joint.anchor_radius.unwrap_or(0.0).max(smallest_anchor));
+            let radius = self.n(joint.anchor_radius.unwrap_or(0.0).max(self.px(SMALLEST_ANCHOR)));
             for anchor in joint.anchors {
                 let (x, y) = (self.n(anchor.x), self.n(anchor.y));
                 let _ =
@@ -388,14 +391,14 @@ impl Writer {
         );
     }
 
-    fn paths(&self, out: &mut String, paths: &[Vec<Point>], line: f64) {
+    fn paths(&self, out: &mut String, paths: &[Vec<Point>]) {
         if paths.is_empty() {
             return;
         }
         let _ = writeln!(
             out,
             "<g class=\"paths\" fill=\"none\" stroke=\"{PATH_COLOUR}\" stroke-width=\"{}\">",
-            self.n(line)
+            self.n(self.px(PATH_LINE))
         );
         for path in paths {
             let _ = writeln!(out, "<polyline points=\"{}\"/>", self.points(path));
@@ -405,20 +408,20 @@ impl Writer {
 
     /// Each name centred above where its body is drawn (below, where that is taken), on a
     /// white halo; a name that would overlap one placed before it is left to the tooltip.
-    fn labels(&self, out: &mut String, labels: &[(String, Bounds)], px: &dyn Fn(f64) -> f64) {
+    fn labels(&self, out: &mut String, labels: &[(String, Bounds)]) {
         let mut placed: Vec<(Point, Point)> = Vec::new();
         let mut texts = String::new();
         for (name, bounds) in labels {
             let Some((lower, upper)) = bounds.corners else { continue };
-            let half_width = px(name.chars().count() as f64 * LABEL_CHAR / 2.0);
+            let half_width = self.px(name.chars().count() as f64 * LABEL_CHAR / 2.0);
             let centre = (lower.x + upper.x) / 2.0;
             // The baseline above the body, or below it: the label's box, y up.
-            let above = upper.y + px(GAP);
-            let below = lower.y - px(GAP + LABEL_SIZE);
+            let above = upper.y + self.px(GAP);
+            let below = lower.y - self.px(GAP + LABEL_SIZE);
             let free = [above, below].into_iter().map(|baseline| {
                 let box_lower =
-                    Point { x: centre - half_width, y: baseline - px(LABEL_SIZE * 0.25) };
-                let box_upper = Point { x: centre + half_width, y: baseline + px(LABEL_SIZE) };
+                    Point { x: centre - half_width, y: baseline - self.px(LABEL_SIZE * 0.25) };
+                let box_upper = Point { x: centre + half_width, y: baseline + self.px(LABEL_SIZE) };
                 (baseline, (box_lower, box_upper))
             });
             let mut free = free.filter(|(_, b)| !placed.iter().any(|p| overlap(*p, *b)));
@@ -439,33 +442,26 @@ impl Writer {
             out,
             "<g class=\"labels\" font-size=\"{}\" text-anchor=\"middle\" fill=\"#202020\" \
              stroke=\"white\" stroke-width=\"{}\" paint-order=\"stroke\">",
-            self.n(px(LABEL_SIZE)),
-            self.n(px(3.0))
+            self.n(self.px(LABEL_SIZE)),
+            self.n(self.px(3.0))
         );
         out.push_str(&texts);
         out.push_str("</g>\n");
     }
 
-    fn swatch(
-        &self,
-        out: &mut String,
-        swatch: Swatch,
-        x: f64,
-        middle: f64,
-        px: &dyn Fn(f64) -> f64,
-    ) {
+    fn swatch(&self, out: &mut String, swatch: Swatch, x: f64, middle: f64) {
         let (left, right, top) =
-            (self.n(x), self.n(x + px(SWATCH)), self.n(middle - px(SWATCH / 2.0)));
+            (self.n(x), self.n(x + self.px(SWATCH)), self.n(middle - self.px(SWATCH / 2.0)));
         let y = self.n(middle);
         match swatch {
             Swatch::Body(kind, opacity) => {
                 let (fill, stroke) = colours(kind);
-                let side = self.n(px(SWATCH));
+                let side = self.n(self.px(SWATCH));
                 let _ = writeln!(
                     out,
                     "<rect x=\"{left}\" y=\"{top}\" width=\"{side}\" height=\"{side}\" \
                      fill=\"{fill}\" stroke=\"{stroke}\" stroke-width=\"{}\" opacity=\"{opacity}\"/>",
-                    self.n(px(LINE))
+                    self.n(self.px(LINE))
                 );
             }
             Swatch::Joint => {
@@ -475,9 +471,9 @@ impl Writer {
                      stroke-width=\"{}\"/><circle cx=\"{left}\" cy=\"{y}\" r=\"{}\" \
                      fill=\"{JOINT_COLOUR}\"/><circle cx=\"{right}\" cy=\"{y}\" r=\"{}\" \
                      fill=\"{JOINT_COLOUR}\"/>",
-                    self.n(px(LINE)),
-                    self.n(px(2.5)),
-                    self.n(px(2.5))
+                    self.n(self.px(LINE)),
+                    self.n(self.px(2.5)),
+                    self.n(self.px(2.5))
                 );
             }
             Swatch::Path => {
@@ -485,7 +481,7 @@ impl Writer {
                     out,
                     "<line x1=\"{left}\" y1=\"{y}\" x2=\"{right}\" y2=\"{y}\" stroke=\"{PATH_COLOUR}\" \
                      stroke-width=\"{}\"/>",
-                    self.n(px(PATH_LINE))
+                    self.n(self.px(PATH_LINE))
                 );
             }
         }

@@ -20,6 +20,17 @@ pub extern "C" fn b2s_write_options_default() -> WriteOptions {
     WriteOptions::default()
 }
 
+/// The scene a write or a drawing reads; NULL is an error.
+///
+/// # Safety
+/// `scene` is NULL or a live scene.
+unsafe fn arg_scene<'a>(scene: *const SceneHandle) -> Result<&'a Scene, Error> {
+    // SAFETY: by the caller's contract.
+    let handle = unsafe { scene.as_ref() }
+        .ok_or_else(|| simple_error(Code::NullArgument, "scene is NULL"))?;
+    Ok(&handle.scene)
+}
+
 /// # Safety
 /// `scene` is NULL or a live scene; `options` NULL or valid.
 unsafe fn scene_and_options<'a>(
@@ -27,10 +38,7 @@ unsafe fn scene_and_options<'a>(
     options: *const WriteOptions,
 ) -> Result<(&'a Scene, WriteOptions), Error> {
     // SAFETY: by the caller's contract.
-    let handle = unsafe { scene.as_ref() }
-        .ok_or_else(|| simple_error(Code::NullArgument, "scene is NULL"))?;
-    // SAFETY: by the caller's contract.
-    Ok((&handle.scene, unsafe { options.as_ref() }.copied().unwrap_or_default()))
+    Ok(unsafe { (arg_scene(scene)?, options.as_ref().copied().unwrap_or_default()) })
 }
 
 /// Writes `scene` as Box2Scene XML into a new NUL-terminated UTF-8 text owned by the
@@ -168,7 +176,7 @@ pub unsafe extern "C" fn b2s_draw_svg(
     // SAFETY: by the caller's contract.
     fallible(error, || unsafe {
         hand_out(out_text, out_size, || {
-            let (scene, _) = scene_and_options(scene, std::ptr::null())?;
+            let scene = arg_scene(scene)?;
             let info = picture.as_ref().copied().unwrap_or_else(|| b2s_picture_default());
             let bodies = scene.bodies().len();
             let points = info.trajectory_samples.checked_mul(bodies).ok_or_else(|| {

@@ -167,6 +167,52 @@ pub enum JointKind {
     Unsupported = 11,
 }
 
+impl ShapeKind {
+    /// The kind's name in lower case, as the dump, the picture and the docs spell it
+    /// (the file's `Type` attribute is case-insensitive).
+    pub fn name(self) -> &'static str {
+        match self {
+            ShapeKind::Circle => "circle",
+            ShapeKind::Polygon => "polygon",
+            ShapeKind::Edge => "edge",
+            ShapeKind::Chain => "chain",
+        }
+    }
+}
+
+impl BodyKind {
+    /// The kind's name in lower case, as the dump, the picture and the docs spell it
+    /// (the file's `Type` attribute is case-insensitive).
+    pub fn name(self) -> &'static str {
+        match self {
+            BodyKind::Static => "static",
+            BodyKind::Kinematic => "kinematic",
+            BodyKind::Dynamic => "dynamic",
+        }
+    }
+}
+
+impl JointKind {
+    /// The kind's name in lower case, as the dump, the picture and the docs spell it
+    /// (the file's `Type` attribute is case-insensitive).
+    pub fn name(self) -> &'static str {
+        match self {
+            JointKind::Revolute => "revolute",
+            JointKind::Prismatic => "prismatic",
+            JointKind::Distance => "distance",
+            JointKind::Pulley => "pulley",
+            JointKind::Line => "line",
+            JointKind::Weld => "weld",
+            JointKind::Friction => "friction",
+            JointKind::Gear => "gear",
+            JointKind::Wheel => "wheel",
+            JointKind::Rope => "rope",
+            JointKind::Motor => "motor",
+            JointKind::Unsupported => "unsupported",
+        }
+    }
+}
+
 macro_rules! u32_enum_conversions {
     ($ty:ident { $($variant:ident),* $(,)? }) => {
         impl TryFrom<u32> for $ty {

@@ -315,7 +315,11 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
-    pub(super) fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Vec<Attr<'t>>> {
+    pub(super) fn xml_attributes<'t>(
+        &self,
+        tag: &'t Tag,
+        content: &'t str,
+    ) -> Parsed<Vec<Attr<'t>>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
         // tag, is found by its offset in `content` (which counts from after `<`).
         let within = |piece: &str| {
