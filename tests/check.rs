@@ -3,6 +3,7 @@
 //! load gives. Each case marks with `⌖` the places its errors must point at.
 
 use std::io::Write;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use box2scene::{Checked, Code, Error, LoadOptions, check, check_file, check_reader, load};
 
@@ -46,7 +47,11 @@ fn expect_errors(marked: &str, codes: &[Code]) -> Checked {
     assert_eq!(codes_and_places(&checked.errors), expected, "{:#?}", checked.errors);
     let first = load(xml.as_bytes(), &options).expect_err("a file with errors does not load");
     assert!(checked.errors.contains(&first), "a load stopped at {first:?}");
-    let path = std::env::temp_dir().join(format!("box2scene-check-{}.xml", std::process::id()));
+    // One file a call: the tests run on several threads of one process.
+    static CALLS: AtomicUsize = AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, Ordering::Relaxed);
+    let name = format!("box2scene-check-{}-{call}.xml", std::process::id());
+    let path = std::env::temp_dir().join(name);
     std::fs::File::create(&path).unwrap().write_all(xml.as_bytes()).unwrap();
     let from_file = check_file(std::fs::File::open(&path).unwrap(), &path, &options);
     std::fs::remove_file(&path).unwrap();
