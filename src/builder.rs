@@ -11,12 +11,12 @@
 //! load reads in one text, UserData that is not well-formed or nests too deep.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Error, Finding, Parsed, Position, Severity, problem};
+use crate::error::{Code, Error, Finding, Parsed, Position, problem};
 use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
-use crate::scene::{Body, Diagnostic, Fixture, Joint, JointKind, NONE, Range, Scene, SceneBuilder};
-use crate::scene::{Shape, ShapeKind, Str, UserData, Vec2};
+use crate::scene::{Body, Fixture, Joint, JointKind, NONE, PoolStr, Range, Scene, SceneBuilder};
+use crate::scene::{Shape, ShapeKind, Str, UserDataText, Vec2};
 use crate::text::trim_xml;
 use crate::validate;
 
@@ -59,8 +59,8 @@ impl Builder {
         Ok(())
     }
 
-    fn name(&mut self, name: Option<&str>) -> Str {
-        name.map_or(Str::NULL, |n| self.scene.add_str(trim_xml(n)))
+    fn name(&mut self, name: Option<&str>) -> Option<PoolStr> {
+        name.map(|n| self.scene.add_str(trim_xml(n)))
     }
 
     /// Refuses a name that a written file could not hold or read back.
@@ -76,15 +76,8 @@ impl Builder {
     }
 
     fn warn(&mut self, what: &str, index: usize, code: Code, message: &str) {
-        let message = self.scene.add_str(&format!("{what} {index}: {message}"));
-        self.scene.diagnostics.push(Diagnostic {
-            message,
-            byte_offset: 0,
-            code: code as u32,
-            severity: Severity::Warning as u32,
-            line: 0,
-            column: 0,
-        });
+        let message = format!("{what} {index}: {message}");
+        self.scene.push_warning(code, Position::default(), &message);
     }
 
     /// Adds user data and returns its index. `raw` is XML content, kept verbatim; without
@@ -116,10 +109,10 @@ impl Builder {
         };
         let (type_name, value) = user_data_fragment(&raw, USER_DATA_DEPTH)
             .map_err(|e| refused("user data", index, &e))?;
-        let user_data = UserData {
+        let user_data = UserDataText {
             raw: self.scene.add_str(&raw),
-            type_name: type_name.map_or(Str::NULL, |t| self.scene.add_str(&t)),
-            value: value.map_or(Str::NULL, |v| self.scene.add_str(&v)),
+            type_name: type_name.map(|t| self.scene.add_str(&t)),
+            value: value.map(|v| self.scene.add_str(&v)),
         };
         self.scene.user_data.push(user_data);
         Ok(index as u32)
@@ -140,7 +133,7 @@ impl Builder {
         self.scene.vertices.extend_from_slice(vertices);
         let vertices = Range::between(first, self.scene.vertices.len());
         let name = self.name(name);
-        self.scene.shapes.push(Shape { name, vertices, ..canonical });
+        self.scene.push_shape(Shape { name: Str::NULL, vertices, ..canonical }, name);
         Ok(index as u32)
     }
 
@@ -219,7 +212,7 @@ impl Builder {
             .and_then(|()| self.check_fixture(fixture))
             .map_err(|e| refused("fixture", index, &e))?;
         let name = self.name(name);
-        self.scene.fixtures.push(Fixture { name, ..*fixture });
+        self.scene.push_fixture(Fixture { name: Str::NULL, ..*fixture }, name);
         Ok(index as u32)
     }
 
@@ -249,8 +242,8 @@ impl Builder {
         self.scene.fixture_ids.extend_from_slice(fixtures);
         let fixtures = Range::between(first, self.scene.fixture_ids.len());
         let name = self.name(name);
-        let canonical = Body { name, fixtures, ..canonical };
-        self.scene.bodies.push(canonical);
+        let canonical = Body { name: Str::NULL, fixtures, ..canonical };
+        self.scene.push_body(canonical, name);
         if let Some(message) =
             validate::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)
         {
@@ -309,7 +302,7 @@ impl Builder {
             .and_then(|()| self.check_joint(joint))
             .map_err(|e| refused("joint", index, &e))?;
         let name = self.name(name);
-        self.scene.joints.push(Joint { name, ..canonical });
+        self.scene.push_joint(Joint { name: Str::NULL, ..canonical }, name);
         Ok(index as u32)
     }
 

@@ -14,8 +14,9 @@ use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind};
 
 /// The error for the first joint of the unsupported kind that has no text of its own.
 pub(crate) fn unwritable_joint(scene: &Scene) -> Result<(), Error> {
-    let has_text =
-        |i: usize| scene.kept(Object::Joint(i as u32)).iter().any(|k| k.place == KeptAt::Whole);
+    let has_text = |i: usize| {
+        scene.beyond.of(Object::Joint(i as u32)).iter().any(|k| k.place == KeptAt::Whole)
+    };
     let Some((i, joint)) = scene
         .joints()
         .iter()
@@ -114,7 +115,7 @@ fn writable_content(raw: &str, depth: u32) -> Parsed<()> {
 /// options would refuse from the written file (a scene loaded with larger limits may hold
 /// a long comment, or an unknown element nested deep).
 pub(crate) fn unreadable_kept_text(scene: &Scene) -> Result<(), Error> {
-    for kept in &scene.kept {
+    for kept in &scene.beyond.pieces {
         // How many elements are open where the text is written.
         let depth = match (kept.object, kept.place) {
             (_, KeptAt::Attribute) => continue,
@@ -125,7 +126,7 @@ pub(crate) fn unreadable_kept_text(scene: &Scene) -> Result<(), Error> {
             (_, KeptAt::Inside { within: "", .. }) => 3,
             (_, KeptAt::Inside { .. }) => 4,
         };
-        let text = scene.text(kept.text).unwrap_or_default();
+        let text = scene.beyond.text(kept);
         writable_content(text, depth).map_err(|why| Error {
             code: why.code,
             position: Position::default(),
@@ -145,11 +146,11 @@ pub(crate) fn unreadable_kept_text(scene: &Scene) -> Result<(), Error> {
 /// `<Pair>`s), or one named as the writer's own `Type` or `Version`.
 pub(crate) fn clashing_attributes(scene: &Scene) -> Result<(), Error> {
     let mut names: Vec<(Object, String)> = Vec::new();
-    for kept in &scene.kept {
+    for kept in &scene.beyond.pieces {
         if kept.place != KeptAt::Attribute {
             continue;
         }
-        let text = scene.text(kept.text).unwrap_or_default().trim_start();
+        let text = scene.beyond.text(kept).trim_start();
         let name = text.split(['=', ' ', '\t', '\n', '\r']).next().unwrap_or_default();
         let key = name.to_ascii_lowercase();
         let own = match kept.object {

@@ -8,10 +8,10 @@ use std::fs::File;
 use std::io::Read;
 use std::path::Path;
 
-use crate::error::{Error, Finding, Severity};
+use crate::error::{Error, Finding};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::scene::{Diagnostic, Scene};
+use crate::scene::Scene;
 use crate::{parse, resolve, validate};
 
 /// Loads a scene from the bytes of a file.
@@ -128,16 +128,7 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
     placer.place(&mut warnings);
     let mut kept = Vec::with_capacity(warnings.len());
     for w in warnings {
-        let position = w.position.unwrap_or_default();
-        let message = arena.scene.add_str(&w.message);
-        arena.scene.diagnostics.push(Diagnostic {
-            message,
-            byte_offset: position.byte_offset,
-            code: w.code as u32,
-            severity: Severity::Warning as u32,
-            line: position.line,
-            column: position.column,
-        });
+        arena.scene.push_warning(w.code, w.position.unwrap_or_default(), &w.message);
         kept.push(error_of(w));
     }
     Checked { scene: Some(arena.scene.freeze()), errors: Vec::new(), warnings: kept }

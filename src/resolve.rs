@@ -97,6 +97,7 @@ pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
 /// by the bodies that bind it; else the fixtures come in the order of the Pairs.
 fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     let templates = std::mem::take(&mut p.scene.fixtures);
+    let template_names = std::mem::take(&mut p.scene.names.fixtures);
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
     let mut shape_of: Vec<Option<u32>> = vec![None; templates.len()];
@@ -127,7 +128,7 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
         fixture.density = p.origins.shape_densities.get(shape as usize).copied().unwrap_or(0.0);
         let index = if in_place { pair.fixture.0 } else { k as u32 };
         if !in_place || !std::mem::replace(&mut made_yet[template_index], true) {
-            made.push((index, fixture));
+            made.push((index, fixture, template_names[template_index]));
             shape_spots.push((index, shape_at));
         }
         p.scene.fixture_ids.push(index);
@@ -146,9 +147,11 @@ fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
         }
         first
     };
-    made.sort_by_key(|&(index, _)| index);
+    made.sort_by_key(|&(index, ..)| index);
     shape_spots.sort_by_key(|&(index, _)| index);
-    p.scene.fixtures = made.into_iter().map(|(_, fixture)| fixture).collect();
+    for (_, fixture, name) in made {
+        p.scene.push_fixture(fixture, name);
+    }
     for (_, spot) in shape_spots {
         p.origins.fixture_shapes.push(spot);
     }

@@ -1,6 +1,6 @@
 use super::*;
-use crate::scene::Diagnostic;
-use crate::scene::{Range, SceneBuilder, UserData};
+use crate::error::Position;
+use crate::scene::{Range, SceneBuilder, UserDataText};
 
 #[test]
 fn float_is_the_shortest_round_trip_text() {
@@ -67,7 +67,6 @@ fn sample_scene() -> Scene {
     b.version = 2;
     b.gravity = Some(Vec2::new(0.0, -10.0));
     let mut ground = Shape::new(ShapeKind::Polygon);
-    ground.name = b.add_str("ground \"flat\"");
     ground.vertices = Range { first: 0, count: 2 };
     b.vertices.extend([Vec2::new(-40.0, 0.0), Vec2::new(40.0, 0.0)]);
     let mut chain = Shape::new(ShapeKind::Chain);
@@ -75,37 +74,32 @@ fn sample_scene() -> Scene {
     chain.has_next_vertex = true;
     chain.next_vertex = Vec2::new(2.0, 0.5);
     b.vertices.extend([Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.25)]);
-    b.shapes.extend([ground, chain]);
+    let ground_name = Some(b.add_str("ground \"flat\""));
+    b.push_shape(ground, ground_name);
+    b.push_shape(chain, None);
 
     let raw = b.add_str("<Type>System.String</Type><Value><string>Ground</string></Value>");
     let type_name = b.add_str("System.String");
     let value = b.add_str("Ground");
-    b.user_data.push(UserData { raw, type_name, value });
-    b.fixtures.push(Fixture { shape: 0, user_data: 0, ..Fixture::default() });
+    b.user_data.push(UserDataText { raw, type_name: Some(type_name), value: Some(value) });
+    b.push_fixture(Fixture { shape: 0, user_data: 0, ..Fixture::default() }, None);
 
     let mut body = Body::new(BodyKind::Dynamic);
-    body.name = b.add_str("crate\t1");
     body.fixtures = Range { first: 0, count: 2 };
     body.mass_data.mass = 2.5;
     body.mass_data.mass_given = true;
     b.fixture_ids.extend([0, 0]);
-    b.bodies.push(body);
+    let body_name = Some(b.add_str("crate\t1"));
+    b.push_body(body, body_name);
 
     let mut gear = Joint::new(JointKind::Gear);
     gear.body_a = 0;
     gear.body_b = 0;
     gear.joint_a = 1;
-    b.joints.push(gear);
+    b.push_joint(gear, None);
 
-    let message = b.add_str("unknown element <Foo>");
-    b.diagnostics.push(Diagnostic {
-        message,
-        byte_offset: 120,
-        code: Code::UnknownElement as u32,
-        severity: Severity::Warning as u32,
-        line: 7,
-        column: 5,
-    });
+    let at = Position { line: 7, column: 5, byte_offset: 120 };
+    b.push_warning(Code::UnknownElement, at, "unknown element <Foo>");
     b.freeze()
 }
 
@@ -173,7 +167,7 @@ fn a_scene_is_written_with_every_field_in_a_fixed_layout() {
 #[test]
 fn kinds_without_a_name_are_written_as_their_number() {
     let mut b = SceneBuilder::default();
-    b.shapes.push(Shape { kind: 9, ..Shape::new(ShapeKind::Circle) });
+    b.push_shape(Shape { kind: 9, ..Shape::new(ShapeKind::Circle) }, None);
     let json = to_json(&b.freeze());
     assert!(json.contains("\"kind\": 9, \"name\": null"), "{json}");
 }

@@ -38,6 +38,7 @@ impl<'a> Reader<'a> {
         self.begin_object(Object::Body(self.arena.scene.bodies.len() as u32));
         let origin = self.spot(tag.at);
         let mut body = Body::new(self.body_type(tag)?);
+        let mut name_str = None;
         let mut seen = Seen::default();
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
@@ -54,7 +55,7 @@ impl<'a> Reader<'a> {
                 self.duplicate(tag, &child)?;
             }
             match name {
-                BodyChild::Name => body.name = self.string(&child)?,
+                BodyChild::Name => name_str = Some(self.string(&child)?),
                 BodyChild::Active => body.active = self.boolean(&child)?,
                 BodyChild::AllowSleep => body.allow_sleep = self.boolean(&child)?,
                 BodyChild::Awake => body.awake = self.boolean(&child)?,
@@ -88,7 +89,7 @@ impl<'a> Reader<'a> {
         }
         self.end_object();
         self.arena.origins.bodies.push(origin);
-        self.arena.scene.bodies.push(body);
+        self.arena.scene.push_body(body, name_str);
         Ok(())
     }
 

@@ -31,6 +31,7 @@ impl<'a> Reader<'a> {
         self.unknown_attributes(tag, &attrs, known)?;
         self.arena.origins.signs.ids |= !known.is_empty() && attrs.iter().any(|a| a.is("id"));
         let mut fixture = Fixture::default();
+        let mut name_str = None;
         let mut shape_at = None;
         let mut seen = Seen::default();
         let mut child = Tag::slot();
@@ -57,7 +58,7 @@ impl<'a> Reader<'a> {
                     let (shape, at) = self.id(&child)?;
                     (fixture.shape, shape_at) = (shape, Some(self.spot(at)));
                 }
-                Name => fixture.name = self.string(&child)?,
+                Name => name_str = Some(self.string(&child)?),
                 Density => fixture.density = self.non_negative(&child)?,
                 Friction => fixture.friction = self.non_negative(&child)?,
                 Restitution => fixture.restitution = self.non_negative(&child)?,
@@ -81,7 +82,7 @@ impl<'a> Reader<'a> {
         // A Version 3 template has none: its bodies' Pairs give it one.
         let origin = shape_at.unwrap_or_else(|| self.spot(tag.at));
         self.arena.origins.fixture_shapes.push(origin);
-        self.arena.scene.fixtures.push(fixture);
+        self.arena.scene.push_fixture(fixture, name_str);
         Ok(())
     }
 

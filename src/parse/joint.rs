@@ -216,6 +216,7 @@ impl<'a> Reader<'a> {
             self.tok.pin(tag.at);
         }
         let mut joint = Joint::new(kind);
+        let mut name_str = None;
         let mut at = Refs { body_a: tag.at, body_b: tag.at, joint_a: tag.at, joint_b: tag.at };
         let mut seen = Seen::default();
         // Farseer's `Axis` is in world coordinates (spec section 8.1).
@@ -245,7 +246,7 @@ impl<'a> Reader<'a> {
                 self.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
-                Name => joint.name = self.string(&child)?,
+                Name => name_str = Some(self.string(&child)?),
                 UserData => joint.user_data = self.user_data(&child)?,
                 Tag => joint.user_data = self.tagged_user_data(&child)?,
                 CollideConnected => joint.collide_connected = self.boolean(&child)?,
@@ -291,7 +292,7 @@ impl<'a> Reader<'a> {
             let index = self.arena.scene.joints.len() as u32;
             self.arena.origins.world_axes.push((index, axis));
         }
-        self.arena.scene.joints.push(joint);
+        self.arena.scene.push_joint(joint, name_str);
         Ok(())
     }
 

@@ -26,7 +26,7 @@ use crate::arena::Arena;
 use crate::error::{Code, Finding, Parsed, Problem, Spot};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::scene::{Kept, KeptText, Object, Place};
+use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
 use crate::text::{self, trim_xml};
 use crate::validate;
 use lines::{Cursor, Lines};
@@ -226,7 +226,7 @@ impl<'a> Reader<'a> {
     }
 
     /// A string value, stored in the scene's string pool.
-    pub fn string(&mut self, tag: &Tag) -> Parsed<crate::scene::Str> {
+    pub fn string(&mut self, tag: &Tag) -> Parsed<PoolStr> {
         let value = self.tok.value(tag)?;
         Ok(self.arena.scene.add_str(self.tok.text_of(&value.text)))
     }
@@ -286,8 +286,8 @@ impl<'a> Reader<'a> {
     /// else a copy.
     fn kept_text(&mut self, from: usize, to: usize) -> KeptText {
         match self.tok.is_whole() {
-            true => KeptText::Span(from, to),
-            false => KeptText::Pooled(self.arena.scene.add_str(self.tok.slice(from, to))),
+            true => KeptText::File(Span { from, to }),
+            false => self.arena.scene.keep_str(self.tok.slice(from, to)),
         }
     }
 
@@ -296,11 +296,11 @@ impl<'a> Reader<'a> {
     fn keep(&mut self, object: Object, place: Place, text: KeptText) {
         let last =
             self.arena.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
-        if let (Some(last), KeptText::Span(from, to)) = (last, text)
-            && let KeptText::Span(first, end) = last.text
+        if let (Some(last), KeptText::File(Span { from, to })) = (last, text)
+            && let KeptText::File(Span { from: first, to: end }) = last.text
             && trim_xml(self.tok.slice(end, from)).is_empty()
         {
-            last.text = KeptText::Span(first, to);
+            last.text = KeptText::File(Span { from: first, to });
             return;
         }
         self.arena.scene.kept.push(Kept { object, place, text });
@@ -310,7 +310,7 @@ impl<'a> Reader<'a> {
     /// read, unless it is inside text kept whole.
     fn keep_str(&mut self, place: Place, text: &str) {
         if !self.tok.pinned() {
-            let text = KeptText::Pooled(self.arena.scene.add_str(text));
+            let text = self.arena.scene.keep_str(text);
             self.keep(self.object, place, text);
         }
     }

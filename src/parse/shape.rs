@@ -2,7 +2,7 @@
 
 use super::{Element, Reader, Seen, Tag, elements};
 use crate::error::{Code, Parsed, problem};
-use crate::scene::{Object, Range, Shape, ShapeKind, Vec2};
+use crate::scene::{Object, PoolStr, Range, Shape, ShapeKind, Vec2};
 use crate::validate;
 
 elements! {
@@ -42,7 +42,7 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
 impl<'a> Reader<'a> {
     pub(super) fn shape(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Shape(self.arena.scene.shapes.len() as u32));
-        let mut shape = self.shape_type(tag)?;
+        let (mut shape, mut name_str) = self.shape_type(tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
         let mut seen = Seen::default();
         let (mut radius_at, mut edge) = (tag.at, [Vec2::ZERO; 2]);
@@ -66,12 +66,12 @@ impl<'a> Reader<'a> {
             use ShapeChild::*;
             match name {
                 Name => {
-                    if !repeated && !shape.name.is_null() {
+                    if !repeated && name_str.is_some() {
                         let message = "<Shape> has both a Name attribute and a <Name> element; \
                                        the element wins";
                         self.warn(Code::DuplicateElement, child.at, message)?;
                     }
-                    shape.name = self.string(&child)?;
+                    name_str = Some(self.string(&child)?);
                 }
                 Radius => (shape.radius, radius_at) = self.value(&child, crate::text::float)?,
                 Position => shape.position = self.vector(&child)?,
@@ -126,13 +126,13 @@ impl<'a> Reader<'a> {
         }
         self.check_geometry(tag, &shape)?;
         self.end_object();
-        self.arena.scene.shapes.push(shape);
+        self.arena.scene.push_shape(shape, name_str);
         Ok(())
     }
 
     /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
     /// the `Density` of the fixtures made with it).
-    fn shape_type(&mut self, tag: &Tag) -> Parsed<Shape> {
+    fn shape_type(&mut self, tag: &Tag) -> Parsed<(Shape, Option<PoolStr>)> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.farseer_layout() {
             &["Type", "Name", "Density"]
@@ -182,10 +182,9 @@ impl<'a> Reader<'a> {
         }
         let mut shape = Shape::new(kind);
         shape.is_loop = is_loop;
-        if let Some(name) = attrs.iter().find(|a| a.is("name")) {
-            shape.name = self.arena.scene.add_str(super::trim_xml(&name.value));
-        }
-        Ok(shape)
+        let name = attrs.iter().find(|a| a.is("name"));
+        let name = name.map(|name| self.arena.scene.add_str(super::trim_xml(&name.value)));
+        Ok((shape, name))
     }
 
     /// `<Vertices>` of a polygon (at most 8) or a chain (at most the chain limit).

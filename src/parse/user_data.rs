@@ -5,7 +5,7 @@ use super::{Node, Reader, Tag, Tokenizer, trim_xml};
 use crate::error::{Code, Parsed, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::scene::{Str, UserData};
+use crate::scene::UserDataText;
 
 /// Where a UserData is written: inside `<World>`, a container, an item and `<UserData>`.
 pub(crate) const USER_DATA_DEPTH: u32 = 4;
@@ -100,10 +100,10 @@ impl<'a> Reader<'a> {
             false => walk_user_data(&mut self.tok, tag)?,
         };
         let (type_name, value) = form.texts();
-        let mut add = |s: Option<String>| s.map_or(Str::NULL, |s| self.arena.scene.add_str(&s));
+        let mut add = |s: Option<String>| s.map(|s| self.arena.scene.add_str(&s));
         let (type_name, value) = (add(type_name), add(value));
         let raw = self.arena.scene.add_str(&raw);
-        self.arena.scene.user_data.push(UserData { raw, type_name, value });
+        self.arena.scene.user_data.push(UserDataText { raw, type_name, value });
         Ok((self.arena.scene.user_data.len() - 1) as u32)
     }
 }

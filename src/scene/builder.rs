@@ -1,15 +1,51 @@
 //! A scene under construction: its records and pools as a load or the builder fills them,
-//! pieces read on two threads appended, and frozen into the immutable [`Scene`].
+//! pieces read on two threads appended, and frozen into the immutable [`Scene`]. While it
+//! is built a string is a [`PoolStr`], an offset into its pool that the type names; only
+//! freezing makes the records' [`Str`] pointers.
 
 use std::ffi::c_char;
 
-use super::kept::Objects;
+use super::kept::{Beyond, Objects, Span};
 use super::{
     Body, Diagnostic, Dialect, Fixture, Joint, Kept, KeptText, NONE, Scene, Shape, Str, UserData,
     Vec2,
 };
+use crate::error::{Code, Position, Severity};
 
-/// A scene under construction: the same arrays, with strings still as pool offsets.
+/// A string of the pool a scene is built with: where it starts there. It becomes a
+/// [`Str`] when the scene is frozen; until then the records' strings are NULL, and their
+/// text is in the builder's string columns.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct PoolStr(usize);
+
+impl PoolStr {
+    /// The same string once a pool of `before` bytes is put before its own.
+    fn shifted(self, before: usize) -> PoolStr {
+        PoolStr(self.0 + before)
+    }
+}
+
+/// The strings of a user data while it is built (see [`UserData`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct UserDataText {
+    pub raw: PoolStr,
+    pub type_name: Option<PoolStr>,
+    pub value: Option<PoolStr>,
+}
+
+/// The names of the records, while they are built: a column beside each array, as long
+/// as it.
+#[derive(Debug, Default)]
+pub(crate) struct Names {
+    pub shapes: Vec<Option<PoolStr>>,
+    pub fixtures: Vec<Option<PoolStr>>,
+    pub bodies: Vec<Option<PoolStr>>,
+    pub joints: Vec<Option<PoolStr>>,
+}
+
+/// A scene under construction: the same arrays, their strings (NULL in the records) in
+/// columns of pool offsets beside them, and the text kept for the writer in a pool of its
+/// own.
 #[derive(Debug, Default)]
 pub(crate) struct SceneBuilder {
     pub version: u32,
@@ -20,24 +56,72 @@ pub(crate) struct SceneBuilder {
     pub fixtures: Vec<Fixture>,
     pub bodies: Vec<Body>,
     pub joints: Vec<Joint>,
+    pub names: Names,
     pub vertices: Vec<Vec2>,
     pub fixture_ids: Vec<u32>,
-    pub user_data: Vec<UserData>,
-    pub diagnostics: Vec<Diagnostic>,
+    pub user_data: Vec<UserDataText>,
+    /// Each with its message, the record's own NULL.
+    pub diagnostics: Vec<(Diagnostic, PoolStr)>,
     /// In file order.
     pub kept: Vec<Kept<KeptText>>,
     strings: Vec<u8>,
+    kept_text: String,
 }
 
 impl SceneBuilder {
     /// Stores `text` NUL-terminated in the string pool. Text holding a NUL is cut there
     /// (the loader rejects NUL bytes before this point).
-    pub fn add_str(&mut self, text: &str) -> Str {
+    pub fn add_str(&mut self, text: &str) -> PoolStr {
         let offset = self.strings.len();
         let text = text.split('\0').next().unwrap_or_default();
         self.strings.extend_from_slice(text.as_bytes());
         self.strings.push(0);
-        Str::pending(offset)
+        PoolStr(offset)
+    }
+
+    /// Stores `text` in the pool of kept text and says where.
+    pub fn keep_str(&mut self, text: &str) -> KeptText {
+        let from = self.kept_text.len();
+        self.kept_text.push_str(text);
+        KeptText::Pooled(Span { from, to: self.kept_text.len() })
+    }
+
+    pub fn push_shape(&mut self, shape: Shape, name: Option<PoolStr>) {
+        debug_assert!(shape.name.is_null());
+        self.shapes.push(shape);
+        self.names.shapes.push(name);
+    }
+
+    pub fn push_fixture(&mut self, fixture: Fixture, name: Option<PoolStr>) {
+        debug_assert!(fixture.name.is_null());
+        self.fixtures.push(fixture);
+        self.names.fixtures.push(name);
+    }
+
+    pub fn push_body(&mut self, body: Body, name: Option<PoolStr>) {
+        debug_assert!(body.name.is_null());
+        self.bodies.push(body);
+        self.names.bodies.push(name);
+    }
+
+    pub fn push_joint(&mut self, joint: Joint, name: Option<PoolStr>) {
+        debug_assert!(joint.name.is_null());
+        self.joints.push(joint);
+        self.names.joints.push(name);
+    }
+
+    /// Adds a warning with `message` (placed at `position`).
+    pub fn push_warning(&mut self, code: Code, position: Position, message: &str) {
+        let message = self.add_str(message);
+        let diagnostic = Diagnostic {
+            message: Str::NULL,
+            byte_offset: position.byte_offset,
+            code: code as u32,
+            severity: Severity::Warning as u32,
+            line: position.line,
+            column: position.column,
+        };
+        self.diagnostics.push((diagnostic, message));
     }
 
     /// Lets go of the room its arrays hold beyond what they hold (a piece read on the second
@@ -68,15 +152,18 @@ impl SceneBuilder {
             fixtures,
             bodies,
             joints,
+            names,
             vertices,
             fixture_ids,
             user_data,
             diagnostics,
             kept,
             strings,
+            kept_text,
         } = other;
         let strings_before = self.strings.len();
-        let name = |s: Str| s.shifted(strings_before);
+        let string = |s: PoolStr| s.shifted(strings_before);
+        let name = |s: Option<PoolStr>| s.map(string);
         let before = Objects {
             shapes: self.shapes.len() as u32,
             fixtures: self.fixtures.len() as u32,
@@ -87,93 +174,107 @@ impl SceneBuilder {
         let user = |index: u32| if index == NONE { NONE } else { index + user_data_before };
         let (vertices_before, ids_before) = (self.vertices.len(), self.fixture_ids.len());
         self.gravity = self.gravity.or(gravity);
-        self.shapes.extend(shapes.into_iter().map(|s| Shape {
-            name: name(s.name),
-            vertices: s.vertices.shifted(vertices_before),
-            ..s
-        }));
-        self.fixtures.extend(fixtures.into_iter().map(|f| Fixture {
-            name: name(f.name),
-            user_data: user(f.user_data),
-            ..f
-        }));
+        self.shapes.extend(
+            shapes
+                .into_iter()
+                .map(|s| Shape { vertices: s.vertices.shifted(vertices_before), ..s }),
+        );
+        self.fixtures
+            .extend(fixtures.into_iter().map(|f| Fixture { user_data: user(f.user_data), ..f }));
         self.bodies.extend(bodies.into_iter().map(|b| Body {
-            name: name(b.name),
             fixtures: b.fixtures.shifted(ids_before),
             user_data: user(b.user_data),
             ..b
         }));
-        self.joints.extend(joints.into_iter().map(|j| Joint {
-            name: name(j.name),
-            user_data: user(j.user_data),
-            ..j
-        }));
+        self.joints.extend(joints.into_iter().map(|j| Joint { user_data: user(j.user_data), ..j }));
+        self.names.shapes.extend(names.shapes.into_iter().map(name));
+        self.names.fixtures.extend(names.fixtures.into_iter().map(name));
+        self.names.bodies.extend(names.bodies.into_iter().map(name));
+        self.names.joints.extend(names.joints.into_iter().map(name));
         self.vertices.extend(vertices);
         self.fixture_ids.extend(fixture_ids);
-        self.user_data.extend(user_data.into_iter().map(|u| UserData {
-            raw: name(u.raw),
+        self.user_data.extend(user_data.into_iter().map(|u| UserDataText {
+            raw: string(u.raw),
             type_name: name(u.type_name),
             value: name(u.value),
         }));
-        self.diagnostics
-            .extend(diagnostics.into_iter().map(|d| Diagnostic { message: name(d.message), ..d }));
-        self.kept.extend(kept.into_iter().map(|k| k.shifted(before, strings_before)));
+        self.diagnostics.extend(diagnostics.into_iter().map(|(d, m)| (d, string(m))));
+        let kept_before = self.kept_text.len();
+        self.kept.extend(kept.into_iter().map(|k| k.shifted(before, kept_before)));
         self.strings.extend(strings);
+        self.kept_text.push_str(&kept_text);
     }
 
-    /// Copies the spans of kept text, read with `slice`, into the string pool.
+    /// Copies the spans of kept text, read with `slice`, into the pool of kept text.
     pub fn pool_kept_text<'t>(&mut self, slice: impl Fn(usize, usize) -> &'t str) {
         for i in 0..self.kept.len() {
-            if let KeptText::Span(from, to) = self.kept[i].text {
-                self.kept[i].text = KeptText::Pooled(self.add_str(slice(from, to)));
+            if let KeptText::File(Span { from, to }) = self.kept[i].text {
+                self.kept[i].text = self.keep_str(slice(from, to));
             }
         }
     }
 
-    /// Rebases every string into the final pool and returns the immutable scene (whose
-    /// kept text is all in the pool: see [`SceneBuilder::pool_kept_text`]).
+    /// Turns every string into a pointer into the final pool and returns the immutable
+    /// scene (whose kept text is all in its pool: see [`SceneBuilder::pool_kept_text`]).
     pub fn freeze(self) -> Scene {
-        let mut scene = Scene {
+        let mut strings = self.strings;
+        strings.shrink_to_fit();
+        // The pool is final: it is moved into the scene as a Vec, whose buffer stays put.
+        let pool = strings.as_ptr().cast::<c_char>();
+        let at = |s: PoolStr| Str(pool.wrapping_add(s.0));
+        let named = |name: Option<PoolStr>| name.map_or(Str::NULL, at);
+        let (mut shapes, mut fixtures, mut bodies, mut joints) =
+            (self.shapes, self.fixtures, self.bodies, self.joints);
+        let names = self.names;
+        debug_assert!(
+            names.shapes.len() == shapes.len()
+                && names.fixtures.len() == fixtures.len()
+                && names.bodies.len() == bodies.len()
+                && names.joints.len() == joints.len(),
+            "a record was pushed without its name"
+        );
+        for (s, name) in shapes.iter_mut().zip(names.shapes) {
+            s.name = named(name);
+        }
+        for (f, name) in fixtures.iter_mut().zip(names.fixtures) {
+            f.name = named(name);
+        }
+        for (b, name) in bodies.iter_mut().zip(names.bodies) {
+            b.name = named(name);
+        }
+        for (j, name) in joints.iter_mut().zip(names.joints) {
+            j.name = named(name);
+        }
+        let user_data = (self.user_data.into_iter())
+            .map(|u| UserData {
+                raw: at(u.raw),
+                type_name: named(u.type_name),
+                value: named(u.value),
+            })
+            .collect();
+        let diagnostics =
+            self.diagnostics.into_iter().map(|(d, m)| Diagnostic { message: at(m), ..d }).collect();
+        let pooled = |k: Kept<KeptText>| match k.text {
+            KeptText::Pooled(text) => Some(Kept { object: k.object, place: k.place, text }),
+            KeptText::File(..) => None,
+        };
+        let mut pieces: Vec<Kept> = self.kept.into_iter().filter_map(pooled).collect();
+        // Stable: each object's pieces stay in file order.
+        pieces.sort_by_key(|k| k.object);
+        Scene {
             version: self.version,
             dialect: self.dialect.unwrap_or(Dialect::Box2scene),
-            world_axes: self.world_axes,
             gravity: self.gravity,
-            shapes: self.shapes,
-            fixtures: self.fixtures,
-            bodies: self.bodies,
-            joints: self.joints,
+            shapes,
+            fixtures,
+            bodies,
+            joints,
             vertices: self.vertices,
             fixture_ids: self.fixture_ids,
-            user_data: self.user_data,
-            diagnostics: self.diagnostics,
-            kept: {
-                let pooled = |k: Kept<KeptText>| match k.text {
-                    KeptText::Pooled(text) => Some(Kept { object: k.object, place: k.place, text }),
-                    KeptText::Span(..) => None,
-                };
-                let mut kept: Vec<Kept> = self.kept.into_iter().filter_map(pooled).collect();
-                // Stable: each object's pieces stay in file order.
-                kept.sort_by_key(|k| k.object);
-                kept
-            },
-            strings: {
-                let mut strings = self.strings;
-                strings.shrink_to_fit();
-                strings
-            },
-        };
-        let pool = scene.strings.as_ptr().cast::<c_char>();
-        let names = (scene.shapes.iter_mut().map(|s| &mut s.name))
-            .chain(scene.fixtures.iter_mut().map(|f| &mut f.name))
-            .chain(scene.bodies.iter_mut().map(|b| &mut b.name))
-            .chain(scene.joints.iter_mut().map(|j| &mut j.name))
-            .chain(scene.diagnostics.iter_mut().map(|d| &mut d.message))
-            .chain(scene.kept.iter_mut().map(|k| &mut k.text));
-        let user_data =
-            scene.user_data.iter_mut().flat_map(|u| [&mut u.raw, &mut u.type_name, &mut u.value]);
-        for s in names.chain(user_data) {
-            s.rebase(pool);
+            user_data,
+            diagnostics,
+            strings,
+            beyond: Beyond { world_axes: self.world_axes, pieces, text: self.kept_text },
         }
-        scene
     }
 }

@@ -1,7 +1,8 @@
 //! What a loaded file held that no record has, kept for the writer: by object, by place
-//! in it, and while the file is read as spans of its text.
+//! in it, in a pool of its own apart from the strings of the C view, and while the file is
+//! read as spans of its text.
 
-use super::Str;
+use super::Vec2;
 
 /// The object a piece of [`Kept`] text belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -68,32 +69,67 @@ pub(crate) enum Place {
 }
 
 /// Text a loaded file held that no record has: a comment, an unknown element or attribute,
-/// a Farseer-only joint. Only the writer reads it (`docs/format.md`, "Writing"); the C view has none of it. While a file is read, `T` says where the text
-/// is (see [`KeptText`]).
+/// a Farseer-only joint. Only the writer reads it (`docs/format.md`, "Writing"); the C view
+/// has none of it. While a file is read, `T` says where the text is (see [`KeptText`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Kept<T = Str> {
+pub(crate) struct Kept<T = Span> {
     pub object: Object,
     pub place: Place,
     pub text: T,
 }
 
-/// Kept text while a file is read: a span of a text that stays at hand until the load
-/// ends, copied only once it succeeds (so a file of many unknown elements costs a few
-/// spans, not a copy), or a string of the pool.
+/// Bytes `from..to` of a text.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Span {
+    pub from: usize,
+    pub to: usize,
+}
+
+/// Kept text while a file is read: a span of the file's text, which stays at hand until
+/// the load ends and is copied only once it succeeds (so a file of many unknown elements
+/// costs a few spans, not a copy), or a span of the pool of kept text.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum KeptText {
-    Span(usize, usize),
-    Pooled(Str),
+    File(Span),
+    Pooled(Span),
 }
 
 impl Kept<KeptText> {
-    /// The same piece after `before` more objects of each kind, and a string pool of
-    /// `strings_before` bytes, were put before it.
-    pub(super) fn shifted(self, before: Objects, strings_before: usize) -> Self {
+    /// The same piece after `before` more objects of each kind, and a pool of kept text of
+    /// `pool_before` bytes, were put before it.
+    pub(super) fn shifted(self, before: Objects, pool_before: usize) -> Self {
         let text = match self.text {
-            KeptText::Pooled(s) => KeptText::Pooled(s.shifted(strings_before)),
-            span => span,
+            KeptText::Pooled(Span { from, to }) => {
+                KeptText::Pooled(Span { from: from + pool_before, to: to + pool_before })
+            }
+            file => file,
         };
         Kept { object: self.object.shifted(before), text, ..self }
+    }
+}
+
+/// What only the writer reads of a frozen scene: what its file held beyond the records.
+#[derive(Debug, Default)]
+pub(crate) struct Beyond {
+    /// The joints whose file gave Farseer's world `Axis`, with it, for a writer that
+    /// writes it back as it was.
+    pub world_axes: Vec<(u32, Vec2)>,
+    /// By object, each object's in file order.
+    pub pieces: Vec<Kept>,
+    /// The text of the pieces.
+    pub text: String,
+}
+
+impl Beyond {
+    /// The pieces of `object`, in file order.
+    pub(crate) fn of(&self, object: Object) -> &[Kept] {
+        let first = self.pieces.partition_point(|k| k.object < object);
+        let end = first + self.pieces[first..].partition_point(|k| k.object == object);
+        &self.pieces[first..end]
+    }
+
+    /// The text of `piece`.
+    pub(crate) fn text(&self, piece: &Kept) -> &str {
+        &self.text[piece.text.from..piece.text.to]
     }
 }

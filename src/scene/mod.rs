@@ -17,8 +17,8 @@ mod builder;
 mod kept;
 mod records;
 
-pub(crate) use builder::SceneBuilder;
-pub(crate) use kept::{Kept, KeptText, Object, Place};
+pub(crate) use builder::{PoolStr, SceneBuilder, UserDataText};
+pub(crate) use kept::{Beyond, Kept, KeptText, Object, Place, Span};
 pub use records::*;
 
 /// A loaded scene: immutable once built. All arrays are flat; see the field docs of each
@@ -28,9 +28,6 @@ pub struct Scene {
     pub(crate) version: u32,
     /// The dialect of the file it was read from; box2scene's own for a built scene.
     pub(crate) dialect: Dialect,
-    /// The joints whose file gave Farseer's world `Axis`, with it, for a writer that
-    /// writes it back as it was.
-    pub(crate) world_axes: Vec<(u32, Vec2)>,
     pub(crate) gravity: Option<Vec2>,
     pub(crate) shapes: Vec<Shape>,
     pub(crate) fixtures: Vec<Fixture>,
@@ -40,11 +37,12 @@ pub struct Scene {
     pub(crate) fixture_ids: Vec<u32>,
     pub(crate) user_data: Vec<UserData>,
     pub(crate) diagnostics: Vec<Diagnostic>,
-    /// What the file held beyond the records, by object, each object's in file order.
-    pub(crate) kept: Vec<Kept>,
-    /// A Vec, not a Box: moving a Box would invalidate (for Rust's aliasing rules) the
-    /// string pointers taken from it when the scene was frozen.
+    /// The strings the records point into. A Vec, not a Box: moving a Box would invalidate
+    /// (for Rust's aliasing rules) the string pointers taken from it when the scene was
+    /// frozen.
     pub(crate) strings: Vec<u8>,
+    /// What only the writer reads: the file's text beyond the records.
+    pub(crate) beyond: Beyond,
 }
 
 impl Scene {
@@ -104,13 +102,6 @@ impl Scene {
     /// The user data at `index`, or None for [`NONE`].
     pub fn user_data_at(&self, index: u32) -> Option<&UserData> {
         self.user_data.get(index as usize)
-    }
-
-    /// What the file held beyond the records of `object`, in file order.
-    pub(crate) fn kept(&self, object: Object) -> &[Kept] {
-        let first = self.kept.partition_point(|k| k.object < object);
-        let end = first + self.kept[first..].partition_point(|k| k.object == object);
-        &self.kept[first..end]
     }
 
     /// The text of a string of this scene; None for NULL (or a string of another scene).

@@ -86,26 +86,6 @@ impl Str {
     pub fn as_ptr(self) -> *const c_char {
         self.0
     }
-
-    /// While a scene is being built a string is its pool offset plus one, carried in the
-    /// pointer's address; [`Str::rebase`] turns it into a real pointer once the pool is final.
-    pub(crate) fn pending(offset: usize) -> Str {
-        Str(std::ptr::without_provenance(offset + 1))
-    }
-
-    /// A pending string of a pool that is appended to one of `before` bytes.
-    pub(super) fn shifted(self, before: usize) -> Str {
-        match self.is_null() {
-            true => self,
-            false => Str(std::ptr::without_provenance(self.0.addr() + before)),
-        }
-    }
-
-    pub(super) fn rebase(&mut self, pool: *const c_char) {
-        if !self.is_null() {
-            self.0 = pool.wrapping_add(self.0.addr() - 1);
-        }
-    }
 }
 
 /// What a shape is: the values of the `kind` field of `b2s_shape`.

@@ -55,8 +55,8 @@ impl Target {
 pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
     let target = Target::of(dialect);
     let index = |i: usize| i as u32;
-    for kept in &scene.kept {
-        let text = scene.text(kept.text).unwrap_or_default();
+    for kept in &scene.beyond.pieces {
+        let text = scene.beyond.text(kept);
         if kept.place != Place::Whole {
             return Some((kept.object, "holds comments or unknown content".to_owned()));
         }
@@ -517,7 +517,7 @@ impl FarseerWriter<'_> {
             self.vector(local_name, joint.local_axis_a);
             return;
         }
-        let kept = self.scene.world_axes.iter().find(|&&(j, _)| j as usize == index);
+        let kept = self.scene.beyond.world_axes.iter().find(|&&(j, _)| j as usize == index);
         let angle = self.scene.bodies()[joint.body_a as usize].angle;
         let world = match kept {
             Some(&(_, world)) => world,
@@ -527,10 +527,10 @@ impl FarseerWriter<'_> {
     }
 
     fn joint(&mut self, index: usize, joint: &Joint) {
-        let kept = self.scene.kept(Object::Joint(index as u32));
+        let kept = self.scene.beyond.of(Object::Joint(index as u32));
         if let Some(whole) = kept.iter().find(|k| k.place == Place::Whole) {
             self.out.push_str("    ");
-            self.out.push_str(self.scene.text(whole.text).unwrap_or_default());
+            self.out.push_str(self.scene.beyond.text(whole));
             self.out.push('\n');
             return;
         }

@@ -56,7 +56,7 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
         scene,
         all: options.all_fields,
         version: if needs_version_2(scene) { 2 } else { 1 },
-        world: Scope::new(scene.kept(Object::World), 1),
+        world: Scope::new(scene.beyond.of(Object::World), 1),
         item: None,
     };
     writer.document();

@@ -68,7 +68,7 @@ impl<'s> Writer<'s> {
                 continue;
             }
             self.scope().written[i] = true;
-            let text = self.scene.text(k.text).unwrap_or_default();
+            let text = self.scene.beyond.text(k);
             if k.place != KeptAt::Attribute {
                 self.indent();
             }
@@ -96,7 +96,7 @@ impl<'s> Writer<'s> {
     /// Writes `object` (an item of a container) with `write`, or as its kept whole text,
     /// with the kept text before it.
     fn item(&mut self, object: Object, write: impl FnOnce(&mut Self)) {
-        let kept = self.scene.kept(object);
+        let kept = self.scene.beyond.of(object);
         self.item = Some(Scope::new(kept, self.depth + 1));
         self.put(|at| at == KeptAt::Before);
         if kept.iter().any(|k| k.place == KeptAt::Whole) {

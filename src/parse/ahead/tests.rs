@@ -44,8 +44,8 @@ fn records(scene: &Scene) -> String {
     for j in scene.joints() {
         records += &format!("{:?}\n", Joint { name, ..*j });
     }
-    for k in &scene.kept {
-        records += &format!("kept {:?} {:?} {:?}\n", k.object, k.place, scene.text(k.text));
+    for k in &scene.beyond.pieces {
+        records += &format!("kept {:?} {:?} {:?}\n", k.object, k.place, scene.beyond.text(k));
     }
     records
 }
