@@ -4,8 +4,8 @@
 //! reading it (the UserData fragment, the kept text).
 #![forbid(unsafe_code)]
 
+use crate::bytes::first_non_char;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
-use crate::input::first_non_char;
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::Object;

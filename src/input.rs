@@ -15,6 +15,7 @@ use std::fs::File;
 use std::io::{Read, Seek, SeekFrom};
 use std::path::Path;
 
+use crate::bytes::first_non_char;
 use crate::error::{Code, Error, Finding, Position};
 use crate::options::LoadOptions;
 
@@ -647,36 +648,6 @@ fn non_char(text: &str, at: usize, base: usize) -> Finding {
             }
         }
     }
-}
-
-/// The offset of the first character of `text` outside XML's Char production (the writer
-/// and the builder check names with it too). Blocks of 64 bytes are screened by loops the
-/// compiler vectorises for a suspect byte: a control character other than tab, line feed
-/// and carriage return, or 0xEF (which begins U+FFFE and U+FFFF, and no other character
-/// before U+F000). Only a block with one is looked at byte by byte; the usual file, with
-/// no control characters and few characters from U+F000 on, has few.
-pub(crate) fn first_non_char(text: &[u8]) -> Option<usize> {
-    let non_char = |&i: &usize| match text[i] {
-        0xEF => matches!(text[i + 1..], [0xBF, 0xBE | 0xBF, ..]),
-        b => b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r'),
-    };
-    let mut from = 0;
-    while let Some(block) = text[from..].first_chunk::<64>() {
-        // Line feeds are in most blocks; tabs, carriage returns and bytes past ASCII (below
-        // 0x20 too, as signed bytes) in few. So a first look, with fewer comparisons, lets
-        // only line feeds through, and only the few blocks it stops get the full look.
-        let rare = |b: u8| ((b as i8) < 0x20) & (b != b'\n');
-        let suspect =
-            |b: u8| ((b < 0x20) & (b != b'\t') & (b != b'\n') & (b != b'\r')) | (b == 0xEF);
-        if block.iter().fold(false, |any, &b| any | rare(b))
-            && block.iter().fold(false, |any, &b| any | suspect(b))
-            && let Some(at) = (from..from + block.len()).find(non_char)
-        {
-            return Some(at);
-        }
-        from += block.len();
-    }
-    (from..text.len()).find(non_char)
 }
 
 /// `<` followed or preceded by a zero byte: UTF-16 text that lost its byte-order mark.

@@ -18,6 +18,7 @@
 
 mod arena;
 mod builder;
+mod bytes;
 #[doc(hidden)]
 mod containers;
 pub mod draw;

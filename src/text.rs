@@ -3,6 +3,7 @@
 //! whose `at` is the byte offset, within that text, of the offending part.
 #![forbid(unsafe_code)]
 
+use crate::bytes::{is_xml_space_byte, xml_trimmed_span};
 use crate::error::{Code, Finding};
 use crate::scene::Vec2;
 
@@ -13,58 +14,10 @@ fn bad(code: Code, at: usize, message: impl Into<String>) -> Finding {
 /// XML white space (not Unicode's), for `trim_*_matches`.
 pub(crate) const XML_SPACE: [char; 4] = [' ', '\t', '\r', '\n'];
 
-/// XML white space, as a byte of UTF-8 text. All four are ASCII, so a byte that matches is a
-/// whole character and the text can be sliced next to it.
-pub fn is_xml_space_byte(b: u8) -> bool {
-    matches!(b, b' ' | b'\t' | b'\r' | b'\n')
-}
-
-/// How many bytes of XML white space `bytes` starts with, looking at eight at a time:
-/// indentation before a tag is often longer than that.
-pub fn leading_space(bytes: &[u8]) -> usize {
-    if !bytes.first().is_some_and(|&b| is_xml_space_byte(b)) {
-        return 0;
-    }
-    let mut i = 0;
-    while let Some(eight) = bytes[i..].first_chunk::<8>() {
-        let word = u64::from_le_bytes(*eight);
-        let space = [b' ', b'\t', b'\n', b'\r']
-            .into_iter()
-            .fold(0, |space, b| space | bytes_equal(word, b));
-        let other = !space & HIGH_BITS;
-        if other != 0 {
-            return i + (other.trailing_zeros() / 8) as usize;
-        }
-        i += 8;
-    }
-    i + bytes[i..].iter().position(|&b| !is_xml_space_byte(b)).unwrap_or(bytes.len() - i)
-}
-
-const HIGH_BITS: u64 = u64::from_le_bytes([0x80; 8]);
-
-/// The high bit of each byte of `word` that is `b`.
-pub(crate) fn bytes_equal(word: u64, b: u8) -> u64 {
-    zero_bytes(word ^ u64::from_le_bytes([b; 8]))
-}
-
-/// The high bit of each byte of `word` that is zero. Exact for every byte (no borrow
-/// crosses from one byte to the next, as it can in the shorter formula).
-fn zero_bytes(word: u64) -> u64 {
-    let low = !HIGH_BITS;
-    !(((word & low) + low) | word) & HIGH_BITS
-}
-
-/// Where `bytes` without leading and trailing XML white space starts and ends.
-pub fn trimmed_span(bytes: &[u8]) -> (usize, usize) {
-    let start = leading_space(bytes);
-    let end = bytes.iter().rposition(|&b| !is_xml_space_byte(b)).map_or(start, |i| i + 1);
-    (start, end)
-}
-
 /// `s` without leading and trailing XML white space, and where that starts in `s`. The
 /// white space is ASCII, so the cut points are always character boundaries.
 pub fn trim_xml_at(s: &str) -> (usize, &str) {
-    let (start, end) = trimmed_span(s.as_bytes());
+    let (start, end) = xml_trimmed_span(s.as_bytes());
     (start, &s[start..end])
 }
 

@@ -1,4 +1,4 @@
-use super::{CHUNK, Pieces, Source, first_non_char};
+use super::{CHUNK, Pieces, Source};
 use crate::error::Code;
 use crate::options::LoadOptions;
 
@@ -18,35 +18,6 @@ fn a_file_that_grows_past_the_limit_stops_the_text() {
     let stop = source.stop().expect("the limit stops the text");
     assert_eq!((stop.code, stop.at), (Code::LimitExceeded, 3 * CHUNK));
     assert_eq!(source.end(), 3 * CHUNK);
-}
-
-/// Every character that XML forbids, at every offset of texts of what it allows (plain
-/// lines; tabs and carriage returns; characters past ASCII; those from U+F000 on next
-/// to U+FFFE), is found where a character-by-character look finds it.
-#[test]
-fn first_non_char_finds_what_a_character_by_character_look_finds() {
-    let kinds: [&[&str]; 4] = [
-        &["a\n", "  <b>", "12 "],
-        &["\t", "\r\n", "x"],
-        &["é€", "日本", "\u{10000}", " "],
-        &["\u{EFFF}", "\u{F000}\u{FFFD}", "\u{FEFF}", "\n"],
-    ];
-    let forbidden = ["\0", "\u{1}", "\u{8}", "\u{B}", "\u{C}", "\u{1F}", "\u{FFFE}", "\u{FFFF}"];
-    let by_char = |text: &str| {
-        let non_char = |c| matches!(c, '\0'..='\u{8}' | '\u{B}' | '\u{C}' | '\u{E}'..='\u{1F}' | '\u{FFFE}' | '\u{FFFF}');
-        text.char_indices().find(|&(_, c)| non_char(c)).map(|(at, _)| at)
-    };
-    for pieces in kinds {
-        let clean: String = (0..100).map(|i| pieces[i % pieces.len()]).collect();
-        assert_eq!(first_non_char(clean.as_bytes()), None);
-        for at in (0..=clean.len()).filter(|&at| clean.is_char_boundary(at)) {
-            for bad in forbidden {
-                let text = format!("{}{bad}{}", &clean[..at], &clean[at..]);
-                assert_eq!(by_char(&text), Some(at));
-                assert_eq!(first_non_char(text.as_bytes()), Some(at), "{bad:?} at {at}");
-            }
-        }
-    }
 }
 
 /// A text in memory is checked a chunk at a time as it is read (the longer the text

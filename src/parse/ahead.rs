@@ -21,11 +21,11 @@ use super::tokenizer::{Stop, Tokenizer, is_end_of_piece};
 use super::world::WorldChild;
 use super::{Reader, Seen, Tag};
 use crate::arena::Arena;
+use crate::bytes::is_xml_space_byte;
 use crate::containers::Container;
 use crate::error::{Code, Parsed, Position, problem};
 use crate::input::{Pieces, Source};
 use crate::options::LoadOptions;
-use crate::text::is_xml_space_byte;
 
 /// The smallest text worth a second thread: below it, starting one costs more than it
 /// saves.

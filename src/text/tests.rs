@@ -423,25 +423,6 @@ fn booleans_match_the_old_ones() {
 }
 
 #[test]
-fn leading_space_stops_at_the_first_other_byte() {
-    let spaces = b" \t\n\r";
-    for len in 0..20 {
-        for b in 0..=u8::MAX {
-            // `len` white space bytes of every kind, `b`, then more white space.
-            let mut bytes: Vec<u8> = (0..len).map(|i| spaces[i % 4]).collect();
-            bytes.push(b);
-            bytes.extend(spaces);
-            let expected = match spaces.contains(&b) {
-                true => bytes.len(),
-                false => len,
-            };
-            assert_eq!(super::leading_space(&bytes), expected, "{bytes:?}");
-            assert_eq!(super::leading_space(&bytes[..len]), len);
-        }
-    }
-}
-
-#[test]
 fn rewritten_conversions_match_the_old_ones_on_hand_picked_text() {
     for &text in HAND_PICKED {
         same_trim(text);

@@ -25,11 +25,10 @@ use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::text::{self};
 
-mod bytes;
 mod pieces;
 mod values;
 
-use bytes::{ENDS_NAME, find3, space_len};
+use crate::bytes::{ENDS_NAME, find3, is_xml_space_byte, space_len};
 use values::resolve_text;
 pub(super) use values::verbatim;
 
@@ -499,8 +498,7 @@ impl<'a> Tokenizer<'a> {
                     Some(content) => (content, true),
                     None => (content, false),
                 };
-                let name_len =
-                    content.bytes().position(text::is_xml_space_byte).unwrap_or(content.len());
+                let name_len = content.bytes().position(is_xml_space_byte).unwrap_or(content.len());
                 let name = &content[..name_len];
                 let content = (content.len() > name_len).then(|| content.into());
                 Tag { name: Name::new(name), content, at, empty }
@@ -613,7 +611,7 @@ impl<'a> Tokenizer<'a> {
         self.pos = end + 2;
         let content = self.source.slice(at + 2, end);
         let is_declaration = content.starts_with("xml")
-            && content.as_bytes().get(3).is_none_or(|&b| text::is_xml_space_byte(b));
+            && content.as_bytes().get(3).is_none_or(|&b| is_xml_space_byte(b));
         if is_declaration {
             if at != 0 {
                 return Err(problem(

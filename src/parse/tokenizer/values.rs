@@ -8,10 +8,10 @@ use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
-use super::bytes::{find3, is_plain_name_byte, space_len, trimmed_span};
 use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
+use crate::bytes::{find3, first_non_char, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
-use crate::input::{Encoding, first_non_char};
+use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
 
 impl<'a> Tokenizer<'a> {

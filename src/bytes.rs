@@ -1,0 +1,179 @@
+//! The byte finders of the crate, every scan over raw bytes in one place: the characters
+//! XML forbids, XML white space (exactly, for any text; and in one comparison a byte, for
+//! the text a load reads, which holds no other control character), the ends of names, and
+//! the first of a few bytes. Word-at-a-time tricks live here and nowhere else.
+#![forbid(unsafe_code)]
+
+/// The offset of the first character of `text` outside XML's Char production (the writer
+/// and the builder check names with it too). Blocks of 64 bytes are screened by loops the
+/// compiler vectorises for a suspect byte: a control character other than tab, line feed
+/// and carriage return, or 0xEF (which begins U+FFFE and U+FFFF, and no other character
+/// before U+F000). Only a block with one is looked at byte by byte; the usual file, with
+/// no control characters and few characters from U+F000 on, has few.
+pub(crate) fn first_non_char(text: &[u8]) -> Option<usize> {
+    let non_char = |&i: &usize| match text[i] {
+        0xEF => matches!(text[i + 1..], [0xBF, 0xBE | 0xBF, ..]),
+        b => b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r'),
+    };
+    let mut from = 0;
+    while let Some(block) = text[from..].first_chunk::<64>() {
+        // Line feeds are in most blocks; tabs, carriage returns and bytes past ASCII (below
+        // 0x20 too, as signed bytes) in few. So a first look, with fewer comparisons, lets
+        // only line feeds through, and only the few blocks it stops get the full look.
+        let rare = |b: u8| ((b as i8) < 0x20) & (b != b'\n');
+        let suspect =
+            |b: u8| ((b < 0x20) & (b != b'\t') & (b != b'\n') & (b != b'\r')) | (b == 0xEF);
+        if block.iter().fold(false, |any, &b| any | rare(b))
+            && block.iter().fold(false, |any, &b| any | suspect(b))
+            && let Some(at) = (from..from + block.len()).find(non_char)
+        {
+            return Some(at);
+        }
+        from += block.len();
+    }
+    (from..text.len()).find(non_char)
+}
+
+/// XML white space, as a byte of UTF-8 text. All four are ASCII, so a byte that matches is a
+/// whole character and the text can be sliced next to it.
+pub(crate) fn is_xml_space_byte(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | b'\n')
+}
+
+/// How many bytes of XML white space `bytes` starts with, looking at eight at a time:
+/// indentation before a tag is often longer than that. Exact for any bytes (see
+/// [`space_len`] for the text a load reads).
+pub(crate) fn xml_space_len(bytes: &[u8]) -> usize {
+    if !bytes.first().is_some_and(|&b| is_xml_space_byte(b)) {
+        return 0;
+    }
+    let mut i = 0;
+    while let Some(eight) = bytes[i..].first_chunk::<8>() {
+        let word = u64::from_le_bytes(*eight);
+        let space = [b' ', b'\t', b'\n', b'\r']
+            .into_iter()
+            .fold(0, |space, b| space | bytes_equal(word, b));
+        let other = !space & HIGH_BITS;
+        if other != 0 {
+            return i + (other.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
+    i + bytes[i..].iter().position(|&b| !is_xml_space_byte(b)).unwrap_or(bytes.len() - i)
+}
+
+const HIGH_BITS: u64 = u64::from_le_bytes([0x80; 8]);
+
+/// The high bit of each byte of `word` that is `b`.
+fn bytes_equal(word: u64, b: u8) -> u64 {
+    zero_bytes(word ^ u64::from_le_bytes([b; 8]))
+}
+
+/// The high bit of each byte of `word` that is zero. Exact for every byte (no borrow
+/// crosses from one byte to the next, as it can in the shorter formula).
+fn zero_bytes(word: u64) -> u64 {
+    let low = !HIGH_BITS;
+    !(((word & low) + low) | word) & HIGH_BITS
+}
+
+/// Where `bytes` without leading and trailing XML white space starts and ends.
+pub(crate) fn xml_trimmed_span(bytes: &[u8]) -> (usize, usize) {
+    let start = xml_space_len(bytes);
+    let end = bytes.iter().rposition(|&b| !is_xml_space_byte(b)).map_or(start, |i| i + 1);
+    (start, end)
+}
+
+/// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without
+/// quick-xml.
+pub(crate) fn is_plain_name_byte(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || matches!(b, b'_' | b':' | b'-' | b'.')
+}
+
+/// The bytes that end a name in the usual tags: white space (and the control characters,
+/// which no name has), `/`, `>` and quotes.
+pub(crate) const ENDS_NAME: [bool; 256] = {
+    let mut ends = [false; 256];
+    let mut b = 0;
+    while b <= b' ' {
+        ends[b as usize] = true;
+        b += 1;
+    }
+    ends[b'/' as usize] = true;
+    ends[b'>' as usize] = true;
+    ends[b'"' as usize] = true;
+    ends[b'\'' as usize] = true;
+    ends
+};
+
+/// How many bytes of white space the text at hand `text` starts with. Every byte of it up to
+/// 0x20 is white space, as the source stops before any other control character
+/// ([`first_non_char`]): so the test is one comparison a byte, made eight at a time. For
+/// text nothing checked, [`xml_space_len`].
+#[inline(always)]
+pub(crate) fn space_len(text: &[u8]) -> usize {
+    if text.first().is_none_or(|&b| b > b' ') {
+        return 0;
+    }
+    const OVER_SPACE: u64 = u64::from_le_bytes([0x80 - 0x21; 8]);
+    let mut i = 0;
+    while let Some(eight) = text[i..].first_chunk::<8>() {
+        let word = u64::from_le_bytes(*eight);
+        // The high bit of each byte above 0x20: the low seven bits plus 0x5F reach 0x80
+        // from 0x21 on and never carry out of their byte (0x7F + 0x5F < 0x100); a byte of
+        // 0x80 or more has it already.
+        let other = (((word & !HIGH_BITS) + OVER_SPACE) | word) & HIGH_BITS;
+        if other != 0 {
+            return i + (other.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
+    i + text[i..].iter().position(|&b| b > b' ').unwrap_or(text.len() - i)
+}
+
+/// Where the text at hand `text` without leading and trailing white space starts and ends
+/// (see [`space_len`]).
+#[inline(always)]
+pub(crate) fn trimmed_span(text: &[u8]) -> (usize, usize) {
+    let start = space_len(text);
+    let end = text.iter().rposition(|&b| b > b' ').map_or(start, |i| i + 1);
+    (start, end)
+}
+
+/// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
+/// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
+/// rest.
+#[inline]
+pub(crate) fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
+    let mut i = 0;
+    while let Some(eight) = hay[i..].first_chunk::<8>().filter(|_| i < 32) {
+        let word = u64::from_le_bytes(*eight);
+        let found = first_equal(word, a) | first_equal(word, b) | first_equal(word, c);
+        if found != 0 {
+            return Some(i + (found.trailing_zeros() / 8) as usize);
+        }
+        i += 8;
+    }
+    memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
+}
+
+/// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little
+/// endian) of `word` that is `b`; 0 when no byte is. Bits above that one may be set too.
+///
+/// With `x = word ^ [b; 8]`, the bytes equal to `b` are the zero bytes of `x`, and
+/// `(x - 0x01..01) & !x & 0x80..80` flags the lowest of them exactly. Going up from the
+/// lowest byte, as long as no borrow comes in: a byte `x_i` that is not zero borrows
+/// nothing from the next, and `x_i - 1` has its high bit set only when `x_i` is 0x81 or
+/// more, when `!x_i` has not, so it is not flagged; the first zero byte becomes 0xFF, high
+/// bit set, with `!x_i` high bit set: flagged. Only past it can a borrow flag a byte that is
+/// not zero (0x01 becomes 0xFF). So OR-ing the masks of several bytes keeps the first byte
+/// equal to any of them as the lowest set bit, which is all [`find3`] looks at; the exact
+/// test ([`bytes_equal`]) takes more instructions for every byte.
+#[inline(always)]
+pub(crate) fn first_equal(word: u64, b: u8) -> u64 {
+    const ONES: u64 = u64::from_le_bytes([0x01; 8]);
+    let x = word ^ u64::from_le_bytes([b; 8]);
+    x.wrapping_sub(ONES) & !x & HIGH_BITS
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,122 @@
+use super::*;
+
+/// Every character that XML forbids, at every offset of texts of what it allows (plain
+/// lines; tabs and carriage returns; characters past ASCII; those from U+F000 on next
+/// to U+FFFE), is found where a character-by-character look finds it.
+#[test]
+fn first_non_char_finds_what_a_character_by_character_look_finds() {
+    let kinds: [&[&str]; 4] = [
+        &["a\n", "  <b>", "12 "],
+        &["\t", "\r\n", "x"],
+        &["é€", "日本", "\u{10000}", " "],
+        &["\u{EFFF}", "\u{F000}\u{FFFD}", "\u{FEFF}", "\n"],
+    ];
+    let forbidden = ["\0", "\u{1}", "\u{8}", "\u{B}", "\u{C}", "\u{1F}", "\u{FFFE}", "\u{FFFF}"];
+    let by_char = |text: &str| {
+        let non_char = |c| matches!(c, '\0'..='\u{8}' | '\u{B}' | '\u{C}' | '\u{E}'..='\u{1F}' | '\u{FFFE}' | '\u{FFFF}');
+        text.char_indices().find(|&(_, c)| non_char(c)).map(|(at, _)| at)
+    };
+    for pieces in kinds {
+        let clean: String = (0..100).map(|i| pieces[i % pieces.len()]).collect();
+        assert_eq!(first_non_char(clean.as_bytes()), None);
+        for at in (0..=clean.len()).filter(|&at| clean.is_char_boundary(at)) {
+            for bad in forbidden {
+                let text = format!("{}{bad}{}", &clean[..at], &clean[at..]);
+                assert_eq!(by_char(&text), Some(at));
+                assert_eq!(first_non_char(text.as_bytes()), Some(at), "{bad:?} at {at}");
+            }
+        }
+    }
+}
+
+#[test]
+fn xml_space_len_stops_at_the_first_other_byte() {
+    let spaces = b" \t\n\r";
+    for len in 0..20 {
+        for b in 0..=u8::MAX {
+            // `len` white space bytes of every kind, `b`, then more white space.
+            let mut bytes: Vec<u8> = (0..len).map(|i| spaces[i % 4]).collect();
+            bytes.push(b);
+            bytes.extend(spaces);
+            let expected = match spaces.contains(&b) {
+                true => bytes.len(),
+                false => len,
+            };
+            assert_eq!(xml_space_len(&bytes), expected, "{bytes:?}");
+            assert_eq!(xml_space_len(&bytes[..len]), len);
+        }
+    }
+}
+
+#[test]
+fn find3_finds_the_first_of_three_bytes() {
+    for len in 0..80 {
+        for at in 0..=len {
+            for (b, c) in [(b'<', b'&'), (b'&', b'<'), (b'\r', b'\r'), (0xBC, b'<')] {
+                // `b` at `at` (unless past the end), `c` later, other bytes around them.
+                let mut hay: Vec<u8> = (0..len).map(|i| b"a \n\xE2<&\r"[i % 3]).collect();
+                if at < len {
+                    hay[at] = b;
+                }
+                hay.push(c);
+                let expected = hay.iter().position(|&x| matches!(x, b'<' | b'&' | b'\r'));
+                assert_eq!(find3(&hay, b'<', b'&', b'\r'), expected, "{hay:?}");
+            }
+        }
+    }
+}
+
+/// The lowest flag of `first_equal` is the first byte equal to the one looked for, and
+/// there is none when no byte is, whatever the bytes after it: in particular those a
+/// borrow goes through (one above it, 0x80, 0x81, 0xFF...).
+#[test]
+fn first_equal_flags_the_first_equal_byte_first() {
+    let mut state = 0x2545_F491_4F6C_DD1Du64;
+    for b in [0u8, 1, b'\r', b'&', b'<', b'>', 0x7F, 0x80, 0x81, 0xFE, 0xFF] {
+        let near = [
+            b,
+            b ^ 1,
+            b ^ 0x80,
+            b ^ 0x81,
+            b ^ 0x7F,
+            b ^ 0xFF,
+            b.wrapping_add(1),
+            b.wrapping_sub(1),
+            0,
+            0xFF,
+        ];
+        for _ in 0..100_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let bytes: [u8; 8] = std::array::from_fn(|i| near[(state >> (6 * i)) as usize % 10]);
+            let expected = bytes.iter().position(|&x| x == b);
+            let mask = first_equal(u64::from_le_bytes(bytes), b);
+            let found = (mask != 0).then(|| (mask.trailing_zeros() / 8) as usize);
+            assert_eq!(found, expected, "{bytes:02x?} looking for {b:#04x}");
+        }
+    }
+}
+
+/// The white space of the text at hand is skipped and trimmed as XML white space is, in
+/// text without the control characters the source stops before.
+#[test]
+fn space_len_and_trimmed_span_agree_with_xml_white_space() {
+    let pieces: [&[u8]; 9] = [b" ", b"\t", b"\n", b"\r", b"a", b"<", b"\xC3\xA9", b"!", b"\x7F"];
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    for len in 0..40 {
+        for _ in 0..500 {
+            let mut text = Vec::new();
+            for _ in 0..len {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                // Mostly white space, so that runs of it cross the eight-byte words.
+                let pick = (state % 16) as usize;
+                text.extend_from_slice(pieces[if pick < 8 { pick % 4 } else { pick - 7 }]);
+            }
+            assert_eq!(space_len(&text), xml_space_len(&text), "{text:?}");
+            assert_eq!(trimmed_span(&text), xml_trimmed_span(&text), "{text:?}");
+        }
+    }
+}
