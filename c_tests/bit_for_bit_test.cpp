@@ -1,4 +1,4 @@
-// The adapter against Box2D by hand: c_tests/data/every-v1-field.xml (every Version 1
+// The adapter against Box2D by hand: tests/fixtures/adapter/every-v1-field.xml (every Version 1
 // field) goes through b2s_load_file and build_world; the same world is written here with
 // plain Box2D calls, following docs/format.md ("Onto Box2D 2.4.1"). Both step 120 times
 // and every body must end in exactly the same state, bit for bit. Creation order matters to
@@ -353,7 +353,7 @@ static void step(b2World& world) {
 }
 
 static int loaded_world_equals_hand_built_world() {
-    ScenePtr scene = load_project_file("c_tests/data/every-v1-field.xml");
+    ScenePtr scene = load_project_file("tests/fixtures/adapter/every-v1-field.xml");
     ENSURE(scene != nullptr);
     b2Vec2 gravity = box2scene::scene_gravity(scene.get(), b2Vec2(0.0f, -10.0f));
     ENSURE(same_bits(gravity, kGravity));

@@ -1,4 +1,4 @@
-// The four real files of the Box2CS editor (tests/data/corpus/, byte-for-byte copies of
+// The four real files of the Box2CS editor (tests/fixtures/corpus/, byte-for-byte copies of
 // the shared corpus): what the loader must find in them, and the worlds the adapter
 // builds from them. The counts were taken by reading the files.
 #include <box2d/box2d.h>
@@ -11,10 +11,11 @@
 #include "test_macros.h"
 #include "test_scenes.hpp"
 
-static const char* const kRenderer = "tests/data/corpus/renderer-scene-v1.xml";
-static const char* const kLegacy = "tests/data/corpus/legacy-unversioned.xml";
-static const char* const kAllFields = "tests/data/corpus/revolute-all-fields-v1.xml";
-static const char* const kDefaultsOmitted = "tests/data/corpus/revolute-defaults-omitted-v1.xml";
+static const char* const kRenderer = "tests/fixtures/corpus/renderer-scene-v1.xml";
+static const char* const kLegacy = "tests/fixtures/corpus/legacy-unversioned.xml";
+static const char* const kAllFields = "tests/fixtures/corpus/revolute-all-fields-v1.xml";
+static const char* const kDefaultsOmitted =
+    "tests/fixtures/corpus/revolute-defaults-omitted-v1.xml";
 
 static bool has_diagnostic(const struct b2s_scene_view& view, b2s_code code) {
     for (uint32_t i = 0; i < view.diagnostic_count; ++i) {

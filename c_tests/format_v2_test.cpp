@@ -13,11 +13,11 @@
 #include "test_worlds.hpp"
 
 static World farseer_v2() {
-    return World(load_project_file("tests/scenes/farseer-v2.xml"));
+    return World(load_project_file("tests/fixtures/scenes/farseer-v2.xml"));
 }
 
 static World farseer_v3() {
-    return World(load_project_file("tests/scenes/farseer-v3.xml"));
+    return World(load_project_file("tests/fixtures/scenes/farseer-v3.xml"));
 }
 
 /// Whether every body has a finite position and angle.

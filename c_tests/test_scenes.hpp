@@ -66,8 +66,8 @@ inline ScenePtr load_quietly(const std::string& bytes) {
 /// Every scene file of the project (`.xml` in its scene folders), as sorted paths from its
 /// root.
 inline std::vector<std::string> project_scene_files() {
-    static const char* const folders[] = {"tests/scenes", "tests/data/corpus",
-                                          "examples/scenes", "c_tests/data"};
+    static const char* const folders[] = {"tests/fixtures/scenes", "tests/fixtures/corpus",
+                                          "examples/scenes", "tests/fixtures/adapter"};
     std::vector<std::string> files;
     for (const char* folder : folders) {
         std::filesystem::path dir = std::filesystem::path(BOX2SCENE_SOURCE_DIR) / folder;

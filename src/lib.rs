@@ -140,13 +140,13 @@ impl Scene {
     }
 }
 
-/// The project's scene files and the editor's (tests/scenes, tests/data/corpus): names
+/// The project's scene files and the editor's (tests/fixtures/scenes, tests/fixtures/corpus): names
 /// and bytes, for the unit tests.
 #[cfg(test)]
 fn scene_files() -> Vec<(String, Vec<u8>)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut files = Vec::new();
-    for dir in ["tests/scenes", "tests/data/corpus"] {
+    for dir in ["tests/fixtures/scenes", "tests/fixtures/corpus"] {
         for entry in std::fs::read_dir(root.join(dir)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "xml") {

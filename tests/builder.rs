@@ -36,8 +36,8 @@ fn rebuild(scene: &Scene) -> Scene {
 fn a_loaded_scene_rebuilt_is_the_same_scene() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     for file in [
-        "tests/scenes/every-v1-field.xml",
-        "tests/data/corpus/renderer-scene-v1.xml",
+        "tests/fixtures/scenes/every-v1-field.xml",
+        "tests/fixtures/corpus/renderer-scene-v1.xml",
         "examples/scenes/showcase.xml",
     ] {
         let scene = load_path(root.join(file), &LoadOptions::default()).unwrap();

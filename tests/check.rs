@@ -179,7 +179,7 @@ fn a_check_ends_after_a_hundred_errors_of_references_too() {
 fn a_file_without_errors_checks_as_it_loads() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut files = 0;
-    for dir in ["tests/data/corpus", "tests/scenes"] {
+    for dir in ["tests/fixtures/corpus", "tests/fixtures/scenes"] {
         for entry in std::fs::read_dir(root.join(dir)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_none_or(|e| e != "xml") {

@@ -1,5 +1,5 @@
 //! The writer's dialects (docs/format.md, "Dialects"): the hand-made example of each engine's
-//! form in tests/dialects/ loads to the scene it describes and comes back out equal to
+//! form in tests/fixtures/dialects/ loads to the scene it describes and comes back out equal to
 //! itself; and every scene file of the project, written for each engine's reader, keeps
 //! that reader's rules, one test per rule, and reads back to the same world.
 
@@ -18,13 +18,18 @@ fn root() -> PathBuf {
 }
 
 fn example(dialect: Dialect) -> PathBuf {
-    root().join("tests/dialects").join(format!("{}.xml", dialect.name()))
+    root().join("tests/fixtures/dialects").join(format!("{}.xml", dialect.name()))
 }
 
 /// Every scene file of the project: its scenes, the examples', the C tests', the editor's
 /// corpus, and the dialect examples.
 fn scene_files() -> Vec<PathBuf> {
-    let dirs = ["tests/scenes", "examples/scenes", "c_tests/data", "tests/data/corpus"];
+    let dirs = [
+        "tests/fixtures/scenes",
+        "examples/scenes",
+        "tests/fixtures/adapter",
+        "tests/fixtures/corpus",
+    ];
     let mut files: Vec<PathBuf> = dirs
         .iter()
         .flat_map(|dir| std::fs::read_dir(root().join(dir)).unwrap())

@@ -51,12 +51,13 @@ fn assert_round_trip(scene: &Scene, what: &str) -> String {
 
 fn scene_files() -> Vec<PathBuf> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let mut files: Vec<PathBuf> = ["tests/scenes", "tests/data/corpus", "examples/scenes"]
-        .iter()
-        .flat_map(|dir| std::fs::read_dir(root.join(dir)).unwrap())
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "xml"))
-        .collect();
+    let mut files: Vec<PathBuf> =
+        ["tests/fixtures/scenes", "tests/fixtures/corpus", "examples/scenes"]
+            .iter()
+            .flat_map(|dir| std::fs::read_dir(root.join(dir)).unwrap())
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "xml"))
+            .collect();
     files.sort();
     files
 }
@@ -78,9 +79,11 @@ fn every_scene_file_round_trips_exactly() {
 #[test]
 fn legacy_and_farseer_files_come_out_clean() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let legacy =
-        load_path(root.join("tests/data/corpus/legacy-unversioned.xml"), &LoadOptions::default())
-            .unwrap();
+    let legacy = load_path(
+        root.join("tests/fixtures/corpus/legacy-unversioned.xml"),
+        &LoadOptions::default(),
+    )
+    .unwrap();
     let written = write(&legacy, &WriteOptions::default()).unwrap();
     assert!(
         written.contains("<World Version=\"1\">") && !written.contains("<JointA>"),
@@ -88,7 +91,8 @@ fn legacy_and_farseer_files_come_out_clean() {
     );
     assert!(load_text(&written).diagnostics().is_empty());
 
-    let v3 = load_path(root.join("tests/scenes/farseer-v3.xml"), &LoadOptions::default()).unwrap();
+    let v3 = load_path(root.join("tests/fixtures/scenes/farseer-v3.xml"), &LoadOptions::default())
+        .unwrap();
     // Written in its own dialect unless another is asked for.
     let kept = write(&v3, &WriteOptions::default()).unwrap();
     assert!(kept.starts_with("<World Version=\"3\">") && kept.contains("<Bindings>"), "{kept}");
@@ -99,8 +103,10 @@ fn legacy_and_farseer_files_come_out_clean() {
         "{written}"
     );
 
-    let v2 = load_path(root.join("tests/scenes/farseer-v2.xml"), &LoadOptions::default()).unwrap();
-    let source = std::fs::read_to_string(root.join("tests/scenes/farseer-v2.xml")).unwrap();
+    let v2 = load_path(root.join("tests/fixtures/scenes/farseer-v2.xml"), &LoadOptions::default())
+        .unwrap();
+    let source =
+        std::fs::read_to_string(root.join("tests/fixtures/scenes/farseer-v2.xml")).unwrap();
     let farseer_only = |text: &str| -> Vec<String> {
         ["<Joint Type=\"Angle\">", "<Joint Type=\"Slider\">"]
             .iter()
@@ -212,7 +218,8 @@ fn assert_just_before(written: &str, pairs: &[(&str, &str)]) {
 fn kept_content_goes_back_where_it_was() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let scene =
-        load_path(root.join("tests/scenes/kept-content.xml"), &LoadOptions::default()).unwrap();
+        load_path(root.join("tests/fixtures/scenes/kept-content.xml"), &LoadOptions::default())
+            .unwrap();
     let written = write(&scene, &WriteOptions::default()).unwrap();
     assert_just_before(
         &written,

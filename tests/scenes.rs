@@ -1,7 +1,7 @@
-//! Scene files and their expected results: every `tests/scenes/*.xml` and every editor file
-//! in `tests/data/corpus/` loads to the JSON dump beside it (`NAME.json`; run with
-//! `BOX2SCENE_BLESS=1` to write a missing one, then read it before committing). Plus
-//! exact values, container order and letter case.
+//! Scene files and their expected results: every `tests/fixtures/scenes/*.xml` and every
+//! editor file in `tests/fixtures/corpus/` loads to the JSON dump beside it (`NAME.json`;
+//! run with `BOX2SCENE_BLESS=1` to write a missing one, then read it before committing).
+//! Plus exact values, container order and letter case, and the fixtures' index complete.
 
 // The files hold the editor's own text of pi/2 and -pi/4, compared exactly.
 #![allow(clippy::approx_constant)]
@@ -30,12 +30,44 @@ fn xml_files(dir: &Path) -> Vec<PathBuf> {
     files
 }
 
+/// The fixtures' index (`tests/fixtures/README.md`) names every file under the folder,
+/// a JSON dump through its scene's line, and nothing that is not there.
+#[test]
+fn the_fixture_index_names_every_fixture() {
+    let fixtures = root().join("tests/fixtures");
+    let index = std::fs::read_to_string(fixtures.join("README.md")).unwrap();
+    let listed: Vec<&str> =
+        (index.lines()).filter_map(|line| line.strip_prefix("| `")?.split('`').next()).collect();
+    let mut present = Vec::new();
+    for folder in std::fs::read_dir(&fixtures).unwrap() {
+        let folder = folder.unwrap().path();
+        if !folder.is_dir() {
+            continue;
+        }
+        for file in std::fs::read_dir(&folder).unwrap() {
+            let file = file.unwrap().path();
+            let relative = file.strip_prefix(&fixtures).unwrap().to_str().unwrap().to_owned();
+            present.push(relative);
+        }
+    }
+    for file in &present {
+        let scene = file.strip_suffix(".json").map(|stem| format!("{stem}.xml"));
+        let named = listed.contains(&file.as_str())
+            || scene.is_some_and(|xml| listed.contains(&xml.as_str()) && present.contains(&xml));
+        assert!(named, "tests/fixtures/{file} is not in tests/fixtures/README.md");
+    }
+    for file in listed {
+        assert!(present.iter().any(|p| p == file), "the index names {file}, which is not there");
+    }
+}
+
 #[test]
 fn every_scene_matches_its_golden_dump() {
-    let files: Vec<PathBuf> = [root().join("tests/scenes"), root().join("tests/data/corpus")]
-        .iter()
-        .flat_map(|dir| xml_files(dir))
-        .collect();
+    let files: Vec<PathBuf> =
+        [root().join("tests/fixtures/scenes"), root().join("tests/fixtures/corpus")]
+            .iter()
+            .flat_map(|dir| xml_files(dir))
+            .collect();
     assert!(files.len() >= 7, "scenes and the four editor files: {files:?}");
     for xml in files {
         let golden = xml.with_extension("json");
@@ -51,7 +83,7 @@ fn every_scene_matches_its_golden_dump() {
 
 #[test]
 fn the_editor_files_load_with_their_values() {
-    let corpus = root().join("tests/data/corpus");
+    let corpus = root().join("tests/fixtures/corpus");
     let scene = load_file(&corpus.join("renderer-scene-v1.xml"));
     let counts =
         |s: &Scene| (s.shapes().len(), s.fixtures().len(), s.bodies().len(), s.joints().len());
@@ -94,7 +126,7 @@ fn the_editor_files_load_with_their_values() {
 
 #[test]
 fn every_value_spelling_reads_exactly() {
-    let scene = load_file(&root().join("tests/scenes/value-spellings.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/value-spellings.xml"));
     let shapes = scene.shapes();
     assert_eq!(
         (shapes[0].kind(), shapes[0].radius, shapes[0].position),
@@ -126,7 +158,7 @@ fn every_value_spelling_reads_exactly() {
 
 #[test]
 fn joint_defaults_follow_the_spec_per_kind() {
-    let scene = load_file(&root().join("tests/scenes/defaults-per-joint-kind.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/defaults-per-joint-kind.xml"));
     let j = scene.joints();
     let v = Vec2::new;
     assert_eq!(
@@ -181,7 +213,8 @@ fn permutations(n: usize) -> Vec<Vec<usize>> {
 
 #[test]
 fn all_24_container_orders_give_identical_scenes() {
-    let xml = std::fs::read_to_string(root().join("tests/scenes/every-v1-field.xml")).unwrap();
+    let xml =
+        std::fs::read_to_string(root().join("tests/fixtures/scenes/every-v1-field.xml")).unwrap();
     let expected = load(xml.as_bytes(), &LoadOptions::default()).unwrap().to_json();
     let (head, parts, tail) = split_containers(&xml);
     let orders = permutations(4);
@@ -227,7 +260,8 @@ fn recase(xml: &str, case: fn(&char) -> char) -> String {
 
 #[test]
 fn names_and_enumerations_are_case_insensitive() {
-    let xml = std::fs::read_to_string(root().join("tests/scenes/every-v1-field.xml")).unwrap();
+    let xml =
+        std::fs::read_to_string(root().join("tests/fixtures/scenes/every-v1-field.xml")).unwrap();
     let expected = load(xml.as_bytes(), &LoadOptions::default()).unwrap().to_json();
     let upper = recase_markup(&xml, char::to_ascii_uppercase);
     let lower = recase_markup(&xml, char::to_ascii_lowercase);
@@ -267,7 +301,7 @@ fn violated_joints(scene: &Scene) -> usize {
 
 #[test]
 fn every_v1_field_is_read() {
-    let scene = load_file(&root().join("tests/scenes/every-v1-field.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/every-v1-field.xml"));
     // The axle, the slider, the pulley and the suspension start apart.
     assert_eq!(violated_joints(&scene), 4);
     let cart = &scene.bodies()[scene.find_body("cart").unwrap() as usize];
@@ -297,7 +331,7 @@ fn every_v1_field_is_read() {
 
 #[test]
 fn farseer_version_2_spellings_are_read() {
-    let scene = load_file(&root().join("tests/scenes/farseer-v2.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/farseer-v2.xml"));
     let j = scene.joints();
     let kinds: Vec<_> = j.iter().map(|j| j.kind().unwrap()).collect();
     use JointKind::*;
@@ -371,7 +405,7 @@ fn farseer_version_2_spellings_are_read() {
 
 #[test]
 fn farseer_version_3_pairs_become_fixtures() {
-    let scene = load_file(&root().join("tests/scenes/farseer-v3.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/farseer-v3.xml"));
     let f = scene.fixtures();
     let made: Vec<_> = f.iter().map(|f| (f.shape, f.density, f.friction)).collect();
     assert_eq!(made, [(0, 0.0, 0.2), (2, 1.0, 0.8), (1, 2.5, 0.8), (1, 2.5, 0.2)]);
@@ -384,7 +418,7 @@ fn farseer_version_3_pairs_become_fixtures() {
 /// each template is shared by several bodies. Aether's `Tag` is the UserData.
 #[test]
 fn farseer_version_3_pairs_bind_by_position_not_id() {
-    let scene = load_file(&root().join("tests/scenes/farseer-v3-counter-ids.xml"));
+    let scene = load_file(&root().join("tests/fixtures/scenes/farseer-v3-counter-ids.xml"));
     let f = scene.fixtures();
     let made: Vec<_> = f.iter().map(|f| (f.shape, f.density, f.friction, f.is_sensor)).collect();
     assert_eq!(
@@ -413,7 +447,7 @@ fn farseer_version_3_pairs_bind_by_position_not_id() {
     let codes: Vec<_> = scene.diagnostics().iter().map(|d| d.code()).collect();
     assert_eq!(codes, [], "Ids, Tags and 32-bit filter bits are silent");
 
-    let v2 = load_file(&root().join("tests/scenes/farseer-v2-2013-ids.xml"));
+    let v2 = load_file(&root().join("tests/fixtures/scenes/farseer-v2-2013-ids.xml"));
     assert!(v2.diagnostics().is_empty(), "Ids on fixtures and bodies are silent");
     assert_eq!(v2.fixtures()[0].friction, 0.4);
 }

@@ -86,7 +86,7 @@ fn scene(bodies: usize, padding: usize) -> String {
 
 #[test]
 fn every_scene_and_corpus_file_loads_the_same_from_a_path() {
-    let dirs = [root().join("tests/scenes"), root().join("tests/data/corpus")];
+    let dirs = [root().join("tests/fixtures/scenes"), root().join("tests/fixtures/corpus")];
     let mut count = 0;
     for dir in dirs {
         for entry in std::fs::read_dir(dir).unwrap() {

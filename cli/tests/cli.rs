@@ -1163,7 +1163,8 @@ fn fmt_and_render_write_through_a_link_to_a_file_not_yet_there() {
 fn fmt_writes_for_the_reader_dialect_names_and_keeps_an_engines_own() {
     let sandbox = Sandbox::new("fmt-dialect");
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
-    let velcro = std::fs::read_to_string(root.join("tests/dialects/farseer-3.5.xml")).unwrap();
+    let velcro =
+        std::fs::read_to_string(root.join("tests/fixtures/dialects/farseer-3.5.xml")).unwrap();
     sandbox.write("level.xml", &velcro);
     let kept = sandbox.run(&["fmt", "level.xml"]);
     assert_eq!((kept.status, kept.stdout.as_str()), (0, velcro.as_str()));

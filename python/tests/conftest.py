@@ -8,7 +8,12 @@ import os
 import pytest
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-SCENE_DIRS = ["tests/scenes", "examples/scenes", "c_tests/data", "tests/data/corpus"]
+SCENE_DIRS = [
+    "tests/fixtures/scenes",
+    "examples/scenes",
+    "tests/fixtures/adapter",
+    "tests/fixtures/corpus",
+]
 
 
 def scene_files():

@@ -98,7 +98,7 @@ def test_the_records_are_the_c_views(showcase):
 
 
 def test_user_data_and_names_come_through():
-    path = os.path.join(ROOT, "tests", "scenes", "every-v1-field.xml")
+    path = os.path.join(ROOT, "tests", "fixtures", "scenes", "every-v1-field.xml")
     scene = box2scene.load(path)
     rubber = scene.fixtures[0]
     assert rubber.name == "rubber"
