@@ -4,9 +4,8 @@
 //! resolve and validate finish it.
 #![forbid(unsafe_code)]
 
-use crate::error::{
-    Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem, Spot, Step,
-};
+use crate::error::{Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem};
+use crate::place::{Spot, Spots};
 use crate::scene::{SceneBuilder, Vec2};
 
 /// A scene under construction, with what the later stages need to check it.
@@ -94,88 +93,6 @@ pub(crate) struct JointOrigin {
     pub body_b: Spot,
     pub joint_a: Spot,
     pub joint_b: Spot,
-}
-
-/// Spots in half the memory of a `Vec<Spot>`: a load holds one per object and per
-/// reference until it is checked. Each is the [`Step`] to it from the one before, in 8
-/// bytes, as a file's spots go, a few lines and bytes apart and in short lines; one no
-/// step holds is kept whole aside. They are read in order (a check looks up the few it
-/// reports in one pass, see [`Spots::at`]): a piece of the file read on the second thread
-/// then carries no small block beside its steps, which the calling thread would let go
-/// and keep in its cache of small blocks, high in the helper's heap.
-pub(crate) struct Spots {
-    steps: Vec<Step>,
-    aside: Vec<Spot>,
-    /// The last spot, which the next is a step from.
-    last: Spot,
-}
-
-impl Default for Spots {
-    fn default() -> Spots {
-        Spots { steps: Vec::new(), aside: Vec::new(), last: Spots::START }
-    }
-}
-
-impl Spots {
-    /// What the first spot is a step from.
-    const START: Spot = Spot::offset(0);
-
-    #[inline]
-    pub fn push(&mut self, spot: Spot) {
-        let before = std::mem::replace(&mut self.last, spot);
-        let step = spot.step_from(before).unwrap_or_else(|| {
-            self.aside.push(spot);
-            Step::aside(self.aside.len() - 1)
-        });
-        self.steps.push(step);
-    }
-
-    pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
-        self.steps.iter().scan(Spots::START, |spot, &step| {
-            *spot = match step.aside_index() {
-                Some(index) => self.aside[index],
-                None => spot.stepped(step),
-            };
-            Some(*spot)
-        })
-    }
-
-    /// The spots at `indices`, in their order, found in one pass over the steps (the start
-    /// of the text for an index past the last).
-    pub fn at(&self, indices: &[usize]) -> Vec<Spot> {
-        let mut order: Vec<usize> = (0..indices.len()).collect();
-        order.sort_by_key(|&i| indices[i]);
-        let mut found = vec![Spots::START; indices.len()];
-        let (mut spots, mut next, mut spot) = (self.iter(), 0, Spots::START);
-        for i in order {
-            while next <= indices[i] {
-                let Some(following) = spots.next() else { return found };
-                (spot, next) = (following, next + 1);
-            }
-            found[i] = spot;
-        }
-        found
-    }
-
-    pub fn clear(&mut self) {
-        self.steps.clear();
-        self.aside.clear();
-        self.last = Spots::START;
-    }
-}
-
-impl Extend<Spot> for Spots {
-    fn extend<I: IntoIterator<Item = Spot>>(&mut self, spots: I) {
-        for spot in spots {
-            self.push(spot);
-        }
-    }
-}
-
-impl std::fmt::Debug for Spots {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_list().entries(self.iter()).finish()
-    }
 }
 
 /// The [`JointOrigin`]s, in [`Spots`]: four per joint.
@@ -367,47 +284,17 @@ impl Origins {
 mod tests {
     use super::*;
 
-    /// Every spot comes back as it went in, whether a step from the one before holds it or
-    /// it is kept aside: far apart in lines or bytes, back in the file, past 4 GiB, on a
-    /// long line, on line `u32::MAX`; in order, and picked in any order.
+    /// Joint origins come back as they went in, four spots each, whatever the spots.
     #[test]
-    fn spots_come_back_as_they_went_in() {
+    fn joint_origins_come_back_as_they_went_in() {
         let at = |line, column, byte_offset| Spot::placed(Position { line, column, byte_offset });
-        let big = u64::from(u32::MAX);
-        let odd = [
-            Spot::offset(0),
-            Spot::offset(u32::MAX as usize),
-            at(0, 0, big + 1),
-            at(1, 1, 0),
-            at(7, 3, big),
-            at(7, 4, big + (1 << 31)),
-            at(7, 4, 1),
-            at(u32::MAX, 2, 9),
-            at(u32::MAX - 1, u32::MAX, 1 << 40),
-            at(40_000, 65_535, 1 << 40),
-            at(40_000, 65_536, (1 << 40) + 1),
-            at(2, 5, 40),
-            at(2 + 32_767, 5, 40 + (1 << 31) - 1),
-            at(2, 5, 40),
-        ];
-        // Ordinary spots a few lines apart, with the odd ones among them.
         let spots: Vec<Spot> = (0..200)
-            .flat_map(|i: u32| {
-                let ordinary = at(3 * i + 1, i % 90 + 1, u64::from(i) * 97);
-                std::iter::once(ordinary).chain(odd.get(i as usize % 20).copied())
+            .map(|i: u32| match i % 7 {
+                0 => Spot::offset(i as usize * 13),
+                3 => at(u32::MAX - i, i, 1 << 40),
+                _ => at(3 * i + 1, i % 90 + 1, u64::from(i) * 97),
             })
             .collect();
-        let mut kept = Spots::default();
-        kept.extend(spots.iter().copied().filter(|s| !odd.contains(s)));
-        assert!(kept.aside.is_empty(), "{} aside", kept.aside.len());
-        kept.clear();
-        kept.extend(spots.iter().copied());
-        assert_eq!(kept.iter().collect::<Vec<_>>(), spots);
-        let picked = [spots.len() - 1, 3, 0, 3, 200, 17];
-        assert_eq!(kept.at(&picked), picked.map(|k| spots[k]));
-        assert_eq!(kept.at(&[]), []);
-        assert_eq!(format!("{kept:?}"), format!("{spots:?}"));
-
         let mut joints = JointOrigins::default();
         let origins: Vec<_> = spots
             .windows(4)
@@ -417,10 +304,5 @@ mod tests {
             joints.push(origin);
         }
         assert_eq!(format!("{joints:?}"), format!("{origins:?}"));
-
-        kept.clear();
-        assert_eq!(kept.iter().count(), 0);
-        kept.extend(odd);
-        assert_eq!(kept.iter().collect::<Vec<_>>(), odd);
     }
 }

@@ -374,19 +374,6 @@ pub struct Position {
     pub byte_offset: u64,
 }
 
-impl Position {
-    /// This position, counted from the start of a piece of the text as line 1, column 1,
-    /// placed in the whole text where the piece begins at `start`. Its byte offset is the
-    /// file's already.
-    pub(crate) fn after(self, start: Position) -> Position {
-        let column = match self.line {
-            1 => start.column.saturating_add(self.column - 1),
-            _ => self.column,
-        };
-        Position { line: start.line.saturating_add(self.line - 1), column, ..self }
-    }
-}
-
 /// Why a load failed: the code, where, and a message a level designer understands.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Error {
@@ -425,7 +412,7 @@ impl Error {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Finding {
     pub code: Code,
-    /// The offset in the decoded text; 0 for a finding placed from a [`Spot`].
+    /// The offset in the decoded text; 0 for a finding placed from a `Spot`.
     pub at: usize,
     pub position: Option<Position>,
     pub message: String,
@@ -444,7 +431,7 @@ impl Finding {
     }
 
     /// Where it is in the file, to put findings in order: a load's findings are all placed,
-    /// or all not (see [`Spot`]), and offsets and byte offsets grow together.
+    /// or all not (see `place::Spot`), and offsets and byte offsets grow together.
     pub fn order(&self) -> u64 {
         self.position.map_or(self.at as u64, |p| p.byte_offset)
     }
@@ -464,89 +451,4 @@ impl Finding {
 #[cold]
 pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
     Box::new(Finding::new(code, at, message))
-}
-
-/// A [`Spot`] in 8 bytes, as the step to it from the spot before it: how many lines on,
-/// its column, how many bytes on (see [`crate::arena::Spots`]). Or, for a spot no step
-/// holds, the mark that it is kept aside, with its index there.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Step {
-    lines: i16,
-    column: u16,
-    bytes: i32,
-}
-
-impl Step {
-    /// The `lines` of the mark of a spot kept aside, which no step has.
-    const ASIDE: i16 = i16::MIN;
-
-    /// The mark of the spot kept aside at `index` (below 2^48).
-    pub fn aside(index: usize) -> Step {
-        let index = index as u64;
-        Step { lines: Step::ASIDE, column: (index >> 32) as u16, bytes: index as u32 as i32 }
-    }
-
-    /// The index of the spot kept aside that this step marks.
-    pub fn aside_index(self) -> Option<usize> {
-        let index = (u64::from(self.column) << 32) | u64::from(self.bytes as u32);
-        (self.lines == Step::ASIDE).then_some(index as usize)
-    }
-}
-
-/// Where something a later stage may report is: its position, placed while its text was
-/// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
-/// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Spot(Position);
-
-impl Spot {
-    /// Offset `at` of a text that stays in memory.
-    pub const fn offset(at: usize) -> Spot {
-        Spot(Position { line: 0, column: 0, byte_offset: at as u64 })
-    }
-
-    pub fn placed(position: Position) -> Spot {
-        Spot(position)
-    }
-
-    /// This spot, counted from the start of a piece of the text, placed in the whole text
-    /// where the piece begins at `start` (see [`Position::after`]); offsets are the whole
-    /// text's already.
-    pub fn after(self, start: Position) -> Spot {
-        match self.0.line {
-            0 => self,
-            _ => Spot(self.0.after(start)),
-        }
-    }
-
-    /// This spot as a step from `before`, when a [`Step`] holds it. (Offsets differ by
-    /// less than 2^63: a text is at most `isize::MAX` bytes.)
-    #[inline]
-    pub fn step_from(self, before: Spot) -> Option<Step> {
-        let (this, before) = (self.0, before.0);
-        let lines = i16::try_from(i64::from(this.line) - i64::from(before.line)).ok()?;
-        let bytes = this.byte_offset.wrapping_sub(before.byte_offset) as i64;
-        match (lines, u16::try_from(this.column), i32::try_from(bytes)) {
-            (Step::ASIDE, ..) | (_, Err(_), _) | (.., Err(_)) => None,
-            (lines, Ok(column), Ok(bytes)) => Some(Step { lines, column, bytes }),
-        }
-    }
-
-    /// The spot `step` leads to from this one.
-    #[inline]
-    pub fn stepped(self, step: Step) -> Spot {
-        Spot(Position {
-            line: self.0.line.wrapping_add_signed(step.lines.into()),
-            column: step.column.into(),
-            byte_offset: self.0.byte_offset.wrapping_add_signed(step.bytes.into()),
-        })
-    }
-
-    /// A finding here.
-    pub fn finding(self, code: Code, message: impl Into<String>) -> Finding {
-        match self.0.line {
-            0 => Finding::new(code, self.0.byte_offset as usize, message),
-            _ => Finding::placed(code, 0, self.0, message),
-        }
-    }
 }

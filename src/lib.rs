@@ -32,6 +32,7 @@ mod load;
 mod options;
 mod output;
 mod parse;
+mod place;
 mod resolve;
 pub mod scene;
 mod text;

@@ -11,6 +11,7 @@ use std::path::Path;
 use crate::error::{Error, Finding};
 use crate::input::Source;
 use crate::options::LoadOptions;
+use crate::place::Placer;
 use crate::scene::Scene;
 use crate::{parse, resolve, validate};
 
@@ -135,7 +136,7 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
 }
 
 /// A load without a scene: its errors and warnings, placed.
-fn failed(errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &parse::Placer<'_>) -> Checked {
+fn failed(errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &Placer<'_>) -> Checked {
     placer.place(&mut warnings);
     let warnings = warnings.into_iter().map(error_of).collect();
     Checked { scene: None, errors: placed(errors, placer), warnings }
@@ -143,7 +144,7 @@ fn failed(errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &parse::Plac
 
 /// `errors` placed at their lines and columns, in the order of the file, one a place: an ID
 /// that did not convert is not reported again as naming nothing.
-fn placed(mut errors: Vec<Finding>, placer: &parse::Placer<'_>) -> Vec<Error> {
+fn placed(mut errors: Vec<Finding>, placer: &Placer<'_>) -> Vec<Error> {
     errors.sort_by_key(Finding::order);
     errors.dedup_by_key(|e| e.order());
     placer.place(&mut errors);

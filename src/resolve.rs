@@ -7,7 +7,8 @@
 
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, Problem, Spot};
+use crate::error::{Code, Parsed, Problem};
+use crate::place::Spot;
 use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
 use crate::validate;
 

@@ -9,7 +9,6 @@ mod ahead;
 mod body;
 mod fixture;
 mod joint;
-mod lines;
 mod names;
 mod shape;
 mod tokenizer;
@@ -23,13 +22,13 @@ pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 use std::borrow::Cow;
 
 use crate::arena::Arena;
-use crate::error::{Code, Finding, Parsed, Problem, Spot};
+use crate::error::{Code, Finding, Parsed, Problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
+use crate::place::{Placer, Spot};
 use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
 use crate::text::{self, trim_xml};
 use crate::validate;
-use lines::{Cursor, Lines};
 use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
 
 /// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
@@ -77,30 +76,6 @@ fn read_split<'a>(
         };
         (read, Placer::new(tok.into_source()))
     })
-}
-
-/// Places the findings a read left for later: those in a text that stayed whole in memory
-/// (see [`Tokenizer::place`]), counting lines over it once, in the order of the findings.
-pub(crate) struct Placer<'a> {
-    whole: Option<Source<'a>>,
-}
-
-impl<'a> Placer<'a> {
-    fn new(source: Source<'a>) -> Placer<'a> {
-        Placer { whole: source.is_whole().then_some(source) }
-    }
-
-    /// Places every finding of `findings` that is not placed.
-    pub fn place(&self, findings: &mut [Finding]) {
-        let Some(source) = &self.whole else { return };
-        let mut order: Vec<&mut Finding> =
-            findings.iter_mut().filter(|f| f.position.is_none()).collect();
-        order.sort_by_key(|f| f.at);
-        let mut lines = Lines::new(source.encoding(), Cursor::start(0));
-        for finding in order {
-            finding.position = Some(lines.locate(source.text(), 0, finding.at));
-        }
-    }
 }
 
 /// Which of an object's known elements were already read (for `duplicate-element`).

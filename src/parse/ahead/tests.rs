@@ -1,5 +1,6 @@
 use super::*;
-use crate::error::{Code, Position, Spot};
+use crate::error::{Code, Position};
+use crate::place::Spot;
 use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
 /// What a read on one thread, or on two with the pieces and the helper's first piece of

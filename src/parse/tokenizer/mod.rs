@@ -18,11 +18,11 @@ use quick_xml::errors::{IllFormedError, SyntaxError};
 use quick_xml::events::{BytesDecl, BytesStart};
 use quick_xml::parser::{ElementParser, Parser as _};
 
-use super::lines::{Cursor, Lines};
 use super::names::{Name, SHORT};
 use crate::error::{Code, Parsed, Position, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
+use crate::place::{Cursor, Lines};
 use crate::text::{self};
 
 mod pieces;

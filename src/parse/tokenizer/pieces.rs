@@ -1,11 +1,11 @@
 //! Where the reader is and what it keeps: positions placed, findings about elements,
 //! pinned text, comments, and the ends and resumptions of pieces for the second thread.
 
-use super::super::lines::Cursor;
 use super::super::names::Name;
 use super::{Stop, Tag, Tokenizer};
-use crate::error::{Code, Finding, Position, Problem, Spot, problem};
+use crate::error::{Code, Finding, Position, Problem, problem};
 use crate::input::Source;
+use crate::place::{Cursor, Spot};
 
 impl<'a> Tokenizer<'a> {
     /// The error for a repeated container.
