@@ -109,14 +109,14 @@ b2s_scene* box2scene_from_path(const char* path, uint32_t threads = 0) {
     return scene;
 }
 
-void peer_from_memory(std::unique_ptr<char[]> bytes, size_t size, bench::PugiScene& scene) {
+void peer_from_memory(std::unique_ptr<char[]> bytes, size_t size, bench::PeerScene& scene) {
     std::string error;
     if (!bench::pugi_load(std::move(bytes), size, scene, error)) {
         die("pugixml peer: " + error);
     }
 }
 
-void peer_from_path(const char* path, bench::PugiScene& scene) {
+void peer_from_path(const char* path, bench::PeerScene& scene) {
     std::string error;
     if (!bench::pugi_load_file(path, scene, error)) {
         die("pugixml peer: " + error);
@@ -151,7 +151,7 @@ void measure_once(Subject& s) {
     };
     auto pugixml_parse = [&] {
         std::unique_ptr<char[]> copy = copy_of(s.bytes.get(), s.size);
-        bench::PugiScene scene;
+        bench::PeerScene scene;
         samples.pugixml_parse.push_back(
             seconds([&] { peer_from_memory(std::move(copy), s.size, scene); }));
     };
@@ -164,7 +164,7 @@ void measure_once(Subject& s) {
         b2s_scene_free(scene);
     };
     auto pugixml_path = [&] {
-        bench::PugiScene scene;
+        bench::PeerScene scene;
         samples.pugixml_path.push_back(seconds([&] { peer_from_path(s.path, scene); }));
     };
     bool box2scene_first = samples.write.size() % 2 == 0;
@@ -249,7 +249,7 @@ int peak_rss(const std::string& loader, const char* path) {
         std::printf("%ld %ld\n", before, peak_rss_kib());
         b2s_scene_free(scene);
     } else {
-        bench::PugiScene scene;
+        bench::PeerScene scene;
         peer_from_path(path, scene);
         std::printf("%ld %ld\n", before, peak_rss_kib());
     }
@@ -281,7 +281,7 @@ int load_once(const std::string& loader, const char* path, uint32_t threads) {
                     static_cast<unsigned long long>(count.start_tags),
                     static_cast<unsigned long long>(count.numbers), count.sum);
     } else if (loader == "pugixml") {
-        bench::PugiScene scene;
+        bench::PeerScene scene;
         peer_from_memory(std::move(bytes), size, scene);
     }
     return 0;

@@ -66,7 +66,7 @@ bool expected_warnings(const std::string& what, const b2s_scene_view& view,
 }
 
 /// Whether the two loads agree; says what differs when they do not.
-bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PugiScene& peer,
+bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PeerScene& peer,
                 bench::Warnings warnings) {
     const b2s_scene_view& view = *b2s_scene_get_view(scene);
     if (!expected_warnings(what, view, warnings)) {
@@ -87,7 +87,7 @@ bool same_scene(const std::string& what, const b2s_scene* scene, const bench::Pu
 /// Whether loading `bytes`, the text of `path`, from memory with `threads` gives the scene
 /// `peer` holds.
 bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, size_t size,
-                      uint32_t threads, const bench::PugiScene& peer, bench::Warnings warnings) {
+                      uint32_t threads, const bench::PeerScene& peer, bench::Warnings warnings) {
     b2s_load_options options = b2s_load_options_default();
     options.threads = threads;
     b2s_scene* scene = nullptr;
@@ -113,7 +113,7 @@ bool check_file(const char* path, bench::Warnings warnings) {
                     error.message);
         return false;
     }
-    bench::PugiScene peer;
+    bench::PeerScene peer;
     std::string why;
     bool loaded = bench::pugi_load_file(path, peer, why);
     size_t size = 0;
@@ -142,7 +142,7 @@ b2s_code box2scene_load(const std::string& text, b2s_scene** scene, b2s_error& e
                            scene, &error);
 }
 
-bool peer_load(const std::string& text, bench::PugiScene& peer, std::string& why) {
+bool peer_load(const std::string& text, bench::PeerScene& peer, std::string& why) {
     std::unique_ptr<char[]> copy(new char[text.size()]);
     std::memcpy(copy.get(), text.data(), text.size());
     return bench::pugi_load(std::move(copy), text.size(), peer, why);
@@ -158,7 +158,7 @@ bool check_text(const std::string& what, const std::string& text,
                     error.message);
         return false;
     }
-    bench::PugiScene peer;
+    bench::PeerScene peer;
     std::string why;
     bool loaded = peer_load(text, peer, why);
     if (!loaded) {
@@ -207,7 +207,7 @@ bool both_refuse(const Refusal& r) {
     b2s_error error;
     bool box2scene_refused = box2scene_load(r.text, &scene, error) != B2S_CODE_OK;
     b2s_scene_free(scene);
-    bench::PugiScene peer;
+    bench::PeerScene peer;
     std::string why;
     bool peer_refused = !peer_load(r.text, peer, why);
     if (!box2scene_refused || !peer_refused) {
