@@ -15,9 +15,11 @@ std::unique_ptr<char[]> read_file(const char* path, size_t& size) {
         std::fseek(file, 0, SEEK_SET) == 0) {
         size = static_cast<size_t>(length);
         // new char[n] leaves the bytes uninitialised: the pages are touched once, by fread.
-        bytes.reset(new char[size > 0 ? size : 1]);
+        bytes.reset(new char[size + 1]);
         if (std::fread(bytes.get(), 1, size, file) != size) {
             bytes.reset();
+        } else {
+            bytes[size] = '\0';
         }
     }
     std::fclose(file);

@@ -1,4 +1,4 @@
-// The pugixml peer's polygon check, box2scene's src/validate.rs rule: what Box2D 2.4.1's
+// The peers' polygon check, box2scene's src/validate.rs rule: what Box2D 2.4.1's
 // b2PolygonShape::Set would silently replace with a 1x1 box is an error.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Every element name the pugixml peer knows, looked up case-insensitively (docs/format.md)
+// Every element name the peers know, looked up case-insensitively (docs/format.md)
 // in one hash table.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The pugixml peer's text-to-value conversions, with the semantics of box2scene's
+// The peers' text-to-value conversions, with the semantics of box2scene's
 // src/text.rs for every spelling of docs/format.md (std::from_chars does the digits).
 // Each takes text already trimmed of XML white space and throws ValueError when it is not
 // a value of its type.

@@ -1,6 +1,6 @@
 // A checksum of every value of a scene: counts, every float's bit pattern, every index and
 // flag, names by content. Computed on a b2s_scene_view, so box2scene's scenes and the
-// pugixml peer's (PeerScene::view) are summed by the same code.
+// peers' (PeerScene::view) are summed by the same code.
 #pragma once
 
 #include <box2scene.h>

@@ -1,5 +1,5 @@
 // The benchmark's scenes: deterministic Box2Scene files of any size, in every spelling the
-// format allows, that box2scene and the pugixml peer both load alike, box2scene without a
+// format allows, that box2scene and the peers all load alike, box2scene without a
 // warning unless one is asked for.
 #pragma once
 
