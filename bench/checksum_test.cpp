@@ -1,9 +1,10 @@
-// bench/checksum_test [FILE...] [--warnings FILE...]: box2scene and the pugixml peer load
-// each FILE (from bench/generate), and small generated scenes of many sizes and seeds, to
-// the same counts and the same checksum of every value; box2scene without a warning, since
-// the files are meant to load cleanly, except for files after --warnings (from
-// bench/generate --warnings), which must give exactly the warnings the generator promises.
-// And the peer refuses what box2scene refuses, for each check it makes.
+// bench/checksum_test [FILE...] [--warnings FILE...]: box2scene and each peer (on pugixml,
+// on rapidxml) load each FILE (from bench/generate), and small generated scenes of many
+// sizes and seeds, to the same counts and the same checksum of every value; box2scene
+// without a warning, since the files are meant to load cleanly, except for files after
+// --warnings (from bench/generate --warnings), which must give exactly the warnings the
+// generator promises. And each peer refuses what box2scene refuses, for each check it
+// makes.
 #include <box2scene.h>
 
 #include <algorithm>
@@ -17,10 +18,35 @@
 
 #include "file_bytes.hpp"
 #include "pugi_loader.hpp"
+#include "rapidxml_loader.hpp"
 #include "scene_checksum.hpp"
 #include "scene_generator.hpp"
 
 namespace {
+
+/// A peer loader, named as the messages name it.
+struct Peer {
+    const char* name;
+    bool (*load_file)(const char* path, bench::PeerScene& peer, std::string& why);
+    bool (*load_text)(const std::string& text, bench::PeerScene& peer, std::string& why);
+};
+
+/// pugixml parses in place the buffer it is given: a copy of the text.
+bool pugi_load_text(const std::string& text, bench::PeerScene& peer, std::string& why) {
+    std::unique_ptr<char[]> copy(new char[text.size()]);
+    std::memcpy(copy.get(), text.data(), text.size());
+    return bench::pugi_load(std::move(copy), text.size(), peer, why);
+}
+
+bool rapidxml_load_text(const std::string& text, bench::PeerScene& peer, std::string& why) {
+    return bench::rapidxml_load(text.data(), text.size(), peer, why);
+}
+
+const Peer kPeers[] = {
+    {"pugixml", bench::pugi_load_file, pugi_load_text},
+    {"rapidxml", bench::rapidxml_load_file, rapidxml_load_text},
+};
+constexpr size_t kPeerCount = std::size(kPeers);
 
 void print_counts(const char* who, const b2s_scene_view& v) {
     std::printf("  %-9s %u shapes, %u fixtures, %u bodies, %u joints, %u vertices, "
@@ -65,29 +91,34 @@ bool expected_warnings(const std::string& what, const b2s_scene_view& view,
     return as_promised;
 }
 
-/// Whether the two loads agree; says what differs when they do not.
-bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PeerScene& peer,
+/// Whether box2scene's load and that of every peer agree (`peers` in kPeers order); says
+/// what differs when they do not.
+bool same_scene(const std::string& what, const b2s_scene* scene, const bench::PeerScene* peers,
                 bench::Warnings warnings) {
     const b2s_scene_view& view = *b2s_scene_get_view(scene);
     if (!expected_warnings(what, view, warnings)) {
         return false;
     }
-    bench::SceneChecksum ours = bench::checksum(view), theirs = bench::checksum(peer.view());
-    if (!(ours == theirs)) {
-        std::printf("FAIL %s: the loads differ\n", what.c_str());
-        print_counts("box2scene", view);
-        print_counts("pugixml", peer.view());
-        print_parts("box2scene", ours);
-        print_parts("pugixml", theirs);
-        return false;
+    bench::SceneChecksum ours = bench::checksum(view);
+    for (size_t i = 0; i < kPeerCount; ++i) {
+        bench::SceneChecksum theirs = bench::checksum(peers[i].view());
+        if (!(ours == theirs)) {
+            std::printf("FAIL %s: box2scene and the %s peer load it differently\n", what.c_str(),
+                        kPeers[i].name);
+            print_counts("box2scene", view);
+            print_counts(kPeers[i].name, peers[i].view());
+            print_parts("box2scene", ours);
+            print_parts(kPeers[i].name, theirs);
+            return false;
+        }
     }
     return true;
 }
 
-/// Whether loading `bytes`, the text of `path`, from memory with `threads` gives the scene
-/// `peer` holds.
+/// Whether loading `bytes`, the text of `path`, from memory with `threads` gives the scenes
+/// `peers` hold.
 bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, size_t size,
-                      uint32_t threads, const bench::PeerScene& peer, bench::Warnings warnings) {
+                      uint32_t threads, const bench::PeerScene* peers, bench::Warnings warnings) {
     b2s_load_options options = b2s_load_options_default();
     options.threads = threads;
     b2s_scene* scene = nullptr;
@@ -98,7 +129,7 @@ bool same_from_memory(const char* path, const std::unique_ptr<char[]>& bytes, si
         return false;
     }
     std::string what = std::string(path) + " from memory, threads " + std::to_string(threads);
-    bool same = same_scene(what, scene, peer, warnings);
+    bool same = same_scene(what, scene, peers, warnings);
     b2s_scene_free(scene);
     return same;
 }
@@ -113,20 +144,24 @@ bool check_file(const char* path, bench::Warnings warnings) {
                     error.message);
         return false;
     }
-    bench::PeerScene peer;
-    std::string why;
-    bool loaded = bench::pugi_load_file(path, peer, why);
+    bench::PeerScene peers[kPeerCount];
+    bool loaded = true;
+    for (size_t i = 0; loaded && i < kPeerCount; ++i) {
+        std::string why;
+        loaded = kPeers[i].load_file(path, peers[i], why);
+        if (!loaded) {
+            std::printf("FAIL %s: %s peer: %s\n", path, kPeers[i].name, why.c_str());
+        }
+    }
     size_t size = 0;
     std::unique_ptr<char[]> bytes = bench::read_file(path, size);
-    bool same = loaded && same_scene(path, scene, peer, warnings) &&
-                same_from_memory(path, bytes, size, 1, peer, warnings);
+    bool same = loaded && same_scene(path, scene, peers, warnings) &&
+                same_from_memory(path, bytes, size, 1, peers, warnings);
     // Where the two threads meet depends on timing; wherever they meet, the scene is one.
     for (int run = 0; same && run < 10; ++run) {
-        same = same_from_memory(path, bytes, size, 0, peer, warnings);
+        same = same_from_memory(path, bytes, size, 0, peers, warnings);
     }
-    if (!loaded) {
-        std::printf("FAIL %s: pugixml peer: %s\n", path, why.c_str());
-    } else if (same) {
+    if (same) {
         const b2s_scene_view& v = *b2s_scene_get_view(scene);
         std::printf("ok   %s: %u shapes, %u fixtures, %u bodies, %u joints, %u warnings; "
                     "checksum %016" PRIx64 "\n",
@@ -142,13 +177,7 @@ b2s_code box2scene_load(const std::string& text, b2s_scene** scene, b2s_error& e
                            scene, &error);
 }
 
-bool peer_load(const std::string& text, bench::PeerScene& peer, std::string& why) {
-    std::unique_ptr<char[]> copy(new char[text.size()]);
-    std::memcpy(copy.get(), text.data(), text.size());
-    return bench::pugi_load(std::move(copy), text.size(), peer, why);
-}
-
-/// Whether both loaders load `text` alike, box2scene with `warnings`.
+/// Whether box2scene and every peer load `text` alike, box2scene with `warnings`.
 bool check_text(const std::string& what, const std::string& text,
                 bench::Warnings warnings = bench::Warnings::none) {
     b2s_scene* scene = nullptr;
@@ -158,18 +187,21 @@ bool check_text(const std::string& what, const std::string& text,
                     error.message);
         return false;
     }
-    bench::PeerScene peer;
-    std::string why;
-    bool loaded = peer_load(text, peer, why);
-    if (!loaded) {
-        std::printf("FAIL %s: pugixml peer: %s\n", what.c_str(), why.c_str());
+    bench::PeerScene peers[kPeerCount];
+    bool loaded = true;
+    for (size_t i = 0; loaded && i < kPeerCount; ++i) {
+        std::string why;
+        loaded = kPeers[i].load_text(text, peers[i], why);
+        if (!loaded) {
+            std::printf("FAIL %s: %s peer: %s\n", what.c_str(), kPeers[i].name, why.c_str());
+        }
     }
-    bool same = loaded && same_scene(what, scene, peer, warnings);
+    bool same = loaded && same_scene(what, scene, peers, warnings);
     b2s_scene_free(scene);
     return same;
 }
 
-// A small scene both loaders take, for the refusals below to change one part of.
+// A small scene every loader takes, for the refusals below to change one part of.
 const char* const kCircle =
     "<Shape Type='Circle'><Radius>1</Radius><Position>0 0</Position></Shape>";
 const char* const kFixture = "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>";
@@ -201,19 +233,24 @@ struct Refusal {
     std::string text;
 };
 
-/// Whether both loaders refuse `r.text`; says which one did not.
-bool both_refuse(const Refusal& r) {
+/// Whether box2scene and every peer refuse `r.text`; says which one did not.
+bool all_refuse(const Refusal& r) {
     b2s_scene* scene = nullptr;
     b2s_error error;
-    bool box2scene_refused = box2scene_load(r.text, &scene, error) != B2S_CODE_OK;
+    bool refused = box2scene_load(r.text, &scene, error) != B2S_CODE_OK;
     b2s_scene_free(scene);
-    bench::PeerScene peer;
-    std::string why;
-    bool peer_refused = !peer_load(r.text, peer, why);
-    if (!box2scene_refused || !peer_refused) {
-        std::printf("FAIL %s: %s loads it\n", r.what, box2scene_refused ? "the peer" : "box2scene");
+    if (!refused) {
+        std::printf("FAIL %s: box2scene loads it\n", r.what);
     }
-    return box2scene_refused && peer_refused;
+    for (const Peer& peer : kPeers) {
+        bench::PeerScene loaded;
+        std::string why;
+        if (peer.load_text(r.text, loaded, why)) {
+            std::printf("FAIL %s: the %s peer loads it\n", r.what, peer.name);
+            refused = false;
+        }
+    }
+    return refused;
 }
 
 int check_refusals() {
@@ -225,6 +262,7 @@ int check_refusals() {
     }
     const Refusal refusals[] = {
         {"the base scene, made malformed", scene().substr(1)},
+        {"an end tag that does not match", "<World Version='2'><Shapes></Bodies></World>"},
         {"a DOCTYPE", "<!DOCTYPE World>" + scene()},
         {"a second root", scene() + "<World Version='2'/>"},
         {"an unsupported version", "<World Version='7'/>"},
@@ -273,10 +311,11 @@ int check_refusals() {
     };
     int failures = check_text("the base scene of the refusals", scene()) ? 0 : 1;
     for (const Refusal& r : refusals) {
-        failures += both_refuse(r) ? 0 : 1;
+        failures += all_refuse(r) ? 0 : 1;
     }
     if (failures == 0) {
-        std::printf("ok   both refuse each of %zu broken scenes\n", std::size(refusals));
+        std::printf("ok   box2scene and every peer refuse each of %zu broken scenes\n",
+                    std::size(refusals));
     }
     return failures;
 }
