@@ -1,12 +1,12 @@
 // The measurements bench/run makes, one mode per kind of measurement:
 //
-//   bench_driver time RUNS FILE... box2scene and the pugixml peer, interleaved, in RUNS
-//                                  rounds over every FILE: parsing it already in memory
-//                                  (box2scene with its default options), loading it from its
-//                                  path (box2scene with its default options, and with
-//                                  threads = 1); box2scene writing it back and building its
-//                                  b2World. Prints "FILE name value" lines, medians in
-//                                  seconds.
+//   bench_driver time RUNS FILE... box2scene and the two peers, interleaved, in RUNS rounds
+//                                  over every FILE: parsing it already in memory (box2scene
+//                                  with its default options; the rapidxml peer copying it
+//                                  first, as it must), loading it from its path (box2scene
+//                                  with its default options, and with threads = 1);
+//                                  box2scene writing it back and building its b2World.
+//                                  Prints "FILE name value" lines, medians in seconds.
 //   bench_driver rss LOADER FILE   loads FILE from its path once, box2scene with its default
 //                                  options (a fresh process per measurement), and prints the
 //                                  peak RSS in KiB before the load (the process itself) and
@@ -22,7 +22,8 @@
 //                                  finds the markup and converts the numbers
 //                                  (bench/floor_scan.hpp): a floor under both loaders' counts.
 //
-// LOADER is box2scene or pugixml.
+// LOADER is box2scene, pugixml or rapidxml (the peers of bench/pugi_loader.hpp and
+// bench/rapidxml_loader.hpp).
 #include <box2d/box2d.h>
 #include <box2scene.h>
 #include <box2scene/box2d.hpp>
@@ -41,6 +42,7 @@
 #include "file_bytes.hpp"
 #include "floor_scan.hpp"
 #include "pugi_loader.hpp"
+#include "rapidxml_loader.hpp"
 
 namespace {
 
@@ -73,7 +75,7 @@ std::unique_ptr<char[]> file_bytes(const char* path, size_t& size) {
     return bytes;
 }
 
-/// A fresh writable copy: the peer parses in place, so every run needs its own.
+/// A fresh writable copy: the pugixml peer parses in place, so every run needs its own.
 std::unique_ptr<char[]> copy_of(const char* bytes, size_t size) {
     std::unique_ptr<char[]> copy(new char[size]);
     std::memcpy(copy.get(), bytes, size);
@@ -109,24 +111,39 @@ b2s_scene* box2scene_from_path(const char* path, uint32_t threads = 0) {
     return scene;
 }
 
-void peer_from_memory(std::unique_ptr<char[]> bytes, size_t size, bench::PeerScene& scene) {
-    std::string error;
-    if (!bench::pugi_load(std::move(bytes), size, scene, error)) {
-        die("pugixml peer: " + error);
+/// A peer's load, or exit saying why it failed.
+void loaded_or_die(const char* peer, bool loaded, const std::string& error) {
+    if (!loaded) {
+        die(std::string(peer) + " peer: " + error);
     }
 }
 
-void peer_from_path(const char* path, bench::PeerScene& scene) {
+/// The pugixml peer parses `bytes` itself, in place.
+void pugixml_from_memory(std::unique_ptr<char[]> bytes, size_t size, bench::PeerScene& scene) {
     std::string error;
-    if (!bench::pugi_load_file(path, scene, error)) {
-        die("pugixml peer: " + error);
-    }
+    loaded_or_die("pugixml", bench::pugi_load(std::move(bytes), size, scene, error), error);
+}
+
+/// The rapidxml peer copies `bytes` and parses the copy.
+void rapidxml_from_memory(const char* bytes, size_t size, bench::PeerScene& scene) {
+    std::string error;
+    loaded_or_die("rapidxml", bench::rapidxml_load(bytes, size, scene, error), error);
+}
+
+void pugixml_from_path(const char* path, bench::PeerScene& scene) {
+    std::string error;
+    loaded_or_die("pugixml", bench::pugi_load_file(path, scene, error), error);
+}
+
+void rapidxml_from_path(const char* path, bench::PeerScene& scene) {
+    std::string error;
+    loaded_or_die("rapidxml", bench::rapidxml_load_file(path, scene, error), error);
 }
 
 /// What the timing mode collects, one sample per run.
 struct Samples {
-    std::vector<double> box2scene_parse, pugixml_parse, box2scene_path, box2scene_path1,
-        pugixml_path;
+    std::vector<double> box2scene_parse, pugixml_parse, rapidxml_parse;
+    std::vector<double> box2scene_path, box2scene_path1, pugixml_path, rapidxml_path;
     std::vector<double> write, build;
 };
 
@@ -139,8 +156,20 @@ struct Subject {
     Samples samples;
 };
 
-/// One run of every measurement on `s`. The loaders take turns going first, so that
-/// neither always meets the caches (and the other processes) the other left.
+/// Calls the three in turn, `first` (0, 1 or 2) first and the others after it in a circle.
+template <typename A, typename B, typename C>
+void in_turn(size_t first, A a, B b, C c) {
+    for (size_t turn = 0; turn < 3; ++turn) {
+        switch ((first + turn) % 3) {
+        case 0: a(); break;
+        case 1: b(); break;
+        default: c(); break;
+        }
+    }
+}
+
+/// One run of every measurement on `s`. The loaders take turns going first, so that none
+/// always meets the caches (and the other processes) another left.
 void measure_once(Subject& s) {
     Samples& samples = s.samples;
     auto box2scene_parse = [&] {
@@ -153,7 +182,12 @@ void measure_once(Subject& s) {
         std::unique_ptr<char[]> copy = copy_of(s.bytes.get(), s.size);
         bench::PeerScene scene;
         samples.pugixml_parse.push_back(
-            seconds([&] { peer_from_memory(std::move(copy), s.size, scene); }));
+            seconds([&] { pugixml_from_memory(std::move(copy), s.size, scene); }));
+    };
+    auto rapidxml_parse = [&] {
+        bench::PeerScene scene;
+        samples.rapidxml_parse.push_back(
+            seconds([&] { rapidxml_from_memory(s.bytes.get(), s.size, scene); }));
     };
     auto box2scene_path = [&] {
         b2s_scene* scene = nullptr;
@@ -165,15 +199,15 @@ void measure_once(Subject& s) {
     };
     auto pugixml_path = [&] {
         bench::PeerScene scene;
-        samples.pugixml_path.push_back(seconds([&] { peer_from_path(s.path, scene); }));
+        samples.pugixml_path.push_back(seconds([&] { pugixml_from_path(s.path, scene); }));
     };
-    bool box2scene_first = samples.write.size() % 2 == 0;
-    for (int turn = 0; turn < 2; ++turn) {
-        (turn == 0) == box2scene_first ? box2scene_parse() : pugixml_parse();
-    }
-    for (int turn = 0; turn < 2; ++turn) {
-        (turn == 0) == box2scene_first ? box2scene_path() : pugixml_path();
-    }
+    auto rapidxml_path = [&] {
+        bench::PeerScene scene;
+        samples.rapidxml_path.push_back(seconds([&] { rapidxml_from_path(s.path, scene); }));
+    };
+    size_t first = samples.write.size() % 3;
+    in_turn(first, box2scene_parse, pugixml_parse, rapidxml_parse);
+    in_turn(first, box2scene_path, pugixml_path, rapidxml_path);
     char* text = nullptr;
     samples.write.push_back(seconds([&] {
         if (b2s_write_memory(s.loaded, nullptr, &text, nullptr, nullptr) != B2S_CODE_OK) {
@@ -205,9 +239,11 @@ void report(const Subject& s) {
     std::printf("%s runs %zu\n", path, m.write.size());
     std::printf("%s box2scene.parse %.9f\n", path, median(m.box2scene_parse));
     std::printf("%s pugixml.parse %.9f\n", path, median(m.pugixml_parse));
+    std::printf("%s rapidxml.parse %.9f\n", path, median(m.rapidxml_parse));
     std::printf("%s box2scene.path %.9f\n", path, median(m.box2scene_path));
     std::printf("%s box2scene.path1 %.9f\n", path, median(m.box2scene_path1));
     std::printf("%s pugixml.path %.9f\n", path, median(m.pugixml_path));
+    std::printf("%s rapidxml.path %.9f\n", path, median(m.rapidxml_path));
     std::printf("%s box2scene.write %.9f\n", path, median(m.write));
     std::printf("%s box2scene.written %zu\n", path, written);
     std::printf("%s box2scene.build %.9f\n", path, median(m.build));
@@ -250,7 +286,7 @@ int peak_rss(const std::string& loader, const char* path) {
         b2s_scene_free(scene);
     } else {
         bench::PeerScene scene;
-        peer_from_path(path, scene);
+        loader == "pugixml" ? pugixml_from_path(path, scene) : rapidxml_from_path(path, scene);
         std::printf("%ld %ld\n", before, peak_rss_kib());
     }
     return 0;
@@ -282,13 +318,16 @@ int load_once(const std::string& loader, const char* path, uint32_t threads) {
                     static_cast<unsigned long long>(count.numbers), count.sum);
     } else if (loader == "pugixml") {
         bench::PeerScene scene;
-        peer_from_memory(std::move(bytes), size, scene);
+        pugixml_from_memory(std::move(bytes), size, scene);
+    } else if (loader == "rapidxml") {
+        bench::PeerScene scene;
+        rapidxml_from_memory(bytes.get(), size, scene);
     }
     return 0;
 }
 
 bool is_loader(const std::string& name, bool or_others) {
-    return name == "box2scene" || name == "pugixml" ||
+    return name == "box2scene" || name == "pugixml" || name == "rapidxml" ||
            (or_others && (name == "read" || name == "write" || name == "path" || name == "floor"));
 }
 
@@ -307,8 +346,8 @@ int main(int argc, char** argv) {
         return load_once(argv[2], argv[3], threads);
     }
     std::fprintf(stderr,
-                 "usage: %s time RUNS FILE... | rss box2scene|pugixml FILE | "
-                 "once read|box2scene|pugixml|write|path|floor FILE [THREADS]\n",
+                 "usage: %s time RUNS FILE... | rss box2scene|pugixml|rapidxml FILE | "
+                 "once read|box2scene|pugixml|rapidxml|write|path|floor FILE [THREADS]\n",
                  argv[0]);
     return 2;
 }
