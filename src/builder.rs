@@ -11,7 +11,7 @@
 //! load reads in one text, UserData that is not well-formed or nests too deep.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Error, Finding, Parsed, Position, problem};
+use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
@@ -138,7 +138,7 @@ impl Builder {
     }
 
     fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Parsed<Shape> {
-        let kind = shape.kind().ok_or_else(|| {
+        let kind = shape.kind().ok_or_else(|| -> Problem {
             problem(Code::InvalidArgument, 0, format!("unknown shape kind {}", shape.kind))
         })?;
         let points: Vec<f32> = vertices.iter().flat_map(|v| [v.x, v.y]).collect();
@@ -253,7 +253,7 @@ impl Builder {
     }
 
     fn check_body(&self, b: &Body, fixtures: &[u32]) -> Parsed<Body> {
-        let kind = b.kind().ok_or_else(|| {
+        let kind = b.kind().ok_or_else(|| -> Problem {
             problem(Code::InvalidArgument, 0, format!("unknown body kind {}", b.kind))
         })?;
         let floats = [

@@ -447,8 +447,9 @@ impl Finding {
     }
 }
 
-/// A [`Problem`]: the finding that stops a stage.
+/// A [`Problem`]: the finding that stops a stage; or what a stage's error type makes of
+/// one (the reader's, which may also stop at the end of a piece).
 #[cold]
-pub(crate) fn problem(code: Code, at: usize, message: impl Into<String>) -> Problem {
-    Box::new(Finding::new(code, at, message))
+pub(crate) fn problem<E: From<Problem>>(code: Code, at: usize, message: impl Into<String>) -> E {
+    E::from(Box::new(Finding::new(code, at, message)))
 }

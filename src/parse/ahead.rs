@@ -17,13 +17,13 @@ use std::sync::{Arc, Mutex, PoisonError, mpsc};
 use std::thread::{Scope, ScopedJoinHandle};
 
 use super::names::{Element, Name};
-use super::tokenizer::{Stop, Tokenizer, is_end_of_piece};
+use super::tokenizer::{Halt, Reading, Stop, Tokenizer};
 use super::world::WorldChild;
 use super::{Reader, Seen, Tag};
 use crate::arena::Arena;
 use crate::bytes::is_xml_space_byte;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, Position, problem};
+use crate::error::{Code, Position, problem};
 use crate::input::{Pieces, Source};
 use crate::options::LoadOptions;
 
@@ -129,7 +129,7 @@ where
 
 /// Reads the whole document with `reader`, the calling thread's, taking what the helper
 /// read (when there is one) where the two meet.
-pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Parsed<()> {
+pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Reading<()> {
     let mut seen = Seen::default();
     if let Some(helper) = &helper {
         reader.tok.end_before(ends(&helper.boundaries));
@@ -137,7 +137,7 @@ pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Parsed<()> {
     let mut read = reader.document(&mut seen);
     if let Some(mut helper) = helper {
         // Where the reading stopped before a piece's item.
-        while read.as_ref().is_err_and(is_end_of_piece) {
+        while matches!(read, Err(Halt::PieceEnd)) {
             let piece = reader.tok.pass_end();
             if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
                 read = Ok(());
@@ -289,7 +289,7 @@ fn read_piece(
     let ended = match read {
         // To the end of the file: the last piece.
         Ok(()) => end.is_none() && reader.epilog().is_ok(),
-        Err(stopped) => is_end_of_piece(&stopped),
+        Err(stopped) => matches!(stopped, Halt::PieceEnd),
     };
     if !ended {
         return None;

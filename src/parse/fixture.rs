@@ -1,7 +1,6 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Element, Reader, Seen, Tag, elements};
-use crate::error::Parsed;
+use super::{Element, Reader, Reading, Seen, Tag, elements};
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
@@ -24,7 +23,7 @@ elements! {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn fixture(&mut self, tag: &Tag) -> Parsed<()> {
+    pub(super) fn fixture(&mut self, tag: &Tag) -> Reading<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["Id"] } else { &[] };
@@ -86,7 +85,7 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
-    fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
+    fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Reading<()> {
         let mut seen = Seen::default();
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
@@ -111,7 +110,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Collision bits, all 32 kept.
-    fn bits(&mut self, tag: &Tag) -> Parsed<u32> {
+    fn bits(&mut self, tag: &Tag) -> Reading<u32> {
         Ok(self.value(tag, text::bits)?.0)
     }
 }

@@ -1,9 +1,9 @@
 //! `<Joint Type="...">`: the common fields, then one table that says which element each
 //! joint kind has, where it goes, and what it may hold.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::{Element, Reader, Reading, Seen, Tag, elements};
 use crate::arena::JointOrigin;
-use crate::error::{Code, Parsed, problem};
+use crate::error::{Code, Parsed, Problem, problem};
 use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
 use crate::validate;
 
@@ -145,7 +145,7 @@ fn slot(kind: JointKind, name: JointChild) -> Option<Slot> {
 /// format has for that kind taken from `given` (the common fields included). Fails on a
 /// non-finite value or a negative one where the format forbids it, naming the element.
 pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
-    let kind = given.kind().ok_or_else(|| {
+    let kind = given.kind().ok_or_else(|| -> Problem {
         problem(Code::InvalidArgument, 0, format!("unknown joint kind {}", given.kind))
     })?;
     let mut joint = Joint {
@@ -208,7 +208,7 @@ struct Refs {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn joint(&mut self, tag: &Tag) -> Parsed<()> {
+    pub(super) fn joint(&mut self, tag: &Tag) -> Reading<()> {
         self.begin_object(Object::Joint(self.arena.scene.joints.len() as u32));
         let kind = self.joint_type(tag)?;
         if kind == JointKind::Unsupported {
@@ -298,7 +298,7 @@ impl<'a> Reader<'a> {
 
     /// Farseer's `Line` joints from February 2011 on are wheel joints under the old name:
     /// read them as Wheel, with the wheel's defaults for what they leave out.
-    fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Parsed<()> {
+    fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Reading<()> {
         let wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
         self.arena.origins.signs.farseer_3_3 = true;
@@ -315,7 +315,7 @@ impl<'a> Reader<'a> {
         )
     }
 
-    fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
+    fn joint_type(&mut self, tag: &Tag) -> Reading<JointKind> {
         let attrs = self.tok.attributes(tag)?;
         self.unknown_attributes(tag, &attrs, &["Type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
@@ -350,7 +350,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The rules one joint can break on its own (cross references come later).
-    fn check_joint(&mut self, tag: &Tag, joint: &Joint, at: &Refs) -> Parsed<()> {
+    fn check_joint(&mut self, tag: &Tag, joint: &Joint, at: &Refs) -> Reading<()> {
         let legacy = self.arena.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]

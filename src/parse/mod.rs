@@ -29,7 +29,7 @@ use crate::place::{Placer, Spot};
 use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
 use crate::text::{self, trim_xml};
 use crate::validate;
-use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
+use tokenizer::{Attr, Node, Reading, Tag, Text, Tokenizer, verbatim};
 
 /// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
 /// worth it. What it finds is placed at its line and column as it reads, or by the
@@ -68,9 +68,9 @@ fn read_split<'a>(
                 arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
                 Ok(arena)
             }
-            Err(problem) => {
+            Err(halt) => {
                 let mut errors = arena.take_errors();
-                errors.push(tok.place(*problem));
+                errors.push(tok.place(*halt.into_problem()));
                 Err(Stopped { errors, warnings: arena.take_warnings() })
             }
         };
@@ -111,14 +111,14 @@ impl<'a> Reader<'a> {
 
     /// An error the reading can go on past (see [`Arena::recover`]), placed at its line and
     /// column while its text is at hand.
-    pub fn recover(&mut self, error: Finding) -> Parsed<()> {
+    pub fn recover(&mut self, error: Finding) -> Reading<()> {
         let error = self.tok.place(error);
-        self.arena.recover(Box::new(error))
+        Ok(self.arena.recover(Box::new(error))?)
     }
 
     /// What `checked` gives, or `otherwise` after its error when the reading goes on past
     /// it (see [`Reader::recover`]): for a check of a value already read.
-    pub fn recovered<T>(&mut self, checked: Parsed<T>, otherwise: T) -> Parsed<T> {
+    pub fn recovered<T>(&mut self, checked: Parsed<T>, otherwise: T) -> Reading<T> {
         match checked {
             Ok(value) => Ok(value),
             Err(error) => self.recover(*error).map(|()| otherwise),
@@ -133,7 +133,7 @@ impl<'a> Reader<'a> {
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Parsed<(T, usize)> {
+    ) -> Reading<(T, usize)> {
         match self.tok.parsed(tag, convert)? {
             Ok(value) => Ok(value),
             Err(error) => {
@@ -143,37 +143,37 @@ impl<'a> Reader<'a> {
         }
     }
 
-    pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
+    pub fn float(&mut self, tag: &Tag) -> Reading<f32> {
         Ok(self.value(tag, text::float)?.0)
     }
 
-    pub fn vector(&mut self, tag: &Tag) -> Parsed<crate::scene::Vec2> {
+    pub fn vector(&mut self, tag: &Tag) -> Reading<crate::scene::Vec2> {
         Ok(self.value(tag, text::vector2)?.0)
     }
 
-    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
+    pub fn boolean(&mut self, tag: &Tag) -> Reading<bool> {
         Ok(self.value(tag, text::boolean)?.0)
     }
 
     /// An ID value and its offset.
-    pub fn id(&mut self, tag: &Tag) -> Parsed<(u32, usize)> {
+    pub fn id(&mut self, tag: &Tag) -> Reading<(u32, usize)> {
         self.value(tag, text::id)
     }
 
     /// Records a warning at `at`, placed at its line and column while its text is at hand.
-    pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Parsed<()> {
+    pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Reading<()> {
         self.note(Finding::new(code, at, message))
     }
 
     /// Records `warning`, placed at its line and column while its text is at hand (see
     /// [`Tokenizer::place`]).
-    pub fn note(&mut self, warning: Finding) -> Parsed<()> {
+    pub fn note(&mut self, warning: Finding) -> Reading<()> {
         let warning = self.tok.place(warning);
-        self.arena.note(warning)
+        Ok(self.arena.note(warning)?)
     }
 
     /// Warns that `what` needs Version 2 when the file says less.
-    pub fn newer_construct(&mut self, at: usize, what: &str) -> Parsed<()> {
+    pub fn newer_construct(&mut self, at: usize, what: &str) -> Reading<()> {
         if self.arena.version >= 2 {
             return Ok(());
         }
@@ -194,14 +194,14 @@ impl<'a> Reader<'a> {
     }
 
     /// A float that must not be negative (error `negative-value`).
-    pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
+    pub fn non_negative(&mut self, tag: &Tag) -> Reading<f32> {
         let (v, at) = self.value(tag, text::float)?;
         let checked = validate::not_negative(format_args!("<{}>", tag.name), v, at);
         self.recovered(checked, 0.0)
     }
 
     /// A string value, stored in the scene's string pool.
-    pub fn string(&mut self, tag: &Tag) -> Parsed<PoolStr> {
+    pub fn string(&mut self, tag: &Tag) -> Reading<PoolStr> {
         let value = self.tok.value(tag)?;
         Ok(self.arena.scene.add_str(self.tok.text_of(&value.text)))
     }
@@ -209,7 +209,7 @@ impl<'a> Reader<'a> {
     /// Warns about every attribute of `tag` except those named in `known` (in any case), with
     /// the nearest known name as a hint, and keeps them for the start tag of the object
     /// being read.
-    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
+    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Reading<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             let hint = match names::nearest(attr.key, known) {
                 Some(near) => format!(" (did you mean {near}?)"),
@@ -225,7 +225,7 @@ impl<'a> Reader<'a> {
 
     /// Warns that `child` is not part of `parent`, with the nearest of `parent`'s `known`
     /// elements as a hint, and skips it (see [`Reader::ignore`]).
-    pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Parsed<()> {
+    pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Reading<()> {
         let hint = match names::nearest(child.name(), known) {
             Some(near) => format!(" (did you mean <{near}>?)"),
             None => String::new(),
@@ -237,7 +237,7 @@ impl<'a> Reader<'a> {
 
     /// Warns (`unknown-element`, with `message`) and skips `child`, keeping its text for the
     /// writer at the end of where it was.
-    pub fn ignore(&mut self, child: &Tag, message: String) -> Parsed<()> {
+    pub fn ignore(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.discard(child, message)?;
         if !self.tok.pinned() {
             let text = self.kept_text(child.at, self.tok.position());
@@ -248,7 +248,7 @@ impl<'a> Reader<'a> {
 
     /// Warns (`unknown-element`, with `message`) and skips `child`, comments inside it
     /// included, keeping nothing: for what the writer writes in another form.
-    pub fn discard(&mut self, child: &Tag, message: String) -> Parsed<()> {
+    pub fn discard(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.warn(Code::UnknownElement, child.at, message)?;
         self.tok.check_attributes(child)?;
         self.tok.pin(child.at);
@@ -326,8 +326,8 @@ impl<'a> Reader<'a> {
     pub fn within<T>(
         &mut self,
         within: &'static str,
-        read: impl FnOnce(&mut Self) -> Parsed<T>,
-    ) -> Parsed<T> {
+        read: impl FnOnce(&mut Self) -> Reading<T>,
+    ) -> Reading<T> {
         self.within = within;
         let read = read(self);
         self.place_comments(self.object, Place::Inside { within, before: "" });
@@ -343,7 +343,7 @@ impl<'a> Reader<'a> {
         parent: &Tag,
         child: &Tag,
         seen: &mut Seen,
-    ) -> Parsed<Option<(E, bool)>> {
+    ) -> Reading<Option<(E, bool)>> {
         let found = E::NAMES.find(child.name.key());
         if self.tok.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
@@ -360,7 +360,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Warns that a scalar element was repeated (the last one wins).
-    pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
+    pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Reading<()> {
         let message =
             format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name());
         self.warn(Code::DuplicateElement, child.at, message)
@@ -372,8 +372,8 @@ impl<'a> Reader<'a> {
         &mut self,
         container: &Tag,
         item: &str,
-        mut each: impl FnMut(&mut Self, &Tag) -> Parsed<()>,
-    ) -> Parsed<()> {
+        mut each: impl FnMut(&mut Self, &Tag) -> Reading<()>,
+    ) -> Reading<()> {
         let key = names::key(item);
         let mut child = Tag::slot();
         while self.tok.child(container, &mut child)? {

@@ -1,8 +1,8 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::{Element, Reader, Reading, Seen, Tag, elements};
 use crate::containers::Container;
-use crate::error::{Code, Parsed, problem};
+use crate::error::{Code, problem};
 use crate::scene::{Object, Place};
 
 elements! {
@@ -25,7 +25,7 @@ impl WorldChild {
 impl<'a> Reader<'a> {
     /// The document from its start to `</World>`: prolog and world. `seen` gets the world's
     /// elements read; [`Reader::end_world`] and [`Reader::epilog`] end the reading.
-    pub(super) fn document(&mut self, seen: &mut Seen) -> Parsed<()> {
+    pub(super) fn document(&mut self, seen: &mut Seen) -> Reading<()> {
         let root = self.root()?;
         self.place_comments(Object::World, Place::Before);
         // Placed now: the warnings about the world come once the file is read.
@@ -43,14 +43,14 @@ impl<'a> Reader<'a> {
         (root, tag): (&Tag, &Tag),
         container: Container,
         seen: &mut Seen,
-    ) -> Parsed<()> {
+    ) -> Reading<()> {
         self.container(tag, container)?;
         self.world_children(root, seen)
     }
 
     /// Once the world is read, with `seen` its elements: warns of each container it did not
     /// have.
-    pub(super) fn end_world(&mut self, seen: &Seen) -> Parsed<()> {
+    pub(super) fn end_world(&mut self, seen: &Seen) -> Reading<()> {
         for container in Container::ALL {
             if !seen.contains(WorldChild::of(container)) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
@@ -62,7 +62,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The prolog and the root's start tag, which must be `<World>`.
-    pub(super) fn root(&mut self) -> Parsed<Tag> {
+    pub(super) fn root(&mut self) -> Reading<Tag> {
         let root = loop {
             match self.tok.next_node()? {
                 super::Node::Open(tag) => break tag,
@@ -105,7 +105,7 @@ impl<'a> Reader<'a> {
 
     /// What follows `</World>`: blank text, comments and processing instructions only (once
     /// read, nothing).
-    pub(super) fn epilog(&mut self) -> Parsed<()> {
+    pub(super) fn epilog(&mut self) -> Reading<()> {
         loop {
             match self.tok.next_node()? {
                 super::Node::Eof => {
@@ -135,7 +135,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The root's children up to `</World>`.
-    pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
+    pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Reading<()> {
         let mut child = Tag::slot();
         while self.tok.child(root, &mut child)? {
             let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
@@ -158,8 +158,8 @@ impl<'a> Reader<'a> {
     }
 
     /// The items of a container, to its end.
-    fn container(&mut self, tag: &Tag, name: Container) -> Parsed<()> {
-        let each: fn(&mut Self, &Tag) -> Parsed<()> = match name {
+    fn container(&mut self, tag: &Tag, name: Container) -> Reading<()> {
+        let each: fn(&mut Self, &Tag) -> Reading<()> = match name {
             Container::Shapes => Self::shape,
             Container::Fixtures => Self::fixture,
             Container::Bodies => Self::body,
@@ -170,7 +170,7 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
-    pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
+    pub(super) fn read_version(&mut self, root: &Tag) -> Reading<()> {
         let attrs = self.tok.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["Version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {

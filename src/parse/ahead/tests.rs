@@ -243,7 +243,7 @@ fn a_reading_ends_before_an_item_only_where_another_can_go_on() {
         let mut seen = Seen::default();
         let mut read = reader.document(&mut seen);
         let mut stops = Vec::new();
-        while read.as_ref().is_err_and(is_end_of_piece) {
+        while matches!(read, Err(Halt::PieceEnd)) {
             let end = reader.tok.pass_end();
             stops.push((end, reader.tok.position(), reader.arena.scene.bodies.len()));
             let (root, tag) = reader.tok.open_item().unwrap();

@@ -35,20 +35,38 @@ pub(super) use values::verbatim;
 #[cfg(test)]
 mod tests;
 
-/// How a reading stops where its text ends before an item (see
-/// [`Tokenizer::end_before`]): not a finding of the file, so it has the code of none.
-#[cold]
-pub(super) fn end_of_piece() -> Problem {
-    problem(Code::Ok, 0, "the reading ends before an item here")
+/// Why a reading stopped before the end of its text: a problem of the file, or the end of
+/// the piece of text it was given, before an item (see [`Tokenizer::end_before`]), which is
+/// where a two-thread load's reading is meant to stop and no finding at all.
+#[derive(Debug)]
+pub(crate) enum Halt {
+    Problem(Problem),
+    PieceEnd,
 }
 
-/// Whether a reading stopped with [`end_of_piece`].
-pub(super) fn is_end_of_piece(problem: &Problem) -> bool {
-    problem.code == Code::Ok
+impl From<Problem> for Halt {
+    #[inline]
+    fn from(problem: Problem) -> Halt {
+        Halt::Problem(problem)
+    }
 }
 
+impl Halt {
+    /// The problem that stopped a reading that was given no piece ends (so that it cannot
+    /// stop at one).
+    pub(crate) fn into_problem(self) -> Problem {
+        match self {
+            Halt::Problem(problem) => problem,
+            Halt::PieceEnd => problem(Code::Internal, 0, "a reading stopped at a piece's end"),
+        }
+    }
+}
+
+/// What a reading step gives, or why the reading stopped.
+pub(crate) type Reading<T> = Result<T, Halt>;
+
 #[cold]
-fn malformed(at: usize, e: impl Into<quick_xml::Error>) -> Problem {
+fn malformed<E: From<Problem>>(at: usize, e: impl Into<quick_xml::Error>) -> E {
     problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
 }
 
@@ -283,9 +301,9 @@ impl<'a> Tokenizer<'a> {
 
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
     /// at the end of the file; the problem that ends the text early, when that is why;
-    /// [`end_of_piece`] where the reading ends before an item (see
+    /// [`Halt::PieceEnd`] where the reading ends before an item (see
     /// [`Tokenizer::end_before`]).
-    fn more(&mut self) -> Parsed<bool> {
+    fn more(&mut self) -> Reading<bool> {
         let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
             .into_iter()
             .flatten()
@@ -299,12 +317,12 @@ impl<'a> Tokenizer<'a> {
         while !self.source.more(keep) {
             if self.source.end() != self.end_at {
                 return match self.source.stop() {
-                    Some(stop) => Err(Box::new(stop.clone())),
+                    Some(stop) => Err(Halt::Problem(Box::new(stop.clone()))),
                     None => Ok(false),
                 };
             }
             if self.pos == self.end_at && self.may_end() {
-                return Err(end_of_piece());
+                return Err(Halt::PieceEnd);
             }
             self.pass_end();
             // A text in memory is at hand past the end at once.
@@ -336,11 +354,11 @@ impl<'a> Tokenizer<'a> {
         mut from: usize,
         overlap: usize,
         mut find: impl FnMut(&[u8]) -> Option<usize>,
-    ) -> Parsed<Option<usize>> {
+    ) -> Reading<Option<usize>> {
         loop {
             let rest = self.rest(from);
             if let Some(i) = find(rest) {
-                return self.within_text_limit(start, from + i).map(Some);
+                return Ok(self.within_text_limit(start, from + i).map(Some)?);
             }
             from = (from + rest.len()).saturating_sub(overlap).max(from);
             if (from - start) as u64 > self.options.max_text_bytes {
@@ -367,7 +385,7 @@ impl<'a> Tokenizer<'a> {
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
     #[inline(always)]
-    pub fn skip_space(&mut self) -> Parsed<()> {
+    pub fn skip_space(&mut self) -> Reading<()> {
         let rest = self.rest(self.pos);
         let (space, all) = (space_len(rest), rest.len());
         self.pos += space;
@@ -381,7 +399,7 @@ impl<'a> Tokenizer<'a> {
     /// apart, so that the usual skip is a few instructions where it is inlined.
     #[cold]
     #[inline(never)]
-    fn skip_space_on(&mut self) -> Parsed<()> {
+    fn skip_space_on(&mut self) -> Reading<()> {
         while self.more()? {
             let rest = self.rest(self.pos);
             let (space, all) = (space_len(rest), rest.len());
@@ -399,7 +417,7 @@ impl<'a> Tokenizer<'a> {
         (self.last, self.started) = (self.started, at);
     }
 
-    pub fn next_node(&mut self) -> Parsed<Node> {
+    pub fn next_node(&mut self) -> Reading<Node> {
         self.begin_node(self.pos);
         loop {
             let at = self.pos;
@@ -431,7 +449,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Text up to the next markup, its references resolved and its line ends normalised.
-    fn text_node(&mut self, at: usize) -> Parsed<Node> {
+    fn text_node(&mut self, at: usize) -> Reading<Node> {
         let mut plain = true;
         let end = self.scan(at, at, 0, |rest| {
             let mut from = 0;
@@ -465,13 +483,13 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The end of a tag that starts at `at`: the offset of its `>`.
-    fn tag_end(&mut self, at: usize) -> Parsed<usize> {
+    fn tag_end(&mut self, at: usize) -> Reading<usize> {
         // The tag at hand, its quoted values skipped; the element parser takes the rest.
         let rest = self.rest(at + 1);
         let mut from = 0;
         while let Some(i) = find3(&rest[from..], b'>', b'"', b'\'').map(|i| from + i) {
             if rest[i] == b'>' {
-                return self.within_text_limit(at, at + 1 + i);
+                return Ok(self.within_text_limit(at, at + 1 + i)?);
             }
             // Values are short: the same byte three times is found eight bytes at a time.
             let quote = rest[i];
@@ -487,7 +505,7 @@ impl<'a> Tokenizer<'a> {
         }
     }
 
-    fn start_tag(&mut self, at: usize) -> Parsed<Node> {
+    fn start_tag(&mut self, at: usize) -> Reading<Node> {
         let tag = match self.short_tag(at) {
             Some(tag) => tag,
             None => {
@@ -544,7 +562,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Counts a start tag just read against the limits and opens its element.
     #[inline(always)]
-    fn opened(&mut self, tag: &Tag) -> Parsed<()> {
+    fn opened(&mut self, tag: &Tag) -> Reading<()> {
         let at = tag.at;
         self.elements += 1;
         if self.elements > self.options.max_elements {
@@ -583,7 +601,7 @@ impl<'a> Tokenizer<'a> {
         Some(Tag { name, content: None, at, empty })
     }
 
-    fn end_tag(&mut self, at: usize) -> Parsed<Node> {
+    fn end_tag(&mut self, at: usize) -> Reading<Node> {
         if self.usual_end_tag(at) {
             return Ok(Node::Close(at));
         }
@@ -602,7 +620,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
-    fn processing_instruction(&mut self, at: usize) -> Parsed<()> {
+    fn processing_instruction(&mut self, at: usize) -> Reading<()> {
         let end = self.scan(at, at + 2, 1, |rest| memchr::memmem::find(rest, b"?>"))?;
         let Some(end) = end else {
             let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
@@ -628,7 +646,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<!...`: a comment (kept for the writer: None), CDATA (its text), or a DOCTYPE (refused).
-    fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
+    fn bang(&mut self, at: usize) -> Reading<Option<Node>> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {
@@ -639,7 +657,7 @@ impl<'a> Tokenizer<'a> {
                 dashes = *rest.get(i + 2)? != b'>';
                 Some(i)
             })?;
-            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedComment))?;
+            let end = end.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedComment))?;
             if dashes {
                 return Err(problem(
                     Code::MalformedXml,
@@ -656,7 +674,7 @@ impl<'a> Tokenizer<'a> {
         }
         if head.starts_with(b"<![CDATA[") {
             let end = self.scan(at, at + 9, 2, |rest| memchr::memmem::find(rest, b"]]>"))?;
-            let end = end.ok_or_else(|| malformed(at, SyntaxError::UnclosedCData))?;
+            let end = end.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedCData))?;
             self.pos = end + 3;
             return Ok(Some(Node::Text(Text { at: at + 9, end, resolved: None })));
         }

@@ -10,7 +10,7 @@ use crate::place::{Cursor, Spot};
 impl<'a> Tokenizer<'a> {
     /// The error for a repeated container.
     #[cold]
-    pub fn duplicate_container(&self, parent: &Tag, child: &Tag) -> Problem {
+    pub fn duplicate_container<E: From<Problem>>(&self, parent: &Tag, child: &Tag) -> E {
         problem(
             Code::DuplicateContainer,
             child.at,
@@ -23,12 +23,12 @@ impl<'a> Tokenizer<'a> {
     }
 
     #[cold]
-    pub fn missing(&self, tag: &Tag, what: &str) -> Problem {
+    pub fn missing<E: From<Problem>>(&self, tag: &Tag, what: &str) -> E {
         problem(Code::MissingElement, tag.at, format!("<{}> has no {what}", tag.name()))
     }
 
     #[cold]
-    pub fn unclosed(&self, tag: &Tag) -> Problem {
+    pub fn unclosed<E: From<Problem>>(&self, tag: &Tag) -> E {
         problem(
             Code::MalformedXml,
             self.source.end(),
@@ -96,7 +96,7 @@ impl<'a> Tokenizer<'a> {
     /// Ends the reading before the items at `ends` (offsets in order, each with the name
     /// of the container it is assumed to be in) where it can: the text at hand ends at each
     /// in turn, and where the reading reaches it directly in that container in the root,
-    /// with nothing read waiting, it stops there with [`end_of_piece`] before the item.
+    /// with nothing read waiting, it stops there with [`Halt::PieceEnd`](super::Halt::PieceEnd) before the item.
     /// Where it cannot, the reading goes on past it.
     pub fn end_before(&mut self, ends: Vec<(usize, Name)>) {
         (self.ends, self.next_end) = (ends, 0);

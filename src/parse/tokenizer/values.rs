@@ -8,6 +8,7 @@ use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
+use super::Reading;
 use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{find3, first_non_char, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
@@ -25,7 +26,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     #[cold]
-    pub fn limit(&self, at: usize, name: &str, value: u64) -> Problem {
+    pub fn limit<E: From<Problem>>(&self, at: usize, name: &str, value: u64) -> E {
         problem(
             Code::LimitExceeded,
             at,
@@ -63,7 +64,7 @@ impl<'a> Tokenizer<'a> {
     /// comments are skipped; other text is an error. Inlined into the readers' loops, so
     /// that the usual child costs no more than it needs.
     #[inline(always)]
-    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
+    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Reading<bool> {
         if parent.empty {
             return Ok(false);
         }
@@ -90,7 +91,7 @@ impl<'a> Tokenizer<'a> {
     /// general reading of a child: apart, so that the usual child costs no more than it
     /// needs.
     #[inline(never)]
-    pub(super) fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
+    pub(super) fn other_child(&mut self, parent: &Tag) -> Reading<Option<Tag>> {
         loop {
             self.skip_space()?;
             match self.next_node()? {
@@ -116,7 +117,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
-    pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
+    pub fn value(&mut self, tag: &Tag) -> Reading<Value> {
         match self.plain_value(tag) {
             Some(value) => Ok(value),
             None => self.value_of_nodes(tag),
@@ -124,7 +125,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// [`Tokenizer::value`] when it is not the usual one: read node by node.
-    fn value_of_nodes(&mut self, tag: &Tag) -> Parsed<Value> {
+    fn value_of_nodes(&mut self, tag: &Tag) -> Reading<Value> {
         let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
@@ -230,7 +231,7 @@ impl<'a> Tokenizer<'a> {
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Parsed<Result<(T, usize), Problem>> {
+    ) -> Reading<Result<(T, usize), Problem>> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
             return Ok(match convert(self.source.slice(at, end)) {
@@ -373,7 +374,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Skips `tag` and everything inside it.
-    pub fn skip(&mut self, tag: &Tag) -> Parsed<()> {
+    pub fn skip(&mut self, tag: &Tag) -> Reading<()> {
         if tag.empty {
             return Ok(());
         }
