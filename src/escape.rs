@@ -36,8 +36,13 @@ pub fn terminal_char(c: char, out: &mut String) {
 /// Text for a terminal or a log: every character that could end the line, move the cursor
 /// or turn the text around, escaped (see [`terminal_char`]).
 pub fn terminal_text(text: &str) -> String {
+    // Printable ASCII and tabs, most of any report, go as they are without a look at each
+    // character; the first other byte starts a character (text is UTF-8).
+    let plain = text.bytes().position(|b| !matches!(b, b' '..=b'~' | b'\t'));
+    let plain = plain.unwrap_or(text.len());
     let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
+    out.push_str(&text[..plain]);
+    for c in text[plain..].chars() {
         terminal_char(c, &mut out);
     }
     out

@@ -97,8 +97,17 @@ impl Quoted {
         }
         let bytes = self.read(start, offset.checked_sub(start)? + span + MAX_CHAR)?;
         let split = usize::try_from(offset - start).ok()?.min(bytes.len());
-        let (before, after) = bytes.split_at(split);
-        let before = decode(before, encoding, start > bom);
+        let (mut before, mut after) = bytes.split_at(split);
+        let mut cut = start > bom;
+        if let Encoding::Utf8 = encoding {
+            // Only the line is decoded: in UTF-8 a line end is never part of a character.
+            let line_end = |b: &u8| matches!(b, b'\n' | b'\r');
+            if let Some(end) = before.iter().rposition(line_end) {
+                (before, cut) = (&before[end..], false);
+            }
+            after = &after[..after.iter().position(line_end).unwrap_or(after.len())];
+        }
+        let before = decode(before, encoding, cut);
         let after = decode(after, encoding, false);
         let line_start = before.rfind(['\n', '\r']).map(|at| at + 1);
         let before: Vec<char> = before[line_start.unwrap_or(0)..].chars().collect();
@@ -174,50 +183,73 @@ fn decode(bytes: &[u8], encoding: Encoding, cut: bool) -> String {
     }
 }
 
+/// Characters escaped for a terminal, all in one text: where each one's escape ends there
+/// and how many columns it takes (a report escapes a few hundred of them, once each).
+struct Escaped {
+    text: String,
+    ends: Vec<usize>,
+    widths: Vec<usize>,
+}
+
+impl Escaped {
+    fn of(chars: &[char]) -> Escaped {
+        let mut escaped = Escaped {
+            text: String::with_capacity(chars.len()),
+            ends: Vec::new(),
+            widths: Vec::new(),
+        };
+        for &c in chars {
+            let start = escaped.text.len();
+            terminal_char(c, &mut escaped.text);
+            let width = match escaped.text.len() - start {
+                1 => 1,
+                _ => escaped.text[start..].chars().count(),
+            };
+            escaped.ends.push(escaped.text.len());
+            escaped.widths.push(width);
+        }
+        escaped
+    }
+
+    /// Where the escape of character `i` starts in the text (the text's end past the last).
+    fn start(&self, i: usize) -> usize {
+        if i == 0 { 0 } else { self.ends[i - 1] }
+    }
+}
+
 /// The shown part of a line, of which `before` are the characters before the column (all
 /// of them from the line's start, when `whole_start` says so) and `after` those from it on,
 /// escaped, and its caret line. SHOWN columns at most are shown (an escaped character
 /// takes the columns of its escape), half of them before the column unless the line ends
 /// sooner.
 fn shown(before: &[char], whole_start: bool, after: &[char]) -> (String, String) {
-    let escaped = |chars: &[char]| -> Vec<String> {
-        chars
-            .iter()
-            .map(|&c| {
-                let mut one = String::new();
-                terminal_char(c, &mut one);
-                one
-            })
-            .collect()
-    };
-    let (before, after) = (escaped(before), escaped(after));
-    let width = |one: &String| one.chars().count();
-    let after_width: usize = after.iter().map(width).sum();
+    let (before, after) = (Escaped::of(before), Escaped::of(after));
+    let after_width: usize = after.widths.iter().sum();
     let mut room = (SHOWN / 2).max(SHOWN.saturating_sub(after_width));
-    let mut first = before.len();
-    while first > 0 && width(&before[first - 1]) <= room {
+    let mut first = before.widths.len();
+    while first > 0 && before.widths[first - 1] <= room {
         first -= 1;
-        room -= width(&before[first]);
+        room -= before.widths[first];
     }
-    let mut room = SHOWN - before[first..].iter().map(width).sum::<usize>();
+    let mut room = SHOWN - before.widths[first..].iter().sum::<usize>();
     let mut end = 0;
-    while end < after.len() && width(&after[end]) <= room {
-        room -= width(&after[end]);
+    while end < after.widths.len() && after.widths[end] <= room {
+        room -= after.widths[end];
         end += 1;
     }
     let (mut line, mut caret) = match first > 0 || !whole_start {
         true => ("...".to_owned(), "   ".to_owned()),
         false => (String::new(), String::new()),
     };
-    for one in &before[first..] {
-        line.push_str(one);
-        match one.as_str() {
+    line.push_str(&before.text[before.start(first)..]);
+    for i in first..before.widths.len() {
+        match &before.text[before.start(i)..before.ends[i]] {
             "\t" => caret.push('\t'),
-            _ => caret.extend(std::iter::repeat_n(' ', width(one))),
+            _ => caret.extend(std::iter::repeat_n(' ', before.widths[i])),
         }
     }
-    line.extend(after[..end].iter().map(String::as_str));
-    if end < after.len() {
+    line.push_str(&after.text[..after.start(end)]);
+    if end < after.widths.len() {
         line.push_str("...");
     }
     caret.push('^');

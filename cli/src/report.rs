@@ -14,6 +14,7 @@
 //! that GCC-style matchers and grep read. What it would draw, the caret line, is a few
 //! lines of [`Quoted::excerpt`].
 
+use std::fmt::Write;
 use std::io;
 
 use anstyle::{AnsiColor, Style};
@@ -60,27 +61,47 @@ impl Report {
     /// place bold, the severity, its code and the caret in the severity's colour, the
     /// message bold; the text is the same.
     pub fn text(&self, file: &str, quoted: &Quoted, colour: bool) -> String {
-        let paint = |style: Style, text: &str| match colour {
-            true => format!("{style}{text}{style:#}"),
-            false => text.to_owned(),
+        let mut text = String::with_capacity(self.message.len() + file.len() + 300);
+        // `write` onto the text, styled when the text is for a terminal.
+        let paint = |text: &mut String, style: Style, write: &dyn Fn(&mut String)| {
+            if colour {
+                let _ = write!(text, "{style}");
+            }
+            write(text);
+            if colour {
+                let _ = write!(text, "{style:#}");
+            }
         };
-        let file = terminal_text(file);
-        let place = match (self.position.line, self.position.column) {
-            (0, _) => file.to_owned(),
-            (line, 0) => format!("{file}:{line}"),
-            (line, column) => format!("{file}:{line}:{column}"),
-        };
-        let (severity, code) = (terminal_text(&self.severity), terminal_text(&self.code));
         let marked = self.marked();
-        let mut text = format!(
-            "{}: {}: {}\n",
-            paint(BOLD, &place),
-            paint(marked, &format!("{severity}[{code}]")),
-            paint(BOLD, &terminal_text(&self.message)),
-        );
+        paint(&mut text, BOLD, &|text| {
+            text.push_str(&terminal_text(file));
+            match (self.position.line, self.position.column) {
+                (0, _) => {}
+                (line, 0) => {
+                    let _ = write!(text, ":{line}");
+                }
+                (line, column) => {
+                    let _ = write!(text, ":{line}:{column}");
+                }
+            }
+        });
+        text.push_str(": ");
+        paint(&mut text, marked, &|text| {
+            text.push_str(&terminal_text(&self.severity));
+            text.push('[');
+            text.push_str(&terminal_text(&self.code));
+            text.push(']');
+        });
+        text.push_str(": ");
+        paint(&mut text, BOLD, &|text| text.push_str(&terminal_text(&self.message)));
+        text.push('\n');
         if let Some((line, caret)) = quoted.excerpt(self.position) {
             let under = caret.strip_suffix('^').unwrap_or(&caret);
-            text.push_str(&format!("{line}\n{under}{}\n", paint(marked, "^")));
+            text.push_str(&line);
+            text.push('\n');
+            text.push_str(under);
+            paint(&mut text, marked, &|text| text.push('^'));
+            text.push('\n');
         }
         text
     }
