@@ -11,6 +11,7 @@
 use crate::error::{Code, Severity};
 use crate::escape::json_string;
 use crate::scene::Diagnostic;
+use crate::scene::joints::{self, Value};
 use crate::scene::{
     Body, BodyKind, Fixture, Joint, JointKind, MassData, NONE, Scene, Shape, ShapeKind, Str, Vec2,
 };
@@ -113,58 +114,29 @@ fn mass_data(m: &MassData) -> String {
 
 fn joint(scene: &Scene, j: &Joint) -> Vec<Line> {
     let kind = j.kind().map(JointKind::name);
-    vec![
-        vec![
-            ("kind", enum_text(kind, j.kind)),
-            ("name", text(scene, j.name)),
-            ("body_a", index(j.body_a)),
-            ("body_b", index(j.body_b)),
-            ("collide_connected", j.collide_connected.to_string()),
-        ],
-        vec![("joint_a", index(j.joint_a)), ("joint_b", index(j.joint_b))],
-        vec![
-            ("local_anchor_a", vec2(j.local_anchor_a)),
-            ("local_anchor_b", vec2(j.local_anchor_b)),
-            ("local_axis_a", vec2(j.local_axis_a)),
-        ],
-        vec![
-            ("ground_anchor_a", vec2(j.ground_anchor_a)),
-            ("ground_anchor_b", vec2(j.ground_anchor_b)),
-            ("linear_offset", vec2(j.linear_offset)),
-        ],
-        vec![
-            ("reference_angle", float(j.reference_angle)),
-            ("enable_limit", j.enable_limit.to_string()),
-            ("lower_limit", float(j.lower_limit)),
-            ("upper_limit", float(j.upper_limit)),
-        ],
-        vec![
-            ("enable_motor", j.enable_motor.to_string()),
-            ("motor_speed", float(j.motor_speed)),
-            ("max_motor_torque", float(j.max_motor_torque)),
-            ("max_motor_force", float(j.max_motor_force)),
-        ],
-        vec![
-            ("length", float(j.length)),
-            ("frequency_hz", float(j.frequency_hz)),
-            ("damping_ratio", float(j.damping_ratio)),
-        ],
-        vec![
-            ("length_a", float(j.length_a)),
-            ("length_b", float(j.length_b)),
-            ("max_length_a", float(j.max_length_a)),
-            ("max_length_b", float(j.max_length_b)),
-            ("ratio", float(j.ratio)),
-        ],
-        vec![
-            ("max_force", float(j.max_force)),
-            ("max_torque", float(j.max_torque)),
-            ("max_length", float(j.max_length)),
-            ("angular_offset", float(j.angular_offset)),
-            ("correction_factor", float(j.correction_factor)),
-        ],
-        vec![("user_data", user_data(scene, j.user_data))],
-    ]
+    let mut lines = vec![vec![
+        ("kind", enum_text(kind, j.kind)),
+        ("name", text(scene, j.name)),
+        ("body_a", index(j.body_a)),
+        ("body_b", index(j.body_b)),
+        ("collide_connected", j.collide_connected.to_string()),
+    ]];
+    let mut j = *j;
+    for group in joints::FIELD_GROUPS {
+        lines.push(group.iter().map(|field| (field.name, value(&mut j, field.value))).collect());
+    }
+    lines.push(vec![("user_data", user_data(scene, j.user_data))]);
+    lines
+}
+
+/// The JSON text of a joint's field.
+fn value(j: &mut Joint, value: Value) -> String {
+    match value {
+        Value::Vector(at) => vec2(*at(j)),
+        Value::Float(at) | Value::NonNegative(at) => float(*at(j)),
+        Value::Flag(at) => at(j).to_string(),
+        Value::JointIndex(at) => index(*at(j)),
+    }
 }
 
 fn user_data(scene: &Scene, at: u32) -> String {

@@ -1,9 +1,10 @@
-//! `<Joint Type="...">`: the common fields, then one table that says which element each
-//! joint kind has, where it goes, and what it may hold.
+//! `<Joint Type="...">`: the common fields, then the kind-specific ones, which the model's
+//! table of joint elements says each kind has, where they go and what they may hold.
 
-use super::{Element, Reader, Reading, Seen, Tag, elements};
+use super::{Element as _, Reader, Reading, Seen, Tag, elements};
 use crate::arena::JointOrigin;
 use crate::error::{Code, Parsed, Problem, problem};
+use crate::scene::joints::{self, Element, Slot, Value};
 use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
 use crate::validate;
 
@@ -70,76 +71,17 @@ const WHEEL_ONLY: [JointChild; 4] = [
     JointChild::LocalXAxis,
 ];
 
-/// Where a kind-specific element goes.
-enum Slot {
-    Vector(fn(&mut Joint) -> &mut Vec2),
-    Float(fn(&mut Joint) -> &mut f32),
-    /// A float that must not be negative.
-    NonNegative(fn(&mut Joint) -> &mut f32),
-    Flag(fn(&mut Joint) -> &mut bool),
-    /// Accepted and dropped: Farseer data with no meaning in the scene.
-    Ignored,
-}
-
-/// The slot of element `name` in a joint of `kind`, if it has one.
-fn slot(kind: JointKind, name: JointChild) -> Option<Slot> {
-    use JointChild::*;
-    use JointKind::*;
-    use Slot::*;
-    let is = |kinds: &[JointKind]| kinds.contains(&kind);
-    let anchored = !is(&[Gear, Motor, Unsupported]);
-    let farseer_only = matches!(
-        name,
-        LocalAnchorA
-            | LocalAnchorB
-            | BiasFactor
-            | MaxImpulse
-            | Softness
-            | TargetAngle
-            | MinLength
-            | MaxLength
-            | FrequencyHz
-            | DampingRatio
-    );
-    Some(match name {
-        Breakpoint => Ignored,
-        _ if kind == Unsupported && farseer_only => Ignored,
-        LocalAnchorA if anchored => Vector(|j| &mut j.local_anchor_a),
-        LocalAnchorB if anchored => Vector(|j| &mut j.local_anchor_b),
-        LocalAxisA if is(&[Prismatic, Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        LocalXAxis1 if is(&[Prismatic]) => Vector(|j| &mut j.local_axis_a),
-        LocalXAxis if is(&[Line, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        Axis if is(&[Prismatic, Wheel]) => Vector(|j| &mut j.local_axis_a),
-        ReferenceAngle if is(&[Revolute, Prismatic, Weld]) => Float(|j| &mut j.reference_angle),
-        EnableLimit if is(&[Revolute, Prismatic, Line]) => Flag(|j| &mut j.enable_limit),
-        LowerAngle if is(&[Revolute]) => Float(|j| &mut j.lower_limit),
-        UpperAngle if is(&[Revolute]) => Float(|j| &mut j.upper_limit),
-        LowerTranslation if is(&[Prismatic, Line]) => Float(|j| &mut j.lower_limit),
-        UpperTranslation if is(&[Prismatic, Line]) => Float(|j| &mut j.upper_limit),
-        EnableMotor if is(&[Revolute, Prismatic, Line, Wheel]) => Flag(|j| &mut j.enable_motor),
-        MotorSpeed if is(&[Revolute, Prismatic, Line, Wheel]) => Float(|j| &mut j.motor_speed),
-        MaxMotorTorque if is(&[Revolute, Wheel, Line]) => NonNegative(|j| &mut j.max_motor_torque),
-        MaxMotorForce if is(&[Prismatic, Line]) => NonNegative(|j| &mut j.max_motor_force),
-        Length if is(&[Distance]) => NonNegative(|j| &mut j.length),
-        FrequencyHz if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.frequency_hz),
-        DampingRatio if is(&[Distance, Weld, Wheel, Line]) => NonNegative(|j| &mut j.damping_ratio),
-        GroundAnchorA | WorldAnchorA if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_a),
-        GroundAnchorB | WorldAnchorB if is(&[Pulley]) => Vector(|j| &mut j.ground_anchor_b),
-        Constant if is(&[Pulley]) => Ignored,
-        LengthA if is(&[Pulley]) => Float(|j| &mut j.length_a),
-        LengthB if is(&[Pulley]) => Float(|j| &mut j.length_b),
-        MaxLengthA if is(&[Pulley]) => Float(|j| &mut j.max_length_a),
-        MaxLengthB if is(&[Pulley]) => Float(|j| &mut j.max_length_b),
-        Ratio if is(&[Pulley, Gear]) => Float(|j| &mut j.ratio),
-        MaxForce if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_force),
-        MaxTorque if is(&[Friction, Motor]) => NonNegative(|j| &mut j.max_torque),
-        MaxLength if is(&[Rope]) => NonNegative(|j| &mut j.max_length),
-        LinearOffset if is(&[Motor]) => Vector(|j| &mut j.linear_offset),
-        AngularOffset if is(&[Motor]) => Float(|j| &mut j.angular_offset),
-        CorrectionFactor if is(&[Motor]) => Float(|j| &mut j.correction_factor),
-        _ => return None,
-    })
-}
+/// The table's row of each element, by the element's key (none for the common elements):
+/// found by name once, when compiling.
+static ROWS: [Option<&Element>; JointChild::ALL.len()] = {
+    let mut rows = [None; JointChild::ALL.len()];
+    let mut i = 0;
+    while i < rows.len() {
+        rows[i] = joints::named(JointChild::NAMES.names[i]);
+        i += 1;
+    }
+    rows
+};
 
 /// The joint as the format can hold it: the defaults of its kind, then every field the
 /// format has for that kind taken from `given` (the common fields included). Fails on a
@@ -156,25 +98,23 @@ pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
         collide_connected: given.collide_connected,
         ..Joint::new(kind)
     };
-    if kind == JointKind::Gear {
-        (joint.joint_a, joint.joint_b) = (given.joint_a, given.joint_b);
-    }
     let mut source = *given;
     let finite = |name: &str, v: f32| validate::finite(name, &[v]).map(|()| v);
-    for &element in JointChild::ALL {
-        let name = element.name();
-        match slot(kind, element) {
-            Some(Slot::Vector(field)) => {
+    for element in &joints::ELEMENTS {
+        let name = element.name;
+        let Some(Slot::Fills(value)) = element.slot(kind) else { continue };
+        match value {
+            Value::Vector(field) => {
                 let v = *field(&mut source);
                 *field(&mut joint) = Vec2::new(finite(name, v.x)?, finite(name, v.y)?);
             }
-            Some(Slot::Float(field)) => *field(&mut joint) = finite(name, *field(&mut source))?,
-            Some(Slot::NonNegative(field)) => {
+            Value::Float(field) => *field(&mut joint) = finite(name, *field(&mut source))?,
+            Value::NonNegative(field) => {
                 let v = finite(name, *field(&mut source))?;
                 *field(&mut joint) = validate::not_negative(format_args!("<{name}>"), v, 0)?;
             }
-            Some(Slot::Flag(field)) => *field(&mut joint) = *field(&mut source),
-            Some(Slot::Ignored) | None => {}
+            Value::Flag(field) => *field(&mut joint) = *field(&mut source),
+            Value::JointIndex(field) => *field(&mut joint) = *field(&mut source),
         }
     }
     Ok(joint)
@@ -230,10 +170,11 @@ impl<'a> Reader<'a> {
             let legacy = self.arena.version == 0;
             let common = matches!(name, Name | UserData | BodyA | BodyB | CollideConnected)
                 || (name == Tag && self.arena.tag_is_user_data());
-            let named_joint =
-                matches!(name, JointA | JointB) && (legacy || kind == JointKind::Gear);
-            let slot = slot(kind, name);
-            if !common && !named_joint && slot.is_none() {
+            // Legacy files name the bodies JointA and JointB.
+            let legacy_body = matches!(name, JointA | JointB) && legacy;
+            let row = ROWS[name as usize];
+            let slot = row.and_then(|row| row.slot(kind));
+            if !common && !legacy_body && slot.is_none() {
                 let message =
                     format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
                 self.ignore(&child, message)?;
@@ -242,7 +183,8 @@ impl<'a> Reader<'a> {
             if repeated {
                 self.duplicate(tag, &child)?;
             }
-            if kind == JointKind::Weld && matches!(name, FrequencyHz | DampingRatio) {
+            // The weld's spring is the one such element.
+            if row.is_some_and(|row| row.lowest_version(kind) >= 2) {
                 self.newer_construct(child.at, "a soft Weld joint")?;
             }
             match name {
@@ -252,17 +194,23 @@ impl<'a> Reader<'a> {
                 CollideConnected => joint.collide_connected = self.boolean(&child)?,
                 BodyA => (joint.body_a, at.body_a) = self.id(&child)?,
                 BodyB => (joint.body_b, at.body_b) = self.id(&child)?,
-                // Legacy files name the bodies JointA and JointB.
                 JointA if legacy => (joint.body_a, at.body_a) = self.id(&child)?,
                 JointB if legacy => (joint.body_b, at.body_b) = self.id(&child)?,
                 JointA => (joint.joint_a, at.joint_a) = self.id(&child)?,
                 JointB => (joint.joint_b, at.joint_b) = self.id(&child)?,
                 _ => match slot.expect("elements without a slot were skipped above") {
-                    Slot::Vector(field) => *field(&mut joint) = self.vector(&child)?,
-                    Slot::Float(field) => *field(&mut joint) = self.float(&child)?,
-                    Slot::NonNegative(field) => *field(&mut joint) = self.non_negative(&child)?,
-                    Slot::Flag(field) => *field(&mut joint) = self.boolean(&child)?,
-                    Slot::Ignored => self.tok.skip(&child)?,
+                    Slot::Fills(Value::Vector(field)) => {
+                        *field(&mut joint) = self.vector(&child)?
+                    }
+                    Slot::Fills(Value::Float(field)) => *field(&mut joint) = self.float(&child)?,
+                    Slot::Fills(Value::NonNegative(field)) => {
+                        *field(&mut joint) = self.non_negative(&child)?
+                    }
+                    Slot::Fills(Value::Flag(field)) => *field(&mut joint) = self.boolean(&child)?,
+                    Slot::Fills(Value::JointIndex(_)) => {
+                        unreachable!("JointA and JointB are read above, with where they are")
+                    }
+                    Slot::Dropped => self.tok.skip(&child)?,
                 },
             }
             // Not inside a Farseer-only joint, which every dialect writes back as it was.
@@ -336,7 +284,7 @@ impl<'a> Reader<'a> {
                 ),
             ));
         };
-        if matches!(kind, JointKind::Wheel | JointKind::Rope | JointKind::Motor) {
+        if joints::VERSION_2_KINDS.contains(kind) {
             self.newer_construct(ty.at, &format!("a {value} joint"))?;
         }
         if kind == JointKind::Unsupported {
@@ -374,5 +322,27 @@ impl<'a> Reader<'a> {
             }
         }
         self.recovered(validate::joint(joint, tag.at, at.body_b), ())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_element_key_finds_its_row_and_each_row_has_a_key() {
+        use JointChild::*;
+        for &key in JointChild::ALL {
+            match ROWS[key as usize] {
+                Some(row) => assert_eq!(row.name, key.name()),
+                None => assert!(
+                    matches!(key, Name | UserData | Tag | BodyA | BodyB | CollideConnected),
+                    "{key:?}"
+                ),
+            }
+        }
+        for row in &joints::ELEMENTS {
+            assert!(JointChild::ALL.iter().any(|&key| key.name() == row.name), "{}", row.name);
+        }
     }
 }

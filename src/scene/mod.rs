@@ -1,7 +1,7 @@
 //! The model: the flat `#[repr(C)]` records a scene is made of and their defaults
-//! (`records`), the frozen [`Scene`] that owns them, the scene under construction
-//! (`builder`), and the text a file held beyond the records, which only the writer reads
-//! (`kept`).
+//! (`records`), the one table of the elements each joint kind has (`joints`), the frozen
+//! [`Scene`] that owns them, the scene under construction (`builder`), and the text a file
+//! held beyond the records, which only the writer reads (`kept`).
 //!
 //! Every record is part of the C ABI (`include/box2scene.h` is generated from them).
 //! Cross references are `u32` indices into sibling arrays, [`NONE`] when absent; variable
@@ -14,6 +14,7 @@
 #![forbid(unsafe_code)]
 
 mod builder;
+pub(crate) mod joints;
 mod kept;
 mod records;
 

@@ -7,6 +7,7 @@ use super::numbers::{integer_text, push_float};
 use crate::containers::Container;
 use crate::holds::escaped;
 use crate::scene::Object;
+use crate::scene::joints::{self, Value};
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
@@ -442,71 +443,26 @@ impl<'s> Writer<'s> {
         self.integer("BodyA", joint.body_a);
         self.integer("BodyB", joint.body_b);
         self.flag("CollideConnected", joint.collide_connected, d.collide_connected);
-        use JointKind::*;
-        let is = |kinds: &[JointKind]| kinds.contains(&kind);
-        if !is(&[Gear, Motor]) {
-            self.vector_or_default("LocalAnchorA", joint.local_anchor_a, d.local_anchor_a);
-            self.vector_or_default("LocalAnchorB", joint.local_anchor_b, d.local_anchor_b);
-        }
-        if is(&[Prismatic, Line, Wheel]) {
-            self.vector_or_default("LocalAxisA", joint.local_axis_a, d.local_axis_a);
-        }
-        if is(&[Revolute, Prismatic, Weld]) {
-            self.float("ReferenceAngle", joint.reference_angle, d.reference_angle);
-        }
-        if is(&[Revolute, Prismatic, Line]) {
-            self.flag("EnableLimit", joint.enable_limit, d.enable_limit);
-            let (lower, upper) = if kind == Revolute {
-                ("LowerAngle", "UpperAngle")
-            } else {
-                ("LowerTranslation", "UpperTranslation")
-            };
-            self.float(lower, joint.lower_limit, d.lower_limit);
-            self.float(upper, joint.upper_limit, d.upper_limit);
-        }
-        if is(&[Revolute, Prismatic, Line, Wheel]) {
-            self.flag("EnableMotor", joint.enable_motor, d.enable_motor);
-            self.float("MotorSpeed", joint.motor_speed, d.motor_speed);
-        }
-        if is(&[Revolute, Wheel]) {
-            self.float("MaxMotorTorque", joint.max_motor_torque, d.max_motor_torque);
-        }
-        if is(&[Prismatic, Line]) {
-            self.float("MaxMotorForce", joint.max_motor_force, d.max_motor_force);
-        }
-        if kind == Distance {
-            self.float("Length", joint.length, d.length);
-        }
-        if is(&[Distance, Wheel]) || (kind == Weld && self.version >= 2) {
-            self.float("FrequencyHz", joint.frequency_hz, d.frequency_hz);
-            self.float("DampingRatio", joint.damping_ratio, d.damping_ratio);
-        }
-        if kind == Pulley {
-            self.vector_or_default("GroundAnchorA", joint.ground_anchor_a, d.ground_anchor_a);
-            self.vector_or_default("GroundAnchorB", joint.ground_anchor_b, d.ground_anchor_b);
-            self.float("LengthA", joint.length_a, d.length_a);
-            self.float("LengthB", joint.length_b, d.length_b);
-            self.float("MaxLengthA", joint.max_length_a, d.max_length_a);
-            self.float("MaxLengthB", joint.max_length_b, d.max_length_b);
-        }
-        if kind == Gear && joint.joint_a != NONE {
-            self.integer("JointA", joint.joint_a);
-            self.integer("JointB", joint.joint_b);
-        }
-        if is(&[Pulley, Gear]) {
-            self.float("Ratio", joint.ratio, d.ratio);
-        }
-        if is(&[Friction, Motor]) {
-            self.float("MaxForce", joint.max_force, d.max_force);
-            self.float("MaxTorque", joint.max_torque, d.max_torque);
-        }
-        if kind == Rope {
-            self.float("MaxLength", joint.max_length, d.max_length);
-        }
-        if kind == Motor {
-            self.vector_or_default("LinearOffset", joint.linear_offset, d.linear_offset);
-            self.float("AngularOffset", joint.angular_offset, d.angular_offset);
-            self.float("CorrectionFactor", joint.correction_factor, d.correction_factor);
+        let (mut given, mut default) = (*joint, d);
+        for element in &joints::ELEMENTS {
+            let Some(field) = element.field else { continue };
+            if !element.written_for.contains(kind) || element.lowest_version(kind) > self.version {
+                continue;
+            }
+            let name = element.name;
+            match field.value {
+                Value::Vector(at) => {
+                    self.vector_or_default(name, *at(&mut given), *at(&mut default))
+                }
+                Value::Float(at) | Value::NonNegative(at) => {
+                    self.float(name, *at(&mut given), *at(&mut default))
+                }
+                Value::Flag(at) => self.flag(name, *at(&mut given), *at(&mut default)),
+                Value::JointIndex(at) if *at(&mut given) != NONE => {
+                    self.integer(name, *at(&mut given))
+                }
+                Value::JointIndex(_) => {}
+            }
         }
         self.user_data(joint.user_data);
         self.close("Joint");
