@@ -9,6 +9,7 @@ use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::Object;
+use crate::scene::joints::{VERSION_2_KINDS, has_version_2_value};
 use crate::scene::{Body, Joint, JointKind, NONE};
 use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind};
 
@@ -179,11 +180,9 @@ pub(crate) fn needs_version_2(scene: &Scene) -> bool {
     let body = |b: &Body| b.gravity_scale.to_bits() != 1f32.to_bits();
     let joint = |j: &Joint| match j.kind() {
         // A Farseer-only joint is written back as Farseer wrote it, in a Version 2 file.
-        Some(JointKind::Wheel | JointKind::Rope | JointKind::Motor | JointKind::Unsupported) => {
-            true
-        }
-        Some(JointKind::Weld) => j.frequency_hz.to_bits() != 0 || j.damping_ratio.to_bits() != 0,
-        _ => false,
+        Some(JointKind::Unsupported) => true,
+        Some(kind) => VERSION_2_KINDS.contains(kind) || has_version_2_value(j, kind),
+        None => false,
     };
     scene.shapes().iter().any(shape)
         || scene.bodies().iter().any(body)

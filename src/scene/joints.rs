@@ -2,7 +2,8 @@
 //! file may give a joint, in the order box2scene's own writer writes them, the kinds that
 //! read it, the kinds that writer writes it for, the field of the record it fills (with its
 //! value class), and the kinds in which only a Version 2 file may hold it. The reader, the
-//! builder's canonical joint, box2scene's own writer and the dump take it from here.
+//! builder's canonical joint, box2scene's own writer, the dump and the check of what needs
+//! Version 2 take it from here.
 //!
 //! The elements every kind has (`Name`, `BodyA`, `BodyB` and `CollideConnected` before the
 //! table's, `UserData` after them) are not in the table, nor are the defaults, which
@@ -85,6 +86,21 @@ pub(crate) enum Value {
     Flag(fn(&mut Joint) -> &mut bool),
     /// An index into the scene's joints; `NONE` while unset, and then not written.
     JointIndex(fn(&mut Joint) -> &mut u32),
+}
+
+impl Value {
+    /// Whether the field's bits differ in `a` and `b` (so -0.0 and 0.0 differ).
+    pub(crate) fn differs(self, a: &mut Joint, b: &mut Joint) -> bool {
+        match self {
+            Value::Vector(at) => {
+                let (a, b) = (*at(a), *at(b));
+                a.x.to_bits() != b.x.to_bits() || a.y.to_bits() != b.y.to_bits()
+            }
+            Value::Float(at) | Value::NonNegative(at) => at(a).to_bits() != at(b).to_bits(),
+            Value::Flag(at) => at(a) != at(b),
+            Value::JointIndex(at) => at(a) != at(b),
+        }
+    }
 }
 
 /// A kind-specific field of the joint record: its name, as the dump spells it, and its value.
@@ -308,6 +324,17 @@ const fn same(a: &[u8], b: &[u8]) -> bool {
         i += 1;
     }
     true
+}
+
+/// Whether `joint`, of `kind`, holds a value other than its kind's default in an element
+/// that only a Version 2 file may hold in that kind (a weld's spring).
+pub(crate) fn has_version_2_value(joint: &Joint, kind: JointKind) -> bool {
+    let (mut given, mut default) = (*joint, Joint::new(kind));
+    ELEMENTS
+        .iter()
+        .filter(|e| e.lowest_version(kind) >= 2)
+        .filter_map(|e| e.field)
+        .any(|f| f.value.differs(&mut given, &mut default))
 }
 
 #[cfg(test)]

@@ -182,3 +182,13 @@ fn the_groups_list_each_field_of_the_record_once() {
     assert_eq!(floats, [7.0; 19]);
     assert!(enable_limit && enable_motor);
 }
+
+#[test]
+fn only_a_soft_weld_needs_version_2_for_its_values() {
+    let weld = Joint::new(Weld);
+    assert!(!has_version_2_value(&weld, Weld));
+    assert!(has_version_2_value(&Joint { frequency_hz: 4.0, ..weld }, Weld));
+    assert!(has_version_2_value(&Joint { damping_ratio: -0.0, ..weld }, Weld));
+    let distance = Joint { frequency_hz: 4.0, ..Joint::new(Distance) };
+    assert!(!has_version_2_value(&distance, Distance));
+}
