@@ -2,8 +2,8 @@
 //! file may give a joint, in the order box2scene's own writer writes them, the kinds that
 //! read it, the kinds that writer writes it for, the field of the record it fills (with its
 //! value class), and the kinds in which only a Version 2 file may hold it. The reader, the
-//! builder's canonical joint, box2scene's own writer, the dump and the check of what needs
-//! Version 2 take it from here.
+//! builder's canonical joint, both writers, the dump and the check of what needs Version 2
+//! take it from here.
 //!
 //! The elements every kind has (`Name`, `BodyA`, `BodyB` and `CollideConnected` before the
 //! table's, `UserData` after them) are not in the table, nor are the defaults, which
@@ -75,6 +75,25 @@ const FARSEER_ONLY: Kinds = of(&[Unsupported]);
 
 /// The kinds that only a Version 2 file may hold (spec section 1).
 pub(crate) const VERSION_2_KINDS: Kinds = of(&[Wheel, Rope, Motor]);
+
+/// The `Type` attribute of a joint of `kind`, as the writers spell it (a reader takes any
+/// letter case).
+pub(crate) const fn type_name(kind: JointKind) -> &'static str {
+    match kind {
+        Revolute => "Revolute",
+        Prismatic => "Prismatic",
+        Distance => "Distance",
+        Pulley => "Pulley",
+        Line => "Line",
+        Weld => "Weld",
+        Friction => "Friction",
+        Gear => "Gear",
+        Wheel => "Wheel",
+        Rope => "Rope",
+        Motor => "Motor",
+        Unsupported => "Unsupported",
+    }
+}
 
 /// What a field holds (its value class), and where it is in the record.
 #[derive(Clone, Copy)]

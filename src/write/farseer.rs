@@ -10,6 +10,7 @@ use super::numbers::{integer_text, push_float};
 use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
 use crate::resolve::local_axis;
+use crate::scene::joints::{self, Element, Value};
 use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, Object, Place};
 use crate::scene::{Scene, Shape, ShapeKind, Vec2};
 
@@ -526,6 +527,16 @@ impl FarseerWriter<'_> {
         self.vector("Axis", world);
     }
 
+    /// An element of the joint table, from the field it fills in `joint`.
+    fn field(&mut self, name: &str, value: Value, joint: &mut Joint) {
+        match value {
+            Value::Vector(at) => self.vector(name, *at(joint)),
+            Value::Float(at) | Value::NonNegative(at) => self.number(name, *at(joint)),
+            Value::Flag(at) => self.flag(name, *at(joint)),
+            Value::JointIndex(at) => self.integer(name, *at(joint)),
+        }
+    }
+
     fn joint(&mut self, index: usize, joint: &Joint) {
         let kept = self.scene.beyond.of(Object::Joint(index as u32));
         if let Some(whole) = kept.iter().find(|k| k.place == Place::Whole) {
@@ -540,7 +551,7 @@ impl FarseerWriter<'_> {
             Line if self.target.is_3_3() => "Line",
             Line | Wheel if !self.target.is_3_3() => "Wheel",
             Wheel => "Line",
-            _ => joint_type_name(kind),
+            _ => joints::type_name(kind),
         };
         for piece in ["    <Joint Type=\"", ty, "\">"] {
             self.out.push_str(piece);
@@ -554,104 +565,120 @@ impl FarseerWriter<'_> {
         }
         self.user_data(joint.user_data);
         self.out.push_str("\n      ");
-        let anchors = |w: &mut Self| {
-            w.vector("LocalAnchorA", joint.local_anchor_a);
-            w.vector("LocalAnchorB", joint.local_anchor_b);
-        };
-        match kind {
-            Revolute => {
-                self.flag("EnableLimit", joint.enable_limit);
-                self.flag("EnableMotor", joint.enable_motor);
-                anchors(self);
-                self.number("LowerAngle", joint.lower_limit);
-                self.number("MaxMotorTorque", joint.max_motor_torque);
-                self.number("MotorSpeed", joint.motor_speed);
-                self.number("ReferenceAngle", joint.reference_angle);
-                self.number("UpperAngle", joint.upper_limit);
+        let mut fields = *joint;
+        for &part in parts(kind, self.target) {
+            match part {
+                Part::Element(name, value) => self.field(name, value, &mut fields),
+                Part::Axis(local_name) => self.axis(index, joint, local_name),
+                Part::Constant => {
+                    self.number("Constant", joint.length_a + joint.ratio * joint.length_b)
+                }
             }
-            Prismatic => {
-                self.flag("EnableLimit", joint.enable_limit);
-                self.flag("EnableMotor", joint.enable_motor);
-                anchors(self);
-                self.axis(index, joint, "LocalXAxis1");
-                self.number("LowerTranslation", joint.lower_limit);
-                self.number("UpperTranslation", joint.upper_limit);
-                self.number("MaxMotorForce", joint.max_motor_force);
-                self.number("MotorSpeed", joint.motor_speed);
-                self.number("ReferenceAngle", joint.reference_angle);
-            }
-            Distance => {
-                self.number("DampingRatio", joint.damping_ratio);
-                self.number("FrequencyHz", joint.frequency_hz);
-                self.number("Length", joint.length);
-                anchors(self);
-            }
-            Pulley if self.target.is_3_3() => {
-                self.vector("GroundAnchorA", joint.ground_anchor_a);
-                self.vector("GroundAnchorB", joint.ground_anchor_b);
-                self.number("LengthA", joint.length_a);
-                self.number("LengthB", joint.length_b);
-                anchors(self);
-                self.number("MaxLengthA", joint.max_length_a);
-                self.number("MaxLengthB", joint.max_length_b);
-                self.number("Ratio", joint.ratio);
-            }
-            Pulley => {
-                self.vector("WorldAnchorA", joint.ground_anchor_a);
-                self.vector("WorldAnchorB", joint.ground_anchor_b);
-                self.number("LengthA", joint.length_a);
-                self.number("LengthB", joint.length_b);
-                anchors(self);
-                self.number("Ratio", joint.ratio);
-                self.number("Constant", joint.length_a + joint.ratio * joint.length_b);
-            }
-            Line | Wheel => {
-                self.flag("EnableMotor", joint.enable_motor);
-                anchors(self);
-                self.number("MotorSpeed", joint.motor_speed);
-                self.number("DampingRatio", joint.damping_ratio);
-                self.number("MaxMotorTorque", joint.max_motor_torque);
-                self.number("FrequencyHz", joint.frequency_hz);
-                self.axis(index, joint, "LocalXAxis");
-            }
-            Weld => anchors(self),
-            Friction => {
-                anchors(self);
-                self.number("MaxForce", joint.max_force);
-                self.number("MaxTorque", joint.max_torque);
-            }
-            Rope => {
-                anchors(self);
-                self.number("MaxLength", joint.max_length);
-            }
-            Motor => {
-                self.number("AngularOffset", joint.angular_offset);
-                self.vector("LinearOffset", joint.linear_offset);
-                self.number("MaxForce", joint.max_force);
-                self.number("MaxTorque", joint.max_torque);
-                self.number("CorrectionFactor", joint.correction_factor);
-            }
-            Gear | Unsupported => {}
         }
         self.out.push_str("</Joint>\n");
     }
 }
 
-fn joint_type_name(kind: JointKind) -> &'static str {
+/// An element of a joint as the engines' readers read it.
+#[derive(Clone, Copy)]
+enum Part {
+    /// An element of the joint table, by its name, with the field it fills.
+    Element(&'static str, Value),
+    /// The axis of a prismatic or wheel joint: in body A's frame under this name for Farseer
+    /// 3.3.1, as the table's element of that name; for the later ones in world coordinates.
+    Axis(&'static str),
+    /// The pulley's `Constant`, `LengthA + Ratio * LengthB`, which box2scene reads and drops.
+    Constant,
+}
+
+/// The joint table's element `name`, which must fill a field (checked when compiling).
+const fn e(name: &str) -> Part {
+    match joints::named(name) {
+        Some(Element { name, field: Some(field), .. }) => Part::Element(name, field.value),
+        _ => panic!("the joint table has no element of that name that fills a field"),
+    }
+}
+
+const REVOLUTE: &[Part] = &[
+    e("EnableLimit"),
+    e("EnableMotor"),
+    e("LocalAnchorA"),
+    e("LocalAnchorB"),
+    e("LowerAngle"),
+    e("MaxMotorTorque"),
+    e("MotorSpeed"),
+    e("ReferenceAngle"),
+    e("UpperAngle"),
+];
+const PRISMATIC: &[Part] = &[
+    e("EnableLimit"),
+    e("EnableMotor"),
+    e("LocalAnchorA"),
+    e("LocalAnchorB"),
+    Part::Axis("LocalXAxis1"),
+    e("LowerTranslation"),
+    e("UpperTranslation"),
+    e("MaxMotorForce"),
+    e("MotorSpeed"),
+    e("ReferenceAngle"),
+];
+const DISTANCE: &[Part] =
+    &[e("DampingRatio"), e("FrequencyHz"), e("Length"), e("LocalAnchorA"), e("LocalAnchorB")];
+const PULLEY_3_3: &[Part] = &[
+    e("GroundAnchorA"),
+    e("GroundAnchorB"),
+    e("LengthA"),
+    e("LengthB"),
+    e("LocalAnchorA"),
+    e("LocalAnchorB"),
+    e("MaxLengthA"),
+    e("MaxLengthB"),
+    e("Ratio"),
+];
+const PULLEY: &[Part] = &[
+    e("WorldAnchorA"),
+    e("WorldAnchorB"),
+    e("LengthA"),
+    e("LengthB"),
+    e("LocalAnchorA"),
+    e("LocalAnchorB"),
+    e("Ratio"),
+    Part::Constant,
+];
+/// A wheel joint, and a line joint, which these readers know only as a wheel joint.
+const WHEEL: &[Part] = &[
+    e("EnableMotor"),
+    e("LocalAnchorA"),
+    e("LocalAnchorB"),
+    e("MotorSpeed"),
+    e("DampingRatio"),
+    e("MaxMotorTorque"),
+    e("FrequencyHz"),
+    Part::Axis("LocalXAxis"),
+];
+const WELD: &[Part] = &[e("LocalAnchorA"), e("LocalAnchorB")];
+const FRICTION: &[Part] = &[e("LocalAnchorA"), e("LocalAnchorB"), e("MaxForce"), e("MaxTorque")];
+const ROPE: &[Part] = &[e("LocalAnchorA"), e("LocalAnchorB"), e("MaxLength")];
+const MOTOR: &[Part] =
+    &[e("AngularOffset"), e("LinearOffset"), e("MaxForce"), e("MaxTorque"), e("CorrectionFactor")];
+
+/// The elements of a joint of `kind` after the common ones, in the order `target` reads
+/// them. A gear joint is never written (no target holds one), nor one of the unsupported
+/// kind (its kept text is).
+fn parts(kind: JointKind, target: Target) -> &'static [Part] {
     use JointKind::*;
     match kind {
-        Revolute => "Revolute",
-        Prismatic => "Prismatic",
-        Distance => "Distance",
-        Pulley => "Pulley",
-        Line => "Line",
-        Weld => "Weld",
-        Friction => "Friction",
-        Gear => "Gear",
-        Wheel => "Wheel",
-        Rope => "Rope",
-        Motor => "Motor",
-        Unsupported => "Unsupported",
+        Revolute => REVOLUTE,
+        Prismatic => PRISMATIC,
+        Distance => DISTANCE,
+        Pulley if target.is_3_3() => PULLEY_3_3,
+        Pulley => PULLEY,
+        Line | Wheel => WHEEL,
+        Weld => WELD,
+        Friction => FRICTION,
+        Rope => ROPE,
+        Motor => MOTOR,
+        Gear | Unsupported => &[],
     }
 }
 
@@ -676,4 +703,24 @@ fn world_axis(local: Vec2, angle: f32) -> Vec2 {
         }
     }
     rounded
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_element_written_for_a_kind_is_one_that_kind_reads() {
+        let kinds = (0..).map_while(|n| JointKind::try_from(n).ok());
+        for (kind, dialect) in kinds.flat_map(|k| Dialect::ALL.map(|d| (k, d))) {
+            for part in parts(kind, Target::of(dialect)) {
+                let name = match *part {
+                    Part::Element(name, _) | Part::Axis(name) => name,
+                    Part::Constant => "Constant",
+                };
+                let element = joints::named(name).expect("an element of the table");
+                assert!(element.read_by.contains(kind), "{name} in {kind:?}");
+            }
+        }
+    }
 }

@@ -1,8 +1,6 @@
 //! box2scene's own dialect: the document, each record's elements (defaults left out unless
 //! every field is asked for), and the kept text put back in its places.
 
-use std::fmt::Write as _;
-
 use super::numbers::{integer_text, push_float};
 use crate::containers::Container;
 use crate::holds::escaped;
@@ -436,9 +434,7 @@ impl<'s> Writer<'s> {
     fn joint(&mut self, joint: &Joint) {
         let kind = joint.kind().unwrap_or(JointKind::Revolute);
         let d = Joint::new(kind);
-        self.open_with("Joint", |out| {
-            let _ = write!(out, " Type=\"{kind:?}\"");
-        });
+        self.open_typed("Joint", "Type", joints::type_name(kind));
         self.name(joint.name);
         self.integer("BodyA", joint.body_a);
         self.integer("BodyB", joint.body_b);

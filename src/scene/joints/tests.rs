@@ -45,6 +45,13 @@ fn every_kind_is_in_every_kind_and_no_other() {
 }
 
 #[test]
+fn type_names_are_the_kind_names_capitalised() {
+    for kind in kinds() {
+        assert_eq!(type_name(kind).to_ascii_lowercase(), kind.name());
+    }
+}
+
+#[test]
 fn each_element_is_in_the_table_once() {
     for (i, element) in ELEMENTS.iter().enumerate() {
         let first = ELEMENTS.iter().position(|e| e.name == element.name);
