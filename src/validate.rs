@@ -5,6 +5,7 @@
 
 use crate::arena::Arena;
 use crate::error::{Code, Finding, Parsed, problem};
+use crate::scene::joints;
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Vec2};
 
 /// Box2D's `b2_maxPolygonVertices`.
@@ -244,7 +245,7 @@ pub(crate) fn joint(joint: &Joint, at: usize, body_b_at: usize) -> Parsed<()> {
             ),
         ));
     }
-    let has_axis = matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel));
+    let has_axis = kind.is_some_and(|kind| joints::AXIAL.contains(kind));
     if has_axis && joint.local_axis_a == Vec2::ZERO {
         return Err(problem(
             Code::ZeroAxis,
