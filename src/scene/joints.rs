@@ -42,6 +42,9 @@ const fn of(kinds: &[JointKind]) -> Kinds {
     Kinds::of(kinds)
 }
 
+/// How many kinds there are (the values 0 to 11).
+const KIND_COUNT: usize = Unsupported as usize + 1;
+
 /// Every kind.
 const EVERY_KIND: Kinds = of(&[
     Revolute,
@@ -318,6 +321,32 @@ pub(crate) static ELEMENTS: [Element; 43] = [
     dropped("TargetAngle", FARSEER_ONLY),
     dropped("MinLength", FARSEER_ONLY),
 ];
+
+/// The rows box2scene's own writer writes for a joint of `kind`, in the table's order.
+pub(crate) fn written(kind: JointKind) -> &'static [&'static Element] {
+    let (count, rows) = &WRITTEN[kind as usize];
+    &rows[..*count]
+}
+
+/// For each kind, by its value, how many rows the own writer writes for it and which: the
+/// writer then looks at those alone.
+static WRITTEN: [(usize, [&Element; ELEMENTS.len()]); KIND_COUNT] = {
+    let mut written = [(0, [&ELEMENTS[0]; ELEMENTS.len()]); KIND_COUNT];
+    let mut e = 0;
+    while e < ELEMENTS.len() {
+        let mut k = 0;
+        while k < KIND_COUNT {
+            if ELEMENTS[e].written_for.0 & (1 << k) != 0 {
+                let (count, rows) = &mut written[k];
+                rows[*count] = &ELEMENTS[e];
+                *count += 1;
+            }
+            k += 1;
+        }
+        e += 1;
+    }
+    written
+};
 
 /// The row named `name` (exactly), when the table has one: for tables made when compiling.
 pub(crate) const fn named(name: &str) -> Option<&'static Element> {

@@ -434,15 +434,19 @@ impl<'s> Writer<'s> {
     fn joint(&mut self, joint: &Joint) {
         let kind = joint.kind().unwrap_or(JointKind::Revolute);
         let d = Joint::new(kind);
-        self.open_typed("Joint", "Type", joints::type_name(kind));
+        self.open_with("Joint", |out| {
+            for piece in [" Type=\"", joints::type_name(kind), "\""] {
+                out.push_str(piece);
+            }
+        });
         self.name(joint.name);
         self.integer("BodyA", joint.body_a);
         self.integer("BodyB", joint.body_b);
         self.flag("CollideConnected", joint.collide_connected, d.collide_connected);
         let (mut given, mut default) = (*joint, d);
-        for element in &joints::ELEMENTS {
+        for element in joints::written(kind) {
             let Some(field) = element.field else { continue };
-            if !element.written_for.contains(kind) || element.lowest_version(kind) > self.version {
+            if element.lowest_version(kind) > self.version {
                 continue;
             }
             let name = element.name;

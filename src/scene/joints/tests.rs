@@ -35,7 +35,7 @@ fn is_marked(joint: &mut Joint, value: Value) -> bool {
 
 #[test]
 fn every_kind_is_in_every_kind_and_no_other() {
-    assert_eq!(kinds().count(), 12);
+    assert_eq!(kinds().count(), KIND_COUNT);
     let mut all = Kinds::EMPTY;
     for kind in kinds() {
         assert!(EVERY_KIND.contains(kind), "{kind:?}");
@@ -76,6 +76,16 @@ fn what_is_written_is_read_back_and_fills_a_field() {
                 assert!(!VERSION_2_KINDS.contains(kind), "{name} in {kind:?}");
             }
         }
+    }
+}
+
+#[test]
+fn the_rows_written_for_a_kind_are_those_that_say_so_in_order() {
+    for kind in kinds() {
+        let expected: Vec<&str> =
+            ELEMENTS.iter().filter(|e| e.written_for.contains(kind)).map(|e| e.name).collect();
+        let written: Vec<&str> = written(kind).iter().map(|e| e.name).collect();
+        assert_eq!(written, expected, "{kind:?}");
     }
 }
 
