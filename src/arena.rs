@@ -1,7 +1,7 @@
 //! What a load builds as it reads: the scene's records and pools, where each object was
 //! written (for the checks that need the whole file), and the warnings found (and, in a
 //! load that goes on past errors, the errors). It only builds; the reader fills it, and
-//! resolve and validate finish it.
+//! the check stage finishes it.
 #![forbid(unsafe_code)]
 
 use crate::error::{Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem};

@@ -15,10 +15,10 @@ use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
+use crate::rules;
 use crate::scene::{Body, Fixture, Joint, JointKind, NONE, PoolStr, Range, Scene, SceneBuilder};
 use crate::scene::{Shape, ShapeKind, Str, UserDataText, Vec2};
 use crate::text::trim_xml;
-use crate::validate;
 
 /// A scene under construction. Objects refer to objects added before them.
 #[derive(Default)]
@@ -53,7 +53,7 @@ impl Builder {
     /// The gravity, or none (the host decides).
     pub fn set_gravity(&mut self, gravity: Option<Vec2>) -> Result<(), Error> {
         if let Some(g) = gravity {
-            validate::finite("Gravity", &[g.x, g.y]).map_err(|e| refused("world", 0, &e))?;
+            rules::finite("Gravity", &[g.x, g.y]).map_err(|e| refused("world", 0, &e))?;
         }
         self.scene.gravity = gravity;
         Ok(())
@@ -142,25 +142,25 @@ impl Builder {
             problem(Code::InvalidArgument, 0, format!("unknown shape kind {}", shape.kind))
         })?;
         let points: Vec<f32> = vertices.iter().flat_map(|v| [v.x, v.y]).collect();
-        validate::finite("Vertex", &points)?;
+        rules::finite("Vertex", &points)?;
         let mut canonical = Shape::new(kind);
         let geometry = match kind {
             ShapeKind::Circle => {
-                validate::finite("Radius", &[shape.radius])?;
-                validate::finite("Position", &[shape.position.x, shape.position.y])?;
+                rules::finite("Radius", &[shape.radius])?;
+                rules::finite("Position", &[shape.position.x, shape.position.y])?;
                 (canonical.radius, canonical.position) = (shape.radius, shape.position);
                 if !vertices.is_empty() {
                     return Err(problem(Code::BadVertexCount, 0, "a circle has no vertices"));
                 }
-                validate::circle(shape.radius, 0)?;
+                rules::circle(shape.radius, 0)?;
                 None
             }
             ShapeKind::Polygon => {
                 if shape.centroid_given {
-                    validate::finite("Centroid", &[shape.centroid.x, shape.centroid.y])?;
+                    rules::finite("Centroid", &[shape.centroid.x, shape.centroid.y])?;
                     (canonical.centroid, canonical.centroid_given) = (shape.centroid, true);
                 }
-                validate::polygon(vertices, 0)?
+                rules::polygon(vertices, 0)?
             }
             ShapeKind::Edge | ShapeKind::Chain => {
                 let ghosts = [
@@ -169,7 +169,7 @@ impl Builder {
                     shape.next_vertex.x,
                     shape.next_vertex.y,
                 ];
-                validate::finite("Vertex0", &ghosts)?;
+                rules::finite("Vertex0", &ghosts)?;
                 canonical.prev_vertex = shape.prev_vertex;
                 canonical.next_vertex = shape.next_vertex;
                 canonical.has_prev_vertex = shape.has_prev_vertex;
@@ -182,7 +182,7 @@ impl Builder {
                             format!("an edge has 2 vertices, not {}", vertices.len()),
                         ));
                     }
-                    ShapeKind::Edge => validate::edge(vertices, 0)?,
+                    ShapeKind::Edge => rules::edge(vertices, 0)?,
                     _ => {
                         let most = LoadOptions::default().max_chain_vertices as usize;
                         if vertices.len() > most {
@@ -193,7 +193,7 @@ impl Builder {
                             ));
                         }
                         canonical.is_loop = shape.is_loop;
-                        validate::chain(vertices, shape.is_loop, 0)?
+                        rules::chain(vertices, shape.is_loop, 0)?
                     }
                 }
             }
@@ -221,8 +221,8 @@ impl Builder {
         for (name, value) in
             [("Density", f.density), ("Friction", f.friction), ("Restitution", f.restitution)]
         {
-            validate::finite(name, &[value])?;
-            validate::not_negative(format_args!("<{name}>"), value, 0)?;
+            rules::finite(name, &[value])?;
+            rules::not_negative(format_args!("<{name}>"), value, 0)?;
         }
         self.user_data_reference(f.user_data)
     }
@@ -245,7 +245,7 @@ impl Builder {
         let canonical = Body { name: Str::NULL, fixtures, ..canonical };
         self.scene.push_body(canonical, name);
         if let Some(message) =
-            validate::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)
+            rules::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)
         {
             self.warn("body", index, Code::DynamicBodyZeroDensity, &message);
         }
@@ -269,22 +269,22 @@ impl Builder {
             ("InertiaScale", b.inertia_scale),
         ];
         for (name, value) in floats {
-            validate::finite(name, &[value])?;
+            rules::finite(name, &[value])?;
         }
         let mut mass = Body::new(kind).mass_data;
         let m = b.mass_data;
         if m.mass_given {
-            validate::finite("Mass", &[m.mass])?;
-            validate::not_negative("<Mass>", m.mass, 0)?;
+            rules::finite("Mass", &[m.mass])?;
+            rules::not_negative("<Mass>", m.mass, 0)?;
             (mass.mass, mass.mass_given) = (m.mass, true);
         }
         if m.center_given {
-            validate::finite("Center", &[m.center.x, m.center.y])?;
+            rules::finite("Center", &[m.center.x, m.center.y])?;
             (mass.center, mass.center_given) = (m.center, true);
         }
         if m.inertia_given {
-            validate::finite("Inertia", &[m.inertia])?;
-            validate::not_negative("<Inertia>", m.inertia, 0)?;
+            rules::finite("Inertia", &[m.inertia])?;
+            rules::not_negative("<Inertia>", m.inertia, 0)?;
             (mass.inertia, mass.inertia_given) = (m.inertia, true);
         }
         for &id in fixtures {
@@ -317,7 +317,7 @@ impl Builder {
         let canonical = canonical_joint(joint)?;
         reference(canonical.body_a, self.scene.bodies.len(), "bodies", "body")?;
         reference(canonical.body_b, self.scene.bodies.len(), "bodies", "body")?;
-        validate::joint(&canonical, 0, 0)?;
+        rules::joint(&canonical, 0, 0)?;
         if canonical.kind() == Some(JointKind::Gear) {
             for target in [canonical.joint_a, canonical.joint_b] {
                 let kind = self.scene.joints.get(target as usize).and_then(Joint::kind);

@@ -19,6 +19,7 @@
 mod arena;
 mod builder;
 mod bytes;
+mod check;
 #[doc(hidden)]
 mod containers;
 pub mod draw;
@@ -33,10 +34,9 @@ mod options;
 mod output;
 mod parse;
 mod place;
-mod resolve;
+mod rules;
 pub mod scene;
 mod text;
-mod validate;
 mod write;
 
 use std::fs::File;

@@ -1,6 +1,6 @@
 //! A load, stage by stage: the input becomes text, the reader fills an arena with it (its
-//! findings placed at their lines and columns as it goes), resolve normalises the dialects
-//! and checks every reference, validate applies the rules that need the whole scene, and
+//! findings placed at their lines and columns as it goes), the check stage normalises the
+//! dialects, checks every reference and applies the rules that need the whole scene, and
 //! the arena is frozen into the scene.
 #![forbid(unsafe_code)]
 
@@ -11,9 +11,9 @@ use std::path::Path;
 use crate::error::{Error, Finding};
 use crate::input::Source;
 use crate::options::LoadOptions;
+use crate::parse;
 use crate::place::Placer;
 use crate::scene::Scene;
-use crate::{parse, resolve, validate};
 
 /// Loads a scene from the bytes of a file.
 pub fn load(bytes: &[u8], options: &LoadOptions) -> Result<Scene, Error> {
@@ -115,11 +115,7 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
         Ok(arena) => arena,
         Err(stopped) => return failed(stopped.errors, stopped.warnings, &placer),
     };
-    let checked = resolve::resolve(&mut arena).and_then(|()| match arena.has_errors() {
-        true => Ok(()),
-        false => validate::dynamic_bodies_without_mass(&mut arena)
-            .and_then(|()| validate::joints_start_satisfied(&mut arena)),
-    });
+    let checked = crate::check::run(&mut arena);
     let mut errors = arena.take_errors();
     errors.extend(checked.err().map(|problem| *problem));
     let mut warnings = arena.take_warnings();

@@ -4,9 +4,9 @@
 use super::{Element as _, Reader, Reading, Seen, Tag, elements};
 use crate::arena::JointOrigin;
 use crate::error::{Code, Parsed, Problem, problem};
+use crate::rules;
 use crate::scene::joints::{self, Element, Slot, Value};
 use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
-use crate::validate;
 
 elements! {
     enum JointChild {
@@ -99,7 +99,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
         ..Joint::new(kind)
     };
     let mut source = *given;
-    let finite = |name: &str, v: f32| validate::finite(name, &[v]).map(|()| v);
+    let finite = |name: &str, v: f32| rules::finite(name, &[v]).map(|()| v);
     for element in &joints::ELEMENTS {
         let name = element.name;
         let Some(Slot::Fills(value)) = element.slot(kind) else { continue };
@@ -111,7 +111,7 @@ pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
             Value::Float(field) => *field(&mut joint) = finite(name, *field(&mut source))?,
             Value::NonNegative(field) => {
                 let v = finite(name, *field(&mut source))?;
-                *field(&mut joint) = validate::not_negative(format_args!("<{name}>"), v, 0)?;
+                *field(&mut joint) = rules::not_negative(format_args!("<{name}>"), v, 0)?;
             }
             Value::Flag(field) => *field(&mut joint) = *field(&mut source),
             Value::JointIndex(field) => *field(&mut joint) = *field(&mut source),
@@ -321,7 +321,7 @@ impl<'a> Reader<'a> {
                 }
             }
         }
-        self.recovered(validate::joint(joint, tag.at, at.body_b), ())
+        self.recovered(rules::joint(joint, tag.at, at.body_b), ())
     }
 }
 

@@ -26,9 +26,9 @@ use crate::error::{Code, Finding, Parsed, Problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::place::{Placer, Spot};
+use crate::rules;
 use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
 use crate::text::{self, trim_xml};
-use crate::validate;
 use tokenizer::{Attr, Node, Reading, Tag, Text, Tokenizer, verbatim};
 
 /// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
@@ -196,7 +196,7 @@ impl<'a> Reader<'a> {
     /// A float that must not be negative (error `negative-value`).
     pub fn non_negative(&mut self, tag: &Tag) -> Reading<f32> {
         let (v, at) = self.value(tag, text::float)?;
-        let checked = validate::not_negative(format_args!("<{}>", tag.name), v, at);
+        let checked = rules::not_negative(format_args!("<{}>", tag.name), v, at);
         self.recovered(checked, 0.0)
     }
 

@@ -2,8 +2,8 @@
 
 use super::{Element, Reader, Reading, Seen, Tag, elements};
 use crate::error::{Code, problem};
+use crate::rules;
 use crate::scene::{Object, PoolStr, Range, Shape, ShapeKind, Vec2};
-use crate::validate;
 
 elements! {
     enum ShapeChild {
@@ -98,7 +98,7 @@ impl<'a> Reader<'a> {
                             .missing(tag, &format!("<{}> (a Circle needs one)", needed.name())));
                     }
                 }
-                self.recovered(validate::circle(shape.radius, radius_at), ())?;
+                self.recovered(rules::circle(shape.radius, radius_at), ())?;
             }
             ShapeKind::Edge => {
                 for needed in [ShapeChild::Vertex1, ShapeChild::Vertex2] {
@@ -146,7 +146,7 @@ impl<'a> Reader<'a> {
                     let checked = self
                         .tok
                         .attribute(tag, attr, crate::text::float)
-                        .and_then(|(d, at)| validate::not_negative("the shape's Density", d, at));
+                        .and_then(|(d, at)| rules::not_negative("the shape's Density", d, at));
                     self.recovered(checked, 0.0)?
                 }
                 None => 0.0,
@@ -191,7 +191,7 @@ impl<'a> Reader<'a> {
     fn vertices(&mut self, tag: &Tag, kind: ShapeKind) -> Reading<Range> {
         let first = self.arena.scene.vertices.len();
         let most = match kind {
-            ShapeKind::Polygon => validate::MAX_POLYGON_VERTICES,
+            ShapeKind::Polygon => rules::MAX_POLYGON_VERTICES,
             _ => self.tok.options().max_chain_vertices as usize,
         };
         self.items(tag, "Vertex", |p, vertex| {
@@ -215,9 +215,9 @@ impl<'a> Reader<'a> {
     fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Reading<()> {
         let vertices = &self.arena.scene.vertices[shape.vertices.indices()];
         let checked = match shape.kind() {
-            Some(ShapeKind::Polygon) => validate::polygon(vertices, tag.at),
-            Some(ShapeKind::Edge) => validate::edge(vertices, tag.at),
-            Some(ShapeKind::Chain) => validate::chain(vertices, shape.is_loop, tag.at),
+            Some(ShapeKind::Polygon) => rules::polygon(vertices, tag.at),
+            Some(ShapeKind::Edge) => rules::edge(vertices, tag.at),
+            Some(ShapeKind::Chain) => rules::chain(vertices, shape.is_loop, tag.at),
             _ => Ok(None),
         };
         let warning = self.recovered(checked, None)?;

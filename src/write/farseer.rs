@@ -9,7 +9,7 @@
 use super::numbers::{integer_text, push_float};
 use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
-use crate::resolve::local_axis;
+use crate::rules::local_axis;
 use crate::scene::joints::{self, Element, Value};
 use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, Object, Place};
 use crate::scene::{Scene, Shape, ShapeKind, Vec2};

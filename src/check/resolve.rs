@@ -9,8 +9,8 @@ use crate::arena::Arena;
 use crate::containers::Container;
 use crate::error::{Code, Parsed, Problem};
 use crate::place::Spot;
+use crate::rules;
 use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
-use crate::validate;
 
 /// Normalises the dialects and checks every reference. A load that goes on past errors
 /// records every reference that names nothing, and stops there if it found any error.
@@ -60,7 +60,7 @@ fn farseer_chains(p: &mut Arena) {
         let vertices = &scene.vertices[shape.vertices.indices()];
         let closed = vertices.len() > 3 && vertices.first() == vertices.last();
         let distinct = &vertices[..vertices.len() - usize::from(closed)];
-        if closed && validate::chain(distinct, true, 0).is_ok() {
+        if closed && rules::chain(distinct, true, 0).is_ok() {
             shape.is_loop = true;
             shape.vertices.count -= 1;
             (shape.prev_vertex, shape.next_vertex) = (Vec2::ZERO, Vec2::ZERO);
@@ -79,15 +79,9 @@ fn world_axes(p: &mut Arena) {
     for &(joint, world) in &p.origins.world_axes {
         let joint = &mut scene.joints[joint as usize];
         let angle = scene.bodies[joint.body_a as usize].angle;
-        joint.local_axis_a = local_axis(world, angle);
+        joint.local_axis_a = rules::local_axis(world, angle);
     }
     scene.world_axes = std::mem::take(&mut p.origins.world_axes);
-}
-
-/// `world` in the frame of a body turned by `angle`.
-pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
-    let (sin, cos) = (f64::from(angle).sin() as f32, f64::from(angle).cos() as f32);
-    Vec2::new(cos * world.x + sin * world.y, -sin * world.x + cos * world.y)
 }
 
 /// Version 3: each body's `<Pair FixtureId="f" ShapeId="s"/>` becomes a fixture: the f-th

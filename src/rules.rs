@@ -1,9 +1,9 @@
-//! The semantic rules of the spec that need more than one value: shape geometry (checked
-//! when a shape is complete) and the rules about a body's fixtures (checked once the
-//! references are resolved).
+//! The rules of values and geometry, a library the reader, the builder and the checks of
+//! a whole scene share, not a stage: values that must be finite or not negative, shape
+//! geometry (checked when a shape is complete), a joint's own fields, a dynamic body's
+//! fixtures, and a world axis turned into a body's frame.
 #![forbid(unsafe_code)]
 
-use crate::arena::Arena;
 use crate::error::{Code, Finding, Parsed, problem};
 use crate::scene::joints;
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Vec2};
@@ -281,132 +281,10 @@ pub(crate) fn zero_density(
     ))
 }
 
-/// Warns about every dynamic body that breaks the [`zero_density`] rule.
-pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
-    let s = &arena.scene;
-    let found: Vec<Finding> = (s.bodies.iter().zip(arena.origins.bodies.iter()).enumerate())
-        .filter_map(|(i, (b, at))| {
-            let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
-            let message = format!("dynamic body {i} {why}");
-            Some(at.finding(Code::DynamicBodyZeroDensity, message))
-        })
-        .collect();
-    for warning in found {
-        arena.note(warning)?;
-    }
-    Ok(())
-}
-
-/// Box2D's `b2_angularSlop` (rad): 2 degrees.
-const ANGULAR_SLOP: f64 = 2.0 / 180.0 * std::f64::consts::PI;
-
-/// A body's place as the file gives it: where a point of its frame lies in the world.
-struct Frame {
-    position: (f64, f64),
-    angle: f64,
-}
-
-impl Frame {
-    fn of(body: &Body) -> Frame {
-        Frame { position: wide(body.position), angle: body.angle.into() }
-    }
-
-    fn rotated(&self, v: Vec2) -> (f64, f64) {
-        let (x, y) = wide(v);
-        let (s, c) = self.angle.sin_cos();
-        (c * x - s * y, s * x + c * y)
-    }
-
-    fn point(&self, local: Vec2) -> (f64, f64) {
-        let (x, y) = self.rotated(local);
-        (self.position.0 + x, self.position.1 + y)
-    }
-}
-
-fn wide(v: Vec2) -> (f64, f64) {
-    (v.x.into(), v.y.into())
-}
-
-fn distance(a: (f64, f64), b: (f64, f64)) -> f64 {
-    (b.0 - a.0).hypot(b.1 - a.1)
-}
-
-/// How far `value` lies outside [lower, upper].
-fn outside(value: f64, lower: f32, upper: f32) -> f64 {
-    (f64::from(lower) - value).max(value - f64::from(upper)).max(0.0)
-}
-
-/// How far a joint is from satisfied as the file places its bodies: metres along the
-/// constraint its kind holds rigidly, and radians. Springs, motors, friction and gears hold
-/// nothing in place as they start.
-fn violation(j: &Joint, a: &Body, b: &Body) -> (f64, f64) {
-    let (fa, fb) = (Frame::of(a), Frame::of(b));
-    let (pa, pb) = (fa.point(j.local_anchor_a), fb.point(j.local_anchor_b));
-    let relative = fb.angle - fa.angle - f64::from(j.reference_angle);
-    let limited = |value: f64| {
-        if j.enable_limit { outside(value, j.lower_limit, j.upper_limit) } else { 0.0 }
-    };
-    let along_axis = || {
-        let (ax, ay) = fa.rotated(j.local_axis_a);
-        let norm = ax.hypot(ay);
-        let (dx, dy) = (pb.0 - pa.0, pb.1 - pa.1);
-        ((ax * dy - ay * dx).abs() / norm, (ax * dx + ay * dy) / norm)
-    };
-    match j.kind() {
-        Some(JointKind::Revolute) => (distance(pa, pb), limited(relative)),
-        Some(JointKind::Weld) if j.frequency_hz == 0.0 => (distance(pa, pb), relative.abs()),
-        Some(JointKind::Weld) => (distance(pa, pb), 0.0),
-        Some(JointKind::Prismatic) => {
-            let (across, along) = along_axis();
-            (across.max(limited(along)), relative.abs())
-        }
-        Some(JointKind::Line) => {
-            let (across, along) = along_axis();
-            (across.max(limited(along)), 0.0)
-        }
-        Some(JointKind::Wheel) => (along_axis().0, 0.0),
-        Some(JointKind::Distance) if j.frequency_hz == 0.0 => {
-            ((distance(pa, pb) - f64::from(j.length)).abs(), 0.0)
-        }
-        Some(JointKind::Rope) => ((distance(pa, pb) - f64::from(j.max_length)).max(0.0), 0.0),
-        Some(JointKind::Pulley) => {
-            let now = distance(wide(j.ground_anchor_a), pa)
-                + f64::from(j.ratio) * distance(wide(j.ground_anchor_b), pb);
-            let length = f64::from(j.length_a) + f64::from(j.ratio) * f64::from(j.length_b);
-            ((now - length).abs(), 0.0)
-        }
-        _ => (0.0, 0.0),
-    }
-}
-
-/// Warns about every joint that starts further from satisfied than Box2D's slop: the level
-/// is wrong before any engine sees it, and an engine may tear it apart in its first steps.
-pub(crate) fn joints_start_satisfied(arena: &mut Arena) -> Parsed<()> {
-    let s = &arena.scene;
-    let found: Vec<Finding> = (s.joints.iter().zip(arena.origins.joints.iter()).enumerate())
-        .filter_map(|(i, (j, at))| {
-            let (a, b) = (s.bodies.get(j.body_a as usize)?, s.bodies.get(j.body_b as usize)?);
-            let (metres, radians) = violation(j, a, b);
-            let linear = metres > f64::from(LINEAR_SLOP);
-            let angular = radians > ANGULAR_SLOP;
-            let how = match (linear, angular) {
-                (false, false) => return None,
-                (true, false) => format!("{metres:.3} m"),
-                (false, true) => format!("{radians:.3} rad"),
-                (true, true) => format!("{metres:.3} m and {radians:.3} rad"),
-            };
-            let message = format!(
-                "joint {i} starts {how} from satisfied where the file places bodies {} and {}; \
-                 an engine pulls them together in its first steps",
-                j.body_a, j.body_b
-            );
-            Some(at.body_a.finding(Code::JointStartsViolated, message))
-        })
-        .collect();
-    for warning in found {
-        arena.note(warning)?;
-    }
-    Ok(())
+/// `world` in the frame of a body turned by `angle`.
+pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
+    let (sin, cos) = (f64::from(angle).sin() as f32, f64::from(angle).cos() as f32);
+    Vec2::new(cos * world.x + sin * world.y, -sin * world.x + cos * world.y)
 }
 
 #[cfg(test)]
