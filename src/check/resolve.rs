@@ -92,7 +92,10 @@ fn world_axes(p: &mut Arena) {
 /// by the bodies that bind it; else the fixtures come in the order of the Pairs.
 fn normalise_farseer_layout(p: &mut Arena) -> Parsed<()> {
     let templates = std::mem::take(&mut p.scene.fixtures);
-    let template_names = std::mem::take(&mut p.scene.names.fixtures);
+    let mut template_names = vec![None; templates.len()];
+    for (index, name) in std::mem::take(&mut p.scene.names.fixtures) {
+        template_names[index as usize] = Some(name);
+    }
     // The templates' own (absent) shapes are replaced by the pairs'.
     p.origins.fixture_shapes.clear();
     let mut shape_of: Vec<Option<u32>> = vec![None; templates.len()];

@@ -33,14 +33,34 @@ pub(crate) struct UserDataText {
     pub value: Option<PoolStr>,
 }
 
-/// The names of the records, while they are built: a column beside each array, as long
-/// as it.
+/// The names of the records, while they are built: beside each array, the records that
+/// have one, by index, in order (most records of a large scene have none, and cost
+/// nothing here).
 #[derive(Debug, Default)]
 pub(crate) struct Names {
-    pub shapes: Vec<Option<PoolStr>>,
-    pub fixtures: Vec<Option<PoolStr>>,
-    pub bodies: Vec<Option<PoolStr>>,
-    pub joints: Vec<Option<PoolStr>>,
+    pub shapes: Vec<(u32, PoolStr)>,
+    pub fixtures: Vec<(u32, PoolStr)>,
+    pub bodies: Vec<(u32, PoolStr)>,
+    pub joints: Vec<(u32, PoolStr)>,
+}
+
+/// Names record `index` `name`, if it has one.
+fn name_at(names: &mut Vec<(u32, PoolStr)>, index: usize, name: Option<PoolStr>) {
+    if let Some(name) = name {
+        names.push((index as u32, name));
+    }
+}
+
+/// Points each named record at its name.
+fn set_names<R>(
+    records: &mut [R],
+    names: Vec<(u32, PoolStr)>,
+    at: impl Fn(PoolStr) -> Str,
+    field: fn(&mut R) -> &mut Str,
+) {
+    for (index, name) in names {
+        *field(&mut records[index as usize]) = at(name);
+    }
 }
 
 /// A scene under construction: the same arrays, their strings (NULL in the records) in
@@ -88,26 +108,26 @@ impl SceneBuilder {
 
     pub fn push_shape(&mut self, shape: Shape, name: Option<PoolStr>) {
         debug_assert!(shape.name.is_null());
+        name_at(&mut self.names.shapes, self.shapes.len(), name);
         self.shapes.push(shape);
-        self.names.shapes.push(name);
     }
 
     pub fn push_fixture(&mut self, fixture: Fixture, name: Option<PoolStr>) {
         debug_assert!(fixture.name.is_null());
+        name_at(&mut self.names.fixtures, self.fixtures.len(), name);
         self.fixtures.push(fixture);
-        self.names.fixtures.push(name);
     }
 
     pub fn push_body(&mut self, body: Body, name: Option<PoolStr>) {
         debug_assert!(body.name.is_null());
+        name_at(&mut self.names.bodies, self.bodies.len(), name);
         self.bodies.push(body);
-        self.names.bodies.push(name);
     }
 
     pub fn push_joint(&mut self, joint: Joint, name: Option<PoolStr>) {
         debug_assert!(joint.name.is_null());
+        name_at(&mut self.names.joints, self.joints.len(), name);
         self.joints.push(joint);
-        self.names.joints.push(name);
     }
 
     /// Adds a warning with `message` (placed at `position`).
@@ -164,6 +184,7 @@ impl SceneBuilder {
         let strings_before = self.strings.len();
         let string = |s: PoolStr| s.shifted(strings_before);
         let name = |s: Option<PoolStr>| s.map(string);
+        let named = |before: u32| move |(i, s): (u32, PoolStr)| (i + before, string(s));
         let before = Objects {
             shapes: self.shapes.len() as u32,
             fixtures: self.fixtures.len() as u32,
@@ -187,10 +208,10 @@ impl SceneBuilder {
             ..b
         }));
         self.joints.extend(joints.into_iter().map(|j| Joint { user_data: user(j.user_data), ..j }));
-        self.names.shapes.extend(names.shapes.into_iter().map(name));
-        self.names.fixtures.extend(names.fixtures.into_iter().map(name));
-        self.names.bodies.extend(names.bodies.into_iter().map(name));
-        self.names.joints.extend(names.joints.into_iter().map(name));
+        self.names.shapes.extend(names.shapes.into_iter().map(named(before.shapes)));
+        self.names.fixtures.extend(names.fixtures.into_iter().map(named(before.fixtures)));
+        self.names.bodies.extend(names.bodies.into_iter().map(named(before.bodies)));
+        self.names.joints.extend(names.joints.into_iter().map(named(before.joints)));
         self.vertices.extend(vertices);
         self.fixture_ids.extend(fixture_ids);
         self.user_data.extend(user_data.into_iter().map(|u| UserDataText {
@@ -226,25 +247,10 @@ impl SceneBuilder {
         let (mut shapes, mut fixtures, mut bodies, mut joints) =
             (self.shapes, self.fixtures, self.bodies, self.joints);
         let names = self.names;
-        debug_assert!(
-            names.shapes.len() == shapes.len()
-                && names.fixtures.len() == fixtures.len()
-                && names.bodies.len() == bodies.len()
-                && names.joints.len() == joints.len(),
-            "a record was pushed without its name"
-        );
-        for (s, name) in shapes.iter_mut().zip(names.shapes) {
-            s.name = named(name);
-        }
-        for (f, name) in fixtures.iter_mut().zip(names.fixtures) {
-            f.name = named(name);
-        }
-        for (b, name) in bodies.iter_mut().zip(names.bodies) {
-            b.name = named(name);
-        }
-        for (j, name) in joints.iter_mut().zip(names.joints) {
-            j.name = named(name);
-        }
+        set_names(&mut shapes, names.shapes, at, |s| &mut s.name);
+        set_names(&mut fixtures, names.fixtures, at, |f| &mut f.name);
+        set_names(&mut bodies, names.bodies, at, |b| &mut b.name);
+        set_names(&mut joints, names.joints, at, |j| &mut j.name);
         let user_data = (self.user_data.into_iter())
             .map(|u| UserData {
                 raw: at(u.raw),
