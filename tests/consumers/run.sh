@@ -281,13 +281,14 @@ check_pkg_config_static() {
 # cargo-c installs as docs/install.md says (cargo cinstall from the source tree) the headers
 # and C files cmake --install installs, and the README's C example builds against that
 # prefix with pkg-config and runs. cargo-c is
-# installed once under the build folder, unoptimised (a build of cargo itself: a few minutes;
-# 0.10.24 is the newest that builds with Rust 1.95).
+# installed once under the build folder, unoptimised and without debug information (a build
+# of cargo itself: a few minutes; 0.10.24 is the newest that builds with Rust 1.95).
 check_cargo_c() {
   : "${CARGO:?}"
   local tools=$BOX2SCENE_BUILD_DIR/tools/cargo-c prefix=$work/cargo-c-prefix folder file cflags
   if [ ! -x "$tools/bin/cargo-cinstall" ]; then
-    CARGO_TARGET_DIR=$BOX2SCENE_BUILD_DIR/tools/cargo-c-build "$CARGO" install cargo-c \
+    CARGO_TARGET_DIR=$BOX2SCENE_BUILD_DIR/tools/cargo-c-build CARGO_PROFILE_DEV_DEBUG=0 \
+      "$CARGO" install cargo-c \
       --version 0.10.24 --locked --debug --root "$tools" >"$work/log" 2>&1 ||
       { cat "$work/log" >&2; fail "cargo-c did not install"; }
   fi
