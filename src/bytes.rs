@@ -1,7 +1,8 @@
 //! The byte finders of the crate, every scan over raw bytes in one place: the characters
 //! XML forbids, XML white space (exactly, for any text; and in one comparison a byte, for
-//! the text a load reads, which holds no other control character), the ends of names, and
-//! the first of a few bytes. Word-at-a-time tricks live here and nowhere else.
+//! the text a load reads, which holds no other control character), the ends of names, the
+//! first of a few bytes, and the masks of a block for the scan stage. Word-at-a-time tricks
+//! and vector instructions live here and nowhere else.
 #![forbid(unsafe_code)]
 
 /// The offset of the first character of `text` outside XML's Char production (the writer
@@ -173,6 +174,38 @@ pub(crate) fn first_equal(word: u64, b: u8) -> u64 {
     const ONES: u64 = u64::from_le_bytes([0x01; 8]);
     let x = word ^ u64::from_le_bytes([b; 8]);
     x.wrapping_sub(ONES) & !x & HIGH_BITS
+}
+
+/// The bytes the scan stage looks at a block at a time.
+pub(crate) const BLOCK: usize = 64;
+
+/// The masks of the bytes of `block` that are each of `sets` (one byte, or either of two):
+/// bit `i` of a mask for byte `i`. The block is loaded once for all of them. With SSE2,
+/// which every x86-64 machine has, sixteen bytes are compared in one instruction; elsewhere a
+/// byte at a time.
+#[inline(always)]
+pub(crate) fn block_masks<const K: usize>(block: &[u8; BLOCK], sets: [[u8; 2]; K]) -> [u64; K] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use safe_arch::{
+            cmp_eq_mask_i8_m128i, load_unaligned_m128i, move_mask_i8_m128i, set_splat_i8_m128i,
+        };
+        let mut masks = [0; K];
+        for (k, sixteen) in block.chunks_exact(16).enumerate() {
+            let Ok(sixteen) = <&[u8; 16]>::try_from(sixteen) else { continue };
+            let v = load_unaligned_m128i(sixteen);
+            for (mask, [a, b]) in masks.iter_mut().zip(sets) {
+                let hits = cmp_eq_mask_i8_m128i(v, set_splat_i8_m128i(a as i8))
+                    | cmp_eq_mask_i8_m128i(v, set_splat_i8_m128i(b as i8));
+                *mask |= u64::from(move_mask_i8_m128i(hits) as u16) << (16 * k);
+            }
+        }
+        masks
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        sets.map(|set| (0..BLOCK).fold(0, |mask, i| mask | u64::from(set.contains(&block[i])) << i))
+    }
 }
 
 #[cfg(test)]

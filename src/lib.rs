@@ -35,6 +35,7 @@ mod output;
 mod parse;
 mod place;
 mod rules;
+mod scan;
 pub mod scene;
 mod text;
 mod write;

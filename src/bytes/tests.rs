@@ -120,3 +120,18 @@ fn space_len_and_trimmed_span_agree_with_xml_white_space() {
         }
     }
 }
+
+/// Every byte value, at every place in a block, is flagged in the masks of the sets that
+/// hold it and in no other.
+#[test]
+fn block_masks_flag_each_byte_of_its_sets() {
+    let sets = [[b'<', b'<'], [b'"', b'\''], [0x80, 0xFF]];
+    for shift in 0..=255u8 {
+        let block: [u8; BLOCK] =
+            std::array::from_fn(|i| (i as u8).wrapping_mul(7).wrapping_add(shift));
+        let expected = sets.map(|set| {
+            (0..BLOCK).filter(|&i| set.contains(&block[i])).fold(0u64, |mask, i| mask | 1 << i)
+        });
+        assert_eq!(block_masks(&block, sets), expected, "shift {shift}");
+    }
+}

@@ -1,19 +1,20 @@
 //! Reading a large file on two threads. The text is cut into pieces at items (a `<Body>`
-//! just after a `</Body>`, say), each assumed to lie directly in its container in
-//! `<World>`. A helper thread reads the pieces from the last one back, each with the
-//! ordinary reader into an arena of its own, from its item up to the next piece's; the
-//! calling thread reads from the start on. Each reading's text ends before the next
-//! piece's item, where the reading stops if it can (see [`Tokenizer::end_before`]). There
-//! the calling thread reads the piece itself while the helper has not begun it, or else
-//! takes what the helper read from there to the end of the file, when it can use all of
-//! it: each of those pieces read without a problem (warnings are fine: they are appended
-//! in the order one reader finds them) up to where the next one begins, the limits still
-//! hold and no world element was read twice. Otherwise it reads on itself. Either way the
-//! scene, the warnings and the first error are those of one reader reading the whole
-//! file; a busy core only moves where the two meet. The text may be in memory or in a
-//! file: the helper reads a file's pieces with a handle of its own, one piece at a time.
+//! directly in `<Bodies>`), where the scan stage finds them: a helper thread scans the whole
+//! text first (see [`crate::scan`]), then reads the pieces from the last one back, each with
+//! the ordinary reader into an arena of its own, from its item up to the next piece's; the
+//! calling thread reads from the start on, and learns where the pieces begin when the scan
+//! has found them. Its reading's text ends before each piece's item from then on, where the
+//! reading stops if it can (see [`Tokenizer::end_before`]). There the calling thread reads
+//! the piece itself while the helper has not begun it, or else takes what the helper read
+//! from there to the end of the file, when it can use all of it: each of those pieces read
+//! without a problem (warnings are fine: they are appended in the order one reader finds
+//! them) up to where the next one begins, the limits still hold and no world element was
+//! read twice. Otherwise it reads on itself. Either way the scene, the warnings and the
+//! first error are those of one reader reading the whole file; a busy core only moves
+//! where the two meet. The text may be in memory or in a file: the helper reads a file's
+//! pieces with a handle of its own, one piece at a time.
 
-use std::sync::{Arc, Mutex, PoisonError, mpsc};
+use std::sync::{Arc, Mutex, OnceLock, PoisonError, mpsc};
 use std::thread::{Scope, ScopedJoinHandle};
 
 use super::names::{Element, Name};
@@ -26,6 +27,7 @@ use crate::containers::Container;
 use crate::error::{Code, Position, problem};
 use crate::input::{Pieces, Source};
 use crate::options::LoadOptions;
+use crate::scan::Scanner;
 
 /// The smallest text worth a second thread: below it, starting one costs more than it
 /// saves.
@@ -41,12 +43,15 @@ const MAX_PIECES: usize = 64;
 /// Where a piece begins: the `<` of an item, and the container it is assumed to be in.
 pub(super) type Boundary = (usize, Container);
 
+/// Where the pieces begin, once the helper's scan has found them.
+type Found = Arc<OnceLock<Vec<Boundary>>>;
+
 /// The helper, as the calling thread sees it.
 pub(super) struct Caller<'scope> {
-    boundaries: Vec<Boundary>,
+    found: Found,
     claims: Arc<Mutex<Claims>>,
     done: mpsc::Receiver<(usize, Option<Done>)>,
-    /// What the helper read, by piece.
+    /// What the helper read, by piece (empty until the pieces are found).
     pieces: Vec<Piece>,
     /// The helper's thread, which ends with the buffer it read a file's pieces into: that
     /// is let go here, with this, once the pieces are taken (see [`Pieces::source`]).
@@ -106,25 +111,20 @@ where
         return None;
     }
     let pieces = pieces?;
-    let (boundaries, helped) = match split {
-        Some(split) => split,
-        None if pieces.len() >= MIN_BYTES => {
-            let boundaries = boundaries(&pieces);
-            let last = boundaries.len();
-            (boundaries, last)
+    let found = Found::default();
+    let helped = match split {
+        Some((boundaries, helped)) => {
+            let _ = found.set(boundaries);
+            helped
         }
+        None if pieces.len() >= MIN_BYTES => usize::MAX,
         None => return None,
     };
-    if boundaries.is_empty() {
-        return None;
-    }
-    let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped.min(boundaries.len()) }));
+    let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped }));
     let (sender, done) = mpsc::channel();
-    let (their_boundaries, their_claims) = (boundaries.clone(), Arc::clone(&claims));
-    let thread =
-        scope.spawn(move || help(pieces, options, &their_boundaries, &their_claims, &sender));
-    let pieces = boundaries.iter().map(|_| Piece::Waiting).collect();
-    Some(Caller { boundaries, claims, done, pieces, _thread: thread })
+    let (their_found, their_claims) = (Arc::clone(&found), Arc::clone(&claims));
+    let thread = scope.spawn(move || help(pieces, options, &their_found, &their_claims, &sender));
+    Some(Caller { found, claims, done, pieces: Vec::new(), _thread: thread })
 }
 
 /// Reads the whole document with `reader`, the calling thread's, taking what the helper
@@ -132,7 +132,8 @@ where
 pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Reading<()> {
     let mut seen = Seen::default();
     if let Some(helper) = &helper {
-        reader.tok.end_before(ends(&helper.boundaries));
+        let found = Arc::clone(&helper.found);
+        reader.tok.end_before_found(Box::new(move || found.get().map(|found| ends(found))));
     }
     let mut read = reader.document(&mut seen);
     if let Some(mut helper) = helper {
@@ -146,7 +147,7 @@ pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Reading<()> {
             let Some((root, tag)) = reader.tok.open_item() else {
                 return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
             };
-            let container = helper.boundaries[piece].1;
+            let container = helper.boundaries()[piece].1;
             read = reader.document_from_item((&root, &tag), container, &mut seen);
         }
     }
@@ -161,73 +162,80 @@ fn ends(boundaries: &[Boundary]) -> Vec<(usize, Name)> {
     boundaries.iter().map(|&(at, container)| (at, Name::new(container.name()))).collect()
 }
 
-/// How far from where a piece should begin its item is looked for, and how far before it
-/// the end tag of its twin may lie.
-const SEARCH_BYTES: usize = 16 << 10;
-const LOOK_BACK_BYTES: usize = 1 << 10;
+/// How much of the text the helper scans at a time, and how much of its start holds the
+/// root's start tag.
+const SCAN_BYTES: usize = 64 << 10;
+const ROOT_BYTES: usize = 16 << 10;
 
-/// Where the pieces of the text begin: the first item after its twin from every
-/// [`PIECE_BYTES`] or so on, when one lies near.
+/// Where the pieces of the text begin: at the first item from every [`PIECE_BYTES`] or so
+/// on, found by a scan of the whole text. An item is a start tag directly in an element of
+/// the root, here one of the world's containers, whose item it names.
 fn boundaries(text: &Pieces) -> Vec<Boundary> {
     let len = text.len();
     let pieces = (len / PIECE_BYTES).clamp(2, MAX_PIECES);
     let step = len / pieces;
     let mut boundaries: Vec<Boundary> = Vec::with_capacity(pieces);
-    for k in 1..pieces {
-        let from = boundaries.last().map_or(0, |&(at, _)| at + 1).max(step * k);
-        let to = (step * (k + 1)).min(from + SEARCH_BYTES).min(len);
-        let back = from.saturating_sub(LOOK_BACK_BYTES);
-        let Some(bytes) = text.bytes(back, to) else { break };
-        let found = item_after_a_twin(&bytes, from - back, to - back);
-        boundaries.extend(found.map(|(at, container)| (back + at, container)));
+    let (mut scanner, mut parent) = (Scanner::new(), None);
+    while scanner.scanned() < len && boundaries.len() < pieces - 1 {
+        let from = scanner.scanned();
+        let Some(bytes) = text.bytes(from, (from + SCAN_BYTES).min(len)) else { break };
+        scanner.scan(&bytes, from);
+        if scanner.scanned() == from {
+            // Markup the scan cannot read: the reader stops there.
+            break;
+        }
+        for item in scanner.take_items() {
+            // A comment right before an item goes with it, so a reading cannot stop between
+            // the two (see `Tokenizer::end_before`): the next item is where the piece begins.
+            if item.at < step * (boundaries.len() + 1)
+                || boundaries.len() == pieces - 1
+                || item.after_markup
+            {
+                continue;
+            }
+            if parent.is_none_or(|(at, _)| at != item.parent) {
+                parent = Some((item.parent, container_at(text, item.parent)));
+            }
+            if let Some((_, Some(container))) = parent
+                && names(text, item.at, container.item())
+            {
+                boundaries.push((item.at, container));
+            }
+        }
     }
     boundaries
 }
 
-/// The first item from `from` on and before `to` that follows an item of its own name,
-/// with only white space between: `</Body>` then `<Body`.
-fn item_after_a_twin(text: &[u8], mut from: usize, to: usize) -> Option<Boundary> {
-    while from < to {
-        let at = from + memchr::memchr(b'<', &text[from..to])?;
-        if let Some(container) = item_after_its_twin(text, at) {
-            return Some((at, container));
-        }
-        from = at + 1;
-    }
-    None
+/// The container whose start tag begins at `at`, if it is one.
+fn container_at(text: &Pieces, at: usize) -> Option<Container> {
+    Container::ALL.into_iter().find(|container| names(text, at, container.name()))
 }
 
-/// The container of the item whose start tag begins at `at`, when the tag before it is the
-/// end tag of an item of the same name.
-fn item_after_its_twin(text: &[u8], at: usize) -> Option<Container> {
-    let after = &text[at + 1..];
-    let container = Container::ALL.into_iter().find(|c| {
-        let name = c.item().as_bytes();
-        after.starts_with(name)
-            && after
-                .get(name.len())
-                .is_some_and(|&b| matches!(b, b'>' | b'/') || is_xml_space_byte(b))
-    })?;
-    let before = &text[..at];
-    let end = before.iter().rposition(|&b| !is_xml_space_byte(b))? + 1;
-    let name = container.item().as_bytes();
-    let twin = before[..end].strip_suffix(b">")?.strip_suffix(name)?.ends_with(b"</");
-    twin.then_some(container)
+/// Whether the start tag at `at` names the element `name`.
+fn names(text: &Pieces, at: usize, name: &str) -> bool {
+    let Some(tag) = text.bytes(at, (at + name.len() + 2).min(text.len())) else { return false };
+    let [b'<', rest @ ..] = &tag[..] else { return false };
+    rest.strip_prefix(name.as_bytes())
+        .and_then(|after| after.first())
+        .is_some_and(|&b| matches!(b, b'>' | b'/') || is_xml_space_byte(b))
 }
 
-/// The helper: reads the root's start tag, then claims and reads the pieces from the last
-/// one back until it reaches one the calling thread has claimed, or one it cannot use (the
-/// pieces before it could not be used either: the calling thread takes the pieces from one
-/// on to the end). Returns the buffer it read a file's pieces into.
+/// The helper: finds where the pieces begin (unless they were given), reads the root's start
+/// tag, then claims and reads the pieces from the last one back until it reaches one the
+/// calling thread has claimed, or one it cannot use (the pieces before it could not be used
+/// either: the calling thread takes the pieces from one on to the end). Returns the buffer
+/// it read a file's pieces into.
 fn help(
     text: Pieces<'_>,
     options: &LoadOptions,
-    boundaries: &[Boundary],
+    found: &OnceLock<Vec<Boundary>>,
     claims: &Mutex<Claims>,
     sender: &mpsc::Sender<(usize, Option<Done>)>,
 ) -> Vec<u8> {
     let mut buffer = Vec::new();
-    let Some((root, version)) = root(&text, options, boundaries[0].0, &mut buffer) else {
+    let boundaries = found.get_or_init(|| boundaries(&text));
+    let Some(&(first, _)) = boundaries.first() else { return buffer };
+    let Some((root, version)) = root(&text, options, first, &mut buffer) else {
         return buffer;
     };
     for piece in (0..boundaries.len()).rev() {
@@ -252,7 +260,7 @@ fn help(
 }
 
 /// The root's start tag and the Version it says, read from the start of the text (before
-/// `first`, the first piece's start, and its last `<` within the first [`SEARCH_BYTES`]),
+/// `first`, the first piece's start, and its last `<` within the first [`ROOT_BYTES`]),
 /// a file's into `buffer`.
 fn root(
     text: &Pieces,
@@ -260,7 +268,7 @@ fn root(
     first: usize,
     buffer: &mut Vec<u8>,
 ) -> Option<(Tag, u32)> {
-    let head = text.bytes(0, first.min(SEARCH_BYTES))?;
+    let head = text.bytes(0, first.min(ROOT_BYTES))?;
     let end = memchr::memrchr(b'<', &head)?;
     let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options), false);
     let root = reader.root().ok()?;
@@ -303,6 +311,11 @@ fn read_piece(
 }
 
 impl Caller<'_> {
+    /// Where the pieces begin: known once the calling thread's reading stops before one.
+    fn boundaries(&self) -> &[Boundary] {
+        self.found.get().map_or(&[], Vec::as_slice)
+    }
+
     /// Claims `piece` for the calling thread, which has reached or passed where it begins,
     /// and keeps the helper from those before it; whether the helper had not claimed it.
     fn claim(&self, piece: usize) -> bool {
@@ -313,6 +326,9 @@ impl Caller<'_> {
 
     /// Waits until the helper has read or given up every piece from `first` on.
     fn receive(&mut self, first: usize) {
+        if self.pieces.is_empty() {
+            self.pieces = self.boundaries().iter().map(|_| Piece::Waiting).collect();
+        }
         while self.pieces[first..].iter().any(|p| matches!(p, Piece::Waiting)) {
             let Ok((piece, done)) = self.done.recv() else {
                 for p in &mut self.pieces[first..] {
@@ -332,7 +348,8 @@ impl Caller<'_> {
     fn take(&mut self, reader: &mut Reader, first: usize, seen: &mut Seen) -> bool {
         self.receive(first);
         let (mut bits, mut elements) = (seen.bits, reader.tok.elements());
-        for (piece, &(_, container)) in self.pieces[first..].iter().zip(&self.boundaries[first..]) {
+        for (piece, &(_, container)) in self.pieces[first..].iter().zip(&self.boundaries()[first..])
+        {
             let Piece::Read(done) = piece else { return false };
             // Each piece has the container it begins in, as does the one before it.
             if bits & done.seen.bits & !(1 << WorldChild::of(container).index()) != 0 {

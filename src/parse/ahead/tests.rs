@@ -1,6 +1,7 @@
 use super::*;
 use crate::error::{Code, Position};
 use crate::place::Spot;
+use crate::scan::Scanner;
 use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
 /// What a read on one thread, or on two with the pieces and the helper's first piece of
@@ -72,24 +73,23 @@ fn tags(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
     memchr::memchr_iter(b'<', bytes)
 }
 
-/// Where pieces would begin: every item after its twin.
-fn twins(bytes: &[u8]) -> Vec<Boundary> {
-    tags(bytes).filter_map(|at| Some((at, item_after_its_twin(bytes, at)?))).collect()
+/// Where pieces may begin: every item the scan finds in a container.
+fn container_items(bytes: &[u8]) -> Vec<Boundary> {
+    let text = Pieces::Memory { text: std::str::from_utf8(bytes).unwrap_or_default(), bom: false };
+    let mut scanner = Scanner::new();
+    scanner.scan(bytes, 0);
+    let items = scanner.take_items();
+    items
+        .iter()
+        .filter_map(|item| {
+            let container = container_at(&text, item.parent)?;
+            names(&text, item.at, container.item()).then_some((item.at, container))
+        })
+        .collect()
 }
 
 #[test]
-fn a_piece_begins_at_an_item_after_its_twin() {
-    let text = b"<Bodies><Body/>\n  </Body>\r\n\t<Body Type=\"Static\">";
-    let at = text.len() - 20;
-    assert_eq!(item_after_its_twin(text, at), Some(Container::Bodies));
-    assert_eq!(item_after_its_twin(b"</Body><Bodies>", 7), None);
-    assert_eq!(item_after_its_twin(b"</Joint> <Body>", 9), None);
-    assert_eq!(item_after_its_twin(b"</Shape><Shape>", 8), Some(Container::Shapes));
-    assert_eq!(item_after_its_twin(b"<Shape>", 0), None);
-}
-
-#[test]
-fn pieces_begin_at_the_first_twin_from_every_step_on() {
+fn pieces_begin_at_the_first_item_from_every_step_on() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
     for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
         let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
@@ -106,6 +106,42 @@ fn pieces_begin_at_the_first_twin_from_every_step_on() {
         boundaries(&Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false }),
         []
     );
+}
+
+/// Only an item is where a piece begins: not a body in a comment, in CDATA, in a quoted
+/// value or in UserData, nor one in an element that is not a container; nor one right after
+/// a comment, CDATA or a processing instruction, which a reading cannot stop before.
+#[test]
+fn pieces_begin_only_at_items() {
+    // Each piece of text, and whether a piece may begin at it.
+    let items = [
+        ("<!-- </Body><Body> -->", false),
+        ("<![CDATA[ </Body><Body> ]]>", false),
+        ("<Body Type=\"Static\" Note=\"</Body><Body>\"/>", false),
+        ("<Body><UserData><Body/><Body/></UserData></Body>", true),
+        ("\n  <?pi?>\n  ", false),
+        ("<Body/>", false),
+        ("<Body/>", true),
+    ];
+    let mut text = String::from("<World Version=\"1\"><Wind>");
+    text += &"<Body/>".repeat(60_000);
+    text += "</Wind><Bodies>";
+    let mut starts = Vec::new();
+    while text.len() < 4 * PIECE_BYTES {
+        for (item, starts_a_piece) in items {
+            if starts_a_piece {
+                starts.push(text.len());
+            }
+            text += item;
+        }
+    }
+    text += "</Bodies></World>";
+    let found = boundaries(&Pieces::Memory { text: &text, bom: false });
+    assert_eq!(found.len(), 3);
+    for &(at, container) in &found {
+        assert_eq!(container, Container::Bodies);
+        assert!(starts.binary_search(&at).is_ok(), "a piece at {at}: {}", &text[at..at + 20]);
+    }
 }
 
 /// One piece from every tag, assuming each container: what the helper reads is taken
@@ -128,23 +164,23 @@ fn every_piece_of_every_scene_file_loads_as_one_thread_reads_it() {
     }
 }
 
-/// Pieces at every twin, the helper taking them from each on; and three pieces with
-/// any tag between two twins, so that the middle one may be unusable.
+/// Pieces at every item, the helper taking them from each on; and three pieces with
+/// any tag between two items, so that the middle one may be unusable.
 #[test]
 fn many_pieces_of_every_scene_file_load_as_one_thread_reads_them() {
     let options = LoadOptions::default();
     for (name, bytes) in crate::scene_files() {
         let expected = outcome(&bytes, &options, None);
-        let twins = twins(&bytes);
-        for first in 0..=twins.len() {
-            let got = outcome(&bytes, &options, Some((twins.clone(), first)));
+        let items = container_items(&bytes);
+        for first in 0..=items.len() {
+            let got = outcome(&bytes, &options, Some((items.clone(), first)));
             assert_same(
                 &got,
                 &expected,
-                format_args!("{name}: pieces at every twin, the helper's from {first}"),
+                format_args!("{name}: pieces at every item, the helper's from {first}"),
             );
         }
-        let (Some(&first), Some(&last)) = (twins.first(), twins.last()) else { continue };
+        let (Some(&first), Some(&last)) = (items.first(), items.last()) else { continue };
         for at in tags(&bytes).filter(|&at| first.0 < at && at < last.0) {
             for container in Container::ALL {
                 for helped in 0..3 {
@@ -176,15 +212,15 @@ fn changed_files_load_as_one_thread_reads_them() {
     };
     let strict = LoadOptions { strict: true, ..LoadOptions::default() };
     for (name, bytes) in crate::scene_files() {
-        let twins = twins(&bytes);
+        let items = container_items(&bytes);
         for _ in 0..200 {
             let mut changed = bytes.clone();
             let at = next(changed.len());
             changed[at] = b"<>/\"x 1&-"[next(9)];
             for options in [LoadOptions::default(), strict] {
                 let expected = outcome(&changed, &options, None);
-                let mut splits: Vec<_> = twins.iter().map(|&twin| (vec![twin], 0)).collect();
-                splits.extend([0, twins.len() / 2].map(|first| (twins.clone(), first)));
+                let mut splits: Vec<_> = items.iter().map(|&item| (vec![item], 0)).collect();
+                splits.extend([0, items.len() / 2].map(|first| (items.clone(), first)));
                 for split in splits {
                     let got = outcome(&changed, &options, Some(split.clone()));
                     assert_same(
@@ -278,7 +314,7 @@ fn what_the_helper_must_not_decide_is_left_to_the_calling_thread() {
     for (case, text) in cases {
         let bytes = text.as_bytes();
         let count = bytes.iter().filter(|&&b| b == b'<').count() as u64;
-        let twins = twins(bytes);
+        let items = container_items(bytes);
         for max_elements in [count, count / 2, 3] {
             let options = LoadOptions { max_elements, ..LoadOptions::default() };
             let expected = outcome(bytes, &options, None);
@@ -290,8 +326,8 @@ fn what_the_helper_must_not_decide_is_left_to_the_calling_thread() {
                     format_args!("{case}, max {max_elements}, a piece from {at}"),
                 );
             }
-            for first in 0..=twins.len() {
-                let got = outcome(bytes, &options, Some((twins.clone(), first)));
+            for first in 0..=items.len() {
+                let got = outcome(bytes, &options, Some((items.clone(), first)));
                 assert_same(
                     &got,
                     &expected,
@@ -470,11 +506,52 @@ fn pieces_with_warnings_are_taken_and_kept_in_order() {
         );
         let bytes = text.as_bytes();
         let expected = outcome(bytes, &options, None);
-        let twins = twins(bytes);
-        let pieces: Vec<_> = (1..8).map(|k| twins[k * twins.len() / 8]).collect();
+        let items = container_items(bytes);
+        let pieces: Vec<_> = (1..8).map(|k| items[k * items.len() / 8]).collect();
         for first in 0..=pieces.len() {
             let got = outcome(bytes, &options, Some((pieces.clone(), first)));
             assert_same(&got, &expected, format_args!("{bodies} bodies, helped from {first}"));
         }
+    }
+}
+
+/// Comments between the items, as in the benchmark's scenes: every piece the helper would
+/// read, from the boundaries found, reads to where the next begins, so that it can be
+/// taken (a piece cut right after a comment could not be, nor any before it).
+#[test]
+fn every_piece_cut_at_the_found_items_can_be_taken() {
+    let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
+    let mut text = String::from("<World Version=\"1\"><Bodies>\n");
+    for i in 0..40_000 {
+        text += body;
+        if i % 7 == 0 {
+            text += "<!-- a comment between bodies -->\n";
+        }
+    }
+    text += "</Bodies><Joints>";
+    for i in 0..20_000 {
+        text += "<!-- joints -->\n<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>\n";
+        if i % 3 == 0 {
+            text += "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>0</BodyB></Joint>\n";
+        }
+    }
+    text += "</Joints></World>";
+    let pieces = Pieces::Memory { text: &text, bom: false };
+    let found = boundaries(&pieces);
+    assert!(found.len() >= 8, "{} pieces", found.len());
+    assert!(found.iter().any(|&(_, container)| container == Container::Joints));
+    let options = LoadOptions::default();
+    let mut buffer = Vec::new();
+    let (root, version) = root(&pieces, &options, found[0].0, &mut buffer).unwrap();
+    for (i, &boundary) in found.iter().enumerate() {
+        let end = found.get(i + 1).copied();
+        let source = pieces.source(boundary.0, end.map_or(text.len(), |(at, _)| at), &mut buffer);
+        let done = source.and_then(|s| read_piece(s, &options, &root, version, boundary, end));
+        assert!(
+            done.is_some(),
+            "piece {i} at {}: {}",
+            boundary.0,
+            &text[boundary.0 - 40..boundary.0]
+        );
     }
 }

@@ -238,7 +238,14 @@ pub(super) struct Tokenizer<'a> {
     ends: Vec<(usize, Name)>,
     next_end: usize,
     end_at: usize,
+    /// Where ends that are still being found come from (see
+    /// [`Tokenizer::end_before_found`]).
+    found: Option<FoundEnds<'a>>,
 }
+
+/// Where the ends of a reading come from while they are still being found: asked each time
+/// more text is read, it gives them once they are (see [`Tokenizer::end_before_found`]).
+pub(super) type FoundEnds<'a> = Box<dyn FnMut() -> Option<Vec<(usize, Name)>> + 'a>;
 
 /// Where a tokenizer stopped, for another to go on from there (see [`Tokenizer::resume`]).
 pub(super) struct Stop {
@@ -283,6 +290,7 @@ impl<'a> Tokenizer<'a> {
             ends: Vec::new(),
             next_end: 0,
             end_at: usize::MAX,
+            found: None,
         }
     }
 
@@ -304,6 +312,9 @@ impl<'a> Tokenizer<'a> {
     /// [`Halt::PieceEnd`] where the reading ends before an item (see
     /// [`Tokenizer::end_before`]).
     fn more(&mut self) -> Reading<bool> {
+        if self.found.is_some() {
+            self.take_found_ends();
+        }
         let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
             .into_iter()
             .flatten()

@@ -2,7 +2,7 @@
 //! pinned text, comments, and the ends and resumptions of pieces for the second thread.
 
 use super::super::names::Name;
-use super::{Stop, Tag, Tokenizer};
+use super::{FoundEnds, Stop, Tag, Tokenizer};
 use crate::error::{Code, Finding, Position, Problem, problem};
 use crate::input::Source;
 use crate::place::{Cursor, Spot};
@@ -100,6 +100,24 @@ impl<'a> Tokenizer<'a> {
     /// Where it cannot, the reading goes on past it.
     pub fn end_before(&mut self, ends: Vec<(usize, Name)>) {
         (self.ends, self.next_end) = (ends, 0);
+        self.aim();
+    }
+
+    /// [`Tokenizer::end_before`] with ends that are still being found: `found` gives them
+    /// once they are, and is asked each time more text is read until then. The ends the
+    /// reading has reached by then are passed.
+    pub fn end_before_found(&mut self, found: FoundEnds<'a>) {
+        self.found = Some(found);
+        self.take_found_ends();
+    }
+
+    /// The ends of [`Tokenizer::end_before_found`], once they are found.
+    pub(super) fn take_found_ends(&mut self) {
+        let Some(ends) = self.found.as_mut().and_then(|found| found()) else { return };
+        self.found = None;
+        let pos = self.pos;
+        let passed = ends.partition_point(|&(at, _)| at <= pos);
+        (self.ends, self.next_end) = (ends, passed);
         self.aim();
     }
 
