@@ -168,15 +168,16 @@ const SCAN_BYTES: usize = 64 << 10;
 const ROOT_BYTES: usize = 16 << 10;
 
 /// Where the pieces of the text begin: at the first item from every [`PIECE_BYTES`] or so
-/// on, found by a scan of the whole text. An item is a start tag directly in an element of
-/// the root, here one of the world's containers, whose item it names.
-fn boundaries(text: &Pieces) -> Vec<Boundary> {
+/// on, found by a scan of the whole text, while `wanted` (asked at every [`SCAN_BYTES`]).
+/// An item is a start tag directly in an element of the root, here one of the world's
+/// containers, whose item it names.
+fn boundaries(text: &Pieces, wanted: impl Fn() -> bool) -> Vec<Boundary> {
     let len = text.len();
     let pieces = (len / PIECE_BYTES).clamp(2, MAX_PIECES);
     let step = len / pieces;
     let mut boundaries: Vec<Boundary> = Vec::with_capacity(pieces);
     let (mut scanner, mut parent) = (Scanner::new(), None);
-    while scanner.scanned() < len && boundaries.len() < pieces - 1 {
+    while scanner.scanned() < len && boundaries.len() < pieces - 1 && wanted() {
         let from = scanner.scanned();
         let Some(bytes) = text.bytes(from, (from + SCAN_BYTES).min(len)) else { break };
         scanner.scan(&bytes, from);
@@ -233,7 +234,9 @@ fn help(
     sender: &mpsc::Sender<(usize, Option<Done>)>,
 ) -> Vec<u8> {
     let mut buffer = Vec::new();
-    let boundaries = found.get_or_init(|| boundaries(&text));
+    // The scan stops once the calling thread is done: the load waits for this thread.
+    let wanted = || claims.lock().unwrap_or_else(PoisonError::into_inner).caller != usize::MAX;
+    let boundaries = found.get_or_init(|| boundaries(&text, wanted));
     let Some(&(first, _)) = boundaries.first() else { return buffer };
     let Some((root, version)) = root(&text, options, first, &mut buffer) else {
         return buffer;

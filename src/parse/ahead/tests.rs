@@ -93,7 +93,7 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
     for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
         let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-        let found = boundaries(&Pieces::Memory { text: &text, bom: false });
+        let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
         assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
         let step = text.len() / pieces;
         for (k, &(at, container)) in (1..).zip(&found) {
@@ -103,9 +103,32 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
         }
     }
     assert_eq!(
-        boundaries(&Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false }),
+        boundaries(
+            &Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false },
+            || true
+        ),
         []
     );
+}
+
+/// The scan goes on only while its pieces are wanted (the calling thread, done with its
+/// reading, waits for the helper): it looks at the next window only when asked.
+#[test]
+fn the_scan_stops_when_its_pieces_are_no_longer_wanted() {
+    let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
+    let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(100_000));
+    let text = Pieces::Memory { text: &text, bom: false };
+    assert_eq!(boundaries(&text, || false), []);
+    // Wanted for two windows: asked a third time, and no piece found, the first lying
+    // past them.
+    let asked = std::cell::Cell::new(0);
+    let found = boundaries(&text, || {
+        asked.set(asked.get() + 1);
+        asked.get() <= 2
+    });
+    assert_eq!(asked.get(), 3);
+    assert_eq!(found, []);
+    assert_eq!(boundaries(&text, || true).len(), 14);
 }
 
 /// Only an item is where a piece begins: not a body in a comment, in CDATA, in a quoted
@@ -136,7 +159,7 @@ fn pieces_begin_only_at_items() {
         }
     }
     text += "</Bodies></World>";
-    let found = boundaries(&Pieces::Memory { text: &text, bom: false });
+    let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
     assert_eq!(found.len(), 3);
     for &(at, container) in &found {
         assert_eq!(container, Container::Bodies);
@@ -378,7 +401,7 @@ fn a_large_scene_loads_on_two_threads_as_on_one() {
     text += "</Joints></World>";
     let bytes = text.as_bytes();
     assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-    let pieces = boundaries(&Pieces::Memory { text: &text, bom: false });
+    let pieces = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
     assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
     let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
     for container in Container::ALL {
@@ -537,7 +560,7 @@ fn every_piece_cut_at_the_found_items_can_be_taken() {
     }
     text += "</Joints></World>";
     let pieces = Pieces::Memory { text: &text, bom: false };
-    let found = boundaries(&pieces);
+    let found = boundaries(&pieces, || true);
     assert!(found.len() >= 8, "{} pieces", found.len());
     assert!(found.iter().any(|&(_, container)| container == Container::Joints));
     let options = LoadOptions::default();
