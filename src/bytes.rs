@@ -176,6 +176,21 @@ pub(crate) fn first_equal(word: u64, b: u8) -> u64 {
     x.wrapping_sub(ONES) & !x & HIGH_BITS
 }
 
+/// The offset in `tag` (what follows a start tag's `<`) of the `>` that ends it, its quoted
+/// values passed over; None when it is not in `tag`, or a value's quote is not closed in it.
+/// Values are short: the closing quote, like the rest, is found eight bytes at a time.
+pub(crate) fn tag_end(tag: &[u8]) -> Option<usize> {
+    let mut from = 0;
+    loop {
+        let i = from + find3(&tag[from..], b'>', b'"', b'\'')?;
+        if tag[i] == b'>' {
+            return Some(i);
+        }
+        let quote = tag[i];
+        from = i + 2 + find3(&tag[i + 1..], quote, quote, quote)?;
+    }
+}
+
 /// The bytes the scan stage looks at a block at a time.
 pub(crate) const BLOCK: usize = 64;
 

@@ -135,3 +135,14 @@ fn block_masks_flag_each_byte_of_its_sets() {
         assert_eq!(block_masks(&block, sets), expected, "shift {shift}");
     }
 }
+
+/// A tag's `>`, past values that hold `>` and the other quote; none while a value is open.
+#[test]
+fn tag_end_passes_over_quoted_values() {
+    assert_eq!(tag_end(b"a>b"), Some(1));
+    let tag = br#"Body Note="a > 'b' >" x='">"' long="0123456789012345678901234567890123456789"/>"#;
+    assert_eq!(tag_end(tag), Some(tag.len() - 1));
+    for open in [&br#"a x="1>"#[..], b"a x='>", b"a x=\"1\" y"] {
+        assert_eq!(tag_end(open), None, "{}", String::from_utf8_lossy(open));
+    }
+}

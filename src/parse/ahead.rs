@@ -22,12 +22,12 @@ use super::tokenizer::{Halt, Reading, Stop, Tokenizer};
 use super::world::WorldChild;
 use super::{Reader, Seen, Tag};
 use crate::arena::Arena;
-use crate::bytes::is_xml_space_byte;
+use crate::bytes::ENDS_NAME;
 use crate::containers::Container;
 use crate::error::{Code, Position, problem};
 use crate::input::{Pieces, Source};
 use crate::options::LoadOptions;
-use crate::scan::Scanner;
+use crate::scan::{Item, Scanner};
 
 /// The smallest text worth a second thread: below it, starting one costs more than it
 /// saves.
@@ -194,22 +194,26 @@ fn boundaries(text: &Pieces, wanted: impl Fn() -> bool) -> Vec<Boundary> {
             {
                 continue;
             }
-            if parent.is_none_or(|(at, _)| at != item.parent) {
-                parent = Some((item.parent, container_at(text, item.parent)));
-            }
-            if let Some((_, Some(container))) = parent
-                && names(text, item.at, container.item())
-            {
-                boundaries.push((item.at, container));
-            }
+            boundaries.extend(in_container(text, item, &mut parent));
         }
     }
     boundaries
 }
 
-/// The container whose start tag begins at `at`, if it is one.
-fn container_at(text: &Pieces, at: usize) -> Option<Container> {
-    Container::ALL.into_iter().find(|container| names(text, at, container.name()))
+/// Where a piece may begin at `item`: when its parent is one of the world's containers and
+/// it names that container's item. `parent` keeps the last parent looked at, the container
+/// it is if it is one: items come by the thousand from each.
+fn in_container(
+    text: &Pieces,
+    item: Item,
+    parent: &mut Option<(usize, Option<Container>)>,
+) -> Option<Boundary> {
+    if parent.is_none_or(|(at, _)| at != item.parent) {
+        let container = Container::ALL.into_iter().find(|c| names(text, item.parent, c.name()));
+        *parent = Some((item.parent, container));
+    }
+    let container = (*parent)?.1?;
+    names(text, item.at, container.item()).then_some((item.at, container))
 }
 
 /// Whether the start tag at `at` names the element `name`.
@@ -218,7 +222,7 @@ fn names(text: &Pieces, at: usize, name: &str) -> bool {
     let [b'<', rest @ ..] = &tag[..] else { return false };
     rest.strip_prefix(name.as_bytes())
         .and_then(|after| after.first())
-        .is_some_and(|&b| matches!(b, b'>' | b'/') || is_xml_space_byte(b))
+        .is_some_and(|&b| ENDS_NAME[usize::from(b)])
 }
 
 /// The helper: finds where the pieces begin (unless they were given), reads the root's start

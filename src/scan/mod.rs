@@ -11,7 +11,7 @@
 //! well-formed it stops or lists what it saw, and the reader reports the problem.
 #![forbid(unsafe_code)]
 
-use crate::bytes::{BLOCK, block_masks, find3};
+use crate::bytes::{BLOCK, block_masks, tag_end};
 
 #[cfg(test)]
 mod tests;
@@ -256,20 +256,6 @@ fn near_root(tally: Tally, lt: usize, markup: Option<Tally>, items: &mut Vec<Ite
         _ => {}
     }
     tally.parent
-}
-
-/// The offset in `tag` (what follows a start tag's `<`) of the `>` that ends it, its quoted
-/// values passed over; None when it is not in `tag`.
-#[inline(never)]
-fn tag_end(tag: &[u8]) -> Option<usize> {
-    let mut from = 0;
-    loop {
-        let i = from + find3(&tag[from..], b'>', b'"', b'\'')?;
-        if tag[i] == b'>' {
-            return Some(i);
-        }
-        from = i + 1 + memchr::memchr(tag[i], &tag[i + 1..])? + 1;
-    }
 }
 
 /// The bits of a block's mask above bit `bit`.

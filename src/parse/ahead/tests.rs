@@ -78,13 +78,11 @@ fn container_items(bytes: &[u8]) -> Vec<Boundary> {
     let text = Pieces::Memory { text: std::str::from_utf8(bytes).unwrap_or_default(), bom: false };
     let mut scanner = Scanner::new();
     scanner.scan(bytes, 0);
-    let items = scanner.take_items();
-    items
-        .iter()
-        .filter_map(|item| {
-            let container = container_at(&text, item.parent)?;
-            names(&text, item.at, container.item()).then_some((item.at, container))
-        })
+    let mut parent = None;
+    scanner
+        .take_items()
+        .into_iter()
+        .filter_map(|item| in_container(&text, item, &mut parent))
         .collect()
 }
 

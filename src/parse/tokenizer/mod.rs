@@ -28,7 +28,7 @@ use crate::text::{self};
 mod pieces;
 mod values;
 
-use crate::bytes::{ENDS_NAME, find3, is_xml_space_byte, space_len};
+use crate::bytes::{ENDS_NAME, find3, is_xml_space_byte, space_len, tag_end};
 use values::resolve_text;
 pub(super) use values::verbatim;
 
@@ -496,18 +496,8 @@ impl<'a> Tokenizer<'a> {
     /// The end of a tag that starts at `at`: the offset of its `>`.
     fn tag_end(&mut self, at: usize) -> Reading<usize> {
         // The tag at hand, its quoted values skipped; the element parser takes the rest.
-        let rest = self.rest(at + 1);
-        let mut from = 0;
-        while let Some(i) = find3(&rest[from..], b'>', b'"', b'\'').map(|i| from + i) {
-            if rest[i] == b'>' {
-                return Ok(self.within_text_limit(at, at + 1 + i)?);
-            }
-            // Values are short: the same byte three times is found eight bytes at a time.
-            let quote = rest[i];
-            match find3(&rest[i + 1..], quote, quote, quote) {
-                Some(len) => from = i + 2 + len,
-                None => break,
-            }
+        if let Some(i) = tag_end(self.rest(at + 1)) {
+            return Ok(self.within_text_limit(at, at + 1 + i)?);
         }
         let mut parser = ElementParser::Outside;
         match self.scan(at, at + 1, 0, |rest| parser.feed(rest))? {
