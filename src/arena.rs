@@ -14,9 +14,15 @@ pub(crate) struct Arena {
     pub version: u32,
     pub scene: SceneBuilder,
     pub origins: Origins,
+    pub findings: Findings,
+}
+
+/// The warnings a load found and, in a load that goes on past errors, the errors: apart
+/// from the scene, so that a check can note what it finds while it reads the scene.
+pub(crate) struct Findings {
     /// Every warning becomes the load's error.
     strict: bool,
-    /// The load goes on past the errors it can: see [`Arena::recover`].
+    /// The load goes on past the errors it can: see [`Findings::recover`].
     recovering: bool,
     /// The errors gone on past, each placed, in the order found.
     errors: Vec<Finding>,
@@ -130,15 +136,52 @@ impl Arena {
             version: 0,
             scene: SceneBuilder::default(),
             origins: Origins::default(),
-            strict,
-            recovering,
-            errors: Vec::new(),
-            warnings: Vec::new(),
-            dropped: (0, None),
+            findings: Findings {
+                strict,
+                recovering,
+                errors: Vec::new(),
+                warnings: Vec::new(),
+                dropped: (0, None),
+            },
         }
     }
 
-    /// Records `warning`; in strict mode it is an error instead (see [`Arena::recover`]).
+    /// Appends `other`, what was read right after what this arena holds, from the text at
+    /// `start` on: its bodies are numbered after these, its positions counted from `start`,
+    /// and its warnings were found after these, so the warnings kept and counted are those
+    /// one arena reading both would have.
+    pub fn append(&mut self, other: Arena, start: Position) {
+        let before = Before {
+            shapes: self.scene.shapes.len() as u32,
+            bodies: self.scene.bodies.len() as u32,
+            joints: self.scene.joints.len() as u32,
+        };
+        self.scene.append(other.scene);
+        self.origins.append(other.origins, before, start);
+        self.findings.append(other.findings, start);
+    }
+
+    /// Whether the file uses Farseer's Version 3 layout (docs/format.md, "Farseer spellings
+    /// and the Version 3 layout").
+    pub fn farseer_layout(&self) -> bool {
+        self.version >= 3
+    }
+
+    /// Version 3 (Aether.Physics2D's spelling): `<Tag>` is `<UserData>`.
+    pub fn tag_is_user_data(&self) -> bool {
+        self.farseer_layout()
+    }
+
+    /// Whether a `<Fixture>` or `<Body>` may carry Farseer's informational `Id` attribute
+    /// (Version 2 from July 2013, and Version 3), which is accepted and kept nowhere. A
+    /// Version 3 Pair names its fixture by position, never by this `Id`.
+    pub fn id_is_informational(&self) -> bool {
+        self.version >= 2
+    }
+}
+
+impl Findings {
+    /// Records `warning`; in strict mode it is an error instead (see [`Findings::recover`]).
     pub fn note(&mut self, warning: Finding) -> Parsed<()> {
         if self.strict {
             let message = format!("{} (strict mode)", warning.message);
@@ -181,6 +224,20 @@ impl Arena {
         }
     }
 
+    /// Appends the warnings of `other`, found after these in the text from `start` on (the
+    /// errors of a reading that went on past them are not appended: such a reading is not).
+    fn append(&mut self, other: Findings, start: Position) {
+        let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
+        for warning in other.warnings {
+            self.keep(after(warning));
+        }
+        let (count, first) = other.dropped;
+        if self.dropped.1.is_none() {
+            self.dropped.1 = first.map(after);
+        }
+        self.dropped.0 += count;
+    }
+
     /// The warnings in the order of the file, the last a `warnings-truncated` one when some
     /// were not kept.
     pub fn take_warnings(&mut self) -> Vec<Finding> {
@@ -193,47 +250,6 @@ impl Arena {
             warnings.push(Finding { code: Code::WarningsTruncated, message, ..first });
         }
         warnings
-    }
-
-    /// Appends `other`, what was read right after what this arena holds, from the text at
-    /// `start` on: its bodies are numbered after these, its positions counted from `start`,
-    /// and its warnings were found after these, so the warnings kept and counted are those
-    /// one arena reading both would have.
-    pub fn append(&mut self, other: Arena, start: Position) {
-        let before = Before {
-            shapes: self.scene.shapes.len() as u32,
-            bodies: self.scene.bodies.len() as u32,
-            joints: self.scene.joints.len() as u32,
-        };
-        self.scene.append(other.scene);
-        self.origins.append(other.origins, before, start);
-        let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
-        for warning in other.warnings {
-            self.keep(after(warning));
-        }
-        let (count, first) = other.dropped;
-        if self.dropped.1.is_none() {
-            self.dropped.1 = first.map(after);
-        }
-        self.dropped.0 += count;
-    }
-
-    /// Whether the file uses Farseer's Version 3 layout (docs/format.md, "Farseer spellings
-    /// and the Version 3 layout").
-    pub fn farseer_layout(&self) -> bool {
-        self.version >= 3
-    }
-
-    /// Version 3 (Aether.Physics2D's spelling): `<Tag>` is `<UserData>`.
-    pub fn tag_is_user_data(&self) -> bool {
-        self.farseer_layout()
-    }
-
-    /// Whether a `<Fixture>` or `<Body>` may carry Farseer's informational `Id` attribute
-    /// (Version 2 from July 2013, and Version 3), which is accepted and kept nowhere. A
-    /// Version 3 Pair names its fixture by position, never by this `Id`.
-    pub fn id_is_informational(&self) -> bool {
-        self.version >= 2
     }
 }
 

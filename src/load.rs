@@ -116,9 +116,9 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
         Err(stopped) => return failed(stopped.errors, stopped.warnings, &placer),
     };
     let checked = crate::check::run(&mut arena);
-    let mut errors = arena.take_errors();
+    let mut errors = arena.findings.take_errors();
     errors.extend(checked.err().map(|problem| *problem));
-    let mut warnings = arena.take_warnings();
+    let mut warnings = arena.findings.take_warnings();
     if !errors.is_empty() {
         return failed(errors, warnings, &placer);
     }

@@ -13,7 +13,7 @@ use crate::error::Parsed;
 /// records every one it can, and checks the scene only when there is none.
 pub(crate) fn run(arena: &mut Arena) -> Parsed<()> {
     resolve::resolve(arena)?;
-    if arena.has_errors() {
+    if arena.findings.has_errors() {
         return Ok(());
     }
     scene::dynamic_bodies_without_mass(arena)?;

@@ -19,9 +19,9 @@ pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
         normalise_farseer_layout(p)?;
     }
     for error in check_references(p) {
-        p.recover(error)?;
+        p.findings.recover(error)?;
     }
-    if p.has_errors() {
+    if p.findings.has_errors() {
         return Ok(());
     }
     let dialect = dialect(p);

@@ -3,22 +3,18 @@
 //! object's place in the file.
 
 use crate::arena::Arena;
-use crate::error::{Code, Finding, Parsed};
+use crate::error::{Code, Parsed};
 use crate::rules::{LINEAR_SLOP, zero_density};
 use crate::scene::{Body, Joint, JointKind, Vec2};
 
 /// Warns about every dynamic body that breaks the [`zero_density`](crate::rules::zero_density) rule.
 pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
-    let s = &arena.scene;
-    let found: Vec<Finding> = (s.bodies.iter().zip(arena.origins.bodies.iter()).enumerate())
-        .filter_map(|(i, (b, at))| {
-            let why = zero_density(b, &s.fixture_ids, &s.fixtures)?;
+    let Arena { scene: s, origins, findings, .. } = arena;
+    for (i, (b, at)) in s.bodies.iter().zip(origins.bodies.iter()).enumerate() {
+        if let Some(why) = zero_density(b, &s.fixture_ids, &s.fixtures) {
             let message = format!("dynamic body {i} {why}");
-            Some(at.finding(Code::DynamicBodyZeroDensity, message))
-        })
-        .collect();
-    for warning in found {
-        arena.note(warning)?;
+            findings.note(at.finding(Code::DynamicBodyZeroDensity, message))?;
+        }
     }
     Ok(())
 }
@@ -108,29 +104,27 @@ fn violation(j: &Joint, a: &Body, b: &Body) -> (f64, f64) {
 /// Warns about every joint that starts further from satisfied than Box2D's slop: the level
 /// is wrong before any engine sees it, and an engine may tear it apart in its first steps.
 pub(crate) fn joints_start_satisfied(arena: &mut Arena) -> Parsed<()> {
-    let s = &arena.scene;
-    let found: Vec<Finding> = (s.joints.iter().zip(arena.origins.joints.iter()).enumerate())
-        .filter_map(|(i, (j, at))| {
-            let (a, b) = (s.bodies.get(j.body_a as usize)?, s.bodies.get(j.body_b as usize)?);
-            let (metres, radians) = violation(j, a, b);
-            let linear = metres > f64::from(LINEAR_SLOP);
-            let angular = radians > ANGULAR_SLOP;
-            let how = match (linear, angular) {
-                (false, false) => return None,
-                (true, false) => format!("{metres:.3} m"),
-                (false, true) => format!("{radians:.3} rad"),
-                (true, true) => format!("{metres:.3} m and {radians:.3} rad"),
-            };
-            let message = format!(
-                "joint {i} starts {how} from satisfied where the file places bodies {} and {}; \
-                 an engine pulls them together in its first steps",
-                j.body_a, j.body_b
-            );
-            Some(at.body_a.finding(Code::JointStartsViolated, message))
-        })
-        .collect();
-    for warning in found {
-        arena.note(warning)?;
+    let Arena { scene: s, origins, findings, .. } = arena;
+    for (i, (j, at)) in s.joints.iter().zip(origins.joints.iter()).enumerate() {
+        let (Some(a), Some(b)) = (s.bodies.get(j.body_a as usize), s.bodies.get(j.body_b as usize))
+        else {
+            continue;
+        };
+        let (metres, radians) = violation(j, a, b);
+        let linear = metres > f64::from(LINEAR_SLOP);
+        let angular = radians > ANGULAR_SLOP;
+        let how = match (linear, angular) {
+            (false, false) => continue,
+            (true, false) => format!("{metres:.3} m"),
+            (false, true) => format!("{radians:.3} rad"),
+            (true, true) => format!("{metres:.3} m and {radians:.3} rad"),
+        };
+        let message = format!(
+            "joint {i} starts {how} from satisfied where the file places bodies {} and {}; \
+             an engine pulls them together in its first steps",
+            j.body_a, j.body_b
+        );
+        findings.note(at.body_a.finding(Code::JointStartsViolated, message))?;
     }
     Ok(())
 }

@@ -69,9 +69,9 @@ fn read_split<'a>(
                 Ok(arena)
             }
             Err(halt) => {
-                let mut errors = arena.take_errors();
+                let mut errors = arena.findings.take_errors();
                 errors.push(tok.place(*halt.into_problem()));
-                Err(Stopped { errors, warnings: arena.take_warnings() })
+                Err(Stopped { errors, warnings: arena.findings.take_warnings() })
             }
         };
         (read, Placer::new(tok.into_source()))
@@ -109,11 +109,11 @@ impl<'a> Reader<'a> {
         Reader { tok, arena, object: Object::World, within: "" }
     }
 
-    /// An error the reading can go on past (see [`Arena::recover`]), placed at its line and
-    /// column while its text is at hand.
+    /// An error the reading can go on past (see [`crate::arena::Findings::recover`]), placed
+    /// at its line and column while its text is at hand.
     pub fn recover(&mut self, error: Finding) -> Reading<()> {
         let error = self.tok.place(error);
-        Ok(self.arena.recover(Box::new(error))?)
+        Ok(self.arena.findings.recover(Box::new(error))?)
     }
 
     /// What `checked` gives, or `otherwise` after its error when the reading goes on past
@@ -169,7 +169,7 @@ impl<'a> Reader<'a> {
     /// [`Tokenizer::place`]).
     pub fn note(&mut self, warning: Finding) -> Reading<()> {
         let warning = self.tok.place(warning);
-        Ok(self.arena.note(warning)?)
+        Ok(self.arena.findings.note(warning)?)
     }
 
     /// Warns that `what` needs Version 2 when the file says less.

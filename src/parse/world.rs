@@ -55,7 +55,7 @@ impl<'a> Reader<'a> {
             if !seen.contains(WorldChild::of(container)) {
                 let message = format!("the file has no <{}>; read as empty", container.name());
                 let missing = self.arena.origins.world.finding(Code::MissingContainer, message);
-                self.arena.note(missing)?;
+                self.arena.findings.note(missing)?;
             }
         }
         Ok(())

@@ -19,7 +19,7 @@ fn outcome(bytes: &[u8], options: &LoadOptions, split: Option<(Vec<Boundary>, us
 fn shown(read: Result<Arena, super::super::Stopped>) -> String {
     match read {
         Ok(mut arena) => {
-            let warnings = format!("warnings: {:?}\n", arena.take_warnings());
+            let warnings = format!("warnings: {:?}\n", arena.findings.take_warnings());
             let origins = format!("version {}, {:?}\n", arena.version, arena.origins);
             let scene = arena.scene.freeze();
             crate::dump::to_json(&scene) + &records(&scene) + &warnings + &origins
@@ -511,7 +511,7 @@ fn pieces_with_warnings_are_taken_and_kept_in_order() {
         );
         read(&mut reader, helper).unwrap();
     });
-    let warnings = reader.arena.take_warnings();
+    let warnings = reader.arena.findings.take_warnings();
     let wind: Vec<_> = theirs.match_indices("<Wind/>").map(|(at, _)| at).collect();
     let found: Vec<_> = warnings.iter().map(|w| (w.code, w.at)).collect();
     assert_eq!(found, wind.iter().map(|&at| (Code::UnknownElement, at)).collect::<Vec<_>>());
