@@ -174,6 +174,25 @@ fn a_check_ends_after_a_hundred_errors_of_references_too() {
     assert!(checked.errors.iter().all(|e| e.code == Code::IdOutOfRange));
 }
 
+/// Past a hundred errors, the ones kept are still the first in the file, whichever check
+/// found them first: here the joints' unknown bodies come before the fixtures' unknown
+/// shapes in the file, and there are hundreds of each.
+#[test]
+fn the_hundred_errors_kept_are_the_first_in_the_file() {
+    let joints = "<Joint Type=\"Weld\"><BodyA>7</BodyA><BodyB>0</BodyB></Joint>\n".repeat(300);
+    let fixtures = "<Fixture><Shape>5</Shape></Fixture>\n".repeat(300);
+    let xml = format!(
+        "<World Version=\"1\">\n<Joints>\n{joints}</Joints>\n<Shapes/><Fixtures>\n{fixtures}\
+         </Fixtures>\n<Bodies><Body Type=\"Static\"/></Bodies>\n</World>"
+    );
+    let checked = check(xml.as_bytes(), &LoadOptions::default());
+    let lines: Vec<u32> = checked.errors.iter().map(|e| e.position.line).collect();
+    assert_eq!(lines, (3..104).collect::<Vec<_>>(), "{:#?}", &checked.errors[..3]);
+    assert!(checked.errors.iter().all(|e| e.message.starts_with("joint ")));
+    let first = load(xml.as_bytes(), &LoadOptions::default()).unwrap_err();
+    assert_eq!(first, checked.errors[0]);
+}
+
 /// A file without errors checks as the scene a load gives, with the same warnings.
 #[test]
 fn a_file_without_errors_checks_as_it_loads() {

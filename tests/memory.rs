@@ -165,3 +165,58 @@ fn max_input_bytes_bounds_a_utf16_stream() {
         assert!(held < 4 * max as usize, "{held} bytes held reading a 64 MiB pipe (utf16 {utf16})");
     }
 }
+
+/// The most bytes a load of `xml` from memory held at once beyond what was held before it,
+/// and whether it gave a scene. The caller holds [`alone`].
+fn extra_bytes_loading(xml: &str) -> (usize, bool) {
+    let mut loaded = false;
+    let extra = extra_bytes_while(|| loaded = load_bytes(xml.as_bytes()).is_ok());
+    (extra, loaded)
+}
+
+/// What the checks after the read find costs no memory for each finding beyond those a
+/// load keeps: a hundred thousand fixtures that name no shape, or a hundred thousand joints
+/// that start apart, hold about what the same file holds with every fixture and joint
+/// right (the same bytes but one digit each).
+#[test]
+fn the_checks_after_the_read_hold_no_finding_each() {
+    let _alone = alone();
+    let count = 100_000;
+    let fixtures = |shape: u32| {
+        let fixture = format!("<Fixture><Shape>{shape}</Shape></Fixture>\n");
+        format!(
+            "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>1</Radius>\
+             <Position>0 0</Position></Shape></Shapes><Fixtures>\n{}</Fixtures><Bodies/><Joints/></World>",
+            fixture.repeat(count)
+        )
+    };
+    let (right, loaded) = extra_bytes_loading(&fixtures(0));
+    assert!(loaded);
+    let (broken, loaded) = extra_bytes_loading(&fixtures(1));
+    assert!(!loaded, "a fixture that names no shape is an error");
+    assert!(
+        broken < right + (1 << 20),
+        "{count} fixtures naming no shape held {broken} bytes, naming one {right}"
+    );
+    let joints = |x: u32| {
+        let joint = format!(
+            "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB>\
+             <LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>{x} 0</LocalAnchorB></Joint>\n"
+        );
+        let body = "<Body Type=\"Static\"><Position>0 0</Position></Body>";
+        format!(
+            "<World Version=\"1\"><Shapes/><Fixtures/><Bodies>{body}{body}</Bodies>\
+             <Joints>\n{}</Joints></World>",
+            joint.repeat(count)
+        )
+    };
+    let (satisfied, loaded) = extra_bytes_loading(&joints(0));
+    assert!(loaded);
+    let (apart, loaded) = extra_bytes_loading(&joints(5));
+    assert!(loaded);
+    // The thousand warnings kept, and the scene's diagnostics made of them.
+    assert!(
+        apart < satisfied + (2 << 20),
+        "{count} joints that start apart held {apart} bytes, that start satisfied {satisfied}"
+    );
+}

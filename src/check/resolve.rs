@@ -7,7 +7,7 @@
 
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, Problem};
+use crate::error::{Code, MAX_ERRORS, Parsed, Problem};
 use crate::place::Spot;
 use crate::rules;
 use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
@@ -184,11 +184,11 @@ fn has(n: usize, one: &str, many: &str) -> String {
     format!("the file has {n} {}", if n == 1 { one } else { many })
 }
 
-/// Checks every ID against its container, and the gear joints' targets: the errors, in the
-/// order of the file.
+/// Checks every ID against its container, and the gear joints' targets: the first errors,
+/// in the order of the file (see [`FirstErrors`]).
 fn check_references(p: &Arena) -> Vec<Problem> {
     let s = &p.scene;
-    let mut errors: Vec<Problem> = Vec::new();
+    let mut errors = FirstErrors::default();
     for (i, (f, at)) in s.fixtures.iter().zip(p.origins.fixture_shapes.iter()).enumerate() {
         if f.shape as usize >= s.shapes.len() {
             let why = format!(
@@ -199,22 +199,24 @@ fn check_references(p: &Arena) -> Vec<Problem> {
             errors.push(placed(Code::IdOutOfRange, at, why));
         }
     }
-    // Each unknown fixture ID by its index in the pool: their spots are found together.
-    let mut unknown_fixtures = Vec::new();
+    // Each unknown fixture ID by its index in the pool, with its body: their spots are
+    // found together.
+    let (mut pool_indices, mut bodies) = (Vec::new(), Vec::new());
     for (i, b) in s.bodies.iter().enumerate() {
         for k in b.fixtures.indices() {
-            let id = s.fixture_ids[k];
-            if id as usize >= s.fixtures.len() {
-                let why = format!(
-                    "body {i} names fixture {id}, but {}",
-                    has(s.fixtures.len(), "fixture", "fixtures")
-                );
-                unknown_fixtures.push((k, why));
+            if s.fixture_ids[k] as usize >= s.fixtures.len() {
+                pool_indices.push(k);
+                bodies.push(i);
             }
         }
     }
-    let (pool_indices, whys): (Vec<usize>, Vec<String>) = unknown_fixtures.into_iter().unzip();
-    for (at, why) in p.origins.fixture_ids.at(&pool_indices).into_iter().zip(whys) {
+    let spots = p.origins.fixture_ids.at(&pool_indices);
+    for ((at, k), i) in spots.into_iter().zip(pool_indices).zip(bodies) {
+        let why = format!(
+            "body {i} names fixture {}, but {}",
+            s.fixture_ids[k],
+            has(s.fixtures.len(), "fixture", "fixtures")
+        );
         errors.push(placed(Code::IdOutOfRange, at, why));
     }
     for (i, (j, at)) in s.joints.iter().zip(p.origins.joints.iter()).enumerate() {
@@ -246,8 +248,37 @@ fn check_references(p: &Arena) -> Vec<Problem> {
             )));
         }
     }
-    errors.sort_by_key(|e| e.order());
-    errors
+    errors.into_sorted()
+}
+
+/// The first errors in the order of the file, of however many are found: as many as a load
+/// that goes on past errors records, and the one after them, which ends it (see
+/// [`crate::arena::Findings::recover`]). A file of a million broken references holds no
+/// million errors: whenever twice that many are held, the later half is let go.
+#[derive(Default)]
+struct FirstErrors(Vec<Problem>);
+
+impl FirstErrors {
+    const KEPT: usize = MAX_ERRORS + 1;
+
+    fn push(&mut self, error: Problem) {
+        self.0.push(error);
+        if self.0.len() == 2 * FirstErrors::KEPT {
+            self.settle();
+        }
+    }
+
+    /// Sorted by place in the file (stable: errors at one place stay in the order found),
+    /// the first kept.
+    fn settle(&mut self) {
+        self.0.sort_by_key(|e| e.order());
+        self.0.truncate(FirstErrors::KEPT);
+    }
+
+    fn into_sorted(mut self) -> Vec<Problem> {
+        self.settle();
+        self.0
+    }
 }
 
 /// A problem at `spot`.
