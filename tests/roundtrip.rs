@@ -355,6 +355,44 @@ fn an_ignored_centroid_round_trips() {
     }
 }
 
+/// Fuzz finding (roundtrip target): a `Line` joint with a spring is read as a Wheel joint,
+/// but its children are read as a Line joint's, so an `<Axis>` in it (a Wheel's, not a
+/// Line's) was ignored and kept, then written back inside the `Wheel` joint, where it is
+/// read: the axis changed. An element that does not belong in a Line joint but does in a
+/// Wheel joint is not kept; one that belongs in neither still is.
+#[test]
+fn fuzz_roundtrip_a_line_joints_wheel_element_is_not_written_back() {
+    let joint = |extra: &str| {
+        format!(
+            "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+             <Body Type=\"Dynamic\"/></Bodies><Joints><Joint Type=\"Line\"><BodyA>0</BodyA>\
+             <BodyB>1</BodyB>{extra}<Axis>1 1</Axis><LowerAngle>1</LowerAngle></Joint>\
+             </Joints></World>"
+        )
+    };
+    for (extra, kind) in [("<FrequencyHz>4</FrequencyHz>", JointKind::Wheel), ("", JointKind::Line)]
+    {
+        let xml = joint(extra);
+        let scene = load_text(&xml);
+        let j = &scene.joints()[0];
+        assert_eq!((j.kind(), j.local_axis_a), (Some(kind), box2scene::Vec2 { x: 1.0, y: 0.0 }));
+        let ignored: Vec<_> = (scene.diagnostics().iter())
+            .filter(|d| d.code() == Some(Code::UnknownElement))
+            .map(|d| scene.text(d.message).unwrap())
+            .collect();
+        assert_eq!(
+            ignored,
+            [
+                "<Axis> does not belong in a Line joint; ignored",
+                "<LowerAngle> does not belong in a Line joint; ignored"
+            ]
+        );
+        let written = assert_round_trip(&scene, &xml);
+        assert!(!written.contains("<Axis>"), "{written}");
+        assert!(written.contains("<LowerAngle>1</LowerAngle>"), "{written}");
+    }
+}
+
 /// A scene loaded with limits above the defaults may hold a name or UserData that a load
 /// with the default options would refuse from the written file: the writer refuses the
 /// scene, naming the object and the field, rather than write a file that does not load.

@@ -177,7 +177,14 @@ impl<'a> Reader<'a> {
             if !common && !legacy_body && slot.is_none() {
                 let message =
                     format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
-                self.ignore(&child, message)?;
+                // Kept for the writer, unless the kind the joint may end as reads it: a Line
+                // joint may be read as a Wheel (`line_is_wheel`), and written back as one,
+                // where the element would be read.
+                let wheel = row.and_then(|row| row.slot(JointKind::Wheel));
+                match kind == JointKind::Line && wheel.is_some() {
+                    true => self.discard(&child, message)?,
+                    false => self.ignore(&child, message)?,
+                }
                 continue;
             }
             if repeated {
