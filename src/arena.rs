@@ -224,8 +224,8 @@ impl Findings {
         }
     }
 
-    /// Appends the warnings of `other`, found after these in the text from `start` on (the
-    /// errors of a reading that went on past them are not appended: such a reading is not).
+    /// Appends the warnings of `other`, found after these in the text from `start` on. It
+    /// has no errors: a piece whose reading found one is never appended.
     fn append(&mut self, other: Findings, start: Position) {
         let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
         for warning in other.warnings {
