@@ -470,14 +470,19 @@ impl<'a> Pieces<'a> {
         }
     }
 
-    /// The bytes of the text from `from` to `to` (within it), which may cut a character.
-    pub fn bytes(&self, from: usize, to: usize) -> Option<Cow<'a, [u8]>> {
+    /// The bytes of the text from `from` to `to` (within it), which may cut a character: a
+    /// file's read into `buffer`, which they borrow (see [`Pieces::source`]).
+    pub fn bytes<'s>(
+        &'s self,
+        from: usize,
+        to: usize,
+        buffer: &'s mut Vec<u8>,
+    ) -> Option<&'s [u8]> {
         match self {
-            Pieces::Memory { text, .. } => text.as_bytes().get(from..to).map(Cow::Borrowed),
+            Pieces::Memory { text, .. } => text.as_bytes().get(from..to),
             Pieces::File { .. } => {
-                let mut bytes = Vec::new();
-                self.read_into(from, to, &mut bytes)?;
-                Some(Cow::Owned(bytes))
+                self.read_into(from, to, buffer)?;
+                Some(buffer)
             }
         }
     }
@@ -518,10 +523,9 @@ impl<'a> Pieces<'a> {
     }
 
     /// Reads the bytes of a file's text from `from` to `to` into `buffer`, in place of what
-    /// it held.
+    /// it held (only what it grows by is zeroed first: the read writes every byte).
     fn read_into(&self, from: usize, to: usize, buffer: &mut Vec<u8>) -> Option<()> {
         let Pieces::File { file, bom, .. } = self else { return None };
-        buffer.clear();
         buffer.resize(to.checked_sub(from)?, 0);
         read_exact_at(file, buffer, bom + from as u64).ok()
     }

@@ -83,7 +83,7 @@ fn pieces_of_a_file_come_from_the_file_opened_not_its_path() {
         panic!("a UTF-8 file being read has pieces")
     };
     assert_eq!(pieces.len(), text("a").len());
-    assert_eq!(&*pieces.bytes(150_000, 150_004).unwrap(), b"aaaa");
+    assert_eq!(pieces.bytes(150_000, 150_004, &mut Vec::new()).unwrap(), b"aaaa");
     let mut buffer = Vec::new();
     let piece = pieces.source(100_000, 100_010, &mut buffer).unwrap();
     assert_eq!(piece.slice(100_000, 100_010), "aaaaaaaaaa");

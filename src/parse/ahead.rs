@@ -171,7 +171,7 @@ const ROOT_BYTES: usize = 16 << 10;
 /// on, found by a scan of the whole text, while `wanted` (asked at every [`SCAN_BYTES`]).
 /// An item is a start tag directly in an element of the root, here one of the world's
 /// containers, whose item it names.
-fn boundaries(text: &Pieces, wanted: impl Fn() -> bool) -> Vec<Boundary> {
+fn boundaries(text: &Pieces, wanted: impl Fn() -> bool, buffer: &mut Vec<u8>) -> Vec<Boundary> {
     let len = text.len();
     let pieces = (len / PIECE_BYTES).clamp(2, MAX_PIECES);
     let step = len / pieces;
@@ -179,8 +179,8 @@ fn boundaries(text: &Pieces, wanted: impl Fn() -> bool) -> Vec<Boundary> {
     let (mut scanner, mut parent) = (Scanner::new(), None);
     while scanner.scanned() < len && boundaries.len() < pieces - 1 && wanted() {
         let from = scanner.scanned();
-        let Some(bytes) = text.bytes(from, (from + SCAN_BYTES).min(len)) else { break };
-        scanner.scan(&bytes, from);
+        let Some(bytes) = text.bytes(from, (from + SCAN_BYTES).min(len), buffer) else { break };
+        scanner.scan(bytes, from);
         if scanner.scanned() == from {
             // Markup the scan cannot read: the reader stops there.
             break;
@@ -194,7 +194,7 @@ fn boundaries(text: &Pieces, wanted: impl Fn() -> bool) -> Vec<Boundary> {
             {
                 continue;
             }
-            boundaries.extend(in_container(text, item, &mut parent));
+            boundaries.extend(in_container(text, item, &mut parent, buffer));
         }
     }
     boundaries
@@ -207,19 +207,22 @@ fn in_container(
     text: &Pieces,
     item: Item,
     parent: &mut Option<(usize, Option<Container>)>,
+    buffer: &mut Vec<u8>,
 ) -> Option<Boundary> {
     if parent.is_none_or(|(at, _)| at != item.parent) {
-        let container = Container::ALL.into_iter().find(|c| names(text, item.parent, c.name()));
+        let container =
+            Container::ALL.into_iter().find(|c| names(text, item.parent, c.name(), buffer));
         *parent = Some((item.parent, container));
     }
     let container = (*parent)?.1?;
-    names(text, item.at, container.item()).then_some((item.at, container))
+    names(text, item.at, container.item(), buffer).then_some((item.at, container))
 }
 
-/// Whether the start tag at `at` names the element `name`.
-fn names(text: &Pieces, at: usize, name: &str) -> bool {
-    let Some(tag) = text.bytes(at, (at + name.len() + 2).min(text.len())) else { return false };
-    let [b'<', rest @ ..] = &tag[..] else { return false };
+/// Whether the start tag at `at` names the element `name` (a file's read into `buffer`).
+fn names(text: &Pieces, at: usize, name: &str, buffer: &mut Vec<u8>) -> bool {
+    let to = (at + name.len() + 2).min(text.len());
+    let Some(tag) = text.bytes(at, to, buffer) else { return false };
+    let [b'<', rest @ ..] = tag else { return false };
     rest.strip_prefix(name.as_bytes())
         .and_then(|after| after.first())
         .is_some_and(|&b| ENDS_NAME[usize::from(b)])
@@ -240,7 +243,7 @@ fn help(
     let mut buffer = Vec::new();
     // The scan stops once the calling thread is done: the load waits for this thread.
     let wanted = || claims.lock().unwrap_or_else(PoisonError::into_inner).caller != usize::MAX;
-    let boundaries = found.get_or_init(|| boundaries(&text, wanted));
+    let boundaries = found.get_or_init(|| boundaries(&text, wanted, &mut buffer));
     let Some(&(first, _)) = boundaries.first() else { return buffer };
     let Some((root, version)) = root(&text, options, first, &mut buffer) else {
         return buffer;
@@ -275,8 +278,8 @@ fn root(
     first: usize,
     buffer: &mut Vec<u8>,
 ) -> Option<(Tag, u32)> {
-    let head = text.bytes(0, first.min(ROOT_BYTES))?;
-    let end = memchr::memrchr(b'<', &head)?;
+    let head = text.bytes(0, first.min(ROOT_BYTES), buffer)?;
+    let end = memchr::memrchr(b'<', head)?;
     let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options), false);
     let root = reader.root().ok()?;
     reader.read_version(&root).ok()?;

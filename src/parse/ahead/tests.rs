@@ -82,7 +82,7 @@ fn container_items(bytes: &[u8]) -> Vec<Boundary> {
     scanner
         .take_items()
         .into_iter()
-        .filter_map(|item| in_container(&text, item, &mut parent))
+        .filter_map(|item| in_container(&text, item, &mut parent, &mut Vec::new()))
         .collect()
 }
 
@@ -91,7 +91,8 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
     for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
         let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-        let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
+        let found =
+            boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
         assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
         let step = text.len() / pieces;
         for (k, &(at, container)) in (1..).zip(&found) {
@@ -103,7 +104,8 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
     assert_eq!(
         boundaries(
             &Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false },
-            || true
+            || true,
+            &mut Vec::new()
         ),
         []
     );
@@ -116,17 +118,21 @@ fn the_scan_stops_when_its_pieces_are_no_longer_wanted() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
     let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(100_000));
     let text = Pieces::Memory { text: &text, bom: false };
-    assert_eq!(boundaries(&text, || false), []);
+    assert_eq!(boundaries(&text, || false, &mut Vec::new()), []);
     // Wanted for two windows: asked a third time, and no piece found, the first lying
     // past them.
     let asked = std::cell::Cell::new(0);
-    let found = boundaries(&text, || {
-        asked.set(asked.get() + 1);
-        asked.get() <= 2
-    });
+    let found = boundaries(
+        &text,
+        || {
+            asked.set(asked.get() + 1);
+            asked.get() <= 2
+        },
+        &mut Vec::new(),
+    );
     assert_eq!(asked.get(), 3);
     assert_eq!(found, []);
-    assert_eq!(boundaries(&text, || true).len(), 14);
+    assert_eq!(boundaries(&text, || true, &mut Vec::new()).len(), 14);
 }
 
 /// Only an item is where a piece begins: not a body in a comment, in CDATA, in a quoted
@@ -157,7 +163,7 @@ fn pieces_begin_only_at_items() {
         }
     }
     text += "</Bodies></World>";
-    let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
+    let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
     assert_eq!(found.len(), 3);
     for &(at, container) in &found {
         assert_eq!(container, Container::Bodies);
@@ -399,7 +405,7 @@ fn a_large_scene_loads_on_two_threads_as_on_one() {
     text += "</Joints></World>";
     let bytes = text.as_bytes();
     assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-    let pieces = boundaries(&Pieces::Memory { text: &text, bom: false }, || true);
+    let pieces = boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
     assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
     let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
     for container in Container::ALL {
@@ -558,7 +564,7 @@ fn every_piece_cut_at_the_found_items_can_be_taken() {
     }
     text += "</Joints></World>";
     let pieces = Pieces::Memory { text: &text, bom: false };
-    let found = boundaries(&pieces, || true);
+    let found = boundaries(&pieces, || true, &mut Vec::new());
     assert!(found.len() >= 8, "{} pieces", found.len());
     assert!(found.iter().any(|&(_, container)| container == Container::Joints));
     let options = LoadOptions::default();

@@ -96,16 +96,18 @@ impl<'a> Tokenizer<'a> {
     /// Ends the reading before the items at `ends` (offsets in order, each with the name
     /// of the container it is assumed to be in) where it can: the text at hand ends at each
     /// in turn, and where the reading reaches it directly in that container in the root,
-    /// with nothing read waiting, it stops there with [`Halt::PieceEnd`](super::Halt::PieceEnd) before the item.
-    /// Where it cannot, the reading goes on past it.
+    /// with nothing read waiting, it stops there with [`Halt::PieceEnd`](super::Halt::PieceEnd)
+    /// before the item. Where it cannot, and at the ends it is already past, the reading
+    /// goes on.
     pub fn end_before(&mut self, ends: Vec<(usize, Name)>) {
-        (self.ends, self.next_end) = (ends, 0);
+        let pos = self.pos;
+        let passed = ends.partition_point(|&(at, _)| at <= pos);
+        (self.ends, self.next_end) = (ends, passed);
         self.aim();
     }
 
     /// [`Tokenizer::end_before`] with ends that are still being found: `found` gives them
-    /// once they are, and is asked each time more text is read until then. The ends the
-    /// reading has reached by then are passed.
+    /// once they are, and is asked each time more text is read until then.
     pub fn end_before_found(&mut self, found: FoundEnds<'a>) {
         self.found = Some(found);
         self.take_found_ends();
@@ -113,12 +115,10 @@ impl<'a> Tokenizer<'a> {
 
     /// The ends of [`Tokenizer::end_before_found`], once they are found.
     pub(super) fn take_found_ends(&mut self) {
-        let Some(ends) = self.found.as_mut().and_then(|found| found()) else { return };
-        self.found = None;
-        let pos = self.pos;
-        let passed = ends.partition_point(|&(at, _)| at <= pos);
-        (self.ends, self.next_end) = (ends, passed);
-        self.aim();
+        if let Some(ends) = self.found.as_mut().and_then(|found| found()) {
+            self.found = None;
+            self.end_before(ends);
+        }
     }
 
     /// The end the reading stopped at, by its index among them; the reading goes on past
