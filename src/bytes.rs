@@ -140,6 +140,18 @@ pub(crate) fn trimmed_span(text: &[u8]) -> (usize, usize) {
     (start, end)
 }
 
+/// Whether `text` is plain: no reference (`&`) or carriage return in it, which a reader must
+/// resolve or normalise. Values are short: eight bytes at a time, then one at a time.
+#[inline]
+pub(crate) fn is_plain(text: &[u8]) -> bool {
+    let words = text.chunks_exact(8);
+    let tail = words.remainder();
+    words.flat_map(<[u8; 8]>::try_from).all(|eight| {
+        let word = u64::from_le_bytes(eight);
+        first_equal(word, b'&') | first_equal(word, b'\r') == 0
+    }) && !tail.iter().any(|&b| b == b'&' || b == b'\r')
+}
+
 /// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
 /// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
 /// rest.
@@ -194,12 +206,11 @@ pub(crate) fn tag_end(tag: &[u8]) -> Option<usize> {
 /// The bytes the scan stage looks at a block at a time.
 pub(crate) const BLOCK: usize = 64;
 
-/// The masks of the bytes of `block` that are each of `sets` (one byte, or either of two):
-/// bit `i` of a mask for byte `i`. The block is loaded once for all of them. With SSE2,
-/// which every x86-64 machine has, sixteen bytes are compared in one instruction; elsewhere a
-/// byte at a time.
+/// The masks of the bytes of `block` that are each of `bytes`: bit `i` of a mask for byte
+/// `i`. The block is loaded once for all of them. With SSE2, which every x86-64 machine has,
+/// sixteen bytes are compared in one instruction; elsewhere a byte at a time.
 #[inline(always)]
-pub(crate) fn block_masks<const K: usize>(block: &[u8; BLOCK], sets: [[u8; 2]; K]) -> [u64; K] {
+pub(crate) fn block_masks<const K: usize>(block: &[u8; BLOCK], bytes: [u8; K]) -> [u64; K] {
     #[cfg(target_arch = "x86_64")]
     {
         use safe_arch::{
@@ -209,9 +220,8 @@ pub(crate) fn block_masks<const K: usize>(block: &[u8; BLOCK], sets: [[u8; 2]; K
         for (k, sixteen) in block.chunks_exact(16).enumerate() {
             let Ok(sixteen) = <&[u8; 16]>::try_from(sixteen) else { continue };
             let v = load_unaligned_m128i(sixteen);
-            for (mask, [a, b]) in masks.iter_mut().zip(sets) {
-                let hits = cmp_eq_mask_i8_m128i(v, set_splat_i8_m128i(a as i8))
-                    | cmp_eq_mask_i8_m128i(v, set_splat_i8_m128i(b as i8));
+            for (mask, b) in masks.iter_mut().zip(bytes) {
+                let hits = cmp_eq_mask_i8_m128i(v, set_splat_i8_m128i(b as i8));
                 *mask |= u64::from(move_mask_i8_m128i(hits) as u16) << (16 * k);
             }
         }
@@ -219,7 +229,7 @@ pub(crate) fn block_masks<const K: usize>(block: &[u8; BLOCK], sets: [[u8; 2]; K
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
-        sets.map(|set| (0..BLOCK).fold(0, |mask, i| mask | u64::from(set.contains(&block[i])) << i))
+        bytes.map(|b| (0..BLOCK).fold(0, |mask, i| mask | u64::from(block[i] == b) << i))
     }
 }
 

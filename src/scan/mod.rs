@@ -9,6 +9,11 @@
 //! carries its state from one window of the text to the next, so a delimiter cut by the end
 //! of a window is found once more text comes. It checks nothing: where the text is not
 //! well-formed it stops or lists what it saw, and the reader reports the problem.
+//!
+//! For the reader it also marks every piece of markup ([`Mark`]: a tag, an end tag, a
+//! comment, CDATA, a processing instruction, from its `<` to its last byte), in order. The
+//! reader walks them through an [`Index`], which scans a chunk of the text ahead of it at a
+//! time: it looks for no delimiter of markup itself.
 #![forbid(unsafe_code)]
 
 use crate::bytes::{BLOCK, block_masks, tag_end};
@@ -25,6 +30,17 @@ pub(crate) struct Item {
     pub parent: usize,
     pub elements_before: u64,
     pub after_markup: bool,
+}
+
+/// A piece of markup: a tag, an end tag, a comment, CDATA or a processing instruction, from
+/// its `<` (`at`) to its last byte (`end`: the `>` that ends it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Mark {
+    pub at: usize,
+    pub end: usize,
+    /// Markup after which nothing can be read (see [`Mode::Stopped`]): `end` is where the
+    /// scan stopped in it (the `--` of a comment that does not end there).
+    pub stops: bool,
 }
 
 /// Where the scanned text stands.
@@ -49,6 +65,27 @@ pub(crate) struct Scanner {
     /// The tally where the last markup other than a tag began.
     markup: Option<Tally>,
     items: Vec<Item>,
+    /// The marks, when they are made (see [`Index`]), and what they carry from one call to
+    /// the next.
+    marks: Marks,
+}
+
+/// The marks of a scan: whether it makes them, those found, and the start of the comment,
+/// CDATA or processing instruction the scan is in.
+#[derive(Default)]
+struct Marks {
+    on: bool,
+    list: Vec<Mark>,
+    open: Option<usize>,
+}
+
+impl Marks {
+    /// The markup begun (the comment, CDATA or processing instruction) ends at `end`.
+    fn close(&mut self, end: usize, stops: bool) {
+        if let Some(at) = self.open.take() {
+            self.list.push(Mark { at, end, stops });
+        }
+    }
 }
 
 /// What the scan counts as it goes: a value, which the loop over the tags keeps in
@@ -71,7 +108,16 @@ impl Scanner {
             tally: Tally::default(),
             markup: None,
             items: Vec::new(),
+            marks: Marks::default(),
         }
+    }
+
+    /// A scan that marks the markup, from offset `at` of a text, between markup.
+    fn marking(at: usize) -> Scanner {
+        let mut scanner = Scanner::new();
+        scanner.at = at;
+        scanner.marks.on = true;
+        scanner
     }
 
     /// The offset up to which the text is scanned: the next call is given the text from
@@ -108,7 +154,12 @@ impl Scanner {
     /// Text and tags up to other markup; true when the text at hand is too short to go on
     /// (markup it cuts).
     fn text(&mut self, rest: &[u8]) -> bool {
-        let (tally, stop) = tags(rest, self.at, self.tally, self.markup, &mut self.items);
+        let (at, tally, markup) = (self.at, self.tally, self.markup);
+        let (items, marks) = (&mut self.items, &mut self.marks.list);
+        let (tally, stop) = match self.marks.on {
+            true => tags::<true>(rest, at, tally, markup, items, marks),
+            false => tags::<false>(rest, at, tally, markup, items, marks),
+        };
         self.tally = tally;
         match stop {
             Stop::End => {
@@ -119,10 +170,16 @@ impl Scanner {
                 self.at = at;
                 true
             }
-            Stop::Markup(at, mode) => {
+            Stop::Markup(lt, at, mode) => {
                 self.markup = Some(tally);
                 self.at = at;
                 self.mode = mode;
+                if self.marks.on {
+                    self.marks.open = Some(lt);
+                    if mode == Mode::Stopped {
+                        self.marks.close(lt, true);
+                    }
+                }
                 false
             }
         }
@@ -141,9 +198,11 @@ impl Scanner {
         };
         self.at += i;
         if after == b'>' {
+            self.marks.close(self.at + 2, false);
             self.at += 3;
             self.mode = Mode::Text;
         } else {
+            self.marks.close(self.at, true);
             self.mode = Mode::Stopped;
         }
         false
@@ -159,30 +218,111 @@ impl Scanner {
             return keep == rest.len();
         };
         self.at += i + delimiter.len();
+        self.marks.close(self.at - 1, false);
         self.mode = Mode::Text;
         false
     }
 }
 
+/// How much text an [`Index`] scans ahead of the reader at a time.
+const CHUNK: usize = 16 << 10;
+
+/// The scan of the text a reader reads, a chunk ahead of it: the marks of its markup, in
+/// order, which the reader takes one by one as it reads each.
+pub(crate) struct Index {
+    scanner: Scanner,
+    /// The next mark the reader takes, in the scanner's list.
+    next: usize,
+}
+
+impl Index {
+    /// An index of the text from offset `at` on, which is between markup.
+    pub fn new(at: usize) -> Index {
+        Index { scanner: Scanner::marking(at), next: 0 }
+    }
+
+    /// The offset up to which the text is scanned: the text from there on must stay at hand.
+    pub fn scanned(&self) -> usize {
+        self.scanner.at
+    }
+
+    /// The next mark of the text at hand, `text`, which starts at offset `base`: scans on
+    /// when the marks found are all taken. None when the text at hand holds no more (the
+    /// end of its next markup is not in it).
+    #[inline(always)]
+    pub fn next(&mut self, text: &[u8], base: usize) -> Option<Mark> {
+        match self.scanner.marks.list.get(self.next) {
+            Some(&mark) => Some(mark),
+            None => self.scan_on(text, base),
+        }
+    }
+
+    /// Takes the next mark, which the reader has read past.
+    #[inline(always)]
+    pub fn take(&mut self) {
+        self.next += 1;
+    }
+
+    /// Takes the next mark, that of the markup at `at`, read without it.
+    #[inline(always)]
+    pub fn pass(&mut self, at: usize, text: &[u8], base: usize) {
+        let mark = self.next(text, base);
+        debug_assert_eq!(mark.map(|mark| mark.at), Some(at), "the reader passes the markup marked");
+        self.next += 1;
+    }
+
+    /// Where the next markup begins when the text at hand holds its start but not its end
+    /// (its mark is not made yet).
+    pub fn next_start(&self, text: &[u8], base: usize) -> Option<usize> {
+        let at = self.scanner.at;
+        self.scanner.marks.open.or((text.get(at - base) == Some(&b'<')).then_some(at))
+    }
+
+    /// Scans on, a chunk at a time, until a mark is found or the text at hand ends.
+    #[inline(never)]
+    fn scan_on(&mut self, text: &[u8], base: usize) -> Option<Mark> {
+        self.scanner.marks.list.clear();
+        self.next = 0;
+        loop {
+            let from = self.scanner.at;
+            let rest = &text[from - base..];
+            let chunk = &rest[..rest.len().min(CHUNK)];
+            self.scanner.scan(chunk, from);
+            if let Some(&mark) = self.scanner.marks.list.first() {
+                return Some(mark);
+            }
+            if self.scanner.at == from || chunk.len() == rest.len() {
+                if self.scanner.at == from && chunk.len() < rest.len() {
+                    // Markup longer than a chunk: the rest of the text at hand is scanned.
+                    self.scanner.scan(rest, from);
+                }
+                return self.scanner.marks.list.first().copied();
+            }
+        }
+    }
+}
+
 /// Where [`tags`] stopped: at the end of the text, at markup the text cuts, or after the
-/// start of other markup, whose mode the scan goes on in.
+/// start of other markup (its `<`, where the scan goes on, and the mode it goes on in).
 enum Stop {
     End,
     Cut(usize),
-    Markup(usize, Mode),
+    Markup(usize, usize, Mode),
 }
 
 /// The tags of `rest`, text that starts at offset `start`, up to other markup, counted into
-/// `tally`, the items pushed on `items`. A block's masks of `<`, `>` and quotes give each
-/// tag: its end is the first `>` after its `<`, unless a quote comes before it, and then it
-/// is looked for in the bytes, past the quoted values. The byte after a `<` tells start tags
-/// from end tags and sends the rest of markup to [`classify`].
-fn tags(
+/// `tally`, the items pushed on `items` (and with `MARK`, every tag and end tag on `marks`).
+/// A block's masks of `<`, `>` and quotes give each tag: its end is the first `>` after its
+/// `<` outside quoted values (see [`in_block`]), or when the block does not hold it, is
+/// looked for in the bytes. The byte after a `<` tells start tags from end tags and sends
+/// the rest of markup to [`classify`].
+fn tags<const MARK: bool>(
     rest: &[u8],
     start: usize,
     mut tally: Tally,
     markup: Option<Tally>,
     items: &mut Vec<Item>,
+    marks: &mut Vec<Mark>,
 ) -> (Tally, Stop) {
     let mut from = 0;
     'blocks: while from < rest.len() {
@@ -195,38 +335,43 @@ fn tags(
                 &padded
             }
         };
-        let [mut lts, gts, quotes] =
-            block_masks(block, [[b'<', b'<'], [b'>', b'>'], [b'"', b'\'']]);
+        let [mut lts, gts, doubles, singles] = block_masks(block, [b'<', b'>', b'"', b'\'']);
         while lts != 0 {
             let bit = lts.trailing_zeros() as usize;
             let i = from + bit;
             let Some(&next) = rest.get(i + 1) else {
                 return (tally, Stop::Cut(start + i));
             };
-            if next == b'/' {
+            if next == b'/' && !MARK {
                 tally.depth = tally.depth.saturating_sub(1);
                 lts &= lts - 1;
                 continue;
             }
             if next == b'!' || next == b'?' {
                 return match classify(&rest[i..]) {
-                    Some((mode, len)) => (tally, Stop::Markup(start + i + len, mode)),
+                    Some((mode, len)) => (tally, Stop::Markup(start + i, start + i + len, mode)),
                     None => (tally, Stop::Cut(start + i)),
                 };
             }
-            let end = (gts & above(bit)).trailing_zeros() as usize;
-            let (gt, empty) = match end < BLOCK && quotes & above(bit) & below(end) == 0 {
-                true => (from + end, block[end - 1] == b'/'),
-                false => match tag_end(&rest[i + 1..]) {
-                    Some(end) => (i + 1 + end, rest[i + end] == b'/'),
+            let gt = match in_block(bit, gts, doubles, singles) {
+                Some(end) => from + end,
+                None => match tag_end(&rest[i + 1..]) {
+                    Some(end) => i + 1 + end,
                     None => return (tally, Stop::Cut(start + i)),
                 },
             };
-            if tally.depth <= 2 {
-                tally.parent = near_root(tally, start + i, markup, items);
+            if MARK {
+                // The reader counts for itself.
+                marks.push(Mark { at: start + i, end: start + gt, stops: false });
+            } else if next == b'/' {
+                tally.depth = tally.depth.saturating_sub(1);
+            } else {
+                if tally.depth <= 2 {
+                    tally.parent = near_root(tally, start + i, markup, items);
+                }
+                tally.elements += 1;
+                tally.depth += usize::from(rest[gt - 1] != b'/');
             }
-            tally.elements += 1;
-            tally.depth += usize::from(!empty);
             if gt >= from + BLOCK {
                 from = gt + 1;
                 continue 'blocks;
@@ -236,6 +381,30 @@ fn tags(
         from += BLOCK;
     }
     (tally, Stop::End)
+}
+
+/// The `>` that ends a tag whose `<` is bit `lt` of a block, from the block's masks of `>`
+/// and of double and single quotes: the first `>` after it outside quoted values. None when
+/// the block does not hold it.
+#[inline(always)]
+fn in_block(lt: usize, gts: u64, doubles: u64, singles: u64) -> Option<usize> {
+    let mut from = lt;
+    loop {
+        let gt = (gts & above(from)).trailing_zeros() as usize;
+        let quotes = (doubles | singles) & above(from) & below(gt);
+        if quotes == 0 {
+            return (gt < BLOCK).then_some(gt);
+        }
+        let quote = quotes.trailing_zeros() as usize;
+        let same = match doubles >> quote & 1 {
+            1 => doubles,
+            _ => singles,
+        };
+        from = (same & above(quote)).trailing_zeros() as usize;
+        if from >= BLOCK {
+            return None;
+        }
+    }
 }
 
 /// A start tag at `lt` opens an element directly in the root, or in an element of the root:
@@ -258,14 +427,16 @@ fn near_root(tally: Tally, lt: usize, markup: Option<Tally>, items: &mut Vec<Ite
     tally.parent
 }
 
-/// The bits of a block's mask above bit `bit`.
+/// The bits of a block's mask above bit `bit`, one of its 64.
+#[inline(always)]
 fn above(bit: usize) -> u64 {
     u64::MAX << bit << 1
 }
 
-/// The bits of a block's mask below bit `bit`.
+/// The bits of a block's mask below bit `bit`, from 1 to 64 (all of them).
+#[inline(always)]
 fn below(bit: usize) -> u64 {
-    !(u64::MAX << bit)
+    u64::MAX >> (BLOCK - bit)
 }
 
 /// The mode that markup other than a tag, `text` (which starts with `<!` or `<?`), begins,

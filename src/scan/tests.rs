@@ -195,3 +195,146 @@ fn the_scan_counts_what_a_byte_at_a_time_reading_counts() {
         }
     }
 }
+
+/// The marks of `text` by the scan's rules, followed a byte at a time: every tag and end tag
+/// to its `>` past quoted values, processing instructions to `?>`, CDATA to `]]>`, comments
+/// to `-->` (or to a `--` before anything else, where the scan stops, as at a DOCTYPE and
+/// at `<!` XML does not have); none for markup the text cuts.
+fn marks_one_by_one(text: &[u8]) -> Vec<Mark> {
+    let (mut i, mut marks) = (0, vec![]);
+    let find = |from: usize, delimiter: &[u8]| {
+        memchr::memmem::find(&text[from.min(text.len())..], delimiter).map(|at| from + at)
+    };
+    while let Some(at) = text[i..].iter().position(|&b| b == b'<') {
+        let lt = i + at;
+        let rest = &text[lt..];
+        let (end, stops) = if rest.starts_with(b"<?") {
+            (find(lt + 2, b"?>").map(|q| q + 1), false)
+        } else if rest.starts_with(b"<![CDATA[") {
+            (find(lt + 9, b"]]>").map(|e| e + 2), false)
+        } else if rest.starts_with(b"<!--") {
+            match find(lt + 4, b"--") {
+                Some(d) if text.get(d + 2) == Some(&b'>') => (Some(d + 2), false),
+                Some(d) if d + 2 < text.len() => (Some(d), true),
+                _ => (None, false),
+            }
+        } else if rest.starts_with(b"<!") {
+            // Too short to tell is cut; anything else stops.
+            let cut = b"<!--".starts_with(rest) || b"<![CDATA[".starts_with(rest);
+            (if cut { None } else { Some(lt) }, !cut)
+        } else if rest.len() < 2 {
+            (None, false)
+        } else {
+            let mut end = lt + 1;
+            loop {
+                match text[end..].iter().position(|b| b"\"'>".contains(b)) {
+                    Some(q) if text[end + q] == b'>' => break (Some(end + q), false),
+                    Some(q) => match text[end + q + 1..].iter().position(|&b| b == text[end + q]) {
+                        Some(close) => end = end + q + 1 + close + 1,
+                        None => break (None, false),
+                    },
+                    None => break (None, false),
+                }
+            }
+        };
+        let Some(end) = end else { break };
+        marks.push(Mark { at: lt, end, stops });
+        if stops {
+            break;
+        }
+        i = end + 1;
+    }
+    marks
+}
+
+/// The marks of a text read through an [`Index`] from `start`, the text at hand growing by
+/// `window` bytes whenever the index has no mark left in it.
+fn indexed(text: &[u8], start: usize, window: usize) -> Vec<Mark> {
+    let mut index = Index::new(start);
+    let (mut marks, mut end) = (vec![], (start + window).min(text.len()));
+    loop {
+        match index.next(&text[..end], 0) {
+            Some(mark) => {
+                marks.push(mark);
+                index.take();
+            }
+            None if end == text.len() => return marks,
+            None => end = (end + window).min(text.len()),
+        }
+    }
+}
+
+/// Texts made at random of tags, text and markup, broken or not: the marks the reader walks,
+/// through an index over the whole text and over windows of it, are those a byte-at-a-time
+/// reading finds.
+#[test]
+fn the_index_marks_what_a_byte_at_a_time_reading_finds() {
+    let pieces: [&[u8]; 20] = [
+        b"<a>",
+        b"</a>",
+        b"<b/>",
+        b"<c x='1>'>",
+        b"<d y=\"/>'\"/>",
+        b" text ",
+        b"\n    ",
+        b"1.5 2",
+        b">",
+        b"</>",
+        b"<>",
+        b"<!-- c -->",
+        b"<?p ?>",
+        b"<![CDATA[<x>]]>",
+        b"<<",
+        b"</a y='>'>",
+        b"<e\n/>",
+        b"&amp;",
+        b"<!-- a -- b -->",
+        b"<!DOCTYPE a>",
+    ];
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut random = |n: usize| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % n as u64) as usize
+    };
+    let long = format!("<Long a=\"{}\">", "x>".repeat(CHUNK));
+    for round in 0..2000 {
+        let mut text = b"<W><C>".to_vec();
+        if round % 100 == 0 {
+            text.extend_from_slice(long.as_bytes());
+        }
+        for _ in 0..random(300) {
+            let piece = match random(10) {
+                0..3 => 0,
+                3..6 => 1,
+                6..8 => 5 + random(3),
+                // The markup that stops the scan, now and then.
+                _ => {
+                    let stopping = usize::from(random(4) == 0);
+                    random(pieces.len() - 2 + 2 * stopping)
+                }
+            };
+            text.extend_from_slice(pieces[piece]);
+        }
+        let expected = marks_one_by_one(&text);
+        for window in [text.len().max(1), 1, 13, 64, 100, 4096] {
+            assert_eq!(
+                indexed(&text, 0, window),
+                expected,
+                "round {round}, windows of {window}: {}",
+                String::from_utf8_lossy(&text)
+            );
+        }
+        // An index that starts at an item, as a piece's reader does, marks what follows.
+        if let Some(item) = expected.iter().skip(3).find(|m| text[m.at + 1].is_ascii_alphabetic()) {
+            let from = expected.iter().position(|m| m == item).unwrap();
+            assert_eq!(
+                indexed(&text, item.at, 64),
+                expected[from..],
+                "round {round}, from {}",
+                item.at
+            );
+        }
+    }
+}

@@ -2,11 +2,13 @@
 //! over a streamed file). It enforces the limits, counts lines as it goes, and hands whole
 //! elements, values and attributes to the reader; it builds nothing.
 //!
-//! The usual markup is read here: tags with short names and plain `name="value"`
-//! attributes, values followed by their end tag. Anything else goes to quick-xml: its
-//! element parser finds where a tag ends when the text at hand does not show it, its
-//! attribute iterator reads and checks the other attributes, its reference and declaration
-//! types resolve entities and read the XML declaration, and its errors are the messages.
+//! It walks the marks of the scan stage ([`Index`]): where a tag, a comment, CDATA or a
+//! processing instruction ends, and where text ends, is the next mark, taken as the markup
+//! is read; it looks for no delimiter itself. The usual markup is read here: tags with short
+//! names and plain `name="value"` attributes, values followed by their end tag. Anything
+//! else goes to quick-xml: its attribute iterator reads and checks the other attributes, its
+//! reference and declaration types resolve entities and read the XML declaration, and its
+//! errors are the messages.
 //! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
 //! again; the text here was checked once by its source, and slices of it at ASCII markup
 //! are text by construction.
@@ -23,12 +25,13 @@ use crate::error::{Code, Parsed, Position, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::place::{Cursor, Lines};
+use crate::scan::{Index, Mark};
 use crate::text::{self};
 
 mod pieces;
 mod values;
 
-use crate::bytes::{ENDS_NAME, find3, is_xml_space_byte, space_len, tag_end};
+use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
 use values::resolve_text;
 pub(super) use values::verbatim;
 
@@ -231,6 +234,9 @@ pub(super) struct Tokenizer<'a> {
     elements: u64,
     /// Lines and columns, counted over the text as it is passed.
     lines: Lines,
+    /// The markup ahead, as the scan stage finds it: the reader takes each piece's mark as
+    /// it reads it, and looks for no delimiter itself.
+    index: Index,
     /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
     /// items' offsets in order, with the names of the containers they are assumed to be
     /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
@@ -276,6 +282,7 @@ impl Stop {
 impl<'a> Tokenizer<'a> {
     pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
         let lines = Lines::new(source.encoding(), Cursor::start(source.base()));
+        let source_base = source.base();
         Tokenizer {
             source,
             options,
@@ -287,6 +294,7 @@ impl<'a> Tokenizer<'a> {
             open: Vec::new(),
             elements: 0,
             lines,
+            index: Index::new(source_base),
             ends: Vec::new(),
             next_end: 0,
             end_at: usize::MAX,
@@ -320,6 +328,8 @@ impl<'a> Tokenizer<'a> {
             .flatten()
             .fold(self.last, |keep, &at| keep.min(at));
         let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
+        // The scan goes on from where it stands.
+        let keep = keep.min(self.index.scanned());
         // A text in memory stays at hand: nothing is let go, so nothing is counted yet.
         if !self.source.is_whole() {
             self.lines.release(self.source.text(), self.source.base(), keep);
@@ -354,31 +364,32 @@ impl<'a> Tokenizer<'a> {
             && self.comments.is_empty()
     }
 
-    /// The offset at which `find` first succeeds on the text from `from` on, reading more
-    /// as needed; None at the end of the file. `find` is given the text from where it
-    /// stopped last, less `overlap` bytes (a delimiter of `overlap + 1` bytes may be cut by
-    /// the end of the text at hand), and returns an offset into it. A node longer than
-    /// `max_text_bytes` is refused before it is all read.
-    fn scan(
-        &mut self,
-        start: usize,
-        mut from: usize,
-        overlap: usize,
-        mut find: impl FnMut(&[u8]) -> Option<usize>,
-    ) -> Reading<Option<usize>> {
+    /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
+    /// reading has seen), reading more text until the text at hand holds its end; None at
+    /// the end of the file. A node longer than `max_text_bytes` is refused before it is all
+    /// read: measured, while its end is not at hand, up to the last byte that cannot begin
+    /// its closing delimiter of `overlap + 1` bytes.
+    fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Reading<Option<Mark>> {
         loop {
-            let rest = self.rest(from);
-            if let Some(i) = find(rest) {
-                return Ok(self.within_text_limit(start, from + i).map(Some)?);
+            if let Some(mark) = self.index.next(self.source.text().as_bytes(), self.source.base()) {
+                debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
+                return Ok(Some(mark));
             }
-            from = (from + rest.len()).saturating_sub(overlap).max(from);
-            if (from - start) as u64 > self.options.max_text_bytes {
-                return Err(self.limit(start, "max_text_bytes", self.options.max_text_bytes));
+            let seen = self.source.end().saturating_sub(overlap).max(at + skip);
+            if (seen - at) as u64 > self.options.max_text_bytes {
+                return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
             }
             if !self.more()? {
                 return Ok(None);
             }
         }
+    }
+
+    /// Takes the index's next mark, that of the markup at `at`, which the reading passed
+    /// without it (a tag it read whole in the text at hand).
+    #[inline(always)]
+    fn passed(&mut self, at: usize) {
+        self.index.pass(at, self.source.text().as_bytes(), self.source.base());
     }
 
     /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
@@ -461,49 +472,51 @@ impl<'a> Tokenizer<'a> {
 
     /// Text up to the next markup, its references resolved and its line ends normalised.
     fn text_node(&mut self, at: usize) -> Reading<Node> {
-        let mut plain = true;
-        let end = self.scan(at, at, 0, |rest| {
-            let mut from = 0;
-            while let Some(i) = find3(&rest[from..], b'<', b'&', b'\r') {
-                if rest[from + i] == b'<' {
-                    return Some(from + i);
-                }
-                plain = false;
-                from += i + 1;
+        let end = loop {
+            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            if let Some(mark) = self.index.next(text, base) {
+                break mark.at;
             }
-            None
-        })?;
-        let end = end.unwrap_or(self.source.end());
+            if let Some(start) = self.index.next_start(text, base) {
+                break start;
+            }
+            if (self.source.end() - at) as u64 > self.options.max_text_bytes {
+                return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
+            }
+            if !self.more()? {
+                break self.source.end();
+            }
+        };
         if (end - at) as u64 > self.options.max_text_bytes {
             return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
         }
         self.pos = end;
+        let text = self.source.slice(at, end);
         // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
-        if let Some(i) = memchr::memmem::find(self.source.slice(at, end).as_bytes(), b"]]>") {
+        if let Some(i) = memchr::memmem::find(text.as_bytes(), b"]]>") {
             return Err(problem(
                 Code::MalformedXml,
                 at + i,
                 "malformed XML: `]]>` in text outside CDATA (write `]]&gt;`)",
             ));
         }
-        let resolved = match plain {
+        let resolved = match is_plain(text.as_bytes()) {
             true => None,
-            false => Some(resolve_text(self.source.slice(at, end), at)?),
+            false => Some(resolve_text(text, at)?),
         };
         Ok(Node::Text(Text { at, end, resolved }))
     }
 
     /// The end of a tag that starts at `at`: the offset of its `>`.
     fn tag_end(&mut self, at: usize) -> Reading<usize> {
-        // The tag at hand, its quoted values skipped; the element parser takes the rest.
-        if let Some(i) = tag_end(self.rest(at + 1)) {
-            return Ok(self.within_text_limit(at, at + 1 + i)?);
-        }
-        let mut parser = ElementParser::Outside;
-        match self.scan(at, at + 1, 0, |rest| parser.feed(rest))? {
-            Some(end) => Ok(end),
-            None => Err(malformed(at, parser.eof_error(&[]))),
-        }
+        let Some(mark) = self.mark(at, 1, 0)? else {
+            // The end of the file: quick-xml tells whether a quoted value is open.
+            let mut parser = ElementParser::Outside;
+            let _ = parser.feed(self.rest(at + 1));
+            return Err(malformed(at, parser.eof_error(&[])));
+        };
+        self.index.take();
+        Ok(self.within_text_limit(at, mark.end)?)
     }
 
     fn start_tag(&mut self, at: usize) -> Reading<Node> {
@@ -546,6 +559,7 @@ impl<'a> Tokenizer<'a> {
         let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
             return false;
         };
+        self.passed(at);
         self.pos = at + len;
         self.open.pop();
         true
@@ -598,6 +612,7 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let name = Name::from_head(head.first_chunk()?, len);
+        self.passed(at);
         self.pos = at + 2 + len + usize::from(empty);
         Some(Tag { name, content: None, at, empty })
     }
@@ -622,11 +637,13 @@ impl<'a> Tokenizer<'a> {
 
     /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
     fn processing_instruction(&mut self, at: usize) -> Reading<()> {
-        let end = self.scan(at, at + 2, 1, |rest| memchr::memmem::find(rest, b"?>"))?;
-        let Some(end) = end else {
+        let Some(mark) = self.mark(at, 2, 1)? else {
             let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
             return Err(malformed(at, unclosed));
         };
+        // `end` is the `?` of `?>`.
+        let end = self.within_text_limit(at, mark.end - 1)?;
+        self.index.take();
         self.pos = end + 2;
         let content = self.source.slice(at + 2, end);
         let is_declaration = content.starts_with("xml")
@@ -651,15 +668,18 @@ impl<'a> Tokenizer<'a> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {
-            // XML allows `--` in a comment only as the start of its `-->`.
-            let mut dashes = false;
-            let end = self.scan(at, at + 4, 2, |rest| {
-                let i = memchr::memmem::find(rest, b"--")?;
-                dashes = *rest.get(i + 2)? != b'>';
-                Some(i)
-            })?;
-            let end = end.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedComment))?;
-            if dashes {
+            // XML allows `--` in a comment only as the start of its `-->`: the scan stops at
+            // any other.
+            let mark = self.mark(at, 4, 2)?;
+            let mark =
+                mark.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedComment))?;
+            // `end` is the first `--`.
+            let end = match mark.stops {
+                true => mark.end,
+                false => mark.end - 2,
+            };
+            let end = self.within_text_limit(at, end)?;
+            if mark.stops {
                 return Err(problem(
                     Code::MalformedXml,
                     end,
@@ -667,6 +687,7 @@ impl<'a> Tokenizer<'a> {
                      which must be followed by `>`)",
                 ));
             }
+            self.index.take();
             self.pos = end + 3;
             if self.pins.is_empty() {
                 self.comments.push((at, self.pos));
@@ -674,8 +695,11 @@ impl<'a> Tokenizer<'a> {
             return Ok(None);
         }
         if head.starts_with(b"<![CDATA[") {
-            let end = self.scan(at, at + 9, 2, |rest| memchr::memmem::find(rest, b"]]>"))?;
-            let end = end.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedCData))?;
+            let mark = self.mark(at, 9, 2)?;
+            let mark = mark.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedCData))?;
+            // `end` is the `]]>`.
+            let end = self.within_text_limit(at, mark.end - 2)?;
+            self.index.take();
             self.pos = end + 3;
             return Ok(Some(Node::Text(Text { at: at + 9, end, resolved: None })));
         }

@@ -6,6 +6,7 @@ use super::{FoundEnds, Stop, Tag, Tokenizer};
 use crate::error::{Code, Finding, Position, Problem, problem};
 use crate::input::Source;
 use crate::place::{Cursor, Spot};
+use crate::scan::Index;
 
 impl<'a> Tokenizer<'a> {
     /// The error for a repeated container.
@@ -62,6 +63,7 @@ impl<'a> Tokenizer<'a> {
     /// counted from there (see [`Cursor::start`]).
     pub fn start_item(&mut self, at: usize, open: Vec<(Name, usize)>) {
         (self.pos, self.started, self.last, self.open) = (at, at, at, open);
+        self.index = Index::new(at);
         self.lines.resume(Cursor::start(at));
     }
 
@@ -82,6 +84,7 @@ impl<'a> Tokenizer<'a> {
         }
         let Stop { pos, started, last, open, end, .. } = stop;
         (self.pos, self.started, self.last, self.open) = (pos, started, last, open);
+        self.index = Index::new(pos);
         self.elements = elements;
         // The other reading went past every end.
         self.next_end = self.ends.len();

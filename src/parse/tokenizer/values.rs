@@ -10,7 +10,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 use super::super::shorten;
 use super::Reading;
 use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{find3, first_non_char, is_plain_name_byte, space_len, trimmed_span};
+use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -209,13 +209,15 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let at = self.pos;
+        let mark = self.index.next(self.source.text().as_bytes(), self.source.base())?;
+        let len = mark.at - at;
         let rest = self.rest(at);
-        let len = find3(rest, b'<', b'&', b'\r').filter(|&i| rest[i] == b'<')?;
-        if len as u64 > self.options.max_text_bytes {
+        if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
             return None;
         }
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
         let (start, end) = trimmed_span(&rest[..len]);
+        self.index.take();
         self.pos = at + len + end_tag;
         self.open.pop();
         // `<X></X>` has its value at its tag.
