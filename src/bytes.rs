@@ -1,8 +1,8 @@
 //! The byte finders of the crate, every scan over raw bytes in one place: the characters
 //! XML forbids, XML white space (exactly, for any text; and in one comparison a byte, for
-//! the text a load reads, which holds no other control character), the ends of names, the
-//! first of a few bytes, and the masks of a block for the scan stage. Word-at-a-time tricks
-//! and vector instructions live here and nowhere else.
+//! the text a load reads, which holds no other control character), the ends of names, text
+//! with no reference or carriage return, and the masks of a block for the scan stage.
+//! Word-at-a-time tricks and vector instructions live here and nowhere else.
 #![forbid(unsafe_code)]
 
 /// The offset of the first character of `text` outside XML's Char production (the writer
@@ -152,23 +152,6 @@ pub(crate) fn is_plain(text: &[u8]) -> bool {
     }) && !tail.iter().any(|&b| b == b'&' || b == b'\r')
 }
 
-/// The offset of the first of three bytes in `hay`. Nodes are short: their first 32 bytes
-/// are looked at eight at a time, which is cheaper than setting up memchr, which takes the
-/// rest.
-#[inline]
-pub(crate) fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
-    let mut i = 0;
-    while let Some(eight) = hay[i..].first_chunk::<8>().filter(|_| i < 32) {
-        let word = u64::from_le_bytes(*eight);
-        let found = first_equal(word, a) | first_equal(word, b) | first_equal(word, c);
-        if found != 0 {
-            return Some(i + (found.trailing_zeros() / 8) as usize);
-        }
-        i += 8;
-    }
-    memchr::memchr3(a, b, c, &hay[i..]).map(|found| i + found)
-}
-
 /// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little
 /// endian) of `word` that is `b`; 0 when no byte is. Bits above that one may be set too.
 ///
@@ -178,29 +161,14 @@ pub(crate) fn find3(hay: &[u8], a: u8, b: u8, c: u8) -> Option<usize> {
 /// nothing from the next, and `x_i - 1` has its high bit set only when `x_i` is 0x81 or
 /// more, when `!x_i` has not, so it is not flagged; the first zero byte becomes 0xFF, high
 /// bit set, with `!x_i` high bit set: flagged. Only past it can a borrow flag a byte that is
-/// not zero (0x01 becomes 0xFF). So OR-ing the masks of several bytes keeps the first byte
-/// equal to any of them as the lowest set bit, which is all [`find3`] looks at; the exact
-/// test ([`bytes_equal`]) takes more instructions for every byte.
+/// not zero (0x01 becomes 0xFF). So the masks of several bytes OR-ed together are 0 exactly
+/// when no byte is any of them, which is all [`is_plain`] looks at; the exact test
+/// ([`bytes_equal`]) takes more instructions for every byte.
 #[inline(always)]
 pub(crate) fn first_equal(word: u64, b: u8) -> u64 {
     const ONES: u64 = u64::from_le_bytes([0x01; 8]);
     let x = word ^ u64::from_le_bytes([b; 8]);
     x.wrapping_sub(ONES) & !x & HIGH_BITS
-}
-
-/// The offset in `tag` (what follows a start tag's `<`) of the `>` that ends it, its quoted
-/// values passed over; None when it is not in `tag`, or a value's quote is not closed in it.
-/// Values are short: the closing quote, like the rest, is found eight bytes at a time.
-pub(crate) fn tag_end(tag: &[u8]) -> Option<usize> {
-    let mut from = 0;
-    loop {
-        let i = from + find3(&tag[from..], b'>', b'"', b'\'')?;
-        if tag[i] == b'>' {
-            return Some(i);
-        }
-        let quote = tag[i];
-        from = i + 2 + find3(&tag[i + 1..], quote, quote, quote)?;
-    }
 }
 
 /// The bytes the scan stage looks at a block at a time.

@@ -48,24 +48,6 @@ fn xml_space_len_stops_at_the_first_other_byte() {
     }
 }
 
-#[test]
-fn find3_finds_the_first_of_three_bytes() {
-    for len in 0..80 {
-        for at in 0..=len {
-            for (b, c) in [(b'<', b'&'), (b'&', b'<'), (b'\r', b'\r'), (0xBC, b'<')] {
-                // `b` at `at` (unless past the end), `c` later, other bytes around them.
-                let mut hay: Vec<u8> = (0..len).map(|i| b"a \n\xE2<&\r"[i % 3]).collect();
-                if at < len {
-                    hay[at] = b;
-                }
-                hay.push(c);
-                let expected = hay.iter().position(|&x| matches!(x, b'<' | b'&' | b'\r'));
-                assert_eq!(find3(&hay, b'<', b'&', b'\r'), expected, "{hay:?}");
-            }
-        }
-    }
-}
-
 /// The lowest flag of `first_equal` is the first byte equal to the one looked for, and
 /// there is none when no byte is, whatever the bytes after it: in particular those a
 /// borrow goes through (one above it, 0x80, 0x81, 0xFF...).
@@ -131,17 +113,6 @@ fn block_masks_flag_each_byte_asked_for() {
         let expected = sets
             .map(|set| (0..BLOCK).filter(|&i| block[i] == set).fold(0u64, |mask, i| mask | 1 << i));
         assert_eq!(block_masks(&block, sets), expected, "shift {shift}");
-    }
-}
-
-/// A tag's `>`, past values that hold `>` and the other quote; none while a value is open.
-#[test]
-fn tag_end_passes_over_quoted_values() {
-    assert_eq!(tag_end(b"a>b"), Some(1));
-    let tag = br#"Body Note="a > 'b' >" x='">"' long="0123456789012345678901234567890123456789"/>"#;
-    assert_eq!(tag_end(tag), Some(tag.len() - 1));
-    for open in [&br#"a x="1>"#[..], b"a x='>", b"a x=\"1\" y"] {
-        assert_eq!(tag_end(open), None, "{}", String::from_utf8_lossy(open));
     }
 }
 

@@ -16,7 +16,7 @@
 //! time: it looks for no delimiter of markup itself.
 #![forbid(unsafe_code)]
 
-use crate::bytes::{BLOCK, block_masks, tag_end};
+use crate::bytes::{BLOCK, block_masks};
 
 #[cfg(test)]
 mod tests;
@@ -312,10 +312,10 @@ enum Stop {
 
 /// The tags of `rest`, text that starts at offset `start`, up to other markup, counted into
 /// `tally`, the items pushed on `items` (and with `MARK`, every tag and end tag on `marks`).
-/// A block's masks of `<`, `>` and quotes give each tag: its end is the first `>` after its
-/// `<` outside quoted values (see [`in_block`]), or when the block does not hold it, is
-/// looked for in the bytes. The byte after a `<` tells start tags from end tags and sends
-/// the rest of markup to [`classify`].
+/// A block's masks of `<`, `>` and each quote give each tag: its end is the first `>` after
+/// its `<` outside quoted values (see [`tag_end_in`]); a tag the block does not end is
+/// followed into the next blocks, inside a quoted value or not. The byte after a `<` tells
+/// start tags from end tags and sends the rest of markup to [`classify`].
 fn tags<const MARK: bool>(
     rest: &[u8],
     start: usize,
@@ -324,8 +324,11 @@ fn tags<const MARK: bool>(
     items: &mut Vec<Item>,
     marks: &mut Vec<Mark>,
 ) -> (Tally, Stop) {
+    // The tag begun in an earlier block: its `<`, the byte after it, and the quoted value
+    // it is in at the end of the last block.
+    let mut open: Option<(usize, u8, Quoted)> = None;
     let mut from = 0;
-    'blocks: while from < rest.len() {
+    while from < rest.len() {
         let mut padded = [0; BLOCK];
         let block = match rest[from..].first_chunk::<BLOCK>() {
             Some(block) => block,
@@ -335,7 +338,36 @@ fn tags<const MARK: bool>(
                 &padded
             }
         };
-        let [mut lts, gts, doubles, singles] = block_masks(block, [b'<', b'>', b'"', b'\'']);
+        let masks = block_masks(block, [b'<', b'>', b'"', b'\'']);
+        let mut lts = masks[0];
+        let mut ended = |tally: &mut Tally, i: usize, next: u8, gt: usize| {
+            if MARK {
+                // The reader counts for itself.
+                marks.push(Mark { at: start + i, end: start + gt, stops: false });
+            } else if next == b'/' {
+                tally.depth = tally.depth.saturating_sub(1);
+            } else {
+                if tally.depth <= 2 {
+                    tally.parent = near_root(*tally, start + i, markup, items);
+                }
+                tally.elements += 1;
+                tally.depth += usize::from(rest[gt - 1] != b'/');
+            }
+        };
+        if let Some((i, next, quoted)) = open {
+            match tag_end_in(u64::MAX, quoted, masks) {
+                Ok(end) => {
+                    ended(&mut tally, i, next, from + end);
+                    lts &= above(end);
+                    open = None;
+                }
+                Err(quoted) => {
+                    open = Some((i, next, quoted));
+                    from += BLOCK;
+                    continue;
+                }
+            }
+        }
         while lts != 0 {
             let bit = lts.trailing_zeros() as usize;
             let i = from + bit;
@@ -353,57 +385,78 @@ fn tags<const MARK: bool>(
                     None => (tally, Stop::Cut(start + i)),
                 };
             }
-            let gt = match in_block(bit, gts, doubles, singles) {
-                Some(end) => from + end,
-                None => match tag_end(&rest[i + 1..]) {
-                    Some(end) => i + 1 + end,
-                    None => return (tally, Stop::Cut(start + i)),
-                },
+            // The usual tag: its `>` before any quote.
+            let after = above(bit);
+            let gt = (masks[1] & after).trailing_zeros() as usize;
+            let quote = ((masks[2] | masks[3]) & after).trailing_zeros() as usize;
+            let end = match quote > gt {
+                true => Ok(gt),
+                false => tag_end_in(after, Quoted::No, masks),
             };
-            if MARK {
-                // The reader counts for itself.
-                marks.push(Mark { at: start + i, end: start + gt, stops: false });
-            } else if next == b'/' {
-                tally.depth = tally.depth.saturating_sub(1);
-            } else {
-                if tally.depth <= 2 {
-                    tally.parent = near_root(tally, start + i, markup, items);
+            match end {
+                Ok(end) => {
+                    ended(&mut tally, i, next, from + end);
+                    lts &= above(end);
                 }
-                tally.elements += 1;
-                tally.depth += usize::from(rest[gt - 1] != b'/');
+                Err(quoted) => {
+                    open = Some((i, next, quoted));
+                    break;
+                }
             }
-            if gt >= from + BLOCK {
-                from = gt + 1;
-                continue 'blocks;
-            }
-            lts &= above(gt - from);
         }
         from += BLOCK;
     }
-    (tally, Stop::End)
+    match open {
+        Some((i, ..)) => (tally, Stop::Cut(start + i)),
+        None => (tally, Stop::End),
+    }
 }
 
-/// The `>` that ends a tag whose `<` is bit `lt` of a block, from the block's masks of `>`
-/// and of double and single quotes: the first `>` after it outside quoted values. None when
-/// the block does not hold it.
+/// Whether a tag's search stands in a quoted value, and which quote opened it.
+#[derive(Clone, Copy)]
+enum Quoted {
+    No,
+    Double,
+    Single,
+}
+
+/// The bit of a block that ends a tag, the first `>` among the bits of `after` outside
+/// quoted values, from the block's masks of `<`, `>` and double and single quotes, the
+/// search starting in a quoted value or not (`quoted`); where it stands at the block's end
+/// when the block does not hold it.
 #[inline(always)]
-fn in_block(lt: usize, gts: u64, doubles: u64, singles: u64) -> Option<usize> {
-    let mut from = lt;
+fn tag_end_in(
+    mut after: u64,
+    mut quoted: Quoted,
+    [_, gts, doubles, singles]: [u64; 4],
+) -> Result<usize, Quoted> {
     loop {
-        let gt = (gts & above(from)).trailing_zeros() as usize;
-        let quotes = (doubles | singles) & above(from) & below(gt);
-        if quotes == 0 {
-            return (gt < BLOCK).then_some(gt);
-        }
-        let quote = quotes.trailing_zeros() as usize;
-        let same = match doubles >> quote & 1 {
-            1 => doubles,
-            _ => singles,
+        let same = match quoted {
+            Quoted::No => {
+                let gt = (gts & after).trailing_zeros() as usize;
+                let quote = ((doubles | singles) & after).trailing_zeros() as usize;
+                if quote > gt {
+                    return Ok(gt);
+                }
+                if quote == BLOCK {
+                    return Err(Quoted::No);
+                }
+                after = above(quote);
+                quoted = match doubles >> quote & 1 {
+                    1 => Quoted::Double,
+                    _ => Quoted::Single,
+                };
+                continue;
+            }
+            Quoted::Double => doubles,
+            Quoted::Single => singles,
         };
-        from = (same & above(quote)).trailing_zeros() as usize;
-        if from >= BLOCK {
-            return None;
+        let close = (same & after).trailing_zeros() as usize;
+        if close == BLOCK {
+            return Err(quoted);
         }
+        after = above(close);
+        quoted = Quoted::No;
     }
 }
 
@@ -431,12 +484,6 @@ fn near_root(tally: Tally, lt: usize, markup: Option<Tally>, items: &mut Vec<Ite
 #[inline(always)]
 fn above(bit: usize) -> u64 {
     u64::MAX << bit << 1
-}
-
-/// The bits of a block's mask below bit `bit`, from 1 to 64 (all of them).
-#[inline(always)]
-fn below(bit: usize) -> u64 {
-    u64::MAX >> (BLOCK - bit)
 }
 
 /// The mode that markup other than a tag, `text` (which starts with `<!` or `<?`), begins,
