@@ -328,8 +328,8 @@ fn tags<const MARK: bool>(
     // it is in at the end of the last block.
     let mut open: Option<(usize, u8, Quoted)> = None;
     let mut from = 0;
+    let mut padded = [0; BLOCK];
     while from < rest.len() {
-        let mut padded = [0; BLOCK];
         let block = match rest[from..].first_chunk::<BLOCK>() {
             Some(block) => block,
             None => {
