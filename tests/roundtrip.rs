@@ -393,6 +393,60 @@ fn fuzz_roundtrip_a_line_joints_wheel_element_is_not_written_back() {
     }
 }
 
+/// Fuzz finding (roundtrip target): a Line joint read as a Wheel joint, for a spring or a
+/// motor torque, kept the limit and the linear motor's force it was given as a Line joint;
+/// the writer, which writes a Wheel joint, wrote neither, and the scene read back without
+/// its limit. A Wheel joint holds neither: each element is ignored with a warning where it
+/// is written, and the field keeps the wheel's default. Without the wheel's element the
+/// joint is a Line joint and keeps them all.
+#[test]
+fn fuzz_roundtrip_a_line_joint_read_as_wheel_keeps_no_limit() {
+    let joint = |extra: &str| {
+        format!(
+            "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+             <Body Type=\"Dynamic\"/></Bodies><Joints><Joint Type=\"Line\"><BodyA>0</BodyA>\
+             <BodyB>1</BodyB><EnableLimit>true</EnableLimit>\
+             <LowerTranslation>-1</LowerTranslation>{extra}<UpperTranslation>2</UpperTranslation>\
+             <MaxMotorForce>5</MaxMotorForce></Joint></Joints></World>"
+        )
+    };
+    let limits =
+        |j: &box2scene::Joint| (j.enable_limit, j.lower_limit, j.upper_limit, j.max_motor_force);
+    for (extra, kind, held) in [
+        ("<MaxMotorTorque>3</MaxMotorTorque>", JointKind::Wheel, (false, 0.0, 0.0, 0.0)),
+        ("<FrequencyHz>4</FrequencyHz>", JointKind::Wheel, (false, 0.0, 0.0, 0.0)),
+        ("", JointKind::Line, (true, -1.0, 2.0, 5.0)),
+    ] {
+        let xml = joint(extra);
+        let scene = load_text(&xml);
+        let j = &scene.joints()[0];
+        assert_eq!((j.kind(), limits(j)), (Some(kind), held), "{xml}");
+        let ignored: Vec<_> = (scene.diagnostics().iter())
+            .filter(|d| d.code() == Some(Code::UnknownElement))
+            .map(|d| (scene.text(d.message).unwrap().to_string(), d.byte_offset as usize))
+            .collect();
+        let expected: Vec<_> = match kind {
+            JointKind::Wheel => {
+                ["EnableLimit", "LowerTranslation", "UpperTranslation", "MaxMotorForce"]
+                    .map(|name| {
+                        (
+                            format!(
+                                "<{name}> does not belong in a Wheel joint, which this Line joint \
+                             is read as; ignored"
+                            ),
+                            xml.find(&format!("<{name}>")).unwrap(),
+                        )
+                    })
+                    .to_vec()
+            }
+            _ => vec![],
+        };
+        assert_eq!(ignored, expected, "{xml}");
+        let written = assert_round_trip(&scene, &xml);
+        assert_eq!(written.contains("<EnableLimit>"), kind == JointKind::Line, "{written}");
+    }
+}
+
 /// A scene loaded with limits above the defaults may hold a name or UserData that a load
 /// with the default options would refuse from the written file: the writer refuses the
 /// scene, naming the object and the field, rather than write a file that does not load.

@@ -161,6 +161,9 @@ impl<'a> Reader<'a> {
         let mut seen = Seen::default();
         // Farseer's `Axis` is in world coordinates (spec section 8.1).
         let mut world_axis = None;
+        // What a Line joint holds and a Wheel joint does not, with where it is written: a
+        // Line joint may yet be read as a Wheel (`line_is_wheel`).
+        let mut line_only = Vec::new();
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
             let Some((name, repeated)) = self.known(tag, &child, &mut seen)? else {
@@ -189,6 +192,11 @@ impl<'a> Reader<'a> {
             }
             if repeated {
                 self.duplicate(tag, &child)?;
+            }
+            if let (Some(row), JointKind::Line) = (row, kind)
+                && let (Some(Slot::Fills(value)), None) = (slot, row.slot(JointKind::Wheel))
+            {
+                line_only.push((value, child.at, row.name));
             }
             // The weld's spring is the one such element.
             if row.is_some_and(|row| row.lowest_version(kind) >= 2) {
@@ -228,7 +236,7 @@ impl<'a> Reader<'a> {
             }
         }
         if kind == JointKind::Line && WHEEL_ONLY.into_iter().any(|element| seen.contains(element)) {
-            self.line_is_wheel(tag, &mut joint, &seen)?;
+            self.line_is_wheel(tag, &mut joint, &seen, &line_only)?;
         }
         self.check_joint(tag, &joint, &at)?;
         if kind == JointKind::Unsupported {
@@ -252,9 +260,19 @@ impl<'a> Reader<'a> {
     }
 
     /// Farseer's `Line` joints from February 2011 on are wheel joints under the old name:
-    /// read them as Wheel, with the wheel's defaults for what they leave out.
-    fn line_is_wheel(&mut self, tag: &Tag, joint: &mut Joint, seen: &Seen) -> Reading<()> {
-        let wheel = Joint::new(JointKind::Wheel);
+    /// read them as Wheel, with the wheel's defaults for what they leave out. What the file
+    /// gave them that a Wheel joint does not hold (`line_only`: a limit, a linear motor's
+    /// force, each with the element's offset and name) is ignored with a warning, and the
+    /// field is the wheel's default again: the writer, which writes a Wheel joint, would not
+    /// write it.
+    fn line_is_wheel(
+        &mut self,
+        tag: &Tag,
+        joint: &mut Joint,
+        seen: &Seen,
+        line_only: &[(Value, usize, &str)],
+    ) -> Reading<()> {
+        let mut wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
         self.arena.origins.signs.farseer_3_3 = true;
         if !seen.contains(JointChild::FrequencyHz) {
@@ -267,7 +285,16 @@ impl<'a> Reader<'a> {
             Code::LineJointIsWheel,
             tag.at,
             "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
-        )
+        )?;
+        for &(value, at, name) in line_only {
+            value.copy(&mut wheel, joint);
+            let message = format!(
+                "<{name}> does not belong in a Wheel joint, which this Line joint is read as; \
+                 ignored"
+            );
+            self.warn(Code::UnknownElement, at, message)?;
+        }
+        Ok(())
     }
 
     fn joint_type(&mut self, tag: &Tag) -> Reading<JointKind> {

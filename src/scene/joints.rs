@@ -111,6 +111,16 @@ pub(crate) enum Value {
 }
 
 impl Value {
+    /// Sets the field of `to` to that of `from`.
+    pub(crate) fn copy(self, from: &mut Joint, to: &mut Joint) {
+        match self {
+            Value::Vector(at) => *at(to) = *at(from),
+            Value::Float(at) | Value::NonNegative(at) => *at(to) = *at(from),
+            Value::Flag(at) => *at(to) = *at(from),
+            Value::JointIndex(at) => *at(to) = *at(from),
+        }
+    }
+
     /// Whether the field's bits differ in `a` and `b` (so -0.0 and 0.0 differ).
     pub(crate) fn differs(self, a: &mut Joint, b: &mut Joint) -> bool {
         match self {
