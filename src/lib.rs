@@ -142,6 +142,26 @@ impl Scene {
     }
 }
 
+/// The random numbers of the unit tests: xorshift64, the same on every run from the same
+/// seed.
+#[cfg(test)]
+struct Xorshift(u64);
+
+#[cfg(test)]
+impl Xorshift {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+
+    /// A number below `n`.
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}
+
 /// The project's scene files and the editor's (tests/fixtures/scenes, tests/fixtures/corpus): names
 /// and bytes, for the unit tests.
 #[cfg(test)]

@@ -326,13 +326,8 @@ mod tests {
     /// points coincide, line up and tie for rightmost) and anywhere.
     #[test]
     fn the_hull_is_the_one_it_was() {
-        let mut state = 0x243F6A8885A308D3u64;
-        let mut next = |n: u64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state % n
-        };
+        let mut random = crate::Xorshift(0x243F6A8885A308D3);
+        let mut next = |n: u64| random.next() % n;
         for round in 0..300_000 {
             let count = 1 + next(MAX_POLYGON_VERTICES as u64) as usize;
             let points: Vec<Vec2> = (0..count)

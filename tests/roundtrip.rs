@@ -355,6 +355,24 @@ fn an_ignored_centroid_round_trips() {
     }
 }
 
+/// A scene of one Line joint, between a static and a dynamic body, with `children` after
+/// its bodies.
+fn line_joint(children: &str) -> String {
+    format!(
+        "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
+         <Body Type=\"Dynamic\"/></Bodies><Joints><Joint Type=\"Line\"><BodyA>0</BodyA>\
+         <BodyB>1</BodyB>{children}</Joint></Joints></World>"
+    )
+}
+
+/// The `unknown-element` warnings of `scene`: their messages and byte offsets.
+fn ignored(scene: &Scene) -> Vec<(String, usize)> {
+    (scene.diagnostics().iter())
+        .filter(|d| d.code() == Some(Code::UnknownElement))
+        .map(|d| (scene.text(d.message).unwrap().to_string(), d.byte_offset as usize))
+        .collect()
+}
+
 /// Fuzz finding (roundtrip target): a `Line` joint with a spring is read as a Wheel joint,
 /// but its children are read as a Line joint's, so an `<Axis>` in it (a Wheel's, not a
 /// Line's) was ignored and kept, then written back inside the `Wheel` joint, where it is
@@ -362,24 +380,15 @@ fn an_ignored_centroid_round_trips() {
 /// Wheel joint is not kept; one that belongs in neither still is.
 #[test]
 fn fuzz_roundtrip_a_line_joints_wheel_element_is_not_written_back() {
-    let joint = |extra: &str| {
-        format!(
-            "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
-             <Body Type=\"Dynamic\"/></Bodies><Joints><Joint Type=\"Line\"><BodyA>0</BodyA>\
-             <BodyB>1</BodyB>{extra}<Axis>1 1</Axis><LowerAngle>1</LowerAngle></Joint>\
-             </Joints></World>"
-        )
-    };
+    let joint =
+        |extra: &str| line_joint(&format!("{extra}<Axis>1 1</Axis><LowerAngle>1</LowerAngle>"));
     for (extra, kind) in [("<FrequencyHz>4</FrequencyHz>", JointKind::Wheel), ("", JointKind::Line)]
     {
         let xml = joint(extra);
         let scene = load_text(&xml);
         let j = &scene.joints()[0];
         assert_eq!((j.kind(), j.local_axis_a), (Some(kind), box2scene::Vec2 { x: 1.0, y: 0.0 }));
-        let ignored: Vec<_> = (scene.diagnostics().iter())
-            .filter(|d| d.code() == Some(Code::UnknownElement))
-            .map(|d| scene.text(d.message).unwrap())
-            .collect();
+        let ignored: Vec<_> = ignored(&scene).into_iter().map(|(message, _)| message).collect();
         assert_eq!(
             ignored,
             [
@@ -402,13 +411,10 @@ fn fuzz_roundtrip_a_line_joints_wheel_element_is_not_written_back() {
 #[test]
 fn fuzz_roundtrip_a_line_joint_read_as_wheel_keeps_no_limit() {
     let joint = |extra: &str| {
-        format!(
-            "<World Version=\"2\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>\
-             <Body Type=\"Dynamic\"/></Bodies><Joints><Joint Type=\"Line\"><BodyA>0</BodyA>\
-             <BodyB>1</BodyB><EnableLimit>true</EnableLimit>\
-             <LowerTranslation>-1</LowerTranslation>{extra}<UpperTranslation>2</UpperTranslation>\
-             <MaxMotorForce>5</MaxMotorForce></Joint></Joints></World>"
-        )
+        line_joint(&format!(
+            "<EnableLimit>true</EnableLimit><LowerTranslation>-1</LowerTranslation>{extra}\
+             <UpperTranslation>2</UpperTranslation><MaxMotorForce>5</MaxMotorForce>"
+        ))
     };
     let limits =
         |j: &box2scene::Joint| (j.enable_limit, j.lower_limit, j.upper_limit, j.max_motor_force);
@@ -421,10 +427,6 @@ fn fuzz_roundtrip_a_line_joint_read_as_wheel_keeps_no_limit() {
         let scene = load_text(&xml);
         let j = &scene.joints()[0];
         assert_eq!((j.kind(), limits(j)), (Some(kind), held), "{xml}");
-        let ignored: Vec<_> = (scene.diagnostics().iter())
-            .filter(|d| d.code() == Some(Code::UnknownElement))
-            .map(|d| (scene.text(d.message).unwrap().to_string(), d.byte_offset as usize))
-            .collect();
         let expected: Vec<_> = match kind {
             JointKind::Wheel => {
                 ["EnableLimit", "LowerTranslation", "UpperTranslation", "MaxMotorForce"]
@@ -441,7 +443,7 @@ fn fuzz_roundtrip_a_line_joint_read_as_wheel_keeps_no_limit() {
             }
             _ => vec![],
         };
-        assert_eq!(ignored, expected, "{xml}");
+        assert_eq!(ignored(&scene), expected, "{xml}");
         let written = assert_round_trip(&scene, &xml);
         assert_eq!(written.contains("<EnableLimit>"), kind == JointKind::Line, "{written}");
     }

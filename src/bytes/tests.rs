@@ -53,7 +53,7 @@ fn xml_space_len_stops_at_the_first_other_byte() {
 /// borrow goes through (one above it, 0x80, 0x81, 0xFF...).
 #[test]
 fn first_equal_flags_the_first_equal_byte_first() {
-    let mut state = 0x2545_F491_4F6C_DD1Du64;
+    let mut random = crate::Xorshift(0x2545_F491_4F6C_DD1D);
     for b in [0u8, 1, b'\r', b'&', b'<', b'>', 0x7F, 0x80, 0x81, 0xFE, 0xFF] {
         let near = [
             b,
@@ -68,9 +68,7 @@ fn first_equal_flags_the_first_equal_byte_first() {
             0xFF,
         ];
         for _ in 0..100_000 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = random.next();
             let bytes: [u8; 8] = std::array::from_fn(|i| near[(state >> (6 * i)) as usize % 10]);
             let expected = bytes.iter().position(|&x| x == b);
             let mask = first_equal(u64::from_le_bytes(bytes), b);
@@ -85,16 +83,13 @@ fn first_equal_flags_the_first_equal_byte_first() {
 #[test]
 fn space_len_and_trimmed_span_agree_with_xml_white_space() {
     let pieces: [&[u8]; 9] = [b" ", b"\t", b"\n", b"\r", b"a", b"<", b"\xC3\xA9", b"!", b"\x7F"];
-    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut random = crate::Xorshift(0x9E37_79B9_7F4A_7C15);
     for len in 0..40 {
         for _ in 0..500 {
             let mut text = Vec::new();
             for _ in 0..len {
-                state ^= state << 13;
-                state ^= state >> 7;
-                state ^= state << 17;
                 // Mostly white space, so that runs of it cross the eight-byte words.
-                let pick = (state % 16) as usize;
+                let pick = random.below(16);
                 text.extend_from_slice(pieces[if pick < 8 { pick % 4 } else { pick - 7 }]);
             }
             assert_eq!(space_len(&text), xml_space_len(&text), "{text:?}");

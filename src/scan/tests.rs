@@ -1,4 +1,5 @@
 use super::*;
+use crate::Xorshift;
 
 /// An item: its offset, its parent's, the elements before it and whether other markup
 /// comes right before it.
@@ -131,6 +132,27 @@ fn one_by_one(text: &[u8]) -> (Vec<Found>, u64) {
     (items, elements)
 }
 
+/// Appends up to `most` of `pieces` to `text`, at random: mostly tags that open and close
+/// (the first two pieces), so that blocks of plain tags are common, and text (the sixth to
+/// the eighth); now and then any of the first `others`.
+fn random_pieces(
+    random: &mut Xorshift,
+    text: &mut Vec<u8>,
+    pieces: &[&[u8]],
+    most: usize,
+    others: usize,
+) {
+    for _ in 0..random.below(most) {
+        let piece = match random.below(10) {
+            0..3 => 0,
+            3..6 => 1,
+            6..8 => 5 + random.below(3),
+            _ => random.below(others),
+        };
+        text.extend_from_slice(pieces[piece]);
+    }
+}
+
 /// Texts made at random of tags, text, markup and broken markup: the scan, whole and in
 /// windows, finds what a byte-at-a-time reading finds, where blocks of plain tags are
 /// counted at once and where tags are looked at one by one.
@@ -156,26 +178,10 @@ fn the_scan_counts_what_a_byte_at_a_time_reading_counts() {
         b"<e\n/>",
         b"&amp;",
     ];
-    let mut seed = 0x2545_f491_4f6c_dd1du64;
-    let mut random = |n: usize| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as usize
-    };
+    let mut random = Xorshift(0x2545_f491_4f6c_dd1d);
     for round in 0..3000 {
-        // Mostly tags that open and close, so that blocks of plain tags are common; the
-        // rest now and then.
         let mut text = b"<W><C>".to_vec();
-        for _ in 0..random(200) {
-            let piece = match random(10) {
-                0..3 => 0,
-                3..6 => 1,
-                6..8 => 5 + random(3),
-                _ => random(pieces.len()),
-            };
-            text.extend_from_slice(pieces[piece]);
-        }
+        random_pieces(&mut random, &mut text, &pieces, 200, pieces.len());
         let expected = one_by_one(&text);
         for window in [text.len().max(1), 1, 13, 64, 100] {
             let mut scanner = Scanner::new();
@@ -291,32 +297,16 @@ fn the_index_marks_what_a_byte_at_a_time_reading_finds() {
         b"<!-- a -- b -->",
         b"<!DOCTYPE a>",
     ];
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut random = |n: usize| {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % n as u64) as usize
-    };
+    let mut random = Xorshift(0x9e37_79b9_7f4a_7c15);
     let long = format!("<Long a=\"{}\">", "x>".repeat(CHUNK));
     for round in 0..2000 {
         let mut text = b"<W><C>".to_vec();
         if round % 100 == 0 {
             text.extend_from_slice(long.as_bytes());
         }
-        for _ in 0..random(300) {
-            let piece = match random(10) {
-                0..3 => 0,
-                3..6 => 1,
-                6..8 => 5 + random(3),
-                // The markup that stops the scan, now and then.
-                _ => {
-                    let stopping = usize::from(random(4) == 0);
-                    random(pieces.len() - 2 + 2 * stopping)
-                }
-            };
-            text.extend_from_slice(pieces[piece]);
-        }
+        // The last two pieces stop the scan: in a text now and then.
+        let stopping = if round % 4 == 0 { 0 } else { 2 };
+        random_pieces(&mut random, &mut text, &pieces, 300, pieces.len() - stopping);
         let expected = marks_one_by_one(&text);
         for window in [text.len().max(1), 1, 13, 64, 100, 4096] {
             assert_eq!(

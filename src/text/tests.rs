@@ -22,13 +22,8 @@ fn floats_in_every_spelling() {
 /// numbers of the shapes writers produce, most of them within its reach.
 #[test]
 fn exact_floats_match_the_standard_parse() {
-    let mut state = 0x2545F4914F6CDD1Du64;
-    let mut next = |n: u64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state % n
-    };
+    let mut random = crate::Xorshift(0x2545F4914F6CDD1D);
+    let mut next = |n: u64| random.next() % n;
     let mut fast = 0;
     for _ in 0..1_000_000 {
         let digits = |count: u64, next: &mut dyn FnMut(u64) -> u64| {
@@ -380,13 +375,8 @@ fn the_float_prefix_matches_the_old_one() {
     let alphabet = ["0", "9", "5", ".", "-", "+", "e", "E", " ", "x"];
     for_all_strings(&alphabet, 6, |text| same_prefix(text.as_bytes()));
     // Long runs of digits, across the eights, at every length of text.
-    let mut state = 0x2545F4914F6CDD1Du64;
-    let mut next = |n: u64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state % n
-    };
+    let mut random = crate::Xorshift(0x2545F4914F6CDD1D);
+    let mut next = |n: u64| random.next() % n;
     for _ in 0..1_000_000 {
         let mut text = String::from(["", "-", "+"][next(3) as usize]);
         for _ in 0..next(22) {

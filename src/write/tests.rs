@@ -36,13 +36,8 @@ fn core_fmt_text(value: f32) -> String {
 
 #[test]
 fn floats_are_written_as_core_fmt_writes_them() {
-    let mut state = 0x9e37_79b9_7f4a_7c15u64;
-    let mut random_bits = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state as u32
-    };
+    let mut random = crate::Xorshift(0x9e37_79b9_7f4a_7c15);
+    let mut random_bits = || random.next() as u32;
     let edges = [0u32, 1, 0x007f_ffff, 0x0080_0000, 0x7f7f_ffff, 0x3f80_0000, 0x4b80_0000]
         .into_iter()
         .chain([1e-5f32, 9.99999e-6, 1e16, 9.999999e15, 0.1, 123_456_790.0].map(f32::to_bits))

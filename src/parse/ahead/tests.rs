@@ -230,13 +230,8 @@ fn many_pieces_of_every_scene_file_load_as_one_thread_reads_them() {
 /// load of one thread, however the text is cut.
 #[test]
 fn changed_files_load_as_one_thread_reads_them() {
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut next = move |below: usize| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state % below as u64) as usize
-    };
+    let mut random = crate::Xorshift(0x2545_f491_4f6c_dd1d);
+    let mut next = move |below: usize| random.below(below);
     let strict = LoadOptions { strict: true, ..LoadOptions::default() };
     for (name, bytes) in crate::scene_files() {
         let items = container_items(&bytes);

@@ -282,7 +282,7 @@ impl Stop {
 impl<'a> Tokenizer<'a> {
     pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
         let lines = Lines::new(source.encoding(), Cursor::start(source.base()));
-        let source_base = source.base();
+        let index = Index::new(source.base());
         Tokenizer {
             source,
             options,
@@ -294,7 +294,7 @@ impl<'a> Tokenizer<'a> {
             open: Vec::new(),
             elements: 0,
             lines,
-            index: Index::new(source_base),
+            index,
             ends: Vec::new(),
             next_end: 0,
             end_at: usize::MAX,
@@ -375,10 +375,7 @@ impl<'a> Tokenizer<'a> {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
                 return Ok(Some(mark));
             }
-            let seen = self.source.end().saturating_sub(overlap).max(at + skip);
-            if (seen - at) as u64 > self.options.max_text_bytes {
-                return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
-            }
+            self.within_text_limit(at, self.source.end().saturating_sub(overlap).max(at + skip))?;
             if !self.more()? {
                 return Ok(None);
             }
@@ -480,17 +477,12 @@ impl<'a> Tokenizer<'a> {
             if let Some(start) = self.index.next_start(text, base) {
                 break start;
             }
-            if (self.source.end() - at) as u64 > self.options.max_text_bytes {
-                return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
-            }
+            self.within_text_limit(at, self.source.end())?;
             if !self.more()? {
                 break self.source.end();
             }
         };
-        if (end - at) as u64 > self.options.max_text_bytes {
-            return Err(self.limit(at, "max_text_bytes", self.options.max_text_bytes));
-        }
-        self.pos = end;
+        self.pos = self.within_text_limit(at, end)?;
         let text = self.source.slice(at, end);
         // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
         if let Some(i) = memchr::memmem::find(text.as_bytes(), b"]]>") {
