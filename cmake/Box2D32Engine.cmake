@@ -1,10 +1,11 @@
 # Box2D v3.2, built from source for the tests and examples of the v3.2 adapter: the target
 # box2scene_box2d32_engine (alias box2d32::box2d32), a static library.
 #
-# The only v3.2 C sources on the registry are those of boxdd-sys 0.6.0 (third-party/box2d, a
-# 3.2.0 development snapshot of upstream, MIT): tools/box2d32/ is a manifest depending on it,
-# fetched and located as the v3.1.1 engine's sources are (cmake/CrateSources.cmake). Its
-# patches/ are not applied: they touch recording, snapshots, allocation and timers only.
+# The only v3.2 C sources on the registry are those of boxdd-sys 0.6.0 (third-party/box2d:
+# upstream commit 56edae79 of June 2026, MIT; not the 3.2.0 release of October 2026):
+# tools/box2d32/ is a manifest depending on it, fetched and located as the v3.1.1 engine's
+# sources are (cmake/CrateSources.cmake). Its patches/ are not applied: they touch recording,
+# snapshots, allocation and timers only.
 # Box2D v3.1.1 and v3.2 define the same symbols, so no target links both.
 
 include(${CMAKE_CURRENT_LIST_DIR}/CrateSources.cmake)

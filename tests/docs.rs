@@ -67,3 +67,48 @@ fn a_function_the_page_does_not_name_is_found() {
     assert!(!names(text, "b2s_scene_free"));
     assert!(!names(text, "b2s_load"));
 }
+
+/// `text` with its lines joined and the comment marks of C, CMake and TOML taken off, so that a
+/// phrase broken across lines is found.
+fn joined(text: &str) -> String {
+    let words = text.lines().map(|line| line.trim().trim_start_matches(['*', '/', '#']).trim());
+    words.collect::<Vec<_>>().join(" ")
+}
+
+/// The version of `crate_name` that a Cargo.lock pins.
+fn pinned(lock: &str, crate_name: &str) -> String {
+    let entry = format!("name = \"{crate_name}\"\nversion = \"");
+    let at = lock.find(&entry).unwrap_or_else(|| panic!("the lock pins no {crate_name}"));
+    let rest = &lock[at + entry.len()..];
+    rest[..rest.find('"').expect("a quoted version")].to_string()
+}
+
+/// Every page and header that names the Box2D v3.2 the adapter serves names the tree the tests
+/// build (upstream 56edae79, in the boxdd-sys that tools/box2d32 pins), the tree its API was
+/// checked against (main 617d32ab), and says that the 3.2.0 release is not what was built.
+#[test]
+fn docs_name_the_box2d_v32_the_tests_build() {
+    let version = pinned(&read("tools/box2d32/Cargo.lock"), "boxdd-sys");
+    let sources = format!("boxdd-sys {version}");
+    for page in [
+        "README.md",
+        "docs/box2d.md",
+        "include/box2scene/box2d32.h",
+        "include/box2scene/detail/box2d3/v32.h",
+    ] {
+        let text = joined(&read(page)).replace('`', "");
+        for fact in [sources.as_str(), "56edae79 (June 2026", "617d32ab (August 2026)"] {
+            assert!(text.contains(fact), "{page} does not say {fact:?}");
+        }
+        assert!(
+            text.contains("3.2.0 release (October 2026)")
+                && text.contains("not available here to build"),
+            "{page} does not say that the 3.2.0 release is not the one built"
+        );
+    }
+    for page in ["docs/layout.md", "docs/install.md"] {
+        let text = joined(&read(page));
+        assert!(text.contains("56edae79 (June 2026"), "{page} does not name the v3.2 tree");
+        assert!(!text.contains("development snapshot"), "{page} calls it a 3.2.0 snapshot");
+    }
+}

@@ -5,6 +5,11 @@
  * declarations are usable from C++; Box2D v3.2's headers, which it includes, need C11.
  * Needs <box2d/box2d.h> (Box2D v3.2, single precision) and <box2scene.h>.
  *
+ * Which v3.2: built and tested against upstream commit 56edae79 (June 2026, the sources of
+ * boxdd-sys 0.6.0), the API it calls checked against main 617d32ab (August 2026). The tagged
+ * 3.2.0 release (October 2026) changed the chain API, which the adapter does not call, and is
+ * not available here to build: it is untested.
+ *
  * The implementation is compiled where the host defines B2S_BOX2D32_IMPLEMENTATION, in
  * exactly one C file, before including this header (CMake's box2scene::box2d32 target does
  * that for you). It compiles as C, against the host's own Box2D v3.2.

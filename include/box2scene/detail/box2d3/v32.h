@@ -5,9 +5,11 @@
  * body's mass is summed, how chains are made and read back, how joints take their anchors,
  * axes and reference angles (local frames) and give them back, and its motor joint.
  *
- * Only the part of the API that Box2D's 3.2 development snapshot (boxdd-sys 0.6.0), its
- * upstream of August 2026 and the 3.2.0 release share is used: no b2ChainDef, no
- * b2DestroyJoint, no pre-solve callback, no state hash, joint kinds compared by name.
+ * Built and tested against upstream commit 56edae79 (June 2026, the sources of boxdd-sys
+ * 0.6.0); only the part of the API it shares with main 617d32ab (August 2026) is used. The
+ * 3.2.0 release (October 2026) reworked b2ChainDef and is not available here to build. So:
+ * no b2ChainDef, no b2DestroyJoint, no pre-solve callback, no state hash, joint kinds
+ * compared by name.
  * Names starting with b2s3_ are private to the adapter's one translation unit.
  */
 #ifndef BOX2SCENE_BOX2D3_V32_H
@@ -113,8 +115,9 @@ static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* d
 }
 
 /* ---- chains: loose chain segments, one shape per edge, each with its neighbours as ghosts.
- * They collide exactly as v3.2's chains of the same points, and, unlike b2ChainDef (revised
- * in 3.2.0), are the same in every 3.2 source; they also take the sensor flag. */
+ * They collide exactly as v3.2's chains of the same points, and, unlike b2ChainDef (reworked
+ * by the 3.2.0 release), are the same in both trees the adapter serves; they also take the
+ * sensor flag. */
 
 /* Edge i of a chain's points (open: [ghost, vertices..., ghost], a loop: the vertices). */
 static b2ChainSegment b2s3_chain_segment(const b2Vec2* p, int n, bool loop, int i) {
