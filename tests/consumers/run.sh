@@ -283,6 +283,10 @@ check_pkg_config_static() {
 # prefix with pkg-config and runs. cargo-c is
 # installed once under the build folder, unoptimised and without debug information (a build
 # of cargo itself: a few minutes; 0.10.24 is the newest that builds with Rust 1.95).
+# Debian's cargo-c (0.9.14, `apt-get install cargo-c`) would spare that build but cannot
+# serve: it carries the cargo of its day, which reads no edition 2024 manifest, and stops on
+# this workspace's Cargo.toml ("this version of Cargo is older than the `2024` edition")
+# before it installs a file.
 check_cargo_c() {
   : "${CARGO:?}"
   local tools=$BOX2SCENE_BUILD_DIR/tools/cargo-c prefix=$work/cargo-c-prefix folder file cflags
