@@ -275,6 +275,12 @@ enum b2s_code
    */
   B2S_CODE_JOINT_STARTS_VIOLATED = 111,
   /**
+   * A revolute joint's `LowerAngle` or `UpperAngle`, or a body's `Angle`, that is a whole
+   * number beyond a full turn (2 pi) and within one in degrees (360): degrees written
+   * where radians are meant (`-45` for -pi/4); read as radians.
+   */
+  B2S_CODE_ANGLE_IN_DEGREES = 112,
+  /**
    * A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
    */
   B2S_CODE_LOSSY_LINE_MOTOR = 200,

@@ -138,6 +138,10 @@ pub enum Code {
     /// A joint whose bodies the file places further from satisfied than Box2D's slop
     /// (0.005 m, 2 degrees): the message says how far, in metres or radians.
     JointStartsViolated = 111,
+    /// A revolute joint's `LowerAngle` or `UpperAngle`, or a body's `Angle`, that is a whole
+    /// number beyond a full turn (2 pi) and within one in degrees (360): degrees written
+    /// where radians are meant (`-45` for -pi/4); read as radians.
+    AngleInDegrees = 112,
 
     // What the Box2D adapter reports.
     /// A line joint's linear motor: Box2D 2.4 has none; the motor is left off.
@@ -233,6 +237,7 @@ impl Code {
         Code::LineJointIsWheel,
         Code::WarningsTruncated,
         Code::JointStartsViolated,
+        Code::AngleInDegrees,
         Code::LossyLineMotor,
         Code::SkippedJoint,
         Code::SkippedDependent,
@@ -309,6 +314,7 @@ impl Code {
             Code::LineJointIsWheel => c"line-joint-is-wheel",
             Code::WarningsTruncated => c"warnings-truncated",
             Code::JointStartsViolated => c"joint-starts-violated",
+            Code::AngleInDegrees => c"angle-in-degrees",
             Code::LossyLineMotor => c"lossy-line-motor",
             Code::SkippedJoint => c"skipped-joint",
             Code::SkippedDependent => c"skipped-dependent",

@@ -221,6 +221,24 @@ pub fn chain(vertices: &[Vec2], is_loop: bool, at: usize) -> Checked {
     Ok(None)
 }
 
+/// An angle in radians that reads as degrees: a whole number beyond a full turn (2 pi)
+/// and within one turn in degrees, as `<LowerAngle>-45</LowerAngle>` is. A whole number
+/// of radians past a turn is no angle a level is drawn with; larger values are left to
+/// the working range. The warning `angle-in-degrees` for the element `name` at `at`, which
+/// says what the value would be in radians.
+pub(crate) fn angle_in_degrees(name: &str, radians: f32, at: usize) -> Option<Finding> {
+    let magnitude = radians.abs();
+    if radians.fract() != 0.0 || magnitude <= std::f32::consts::TAU || magnitude > 360.0 {
+        return None;
+    }
+    let message = format!(
+        "<{name}> is {radians}, a whole number beyond a full turn: it is read as radians; \
+         as degrees it would be {} rad",
+        radians.to_radians()
+    );
+    Some(Finding::new(Code::AngleInDegrees, at, message))
+}
+
 /// The rules one joint can break on its own (its references are checked elsewhere).
 pub(crate) fn joint(joint: &Joint, at: usize, body_b_at: usize) -> Parsed<()> {
     if joint.body_a == joint.body_b {

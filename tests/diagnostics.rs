@@ -1090,3 +1090,63 @@ fn an_unknown_name_near_a_known_one_gets_a_hint() {
         assert!(!message.contains("did you mean"), "{far}: {message}");
     }
 }
+
+/// A revolute limit or a body angle written in degrees where radians are meant (a whole
+/// number beyond a full turn, within one in degrees) is a warning of its own at the value,
+/// which says what it would be in radians; nothing else is.
+#[test]
+fn angle_in_degrees() {
+    let door = joint(
+        "Revolute",
+        "<EnableLimit>true</EnableLimit><LowerAngle>⌖-45</LowerAngle><UpperAngle>0.5</UpperAngle>",
+    );
+    assert_eq!(
+        warning_message(&door, Code::AngleInDegrees),
+        "<LowerAngle> is -45, a whole number beyond a full turn: it is read as radians; \
+         as degrees it would be -0.7853982 rad"
+    );
+    let upper = joint("Revolute", "<UpperAngle>⌖360</UpperAngle>");
+    expect_warning(&upper, Code::AngleInDegrees);
+    let body = world("", "", "<Body Type=\"Static\"><Angle>⌖90</Angle></Body>", "");
+    expect_warning(&body, Code::AngleInDegrees);
+    let radians = [
+        "<Angle>6</Angle>",
+        "<Angle>-6.2</Angle>",
+        "<Angle>12.5</Angle>",
+        "<Angle>720</Angle>",
+        "<Angle>3.4028235E+38</Angle>",
+    ];
+    for angle in radians {
+        let xml = world("", "", &format!("<Body Type=\"Static\">{angle}</Body>"), "");
+        assert_eq!(warnings_of(&xml), [], "{angle}");
+    }
+    let slider = joint("Prismatic", "<LowerTranslation>-45</LowerTranslation>");
+    assert_eq!(warnings_of(&slider), []);
+}
+
+/// A misspelt `Type` of a shape, body or joint is named with the nearest the format has, as
+/// a misspelt element is; one far from every kind gets no hint.
+#[test]
+fn an_unknown_type_near_a_known_one_gets_a_hint() {
+    let message = expect_error(&world("<Shape Type=\"⌖Polgon\"/>", "", "", ""), Code::UnknownType);
+    assert_eq!(
+        message,
+        "unknown shape Type \"Polgon\" (did you mean Polygon?): expected Circle, Polygon, Edge or Chain"
+    );
+    let message = expect_error(&world("", "", "<Body Type=\"⌖dynamc\"/>", ""), Code::UnknownType);
+    assert_eq!(
+        message,
+        "unknown body Type \"dynamc\" (did you mean Dynamic?): expected Static, Dynamic or Kinematic"
+    );
+    let message = expect_error(&joint("⌖Revolut", ""), Code::UnsupportedJointType);
+    assert!(
+        message.starts_with("unknown joint Type \"Revolut\" (did you mean Revolute?); "),
+        "{message}"
+    );
+    let message = expect_error(&joint("⌖Wheeel", ""), Code::UnsupportedJointType);
+    assert!(message.contains("(did you mean Wheel?)"), "{message}");
+    let message = expect_error(&world("<Shape Type=\"⌖Hexagon\"/>", "", "", ""), Code::UnknownType);
+    assert!(!message.contains("did you mean"), "{message}");
+    let message = expect_error(&joint("⌖Mouse", ""), Code::UnsupportedJointType);
+    assert!(!message.contains("did you mean"), "{message}");
+}

@@ -112,3 +112,21 @@ fn docs_name_the_box2d_v32_the_tests_build() {
         assert!(!text.contains("development snapshot"), "{page} calls it a 3.2.0 snapshot");
     }
 }
+
+/// docs/format.md's tables of codes hold one row for every code, with its number and name.
+#[test]
+fn docs_format_tables_every_code() {
+    let page = read("docs/format.md");
+    for &code in box2scene::Code::ALL {
+        let row = format!("| {} | `{}` |", code as u32, code.name());
+        assert!(page.contains(&row), "docs/format.md has no row {row}");
+    }
+}
+
+/// Where the README describes `check`, it tells a level pipeline to run it with `--strict`,
+/// since warnings alone exit 0.
+#[test]
+fn readme_recommends_strict_check_for_pipelines() {
+    let readme = joined(&read("README.md"));
+    assert!(readme.contains("a level pipeline runs `box2scene check --strict`"));
+}

@@ -49,7 +49,9 @@ enum VerbArgs {
         after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
                       Lines and columns count from 1, columns in characters.\n\
                       Exit status: 0 when no file has an error, 1 when one has, 2 on a usage \
-                      or I/O error."
+                      or I/O error.\n\
+                      Warnings alone exit 0: in a level pipeline, run check --strict, so that\n\
+                      a misspelt element or an angle in degrees fails the build."
     )]
     Check {
         #[command(flatten)]

@@ -1182,3 +1182,31 @@ fn fmt_writes_for_the_reader_dialect_names_and_keeps_an_engines_own() {
     assert!(unknown.stderr.contains("invalid value 'farseer'"), "{}", unknown.stderr);
     assert!(unknown.stderr.contains("farseer-3.5, aether"), "the names: {}", unknown.stderr);
 }
+
+/// A level pipeline learns from `check`'s help to run it with `--strict`, and so a door whose
+/// limit is misspelt, or written in degrees, fails the build with exit 1 instead of passing
+/// with warnings.
+#[test]
+fn check_recommends_strict_for_pipelines_which_then_fail_on_a_door_in_degrees() {
+    let sandbox = Sandbox::new("pipeline");
+    let help = sandbox.run(&["help", "check"]);
+    assert!(
+        help.stdout.contains("in a level pipeline, run check --strict, so that\n"),
+        "{}",
+        help.stdout
+    );
+    let xml = clean_with(
+        "  </Bodies>\n  <Joints />",
+        "    <Body Type=\"Static\"/>\n  </Bodies>\n  <Joints><Joint Type=\"Revolute\">\
+         <BodyA>1</BodyA><BodyB>0</BodyB><EnableLimit>true</EnableLimit>\
+         <LowerAngel>-0.7</LowerAngel><LowerAngle>-45</LowerAngle></Joint></Joints>",
+    );
+    let sandbox = sandbox.write("door.xml", &xml);
+    let run = sandbox.run(&["check", "door.xml"]);
+    assert_eq!(run.status, 0, "{}", run.stderr);
+    assert!(run.stdout.contains("(did you mean <LowerAngle>?)"), "{}", run.stdout);
+    assert!(run.stdout.contains("warning[angle-in-degrees]: <LowerAngle> is -45"), "{}", run.stdout);
+    let strict = sandbox.run(&["check", "--strict", "door.xml"]);
+    assert_eq!(strict.status, 1, "{}", strict.stdout);
+    assert!(strict.stdout.contains("error[unknown-element]"), "{}", strict.stdout);
+}

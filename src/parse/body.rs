@@ -61,7 +61,7 @@ impl<'a> Reader<'a> {
                 BodyChild::Awake => body.awake = self.boolean(&child)?,
                 BodyChild::Bullet => body.bullet = self.boolean(&child)?,
                 BodyChild::FixedRotation => body.fixed_rotation = self.boolean(&child)?,
-                BodyChild::Angle => body.angle = self.float(&child)?,
+                BodyChild::Angle => body.angle = self.radians(&child)?,
                 // Negative damping is not an error of the format; the Box2D adapter, whose
                 // engine asserts against it, reports it and uses 0.
                 BodyChild::AngularDamping => body.angular_damping = self.float(&child)?,
@@ -150,8 +150,9 @@ impl<'a> Reader<'a> {
                 Code::UnknownType,
                 ty.at,
                 format!(
-                    "unknown body Type \"{}\": expected Static, Dynamic or Kinematic",
-                    super::shorten(value)
+                    "unknown body Type \"{}\"{}: expected Static, Dynamic or Kinematic",
+                    super::shorten(value),
+                    super::did_you_mean(value, &["Static", "Dynamic", "Kinematic"])
                 ),
             )),
         };

@@ -120,6 +120,23 @@ pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
     Ok(joint)
 }
 
+/// Every joint `Type` [`joint_kind`] reads, in the format's spelling, for a "did you mean".
+const JOINT_TYPES: [&str; 13] = [
+    "Revolute",
+    "Prismatic",
+    "Distance",
+    "Pulley",
+    "Line",
+    "Weld",
+    "Friction",
+    "Gear",
+    "Wheel",
+    "Rope",
+    "Motor",
+    "Angle",
+    "Slider",
+];
+
 fn joint_kind(value: &str) -> Option<JointKind> {
     use JointKind::*;
     Some(match super::lowercase(value, &mut [0; 16]) {
@@ -217,6 +234,9 @@ impl<'a> Reader<'a> {
                     Slot::Fills(Value::Vector(field)) => {
                         *field(&mut joint) = self.vector(&child)?
                     }
+                    Slot::Fills(Value::Float(field)) if matches!(name, LowerAngle | UpperAngle) => {
+                        *field(&mut joint) = self.radians(&child)?
+                    }
                     Slot::Fills(Value::Float(field)) => *field(&mut joint) = self.float(&child)?,
                     Slot::Fills(Value::NonNegative(field)) => {
                         *field(&mut joint) = self.non_negative(&child)?
@@ -308,7 +328,8 @@ impl<'a> Reader<'a> {
             let why = if value.eq_ignore_ascii_case("mouse") {
                 "a mouse joint belongs to a running game, not to a scene".to_string()
             } else {
-                format!("unknown joint Type \"{}\"", super::shorten(value))
+                let hint = super::did_you_mean(value, &JOINT_TYPES);
+                format!("unknown joint Type \"{}\"{hint}", super::shorten(value))
             };
             return Err(problem(
                 Code::UnsupportedJointType,

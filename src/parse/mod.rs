@@ -194,6 +194,16 @@ impl<'a> Reader<'a> {
     }
 
     /// A float that must not be negative (error `negative-value`).
+    /// An angle in radians, warned about where it reads as degrees
+    /// ([`rules::angle_in_degrees`]).
+    pub fn radians(&mut self, tag: &Tag) -> Reading<f32> {
+        let (v, at) = self.value(tag, text::float)?;
+        if let Some(warning) = rules::angle_in_degrees(tag.name(), v, at) {
+            self.note(warning)?;
+        }
+        Ok(v)
+    }
+
     pub fn non_negative(&mut self, tag: &Tag) -> Reading<f32> {
         let (v, at) = self.value(tag, text::float)?;
         let checked = rules::not_negative(format_args!("<{}>", tag.name), v, at);
@@ -211,10 +221,7 @@ impl<'a> Reader<'a> {
     /// being read.
     pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Reading<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
-            let hint = match names::nearest(attr.key, known) {
-                Some(near) => format!(" (did you mean {near}?)"),
-                None => String::new(),
-            };
+            let hint = did_you_mean(attr.key, known);
             let message =
                 format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
@@ -391,6 +398,15 @@ impl<'a> Reader<'a> {
             each(self, &child)?;
         }
         Ok(())
+    }
+}
+
+/// " (did you mean NEAR?)" for the one of `known` nearest `name` in spelling
+/// ([`names::nearest`]), or nothing when none is near: for an unknown attribute or `Type`.
+pub(crate) fn did_you_mean(name: &str, known: &[&str]) -> String {
+    match names::nearest(name, known) {
+        Some(near) => format!(" (did you mean {near}?)"),
+        None => String::new(),
     }
 }
 

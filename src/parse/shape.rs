@@ -171,8 +171,9 @@ impl<'a> Reader<'a> {
                     Code::UnknownType,
                     ty.at,
                     format!(
-                        "unknown shape Type \"{}\": expected Circle, Polygon, Edge or Chain",
-                        super::shorten(value)
+                        "unknown shape Type \"{}\"{}: expected Circle, Polygon, Edge or Chain",
+                        super::shorten(value),
+                        super::did_you_mean(value, &["Circle", "Polygon", "Edge", "Chain", "Loop"])
                     ),
                 ));
             }
