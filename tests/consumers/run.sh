@@ -235,6 +235,27 @@ check_box2d3_package() {
     "$work/build/fall_v3" "$work/src/scene.xml"
 }
 
+# The same host with Box2D v3.1.1 fetched by FetchContent and built by Box2D's own CMake
+# (docs/install.md's recipe, unchanged). Only the package registries are reachable, so
+# FETCHCONTENT_SOURCE_DIR_BOX2D hands FetchContent, as a host with a copy of Box2D's
+# repository would, the v3.1.1 sources the tests build (the registry crate's, beside
+# BOX2D3_INCLUDE_DIR), whose src/CMakeLists.txt is Box2D's own; nothing is downloaded.
+check_box2d3_fetchcontent() {
+  : "${BOX2D3_INCLUDE_DIR:?}"
+  local box2d
+  box2d=$(cd "$BOX2D3_INCLUDE_DIR/.." && pwd)
+  [ -f "$box2d/src/CMakeLists.txt" ] || fail "$box2d carries no Box2D CMake project"
+  build_consumer box2d3_fetchcontent -DFETCHCONTENT_SOURCE_DIR_BOX2D="$box2d" \
+    -DFETCHCONTENT_FULLY_DISCONNECTED=ON
+  [ -f "$work/build/_deps/box2d-build/libbox2d.a" ] ||
+    fail "Box2D's own CMake did not build libbox2d.a in the host's build"
+  if needed "$work/build/fall_v3" | grep -q '^libbox2d\.so'; then
+    fail "fall_v3 loads Box2D 2.4"
+  fi
+  expect_output "2 bodies; after 1 s the ball is at (0.000, 4.979)" \
+    "$work/build/fall_v3" "$work/src/scene.xml"
+}
+
 # The same with Box2D v3.2 (BOX2D32_INCLUDE_DIR, BOX2D32_LIBRARY) and box2scene::box2d32.
 check_c_box2d32() {
   : "${BOX2D32_INCLUDE_DIR:?}" "${BOX2D32_LIBRARY:?}"
@@ -345,7 +366,8 @@ check_readme() {
     [[ $readme == *"$(cat "$here/$file")"* ]] || fail "README.md does not show $file as it is"
   done
   for file in c/CMakeLists.txt cpp/CMakeLists.txt static/CMakeLists.txt box2d3/CMakeLists.txt \
-    box2d32/CMakeLists.txt fetchcontent/CMakeLists.txt box2d3_package/CMakeLists.txt; do
+    box2d32/CMakeLists.txt fetchcontent/CMakeLists.txt box2d3_package/CMakeLists.txt \
+    box2d3_fetchcontent/CMakeLists.txt; do
     [[ $install == *"$(cat "$here/$file")"* ]] ||
       fail "docs/install.md does not show $file as it is"
   done
