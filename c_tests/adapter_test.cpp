@@ -356,6 +356,39 @@ static int body_flags_reach_box2d() {
     return 0;
 }
 
+/// Box2D 2.4 has no names: the adapter leaves every user data pointer 0 (it is the host's),
+/// and a host finds a named body as Built::bodies at the scene body's index.
+static int names_are_not_user_data() {
+    ScenePtr scene = load_text(R"(<World Version="1">
+      <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+      <Fixtures><Fixture><Name>rim</Name><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+      <Bodies>
+        <Body Type="Static"><Name>Ground</Name></Body>
+        <Body Type="Dynamic"><Name>Door</Name><Position>2 0</Position>
+          <Fixtures><ID>0</ID></Fixtures></Body>
+      </Bodies>
+      <Joints><Joint Type="Revolute"><Name>hinge</Name><BodyA>0</BodyA><BodyB>1</BodyB>
+        <LocalAnchorA>2 0</LocalAnchorA></Joint></Joints>
+    </World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE(built.reports.empty());
+    ENSURE_EQ(world.GetBodyCount(), 2);
+    for (b2Body* body = world.GetBodyList(); body != nullptr; body = body->GetNext()) {
+        ENSURE_EQ(body->GetUserData().pointer, 0);
+        for (b2Fixture* f = body->GetFixtureList(); f != nullptr; f = f->GetNext()) {
+            ENSURE_EQ(f->GetUserData().pointer, 0);
+        }
+    }
+    ENSURE_EQ(built.joints[0]->GetUserData().pointer, 0);
+    const b2s_scene_view* view = b2s_scene_get_view(scene.get());
+    ENSURE(std::string(view->bodies[1].name) == "Door");
+    ENSURE_FLOAT(built.bodies[1]->GetPosition().x, 2.0f);
+    ENSURE(built.bodies[1]->GetType() == b2_dynamicBody);
+    return 0;
+}
+
 /// Box2D 2.4 holds 16 filter bits: Farseer's "all" mask (2147483647) over categories in 16
 /// bits collides as it says, silently; a category above bit 16, and a mask meeting one, are
 /// reported.
@@ -409,6 +442,7 @@ int main() {
     failed += RUN_TEST(negative_damping_never_reaches_box2d);
     failed += RUN_TEST(wheel_and_line_axes_are_directions);
     failed += RUN_TEST(body_flags_reach_box2d);
+    failed += RUN_TEST(names_are_not_user_data);
     failed += RUN_TEST(filter_bits_are_reported_only_where_16_change_what_collides);
     return failed;
 }

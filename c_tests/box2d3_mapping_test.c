@@ -1481,6 +1481,69 @@ static int angle_beyond_pi_is_reported_lossy_for_capture(void) {
     return 0;
 }
 
+/* v3.1 keeps 31 bytes of a name (body.h: name[32]): a longer one is not passed (nor cut),
+ * and reported. */
+static int names_longer_than_v31_keeps_are_reported(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", CIRCLE("0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><Name>abcdefghijklmnopqrstuvwxyz01234</Name>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Name>abcdefghijklmnopqrstuvwxyz012345</Name>"
+         "<Position>5 0</Position><Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_BODY, "body", 1), 1);
+    ENSURE_STR(b2Body_GetName(BODY(w, 0)), "abcdefghijklmnopqrstuvwxyz01234");
+    ENSURE_STR(b2Body_GetName(BODY(w, 1)), "");
+    close_world(&w);
+    return 0;
+}
+
+/* Box2D 2.x keeps a body that may not sleep asleep until touched; v3.1 creates it awake. */
+static int awake_false_without_sleep_is_reported(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", CIRCLE("0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><Awake>false</Awake><AllowSleep>false</AllowSleep>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 0</Position><Awake>false</Awake>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 1);
+    ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_BODY, "body", 0), 1);
+    ENSURE(b2Body_IsAwake(BODY(w, 0)));
+    ENSURE(!b2Body_IsAwake(BODY(w, 1)));
+    close_world(&w);
+    return 0;
+}
+
+/* A MassData that moves the centre keeps the velocity of the body's origin the file gives,
+ * as Box2D 2.x's SetMassData does: the centre's is the origin's plus w x (c - p). A Mass of
+ * 0 is counted as 1 kg, before the inertia is moved to the centre. */
+static int mass_data_keeps_the_origins_velocity_and_mass_zero_is_one_kilogram(void) {
+    scene_world w;
+    OPEN(w, "1", "0 0", BOX("0.5", "0.5"),
+         "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><LinearVelocity>1 2</LinearVelocity><AngularVelocity>3"
+         "</AngularVelocity><MassData><Center>0.5 0</Center><Inertia>1</Inertia></MassData>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 0</Position><MassData><Mass>0</Mass><Center>0 1"
+         "</Center><Inertia>3</Inertia></MassData><Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 0);
+    b2BodyId moved = BODY(w, 0);
+    ENSURE_FLOAT(b2Body_GetLocalCenterOfMass(moved).x, 0.5f);
+    b2Vec2 v = b2Body_GetLinearVelocity(moved);
+    /* (1, 2) + 3 x (0.5, 0) = (1, 2) + (0, 1.5) */
+    ENSURE_FLOAT(v.x, 1.0f);
+    ENSURE_FLOAT(v.y, 3.5f);
+    b2BodyId massless = BODY(w, 1);
+    ENSURE_FLOAT(b2Body_GetMass(massless), 1.0f);
+    ENSURE_FLOAT(b2Body_GetLocalCenterOfMass(massless).y, 1.0f);
+    ENSURE_FLOAT(b2Body_GetRotationalInertia(massless), 3.0f - 1.0f);
+    close_world(&w);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(body_fields_are_passed_exactly);
@@ -1523,5 +1586,8 @@ int main(void) {
     failed += RUN_TEST(negative_damping_is_reported_and_zeroed);
     failed += RUN_TEST(beyond_the_working_range_skips_what_depends_on_it);
     failed += RUN_TEST(angle_beyond_pi_is_reported_lossy_for_capture);
+    failed += RUN_TEST(names_longer_than_v31_keeps_are_reported);
+    failed += RUN_TEST(awake_false_without_sleep_is_reported);
+    failed += RUN_TEST(mass_data_keeps_the_origins_velocity_and_mass_zero_is_one_kilogram);
     return failed;
 }

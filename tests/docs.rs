@@ -130,3 +130,74 @@ fn readme_recommends_strict_check_for_pipelines() {
     let readme = joined(&read("README.md"));
     assert!(readme.contains("a level pipeline runs `box2scene check --strict`"));
 }
+
+/// The tests a mapping table's last cell names, with the files of `c_tests/` they are in:
+/// each file named (`physics_test.cpp`) holds the test names that follow it, up to the next
+/// file; files named one after the other share the names that follow them.
+fn held_by(cell: &str) -> Vec<(Vec<String>, String)> {
+    let mut held = Vec::new();
+    let (mut files, mut naming) = (Vec::new(), false);
+    for token in cell.split('`').skip(1).step_by(2) {
+        if token.ends_with(".c") || token.ends_with(".cpp") {
+            if naming {
+                files.clear();
+                naming = false;
+            }
+            files.push(token.to_string());
+        } else {
+            held.push((files.clone(), token.to_string()));
+            naming = true;
+        }
+    }
+    held
+}
+
+/// Every row of docs/box2d.md's table of how each Box2D version maps a scene names, in its
+/// last column, the tests that hold it in each engine: at least one of Box2D 2.4's C++ tests,
+/// one of v3.1's and one of v3.2's, each a test its file runs.
+#[test]
+fn docs_box2d_names_the_tests_that_hold_each_mapping_row() {
+    let page = read("docs/box2d.md");
+    let table = page.split("### How each version maps").nth(1).expect("the mapping table");
+    let rows: Vec<&str> = table.lines().skip_while(|l| !l.starts_with('|')).collect();
+    let rows: Vec<&str> = rows.into_iter().take_while(|l| l.starts_with('|')).skip(2).collect();
+    assert!(rows.len() >= 14, "only {} rows", rows.len());
+    for row in rows {
+        let cells: Vec<&str> = row.split('|').collect();
+        let (scene, last) = (cells[1].trim(), cells[cells.len() - 2]);
+        let held = held_by(last);
+        for engine in [".cpp", "box2d3_", "box2d32_"] {
+            assert!(
+                held.iter().any(|(files, _)| files.iter().any(|f| f.contains(engine))),
+                "the row {scene} names no test of {engine}"
+            );
+        }
+        for (files, test) in &held {
+            assert!(!files.is_empty(), "the row {scene} names {test} before any file");
+            for file in files {
+                let source = read(&format!("c_tests/{file}"));
+                assert!(
+                    source.contains(&format!("RUN_TEST({test})")),
+                    "the row {scene} names {test}, which c_tests/{file} does not run"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_cell_names_tests_by_the_files_before_them() {
+    let cell = " `a.cpp` `x`; `b.c`, `c.c` `y`, `z`; `c.c` `w` ";
+    let pair = |files: &[&str], test: &str| {
+        (files.iter().map(|f| f.to_string()).collect::<Vec<_>>(), test.to_string())
+    };
+    assert_eq!(
+        held_by(cell),
+        [
+            pair(&["a.cpp"], "x"),
+            pair(&["b.c", "c.c"], "y"),
+            pair(&["b.c", "c.c"], "z"),
+            pair(&["c.c"], "w")
+        ]
+    );
+}

@@ -135,9 +135,8 @@ inline constexpr float violation = 0.5f;
 // ---- capture: a live b2World back into a scene, so that a host can save its level
 
 /// The code of a capture report for a value the format cannot hold exactly, written as near
-/// as it can (the message says what changed). The library is to name it
-/// B2S_CODE_LOSSY_CAPTURE ("lossy-capture"); until it does, this stand-in lies at the end of
-/// the adapter's block of codes, where none is, and b2s_code_name does not know it.
+/// as it can (the message says what changed): the library's B2S_CODE_LOSSY_CAPTURE, which
+/// b2s_code_name calls "lossy-capture".
 inline constexpr b2s_code lossy_capture_code = B2S_CODE_LOSSY_CAPTURE;
 
 /// A Name and UserData that capture_world gives one object; an empty string gives none.
