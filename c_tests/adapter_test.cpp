@@ -259,6 +259,47 @@ static int farseer_only_joints_are_skipped_and_reported() {
     return 0;
 }
 
+/// Box2D 2.1's pulley limits become ropes held by the scene's first static body: without
+/// one, or for a limit under the linear slop, the side stays unlimited and is reported.
+static int pulley_limits_2_4_cannot_hold_are_reported() {
+    auto pulley = [](const char* ground, const char* limits) {
+        std::string xml = R"(<World Version="1">
+          <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+          <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+          <Bodies>
+            <Body Type="Dynamic"><Position>-2 0</Position><Fixtures><ID>0</ID></Fixtures></Body>
+            <Body Type="Dynamic"><Position>2 0</Position><Fixtures><ID>0</ID></Fixtures></Body>)";
+        xml += ground;
+        xml += R"(</Bodies>
+          <Joints><Joint Type="Pulley"><BodyA>0</BodyA><BodyB>1</BodyB>
+            <GroundAnchorA>-2 5</GroundAnchorA><GroundAnchorB>2 5</GroundAnchorB>
+            <LengthA>5</LengthA><LengthB>5</LengthB><Ratio>1</Ratio>)";
+        xml += limits;
+        xml += "</Joint></Joints></World>";
+        return load_text(xml.c_str());
+    };
+    ScenePtr ungrounded = pulley("", "<MaxLengthA>6</MaxLengthA>");
+    ENSURE(ungrounded != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(ungrounded.get(), world);
+    ENSURE_EQ(world.GetJointCount(), 1);
+    ENSURE_EQ(built.reports.size(), 1);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_LOSSY_JOINT);
+    ENSURE(built.reports[0].message.find("without a static body") != std::string::npos);
+
+    ScenePtr short_side = pulley("<Body Type=\"Static\" />",
+                                 "<MaxLengthA>6</MaxLengthA><MaxLengthB>0.001</MaxLengthB>");
+    ENSURE(short_side != nullptr);
+    b2World grounded(b2Vec2(0.0f, -10.0f));
+    built = box2scene::build_world(short_side.get(), grounded);
+    ENSURE_EQ(grounded.GetJointCount(), 2); // the pulley and side A's rope
+    ENSURE_EQ(built.reports.size(), 1);
+    ENSURE_EQ(built.reports[0].code, B2S_CODE_LOSSY_JOINT);
+    ENSURE(built.reports[0].message.find("MaxLengthB 0.001") != std::string::npos);
+    ENSURE(built.reports[0].message.find("shorter than the linear slop") != std::string::npos);
+    return 0;
+}
+
 static int mass_data_box2d_would_reject_is_reported() {
     // Moving the centre 3 m away leaves the computed inertia about the origin smaller than
     // mass * |centre|^2: Box2D 2.4 would assert on the negative central inertia.
@@ -443,6 +484,7 @@ int main() {
     failed += RUN_TEST(wheel_and_line_axes_are_directions);
     failed += RUN_TEST(body_flags_reach_box2d);
     failed += RUN_TEST(names_are_not_user_data);
+    failed += RUN_TEST(pulley_limits_2_4_cannot_hold_are_reported);
     failed += RUN_TEST(filter_bits_are_reported_only_where_16_change_what_collides);
     return failed;
 }

@@ -1481,6 +1481,22 @@ static int angle_beyond_pi_is_reported_lossy_for_capture(void) {
     return 0;
 }
 
+/* InertiaScale never had an effect in Box2D 2.x; v3.1 gets nothing of it either. */
+static int inertia_scale_changes_nothing(void) {
+    scene_world w;
+    OPEN(w, "1", "0 -10", BOX("0.5", "0.5"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+         "<Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body>"
+         "<Body Type='Dynamic'><Position>5 0</Position><InertiaScale>5</InertiaScale>"
+         "<Fixtures><ID>0</ID></Fixtures></Body>",
+         "");
+    ENSURE_REPORT_COUNT(w, 0);
+    ENSURE_FLOAT(b2Body_GetRotationalInertia(BODY(w, 1)),
+                 b2Body_GetRotationalInertia(BODY(w, 0)));
+    ENSURE_FLOAT(b2Body_GetMass(BODY(w, 1)), b2Body_GetMass(BODY(w, 0)));
+    close_world(&w);
+    return 0;
+}
+
 /* v3.1 keeps 31 bytes of a name (body.h: name[32]): a longer one is not passed (nor cut),
  * and reported. */
 static int names_longer_than_v31_keeps_are_reported(void) {
@@ -1586,6 +1602,7 @@ int main(void) {
     failed += RUN_TEST(negative_damping_is_reported_and_zeroed);
     failed += RUN_TEST(beyond_the_working_range_skips_what_depends_on_it);
     failed += RUN_TEST(angle_beyond_pi_is_reported_lossy_for_capture);
+    failed += RUN_TEST(inertia_scale_changes_nothing);
     failed += RUN_TEST(names_longer_than_v31_keeps_are_reported);
     failed += RUN_TEST(awake_false_without_sleep_is_reported);
     failed += RUN_TEST(mass_data_keeps_the_origins_velocity_and_mass_zero_is_one_kilogram);

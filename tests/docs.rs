@@ -152,34 +152,42 @@ fn held_by(cell: &str) -> Vec<(Vec<String>, String)> {
     held
 }
 
-/// Every row of docs/box2d.md's table of how each Box2D version maps a scene names, in its
-/// last column, the tests that hold it in each engine: at least one of Box2D 2.4's C++ tests,
-/// one of v3.1's and one of v3.2's, each a test its file runs.
+/// Every row of the tables of how a scene maps onto Box2D (docs/box2d.md's three versions
+/// side by side, docs/format.md's 2.4.1 and v3.1) names, in its last column, the tests that
+/// hold it in each engine the table covers (Box2D 2.4's C++ tests, v3.1's `box2d3_*`, v3.2's
+/// `box2d32_*`), each a test its file runs.
 #[test]
-fn docs_box2d_names_the_tests_that_hold_each_mapping_row() {
-    let page = read("docs/box2d.md");
-    let table = page.split("### How each version maps").nth(1).expect("the mapping table");
-    let rows: Vec<&str> = table.lines().skip_while(|l| !l.starts_with('|')).collect();
-    let rows: Vec<&str> = rows.into_iter().take_while(|l| l.starts_with('|')).skip(2).collect();
-    assert!(rows.len() >= 14, "only {} rows", rows.len());
-    for row in rows {
-        let cells: Vec<&str> = row.split('|').collect();
-        let (scene, last) = (cells[1].trim(), cells[cells.len() - 2]);
-        let held = held_by(last);
-        for engine in [".cpp", "box2d3_", "box2d32_"] {
-            assert!(
-                held.iter().any(|(files, _)| files.iter().any(|f| f.contains(engine))),
-                "the row {scene} names no test of {engine}"
-            );
-        }
-        for (files, test) in &held {
-            assert!(!files.is_empty(), "the row {scene} names {test} before any file");
-            for file in files {
-                let source = read(&format!("c_tests/{file}"));
+fn docs_name_the_tests_that_hold_each_mapping_row() {
+    let tables: [(&str, &str, &[&str], usize); 3] = [
+        ("docs/box2d.md", "### How each version maps", &[".cpp", "box2d3_", "box2d32_"], 14),
+        ("docs/format.md", "## Onto Box2D 2.4.1", &[".cpp"], 20),
+        ("docs/format.md", "## Onto Box2D v3.1", &["box2d3_"], 24),
+    ];
+    for (page, heading, engines, at_least) in tables {
+        let text = read(page);
+        let table = text.split(heading).nth(1).unwrap_or_else(|| panic!("{page}: {heading}"));
+        let rows = table.lines().skip_while(|l| !l.starts_with('|'));
+        let rows: Vec<&str> = rows.take_while(|l| l.starts_with('|')).skip(2).collect();
+        assert!(rows.len() >= at_least, "{page}, {heading}: only {} rows", rows.len());
+        for row in rows {
+            let cells: Vec<&str> = row.split('|').collect();
+            let (scene, last) = (cells[1].trim(), cells[cells.len() - 2]);
+            let held = held_by(last);
+            for engine in engines {
                 assert!(
-                    source.contains(&format!("RUN_TEST({test})")),
-                    "the row {scene} names {test}, which c_tests/{file} does not run"
+                    held.iter().any(|(files, _)| files.iter().any(|f| f.contains(engine))),
+                    "{page}: the row {scene} names no test of {engine}"
                 );
+            }
+            for (files, test) in &held {
+                assert!(!files.is_empty(), "{page}: the row {scene} names {test} before a file");
+                for file in files {
+                    let source = read(&format!("c_tests/{file}"));
+                    assert!(
+                        source.contains(&format!("RUN_TEST({test})")),
+                        "{page}: the row {scene} names {test}, which c_tests/{file} does not run"
+                    );
+                }
             }
         }
     }
