@@ -6,6 +6,8 @@
 //! engines' element order, and nothing they cannot tokenise; what they cannot hold is refused
 //! with an error naming the object.
 
+use std::collections::HashMap;
+
 use super::numbers::{integer_text, push_float};
 use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
@@ -249,24 +251,25 @@ struct WrittenShapes {
 impl WrittenShapes {
     fn of(scene: &Scene) -> WrittenShapes {
         let mut density: Vec<Option<f32>> = vec![None; scene.shapes().len()];
-        let mut shapes: Vec<(u32, f32)> = Vec::new();
         let mut of_fixture = Vec::with_capacity(scene.fixtures().len());
         let mut extra: Vec<(u32, f32)> = Vec::new();
+        // Each extra written shape by its scene shape and density bits: one look-up per
+        // fixture, however many densities share a shape.
+        let mut extra_at: HashMap<(u32, u32), u32> = HashMap::new();
         for fixture in scene.fixtures() {
             let own = density[fixture.shape as usize].get_or_insert(fixture.density);
             if own.to_bits() == fixture.density.to_bits() {
                 of_fixture.push(fixture.shape);
                 continue;
             }
-            let found = extra
-                .iter()
-                .position(|&(s, d)| s == fixture.shape && d.to_bits() == fixture.density.to_bits());
-            let at = found.unwrap_or_else(|| {
+            let key = (fixture.shape, fixture.density.to_bits());
+            let at = *extra_at.entry(key).or_insert_with(|| {
                 extra.push((fixture.shape, fixture.density));
-                extra.len() - 1
+                (extra.len() - 1) as u32
             });
-            of_fixture.push((scene.shapes().len() + at) as u32);
+            of_fixture.push(scene.shapes().len() as u32 + at);
         }
+        let mut shapes: Vec<(u32, f32)> = Vec::with_capacity(density.len() + extra.len());
         for (s, d) in density.iter().enumerate() {
             shapes.push((s as u32, d.unwrap_or(0.0)));
         }
