@@ -652,17 +652,26 @@ fn what_a_reader_cannot_hold_is_refused_naming_the_object() {
     assert_eq!(error.code, Code::InvalidArgument);
 }
 
-/// A file of an engine's dialect given a comment is no longer one its reader takes: it is
-/// rewritten in box2scene's own form, losing nothing.
+/// A file of an engine's dialect given a comment is no longer one its reader takes: written
+/// with no dialect asked, it keeps its dialect and is refused naming the object, never
+/// written in box2scene's form unasked; asked for box2scene's form, it is, losing nothing.
 #[test]
-fn an_engine_file_with_comments_is_rewritten_in_box2scenes_form() {
-    let text = std::fs::read_to_string(example(Dialect::Aether))
-        .unwrap()
-        .replace("<Joints>", "<Joints>\n    <!-- hinges -->");
-    let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
-    assert_eq!(scene.dialect(), Dialect::Aether);
-    let written = write(&scene, &WriteOptions::default()).unwrap();
-    assert!(written.starts_with("<World Version=\"2\">") && written.contains("<!-- hinges -->"));
+fn fmt_keeps_an_engine_files_dialect_or_fails_naming_the_object() {
+    for dialect in ENGINES {
+        let text = std::fs::read_to_string(example(dialect))
+            .unwrap()
+            .replace("<Joints>", "<Joints>\n    <!-- hinges -->");
+        let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+        assert_eq!(scene.dialect(), dialect);
+        let error = write(&scene, &WriteOptions::default()).unwrap_err();
+        assert_eq!(error.code, Code::DialectCannotHold, "{}: {}", dialect.name(), error.message);
+        assert!(error.message.starts_with("joint 0 holds comments"), "{}", error.message);
+        assert!(error.message.contains(dialect.name()), "{}", error.message);
+        let written = write(&scene, &options(Dialect::Box2scene)).unwrap();
+        assert!(
+            written.starts_with("<World Version=\"2\">") && written.contains("<!-- hinges -->")
+        );
+    }
 }
 
 /// Farseer's `Axis` is a world axis: (0.6, 0.8) on a body A turned by 0.25 rad is

@@ -55,7 +55,7 @@ impl Target {
 }
 
 /// The first object `dialect` (one of the engines') cannot hold, and why.
-pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
+fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
     let target = Target::of(dialect);
     let index = |i: usize| i as u32;
     for kept in &scene.beyond.pieces {
