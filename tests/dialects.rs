@@ -775,3 +775,20 @@ fn fixtures_of_many_densities_on_one_shape_are_written_in_linear_time() {
     let seconds = started.elapsed().as_secs();
     assert!(seconds < 30, "{seconds} s to write {N} fixtures in four dialects");
 }
+
+/// Farseer 3.3.1's file with no joint (nothing of its own spelling) is told by its order, a
+/// fixture's filter before its friction, and written back as it came: every field, the
+/// friction 0.2 and category 1 that its reader would read as 0 if left out.
+#[test]
+fn a_farseer_3_3_file_without_joints_keeps_its_dialect_and_fields() {
+    let text = std::fs::read_to_string(example(Dialect::Farseer33)).unwrap();
+    let (head, rest) = text.split_once("  <Joints>\n").unwrap();
+    let (_, tail) = rest.split_once("  </Joints>\n").unwrap();
+    let text = format!("{head}  <Joints>\n  </Joints>\n{tail}");
+    let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(scene.dialect(), Dialect::Farseer33);
+    let written = write(&scene, &WriteOptions::default()).unwrap();
+    assert_eq!(written, text);
+    assert!(written.contains("<CategoryBits>1</CategoryBits><MaskBits>65535</MaskBits>"));
+    assert!(written.contains("<Friction>0.2</Friction>"));
+}
