@@ -776,6 +776,81 @@ fn fixtures_of_many_densities_on_one_shape_are_written_in_linear_time() {
     assert!(seconds < 30, "{seconds} s to write {N} fixtures in four dialects");
 }
 
+/// A small scene of one dynamic body, asleep, with one circle; `joint` adds a weld to a
+/// static second body.
+fn asleep(joint: bool) -> Scene {
+    let joints = match joint {
+        true => "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>",
+        false => "",
+    };
+    let text = format!(
+        "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>1</Radius><Position>0 0</Position></Shape></Shapes>\
+         <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>\
+         <Bodies><Body Type=\"Dynamic\"><Awake>false</Awake><Fixtures><ID>0</ID></Fixtures></Body><Body Type=\"Static\"/></Bodies>\
+         <Joints>{joints}</Joints></World>"
+    );
+    load(text.as_bytes(), &LoadOptions::default()).unwrap()
+}
+
+/// Farseer 3.3.1's and Aether's readers (and Velcro's) keep a body of no joint asleep;
+/// Farseer 2013's and 3.5's wake it, and a joint's fields wake its bodies in every reader:
+/// only those are refused.
+#[test]
+fn an_asleep_body_is_refused_only_where_its_reader_wakes_it() {
+    for dialect in ENGINES {
+        let keeps = matches!(dialect, Dialect::Farseer33 | Dialect::Aether);
+        match write(&asleep(false), &options(dialect)) {
+            Ok(text) => {
+                assert!(keeps, "{}: {text}", dialect.name());
+                assert!(text.contains("<Awake>false</Awake>"), "{text}");
+            }
+            Err(e) => {
+                assert!(!keeps, "{}: {}", dialect.name(), e.message);
+                assert!(
+                    e.message.starts_with("body 0 is asleep (the reader wakes it)"),
+                    "{}",
+                    e.message
+                );
+            }
+        }
+        let error = write(&asleep(true), &options(dialect)).unwrap_err();
+        assert_eq!(error.code, Code::DialectCannotHold);
+        let why = if keeps { "body 0 is asleep and in a joint" } else { "body 0 is asleep (the" };
+        assert!(error.message.starts_with(why), "{}: {}", dialect.name(), error.message);
+    }
+}
+
+/// A square of corners (0, 0) and (2, 2) with the `Centroid` (0, 0) on a fixture of
+/// `density`.
+fn square_with_centroid_0(density: &str) -> Scene {
+    let text = format!(
+        "<World Version=\"1\"><Shapes><Shape Type=\"Polygon\"><Vertices><Vertex>0 0</Vertex><Vertex>2 0</Vertex>\
+         <Vertex>2 2</Vertex><Vertex>0 2</Vertex></Vertices><Centroid>0 0</Centroid></Shape></Shapes>\
+         <Fixtures><Fixture><Shape>0</Shape><Density>{density}</Density></Fixture></Fixtures>\
+         <Bodies><Body Type=\"Static\"><Fixtures><ID>0</ID></Fixtures></Body></Bodies><Joints/></World>"
+    );
+    load(text.as_bytes(), &LoadOptions::default()).unwrap()
+}
+
+/// Farseer computes no mass data for a polygon of density 0, so its Version 2 readers keep
+/// the file's `Centroid` there (the engine's own files say `0 0`): only a weighed polygon's
+/// centroid other than its own is refused.
+#[test]
+fn a_density_0_polygon_keeps_its_centroid_in_version_2_dialects() {
+    for dialect in [Dialect::Farseer33, Dialect::Farseer2013] {
+        let text = write(&square_with_centroid_0("0"), &options(dialect)).unwrap();
+        assert!(text.contains("<Centroid>0 0</Centroid>"), "{}: {text}", dialect.name());
+        let again = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+        assert_eq!(write(&again, &WriteOptions::default()).unwrap(), text);
+        let error = write(&square_with_centroid_0("1"), &options(dialect)).unwrap_err();
+        assert!(
+            error.message.starts_with("shape 0 has a Centroid other than its own"),
+            "{}",
+            error.message
+        );
+    }
+}
+
 /// Farseer 3.3.1's file with no joint (nothing of its own spelling) is told by its order, a
 /// fixture's filter before its friction, and written back as it came: every field, the
 /// friction 0.2 and category 1 that its reader would read as 0 if left out.
@@ -791,4 +866,29 @@ fn a_farseer_3_3_file_without_joints_keeps_its_dialect_and_fields() {
     assert_eq!(written, text);
     assert!(written.contains("<CategoryBits>1</CategoryBits><MaskBits>65535</MaskBits>"));
     assert!(written.contains("<Friction>0.2</Friction>"));
+}
+
+/// A two-vertex polygon is written as the edge it is, whose centroid every reader computes
+/// as its middle: another given `Centroid` is refused, as for every other polygon.
+#[test]
+fn a_two_vertex_polygons_centroid_other_than_its_middle_is_refused() {
+    for (centroid, refused) in [("5 5", true), ("0 0", false)] {
+        let text = format!(
+            "<World Version=\"1\"><Shapes><Shape Type=\"Polygon\"><Vertices><Vertex>-40 0</Vertex><Vertex>40 0</Vertex></Vertices>\
+             <Centroid>{centroid}</Centroid></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape></Fixture></Fixtures>\
+             <Bodies><Body Type=\"Static\"><Fixtures><ID>0</ID></Fixtures></Body></Bodies><Joints/></World>"
+        );
+        let scene = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+        for dialect in ENGINES {
+            match write(&scene, &options(dialect)) {
+                Err(e) => {
+                    assert!(refused, "{}: {}", dialect.name(), e.message);
+                    let why =
+                        "shape 0 is a two-vertex polygon with a Centroid other than its middle";
+                    assert!(e.message.starts_with(why), "{}", e.message);
+                }
+                Ok(written) => assert!(!refused && written.contains("<Vertex2>40 0</Vertex2>")),
+            }
+        }
+    }
 }

@@ -52,6 +52,12 @@ impl Target {
     fn is_3_3(self) -> bool {
         self.dialect == Dialect::Farseer33
     }
+
+    /// Whether the reader keeps a body of no joint asleep, as Farseer 3.3.1's and Aether's
+    /// do (and Velcro's, which attaches no fixture); Farseer 2013's and 3.5's wake it.
+    fn keeps_asleep(self) -> bool {
+        matches!(self.dialect, Dialect::Farseer33 | Dialect::Aether)
+    }
 }
 
 /// The first object `dialect` (one of the engines') cannot hold, and why.
@@ -74,8 +80,15 @@ fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
             return Some((kept.object, "has user data spelled for another reader".to_owned()));
         }
     }
+    // Farseer computes a polygon's mass data only at a density above 0.
+    let mut weighed = vec![false; scene.shapes().len()];
+    for fixture in scene.fixtures() {
+        if let Some(weighed) = weighed.get_mut(fixture.shape as usize) {
+            *weighed |= fixture.density > 0.0;
+        }
+    }
     for (i, shape) in scene.shapes().iter().enumerate() {
-        if let Some(why) = shape_cannot(scene, shape, target) {
+        if let Some(why) = shape_cannot(scene, shape, weighed[i], target) {
             return Some((Object::Shape(index(i)), why));
         }
     }
@@ -92,8 +105,16 @@ fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
             return Some((object, why));
         }
     }
+    let mut jointed = vec![false; scene.bodies().len()];
+    for joint in scene.joints() {
+        for body in [joint.body_a, joint.body_b] {
+            if let Some(jointed) = jointed.get_mut(body as usize) {
+                *jointed = true;
+            }
+        }
+    }
     for (i, body) in scene.bodies().iter().enumerate() {
-        if let Some(why) = body_cannot(body) {
+        if let Some(why) = body_cannot(body, jointed[i], target) {
             return Some((Object::Body(index(i)), why));
         }
     }
@@ -106,7 +127,9 @@ fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
     None
 }
 
-fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> {
+/// Why `shape` cannot be written for `target`; `weighed` when a fixture of density above 0
+/// uses it.
+fn shape_cannot(scene: &Scene, shape: &Shape, weighed: bool, target: Target) -> Option<String> {
     let kind = shape.kind()?;
     let vertices = scene.vertices(shape);
     let segment = kind == ShapeKind::Polygon && vertices.len() == 2;
@@ -117,13 +140,22 @@ fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> 
         ShapeKind::Polygon if segment && !shape.name.is_null() => {
             "is a named two-vertex polygon (written as an edge, which may not hold a Name)"
         }
+        // Version 2 readers compute the centroid when the fixture's density is set, unless
+        // it is 0: then the file's stays (Farseer's own files say `0 0` there).
         ShapeKind::Polygon
             if shape.centroid_given
                 && !segment
                 && !target.version_3
+                && weighed
                 && !is_centroid(vertices, shape.centroid) =>
         {
             "has a Centroid other than its own (the reader computes it)"
+        }
+        // Written as the edge it is, whose centroid every reader computes as its middle.
+        ShapeKind::Polygon
+            if segment && shape.centroid_given && !is_middle(vertices, shape.centroid) =>
+        {
+            "is a two-vertex polygon with a Centroid other than its middle (written as an edge, whose reader computes it)"
         }
         ShapeKind::Edge if shape.has_next_vertex => "has a Vertex3 ghost",
         ShapeKind::Chain if target.is_3_3() => "is a chain",
@@ -161,6 +193,15 @@ fn is_centroid(vertices: &[Vec2], centroid: Vec2) -> bool {
         && near(cy / area, centroid.y, origin.y)
 }
 
+/// Whether `centroid` is the middle of the segment `vertices`, to float precision.
+fn is_middle(vertices: &[Vec2], centroid: Vec2) -> bool {
+    let size = vertices.iter().fold(1.0f64, |m, v| m.max(f64::from(v.x.abs().max(v.y.abs()))));
+    let near = |a: f32, b: f32, given: f32| {
+        ((f64::from(a) + f64::from(b)) / 2.0 - f64::from(given)).abs() <= 1e-5 * size
+    };
+    near(vertices[0].x, vertices[1].x, centroid.x) && near(vertices[0].y, vertices[1].y, centroid.y)
+}
+
 fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
     let user_data = scene.user_data_at(index)?;
     let raw = scene.text(user_data.raw).unwrap_or_default();
@@ -187,7 +228,8 @@ fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
     Some(why.to_owned())
 }
 
-fn body_cannot(body: &Body) -> Option<String> {
+/// Why `body` cannot be written for `target`; `jointed` when a joint names it.
+fn body_cannot(body: &Body, jointed: bool, target: Target) -> Option<String> {
     let why = if body.gravity_scale.to_bits() != 1f32.to_bits() {
         "has a GravityScale"
     } else if body.inertia_scale.to_bits() != 1f32.to_bits() {
@@ -196,8 +238,10 @@ fn body_cannot(body: &Body) -> Option<String> {
         let m = body.mass_data;
         if m.mass_given || m.center_given || m.inertia_given {
             "has MassData"
-        } else if !body.awake {
-            "is asleep (read awake)"
+        } else if !body.awake && !target.keeps_asleep() {
+            "is asleep (the reader wakes it)"
+        } else if !body.awake && jointed {
+            "is asleep and in a joint (the reader wakes a joint's bodies as it sets the joint's fields)"
         } else {
             return None;
         }
