@@ -92,8 +92,21 @@ fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
             return Some((Object::Shape(index(i)), why));
         }
     }
+    let mut bound = vec![false; scene.fixtures().len()];
+    for &id in scene.bodies().iter().flat_map(|body| scene.body_fixtures(body)) {
+        if let Some(bound) = bound.get_mut(id as usize) {
+            *bound = true;
+        }
+    }
     for (i, fixture) in scene.fixtures().iter().enumerate() {
         let object = Object::Fixture(index(i));
+        if target.version_3 && !bound[i] {
+            // Left out, it would renumber the fixtures after it and say nothing.
+            return Some((
+                object,
+                "is on no body (the reader makes a fixture only where a body's Pair binds one: it would be lost)".to_owned(),
+            ));
+        }
         if target.is_3_3() && fixture.is_sensor {
             return Some((object, "is a sensor".to_owned()));
         }
