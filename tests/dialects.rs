@@ -1066,3 +1066,23 @@ fn a_two_vertex_polygons_centroid_other_than_its_middle_is_refused() {
         }
     }
 }
+
+/// Aether's `<Tag>` of a Farseer-only joint is its user data; box2scene's dialect reads
+/// `<UserData>` only, so written there the joint's text says `<UserData>`, and reads back
+/// with the same user data.
+#[test]
+fn a_farseer_only_joints_tag_is_written_as_user_data_in_box2scenes_form() {
+    let scene = load_path(example(Dialect::Aether), &LoadOptions::default()).unwrap();
+    let angle =
+        scene.joints().iter().position(|j| j.kind() == Some(JointKind::Unsupported)).unwrap();
+    let user_data = |s: &Scene| {
+        let ud = s.user_data_at(s.joints()[angle].user_data).expect("user data");
+        (s.text(ud.type_name).map(str::to_owned), s.text(ud.value).map(str::to_owned))
+    };
+    let text = write(&scene, &options(Dialect::Box2scene)).unwrap();
+    assert!(!text.contains("<Tag>"), "{text}");
+    let again = load(text.as_bytes(), &LoadOptions::default()).unwrap();
+    assert_eq!(user_data(&again), user_data(&scene));
+    assert_eq!(user_data(&again).0.as_deref(), Some("System.String"));
+    assert_eq!(write(&again, &WriteOptions::default()).unwrap(), text);
+}

@@ -53,6 +53,7 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     if dialect != Dialect::Box2scene {
         return farseer::write(scene, dialect).map(String::into_bytes);
     }
+    own::tags_respellable(scene)?;
     let size = estimated_size(scene);
     let mut writer = Writer {
         out: String::with_capacity(size + size / 8 + 4096),
