@@ -68,7 +68,8 @@ pub(crate) struct Signs {
     /// A `<Tag>` read as user data (Aether.Physics2D).
     pub tags: bool,
     /// What only Farseer 3.3.1 writes: `LocalXAxis1`, `LocalXAxis`, `Breakpoint` (outside
-    /// Farseer-only joints), a Line joint with a wheel's fields.
+    /// Farseer-only joints), a Line joint with a wheel's fields, a fixture's `FilterData`
+    /// before its `Friction` (in Version 2; the editor's Version 1 files have it too).
     pub farseer_3_3: bool,
 }
 

@@ -95,7 +95,8 @@ enum VerbArgs {
         before_help = "Writes FILE in canonical form, keeping its comments and the elements box2scene\n\
                        does not know, to standard output or to OUT (which may be FILE itself: it is\n\
                        replaced atomically). It keeps the dialect FILE was in (an engine's file\n\
-                       stays that engine's) unless --dialect names another.",
+                       stays that engine's, or fails naming what its reader cannot take) unless\n\
+                       --dialect names another.",
         after_help = "A FILE named '-' is standard input; after '--', every argument is a FILE.\n\
                       Exit status: 0 when the file loads and is written, 1 when it has an error,\n\
                       2 on a usage or I/O error."

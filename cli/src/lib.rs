@@ -261,7 +261,14 @@ fn fmt(run: &Run, io: &mut Io<'_>) -> Status {
         None => scene.to_xml(&run.write).map(|text| io.emit(&text)),
         Some(out) => box2scene::write_path(scene, out, &run.write).map(|()| Status::Clean),
     };
-    written.unwrap_or_else(|error| {
+    written.unwrap_or_else(|mut error| {
+        if error.code == Code::DialectCannotHold && run.write.dialect == 0 {
+            // The dialect was the file's own, not asked for: say how to leave it.
+            error.message += &format!(
+                " ({}'s own dialect; --dialect box2scene writes it in box2scene's form)",
+                loaded.name
+            );
+        }
         let name = run.out.as_ref().map_or(loaded.name.clone(), |out| out.display().to_string());
         io.report(&Report::of_error(&error).text(&name, &Quoted::nothing(), false));
         status_of(&error)

@@ -1210,3 +1210,26 @@ fn check_recommends_strict_for_pipelines_which_then_fail_on_a_door_in_degrees() 
     assert_eq!(strict.status, 1, "{}", strict.stdout);
     assert!(strict.stdout.contains("error[unknown-element]"), "{}", strict.stdout);
 }
+
+/// An engine's file holding what its reader cannot take (a comment): plain `fmt -o` keeps
+/// its dialect, so it fails naming the object and the way out, and writes nothing.
+#[test]
+fn fmt_of_an_engine_file_its_dialect_cannot_hold_fails_naming_the_object() {
+    let sandbox = Sandbox::new("fmt-keeps-dialect");
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    let aether = std::fs::read_to_string(root.join("tests/fixtures/dialects/aether.xml")).unwrap();
+    sandbox.write("level.xml", &aether.replace("<Bodies>", "<Bodies>\n    <!-- crates -->"));
+    let run = sandbox.run(&["fmt", "level.xml", "-o", "out.xml"]);
+    assert_eq!((run.status, run.stdout.as_str()), (1, ""));
+    assert_report(
+        run.stderr.lines().next().unwrap(),
+        "out.xml: error[dialect-cannot-hold]: ",
+        "body 0 holds comments",
+    );
+    assert!(run.stderr.contains("--dialect box2scene"), "{}", run.stderr);
+    assert!(!sandbox.dir.join("out.xml").exists());
+    let asked = sandbox.run(&["fmt", "--dialect", "box2scene", "level.xml", "-o", "out.xml"]);
+    assert_eq!((asked.status, asked.stderr.as_str()), (0, ""));
+    let written = fs::read_to_string(sandbox.dir.join("out.xml")).unwrap();
+    assert!(written.contains("<!-- crates -->"), "{written}");
+}

@@ -37,7 +37,9 @@ pub(crate) fn resolve(p: &mut Arena) -> Parsed<()> {
 /// with `<Tag>` is Aether's, with `CollisionIgnores` or `<UserData>` Farseer 3.5's or
 /// Velcro's (the two differ only there); Version 2 with `Id` attributes is Farseer's of July
 /// 2013, and with Farseer 3.3.1's own spellings (`LocalXAxis1`, `LocalXAxis`, `Breakpoint`,
-/// a Line joint with a wheel's fields) Farseer 3.3.1's; the rest is the editor's form.
+/// a Line joint with a wheel's fields) or its order (a fixture's `FilterData` before its
+/// `Friction`, which box2scene's writer puts after) Farseer 3.3.1's; the rest is the
+/// editor's form.
 fn dialect(p: &Arena) -> Dialect {
     let signs = p.origins.signs;
     match p.version {

@@ -42,6 +42,10 @@ impl<'a> Reader<'a> {
                 self.duplicate(tag, &child)?;
             }
             use FixtureChild::*;
+            // Farseer 3.3.1 (and the editor) write the filter before the friction;
+            // box2scene's own writer after: a Version 2 file without `Id`s in that order is
+            // Farseer 3.3.1's, even with no joint to show it.
+            self.arena.origins.signs.farseer_3_3 |= name == Friction && seen.contains(FilterData);
             match name {
                 // A Version 3 body's Pairs give each of its fixtures a shape, and the shape's
                 // Density attribute its density (spec section 8.2).

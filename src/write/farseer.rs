@@ -6,6 +6,8 @@
 //! engines' element order, and nothing they cannot tokenise; what they cannot hold is refused
 //! with an error naming the object.
 
+use std::collections::HashMap;
+
 use super::numbers::{integer_text, push_float};
 use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
@@ -50,10 +52,16 @@ impl Target {
     fn is_3_3(self) -> bool {
         self.dialect == Dialect::Farseer33
     }
+
+    /// Whether the reader keeps a body of no joint asleep, as Farseer 3.3.1's and Aether's
+    /// do (and Velcro's, which attaches no fixture); Farseer 2013's and 3.5's wake it.
+    fn keeps_asleep(self) -> bool {
+        matches!(self.dialect, Dialect::Farseer33 | Dialect::Aether)
+    }
 }
 
 /// The first object `dialect` (one of the engines') cannot hold, and why.
-pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
+fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
     let target = Target::of(dialect);
     let index = |i: usize| i as u32;
     for kept in &scene.beyond.pieces {
@@ -72,13 +80,33 @@ pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, St
             return Some((kept.object, "has user data spelled for another reader".to_owned()));
         }
     }
+    // Farseer computes a polygon's mass data only at a density above 0.
+    let mut weighed = vec![false; scene.shapes().len()];
+    for fixture in scene.fixtures() {
+        if let Some(weighed) = weighed.get_mut(fixture.shape as usize) {
+            *weighed |= fixture.density > 0.0;
+        }
+    }
     for (i, shape) in scene.shapes().iter().enumerate() {
-        if let Some(why) = shape_cannot(scene, shape, target) {
+        if let Some(why) = shape_cannot(scene, shape, weighed[i], target) {
             return Some((Object::Shape(index(i)), why));
+        }
+    }
+    let mut bound = vec![false; scene.fixtures().len()];
+    for &id in scene.bodies().iter().flat_map(|body| scene.body_fixtures(body)) {
+        if let Some(bound) = bound.get_mut(id as usize) {
+            *bound = true;
         }
     }
     for (i, fixture) in scene.fixtures().iter().enumerate() {
         let object = Object::Fixture(index(i));
+        if target.version_3 && !bound[i] {
+            // Left out, it would renumber the fixtures after it and say nothing.
+            return Some((
+                object,
+                "is on no body (the reader makes a fixture only where a body's Pair binds one: it would be lost)".to_owned(),
+            ));
+        }
         if target.is_3_3() && fixture.is_sensor {
             return Some((object, "is a sensor".to_owned()));
         }
@@ -90,8 +118,16 @@ pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, St
             return Some((object, why));
         }
     }
+    let mut jointed = vec![false; scene.bodies().len()];
+    for joint in scene.joints() {
+        for body in [joint.body_a, joint.body_b] {
+            if let Some(jointed) = jointed.get_mut(body as usize) {
+                *jointed = true;
+            }
+        }
+    }
     for (i, body) in scene.bodies().iter().enumerate() {
-        if let Some(why) = body_cannot(body) {
+        if let Some(why) = body_cannot(body, jointed[i], target) {
             return Some((Object::Body(index(i)), why));
         }
     }
@@ -104,7 +140,9 @@ pub(super) fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, St
     None
 }
 
-fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> {
+/// Why `shape` cannot be written for `target`; `weighed` when a fixture of density above 0
+/// uses it.
+fn shape_cannot(scene: &Scene, shape: &Shape, weighed: bool, target: Target) -> Option<String> {
     let kind = shape.kind()?;
     let vertices = scene.vertices(shape);
     let segment = kind == ShapeKind::Polygon && vertices.len() == 2;
@@ -115,13 +153,22 @@ fn shape_cannot(scene: &Scene, shape: &Shape, target: Target) -> Option<String> 
         ShapeKind::Polygon if segment && !shape.name.is_null() => {
             "is a named two-vertex polygon (written as an edge, which may not hold a Name)"
         }
+        // Version 2 readers compute the centroid when the fixture's density is set, unless
+        // it is 0: then the file's stays (Farseer's own files say `0 0` there).
         ShapeKind::Polygon
             if shape.centroid_given
                 && !segment
                 && !target.version_3
+                && weighed
                 && !is_centroid(vertices, shape.centroid) =>
         {
             "has a Centroid other than its own (the reader computes it)"
+        }
+        // Written as the edge it is, whose centroid every reader computes as its middle.
+        ShapeKind::Polygon
+            if segment && shape.centroid_given && !is_middle(vertices, shape.centroid) =>
+        {
+            "is a two-vertex polygon with a Centroid other than its middle (written as an edge, whose reader computes it)"
         }
         ShapeKind::Edge if shape.has_next_vertex => "has a Vertex3 ghost",
         ShapeKind::Chain if target.is_3_3() => "is a chain",
@@ -159,6 +206,15 @@ fn is_centroid(vertices: &[Vec2], centroid: Vec2) -> bool {
         && near(cy / area, centroid.y, origin.y)
 }
 
+/// Whether `centroid` is the middle of the segment `vertices`, to float precision.
+fn is_middle(vertices: &[Vec2], centroid: Vec2) -> bool {
+    let size = vertices.iter().fold(1.0f64, |m, v| m.max(f64::from(v.x.abs().max(v.y.abs()))));
+    let near = |a: f32, b: f32, given: f32| {
+        ((f64::from(a) + f64::from(b)) / 2.0 - f64::from(given)).abs() <= 1e-5 * size
+    };
+    near(vertices[0].x, vertices[1].x, centroid.x) && near(vertices[0].y, vertices[1].y, centroid.y)
+}
+
 fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
     let user_data = scene.user_data_at(index)?;
     let raw = scene.text(user_data.raw).unwrap_or_default();
@@ -185,7 +241,8 @@ fn user_data_cannot(scene: &Scene, index: u32) -> Option<String> {
     Some(why.to_owned())
 }
 
-fn body_cannot(body: &Body) -> Option<String> {
+/// Why `body` cannot be written for `target`; `jointed` when a joint names it.
+fn body_cannot(body: &Body, jointed: bool, target: Target) -> Option<String> {
     let why = if body.gravity_scale.to_bits() != 1f32.to_bits() {
         "has a GravityScale"
     } else if body.inertia_scale.to_bits() != 1f32.to_bits() {
@@ -194,8 +251,10 @@ fn body_cannot(body: &Body) -> Option<String> {
         let m = body.mass_data;
         if m.mass_given || m.center_given || m.inertia_given {
             "has MassData"
-        } else if !body.awake {
-            "is asleep (read awake)"
+        } else if !body.awake && !target.keeps_asleep() {
+            "is asleep (the reader wakes it)"
+        } else if !body.awake && jointed {
+            "is asleep and in a joint (the reader wakes a joint's bodies as it sets the joint's fields)"
         } else {
             return None;
         }
@@ -249,24 +308,25 @@ struct WrittenShapes {
 impl WrittenShapes {
     fn of(scene: &Scene) -> WrittenShapes {
         let mut density: Vec<Option<f32>> = vec![None; scene.shapes().len()];
-        let mut shapes: Vec<(u32, f32)> = Vec::new();
         let mut of_fixture = Vec::with_capacity(scene.fixtures().len());
         let mut extra: Vec<(u32, f32)> = Vec::new();
+        // Each extra written shape by its scene shape and density bits: one look-up per
+        // fixture, however many densities share a shape.
+        let mut extra_at: HashMap<(u32, u32), u32> = HashMap::new();
         for fixture in scene.fixtures() {
             let own = density[fixture.shape as usize].get_or_insert(fixture.density);
             if own.to_bits() == fixture.density.to_bits() {
                 of_fixture.push(fixture.shape);
                 continue;
             }
-            let found = extra
-                .iter()
-                .position(|&(s, d)| s == fixture.shape && d.to_bits() == fixture.density.to_bits());
-            let at = found.unwrap_or_else(|| {
+            let key = (fixture.shape, fixture.density.to_bits());
+            let at = *extra_at.entry(key).or_insert_with(|| {
                 extra.push((fixture.shape, fixture.density));
-                extra.len() - 1
+                (extra.len() - 1) as u32
             });
-            of_fixture.push((scene.shapes().len() + at) as u32);
+            of_fixture.push(scene.shapes().len() as u32 + at);
         }
+        let mut shapes: Vec<(u32, f32)> = Vec::with_capacity(density.len() + extra.len());
         for (s, d) in density.iter().enumerate() {
             shapes.push((s as u32, d.unwrap_or(0.0)));
         }

@@ -17,7 +17,9 @@ use crate::options::WriteOptions;
 use crate::scene::{Dialect, Object, Scene};
 
 /// Writes `scene` as a Box2Scene file, with no XML declaration (no reader of the format
-/// wants one), in the dialect `options` names or else the one the scene remembers. In
+/// wants one), in the dialect `options` names or else the one the scene remembers (never
+/// another: a file of an engine's dialect given what its reader cannot take is refused,
+/// not written in box2scene's). In
 /// box2scene's own: `Version="1"` when it uses only Version 1 constructs, else
 /// `Version="2"`. In an engine's (spec section 11): every field, laid out as that engine's
 /// reader needs; what it cannot hold is error `dialect-cannot-hold` naming the object. A loaded scene is written with everything its file
@@ -39,7 +41,9 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     unwritable_texts(scene)?;
     unreadable_kept_text(scene)?;
     let dialect = match options.dialect {
-        0 => remembered_dialect(scene),
+        // The one the scene was read in: what that dialect cannot hold is refused below,
+        // never written in another dialect unasked.
+        0 => scene.dialect(),
         n => Dialect::try_from(n).map_err(|n| Error {
             code: Code::InvalidArgument,
             position: Position::default(),
@@ -49,6 +53,7 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     if dialect != Dialect::Box2scene {
         return farseer::write(scene, dialect).map(String::into_bytes);
     }
+    own::tags_respellable(scene)?;
     let size = estimated_size(scene);
     let mut writer = Writer {
         out: String::with_capacity(size + size / 8 + 4096),
@@ -61,17 +66,6 @@ pub(crate) fn write_utf8(scene: &Scene, options: &WriteOptions) -> Result<Vec<u8
     };
     writer.document();
     Ok(writer.out.into_bytes())
-}
-
-/// The dialect a write keeps when none is asked for: the one the scene was read in, when
-/// it can hold the scene (a file of an engine's dialect that was given comments, or
-/// anything else its reader would not take, is no longer that engine's), else box2scene's.
-fn remembered_dialect(scene: &Scene) -> Dialect {
-    match scene.dialect() {
-        Dialect::Box2scene => Dialect::Box2scene,
-        engine if farseer::cannot_hold(scene, engine).is_some() => Dialect::Box2scene,
-        engine => engine,
-    }
 }
 
 /// About how many bytes a scene's text takes, from what is typical of the editor's files:

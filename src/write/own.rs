@@ -1,8 +1,11 @@
 //! box2scene's own dialect: the document, each record's elements (defaults left out unless
 //! every field is asked for), and the kept text put back in its places.
 
+use std::borrow::Cow;
+
 use super::numbers::{integer_text, push_float};
 use crate::containers::Container;
+use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
 use crate::scene::Object;
 use crate::scene::joints::{self, Value};
@@ -16,6 +19,56 @@ fn count(scene: &Scene, container: Container) -> usize {
         Container::Fixtures => scene.fixtures().len(),
         Container::Bodies => scene.bodies().len(),
         Container::Joints => scene.joints().len(),
+    }
+}
+
+/// The error for the first Farseer-only joint whose user data its file gave in a `<Tag>`
+/// written otherwise than `<Tag>...</Tag>`: this dialect reads only `<UserData>`, and
+/// [`user_data_spelled`] respells only that form.
+pub(super) fn tags_respellable(scene: &Scene) -> Result<(), Error> {
+    for kept in &scene.beyond.pieces {
+        let (Object::Joint(joint), KeptAt::Whole) = (kept.object, kept.place) else { continue };
+        let text = scene.beyond.text(kept);
+        let tagged = tagged_user_data(scene, joint, text).is_some_and(|t| !text.contains(&t));
+        if tagged {
+            return Err(Error {
+                code: Code::DialectCannotHold,
+                position: Position::default(),
+                message: format!(
+                    "{} is a Farseer-only joint whose user data is in a <Tag> not written as `<Tag>...</Tag>`, which the box2scene dialect does not read as user data and the writer cannot respell, so the scene cannot be written in it",
+                    kept.object
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `<Tag>RAW</Tag>` for a joint whose user data, of text RAW, its file gave in a `<Tag>`
+/// (a Version 3 file's joint with no `<UserData>`).
+fn tagged_user_data(scene: &Scene, joint: u32, text: &str) -> Option<String> {
+    let user_data = scene.user_data_at(scene.joints()[joint as usize].user_data)?;
+    let raw = scene.text(user_data.raw).unwrap_or_default();
+    let lower = text.to_ascii_lowercase();
+    (opens(&lower, "<tag") && !opens(&lower, "<userdata")).then(|| format!("<Tag>{raw}</Tag>"))
+}
+
+/// Whether `text` holds a start tag `<name` (lower case) of exactly that name.
+fn opens(text: &str, start: &str) -> bool {
+    let ends_name = |rest: &str| rest.starts_with(['>', '/', ' ', '\t', '\r', '\n']);
+    text.match_indices(start).any(|(at, _)| ends_name(&text[at + start.len()..]))
+}
+
+/// A Farseer-only joint's whole text, with the user data its file gave in Aether's `<Tag>`
+/// written as `<UserData>`, which this dialect reads (`tags_respellable` has checked that
+/// the `<Tag>` is spelled so).
+fn user_data_spelled<'t>(scene: &Scene, joint: u32, text: &'t str) -> Cow<'t, str> {
+    match tagged_user_data(scene, joint, text) {
+        Some(tagged) if text.contains(&tagged) => {
+            let inner = &tagged["<Tag>".len()..tagged.len() - "</Tag>".len()];
+            Cow::Owned(text.replacen(&tagged, &format!("<UserData>{inner}</UserData>"), 1))
+        }
+        _ => Cow::Borrowed(text),
     }
 }
 
@@ -68,10 +121,14 @@ impl<'s> Writer<'s> {
             }
             self.scope().written[i] = true;
             let text = self.scene.beyond.text(k);
+            let text = match (k.object, k.place) {
+                (Object::Joint(joint), KeptAt::Whole) => user_data_spelled(self.scene, joint, text),
+                _ => Cow::Borrowed(text),
+            };
             if k.place != KeptAt::Attribute {
                 self.indent();
             }
-            self.out.push_str(text);
+            self.out.push_str(&text);
             if k.place != KeptAt::Attribute {
                 self.out.push('\n');
             }

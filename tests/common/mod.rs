@@ -42,20 +42,20 @@ impl Random {
         z ^ (z >> 31)
     }
 
-    fn below(&mut self, n: u64) -> u64 {
+    pub fn below(&mut self, n: u64) -> u64 {
         self.next() % n
     }
 
-    fn chance(&mut self, percent: u64) -> bool {
+    pub fn chance(&mut self, percent: u64) -> bool {
         self.below(100) < percent
     }
 
-    fn pick<T: Copy>(&mut self, items: &[T]) -> T {
+    pub fn pick<T: Copy>(&mut self, items: &[T]) -> T {
         items[self.below(items.len() as u64) as usize]
     }
 
     /// Any finite float, odd ones often.
-    fn float(&mut self) -> f32 {
+    pub fn float(&mut self) -> f32 {
         let odd = [
             0.0,
             -0.0,
@@ -84,13 +84,13 @@ impl Random {
     }
 
     /// A float that is not negative (negative zero passes the loader's check).
-    fn non_negative(&mut self) -> f32 {
+    pub fn non_negative(&mut self) -> f32 {
         let value = self.float();
         if value.is_sign_negative() && value != 0.0 { -value } else { value }
     }
 
     /// A float of an ordinary size, for geometry that Box2D's checks must accept.
-    fn ordinary(&mut self, scale: f32) -> f32 {
+    pub fn ordinary(&mut self, scale: f32) -> f32 {
         (self.below(2001) as f32 - 1000.0) / 1000.0 * scale
     }
 }
