@@ -614,3 +614,44 @@ fn poses_flags_and_paths_of_the_wrong_length_are_invalid_arguments() {
         assert_eq!((error.code, error.message.as_str()), (Code::InvalidArgument, message));
     }
 }
+
+/// A circle of 1e-38 m (and one of 1.5 mm), drawn at 2e40 (1.4e5) pixels a metre: written
+/// in metres, a viewer would scale every number by that, past single precision, and show
+/// nothing. Its numbers are written scaled up by a power of two, to a unit of one or two
+/// pixels, normal single-precision numbers in which the circle, the lines, the key and the
+/// label keep their sizes in pixels.
+#[test]
+fn a_tiny_scene_is_written_scaled_up_to_pixels() {
+    for radius in ["1e-38", "0.00075"] {
+        let xml = format!(
+            "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>{radius}</Radius>\
+             <Position>0 0</Position></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape>\
+             </Fixture></Fixtures><Bodies><Body Type=\"Dynamic\"><Name>dot</Name><Fixtures>\
+             <ID>0</ID></Fixtures></Body></Bodies><Joints/></World>"
+        );
+        let svg = draw(&xml, &Picture { title: "tiny", ..Picture::default() });
+        let ppm = pixels_per_metre(&svg);
+        assert!((1.0..2.0).contains(&ppm), "{radius}: {ppm} pixels a unit");
+        let view: Vec<f32> =
+            svg.attribute("viewBox").split(' ').map(|v| v.parse().unwrap()).collect();
+        for element in svg.descendants() {
+            for (name, value) in &element.attributes {
+                if ["x", "y", "cx", "cy", "r", "width", "height", "font-size", "stroke-width"]
+                    .contains(&name.as_str())
+                {
+                    let number: f32 = value.parse().expect("a number");
+                    assert!(number == 0.0 || number.is_normal(), "{radius}: {name}={value}");
+                }
+            }
+        }
+        assert!(view.iter().all(|v| *v == 0.0 || v.is_normal()), "{view:?}");
+        let world = class(&svg, "world");
+        let circle = world.descendants().into_iter().find(|e| e.name == "circle").unwrap();
+        // The circle fills the 480 px picture but for its margins: 216 px of radius.
+        assert!(close(circle.number("r") * ppm, 216.0), "{radius}: {}", circle.number("r"));
+        assert!(close(world.number("stroke-width") * ppm, 1.5));
+        assert!(close(class(&svg, "key").children[0].number("font-size") * ppm, 16.0));
+        assert!(close(class(&svg, "labels").number("font-size") * ppm, 11.0));
+        assert_eq!(svg.number("width"), 480.0);
+    }
+}

@@ -45,6 +45,11 @@ const SMALLEST_ANCHOR: f64 = 2.0;
 /// The largest coordinate written: viewers compute in single precision, where the view
 /// box's corner plus its size, and the points a transform turns over, must stay finite.
 const LARGEST: f64 = 1e36;
+/// The most pixels a unit written may take: past it (a world of less than half a metre)
+/// the numbers are written scaled up, as a huge world's are scaled down, to a unit of one
+/// or two pixels. Viewers turn units into pixels in single precision too: a 1e-38 m world
+/// drawn in metres would be scaled by 2e40, past it, and show nothing.
+const MOST_PIXELS_PER_UNIT: f64 = 1024.0;
 
 impl Drawing {
     pub(super) fn document(&self, title: &str) -> String {
@@ -205,7 +210,8 @@ struct Layout {
     key_top: f64,
     /// Each key entry's row and its left edge in pixels from the left padding.
     key_places: Vec<(f64, f64)>,
-    /// What every number is multiplied by as it is written: 1, or a power of two.
+    /// What every number is multiplied by as it is written: 1, or a power of two (less
+    /// for a huge world, more for a tiny one).
     scale: f64,
 }
 
@@ -259,9 +265,13 @@ impl Layout {
 
         let corners = [x, y, x + width, y + height];
         let extent = corners.into_iter().fold(0.0, |most: f64, v| most.max(v.abs()));
-        let scale = match extent <= LARGEST {
-            true => 1.0,
-            false => 2f64.powi(-((extent / LARGEST).log2().ceil() as i32)),
+        let scale = match (extent <= LARGEST, pixels_per_metre <= MOST_PIXELS_PER_UNIT) {
+            (true, true) => 1.0,
+            (false, _) => 2f64.powi(-((extent / LARGEST).log2().ceil() as i32)),
+            // No further than the largest coordinate allows, for a tiny world far out.
+            (true, false) => 2f64.powi(
+                (pixels_per_metre.log2().floor()).min((LARGEST / extent).log2().floor()) as i32,
+            ),
         };
         Layout {
             x,
