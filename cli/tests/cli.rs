@@ -297,6 +297,34 @@ fn the_caret_counts_characters_not_bytes_and_keeps_tabs() {
     assert_eq!(caret, format!("\t\t{}\t^", " ".repeat(28)));
 }
 
+/// A terminal draws an East Asian wide character in two columns: after a body name of
+/// eight of them, the caret stands sixteen columns on, under the bad value, and a
+/// combining mark takes none.
+#[test]
+fn the_caret_counts_wide_characters_as_a_terminal_draws_them() {
+    let name = "大きな木箱と小箱";
+    assert_eq!(name.chars().count(), 8);
+    let xml = clean_with(
+        "      <Bullet>False</Bullet>",
+        &format!("      <Name>{name}</Name><Name2>e\u{301}</Name2><Bullet>Tru</Bullet>"),
+    );
+    let sandbox = Sandbox::new("wide-columns");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    let (line, column) = locate(&xml, "Tru");
+    assert_eq!(run.status, 1, "{}", run.stderr);
+    let reports = lines(&run.stdout);
+    let at = reports.iter().position(|l| l.contains("error[invalid-bool]")).expect("the error");
+    assert_report(reports[at], &format!("level.xml:{line}:{column}: error[invalid-bool]: "), "Tru");
+    let (shown, caret) = (reports[at + 1], reports[at + 2]);
+    assert_eq!(
+        shown,
+        format!("      <Name>{name}</Name><Name2>e\u{301}</Name2><Bullet>Tru</Bullet>")
+    );
+    let columns =
+        6 + "<Name>".len() + 2 * 8 + "</Name><Name2>".len() + 1 + "</Name2><Bullet>".len();
+    assert_eq!(caret, format!("{}^", " ".repeat(columns)));
+}
+
 #[test]
 fn a_long_line_is_shown_around_the_column() {
     let (before, after) = ("x".repeat(300), "z".repeat(300));
