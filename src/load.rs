@@ -103,12 +103,9 @@ impl From<Result<Scene, Error>> for Checked {
                 warnings: Vec::new(),
                 stopped_at: None,
             },
-            Err(error) => Checked {
-                scene: None,
-                errors: vec![error],
-                warnings: Vec::new(),
-                stopped_at: None,
-            },
+            Err(error) => {
+                Checked { scene: None, errors: vec![error], warnings: Vec::new(), stopped_at: None }
+            }
         }
     }
 }
