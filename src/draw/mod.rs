@@ -17,6 +17,7 @@
 //! and every number a viewer computes from them in single precision, stays finite.
 
 mod geometry;
+mod labels;
 mod svg;
 
 use crate::error::{Code, Error, Position};
