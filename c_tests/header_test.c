@@ -9,6 +9,8 @@
 #include <stdlib.h>
 
 #include "test_macros.h"
+/* Every macro and enumeration constant of box2scene.h, listed from the header at build time. */
+#include "header_names.h"
 
 #ifndef BOX2SCENE_H
 #error "box2scene.h does not define its include guard"
@@ -118,6 +120,54 @@ static int kinds_are_typed_parameters(void) {
     return 0;
 }
 
+/* Whether `value` is a constant of one of the header's enumerations. */
+static int is_enumerated(unsigned long long value) {
+    const header_constant* c;
+    for (c = header_constants; c->name != NULL; ++c) {
+        if (c->enumeration != NULL && c->value == value) return 1;
+    }
+    return 0;
+}
+
+/* Every name the header defines compiles where a host uses it (header_names.h), and holds
+ * what its kind promises: the constants of one enumeration differ, every code constant has a
+ * name, every string macro is one, every brace list holds constants of an enumeration. */
+static int every_name_the_header_defines_is_usable(void) {
+    const header_constant* c;
+    const header_constant* earlier;
+    const header_list* list;
+    size_t i, enumerated = 0;
+    for (c = header_constants; c->name != NULL; ++c) {
+        if (c->enumeration == NULL) continue;
+        ++enumerated;
+        for (earlier = header_constants; earlier != c; ++earlier) {
+            int same_enumeration =
+                earlier->enumeration != NULL && strcmp(earlier->enumeration, c->enumeration) == 0;
+            if (same_enumeration && earlier->value == c->value) {
+                fprintf(stderr, "%s and %s are both %llu\n", earlier->name, c->name, c->value);
+                return 1;
+            }
+        }
+        if (strcmp(c->enumeration, "b2s_code") == 0 &&
+            strcmp(b2s_code_name((uint32_t)c->value), "unknown-code") == 0) {
+            fprintf(stderr, "%s (%llu) has no name\n", c->name, c->value);
+            return 1;
+        }
+    }
+    /* The kinds, the severities, the dialects and the codes: the generator found them. */
+    ENSURE(enumerated >= 4 + 3 + 12 + 2 + 5 + 60);
+    for (i = 0; header_strings[i][0] != NULL; ++i) ENSURE(strlen(header_strings[i][1]) > 0);
+    for (list = header_lists; list->name != NULL; ++list) {
+        for (i = 0; i < list->count; ++i) {
+            if (!is_enumerated(list->values[i])) {
+                fprintf(stderr, "%s holds %llu, no constant\n", list->name, list->values[i]);
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(version_macros_name_the_library);
@@ -125,5 +175,6 @@ int main(void) {
     failed += RUN_TEST(none_marks_what_is_absent);
     failed += RUN_TEST(max_warnings_caps_the_diagnostics);
     failed += RUN_TEST(kinds_are_typed_parameters);
+    failed += RUN_TEST(every_name_the_header_defines_is_usable);
     return failed;
 }

@@ -343,45 +343,6 @@ typedef uint32_t b2s_code;
 #endif // __cplusplus
 
 /**
- * A form of the format, as one writer wrote it and one reader reads it (spec section 11):
- * the values of `b2s_write_options.dialect` and of `b2s_scene_dialect`.
- */
-enum b2s_dialect
-#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
-  : uint32_t
-#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
- {
-  /**
-   * The editor's form and box2scene's own: Version 1, or 2 where the scene needs it,
-   * defaults omitted unless every field is asked for.
-   */
-  B2S_DIALECT_BOX2SCENE = 1,
-  /**
-   * What Farseer Physics 3.3.1 (2011) reads: Version 2, every field written.
-   */
-  B2S_DIALECT_FARSEER33 = 2,
-  /**
-   * What Farseer of July 2013 reads: Version 2 with `Id` attributes, world `Axis`.
-   */
-  B2S_DIALECT_FARSEER2013 = 3,
-  /**
-   * What Farseer 3.5 and VelcroPhysics read: Version 3, `Bindings`.
-   */
-  B2S_DIALECT_FARSEER35 = 4,
-  /**
-   * What Aether.Physics2D reads: Version 3, user data as `<Tag>`.
-   */
-  B2S_DIALECT_AETHER = 5,
-};
-#ifndef __cplusplus
-#if __STDC_VERSION__ >= 202311L
-typedef enum b2s_dialect b2s_dialect;
-#else
-typedef uint32_t b2s_dialect;
-#endif // __STDC_VERSION__ >= 202311L
-#endif // __cplusplus
-
-/**
  * What a shape is: the values of the `kind` field of `b2s_shape`.
  */
 enum b2s_shape_kind
@@ -508,6 +469,45 @@ enum b2s_joint_kind
 typedef enum b2s_joint_kind b2s_joint_kind;
 #else
 typedef uint32_t b2s_joint_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * A form of the format, as one writer wrote it and one reader reads it (spec section 11):
+ * the values of `b2s_write_options.dialect` and of `b2s_scene_dialect`.
+ */
+enum b2s_dialect
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * The editor's form and box2scene's own: Version 1, or 2 where the scene needs it,
+   * defaults omitted unless every field is asked for.
+   */
+  B2S_DIALECT_BOX2SCENE = 1,
+  /**
+   * What Farseer Physics 3.3.1 (2011) reads: Version 2, every field written.
+   */
+  B2S_DIALECT_FARSEER33 = 2,
+  /**
+   * What Farseer of July 2013 reads: Version 2 with `Id` attributes, world `Axis`.
+   */
+  B2S_DIALECT_FARSEER2013 = 3,
+  /**
+   * What Farseer 3.5 and VelcroPhysics read: Version 3, `Bindings`.
+   */
+  B2S_DIALECT_FARSEER35 = 4,
+  /**
+   * What Aether.Physics2D reads: Version 3, user data as `<Tag>`.
+   */
+  B2S_DIALECT_AETHER = 5,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum b2s_dialect b2s_dialect;
+#else
+typedef uint32_t b2s_dialect;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
@@ -1231,11 +1231,6 @@ typedef struct b2s_picture {
    */
   size_t trajectory_samples;
 } b2s_picture;
-
-/**
- * Every dialect, in the order of their numbers.
- */
-#define b2s_dialect_ALL { b2s_dialect_Box2scene, b2s_dialect_Farseer33, b2s_dialect_Farseer2013, b2s_dialect_Farseer35, b2s_dialect_Aether, }
 
 #ifdef __cplusplus
 extern "C" {

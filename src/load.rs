@@ -8,7 +8,7 @@ use std::fs::File;
 use std::io::Read;
 use std::path::Path;
 
-use crate::error::{Error, Finding};
+use crate::error::{Error, Finding, MAX_ERRORS, Position};
 use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::parse;
@@ -51,6 +51,11 @@ pub struct Checked {
     /// The warnings, in the order of the file, each as an [`Error`] value holds one: its
     /// code, position and message. A scene's are its diagnostics too.
     pub warnings: Vec<Error>,
+    /// Where the check stopped short: the position of the error it stopped at, after the
+    /// hundred it went on past; none of what it would have checked after that error was
+    /// checked, and more errors may be there. None when the check stopped sooner or not at
+    /// all.
+    pub stopped_at: Option<Position>,
 }
 
 /// Checks a file as [`load_file`] loads it, going on past the errors it can (see
@@ -92,8 +97,15 @@ fn checked(source: Result<Source<'_>, Error>, options: &LoadOptions) -> Checked 
 impl From<Result<Scene, Error>> for Checked {
     fn from(loaded: Result<Scene, Error>) -> Checked {
         match loaded {
-            Ok(scene) => Checked { scene: Some(scene), errors: Vec::new(), warnings: Vec::new() },
-            Err(error) => Checked { scene: None, errors: vec![error], warnings: Vec::new() },
+            Ok(scene) => Checked {
+                scene: Some(scene),
+                errors: Vec::new(),
+                warnings: Vec::new(),
+                stopped_at: None,
+            },
+            Err(error) => {
+                Checked { scene: None, errors: vec![error], warnings: Vec::new(), stopped_at: None }
+            }
         }
     }
 }
@@ -128,14 +140,26 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
         arena.scene.push_warning(w.code, w.position.unwrap_or_default(), &w.message);
         kept.push(error_of(w));
     }
-    Checked { scene: Some(arena.scene.freeze()), errors: Vec::new(), warnings: kept }
+    Checked {
+        scene: Some(arena.scene.freeze()),
+        errors: Vec::new(),
+        warnings: kept,
+        stopped_at: None,
+    }
 }
 
-/// A load without a scene: its errors and warnings, placed.
-fn failed(errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &Placer<'_>) -> Checked {
+/// A load without a scene: its errors and warnings, placed. The errors are in the order
+/// found, the one that ended the load, if one did, last: past [`MAX_ERRORS`] gone on past,
+/// the check stopped there.
+fn failed(mut errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &Placer<'_>) -> Checked {
     placer.place(&mut warnings);
+    placer.place(&mut errors);
+    let stopped_at = match errors.len() > MAX_ERRORS {
+        true => errors.last().map(|last| last.position.unwrap_or_default()),
+        false => None,
+    };
     let warnings = warnings.into_iter().map(error_of).collect();
-    Checked { scene: None, errors: placed(errors, placer), warnings }
+    Checked { scene: None, errors: placed(errors, placer), warnings, stopped_at }
 }
 
 /// `errors` placed at their lines and columns, in the order of the file, one a place: an ID

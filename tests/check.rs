@@ -163,6 +163,11 @@ fn a_check_ends_after_a_hundred_errors() {
     assert_eq!(checked.errors.len(), 101);
     let lines: Vec<u32> = checked.errors.iter().map(|e| e.position.line).collect();
     assert_eq!(lines, (4..105).collect::<Vec<_>>());
+    assert_eq!(checked.stopped_at, Some(checked.errors[100].position), "where it stopped");
+    // A hundred errors are all the file holds: it is checked to its end.
+    let bodies = "<Body Type=\"Static\"><Angle>x</Angle></Body>\n".repeat(100);
+    let checked = check(world("", "", &bodies, "").as_bytes(), &LoadOptions::default());
+    assert_eq!((checked.errors.len(), checked.stopped_at), (100, None));
 }
 
 /// The cap counts every error alike: a hundred IDs that name nothing, and the next ends it.
@@ -172,6 +177,7 @@ fn a_check_ends_after_a_hundred_errors_of_references_too() {
     let checked = check(world("", &fixtures, "", "").as_bytes(), &LoadOptions::default());
     assert_eq!(checked.errors.len(), 101, "{:#?}", &checked.errors[..3]);
     assert!(checked.errors.iter().all(|e| e.code == Code::IdOutOfRange));
+    assert_eq!(checked.stopped_at, Some(checked.errors[100].position));
 }
 
 /// Past a hundred errors, the ones kept are still the first in the file, whichever check
@@ -189,6 +195,7 @@ fn the_hundred_errors_kept_are_the_first_in_the_file() {
     let lines: Vec<u32> = checked.errors.iter().map(|e| e.position.line).collect();
     assert_eq!(lines, (3..104).collect::<Vec<_>>(), "{:#?}", &checked.errors[..3]);
     assert!(checked.errors.iter().all(|e| e.message.starts_with("joint ")));
+    assert_eq!(checked.stopped_at, Some(checked.errors[100].position));
     let first = load(xml.as_bytes(), &LoadOptions::default()).unwrap_err();
     assert_eq!(first, checked.errors[0]);
 }

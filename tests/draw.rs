@@ -430,8 +430,9 @@ fn a_joint_the_host_did_not_create_is_not_drawn() {
     assert_eq!(key, ["static", "kinematic", "dynamic"], "no joint in the key");
 }
 
-/// Named bodies are labelled 3 px above where they are drawn, centred; a name whose place
-/// above and below is taken by an earlier one is left to the tooltip.
+/// Named bodies are labelled 3 px above their largest shape, centred, or below it, or beside
+/// it, where no shape or earlier name is; a name with no such place is left to the tooltip,
+/// and the key says so.
 #[test]
 fn named_bodies_are_labelled_where_a_label_fits() {
     let svg = draw(DRAWN, &Picture::default());
@@ -441,7 +442,8 @@ fn named_bodies_are_labelled_where_a_label_fits() {
     let [ground, cart] = &labels.children[..] else { panic!("two named bodies: {labels:?}") };
     assert_eq!((ground.text.as_str(), cart.text.as_str()), ("ground", "cart"));
     assert_eq!(ground.number("x"), 0.0);
-    assert!(close(-ground.number("y"), 10.0 + 3.0 / ppm), "above the edge at y = 10");
+    // Above its floor (y 0 to 1), not above its bounds, where nothing of it is at x = 0.
+    assert!(close(-ground.number("y"), 1.0 + 3.0 / ppm), "above the floor");
     assert_eq!(cart.number("x"), 4.0);
     assert!(close(-cart.number("y"), 4.5 + 3.0 / ppm), "above the wheel");
 
@@ -462,6 +464,97 @@ fn named_bodies_are_labelled_where_a_label_fits() {
     );
     let texts: Vec<&str> = class(&svg, "labels").children.iter().map(|t| t.text.as_str()).collect();
     assert_eq!(texts, ["cart", "cart"], "a third has no place left");
+}
+
+/// A static body, its walls and floor around a level: its name goes beside its floor,
+/// its largest shape, not above the middle of its bounds, which is the door's top, where it
+/// would be read as the door's name.
+#[test]
+fn a_large_body_is_labelled_beside_its_own_shapes() {
+    let polygon = |points: &str| {
+        let vertices: String = points.split(';').map(|v| format!("<Vertex>{v}</Vertex>")).collect();
+        format!("<Shape Type=\"Polygon\"><Vertices>{vertices}</Vertices></Shape>")
+    };
+    let xml = format!(
+        "<World Version=\"1\"><Shapes>{}{}{}{}</Shapes><Fixtures>{}</Fixtures><Bodies>\
+         <Body Type=\"Static\"><Name>Ground</Name><Fixtures><ID>0</ID><ID>1</ID><ID>2</ID>\
+         </Fixtures></Body><Body Type=\"Dynamic\"><Name>Door</Name><Fixtures><ID>3</ID>\
+         </Fixtures></Body></Bodies><Joints/></World>",
+        polygon("-10 0;10 0"),
+        polygon("-10 0;-10 5"),
+        polygon("10 0;10 5"),
+        polygon("-0.5 4;0.5 4;0.5 7;-0.5 7"),
+        "<Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture>\
+         <Fixture><Shape>2</Shape></Fixture><Fixture><Shape>3</Shape></Fixture>"
+    );
+    let svg = draw(&xml, &Picture::default());
+    let ppm = pixels_per_metre(&svg);
+    let [ground, door] = &class(&svg, "labels").children[..] else { panic!("two labels") };
+    assert_eq!((ground.text.as_str(), door.text.as_str()), ("Ground", "Door"));
+    assert_eq!(ground.number("x"), 0.0);
+    assert!(close(-ground.number("y"), 3.0 / ppm), "3 px above the floor at y = 0");
+    assert_eq!(door.number("x"), 0.0);
+    assert!(close(-door.number("y"), 7.0 + 3.0 / ppm), "above the door");
+    assert!(!key_texts(&svg).iter().any(|k| k.contains("tooltips")));
+}
+
+/// Two crates stacked on a floor: the lower one's name cannot go above it, on the upper
+/// crate, nor below it, on the floor: it goes to its right, centred on it.
+#[test]
+fn stacked_crates_are_each_labelled_beside_themselves() {
+    let square = |y: f32, name: &str| {
+        format!(
+            "<Body Type=\"Dynamic\"><Name>{name}</Name><Position>0 {y}</Position><Fixtures>\
+             <ID>1</ID></Fixtures></Body>"
+        )
+    };
+    let xml = format!(
+        "<World Version=\"1\"><Shapes><Shape Type=\"Polygon\"><Vertices><Vertex>-10 -1</Vertex>\
+         <Vertex>10 -1</Vertex><Vertex>10 0</Vertex><Vertex>-10 0</Vertex></Vertices></Shape>\
+         <Shape Type=\"Polygon\"><Vertices><Vertex>-0.5 0</Vertex><Vertex>0.5 0</Vertex>\
+         <Vertex>0.5 1</Vertex><Vertex>-0.5 1</Vertex></Vertices></Shape></Shapes><Fixtures>\
+         <Fixture><Shape>0</Shape></Fixture><Fixture><Shape>1</Shape></Fixture></Fixtures>\
+         <Bodies><Body Type=\"Static\"><Fixtures><ID>0</ID></Fixtures></Body>{}{}</Bodies>\
+         <Joints/></World>",
+        square(0.0, "lower"),
+        square(1.0, "upper")
+    );
+    let svg = draw(&xml, &Picture::default());
+    let ppm = pixels_per_metre(&svg);
+    let [lower, upper] = &class(&svg, "labels").children[..] else { panic!("two labels") };
+    assert_eq!((lower.text.as_str(), upper.text.as_str()), ("lower", "upper"));
+    // 3 px right of the crate, half of five characters of 7 px further: the label's middle.
+    assert!(close(lower.number("x"), 0.5 + (3.0 + 17.5) / ppm), "{}", lower.number("x"));
+    // Its box (a quarter of the font under the baseline, the font above) centred on y = 0.5.
+    assert!(close(-lower.number("y"), 0.5 - 0.375 * 11.0 / ppm), "{}", lower.number("y"));
+    assert_eq!(upper.number("x"), 0.0);
+    assert!(close(-upper.number("y"), 2.0 + 3.0 / ppm), "above the upper crate");
+}
+
+/// Three bodies in one place under one name: the third finds every place beside the wheel
+/// taken, and the key says that a name is only in a tooltip, which every body has.
+#[test]
+fn the_key_counts_the_names_only_in_tooltips() {
+    let svg = draw(DRAWN, &Picture::default());
+    assert!(!key_texts(&svg).iter().any(|k| k.contains("tooltips")), "every name shown");
+    let three = DRAWN
+        .replace(
+            "<Position>-5 6</Position>\n      <Angle>1.5707964</Angle>",
+            "<Name>cart</Name><Position>3 4</Position>",
+        )
+        .replace("<Fixtures><ID>5</ID></Fixtures>", "<Fixtures><ID>1</ID></Fixtures>")
+        .replace("<Name>ground</Name>", "<Name>cart</Name><Position>3 4</Position>")
+        .replace("<ID>0</ID><ID>2</ID><ID>3</ID><ID>4</ID>", "<ID>1</ID>");
+    let svg = draw(&three, &Picture::default());
+    assert_eq!(class(&svg, "labels").children.len(), 2);
+    let key = key_texts(&svg);
+    assert_eq!(key.last(), Some(&"1 name only in tooltips"), "{key:?}");
+    let titles: Vec<&str> =
+        class(&svg, "world").children[0].children[..3].iter().map(|b| b.title()).collect();
+    assert_eq!(
+        titles,
+        ["body 0 \"cart\" (static)", "body 1 \"cart\" (dynamic)", "body 2 \"cart\" (kinematic)"]
+    );
 }
 
 /// The title, the key and the labels are sized in pixels of the picture: the same for a
@@ -612,5 +705,46 @@ fn poses_flags_and_paths_of_the_wrong_length_are_invalid_arguments() {
     for (picture, message) in cases {
         let error = svg(&scene, &picture).expect_err(message);
         assert_eq!((error.code, error.message.as_str()), (Code::InvalidArgument, message));
+    }
+}
+
+/// A circle of 1e-38 m (and one of 1.5 mm), drawn at 2e40 (1.4e5) pixels a metre: written
+/// in metres, a viewer would scale every number by that, past single precision, and show
+/// nothing. Its numbers are written scaled up by a power of two, to a unit of one or two
+/// pixels, normal single-precision numbers in which the circle, the lines, the key and the
+/// label keep their sizes in pixels.
+#[test]
+fn a_tiny_scene_is_written_scaled_up_to_pixels() {
+    for radius in ["1e-38", "0.00075"] {
+        let xml = format!(
+            "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>{radius}</Radius>\
+             <Position>0 0</Position></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape>\
+             </Fixture></Fixtures><Bodies><Body Type=\"Dynamic\"><Name>dot</Name><Fixtures>\
+             <ID>0</ID></Fixtures></Body></Bodies><Joints/></World>"
+        );
+        let svg = draw(&xml, &Picture { title: "tiny", ..Picture::default() });
+        let ppm = pixels_per_metre(&svg);
+        assert!((1.0..2.0).contains(&ppm), "{radius}: {ppm} pixels a unit");
+        let view: Vec<f32> =
+            svg.attribute("viewBox").split(' ').map(|v| v.parse().unwrap()).collect();
+        for element in svg.descendants() {
+            for (name, value) in &element.attributes {
+                if ["x", "y", "cx", "cy", "r", "width", "height", "font-size", "stroke-width"]
+                    .contains(&name.as_str())
+                {
+                    let number: f32 = value.parse().expect("a number");
+                    assert!(number == 0.0 || number.is_normal(), "{radius}: {name}={value}");
+                }
+            }
+        }
+        assert!(view.iter().all(|v| *v == 0.0 || v.is_normal()), "{view:?}");
+        let world = class(&svg, "world");
+        let circle = world.descendants().into_iter().find(|e| e.name == "circle").unwrap();
+        // The circle fills the 480 px picture but for its margins: 216 px of radius.
+        assert!(close(circle.number("r") * ppm, 216.0), "{radius}: {}", circle.number("r"));
+        assert!(close(world.number("stroke-width") * ppm, 1.5));
+        assert!(close(class(&svg, "key").children[0].number("font-size") * ppm, 16.0));
+        assert!(close(class(&svg, "labels").number("font-size") * ppm, 11.0));
+        assert_eq!(svg.number("width"), 480.0);
     }
 }

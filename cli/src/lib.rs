@@ -23,7 +23,7 @@ use std::path::Path;
 
 use box2scene::draw::Picture;
 use box2scene::escape::terminal_text;
-use box2scene::{Checked, Code, Error, LoadOptions, Scene, Severity};
+use box2scene::{Checked, Code, Error, LoadOptions, Position, Scene, Severity};
 
 use args::{Format, Input, Run, Verb};
 use quote::Quoted;
@@ -204,7 +204,7 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
     let mut worst = Status::Clean;
     for input in &run.inputs {
         let loaded = Loaded::read(input, &run.load, Reading::Check);
-        let Checked { errors, warnings, .. } = &loaded.checked;
+        let Checked { errors, warnings, stopped_at, .. } = &loaded.checked;
         let status = errors.iter().map(status_of).max().unwrap_or(Status::Clean);
         let mut found: Vec<(Severity, &Error)> =
             errors.iter().map(|e| (Severity::Error, e)).collect();
@@ -219,7 +219,7 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
             })
             .collect();
         if run.format == Format::Text {
-            text.push_str(&summary(&loaded.name, &reports));
+            text.push_str(&summary(&loaded.name, &reports, *stopped_at));
         }
         worst = worst.max(status).max(io.emit(&text));
     }
@@ -227,8 +227,10 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
 }
 
 /// `FILE: N errors, M warnings` (or `no errors or warnings`), the last line of a file's
-/// text check, as compilers end theirs.
-fn summary(file: &str, reports: &[Report]) -> String {
+/// text check, as compilers end theirs; before it, when the check stopped short after a
+/// hundred errors, a note of where (as GCC notes `-fmax-errors`), since the count is then
+/// not the file's.
+fn summary(file: &str, reports: &[Report], stopped_at: Option<Position>) -> String {
     let errors = reports.iter().filter(|r| r.is_error()).count();
     let counted = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
     let counts = match (errors, reports.len() - errors) {
@@ -237,7 +239,14 @@ fn summary(file: &str, reports: &[Report]) -> String {
             format!("{}, {}", counted(errors, "error"), counted(warnings, "warning"))
         }
     };
-    format!("{}: {counts}\n", terminal_text(file))
+    let file = terminal_text(file);
+    let stopped = stopped_at.map_or(String::new(), |Position { line, column, .. }| {
+        format!(
+            "{file}:{line}:{column}: note: the check stopped at this error, after a hundred \
+             others: what follows it is not checked\n"
+        )
+    });
+    format!("{stopped}{file}: {counts}\n")
 }
 
 fn dump(run: &Run, io: &mut Io<'_>) -> Status {

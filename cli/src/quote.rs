@@ -10,6 +10,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use box2scene::Position;
 use box2scene::escape::terminal_char;
+use unicode_width::UnicodeWidthStr;
 
 /// Characters of a long line shown around the column: a file written on one line still
 /// gives a report that fits a terminal.
@@ -184,7 +185,8 @@ fn decode(bytes: &[u8], encoding: Encoding, cut: bool) -> String {
 }
 
 /// Characters escaped for a terminal, all in one text: where each one's escape ends there
-/// and how many columns it takes (a report escapes a few hundred of them, once each).
+/// and how many columns a terminal draws it in (a report escapes a few hundred of them,
+/// once each).
 struct Escaped {
     text: String,
     ends: Vec<usize>,
@@ -201,9 +203,12 @@ impl Escaped {
         for &c in chars {
             let start = escaped.text.len();
             terminal_char(c, &mut escaped.text);
-            let width = match escaped.text.len() - start {
-                1 => 1,
-                _ => escaped.text[start..].chars().count(),
+            // As a terminal draws it: an East Asian wide character takes two columns, a
+            // combining mark none, an escape (ASCII) one a character; a tab counts one, as
+            // the caret line keeps it.
+            let width = match &escaped.text[start..] {
+                "\t" => 1,
+                shown => shown.width(),
             };
             escaped.ends.push(escaped.text.len());
             escaped.widths.push(width);

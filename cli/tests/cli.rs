@@ -297,6 +297,74 @@ fn the_caret_counts_characters_not_bytes_and_keeps_tabs() {
     assert_eq!(caret, format!("\t\t{}\t^", " ".repeat(28)));
 }
 
+/// A terminal draws an East Asian wide character in two columns: after a body name of
+/// eight of them, the caret stands sixteen columns on, under the bad value, and a
+/// combining mark takes none.
+#[test]
+fn the_caret_counts_wide_characters_as_a_terminal_draws_them() {
+    let name = "大きな木箱と小箱";
+    assert_eq!(name.chars().count(), 8);
+    let xml = clean_with(
+        "      <Bullet>False</Bullet>",
+        &format!("      <Name>{name}</Name><Name2>e\u{301}</Name2><Bullet>Tru</Bullet>"),
+    );
+    let sandbox = Sandbox::new("wide-columns");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    let (line, column) = locate(&xml, "Tru");
+    assert_eq!(run.status, 1, "{}", run.stderr);
+    let reports = lines(&run.stdout);
+    let at = reports.iter().position(|l| l.contains("error[invalid-bool]")).expect("the error");
+    assert_report(reports[at], &format!("level.xml:{line}:{column}: error[invalid-bool]: "), "Tru");
+    let (shown, caret) = (reports[at + 1], reports[at + 2]);
+    assert_eq!(
+        shown,
+        format!("      <Name>{name}</Name><Name2>e\u{301}</Name2><Bullet>Tru</Bullet>")
+    );
+    let columns =
+        6 + "<Name>".len() + 2 * 8 + "</Name><Name2>".len() + 1 + "</Name2><Bullet>".len();
+    assert_eq!(caret, format!("{}^", " ".repeat(columns)));
+}
+
+/// A file with `bad` fixtures whose densities do not convert, each on a line of its own
+/// (`bad-N` marks the Nth): an error apiece.
+fn with_bad_densities(bad: usize) -> String {
+    let fixtures: String = (1..=bad)
+        .map(|n| format!("    <Fixture><Shape>0</Shape><Density>bad-{n}</Density></Fixture>\n"))
+        .collect();
+    clean_with("  <Fixtures>\n", &format!("  <Fixtures>\n{fixtures}"))
+}
+
+/// A check goes on past a hundred errors and stops at the next: for a file with three
+/// hundred, it says so, and where, rather than leave "101 errors" to read as the file's
+/// count; a file with a hundred is checked to its end.
+#[test]
+fn check_says_where_it_stopped_after_a_hundred_errors() {
+    let xml = with_bad_densities(300);
+    let sandbox = Sandbox::new("error-limit");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    assert_eq!(run.status, 1, "{}", run.stderr);
+    let out = lines(&run.stdout);
+    let (line, column) = locate(&xml, "bad-101<");
+    let [.., note, summary] = out[..] else { panic!("{}", run.stdout) };
+    assert_eq!(
+        note,
+        format!(
+            "level.xml:{line}:{column}: note: the check stopped at this error, after a hundred \
+             others: what follows it is not checked"
+        )
+    );
+    assert_eq!(summary, "level.xml: 101 errors, 0 warnings");
+    let reported = out.iter().filter(|l| l.contains(": error[invalid-float]: ")).count();
+    assert_eq!(reported, 101);
+    assert!(!run.stdout.contains("bad-102<"), "nothing past the stop is checked");
+
+    let xml = with_bad_densities(100);
+    let run = sandbox.write("level.xml", &xml).run(&["check", "level.xml"]);
+    let out = lines(&run.stdout);
+    assert_eq!(out.last(), Some(&"level.xml: 100 errors, 0 warnings"));
+    assert!(!run.stdout.contains(": note: "), "{}", run.stdout);
+}
+
 #[test]
 fn a_long_line_is_shown_around_the_column() {
     let (before, after) = ("x".repeat(300), "z".repeat(300));

@@ -26,7 +26,7 @@ class NativeScene:
         start: Optional[List[Tuple[float, float, float]]],
         end: Optional[List[Tuple[float, float, float]]],
         joints_created: Optional[List[bool]],
-        trajectories: List[Vec2],
+        trajectories: List[List[Vec2]],
     ) -> str: ...
 
 class NativeBuilder:

@@ -104,14 +104,13 @@ class Scene:
         each, drawn as paths; ``joints_created`` one flag per joint, False for a joint the
         host did not create. A pose or point that is not finite is not drawn (a body not
         created). Raises :class:`Error` (``invalid-argument``) for lists of the wrong
-        length."""
-        points = [point for sample in trajectories for point in sample]
+        length, a sample of trajectories among them."""
         return self._native.draw_svg(
             title,
             None if start is None else list(start),
             None if end is None else list(end),
             None if joints_created is None else list(joints_created),
-            points,
+            [list(sample) for sample in trajectories],
         )
 
     def find_body(self, name: str) -> Optional[int]:

@@ -7,8 +7,8 @@ use std::sync::Mutex;
 
 use box2scene::draw::{Picture, Pose};
 use box2scene::{
-    Body, BodyKind, Builder, Diagnostic, Fixture, Joint, JointKind, LoadOptions, NONE, Scene,
-    Shape, ShapeKind, UserData, Vec2, WriteOptions,
+    Body, BodyKind, Builder, Code, Diagnostic, Fixture, Joint, JointKind, LoadOptions, NONE,
+    Position, Scene, Shape, ShapeKind, UserData, Vec2, WriteOptions,
 };
 use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -390,7 +390,10 @@ impl NativeScene {
         self.scene.to_json()
     }
     /// The library's picture (`box2scene::draw`): poses as (x, y, angle), one per body;
-    /// samples of one point per body each.
+    /// samples of one point per body each. The library takes the samples end to end, where
+    /// only their total shows: each sample's length is checked here, where they are apart,
+    /// since a sample one point short and another one long would put every point between
+    /// them on the wrong body.
     #[pyo3(signature = (title, start, end, joints_created, trajectories))]
     fn draw_svg(
         &self,
@@ -399,14 +402,29 @@ impl NativeScene {
         start: Option<Vec<(f32, f32, f32)>>,
         end: Option<Vec<(f32, f32, f32)>>,
         joints_created: Option<Vec<bool>>,
-        trajectories: Vec<(f32, f32)>,
+        trajectories: Vec<Vec<(f32, f32)>>,
     ) -> PyResult<String> {
         let poses = |poses: Option<Vec<(f32, f32, f32)>>| {
             let pose = |(x, y, angle)| Pose { position: Vec2 { x, y }, angle };
             poses.map(|poses| poses.into_iter().map(pose).collect::<Vec<Pose>>())
         };
         let (start, end) = (poses(start), poses(end));
-        let trajectories: Vec<Vec2> = trajectories.into_iter().map(|(x, y)| Vec2 { x, y }).collect();
+        let bodies = self.scene.bodies().len();
+        let ragged = trajectories.iter().enumerate().find(|(_, sample)| sample.len() != bodies);
+        if let Some((index, sample)) = ragged {
+            let message = format!(
+                "trajectories sample {index} holds {} points for {bodies} bodies",
+                sample.len()
+            );
+            let invalid = box2scene::Error {
+                code: Code::InvalidArgument,
+                position: Position::default(),
+                message,
+            };
+            return Err(error(py, invalid));
+        }
+        let trajectories: Vec<Vec2> =
+            trajectories.into_iter().flatten().map(|(x, y)| Vec2 { x, y }).collect();
         let picture = Picture {
             title,
             start: start.as_deref(),

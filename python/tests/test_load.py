@@ -283,3 +283,24 @@ def test_a_scene_is_drawn_as_the_library_draws_it(showcase):
         scene.draw_svg(end=lower[1:])
     assert raised.value.code == "invalid-argument"
     assert raised.value.message == f"end holds {len(lower) - 1} poses for {len(lower)} bodies"
+
+
+def test_ragged_trajectories_are_refused_sample_by_sample(showcase):
+    """A sample of one point too many and another of one too few hold, together, a whole
+    number of samples: flattened, every point between them would land on the next body.
+    Each sample holds one point per body, or the picture is refused naming the first that
+    does not."""
+    scene = box2scene.load(showcase)
+    bodies = [b.position for b in scene.bodies]
+    n = len(bodies)
+    for ragged, index, count in (
+        ([bodies, bodies + [(0.0, 0.0)], bodies[1:]], 1, n + 1),
+        ([bodies[1:], bodies + [(0.0, 0.0)]], 0, n - 1),
+        ([bodies, []], 1, 0),
+    ):
+        with pytest.raises(Error) as raised:
+            scene.draw_svg(trajectories=ragged)
+        assert raised.value.code == "invalid-argument"
+        assert raised.value.message == f"trajectories sample {index} holds {count} points for {n} bodies"
+    drawn = scene.draw_svg(trajectories=[bodies, [(x, y - 1.0) for x, y in bodies]])
+    assert '<g class="paths"' in drawn

@@ -1,5 +1,5 @@
 //! What a picture draws, in metres of the world: each frame's bodies and joints, the paths,
-//! the labels' places and the bounds of it all, before anything is laid out or written.
+//! the bodies to label and the bounds of it all, before anything is laid out or written.
 
 use super::{Picture, Pose};
 use crate::scene::{Body, BodyKind, Joint, JointKind, Scene, ShapeKind, Str, Vec2};
@@ -100,6 +100,20 @@ pub(super) enum Mark {
     },
 }
 
+impl Mark {
+    /// The box around the mark.
+    pub(super) fn bounds(&self) -> Bounds {
+        let mut bounds = Bounds::default();
+        match self {
+            Mark::Circle { centre, radius, .. } => bounds.include_circle(*centre, *radius),
+            Mark::Polygon(points) | Mark::Polyline(points) | Mark::Loop(points) => {
+                points.iter().for_each(|&p| bounds.include(p));
+            }
+        }
+        bounds
+    }
+}
+
 /// A body in one frame: its marks, with the fixture and shape they show as tooltips.
 pub(super) struct DrawnBody {
     pub(super) kind: Option<BodyKind>,
@@ -133,7 +147,8 @@ pub(super) struct Drawing {
     pub(super) start: Frame,
     pub(super) end: Option<Frame>,
     pub(super) paths: Vec<Vec<Point>>,
-    pub(super) labels: Vec<(String, Bounds)>,
+    /// Each named body drawn in the last frame: its name and index.
+    pub(super) labels: Vec<(String, usize)>,
     pub(super) bounds: Bounds,
 }
 
@@ -179,12 +194,18 @@ impl Drawing {
             .bodies()
             .iter()
             .zip(&last.bodies)
-            .filter_map(|(body, drawn)| {
-                Some((scene.text(body.name)?.to_owned(), drawn.as_ref()?.bounds))
+            .enumerate()
+            .filter_map(|(index, (body, drawn))| {
+                let drawn = drawn.as_ref()?.bounds.corners.is_some();
+                Some((scene.text(body.name)?.to_owned(), index)).filter(|_| drawn)
             })
-            .filter(|(_, drawn)| drawn.corners.is_some())
             .collect();
         Drawing { start, end, paths, labels, bounds }
+    }
+
+    /// The frame the labels go on: the end, or the start drawn alone.
+    pub(super) fn last(&self) -> &Frame {
+        self.end.as_ref().unwrap_or(&self.start)
     }
 }
 
@@ -230,7 +251,6 @@ pub(super) fn draw_body(scene: &Scene, index: usize, body: &Body, place: Placeme
                 let radius = f64::from(shape.radius);
                 let local = Point::of(shape.position);
                 let rim = place.at(Point { x: local.x + radius, y: local.y });
-                drawn.bounds.include_circle(centre, radius);
                 Mark::Circle { centre, radius, rim }
             }
             Some(ShapeKind::Polygon) if points.len() < 3 => Mark::Polyline(points),
@@ -239,9 +259,7 @@ pub(super) fn draw_body(scene: &Scene, index: usize, body: &Body, place: Placeme
             Some(ShapeKind::Edge | ShapeKind::Chain) => Mark::Polyline(points),
             None => continue,
         };
-        if let Mark::Polygon(points) | Mark::Polyline(points) | Mark::Loop(points) = &mark {
-            points.iter().for_each(|&p| drawn.bounds.include(p));
-        }
+        drawn.bounds.merge(mark.bounds());
         drawn.marks.push((mark, title));
     }
     drawn

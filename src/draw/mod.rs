@@ -12,10 +12,12 @@
 //! the key and the labels are sized in pixels of the picture's own width and height, so that
 //! they read the same for a 2 m scene and a 2 km one. Geometry is computed in double
 //! precision; a picture that reaches near the edges of single precision (finite values a
-//! file may hold) is written scaled down by a power of two, so that every number written
-//! stays finite for viewers, which compute in single precision.
+//! file may hold) is written scaled down by a power of two, and a tiny one (less than half
+//! a metre across) scaled up, to one or two pixels a unit, so that every number written,
+//! and every number a viewer computes from them in single precision, stays finite.
 
 mod geometry;
+mod labels;
 mod svg;
 
 use crate::error::{Code, Error, Position};

@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use super::geometry::{Bounds, Drawing, DrawnBody, Frame, Mark, Point};
+use super::labels::{self, LABEL_SIZE, Label};
 use crate::escape::svg_text;
 use crate::scene::BodyKind;
 
@@ -35,7 +36,6 @@ const PATH_LINE: f64 = 1.25;
 const ARM_LINE: f64 = 1.0;
 const TITLE_SIZE: f64 = 16.0;
 const KEY_SIZE: f64 = 12.0;
-const LABEL_SIZE: f64 = 11.0;
 const PAD: f64 = 8.0;
 /// Around the world.
 const MARGIN: f64 = 24.0;
@@ -45,11 +45,28 @@ const SMALLEST_ANCHOR: f64 = 2.0;
 /// The largest coordinate written: viewers compute in single precision, where the view
 /// box's corner plus its size, and the points a transform turns over, must stay finite.
 const LARGEST: f64 = 1e36;
+/// The most pixels a unit written may take: past it (a world of less than half a metre)
+/// the numbers are written scaled up, as a huge world's are scaled down, to a unit of one
+/// or two pixels. Viewers turn units into pixels in single precision too: a 1e-38 m world
+/// drawn in metres would be scaled by 2e40, past it, and show nothing.
+const MOST_PIXELS_PER_UNIT: f64 = 1024.0;
 
 impl Drawing {
     pub(super) fn document(&self, title: &str) -> String {
-        let key = self.key();
-        let layout = Layout::new(&self.bounds, !title.is_empty(), &key);
+        let mut key = self.key();
+        let mut layout = Layout::new(&self.bounds, !title.is_empty(), &key);
+        let (labels, hidden) = labels::place(
+            &self.labels,
+            &self.last().bodies,
+            1.0 / layout.pixels_per_metre,
+            layout.world,
+        );
+        if hidden > 0 {
+            let names = if hidden == 1 { "name" } else { "names" };
+            key.push((Swatch::Hidden, format!("{hidden} {names} only in tooltips")));
+            // The key may take another row; the world, and so the labels, stay as they are.
+            layout = Layout::new(&self.bounds, !title.is_empty(), &key);
+        }
         let w = Writer { scale: layout.scale, pixels_per_metre: layout.pixels_per_metre };
         let mut out = String::new();
         let _ = writeln!(
@@ -101,13 +118,13 @@ impl Drawing {
             }
         }
         out.push_str("</g>\n");
-        w.labels(&mut out, &self.labels);
+        w.labels(&mut out, &labels);
         out.push_str("</svg>\n");
         out
     }
 
     /// The key's entries: a swatch and its words, for what the picture holds.
-    fn key(&self) -> Vec<(Swatch, &'static str)> {
+    fn key(&self) -> Vec<(Swatch, String)> {
         let mut key = Vec::new();
         // A body of a kind with no name is coloured, and keyed, as a static one.
         let drawn = |kind| {
@@ -116,19 +133,22 @@ impl Drawing {
         };
         for kind in [BodyKind::Static, BodyKind::Kinematic, BodyKind::Dynamic] {
             if drawn(kind) {
-                key.push((Swatch::Body(Some(kind), 1.0), kind.name()));
+                key.push((Swatch::Body(Some(kind), 1.0), kind.name().to_owned()));
             }
         }
         if self.start.joints.iter().chain(self.end.iter().flat_map(|f| &f.joints)).next().is_some()
         {
-            key.push((Swatch::Joint, "joint"));
+            key.push((Swatch::Joint, "joint".to_owned()));
         }
         if self.end.is_some() {
-            key.push((Swatch::Body(Some(BodyKind::Dynamic), START_OPACITY), "start (faint)"));
-            key.push((Swatch::Body(Some(BodyKind::Dynamic), 1.0), "end (solid)"));
+            key.push((
+                Swatch::Body(Some(BodyKind::Dynamic), START_OPACITY),
+                "start (faint)".into(),
+            ));
+            key.push((Swatch::Body(Some(BodyKind::Dynamic), 1.0), "end (solid)".into()));
         }
         if !self.paths.is_empty() {
-            key.push((Swatch::Path, "path of a body's origin"));
+            key.push((Swatch::Path, "path of a body's origin".to_owned()));
         }
         key
     }
@@ -139,7 +159,7 @@ impl Drawing {
         w: &Writer,
         layout: &Layout,
         title: &str,
-        key: &[(Swatch, &str)],
+        key: &[(Swatch, String)],
     ) {
         out.push_str("<g class=\"key\">\n");
         let left = layout.x + w.px(PAD);
@@ -178,6 +198,8 @@ enum Swatch {
     Body(Option<BodyKind>, f32),
     Joint,
     Path,
+    /// Names left to the tooltips: an ellipsis in the labels' style.
+    Hidden,
 }
 
 /// A key entry's swatch, the gap after it, a row's height, the gap between entries.
@@ -187,9 +209,6 @@ const KEY_ROW: f64 = 20.0;
 const ENTRY_GAP: f64 = 18.0;
 /// The width of a character of the key, estimated (a viewer's sans-serif at 12 px).
 const KEY_CHAR: f64 = 7.0;
-/// The same for a label, and a label's distance from its body.
-const LABEL_CHAR: f64 = 7.0;
-const GAP: f64 = 3.0;
 
 /// Where the world and the header go, in metres of the world, and the picture's pixels.
 struct Layout {
@@ -201,16 +220,19 @@ struct Layout {
     pixel_width: f64,
     pixel_height: f64,
     pixels_per_metre: f64,
+    /// What the picture shows of the world (not the header), in metres, y up.
+    world: (Point, Point),
     /// The key's first row, in pixels from the top.
     key_top: f64,
     /// Each key entry's row and its left edge in pixels from the left padding.
     key_places: Vec<(f64, f64)>,
-    /// What every number is multiplied by as it is written: 1, or a power of two.
+    /// What every number is multiplied by as it is written: 1, or a power of two (less
+    /// for a huge world, more for a tiny one).
     scale: f64,
 }
 
 impl Layout {
-    fn new(bounds: &Bounds, titled: bool, key: &[(Swatch, &str)]) -> Layout {
+    fn new(bounds: &Bounds, titled: bool, key: &[(Swatch, String)]) -> Layout {
         // The world; 1 m around a single point or an empty scene.
         let origin = Point { x: 0.0, y: 0.0 };
         let (mut lower, mut upper) = bounds.corners.unwrap_or((origin, origin));
@@ -254,14 +276,19 @@ impl Layout {
         let rows = if key.is_empty() { 0.0 } else { row + 1.0 };
         let header = key_top + rows * KEY_ROW + if titled || rows > 0.0 { PAD } else { 0.0 };
         let header_metres = header / pixels_per_metre;
+        let world = (Point { x, y: lower.y - margin }, Point { x: x + width, y: upper.y + margin });
         let y = -(upper.y + margin) - header_metres;
         let height = height + header_metres;
 
         let corners = [x, y, x + width, y + height];
         let extent = corners.into_iter().fold(0.0, |most: f64, v| most.max(v.abs()));
-        let scale = match extent <= LARGEST {
-            true => 1.0,
-            false => 2f64.powi(-((extent / LARGEST).log2().ceil() as i32)),
+        let scale = match (extent <= LARGEST, pixels_per_metre <= MOST_PIXELS_PER_UNIT) {
+            (true, true) => 1.0,
+            (false, _) => 2f64.powi(-((extent / LARGEST).log2().ceil() as i32)),
+            // No further than the largest coordinate allows, for a tiny world far out.
+            (true, false) => 2f64.powi(
+                (pixels_per_metre.log2().floor()).min((LARGEST / extent).log2().floor()) as i32,
+            ),
         };
         Layout {
             x,
@@ -271,6 +298,7 @@ impl Layout {
             pixel_width,
             pixel_height: height * pixels_per_metre,
             pixels_per_metre,
+            world,
             key_top,
             key_places,
             scale,
@@ -406,32 +434,15 @@ impl Writer {
         out.push_str("</g>\n");
     }
 
-    /// Each name centred above where its body is drawn (below, where that is taken), on a
-    /// white halo; a name that would overlap one placed before it is left to the tooltip.
-    fn labels(&self, out: &mut String, labels: &[(String, Bounds)]) {
-        let mut placed: Vec<(Point, Point)> = Vec::new();
+    /// Each name where [`labels::place`] put it, on a white halo.
+    fn labels(&self, out: &mut String, labels: &[Label<'_>]) {
         let mut texts = String::new();
-        for (name, bounds) in labels {
-            let Some((lower, upper)) = bounds.corners else { continue };
-            let half_width = self.px(name.chars().count() as f64 * LABEL_CHAR / 2.0);
-            let centre = (lower.x + upper.x) / 2.0;
-            // The baseline above the body, or below it: the label's box, y up.
-            let above = upper.y + self.px(GAP);
-            let below = lower.y - self.px(GAP + LABEL_SIZE);
-            let free = [above, below].into_iter().map(|baseline| {
-                let box_lower =
-                    Point { x: centre - half_width, y: baseline - self.px(LABEL_SIZE * 0.25) };
-                let box_upper = Point { x: centre + half_width, y: baseline + self.px(LABEL_SIZE) };
-                (baseline, (box_lower, box_upper))
-            });
-            let mut free = free.filter(|(_, b)| !placed.iter().any(|p| overlap(*p, *b)));
-            let Some((baseline, taken)) = free.next() else { continue };
-            placed.push(taken);
+        for Label { name, at } in labels {
             let _ = writeln!(
                 texts,
                 "<text x=\"{}\" y=\"{}\">{}</text>",
-                self.n(centre),
-                self.flipped(baseline),
+                self.n(at.x),
+                self.flipped(at.y),
                 svg_text(name)
             );
         }
@@ -476,6 +487,15 @@ impl Writer {
                     self.n(self.px(2.5))
                 );
             }
+            Swatch::Hidden => {
+                let _ = writeln!(
+                    out,
+                    "<text x=\"{}\" y=\"{y}\" font-size=\"{}\" text-anchor=\"middle\" \
+                     dominant-baseline=\"central\" fill=\"#202020\">\u{2026}</text>",
+                    self.n(x + self.px(SWATCH / 2.0)),
+                    self.n(self.px(LABEL_SIZE))
+                );
+            }
             Swatch::Path => {
                 let _ = writeln!(
                     out,
@@ -486,9 +506,4 @@ impl Writer {
             }
         }
     }
-}
-
-/// Whether two boxes (lower and upper corners) share more than an edge.
-fn overlap(a: (Point, Point), b: (Point, Point)) -> bool {
-    a.0.x < b.1.x && b.0.x < a.1.x && a.0.y < b.1.y && b.0.y < a.1.y
 }

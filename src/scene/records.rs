@@ -626,7 +626,11 @@ pub enum Dialect {
 }
 
 impl Dialect {
-    /// Every dialect, in the order of their numbers.
+    /// Every dialect, in the order of their numbers. Rust only: C has the `B2S_DIALECT_*`
+    /// constants, and the macro cbindgen would emit names the variants as Rust spells them
+    /// (`b2s_dialect_Box2scene`), which C does not declare.
+    ///
+    /// cbindgen:ignore
     pub const ALL: [Dialect; 5] = [
         Dialect::Box2scene,
         Dialect::Farseer33,
