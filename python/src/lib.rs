@@ -636,6 +636,35 @@ fn filter_widths() -> (usize, usize) {
     (8 * size_of_val(&f.category_bits), 8 * size_of_val(&f.group_index))
 }
 
+/// Single-precision math as the engines' C code does it (the C library's `cosf`, `sinf` and
+/// `atan2f`, which Rust's `f32` methods call), for the builders' values that must match the
+/// C adapters bit for bit.
+#[pyfunction]
+fn cosf(x: f32) -> f32 {
+    x.cos()
+}
+
+#[pyfunction]
+fn sinf(x: f32) -> f32 {
+    x.sin()
+}
+
+#[pyfunction]
+fn atan2f(y: f32, x: f32) -> f32 {
+    y.atan2(x)
+}
+
+/// The float next to `x` in the direction of `toward` (C's `nextafterf`).
+#[pyfunction]
+fn nextafterf(x: f32, toward: f32) -> f32 {
+    match x.partial_cmp(&toward) {
+        Some(std::cmp::Ordering::Less) => x.next_up(),
+        Some(std::cmp::Ordering::Greater) => x.next_down(),
+        Some(std::cmp::Ordering::Equal) => toward,
+        None => f32::NAN,
+    }
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NativeScene>()?;
@@ -644,5 +673,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_path, m)?)?;
     m.add_function(wrap_pyfunction!(defaults, m)?)?;
     m.add_function(wrap_pyfunction!(filter_widths, m)?)?;
+    m.add_function(wrap_pyfunction!(cosf, m)?)?;
+    m.add_function(wrap_pyfunction!(sinf, m)?)?;
+    m.add_function(wrap_pyfunction!(atan2f, m)?)?;
+    m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
     Ok(())
 }
