@@ -6,12 +6,15 @@ package is the box2scene library (Rust) for Python:
 
     import box2scene
     scene = box2scene.load("level.xml")          # or load(data) with the file's bytes
+    scene = box2scene.loads(xml_text)            # or from the XML as a str
     for d in scene.diagnostics:
         print(f"{d.line}:{d.column}: {d.code}: {d.message}")
     scene.bodies[0].position, scene.shapes[0].vertices
     scene.write("copy.xml")                      # atomic; reads back to the same scene
 
-Everything wrong with a file raises :class:`Error` with its code, line and column.
+Everything wrong with a file raises :class:`Error` with its code, line and column; a file
+that cannot be opened raises one that is also the ``OSError`` of the reason
+(``FileNotFoundError``, ``PermissionError``, ...).
 :class:`Builder` makes a scene from records. Two modules build worlds of the Python Box2D
 engines from a scene and capture worlds back into scenes:
 
@@ -23,7 +26,7 @@ Neither engine is needed to load or write scenes.
 
 from ._error import Error
 from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
-from ._scene import Builder, Scene, load
+from ._scene import Builder, Scene, load, loads
 
 __all__ = [
     "Body",
@@ -37,4 +40,5 @@ __all__ = [
     "UserData",
     "Vec2",
     "load",
+    "loads",
 ]

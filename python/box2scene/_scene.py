@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 from . import _native
+from ._error import Error
 from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
 
 Source = Union[str, "os.PathLike[str]", bytes, bytearray, memoryview]
@@ -123,6 +124,28 @@ class Scene:
         return next((i for i, j in enumerate(self.joints) if j.name == name), None)
 
 
+def _load_options(
+    strict: bool,
+    max_input_bytes: Optional[int],
+    max_elements: Optional[int],
+    max_text_bytes: Optional[int],
+    max_depth: Optional[int],
+    max_chain_vertices: Optional[int],
+    threads: int,
+) -> Dict[str, Any]:
+    given = {
+        "max_input_bytes": max_input_bytes,
+        "max_elements": max_elements,
+        "max_text_bytes": max_text_bytes,
+        "max_depth": max_depth,
+        "max_chain_vertices": max_chain_vertices,
+    }
+    options: Dict[str, Any] = {k: v for k, v in given.items() if v is not None}
+    options["strict"] = strict
+    options["threads"] = threads
+    return options
+
+
 def load(
     source: Source,
     *,
@@ -140,21 +163,34 @@ def load(
     error. The limits default to the library's (1 GiB of input, 10 million elements, 1 MiB
     for one text, depth 64, 100 000 chain vertices); a file past one raises
     ``limit-exceeded``. Raises :class:`Error` (with code, line and column) for a file
-    that is not a valid scene.
+    that is not a valid scene, and an :class:`Error` that is also the ``OSError`` of the
+    reason (``FileNotFoundError``, ``PermissionError``, ...) for a file that cannot be
+    opened. A ``str`` that starts with ``<`` is XML, not a path: :func:`loads` takes it.
     """
-    given = {
-        "max_input_bytes": max_input_bytes,
-        "max_elements": max_elements,
-        "max_text_bytes": max_text_bytes,
-        "max_depth": max_depth,
-        "max_chain_vertices": max_chain_vertices,
-    }
-    options = {k: v for k, v in given.items() if v is not None}
-    options["strict"] = strict
-    options["threads"] = threads
+    options = _load_options(strict, max_input_bytes, max_elements, max_text_bytes, max_depth, max_chain_vertices, threads)
     if isinstance(source, (bytes, bytearray, memoryview)):
         return Scene(_native.load_bytes(bytes(source), options))
+    if isinstance(source, str) and source.lstrip().startswith("<"):
+        raise Error("invalid-argument", 0, 0, 0, "load takes a path or bytes; this str is XML text, which box2scene.loads takes")
     return Scene(_native.load_path(os.fspath(source), options))
+
+
+def loads(
+    text: Union[str, bytes, bytearray, memoryview],
+    *,
+    strict: bool = False,
+    max_input_bytes: Optional[int] = None,
+    max_elements: Optional[int] = None,
+    max_text_bytes: Optional[int] = None,
+    max_depth: Optional[int] = None,
+    max_chain_vertices: Optional[int] = None,
+    threads: int = 0,
+) -> Scene:
+    """Loads a scene from its XML text (a ``str``, or the bytes of a file), with
+    :func:`load`'s options, warnings and errors."""
+    options = _load_options(strict, max_input_bytes, max_elements, max_text_bytes, max_depth, max_chain_vertices, threads)
+    data = text.encode("utf-8") if isinstance(text, str) else bytes(text)
+    return Scene(_native.load_bytes(data, options))
 
 
 def _fields(record: Any) -> dict:

@@ -448,8 +448,23 @@ fn load_bytes(py: Python<'_>, data: &[u8], options: &Bound<'_, PyDict>) -> PyRes
 #[pyfunction]
 fn load_path(py: Python<'_>, path: PathBuf, options: &Bound<'_, PyDict>) -> PyResult<NativeScene> {
     let options = load_options(options)?;
-    let loaded = py.detach(|| box2scene::load_path(&path, &options));
+    let file = std::fs::File::open(&path).map_err(|e| cannot_open(py, &path, &e))?;
+    let loaded = py.detach(|| box2scene::load_file(file, &path, &options));
     loaded.map(|scene| NativeScene { scene }).map_err(|e| error(py, e))
+}
+
+/// The package's error for a file that cannot be opened: a `box2scene.Error` that is also
+/// the `OSError` Python raises for the system's reason, with the library's message.
+fn cannot_open(py: Python<'_>, path: &std::path::Path, e: &std::io::Error) -> PyErr {
+    let message = box2scene::Error::cannot_read(path, e).message;
+    let errno = e.raw_os_error().unwrap_or_default();
+    let raised = py.import("box2scene._error").and_then(|m| m.getattr("cannot_open")).and_then(
+        |cannot_open| cannot_open.call1((errno, path.as_os_str(), message)),
+    );
+    match raised {
+        Ok(value) => PyErr::from_value(value),
+        Err(e) => e,
+    }
 }
 
 /// The defaults of a record of `record` ("shape", "fixture", "body", "joint") and `kind`, as

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import errno
 import json
 import os
 import pydoc
@@ -144,6 +145,48 @@ def test_a_missing_file_is_an_io_error(tmp_path):
     assert raised.value.code == "io-error"
 
 
+def test_a_file_that_cannot_be_opened_raises_the_oserror_of_its_kind(tmp_path):
+    missing = tmp_path / "none.xml"
+    with pytest.raises(FileNotFoundError) as raised:
+        box2scene.load(missing)
+    e = raised.value
+    assert isinstance(e, Error) and isinstance(e, OSError)
+    assert (e.errno, e.strerror, e.filename) == (errno.ENOENT, os.strerror(errno.ENOENT), str(missing))
+    assert (e.code, e.line, e.column, e.byte_offset) == ("io-error", 0, 0, 0)
+    assert str(e) == f"error[io-error]: cannot read {missing}: No such file or directory (os error 2)"
+    (tmp_path / "file").write_bytes(b"")
+    with pytest.raises(NotADirectoryError) as raised:
+        box2scene.load(str(tmp_path / "file" / "scene.xml"))
+    assert isinstance(raised.value, Error) and raised.value.errno == errno.ENOTDIR
+    assert str(tmp_path / "file" / "scene.xml") in str(raised.value)
+
+
+def test_an_unreadable_file_raises_permission_error(tmp_path, showcase):
+    if os.geteuid() == 0:
+        pytest.skip("root reads every file: no permission is refused")
+    path = tmp_path / "locked.xml"
+    path.write_bytes(open(showcase, "rb").read())
+    path.chmod(0)
+    with pytest.raises(PermissionError) as raised:
+        box2scene.load(path)
+    assert isinstance(raised.value, Error) and raised.value.filename == str(path)
+
+
+def test_xml_text_is_refused_as_a_path_and_loads_takes_it(showcase):
+    text = open(showcase, encoding="utf-8").read()
+    for source in (text, "\n  " + text):
+        with pytest.raises(Error) as raised:
+            box2scene.load(source)
+        assert raised.value.code == "invalid-argument"
+        assert "box2scene.loads" in str(raised.value) and len(str(raised.value)) < 200
+    assert records(box2scene.loads(text)) == records(box2scene.load(showcase))
+    assert records(box2scene.loads(text.encode())) == records(box2scene.load(showcase))
+    with pytest.raises(Error) as raised:
+        box2scene.loads('<World Version="7"/>')
+    assert (raised.value.code, raised.value.line, raised.value.column) == ("unsupported-version", 1, 17)
+    assert str(raised.value).startswith("1:17: error[unsupported-version]: ")
+
+
 def test_limits_are_load_options(showcase):
     with pytest.raises(Error) as raised:
         box2scene.load(showcase, max_depth=2)
@@ -239,6 +282,16 @@ def test_the_builder_refuses_what_would_not_read_back():
     b.finish()
     with pytest.raises(RuntimeError):
         b.finish()
+
+
+def test_a_builder_error_prints_no_position():
+    b = Builder()
+    shape = b.add_shape(Shape.new("circle", radius=1.0))
+    with pytest.raises(Error) as raised:
+        b.add_fixture(Fixture.new(shape, density=-1.0))
+    assert raised.value.line == 0
+    assert str(raised.value) == f"error[negative-value]: {raised.value.message}"
+    assert "0:0" not in str(raised.value)
 
 
 def test_defaults_are_the_formats():
