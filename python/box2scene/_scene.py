@@ -13,53 +13,112 @@ from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
 Source = Union[str, "os.PathLike[str]", bytes, bytearray, memoryview]
 
 
+_RECORDS: Dict[str, Any] = {
+    "shapes": Shape,
+    "fixtures": Fixture,
+    "bodies": Body,
+    "joints": Joint,
+    "user_data": UserData,
+    "diagnostics": Diagnostic,
+}
+
+_ARRAYS = ("shapes", "fixtures", "bodies", "joints", "vertices", "fixture_ids")
+
+
 class Scene:
     """A loaded (or built) scene: immutable tuples of frozen records.
 
     ``shapes``, ``fixtures``, ``bodies``, ``joints``, ``user_data`` and ``diagnostics``
     hold the C view's records (see :mod:`box2scene._records`); ``vertices`` and
     ``fixture_ids`` are its pools, which ``Shape.vertices`` and ``Body.fixtures`` already
-    resolve. ``gravity`` is None when the file gave none (the host decides).
+    resolve. ``gravity`` is None when the file gave none (the host decides). Each tuple is
+    made when first read, so that a load costs what the library's load costs; :meth:`arrays`
+    gives the same values as NumPy columns. Two scenes are equal when their records are.
     """
 
-    __slots__ = (
-        "_native",
-        "version",
-        "gravity",
-        "shapes",
-        "fixtures",
-        "bodies",
-        "joints",
-        "vertices",
-        "fixture_ids",
-        "user_data",
-        "diagnostics",
-    )
+    __slots__ = ("_native", "_made", "version", "gravity")
 
     version: int
     gravity: Optional[Vec2]
-    shapes: Tuple[Shape, ...]
-    fixtures: Tuple[Fixture, ...]
-    bodies: Tuple[Body, ...]
-    joints: Tuple[Joint, ...]
-    vertices: Tuple[Vec2, ...]
-    fixture_ids: Tuple[int, ...]
-    user_data: Tuple[UserData, ...]
-    diagnostics: Tuple[Diagnostic, ...]
 
     def __init__(self, native: "_native.NativeScene"):
         set_ = object.__setattr__
         set_(self, "_native", native)
+        set_(self, "_made", {})
         set_(self, "version", native.version())
         set_(self, "gravity", native.gravity())
-        set_(self, "shapes", tuple(Shape(**d) for d in native.shapes()))
-        set_(self, "fixtures", tuple(Fixture(**d) for d in native.fixtures()))
-        set_(self, "bodies", tuple(Body(**d) for d in native.bodies()))
-        set_(self, "joints", tuple(Joint(**d) for d in native.joints()))
-        set_(self, "vertices", native.vertices())
-        set_(self, "fixture_ids", tuple(native.fixture_ids()))
-        set_(self, "user_data", tuple(UserData(**d) for d in native.user_data()))
-        set_(self, "diagnostics", tuple(Diagnostic(**d) for d in native.diagnostics()))
+
+    def _records(self, name: str) -> Any:
+        made: Dict[str, Any] = self._made
+        if name not in made:
+            native = self._native
+            if name == "vertices":
+                made[name] = native.vertices()
+            elif name == "fixture_ids":
+                made[name] = tuple(native.fixture_ids())
+            else:
+                record = _RECORDS[name]
+                made[name] = tuple(record(**d) for d in getattr(native, name)())
+        return made[name]
+
+    @property
+    def shapes(self) -> Tuple[Shape, ...]:
+        return self._records("shapes")  # type: ignore[no-any-return]
+
+    @property
+    def fixtures(self) -> Tuple[Fixture, ...]:
+        return self._records("fixtures")  # type: ignore[no-any-return]
+
+    @property
+    def bodies(self) -> Tuple[Body, ...]:
+        return self._records("bodies")  # type: ignore[no-any-return]
+
+    @property
+    def joints(self) -> Tuple[Joint, ...]:
+        return self._records("joints")  # type: ignore[no-any-return]
+
+    @property
+    def vertices(self) -> Tuple[Vec2, ...]:
+        return self._records("vertices")  # type: ignore[no-any-return]
+
+    @property
+    def fixture_ids(self) -> Tuple[int, ...]:
+        return self._records("fixture_ids")  # type: ignore[no-any-return]
+
+    @property
+    def user_data(self) -> Tuple[UserData, ...]:
+        return self._records("user_data")  # type: ignore[no-any-return]
+
+    @property
+    def diagnostics(self) -> Tuple[Diagnostic, ...]:
+        return self._records("diagnostics")  # type: ignore[no-any-return]
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return bool(self._native.same_records(other._native))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def arrays(self) -> Dict[str, Dict[str, Any]]:
+        """The scene's records as NumPy columns (NumPy must be installed): ``"shapes"``,
+        ``"fixtures"``, ``"bodies"``, ``"joints"``, ``"vertices"`` and ``"fixture_ids"``, each a
+        dict of one read-only array per field (``position`` of shape (n, 2), ``angle`` of
+        shape (n,), kinds as text, absent indices as -1, each optional datum with its
+        ``..._given`` flag, a shape's vertices and a body's fixtures as ``..._first`` and
+        ``..._count`` into the pools ``arrays()["vertices"]["vertices"]`` and
+        ``arrays()["fixture_ids"]["fixture_ids"]``). The library writes each column once
+        into memory that the array then reads in place."""
+        import numpy as np
+
+        def array(dtype: str, width: int, data: bytes) -> Any:
+            values = np.frombuffer(data, dtype=dtype)
+            return values.reshape(-1, width) if width > 1 else values
+
+        return {
+            name: {column: array(dtype, width, data) for column, dtype, width, data in self._native.columns(name)}
+            for name in _ARRAYS
+        }
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a Scene is immutable")
@@ -206,8 +265,9 @@ class Builder:
     def __init__(self) -> None:
         self._native = _native.NativeBuilder()
 
-    def set_gravity(self, gravity: Optional[Vec2]) -> None:
-        """The world's gravity, or None (the host decides)."""
+    def set_gravity(self, gravity: Optional[Sequence[float]]) -> None:
+        """The world's gravity (any sequence of two numbers: a tuple, a list, a NumPy
+        array), or None (the host decides)."""
         self._native.set_gravity(gravity)
 
     def add_user_data(

@@ -12,7 +12,7 @@ use box2scene::{
 };
 use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
     ("circle", ShapeKind::Circle),
@@ -108,8 +108,16 @@ impl Field for Vec2 {
         Ok((self.x, self.y).into_pyobject(py)?.into_any())
     }
     fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let (x, y): (f32, f32) = value.extract()?;
-        Ok(Vec2::new(x, y))
+        vec2_from_py(value)
+    }
+}
+
+/// A vector from any sequence of two numbers: a tuple, a list, a NumPy array.
+fn vec2_from_py(value: &Bound<'_, PyAny>) -> PyResult<Vec2> {
+    let numbers: Vec<f32> = value.extract()?;
+    match numbers[..] {
+        [x, y] => Ok(Vec2::new(x, y)),
+        _ => Err(PyValueError::new_err(format!("a vector is two numbers, not {}", numbers.len()))),
     }
 }
 
@@ -161,7 +169,7 @@ fn bits<T: TryFrom<i64>>(value: &Bound<'_, PyAny>, field: &str) -> PyResult<T> {
 
 /// The fields each record shares with its dict under the same name, both ways.
 macro_rules! plain_fields {
-    ($to:ident, $from:ident, $record:ty { $($field:ident),* $(,)? }) => {
+    ($to:ident, $from:ident, $columns:ident, $record:ty { $($field:ident),* $(,)? }) => {
         fn $to(py: Python<'_>, r: &$record, d: &Bound<'_, PyDict>) -> PyResult<()> {
             $(d.set_item(stringify!($field), Field::to_py(&r.$field, py)?)?;)*
             Ok(())
@@ -175,14 +183,30 @@ macro_rules! plain_fields {
             }
             Ok(true)
         }
+
+        /// The fields' columns of `items`, for `Scene.arrays()`.
+        fn $columns<'py>(
+            py: Python<'py>,
+            items: &[$record],
+            columns: &mut Vec<Column<'py>>,
+        ) -> PyResult<()> {
+            $(columns.push(column(py, stringify!($field), items, |r| r.$field)?);)*
+            Ok(())
+        }
     };
 }
 
-plain_fields!(shape_to, shape_from, Shape { radius, position, is_loop });
-plain_fields!(fixture_to, fixture_from, Fixture { density, friction, restitution, is_sensor });
+plain_fields!(shape_to, shape_from, shape_columns, Shape { radius, position, is_loop });
+plain_fields!(
+    fixture_to,
+    fixture_from,
+    fixture_columns,
+    Fixture { density, friction, restitution, is_sensor }
+);
 plain_fields!(
     body_to,
     body_from,
+    body_columns,
     Body {
         position,
         angle,
@@ -202,6 +226,7 @@ plain_fields!(
 plain_fields!(
     joint_to,
     joint_from,
+    joint_columns,
     Joint {
         local_anchor_a,
         local_anchor_b,
@@ -347,6 +372,182 @@ fn write_options(all_fields: bool) -> WriteOptions {
     WriteOptions { all_fields, ..WriteOptions::default() }
 }
 
+/// One column of `Scene.arrays()`: its name, NumPy's type of its items, how many items each
+/// record has (2 for a vector), and the items, written once into bytes that NumPy reads
+/// in place.
+type Column<'py> = (&'static str, &'static str, usize, Bound<'py, PyBytes>);
+
+/// A value of a column, as NumPy holds it (little-endian, as the wheels' machines are).
+trait ColumnValue {
+    const DTYPE: &'static str;
+    const WIDTH: usize;
+    const SIZE: usize;
+    fn put(&self, out: &mut [u8]);
+}
+
+impl ColumnValue for f32 {
+    const DTYPE: &'static str = "<f4";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 4;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl ColumnValue for Vec2 {
+    const DTYPE: &'static str = "<f4";
+    const WIDTH: usize = 2;
+    const SIZE: usize = 8;
+    fn put(&self, out: &mut [u8]) {
+        self.x.put(&mut out[..4]);
+        self.y.put(&mut out[4..]);
+    }
+}
+
+impl ColumnValue for bool {
+    const DTYPE: &'static str = "|b1";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 1;
+    fn put(&self, out: &mut [u8]) {
+        out[0] = u8::from(*self);
+    }
+}
+
+impl ColumnValue for u32 {
+    const DTYPE: &'static str = "<u4";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 4;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl ColumnValue for i16 {
+    const DTYPE: &'static str = "<i2";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 2;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+/// An index into a sibling array, -1 where absent (`NONE`).
+struct Index(u32);
+
+impl ColumnValue for Index {
+    const DTYPE: &'static str = "<i8";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 8;
+    fn put(&self, out: &mut [u8]) {
+        let index = if self.0 == NONE { -1 } else { i64::from(self.0) };
+        out.copy_from_slice(&index.to_le_bytes());
+    }
+}
+
+/// A kind's Python name, as NumPy's fixed-width text (UTF-32, 11 characters: "unsupported").
+struct KindName(String);
+
+impl ColumnValue for KindName {
+    const DTYPE: &'static str = "<U11";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 44;
+    fn put(&self, out: &mut [u8]) {
+        for (c, slot) in self.0.chars().zip(out.chunks_exact_mut(4)) {
+            slot.copy_from_slice(&u32::from(c).to_le_bytes());
+        }
+    }
+}
+
+fn column<'py, R, V: ColumnValue>(
+    py: Python<'py>,
+    name: &'static str,
+    items: &[R],
+    value: impl Fn(&R) -> V,
+) -> PyResult<Column<'py>> {
+    let bytes = PyBytes::new_with(py, items.len() * V::SIZE, |out| {
+        for (slot, item) in out.chunks_exact_mut(V::SIZE).zip(items) {
+            value(item).put(slot);
+        }
+        Ok(())
+    })?;
+    Ok((name, V::DTYPE, V::WIDTH, bytes))
+}
+
+fn shape_table<'py>(py: Python<'py>, shapes: &[Shape]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |s: &Shape| KindName(kind_name(&SHAPE_KINDS, s.kind, |k| k as u32));
+    let mut columns = vec![column(py, "kind", shapes, kind)?];
+    shape_columns(py, shapes, &mut columns)?;
+    columns.extend([
+        column(py, "vertices_first", shapes, |s| s.vertices.first)?,
+        column(py, "vertices_count", shapes, |s| s.vertices.count)?,
+        column(py, "centroid", shapes, |s| s.centroid)?,
+        column(py, "centroid_given", shapes, |s| s.centroid_given)?,
+        column(py, "prev_vertex", shapes, |s| s.prev_vertex)?,
+        column(py, "has_prev_vertex", shapes, |s| s.has_prev_vertex)?,
+        column(py, "next_vertex", shapes, |s| s.next_vertex)?,
+        column(py, "has_next_vertex", shapes, |s| s.has_next_vertex)?,
+    ]);
+    Ok(columns)
+}
+
+fn fixture_table<'py>(py: Python<'py>, fixtures: &[Fixture]) -> PyResult<Vec<Column<'py>>> {
+    let mut columns = vec![column(py, "shape", fixtures, |f| Index(f.shape))?];
+    fixture_columns(py, fixtures, &mut columns)?;
+    columns.extend([
+        column(py, "category_bits", fixtures, |f| f.filter.category_bits)?,
+        column(py, "mask_bits", fixtures, |f| f.filter.mask_bits)?,
+        column(py, "group_index", fixtures, |f| f.filter.group_index)?,
+        column(py, "user_data", fixtures, |f| Index(f.user_data))?,
+    ]);
+    Ok(columns)
+}
+
+fn body_table<'py>(py: Python<'py>, bodies: &[Body]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |b: &Body| KindName(kind_name(&BODY_KINDS, b.kind, |k| k as u32));
+    let mut columns = vec![column(py, "kind", bodies, kind)?];
+    body_columns(py, bodies, &mut columns)?;
+    columns.extend([
+        column(py, "mass", bodies, |b| b.mass_data.mass)?,
+        column(py, "mass_given", bodies, |b| b.mass_data.mass_given)?,
+        column(py, "center", bodies, |b| b.mass_data.center)?,
+        column(py, "center_given", bodies, |b| b.mass_data.center_given)?,
+        column(py, "inertia", bodies, |b| b.mass_data.inertia)?,
+        column(py, "inertia_given", bodies, |b| b.mass_data.inertia_given)?,
+        column(py, "fixtures_first", bodies, |b| b.fixtures.first)?,
+        column(py, "fixtures_count", bodies, |b| b.fixtures.count)?,
+        column(py, "user_data", bodies, |b| Index(b.user_data))?,
+    ]);
+    Ok(columns)
+}
+
+fn joint_table<'py>(py: Python<'py>, joints: &[Joint]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |j: &Joint| KindName(kind_name(&JOINT_KINDS, j.kind, |k| k as u32));
+    let mut columns = vec![
+        column(py, "kind", joints, kind)?,
+        column(py, "body_a", joints, |j| Index(j.body_a))?,
+        column(py, "body_b", joints, |j| Index(j.body_b))?,
+        column(py, "joint_a", joints, |j| Index(j.joint_a))?,
+        column(py, "joint_b", joints, |j| Index(j.joint_b))?,
+        column(py, "user_data", joints, |j| Index(j.user_data))?,
+    ];
+    joint_columns(py, joints, &mut columns)?;
+    Ok(columns)
+}
+
+/// The columns of one array of a scene (`"shapes"`, `"fixtures"`, `"bodies"`, `"joints"`,
+/// or the pools `"vertices"` and `"fixture_ids"`, of one column named as the pool).
+fn table<'py>(py: Python<'py>, scene: &Scene, array: &str) -> PyResult<Vec<Column<'py>>> {
+    match array {
+        "shapes" => shape_table(py, scene.shapes()),
+        "fixtures" => fixture_table(py, scene.fixtures()),
+        "bodies" => body_table(py, scene.bodies()),
+        "joints" => joint_table(py, scene.joints()),
+        "vertices" => Ok(vec![column(py, "vertices", scene.vertex_pool(), |v| *v)?]),
+        "fixture_ids" => Ok(vec![column(py, "fixture_ids", scene.fixture_id_pool(), |i| *i)?]),
+        _ => Err(PyValueError::new_err(format!("a scene has no array {array:?}"))),
+    }
+}
+
 #[pymethods]
 impl NativeScene {
     fn version(&self) -> u32 {
@@ -389,6 +590,14 @@ impl NativeScene {
     fn to_json(&self) -> String {
         self.scene.to_json()
     }
+    fn columns<'py>(&self, py: Python<'py>, array: &str) -> PyResult<Vec<Column<'py>>> {
+        table(py, &self.scene, array)
+    }
+    /// Whether both scenes hold the same values: every field of every record, as the
+    /// library's JSON dump gives them.
+    fn same_records(&self, py: Python<'_>, other: &NativeScene) -> bool {
+        std::ptr::eq(self, other) || py.detach(|| self.scene.to_json() == other.scene.to_json())
+    }
     /// The library's picture (`box2scene::draw`): poses as (x, y, angle), one per body;
     /// samples of one point per body each.
     #[pyo3(signature = (title, start, end, joints_created, trajectories))]
@@ -399,14 +608,15 @@ impl NativeScene {
         start: Option<Vec<(f32, f32, f32)>>,
         end: Option<Vec<(f32, f32, f32)>>,
         joints_created: Option<Vec<bool>>,
-        trajectories: Vec<(f32, f32)>,
+        trajectories: Vec<Bound<'_, PyAny>>,
     ) -> PyResult<String> {
         let poses = |poses: Option<Vec<(f32, f32, f32)>>| {
             let pose = |(x, y, angle)| Pose { position: Vec2 { x, y }, angle };
             poses.map(|poses| poses.into_iter().map(pose).collect::<Vec<Pose>>())
         };
         let (start, end) = (poses(start), poses(end));
-        let trajectories: Vec<Vec2> = trajectories.into_iter().map(|(x, y)| Vec2 { x, y }).collect();
+        let trajectories =
+            trajectories.iter().map(vec2_from_py).collect::<PyResult<Vec<Vec2>>>()?;
         let picture = Picture {
             title,
             start: start.as_deref(),
@@ -458,9 +668,10 @@ fn load_path(py: Python<'_>, path: PathBuf, options: &Bound<'_, PyDict>) -> PyRe
 fn cannot_open(py: Python<'_>, path: &std::path::Path, e: &std::io::Error) -> PyErr {
     let message = box2scene::Error::cannot_read(path, e).message;
     let errno = e.raw_os_error().unwrap_or_default();
-    let raised = py.import("box2scene._error").and_then(|m| m.getattr("cannot_open")).and_then(
-        |cannot_open| cannot_open.call1((errno, path.as_os_str(), message)),
-    );
+    let raised = py
+        .import("box2scene._error")
+        .and_then(|m| m.getattr("cannot_open"))
+        .and_then(|cannot_open| cannot_open.call1((errno, path.as_os_str(), message)));
     match raised {
         Ok(value) => PyErr::from_value(value),
         Err(e) => e,
@@ -541,8 +752,9 @@ impl NativeBuilder {
         NativeBuilder { builder: Mutex::new(Some(Builder::new())) }
     }
 
-    fn set_gravity(&self, py: Python<'_>, gravity: Option<(f32, f32)>) -> PyResult<()> {
-        self.with(py, |b| b.set_gravity(gravity.map(|(x, y)| Vec2::new(x, y))))
+    fn set_gravity(&self, py: Python<'_>, gravity: Option<Bound<'_, PyAny>>) -> PyResult<()> {
+        let gravity = gravity.as_ref().map(vec2_from_py).transpose()?;
+        self.with(py, |b| b.set_gravity(gravity))
     }
 
     #[pyo3(signature = (raw=None, type_name=None, value=None))]

@@ -6,6 +6,7 @@ import dataclasses
 import errno
 import json
 import os
+import pickle
 import pydoc
 import re
 
@@ -336,3 +337,116 @@ def test_a_scene_is_drawn_as_the_library_draws_it(showcase):
         scene.draw_svg(end=lower[1:])
     assert raised.value.code == "invalid-argument"
     assert raised.value.message == f"end holds {len(lower) - 1} poses for {len(lower)} bodies"
+
+
+def test_a_load_makes_no_record_until_one_is_read(showcase):
+    scene = box2scene.load(showcase)
+    assert scene._made == {}
+    bodies = scene.bodies
+    assert list(scene._made) == ["bodies"] and scene.bodies is bodies
+    assert len(bodies) == 34 and scene.find_body(bodies[3].name) == 3
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_scenes_compare_by_value(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    a, b = box2scene.load(path), box2scene.load(data)
+    assert a == b and not (a != b)
+    assert a == a and a != data and a != None  # noqa: E711
+    with pytest.raises(TypeError):
+        hash(a)
+
+
+def test_scenes_with_one_field_apart_are_unequal(showcase):
+    scene = box2scene.load(showcase)
+    b = Builder()
+    b.set_gravity((0.0, -10.0))
+    built = b.finish()
+    b = Builder()
+    b.set_gravity((0.0, -9.5))
+    assert built != b.finish() and built != scene
+    b = Builder()
+    b.set_gravity((0.0, -10.0))
+    assert built == b.finish()
+
+
+def test_records_pickle_to_equal_records(showcase):
+    scene = box2scene.load(showcase)
+    for records_of_a_kind in (scene.shapes, scene.fixtures, scene.bodies, scene.joints, scene.user_data, scene.diagnostics):
+        assert pickle.loads(pickle.dumps(records_of_a_kind)) == records_of_a_kind
+
+
+def owner(array):
+    """The object whose memory an array reads."""
+    while isinstance(array.base, np.ndarray):
+        array = array.base
+    return array.base
+
+
+def as_column(value):
+    if value is None:
+        return -1
+    return value
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_arrays_hold_the_records_values(path):
+    scene = box2scene.load(path)
+    arrays = scene.arrays()
+    assert set(arrays) == {"shapes", "fixtures", "bodies", "joints", "vertices", "fixture_ids"}
+    for name, records_of_a_kind in (("shapes", scene.shapes), ("fixtures", scene.fixtures), ("bodies", scene.bodies), ("joints", scene.joints)):
+        columns = arrays[name]
+        for column in columns.values():
+            assert len(column) == len(records_of_a_kind)
+            assert not column.flags.writeable and isinstance(owner(column), bytes)
+        for i, record in enumerate(records_of_a_kind):
+            for f in dataclasses.fields(record):
+                value = getattr(record, f.name)
+                if f.name in ("vertices", "fixtures", "name"):
+                    continue
+                if f.name in columns:
+                    given = columns.get(f"{f.name}_given", columns.get(f"has_{f.name}"))
+                    if given is not None:
+                        assert bool(given[i]) == (value is not None), (name, f.name)
+                        if value is None:
+                            continue
+                    got = columns[f.name][i]
+                    expected = as_column(value) if f.name in ("shape", "user_data", "body_a", "body_b", "joint_a", "joint_b") else value
+                    assert np.array_equal(np.asarray(got), np.asarray(expected, dtype=np.asarray(got).dtype)), (name, f.name, i)
+                else:
+                    raise AssertionError(f"{name} has no column {f.name}")
+    pool = arrays["vertices"]["vertices"]
+    assert pool.shape == (len(scene.vertices), 2) and pool.dtype == np.float32
+    for i, shape in enumerate(scene.shapes):
+        first, count = arrays["shapes"]["vertices_first"][i], arrays["shapes"]["vertices_count"][i]
+        assert [tuple(float(x) for x in v) for v in pool[first : first + count]] == list(shape.vertices)
+    ids = arrays["fixture_ids"]["fixture_ids"]
+    for i, body in enumerate(scene.bodies):
+        first, count = arrays["bodies"]["fixtures_first"][i], arrays["bodies"]["fixtures_count"][i]
+        assert tuple(int(x) for x in ids[first : first + count]) == body.fixtures
+
+
+def test_every_vec2_argument_takes_a_sequence_or_a_numpy_array():
+    def build(vec):
+        b = Builder()
+        b.set_gravity(vec((0.0, -10.0)))
+        polygon = b.add_shape(Shape.new("polygon", vertices=[vec(v) for v in ((-1.0, 0.0), (1.0, 0.0), (0.0, 1.0))]))
+        circle = b.add_shape(Shape.new("circle", radius=0.5, position=vec((0.25, 0.5))))
+        fixtures = (b.add_fixture(Fixture.new(polygon)), b.add_fixture(Fixture.new(circle)))
+        b.add_body(Body.new("dynamic", fixtures=fixtures, position=vec((1.0, 2.0)), linear_velocity=vec((3.0, -4.0)), center=vec((0.5, 0.5))))
+        return b.finish()
+
+    tuples = build(tuple)
+    assert tuples.bodies[0].position == (1.0, 2.0)
+    for vec in (list, np.array, lambda v: np.array(v, dtype=np.float32)):
+        assert build(vec) == tuples
+    b = Builder()
+    b.add_shape(Shape.new("polygon", vertices=np.array([(-1.0, 0.0), (1.0, 0.0), (0.0, 1.0)])))
+    assert b.finish().shapes[0].vertices == ((-1.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+    with pytest.raises(ValueError, match="a vector is two numbers, not 3"):
+        Builder().set_gravity([0.0, 1.0, 2.0])
+    with pytest.raises(TypeError):
+        Builder().set_gravity(5.0)
+    svg = tuples.draw_svg(trajectories=[[np.array((1.0, 2.0))], [[1.5, 2.5]]])
+    assert svg == tuples.draw_svg(trajectories=[[(1.0, 2.0)], [(1.5, 2.5)]])
