@@ -265,6 +265,18 @@ class Builder:
     def __init__(self) -> None:
         self._native = _native.NativeBuilder()
 
+    @classmethod
+    def from_scene(cls, scene: Scene) -> "Builder":
+        """A builder holding everything ``scene`` holds but its diagnostics, the text its
+        file held beyond the records too: comments, unknown elements and attributes,
+        Farseer-only joints. What is added, replaced or removed changes only itself, so
+        the finished scene writes every such text of the records left as they were, as
+        ``box2scene fmt`` writes them. A replaced record keeps the comments around it but
+        not the unknown content inside it."""
+        builder = cls.__new__(cls)
+        builder._native = _native.NativeBuilder.from_scene(scene._native)
+        return builder
+
     def set_gravity(self, gravity: Optional[Sequence[float]]) -> None:
         """The world's gravity (any sequence of two numbers: a tuple, a list, a NumPy
         array), or None (the host decides)."""
@@ -296,6 +308,40 @@ class Builder:
         """Adds a joint between added bodies (a gear after its two joints); returns its
         index."""
         return self._native.add_joint(_fields(joint))
+
+    def replace_shape(self, index: int, shape: Shape) -> None:
+        """Replaces shape ``index``, checked as :meth:`add_shape` checks a new one."""
+        self._native.replace_shape(index, _fields(shape))
+
+    def replace_fixture(self, index: int, fixture: Fixture) -> None:
+        """Replaces fixture ``index``, checked as :meth:`add_fixture` checks a new one."""
+        self._native.replace_fixture(index, _fields(fixture))
+
+    def replace_body(self, index: int, body: Body) -> None:
+        """Replaces body ``index``, checked as :meth:`add_body` checks a new one."""
+        self._native.replace_body(index, _fields(body))
+
+    def replace_joint(self, index: int, joint: Joint) -> None:
+        """Replaces joint ``index``, checked as :meth:`add_joint` checks a new one; a joint
+        a gear couples stays revolute or prismatic."""
+        self._native.replace_joint(index, _fields(joint))
+
+    def remove_shape(self, index: int) -> None:
+        """Removes shape ``index``, which no fixture may use; later shapes move down one,
+        and the fixtures' indices with them."""
+        self._native.remove_shape(index)
+
+    def remove_fixture(self, index: int) -> None:
+        """Removes fixture ``index``, which no body may hold; later fixtures move down."""
+        self._native.remove_fixture(index)
+
+    def remove_body(self, index: int) -> None:
+        """Removes body ``index``, which no joint may join; later bodies move down."""
+        self._native.remove_body(index)
+
+    def remove_joint(self, index: int) -> None:
+        """Removes joint ``index``, which no gear may couple; later joints move down."""
+        self._native.remove_joint(index)
 
     def finish(self) -> Scene:
         """The finished scene; the builder cannot be used afterwards."""

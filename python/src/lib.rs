@@ -725,6 +725,89 @@ fn kind_field(record: &Bound<'_, PyDict>) -> PyResult<String> {
     }
 }
 
+/// A shape record's dict as the library's shape, name and vertices.
+fn shape_record(record: &Bound<'_, PyDict>) -> PyResult<(Shape, Option<String>, Vec<Vec2>)> {
+    let mut shape = Shape::new(kind_of(&SHAPE_KINDS, &kind_field(record)?, "shape")?);
+    let (mut name, mut vertices) = (None::<String>, Vec::new());
+    fields_into(record, &mut shape, "shape", shape_from, |s, key, value| {
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "vertices" => {
+                for v in value.try_iter()? {
+                    vertices.push(Vec2::from_py(&v?)?);
+                }
+            }
+            "centroid" => (s.centroid_given, s.centroid) = optional_from_py(value)?,
+            "prev_vertex" => (s.has_prev_vertex, s.prev_vertex) = optional_from_py(value)?,
+            "next_vertex" => (s.has_next_vertex, s.next_vertex) = optional_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((shape, name, vertices))
+}
+
+/// A fixture record's dict as the library's fixture and name.
+fn fixture_record(record: &Bound<'_, PyDict>) -> PyResult<(Fixture, Option<String>)> {
+    let mut fixture = Fixture::default();
+    let mut name = None::<String>;
+    fields_into(record, &mut fixture, "fixture", fixture_from, |f, key, value| {
+        match key {
+            "name" => name = value.extract()?,
+            "shape" => f.shape = index_from_py(value)?,
+            "user_data" => f.user_data = index_from_py(value)?,
+            "category_bits" => f.filter.category_bits = bits(value, "category_bits")?,
+            "mask_bits" => f.filter.mask_bits = bits(value, "mask_bits")?,
+            "group_index" => f.filter.group_index = bits(value, "group_index")?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((fixture, name))
+}
+
+/// A body record's dict as the library's body, name and fixtures.
+fn body_record(record: &Bound<'_, PyDict>) -> PyResult<(Body, Option<String>, Vec<u32>)> {
+    let mut body = Body::new(kind_of(&BODY_KINDS, &kind_field(record)?, "body")?);
+    let (mut name, mut fixtures) = (None::<String>, Vec::new());
+    fields_into(record, &mut body, "body", body_from, |b, key, value| {
+        let m = &mut b.mass_data;
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "fixtures" => fixtures = value.extract()?,
+            "user_data" => b.user_data = index_from_py(value)?,
+            "mass" => (m.mass_given, m.mass) = optional_from_py(value)?,
+            "center" => (m.center_given, m.center) = optional_from_py(value)?,
+            "inertia" => (m.inertia_given, m.inertia) = optional_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((body, name, fixtures))
+}
+
+/// A joint record's dict as the library's joint and name.
+fn joint_record(record: &Bound<'_, PyDict>) -> PyResult<(Joint, Option<String>)> {
+    let mut joint = Joint::new(kind_of(&JOINT_KINDS, &kind_field(record)?, "joint")?);
+    let mut name = None::<String>;
+    fields_into(record, &mut joint, "joint", joint_from, |j, key, value| {
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "body_a" => j.body_a = index_from_py(value)?,
+            "body_b" => j.body_b = index_from_py(value)?,
+            "joint_a" => j.joint_a = index_from_py(value)?,
+            "joint_b" => j.joint_b = index_from_py(value)?,
+            "user_data" => j.user_data = index_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((joint, name))
+}
+
 /// A scene under construction, in the library's builder.
 #[pyclass(frozen, module = "box2scene._native")]
 struct NativeBuilder {
@@ -769,82 +852,81 @@ impl NativeBuilder {
     }
 
     fn add_shape(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut shape = Shape::new(kind_of(&SHAPE_KINDS, &kind_field(record)?, "shape")?);
-        let (mut name, mut vertices) = (None::<String>, Vec::new());
-        fields_into(record, &mut shape, "shape", shape_from, |s, key, value| {
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "vertices" => {
-                    for v in value.try_iter()? {
-                        vertices.push(Vec2::from_py(&v?)?);
-                    }
-                }
-                "centroid" => (s.centroid_given, s.centroid) = optional_from_py(value)?,
-                "prev_vertex" => (s.has_prev_vertex, s.prev_vertex) = optional_from_py(value)?,
-                "next_vertex" => (s.has_next_vertex, s.next_vertex) = optional_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (shape, name, vertices) = shape_record(record)?;
         self.with(py, |b| b.add_shape(&shape, name.as_deref(), &vertices))
     }
 
     fn add_fixture(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut fixture = Fixture::default();
-        let mut name = None::<String>;
-        fields_into(record, &mut fixture, "fixture", fixture_from, |f, key, value| {
-            match key {
-                "name" => name = value.extract()?,
-                "shape" => f.shape = index_from_py(value)?,
-                "user_data" => f.user_data = index_from_py(value)?,
-                "category_bits" => f.filter.category_bits = bits(value, "category_bits")?,
-                "mask_bits" => f.filter.mask_bits = bits(value, "mask_bits")?,
-                "group_index" => f.filter.group_index = bits(value, "group_index")?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (fixture, name) = fixture_record(record)?;
         self.with(py, |b| b.add_fixture(&fixture, name.as_deref()))
     }
 
     fn add_body(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut body = Body::new(kind_of(&BODY_KINDS, &kind_field(record)?, "body")?);
-        let (mut name, mut fixtures) = (None::<String>, Vec::new());
-        fields_into(record, &mut body, "body", body_from, |b, key, value| {
-            let m = &mut b.mass_data;
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "fixtures" => fixtures = value.extract()?,
-                "user_data" => b.user_data = index_from_py(value)?,
-                "mass" => (m.mass_given, m.mass) = optional_from_py(value)?,
-                "center" => (m.center_given, m.center) = optional_from_py(value)?,
-                "inertia" => (m.inertia_given, m.inertia) = optional_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (body, name, fixtures) = body_record(record)?;
         self.with(py, |b| b.add_body(&body, name.as_deref(), &fixtures))
     }
 
     fn add_joint(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut joint = Joint::new(kind_of(&JOINT_KINDS, &kind_field(record)?, "joint")?);
-        let mut name = None::<String>;
-        fields_into(record, &mut joint, "joint", joint_from, |j, key, value| {
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "body_a" => j.body_a = index_from_py(value)?,
-                "body_b" => j.body_b = index_from_py(value)?,
-                "joint_a" => j.joint_a = index_from_py(value)?,
-                "joint_b" => j.joint_b = index_from_py(value)?,
-                "user_data" => j.user_data = index_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (joint, name) = joint_record(record)?;
         self.with(py, |b| b.add_joint(&joint, name.as_deref()))
+    }
+
+    /// A builder holding everything `scene` holds, the text its file held beyond the
+    /// records too (`Builder::from_scene`).
+    #[staticmethod]
+    fn from_scene(scene: &NativeScene) -> NativeBuilder {
+        NativeBuilder { builder: Mutex::new(Some(Builder::from_scene(&scene.scene))) }
+    }
+
+    fn replace_shape(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (shape, name, vertices) = shape_record(record)?;
+        self.with(py, |b| b.replace_shape(index, &shape, name.as_deref(), &vertices))
+    }
+
+    fn replace_fixture(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (fixture, name) = fixture_record(record)?;
+        self.with(py, |b| b.replace_fixture(index, &fixture, name.as_deref()))
+    }
+
+    fn replace_body(&self, py: Python<'_>, index: u32, record: &Bound<'_, PyDict>) -> PyResult<()> {
+        let (body, name, fixtures) = body_record(record)?;
+        self.with(py, |b| b.replace_body(index, &body, name.as_deref(), &fixtures))
+    }
+
+    fn replace_joint(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (joint, name) = joint_record(record)?;
+        self.with(py, |b| b.replace_joint(index, &joint, name.as_deref()))
+    }
+
+    fn remove_shape(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_shape(index))
+    }
+
+    fn remove_fixture(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_fixture(index))
+    }
+
+    fn remove_body(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_body(index))
+    }
+
+    fn remove_joint(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_joint(index))
     }
 
     fn finish(&self) -> PyResult<NativeScene> {

@@ -450,3 +450,46 @@ def test_every_vec2_argument_takes_a_sequence_or_a_numpy_array():
         Builder().set_gravity(5.0)
     svg = tuples.draw_svg(trajectories=[[np.array((1.0, 2.0))], [[1.5, 2.5]]])
     assert svg == tuples.draw_svg(trajectories=[[(1.0, 2.0)], [(1.5, 2.5)]])
+
+
+def comments(text):
+    return re.findall(r"<!--(.*?)-->", text, re.S)
+
+
+def test_a_loaded_scene_edited_keeps_every_comment_of_the_records_left_unchanged(showcase):
+    scene = box2scene.load(showcase)
+    assert len(comments(scene.to_xml())) == 20
+    assert Builder.from_scene(scene).finish().to_xml() == scene.to_xml()
+    b = Builder.from_scene(scene)
+    driver = scene.find_body("GearDriver")
+    b.replace_body(driver, dataclasses.replace(scene.bodies[driver], position=(-3.5, 7.25)))
+    extra = b.add_body(Body.new("dynamic", name="Newcomer", fixtures=scene.bodies[driver].fixtures, position=[1.0, 2.0]))
+    weld = next(i for i, j in enumerate(scene.joints) if j.kind == "weld")
+    b.remove_joint(weld)
+    edited = b.finish()
+    text = edited.to_xml()
+    assert comments(text) == [c for c in comments(scene.to_xml()) if c != " Weld "]
+    again = box2scene.loads(text)
+    assert again.bodies[driver].position == (-3.5, 7.25)
+    assert again.find_body("Newcomer") == extra == len(scene.bodies)
+    assert len(again.joints) == len(scene.joints) - 1
+    gear = again.joints[again.find_joint("GearMesh")]
+    assert (gear.joint_a, gear.joint_b) == (again.find_joint("GearDriverAxle"), again.find_joint("GearFollowerAxle"))
+    untouched = [i for i in range(len(scene.bodies)) if i != driver]
+    assert [again.bodies[i] for i in untouched] == [scene.bodies[i] for i in untouched]
+    every_record = lambda s: (s.version, s.gravity, s.shapes, s.fixtures, s.bodies, s.joints, s.user_data)
+    assert every_record(again) == every_record(edited)
+    assert [d.code for d in again.diagnostics] == ["joint-starts-violated"]
+
+
+def test_what_a_record_refers_to_is_not_removed(showcase):
+    scene = box2scene.load(showcase)
+    b = Builder.from_scene(scene)
+    axle, gear = scene.find_joint("GearDriverAxle"), scene.find_joint("GearMesh")
+    with pytest.raises(Error) as raised:
+        b.remove_joint(axle)
+    assert (raised.value.code, raised.value.message) == ("invalid-argument", f"joint {axle}: gear joint {gear} refers to it; replace or take that out first")
+    with pytest.raises(Error) as raised:
+        b.replace_body(1000, scene.bodies[0])
+    assert (raised.value.code, str(raised.value)) == ("id-out-of-range", "error[id-out-of-range]: body 1000: there is no body 1000: the scene has 34")
+    assert b.finish() == scene
