@@ -4,14 +4,14 @@ XML parser, in one run, as docs/python.md reports it:
     python python/bench/load.py SCENE.xml [--wheel WHEEL] [--runs N]
 
 SCENE.xml is the benchmark scene (bench/generate 10000 SCENE.xml writes the 10 000-body
-one, about 9.7 MB). Times are medians of N runs (default 7) in this process: the library's
-own load (the extension's load of the path, the records left in the library), box2scene.load
-(the same load and the Scene over it), box2scene.load with every record tuple then made,
-scene.arrays(), and xml.etree.ElementTree.parse of the same file. Peak memory is the
-highest resident set (VmHWM) of a fresh process doing one of these loads, less that
-process's before it (its interpreter and imports). With --wheel: the wheel's size, its
-extension's size and the time pip takes to install it (no dependencies, from the file)
-into a fresh virtual environment.
+one, about 9.7 MB). Times are medians of N rounds (default 7) in this process, the loads
+interleaved within each round: the library's own load (the extension's load of the path,
+the records left in the library), box2scene.load (the same load and the Scene over it),
+box2scene.load with every record tuple then made, scene.arrays(), and
+xml.etree.ElementTree.parse of the same file. Peak memory is the highest resident set
+(VmHWM) of a fresh process doing one of these loads, less that process's before it (its
+interpreter and imports). With --wheel: the wheel's size, its extension's size and the time
+pip takes to install it (no dependencies, from the file) into a fresh virtual environment.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ import tempfile
 import time
 import venv
 import zipfile
-from typing import Callable, List
+from typing import Callable, Dict, List
 
 LOADS = {
     "library load (extension, records in Rust)": "box2scene._native.load_path(path, {})",
@@ -53,13 +53,17 @@ print(peak_kb() - before)
 """
 
 
-def median_ms(run: Callable[[], object], runs: int) -> float:
-    times = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        run()
-        times.append(time.perf_counter() - start)
-    return 1000 * statistics.median(times)
+def medians_ms(runs_of: Dict[str, Callable[[], object]], rounds: int) -> Dict[str, float]:
+    """The median time of each, the runs interleaved within each round (each going first in
+    turn), so that a busy machine slows all of them alike."""
+    times: Dict[str, List[float]] = {name: [] for name in runs_of}
+    names = list(runs_of)
+    for r in range(rounds):
+        for name in names[r % len(names) :] + names[: r % len(names)]:
+            start = time.perf_counter()
+            runs_of[name]()
+            times[name].append(time.perf_counter() - start)
+    return {name: 1000 * statistics.median(t) for name, t in times.items()}
 
 
 def peak_mb(load: str, path: str) -> float:
@@ -103,10 +107,11 @@ def main() -> None:
     print(f"{os.path.basename(path)}: {os.path.getsize(path) / 1e6:.1f} MB, Python {sys.version.split()[0]}, {os.cpu_count()} cores\n")
     print("| load | median time | over the library's | peak memory |")
     print("|---|---|---|---|")
-    library = 0.0
+    runs_of = {name: (lambda load=load: eval(load, names)) for name, load in LOADS.items()}
+    medians = medians_ms(runs_of, args.runs)
+    library = next(iter(medians.values()))
     for name, load in LOADS.items():
-        ms = median_ms(lambda: eval(load, names), args.runs)
-        library = library or ms
+        ms = medians[name]
         print(f"| {name} | {ms:.1f} ms | {ms / library:.2f}x | {peak_mb(load, path):.1f} MB |")
     if args.wheel:
         print("\n| the wheel | |\n|---|---|")
