@@ -53,11 +53,11 @@ class _CannotOpen(Error):
         self._describe("io-error", 0, 0, 0, message)
 
 
-def _cannot_open_kind(kind: Type[OSError]) -> Type[Error]:
+def _cannot_open_kind(kind: Type[OSError]) -> Type[_CannotOpen]:
     return type(kind.__name__, (_CannotOpen, kind), {"__module__": "box2scene", "__qualname__": kind.__name__})
 
 
-_OS_KINDS: Dict[Type[OSError], Type[Error]] = {
+_OS_KINDS: Dict[Type[OSError], Type[_CannotOpen]] = {
     kind: _cannot_open_kind(kind)
     for kind in (
         OSError,

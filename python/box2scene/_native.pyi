@@ -28,7 +28,7 @@ class NativeScene:
         start: Optional[List[Tuple[float, float, float]]],
         end: Optional[List[Tuple[float, float, float]]],
         joints_created: Optional[List[bool]],
-        trajectories: List[Sequence[float]],
+        trajectories: Sequence[Sequence[float]],
     ) -> str: ...
 
 class NativeBuilder:

@@ -7,6 +7,7 @@ import os
 from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 from . import _native
+from ._native import NativeScene as _NativeScene
 from ._error import Error
 from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
 
@@ -38,10 +39,12 @@ class Scene:
 
     __slots__ = ("_native", "_made", "version", "gravity")
 
+    _native: _NativeScene
+    _made: Dict[str, Any]
     version: int
     gravity: Optional[Vec2]
 
-    def __init__(self, native: "_native.NativeScene"):
+    def __init__(self, native: _NativeScene):
         set_ = object.__setattr__
         set_(self, "_native", native)
         set_(self, "_made", {})
@@ -252,7 +255,7 @@ def loads(
     return Scene(_native.load_bytes(data, options))
 
 
-def _fields(record: Any) -> dict:
+def _fields(record: Any) -> Dict[str, Any]:
     return {f.name: getattr(record, f.name) for f in dataclasses.fields(record)}
 
 
