@@ -659,6 +659,11 @@ fn load_bytes(py: Python<'_>, data: &[u8], options: &Bound<'_, PyDict>) -> PyRes
 fn load_path(py: Python<'_>, path: PathBuf, options: &Bound<'_, PyDict>) -> PyResult<NativeScene> {
     let options = load_options(options)?;
     let file = std::fs::File::open(&path).map_err(|e| cannot_open(py, &path, &e))?;
+    // A directory opens, and only reading it fails: an empty read of it gets the system's
+    // reason (EISDIR), as a load's first read would.
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        std::io::Read::read(&mut &file, &mut []).map_err(|e| cannot_open(py, &path, &e))?;
+    }
     let loaded = py.detach(|| box2scene::load_file(file, &path, &options));
     loaded.map(|scene| NativeScene { scene }).map_err(|e| error(py, e))
 }

@@ -160,6 +160,9 @@ def test_a_file_that_cannot_be_opened_raises_the_oserror_of_its_kind(tmp_path):
         box2scene.load(str(tmp_path / "file" / "scene.xml"))
     assert isinstance(raised.value, Error) and raised.value.errno == errno.ENOTDIR
     assert str(tmp_path / "file" / "scene.xml") in str(raised.value)
+    with pytest.raises(IsADirectoryError) as raised:
+        box2scene.load(tmp_path)
+    assert isinstance(raised.value, Error) and (raised.value.errno, raised.value.filename) == (errno.EISDIR, str(tmp_path))
 
 
 def test_an_unreadable_file_raises_permission_error(tmp_path, showcase):
