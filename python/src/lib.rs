@@ -377,7 +377,8 @@ fn write_options(all_fields: bool) -> WriteOptions {
 /// in place.
 type Column<'py> = (&'static str, &'static str, usize, Bound<'py, PyBytes>);
 
-/// A value of a column, as NumPy holds it (little-endian, as the wheels' machines are).
+/// A value of a column, as NumPy holds it: little-endian bytes, which its type code names,
+/// so that the array reads the same on any machine.
 trait ColumnValue {
     const DTYPE: &'static str;
     const WIDTH: usize;
