@@ -16,7 +16,8 @@ use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
 use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
 use crate::rules;
-use crate::scene::{Body, Fixture, Joint, JointKind, NONE, PoolStr, Range, Scene, SceneBuilder};
+use crate::scene::SceneBuilder;
+use crate::scene::{Body, Fixture, Joint, JointKind, NONE, Object, PoolStr, Range, Scene};
 use crate::scene::{Shape, ShapeKind, Str, UserDataText, Vec2};
 use crate::text::trim_xml;
 
@@ -44,10 +45,36 @@ fn reference(index: u32, count: usize, names: &str, what: &str) -> Parsed<()> {
     }
 }
 
+/// An index `index` of a container of `count` objects that exists, or the error for
+/// object `index` of `what`.
+fn existing(index: u32, count: usize, what: &str) -> Result<usize, Error> {
+    match (index as usize) < count {
+        true => Ok(index as usize),
+        false => {
+            let why = format!("there is no {what} {index}: the scene has {count}");
+            Err(refused(what, index as usize, &Finding::new(Code::IdOutOfRange, 0, why)))
+        }
+    }
+}
+
+/// The error for taking out object `index` of `what` while `by` refers to it.
+fn still_referred(what: &str, index: usize, by: String) -> Error {
+    let why = format!("{by} refers to it; replace or take that out first");
+    refused(what, index, &Finding::new(Code::InvalidArgument, 0, why))
+}
+
 impl Builder {
     /// An empty builder.
     pub fn new() -> Builder {
         Builder::default()
+    }
+
+    /// A builder holding everything `scene` holds (but its diagnostics), the text its file
+    /// held beyond the records too: comments, unknown elements and attributes, Farseer-only
+    /// joints. Records added, replaced or taken out change only themselves, so the scene
+    /// it finishes writes every such text of the records left unchanged, as `fmt` does.
+    pub fn from_scene(scene: &Scene) -> Builder {
+        Builder { scene: SceneBuilder::thaw(scene) }
     }
 
     /// The gravity, or none (the host decides).
@@ -125,19 +152,62 @@ impl Builder {
         name: Option<&str>,
         vertices: &[Vec2],
     ) -> Result<u32, Error> {
-        let index = self.scene.shapes.len();
+        self.put_shape(self.scene.shapes.len(), shape, name, vertices)
+    }
+
+    /// Replaces shape `index`, checked as [`Builder::add_shape`] checks a new one.
+    pub fn replace_shape(
+        &mut self,
+        index: u32,
+        shape: &Shape,
+        name: Option<&str>,
+        vertices: &[Vec2],
+    ) -> Result<(), Error> {
+        let index = existing(index, self.scene.shapes.len(), "shape")?;
+        self.put_shape(index, shape, name, vertices).map(drop)
+    }
+
+    /// Takes out shape `index`, which no fixture may use; the shapes after it move down.
+    pub fn remove_shape(&mut self, index: u32) -> Result<(), Error> {
+        let at = existing(index, self.scene.shapes.len(), "shape")?;
+        if let Some(f) = self.scene.fixtures.iter().position(|f| f.shape == index) {
+            return Err(still_referred("shape", at, format!("fixture {f}")));
+        }
+        self.scene.shapes.remove(at);
+        for f in &mut self.scene.fixtures {
+            f.shape -= u32::from(f.shape > index && f.shape != NONE);
+        }
+        self.scene.taken_out(Object::Shape(index));
+        Ok(())
+    }
+
+    /// Adds (`index` is the count) or replaces shape `index`.
+    fn put_shape(
+        &mut self,
+        index: usize,
+        shape: &Shape,
+        name: Option<&str>,
+        vertices: &[Vec2],
+    ) -> Result<u32, Error> {
         let canonical = Self::check_name(name)
-            .and_then(|()| self.check_shape(shape, vertices))
+            .and_then(|()| self.check_shape(index, shape, vertices))
             .map_err(|e| refused("shape", index, &e))?;
         let first = self.scene.vertices.len();
         self.scene.vertices.extend_from_slice(vertices);
         let vertices = Range::between(first, self.scene.vertices.len());
         let name = self.name(name);
-        self.scene.push_shape(Shape { name: Str::NULL, vertices, ..canonical }, name);
+        let shape = Shape { name: Str::NULL, vertices, ..canonical };
+        match self.scene.shapes.get_mut(index) {
+            Some(old) => {
+                *old = shape;
+                self.scene.replaced(Object::Shape(index as u32), name);
+            }
+            None => self.scene.push_shape(shape, name),
+        }
         Ok(index as u32)
     }
 
-    fn check_shape(&mut self, shape: &Shape, vertices: &[Vec2]) -> Parsed<Shape> {
+    fn check_shape(&mut self, index: usize, shape: &Shape, vertices: &[Vec2]) -> Parsed<Shape> {
         let kind = shape.kind().ok_or_else(|| -> Problem {
             problem(Code::InvalidArgument, 0, format!("unknown shape kind {}", shape.kind))
         })?;
@@ -199,7 +269,6 @@ impl Builder {
             }
         };
         if let Some(warning) = geometry {
-            let index = self.scene.shapes.len();
             self.warn("shape", index, warning.code, &warning.message);
         }
         Ok(canonical)
@@ -207,12 +276,56 @@ impl Builder {
 
     /// Adds a fixture on an already added shape and returns its index.
     pub fn add_fixture(&mut self, fixture: &Fixture, name: Option<&str>) -> Result<u32, Error> {
-        let index = self.scene.fixtures.len();
+        self.put_fixture(self.scene.fixtures.len(), fixture, name)
+    }
+
+    /// Replaces fixture `index`, checked as [`Builder::add_fixture`] checks a new one.
+    pub fn replace_fixture(
+        &mut self,
+        index: u32,
+        fixture: &Fixture,
+        name: Option<&str>,
+    ) -> Result<(), Error> {
+        let index = existing(index, self.scene.fixtures.len(), "fixture")?;
+        self.put_fixture(index, fixture, name).map(drop)
+    }
+
+    /// Takes out fixture `index`, which no body may hold; the fixtures after it move down.
+    pub fn remove_fixture(&mut self, index: u32) -> Result<(), Error> {
+        let at = existing(index, self.scene.fixtures.len(), "fixture")?;
+        let ids = &self.scene.fixture_ids;
+        if let Some(b) =
+            self.scene.bodies.iter().position(|b| ids[b.fixtures.indices()].contains(&index))
+        {
+            return Err(still_referred("fixture", at, format!("body {b}")));
+        }
+        self.scene.fixtures.remove(at);
+        for id in &mut self.scene.fixture_ids {
+            *id -= u32::from(*id > index);
+        }
+        self.scene.taken_out(Object::Fixture(index));
+        Ok(())
+    }
+
+    /// Adds (`index` is the count) or replaces fixture `index`.
+    fn put_fixture(
+        &mut self,
+        index: usize,
+        fixture: &Fixture,
+        name: Option<&str>,
+    ) -> Result<u32, Error> {
         Self::check_name(name)
             .and_then(|()| self.check_fixture(fixture))
             .map_err(|e| refused("fixture", index, &e))?;
         let name = self.name(name);
-        self.scene.push_fixture(Fixture { name: Str::NULL, ..*fixture }, name);
+        let fixture = Fixture { name: Str::NULL, ..*fixture };
+        match self.scene.fixtures.get_mut(index) {
+            Some(old) => {
+                *old = fixture;
+                self.scene.replaced(Object::Fixture(index as u32), name);
+            }
+            None => self.scene.push_fixture(fixture, name),
+        }
         Ok(index as u32)
     }
 
@@ -234,7 +347,46 @@ impl Builder {
         name: Option<&str>,
         fixtures: &[u32],
     ) -> Result<u32, Error> {
-        let index = self.scene.bodies.len();
+        self.put_body(self.scene.bodies.len(), body, name, fixtures)
+    }
+
+    /// Replaces body `index`, checked as [`Builder::add_body`] checks a new one.
+    pub fn replace_body(
+        &mut self,
+        index: u32,
+        body: &Body,
+        name: Option<&str>,
+        fixtures: &[u32],
+    ) -> Result<(), Error> {
+        let index = existing(index, self.scene.bodies.len(), "body")?;
+        self.put_body(index, body, name, fixtures).map(drop)
+    }
+
+    /// Takes out body `index`, which no joint may join; the bodies after it move down.
+    pub fn remove_body(&mut self, index: u32) -> Result<(), Error> {
+        let at = existing(index, self.scene.bodies.len(), "body")?;
+        if let Some(j) =
+            self.scene.joints.iter().position(|j| j.body_a == index || j.body_b == index)
+        {
+            return Err(still_referred("body", at, format!("joint {j}")));
+        }
+        self.scene.bodies.remove(at);
+        for j in &mut self.scene.joints {
+            j.body_a -= u32::from(j.body_a > index && j.body_a != NONE);
+            j.body_b -= u32::from(j.body_b > index && j.body_b != NONE);
+        }
+        self.scene.taken_out(Object::Body(index));
+        Ok(())
+    }
+
+    /// Adds (`index` is the count) or replaces body `index`.
+    fn put_body(
+        &mut self,
+        index: usize,
+        body: &Body,
+        name: Option<&str>,
+        fixtures: &[u32],
+    ) -> Result<u32, Error> {
         let canonical = Self::check_name(name)
             .and_then(|()| self.check_body(body, fixtures))
             .map_err(|e| refused("body", index, &e))?;
@@ -243,7 +395,13 @@ impl Builder {
         let fixtures = Range::between(first, self.scene.fixture_ids.len());
         let name = self.name(name);
         let canonical = Body { name: Str::NULL, fixtures, ..canonical };
-        self.scene.push_body(canonical, name);
+        match self.scene.bodies.get_mut(index) {
+            Some(old) => {
+                *old = canonical;
+                self.scene.replaced(Object::Body(index as u32), name);
+            }
+            None => self.scene.push_body(canonical, name),
+        }
         if let Some(message) =
             rules::zero_density(&canonical, &self.scene.fixture_ids, &self.scene.fixtures)
         {
@@ -297,12 +455,60 @@ impl Builder {
     /// Adds a joint between already added bodies (a gear: after its two joints) and
     /// returns its index. Farseer-only (unsupported) joints cannot be built.
     pub fn add_joint(&mut self, joint: &Joint, name: Option<&str>) -> Result<u32, Error> {
-        let index = self.scene.joints.len();
+        self.put_joint(self.scene.joints.len(), joint, name)
+    }
+
+    /// Replaces joint `index`, checked as [`Builder::add_joint`] checks a new one; a joint
+    /// a gear couples stays a revolute or prismatic joint.
+    pub fn replace_joint(
+        &mut self,
+        index: u32,
+        joint: &Joint,
+        name: Option<&str>,
+    ) -> Result<(), Error> {
+        let at = existing(index, self.scene.joints.len(), "joint")?;
+        let coupled = !matches!(joint.kind(), Some(JointKind::Revolute | JointKind::Prismatic));
+        if let Some(gear) = self.gear_of(index).filter(|_| coupled) {
+            return Err(still_referred("joint", at, format!("gear joint {gear}")));
+        }
+        self.put_joint(at, joint, name).map(drop)
+    }
+
+    /// Takes out joint `index`, which no gear may couple; the joints after it move down.
+    pub fn remove_joint(&mut self, index: u32) -> Result<(), Error> {
+        let at = existing(index, self.scene.joints.len(), "joint")?;
+        if let Some(gear) = self.gear_of(index) {
+            return Err(still_referred("joint", at, format!("gear joint {gear}")));
+        }
+        self.scene.joints.remove(at);
+        for j in &mut self.scene.joints {
+            j.joint_a -= u32::from(j.joint_a > index && j.joint_a != NONE);
+            j.joint_b -= u32::from(j.joint_b > index && j.joint_b != NONE);
+        }
+        self.scene.taken_out(Object::Joint(index));
+        Ok(())
+    }
+
+    /// The first gear joint that couples joint `index`.
+    fn gear_of(&self, index: u32) -> Option<usize> {
+        let gear = |j: &Joint| j.kind() == Some(JointKind::Gear);
+        self.scene.joints.iter().position(|j| gear(j) && (j.joint_a == index || j.joint_b == index))
+    }
+
+    /// Adds (`index` is the count) or replaces joint `index`.
+    fn put_joint(&mut self, index: usize, joint: &Joint, name: Option<&str>) -> Result<u32, Error> {
         let canonical = Self::check_name(name)
             .and_then(|()| self.check_joint(joint))
             .map_err(|e| refused("joint", index, &e))?;
         let name = self.name(name);
-        self.scene.push_joint(Joint { name: Str::NULL, ..canonical }, name);
+        let joint = Joint { name: Str::NULL, ..canonical };
+        match self.scene.joints.get_mut(index) {
+            Some(old) => {
+                *old = joint;
+                self.scene.replaced(Object::Joint(index as u32), name);
+            }
+            None => self.scene.push_joint(joint, name),
+        }
         Ok(index as u32)
     }
 
@@ -340,7 +546,8 @@ impl Builder {
     /// The finished, immutable scene, with the version the writer would give it.
     pub fn finish(self) -> Scene {
         let mut scene = self.scene.freeze();
-        scene.version = if needs_version_2(&scene) { 2 } else { 1 };
+        // A loaded scene's version stays, unless what was added needs a later one.
+        scene.version = scene.version.max(if needs_version_2(&scene) { 2 } else { 1 });
         scene
     }
 }

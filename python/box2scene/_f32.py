@@ -1,42 +1,19 @@
 """Single-precision arithmetic as the engines' C code does it, for the builders' values that
 must match the C adapters bit for bit: NumPy's float32 operations round as C's float ones,
-and the C library's own ``cosf``/``sinf`` make a rotation from an angle as the C adapters do
-(NumPy's vectorised float32 cosine may differ from them in the last bit)."""
+and the C library's own ``cosf``/``sinf`` (called by the extension) make a rotation from an
+angle as the C adapters do (NumPy's vectorised float32 cosine may differ from them in the
+last bit)."""
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
 import math
-from typing import Tuple
+from typing import Callable, Tuple
 
 import numpy as np
 
+from ._native import atan2f, cosf, nextafterf, sinf
+
 F = np.float32
-
-_libm = ctypes.CDLL(ctypes.util.find_library("m") or "libm.so.6")
-for _name in ("cosf", "sinf", "atan2f", "nextafterf"):
-    getattr(_libm, _name).restype = ctypes.c_float
-_libm.cosf.argtypes = [ctypes.c_float]
-_libm.sinf.argtypes = [ctypes.c_float]
-_libm.atan2f.argtypes = [ctypes.c_float, ctypes.c_float]
-_libm.nextafterf.argtypes = [ctypes.c_float, ctypes.c_float]
-
-
-def cosf(x: float) -> float:
-    return float(_libm.cosf(x))
-
-
-def sinf(x: float) -> float:
-    return float(_libm.sinf(x))
-
-
-def atan2f(y: float, x: float) -> float:
-    return float(_libm.atan2f(y, x))
-
-
-def nextafterf(x: float, toward: float) -> float:
-    return float(_libm.nextafterf(x, toward))
 
 
 def f32(x: float) -> float:
@@ -56,7 +33,7 @@ def ulps_away(x: float, steps: int) -> float:
     return x
 
 
-def search_ulps(guess: float, gives) -> Tuple[bool, float]:
+def search_ulps(guess: float, gives: Callable[[float], bool]) -> Tuple[bool, float]:
     """The float nearest ``guess`` (within 16 ulps) for which ``gives`` holds: an inverse
     computed in floats is a few ulps off the value whose forward computation gives the
     bits wanted. (False, guess) when none does."""

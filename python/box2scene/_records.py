@@ -12,14 +12,17 @@ keywords of ``new``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Optional, Tuple
+from typing import Any, Dict, Optional, Tuple, Type, TypeVar
 
 from . import _native
 
 Vec2 = Tuple[float, float]
 
 
-def _new(cls: Any, record: str, kind: Optional[str], changes: dict) -> Any:
+R = TypeVar("R")
+
+
+def _new(cls: Type[R], record: str, kind: Optional[str], changes: Dict[str, Any]) -> R:
     return cls(**{**_native.defaults(record, kind), **changes})
 
 

@@ -4,12 +4,26 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 from . import _native
+from ._native import NativeScene as _NativeScene
+from ._error import Error
 from ._records import Body, Diagnostic, Fixture, Joint, Shape, UserData, Vec2
 
 Source = Union[str, "os.PathLike[str]", bytes, bytearray, memoryview]
+
+
+_RECORDS: Dict[str, Any] = {
+    "shapes": Shape,
+    "fixtures": Fixture,
+    "bodies": Body,
+    "joints": Joint,
+    "user_data": UserData,
+    "diagnostics": Diagnostic,
+}
+
+_ARRAYS = ("shapes", "fixtures", "bodies", "joints", "vertices", "fixture_ids")
 
 
 class Scene:
@@ -18,47 +32,96 @@ class Scene:
     ``shapes``, ``fixtures``, ``bodies``, ``joints``, ``user_data`` and ``diagnostics``
     hold the C view's records (see :mod:`box2scene._records`); ``vertices`` and
     ``fixture_ids`` are its pools, which ``Shape.vertices`` and ``Body.fixtures`` already
-    resolve. ``gravity`` is None when the file gave none (the host decides).
+    resolve. ``gravity`` is None when the file gave none (the host decides). Each tuple is
+    made when first read, so that a load costs what the library's load costs; :meth:`arrays`
+    gives the same values as NumPy columns. Two scenes are equal when their records are.
     """
 
-    __slots__ = (
-        "_native",
-        "version",
-        "gravity",
-        "shapes",
-        "fixtures",
-        "bodies",
-        "joints",
-        "vertices",
-        "fixture_ids",
-        "user_data",
-        "diagnostics",
-    )
+    __slots__ = ("_native", "_made", "version", "gravity")
 
+    _native: _NativeScene
+    _made: Dict[str, Any]
     version: int
     gravity: Optional[Vec2]
-    shapes: Tuple[Shape, ...]
-    fixtures: Tuple[Fixture, ...]
-    bodies: Tuple[Body, ...]
-    joints: Tuple[Joint, ...]
-    vertices: Tuple[Vec2, ...]
-    fixture_ids: Tuple[int, ...]
-    user_data: Tuple[UserData, ...]
-    diagnostics: Tuple[Diagnostic, ...]
 
-    def __init__(self, native: "_native.NativeScene"):
+    def __init__(self, native: _NativeScene):
         set_ = object.__setattr__
         set_(self, "_native", native)
+        set_(self, "_made", {})
         set_(self, "version", native.version())
         set_(self, "gravity", native.gravity())
-        set_(self, "shapes", tuple(Shape(**d) for d in native.shapes()))
-        set_(self, "fixtures", tuple(Fixture(**d) for d in native.fixtures()))
-        set_(self, "bodies", tuple(Body(**d) for d in native.bodies()))
-        set_(self, "joints", tuple(Joint(**d) for d in native.joints()))
-        set_(self, "vertices", native.vertices())
-        set_(self, "fixture_ids", tuple(native.fixture_ids()))
-        set_(self, "user_data", tuple(UserData(**d) for d in native.user_data()))
-        set_(self, "diagnostics", tuple(Diagnostic(**d) for d in native.diagnostics()))
+
+    def _records(self, name: str) -> Any:
+        made: Dict[str, Any] = self._made
+        if name not in made:
+            native = self._native
+            if name == "vertices":
+                made[name] = native.vertices()
+            elif name == "fixture_ids":
+                made[name] = tuple(native.fixture_ids())
+            else:
+                record = _RECORDS[name]
+                made[name] = tuple(record(**d) for d in getattr(native, name)())
+        return made[name]
+
+    @property
+    def shapes(self) -> Tuple[Shape, ...]:
+        return self._records("shapes")  # type: ignore[no-any-return]
+
+    @property
+    def fixtures(self) -> Tuple[Fixture, ...]:
+        return self._records("fixtures")  # type: ignore[no-any-return]
+
+    @property
+    def bodies(self) -> Tuple[Body, ...]:
+        return self._records("bodies")  # type: ignore[no-any-return]
+
+    @property
+    def joints(self) -> Tuple[Joint, ...]:
+        return self._records("joints")  # type: ignore[no-any-return]
+
+    @property
+    def vertices(self) -> Tuple[Vec2, ...]:
+        return self._records("vertices")  # type: ignore[no-any-return]
+
+    @property
+    def fixture_ids(self) -> Tuple[int, ...]:
+        return self._records("fixture_ids")  # type: ignore[no-any-return]
+
+    @property
+    def user_data(self) -> Tuple[UserData, ...]:
+        return self._records("user_data")  # type: ignore[no-any-return]
+
+    @property
+    def diagnostics(self) -> Tuple[Diagnostic, ...]:
+        return self._records("diagnostics")  # type: ignore[no-any-return]
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return bool(self._native.same_records(other._native))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def arrays(self) -> Dict[str, Dict[str, Any]]:
+        """The scene's records as NumPy columns (NumPy must be installed): ``"shapes"``,
+        ``"fixtures"``, ``"bodies"``, ``"joints"``, ``"vertices"`` and ``"fixture_ids"``, each a
+        dict of one read-only array per field (``position`` of shape (n, 2), ``angle`` of
+        shape (n,), kinds as text, absent indices as -1, each optional datum with its
+        ``..._given`` flag, a shape's vertices and a body's fixtures as ``..._first`` and
+        ``..._count`` into the pools ``arrays()["vertices"]["vertices"]`` and
+        ``arrays()["fixture_ids"]["fixture_ids"]``). The library writes each column once
+        into memory that the array then reads in place."""
+        import numpy as np
+
+        def array(dtype: str, width: int, data: bytes) -> Any:
+            values = np.frombuffer(data, dtype=dtype)
+            return values.reshape(-1, width) if width > 1 else values
+
+        return {
+            name: {column: array(dtype, width, data) for column, dtype, width, data in self._native.columns(name)}
+            for name in _ARRAYS
+        }
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError("a Scene is immutable")
@@ -122,6 +185,28 @@ class Scene:
         return next((i for i, j in enumerate(self.joints) if j.name == name), None)
 
 
+def _load_options(
+    strict: bool,
+    max_input_bytes: Optional[int],
+    max_elements: Optional[int],
+    max_text_bytes: Optional[int],
+    max_depth: Optional[int],
+    max_chain_vertices: Optional[int],
+    threads: int,
+) -> Dict[str, Any]:
+    given = {
+        "max_input_bytes": max_input_bytes,
+        "max_elements": max_elements,
+        "max_text_bytes": max_text_bytes,
+        "max_depth": max_depth,
+        "max_chain_vertices": max_chain_vertices,
+    }
+    options: Dict[str, Any] = {k: v for k, v in given.items() if v is not None}
+    options["strict"] = strict
+    options["threads"] = threads
+    return options
+
+
 def load(
     source: Source,
     *,
@@ -139,24 +224,37 @@ def load(
     error. The limits default to the library's (1 GiB of input, 10 million elements, 1 MiB
     for one text, depth 64, 100 000 chain vertices); a file past one raises
     ``limit-exceeded``. Raises :class:`Error` (with code, line and column) for a file
-    that is not a valid scene.
+    that is not a valid scene, and an :class:`Error` that is also the ``OSError`` of the
+    reason (``FileNotFoundError``, ``PermissionError``, ...) for a file that cannot be
+    opened. A ``str`` that starts with ``<`` is XML, not a path: :func:`loads` takes it.
     """
-    given = {
-        "max_input_bytes": max_input_bytes,
-        "max_elements": max_elements,
-        "max_text_bytes": max_text_bytes,
-        "max_depth": max_depth,
-        "max_chain_vertices": max_chain_vertices,
-    }
-    options = {k: v for k, v in given.items() if v is not None}
-    options["strict"] = strict
-    options["threads"] = threads
+    options = _load_options(strict, max_input_bytes, max_elements, max_text_bytes, max_depth, max_chain_vertices, threads)
     if isinstance(source, (bytes, bytearray, memoryview)):
         return Scene(_native.load_bytes(bytes(source), options))
+    if isinstance(source, str) and source.lstrip().startswith("<"):
+        raise Error("invalid-argument", 0, 0, 0, "load takes a path or bytes; this str is XML text, which box2scene.loads takes")
     return Scene(_native.load_path(os.fspath(source), options))
 
 
-def _fields(record: Any) -> dict:
+def loads(
+    text: Union[str, bytes, bytearray, memoryview],
+    *,
+    strict: bool = False,
+    max_input_bytes: Optional[int] = None,
+    max_elements: Optional[int] = None,
+    max_text_bytes: Optional[int] = None,
+    max_depth: Optional[int] = None,
+    max_chain_vertices: Optional[int] = None,
+    threads: int = 0,
+) -> Scene:
+    """Loads a scene from its XML text (a ``str``, or the bytes of a file), with
+    :func:`load`'s options, warnings and errors."""
+    options = _load_options(strict, max_input_bytes, max_elements, max_text_bytes, max_depth, max_chain_vertices, threads)
+    data = text.encode("utf-8") if isinstance(text, str) else bytes(text)
+    return Scene(_native.load_bytes(data, options))
+
+
+def _fields(record: Any) -> Dict[str, Any]:
     return {f.name: getattr(record, f.name) for f in dataclasses.fields(record)}
 
 
@@ -169,8 +267,21 @@ class Builder:
     def __init__(self) -> None:
         self._native = _native.NativeBuilder()
 
-    def set_gravity(self, gravity: Optional[Vec2]) -> None:
-        """The world's gravity, or None (the host decides)."""
+    @classmethod
+    def from_scene(cls, scene: Scene) -> "Builder":
+        """A builder holding everything ``scene`` holds but its diagnostics, the text its
+        file held beyond the records too: comments, unknown elements and attributes,
+        Farseer-only joints. What is added, replaced or removed changes only itself, so
+        the finished scene writes every such text of the records left as they were, as
+        ``box2scene fmt`` writes them. A replaced record keeps the comments around it but
+        not the unknown content inside it."""
+        builder = cls.__new__(cls)
+        builder._native = _native.NativeBuilder.from_scene(scene._native)
+        return builder
+
+    def set_gravity(self, gravity: Optional[Sequence[float]]) -> None:
+        """The world's gravity (any sequence of two numbers: a tuple, a list, a NumPy
+        array), or None (the host decides)."""
         self._native.set_gravity(gravity)
 
     def add_user_data(
@@ -199,6 +310,40 @@ class Builder:
         """Adds a joint between added bodies (a gear after its two joints); returns its
         index."""
         return self._native.add_joint(_fields(joint))
+
+    def replace_shape(self, index: int, shape: Shape) -> None:
+        """Replaces shape ``index``, checked as :meth:`add_shape` checks a new one."""
+        self._native.replace_shape(index, _fields(shape))
+
+    def replace_fixture(self, index: int, fixture: Fixture) -> None:
+        """Replaces fixture ``index``, checked as :meth:`add_fixture` checks a new one."""
+        self._native.replace_fixture(index, _fields(fixture))
+
+    def replace_body(self, index: int, body: Body) -> None:
+        """Replaces body ``index``, checked as :meth:`add_body` checks a new one."""
+        self._native.replace_body(index, _fields(body))
+
+    def replace_joint(self, index: int, joint: Joint) -> None:
+        """Replaces joint ``index``, checked as :meth:`add_joint` checks a new one; a joint
+        a gear couples stays revolute or prismatic."""
+        self._native.replace_joint(index, _fields(joint))
+
+    def remove_shape(self, index: int) -> None:
+        """Removes shape ``index``, which no fixture may use; later shapes move down one,
+        and the fixtures' indices with them."""
+        self._native.remove_shape(index)
+
+    def remove_fixture(self, index: int) -> None:
+        """Removes fixture ``index``, which no body may hold; later fixtures move down."""
+        self._native.remove_fixture(index)
+
+    def remove_body(self, index: int) -> None:
+        """Removes body ``index``, which no joint may join; later bodies move down."""
+        self._native.remove_body(index)
+
+    def remove_joint(self, index: int) -> None:
+        """Removes joint ``index``, which no gear may couple; later joints move down."""
+        self._native.remove_joint(index)
 
     def finish(self) -> Scene:
         """The finished scene; the builder cannot be used afterwards."""

@@ -12,7 +12,7 @@ use box2scene::{
 };
 use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
     ("circle", ShapeKind::Circle),
@@ -108,8 +108,16 @@ impl Field for Vec2 {
         Ok((self.x, self.y).into_pyobject(py)?.into_any())
     }
     fn from_py(value: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let (x, y): (f32, f32) = value.extract()?;
-        Ok(Vec2::new(x, y))
+        vec2_from_py(value)
+    }
+}
+
+/// A vector from any sequence of two numbers: a tuple, a list, a NumPy array.
+fn vec2_from_py(value: &Bound<'_, PyAny>) -> PyResult<Vec2> {
+    let numbers: Vec<f32> = value.extract()?;
+    match numbers[..] {
+        [x, y] => Ok(Vec2::new(x, y)),
+        _ => Err(PyValueError::new_err(format!("a vector is two numbers, not {}", numbers.len()))),
     }
 }
 
@@ -161,7 +169,7 @@ fn bits<T: TryFrom<i64>>(value: &Bound<'_, PyAny>, field: &str) -> PyResult<T> {
 
 /// The fields each record shares with its dict under the same name, both ways.
 macro_rules! plain_fields {
-    ($to:ident, $from:ident, $record:ty { $($field:ident),* $(,)? }) => {
+    ($to:ident, $from:ident, $columns:ident, $record:ty { $($field:ident),* $(,)? }) => {
         fn $to(py: Python<'_>, r: &$record, d: &Bound<'_, PyDict>) -> PyResult<()> {
             $(d.set_item(stringify!($field), Field::to_py(&r.$field, py)?)?;)*
             Ok(())
@@ -175,14 +183,30 @@ macro_rules! plain_fields {
             }
             Ok(true)
         }
+
+        /// The fields' columns of `items`, for `Scene.arrays()`.
+        fn $columns<'py>(
+            py: Python<'py>,
+            items: &[$record],
+            columns: &mut Vec<Column<'py>>,
+        ) -> PyResult<()> {
+            $(columns.push(column(py, stringify!($field), items, |r| r.$field)?);)*
+            Ok(())
+        }
     };
 }
 
-plain_fields!(shape_to, shape_from, Shape { radius, position, is_loop });
-plain_fields!(fixture_to, fixture_from, Fixture { density, friction, restitution, is_sensor });
+plain_fields!(shape_to, shape_from, shape_columns, Shape { radius, position, is_loop });
+plain_fields!(
+    fixture_to,
+    fixture_from,
+    fixture_columns,
+    Fixture { density, friction, restitution, is_sensor }
+);
 plain_fields!(
     body_to,
     body_from,
+    body_columns,
     Body {
         position,
         angle,
@@ -202,6 +226,7 @@ plain_fields!(
 plain_fields!(
     joint_to,
     joint_from,
+    joint_columns,
     Joint {
         local_anchor_a,
         local_anchor_b,
@@ -347,6 +372,183 @@ fn write_options(all_fields: bool) -> WriteOptions {
     WriteOptions { all_fields, ..WriteOptions::default() }
 }
 
+/// One column of `Scene.arrays()`: its name, NumPy's type of its items, how many items each
+/// record has (2 for a vector), and the items, written once into bytes that NumPy reads
+/// in place.
+type Column<'py> = (&'static str, &'static str, usize, Bound<'py, PyBytes>);
+
+/// A value of a column, as NumPy holds it: little-endian bytes, which its type code names,
+/// so that the array reads the same on any machine.
+trait ColumnValue {
+    const DTYPE: &'static str;
+    const WIDTH: usize;
+    const SIZE: usize;
+    fn put(&self, out: &mut [u8]);
+}
+
+impl ColumnValue for f32 {
+    const DTYPE: &'static str = "<f4";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 4;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl ColumnValue for Vec2 {
+    const DTYPE: &'static str = "<f4";
+    const WIDTH: usize = 2;
+    const SIZE: usize = 8;
+    fn put(&self, out: &mut [u8]) {
+        self.x.put(&mut out[..4]);
+        self.y.put(&mut out[4..]);
+    }
+}
+
+impl ColumnValue for bool {
+    const DTYPE: &'static str = "|b1";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 1;
+    fn put(&self, out: &mut [u8]) {
+        out[0] = u8::from(*self);
+    }
+}
+
+impl ColumnValue for u32 {
+    const DTYPE: &'static str = "<u4";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 4;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+impl ColumnValue for i16 {
+    const DTYPE: &'static str = "<i2";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 2;
+    fn put(&self, out: &mut [u8]) {
+        out.copy_from_slice(&self.to_le_bytes());
+    }
+}
+
+/// An index into a sibling array, -1 where absent (`NONE`).
+struct Index(u32);
+
+impl ColumnValue for Index {
+    const DTYPE: &'static str = "<i8";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 8;
+    fn put(&self, out: &mut [u8]) {
+        let index = if self.0 == NONE { -1 } else { i64::from(self.0) };
+        out.copy_from_slice(&index.to_le_bytes());
+    }
+}
+
+/// A kind's Python name, as NumPy's fixed-width text (UTF-32, 11 characters: "unsupported").
+struct KindName(String);
+
+impl ColumnValue for KindName {
+    const DTYPE: &'static str = "<U11";
+    const WIDTH: usize = 1;
+    const SIZE: usize = 44;
+    fn put(&self, out: &mut [u8]) {
+        for (c, slot) in self.0.chars().zip(out.chunks_exact_mut(4)) {
+            slot.copy_from_slice(&u32::from(c).to_le_bytes());
+        }
+    }
+}
+
+fn column<'py, R, V: ColumnValue>(
+    py: Python<'py>,
+    name: &'static str,
+    items: &[R],
+    value: impl Fn(&R) -> V,
+) -> PyResult<Column<'py>> {
+    let bytes = PyBytes::new_with(py, items.len() * V::SIZE, |out| {
+        for (slot, item) in out.chunks_exact_mut(V::SIZE).zip(items) {
+            value(item).put(slot);
+        }
+        Ok(())
+    })?;
+    Ok((name, V::DTYPE, V::WIDTH, bytes))
+}
+
+fn shape_table<'py>(py: Python<'py>, shapes: &[Shape]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |s: &Shape| KindName(kind_name(&SHAPE_KINDS, s.kind, |k| k as u32));
+    let mut columns = vec![column(py, "kind", shapes, kind)?];
+    shape_columns(py, shapes, &mut columns)?;
+    columns.extend([
+        column(py, "vertices_first", shapes, |s| s.vertices.first)?,
+        column(py, "vertices_count", shapes, |s| s.vertices.count)?,
+        column(py, "centroid", shapes, |s| s.centroid)?,
+        column(py, "centroid_given", shapes, |s| s.centroid_given)?,
+        column(py, "prev_vertex", shapes, |s| s.prev_vertex)?,
+        column(py, "has_prev_vertex", shapes, |s| s.has_prev_vertex)?,
+        column(py, "next_vertex", shapes, |s| s.next_vertex)?,
+        column(py, "has_next_vertex", shapes, |s| s.has_next_vertex)?,
+    ]);
+    Ok(columns)
+}
+
+fn fixture_table<'py>(py: Python<'py>, fixtures: &[Fixture]) -> PyResult<Vec<Column<'py>>> {
+    let mut columns = vec![column(py, "shape", fixtures, |f| Index(f.shape))?];
+    fixture_columns(py, fixtures, &mut columns)?;
+    columns.extend([
+        column(py, "category_bits", fixtures, |f| f.filter.category_bits)?,
+        column(py, "mask_bits", fixtures, |f| f.filter.mask_bits)?,
+        column(py, "group_index", fixtures, |f| f.filter.group_index)?,
+        column(py, "user_data", fixtures, |f| Index(f.user_data))?,
+    ]);
+    Ok(columns)
+}
+
+fn body_table<'py>(py: Python<'py>, bodies: &[Body]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |b: &Body| KindName(kind_name(&BODY_KINDS, b.kind, |k| k as u32));
+    let mut columns = vec![column(py, "kind", bodies, kind)?];
+    body_columns(py, bodies, &mut columns)?;
+    columns.extend([
+        column(py, "mass", bodies, |b| b.mass_data.mass)?,
+        column(py, "mass_given", bodies, |b| b.mass_data.mass_given)?,
+        column(py, "center", bodies, |b| b.mass_data.center)?,
+        column(py, "center_given", bodies, |b| b.mass_data.center_given)?,
+        column(py, "inertia", bodies, |b| b.mass_data.inertia)?,
+        column(py, "inertia_given", bodies, |b| b.mass_data.inertia_given)?,
+        column(py, "fixtures_first", bodies, |b| b.fixtures.first)?,
+        column(py, "fixtures_count", bodies, |b| b.fixtures.count)?,
+        column(py, "user_data", bodies, |b| Index(b.user_data))?,
+    ]);
+    Ok(columns)
+}
+
+fn joint_table<'py>(py: Python<'py>, joints: &[Joint]) -> PyResult<Vec<Column<'py>>> {
+    let kind = |j: &Joint| KindName(kind_name(&JOINT_KINDS, j.kind, |k| k as u32));
+    let mut columns = vec![
+        column(py, "kind", joints, kind)?,
+        column(py, "body_a", joints, |j| Index(j.body_a))?,
+        column(py, "body_b", joints, |j| Index(j.body_b))?,
+        column(py, "joint_a", joints, |j| Index(j.joint_a))?,
+        column(py, "joint_b", joints, |j| Index(j.joint_b))?,
+        column(py, "user_data", joints, |j| Index(j.user_data))?,
+    ];
+    joint_columns(py, joints, &mut columns)?;
+    Ok(columns)
+}
+
+/// The columns of one array of a scene (`"shapes"`, `"fixtures"`, `"bodies"`, `"joints"`,
+/// or the pools `"vertices"` and `"fixture_ids"`, of one column named as the pool).
+fn table<'py>(py: Python<'py>, scene: &Scene, array: &str) -> PyResult<Vec<Column<'py>>> {
+    match array {
+        "shapes" => shape_table(py, scene.shapes()),
+        "fixtures" => fixture_table(py, scene.fixtures()),
+        "bodies" => body_table(py, scene.bodies()),
+        "joints" => joint_table(py, scene.joints()),
+        "vertices" => Ok(vec![column(py, "vertices", scene.vertex_pool(), |v| *v)?]),
+        "fixture_ids" => Ok(vec![column(py, "fixture_ids", scene.fixture_id_pool(), |i| *i)?]),
+        _ => Err(PyValueError::new_err(format!("a scene has no array {array:?}"))),
+    }
+}
+
 #[pymethods]
 impl NativeScene {
     fn version(&self) -> u32 {
@@ -389,6 +591,14 @@ impl NativeScene {
     fn to_json(&self) -> String {
         self.scene.to_json()
     }
+    fn columns<'py>(&self, py: Python<'py>, array: &str) -> PyResult<Vec<Column<'py>>> {
+        table(py, &self.scene, array)
+    }
+    /// Whether both scenes hold the same values: every field of every record, as the
+    /// library's JSON dump gives them.
+    fn same_records(&self, py: Python<'_>, other: &NativeScene) -> bool {
+        std::ptr::eq(self, other) || py.detach(|| self.scene.to_json() == other.scene.to_json())
+    }
     /// The library's picture (`box2scene::draw`): poses as (x, y, angle), one per body;
     /// samples of one point per body each. The library takes the samples end to end, where
     /// only their total shows: each sample's length is checked here, where they are apart,
@@ -402,7 +612,7 @@ impl NativeScene {
         start: Option<Vec<(f32, f32, f32)>>,
         end: Option<Vec<(f32, f32, f32)>>,
         joints_created: Option<Vec<bool>>,
-        trajectories: Vec<Vec<(f32, f32)>>,
+        trajectories: Vec<Vec<Bound<'_, PyAny>>>,
     ) -> PyResult<String> {
         let poses = |poses: Option<Vec<(f32, f32, f32)>>| {
             let pose = |(x, y, angle)| Pose { position: Vec2 { x, y }, angle };
@@ -423,8 +633,11 @@ impl NativeScene {
             };
             return Err(error(py, invalid));
         }
-        let trajectories: Vec<Vec2> =
-            trajectories.into_iter().flatten().map(|(x, y)| Vec2 { x, y }).collect();
+        let trajectories = trajectories
+            .iter()
+            .flatten()
+            .map(vec2_from_py)
+            .collect::<PyResult<Vec<Vec2>>>()?;
         let picture = Picture {
             title,
             start: start.as_deref(),
@@ -466,8 +679,29 @@ fn load_bytes(py: Python<'_>, data: &[u8], options: &Bound<'_, PyDict>) -> PyRes
 #[pyfunction]
 fn load_path(py: Python<'_>, path: PathBuf, options: &Bound<'_, PyDict>) -> PyResult<NativeScene> {
     let options = load_options(options)?;
-    let loaded = py.detach(|| box2scene::load_path(&path, &options));
+    let file = std::fs::File::open(&path).map_err(|e| cannot_open(py, &path, &e))?;
+    // A directory opens, and only reading it fails: an empty read of it gets the system's
+    // reason (EISDIR), as a load's first read would.
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        std::io::Read::read(&mut &file, &mut []).map_err(|e| cannot_open(py, &path, &e))?;
+    }
+    let loaded = py.detach(|| box2scene::load_file(file, &path, &options));
     loaded.map(|scene| NativeScene { scene }).map_err(|e| error(py, e))
+}
+
+/// The package's error for a file that cannot be opened: a `box2scene.Error` that is also
+/// the `OSError` Python raises for the system's reason, with the library's message.
+fn cannot_open(py: Python<'_>, path: &std::path::Path, e: &std::io::Error) -> PyErr {
+    let message = box2scene::Error::cannot_read(path, e).message;
+    let errno = e.raw_os_error().unwrap_or_default();
+    let raised = py
+        .import("box2scene._error")
+        .and_then(|m| m.getattr("cannot_open"))
+        .and_then(|cannot_open| cannot_open.call1((errno, path.as_os_str(), message)));
+    match raised {
+        Ok(value) => PyErr::from_value(value),
+        Err(e) => e,
+    }
 }
 
 /// The defaults of a record of `record` ("shape", "fixture", "body", "joint") and `kind`, as
@@ -517,6 +751,89 @@ fn kind_field(record: &Bound<'_, PyDict>) -> PyResult<String> {
     }
 }
 
+/// A shape record's dict as the library's shape, name and vertices.
+fn shape_record(record: &Bound<'_, PyDict>) -> PyResult<(Shape, Option<String>, Vec<Vec2>)> {
+    let mut shape = Shape::new(kind_of(&SHAPE_KINDS, &kind_field(record)?, "shape")?);
+    let (mut name, mut vertices) = (None::<String>, Vec::new());
+    fields_into(record, &mut shape, "shape", shape_from, |s, key, value| {
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "vertices" => {
+                for v in value.try_iter()? {
+                    vertices.push(Vec2::from_py(&v?)?);
+                }
+            }
+            "centroid" => (s.centroid_given, s.centroid) = optional_from_py(value)?,
+            "prev_vertex" => (s.has_prev_vertex, s.prev_vertex) = optional_from_py(value)?,
+            "next_vertex" => (s.has_next_vertex, s.next_vertex) = optional_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((shape, name, vertices))
+}
+
+/// A fixture record's dict as the library's fixture and name.
+fn fixture_record(record: &Bound<'_, PyDict>) -> PyResult<(Fixture, Option<String>)> {
+    let mut fixture = Fixture::default();
+    let mut name = None::<String>;
+    fields_into(record, &mut fixture, "fixture", fixture_from, |f, key, value| {
+        match key {
+            "name" => name = value.extract()?,
+            "shape" => f.shape = index_from_py(value)?,
+            "user_data" => f.user_data = index_from_py(value)?,
+            "category_bits" => f.filter.category_bits = bits(value, "category_bits")?,
+            "mask_bits" => f.filter.mask_bits = bits(value, "mask_bits")?,
+            "group_index" => f.filter.group_index = bits(value, "group_index")?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((fixture, name))
+}
+
+/// A body record's dict as the library's body, name and fixtures.
+fn body_record(record: &Bound<'_, PyDict>) -> PyResult<(Body, Option<String>, Vec<u32>)> {
+    let mut body = Body::new(kind_of(&BODY_KINDS, &kind_field(record)?, "body")?);
+    let (mut name, mut fixtures) = (None::<String>, Vec::new());
+    fields_into(record, &mut body, "body", body_from, |b, key, value| {
+        let m = &mut b.mass_data;
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "fixtures" => fixtures = value.extract()?,
+            "user_data" => b.user_data = index_from_py(value)?,
+            "mass" => (m.mass_given, m.mass) = optional_from_py(value)?,
+            "center" => (m.center_given, m.center) = optional_from_py(value)?,
+            "inertia" => (m.inertia_given, m.inertia) = optional_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((body, name, fixtures))
+}
+
+/// A joint record's dict as the library's joint and name.
+fn joint_record(record: &Bound<'_, PyDict>) -> PyResult<(Joint, Option<String>)> {
+    let mut joint = Joint::new(kind_of(&JOINT_KINDS, &kind_field(record)?, "joint")?);
+    let mut name = None::<String>;
+    fields_into(record, &mut joint, "joint", joint_from, |j, key, value| {
+        match key {
+            "kind" => {}
+            "name" => name = value.extract()?,
+            "body_a" => j.body_a = index_from_py(value)?,
+            "body_b" => j.body_b = index_from_py(value)?,
+            "joint_a" => j.joint_a = index_from_py(value)?,
+            "joint_b" => j.joint_b = index_from_py(value)?,
+            "user_data" => j.user_data = index_from_py(value)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    })?;
+    Ok((joint, name))
+}
+
 /// A scene under construction, in the library's builder.
 #[pyclass(frozen, module = "box2scene._native")]
 struct NativeBuilder {
@@ -544,8 +861,9 @@ impl NativeBuilder {
         NativeBuilder { builder: Mutex::new(Some(Builder::new())) }
     }
 
-    fn set_gravity(&self, py: Python<'_>, gravity: Option<(f32, f32)>) -> PyResult<()> {
-        self.with(py, |b| b.set_gravity(gravity.map(|(x, y)| Vec2::new(x, y))))
+    fn set_gravity(&self, py: Python<'_>, gravity: Option<Bound<'_, PyAny>>) -> PyResult<()> {
+        let gravity = gravity.as_ref().map(vec2_from_py).transpose()?;
+        self.with(py, |b| b.set_gravity(gravity))
     }
 
     #[pyo3(signature = (raw=None, type_name=None, value=None))]
@@ -560,82 +878,81 @@ impl NativeBuilder {
     }
 
     fn add_shape(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut shape = Shape::new(kind_of(&SHAPE_KINDS, &kind_field(record)?, "shape")?);
-        let (mut name, mut vertices) = (None::<String>, Vec::new());
-        fields_into(record, &mut shape, "shape", shape_from, |s, key, value| {
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "vertices" => {
-                    for v in value.try_iter()? {
-                        vertices.push(Vec2::from_py(&v?)?);
-                    }
-                }
-                "centroid" => (s.centroid_given, s.centroid) = optional_from_py(value)?,
-                "prev_vertex" => (s.has_prev_vertex, s.prev_vertex) = optional_from_py(value)?,
-                "next_vertex" => (s.has_next_vertex, s.next_vertex) = optional_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (shape, name, vertices) = shape_record(record)?;
         self.with(py, |b| b.add_shape(&shape, name.as_deref(), &vertices))
     }
 
     fn add_fixture(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut fixture = Fixture::default();
-        let mut name = None::<String>;
-        fields_into(record, &mut fixture, "fixture", fixture_from, |f, key, value| {
-            match key {
-                "name" => name = value.extract()?,
-                "shape" => f.shape = index_from_py(value)?,
-                "user_data" => f.user_data = index_from_py(value)?,
-                "category_bits" => f.filter.category_bits = bits(value, "category_bits")?,
-                "mask_bits" => f.filter.mask_bits = bits(value, "mask_bits")?,
-                "group_index" => f.filter.group_index = bits(value, "group_index")?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (fixture, name) = fixture_record(record)?;
         self.with(py, |b| b.add_fixture(&fixture, name.as_deref()))
     }
 
     fn add_body(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut body = Body::new(kind_of(&BODY_KINDS, &kind_field(record)?, "body")?);
-        let (mut name, mut fixtures) = (None::<String>, Vec::new());
-        fields_into(record, &mut body, "body", body_from, |b, key, value| {
-            let m = &mut b.mass_data;
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "fixtures" => fixtures = value.extract()?,
-                "user_data" => b.user_data = index_from_py(value)?,
-                "mass" => (m.mass_given, m.mass) = optional_from_py(value)?,
-                "center" => (m.center_given, m.center) = optional_from_py(value)?,
-                "inertia" => (m.inertia_given, m.inertia) = optional_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (body, name, fixtures) = body_record(record)?;
         self.with(py, |b| b.add_body(&body, name.as_deref(), &fixtures))
     }
 
     fn add_joint(&self, py: Python<'_>, record: &Bound<'_, PyDict>) -> PyResult<u32> {
-        let mut joint = Joint::new(kind_of(&JOINT_KINDS, &kind_field(record)?, "joint")?);
-        let mut name = None::<String>;
-        fields_into(record, &mut joint, "joint", joint_from, |j, key, value| {
-            match key {
-                "kind" => {}
-                "name" => name = value.extract()?,
-                "body_a" => j.body_a = index_from_py(value)?,
-                "body_b" => j.body_b = index_from_py(value)?,
-                "joint_a" => j.joint_a = index_from_py(value)?,
-                "joint_b" => j.joint_b = index_from_py(value)?,
-                "user_data" => j.user_data = index_from_py(value)?,
-                _ => return Ok(false),
-            }
-            Ok(true)
-        })?;
+        let (joint, name) = joint_record(record)?;
         self.with(py, |b| b.add_joint(&joint, name.as_deref()))
+    }
+
+    /// A builder holding everything `scene` holds, the text its file held beyond the
+    /// records too (`Builder::from_scene`).
+    #[staticmethod]
+    fn from_scene(scene: &NativeScene) -> NativeBuilder {
+        NativeBuilder { builder: Mutex::new(Some(Builder::from_scene(&scene.scene))) }
+    }
+
+    fn replace_shape(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (shape, name, vertices) = shape_record(record)?;
+        self.with(py, |b| b.replace_shape(index, &shape, name.as_deref(), &vertices))
+    }
+
+    fn replace_fixture(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (fixture, name) = fixture_record(record)?;
+        self.with(py, |b| b.replace_fixture(index, &fixture, name.as_deref()))
+    }
+
+    fn replace_body(&self, py: Python<'_>, index: u32, record: &Bound<'_, PyDict>) -> PyResult<()> {
+        let (body, name, fixtures) = body_record(record)?;
+        self.with(py, |b| b.replace_body(index, &body, name.as_deref(), &fixtures))
+    }
+
+    fn replace_joint(
+        &self,
+        py: Python<'_>,
+        index: u32,
+        record: &Bound<'_, PyDict>,
+    ) -> PyResult<()> {
+        let (joint, name) = joint_record(record)?;
+        self.with(py, |b| b.replace_joint(index, &joint, name.as_deref()))
+    }
+
+    fn remove_shape(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_shape(index))
+    }
+
+    fn remove_fixture(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_fixture(index))
+    }
+
+    fn remove_body(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_body(index))
+    }
+
+    fn remove_joint(&self, py: Python<'_>, index: u32) -> PyResult<()> {
+        self.with(py, |b| b.remove_joint(index))
     }
 
     fn finish(&self) -> PyResult<NativeScene> {
@@ -654,6 +971,35 @@ fn filter_widths() -> (usize, usize) {
     (8 * size_of_val(&f.category_bits), 8 * size_of_val(&f.group_index))
 }
 
+/// Single-precision math as the engines' C code does it (the C library's `cosf`, `sinf` and
+/// `atan2f`, which Rust's `f32` methods call), for the builders' values that must match the
+/// C adapters bit for bit.
+#[pyfunction]
+fn cosf(x: f32) -> f32 {
+    x.cos()
+}
+
+#[pyfunction]
+fn sinf(x: f32) -> f32 {
+    x.sin()
+}
+
+#[pyfunction]
+fn atan2f(y: f32, x: f32) -> f32 {
+    y.atan2(x)
+}
+
+/// The float next to `x` in the direction of `toward` (C's `nextafterf`).
+#[pyfunction]
+fn nextafterf(x: f32, toward: f32) -> f32 {
+    match x.partial_cmp(&toward) {
+        Some(std::cmp::Ordering::Less) => x.next_up(),
+        Some(std::cmp::Ordering::Greater) => x.next_down(),
+        Some(std::cmp::Ordering::Equal) => toward,
+        None => f32::NAN,
+    }
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NativeScene>()?;
@@ -662,5 +1008,9 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_path, m)?)?;
     m.add_function(wrap_pyfunction!(defaults, m)?)?;
     m.add_function(wrap_pyfunction!(filter_widths, m)?)?;
+    m.add_function(wrap_pyfunction!(cosf, m)?)?;
+    m.add_function(wrap_pyfunction!(sinf, m)?)?;
+    m.add_function(wrap_pyfunction!(atan2f, m)?)?;
+    m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
     Ok(())
 }

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import dataclasses
+import errno
 import json
 import os
+import pickle
 import pydoc
 import re
 
@@ -144,6 +146,51 @@ def test_a_missing_file_is_an_io_error(tmp_path):
     assert raised.value.code == "io-error"
 
 
+def test_a_file_that_cannot_be_opened_raises_the_oserror_of_its_kind(tmp_path):
+    missing = tmp_path / "none.xml"
+    with pytest.raises(FileNotFoundError) as raised:
+        box2scene.load(missing)
+    e = raised.value
+    assert isinstance(e, Error) and isinstance(e, OSError)
+    assert (e.errno, e.strerror, e.filename) == (errno.ENOENT, os.strerror(errno.ENOENT), str(missing))
+    assert (e.code, e.line, e.column, e.byte_offset) == ("io-error", 0, 0, 0)
+    assert str(e) == f"error[io-error]: cannot read {missing}: No such file or directory (os error 2)"
+    (tmp_path / "file").write_bytes(b"")
+    with pytest.raises(NotADirectoryError) as raised:
+        box2scene.load(str(tmp_path / "file" / "scene.xml"))
+    assert isinstance(raised.value, Error) and raised.value.errno == errno.ENOTDIR
+    assert str(tmp_path / "file" / "scene.xml") in str(raised.value)
+    with pytest.raises(IsADirectoryError) as raised:
+        box2scene.load(tmp_path)
+    assert isinstance(raised.value, Error) and (raised.value.errno, raised.value.filename) == (errno.EISDIR, str(tmp_path))
+
+
+def test_an_unreadable_file_raises_permission_error(tmp_path, showcase):
+    if os.geteuid() == 0:
+        pytest.skip("root reads every file: no permission is refused")
+    path = tmp_path / "locked.xml"
+    path.write_bytes(open(showcase, "rb").read())
+    path.chmod(0)
+    with pytest.raises(PermissionError) as raised:
+        box2scene.load(path)
+    assert isinstance(raised.value, Error) and raised.value.filename == str(path)
+
+
+def test_xml_text_is_refused_as_a_path_and_loads_takes_it(showcase):
+    text = open(showcase, encoding="utf-8").read()
+    for source in (text, "\n  " + text):
+        with pytest.raises(Error) as raised:
+            box2scene.load(source)
+        assert raised.value.code == "invalid-argument"
+        assert "box2scene.loads" in str(raised.value) and len(str(raised.value)) < 200
+    assert records(box2scene.loads(text)) == records(box2scene.load(showcase))
+    assert records(box2scene.loads(text.encode())) == records(box2scene.load(showcase))
+    with pytest.raises(Error) as raised:
+        box2scene.loads('<World Version="7"/>')
+    assert (raised.value.code, raised.value.line, raised.value.column) == ("unsupported-version", 1, 17)
+    assert str(raised.value).startswith("1:17: error[unsupported-version]: ")
+
+
 def test_limits_are_load_options(showcase):
     with pytest.raises(Error) as raised:
         box2scene.load(showcase, max_depth=2)
@@ -241,6 +288,16 @@ def test_the_builder_refuses_what_would_not_read_back():
         b.finish()
 
 
+def test_a_builder_error_prints_no_position():
+    b = Builder()
+    shape = b.add_shape(Shape.new("circle", radius=1.0))
+    with pytest.raises(Error) as raised:
+        b.add_fixture(Fixture.new(shape, density=-1.0))
+    assert raised.value.line == 0
+    assert str(raised.value) == f"error[negative-value]: {raised.value.message}"
+    assert "0:0" not in str(raised.value)
+
+
 def test_defaults_are_the_formats():
     assert Joint.new("wheel", 0, 1).frequency_hz == np.float32(2.0)
     assert Joint.new("pulley", 0, 1).ground_anchor_a == (-1.0, 1.0)
@@ -304,3 +361,159 @@ def test_ragged_trajectories_are_refused_sample_by_sample(showcase):
         assert raised.value.message == f"trajectories sample {index} holds {count} points for {n} bodies"
     drawn = scene.draw_svg(trajectories=[bodies, [(x, y - 1.0) for x, y in bodies]])
     assert '<g class="paths"' in drawn
+
+
+def test_a_load_makes_no_record_until_one_is_read(showcase):
+    scene = box2scene.load(showcase)
+    assert scene._made == {}
+    bodies = scene.bodies
+    assert list(scene._made) == ["bodies"] and scene.bodies is bodies
+    assert len(bodies) == 34 and scene.find_body(bodies[3].name) == 3
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_scenes_compare_by_value(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    a, b = box2scene.load(path), box2scene.load(data)
+    assert a == b and not (a != b)
+    assert a == a and a != data and a != None  # noqa: E711
+    with pytest.raises(TypeError):
+        hash(a)
+
+
+def test_scenes_with_one_field_apart_are_unequal(showcase):
+    scene = box2scene.load(showcase)
+    b = Builder()
+    b.set_gravity((0.0, -10.0))
+    built = b.finish()
+    b = Builder()
+    b.set_gravity((0.0, -9.5))
+    assert built != b.finish() and built != scene
+    b = Builder()
+    b.set_gravity((0.0, -10.0))
+    assert built == b.finish()
+
+
+def test_records_pickle_to_equal_records(showcase):
+    scene = box2scene.load(showcase)
+    for records_of_a_kind in (scene.shapes, scene.fixtures, scene.bodies, scene.joints, scene.user_data, scene.diagnostics):
+        assert pickle.loads(pickle.dumps(records_of_a_kind)) == records_of_a_kind
+
+
+def owner(array):
+    """The object whose memory an array reads."""
+    while isinstance(array.base, np.ndarray):
+        array = array.base
+    return array.base
+
+
+def as_column(value):
+    if value is None:
+        return -1
+    return value
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_arrays_hold_the_records_values(path):
+    scene = box2scene.load(path)
+    arrays = scene.arrays()
+    assert set(arrays) == {"shapes", "fixtures", "bodies", "joints", "vertices", "fixture_ids"}
+    for name, records_of_a_kind in (("shapes", scene.shapes), ("fixtures", scene.fixtures), ("bodies", scene.bodies), ("joints", scene.joints)):
+        columns = arrays[name]
+        for column in columns.values():
+            assert len(column) == len(records_of_a_kind)
+            assert not column.flags.writeable and isinstance(owner(column), bytes)
+        for i, record in enumerate(records_of_a_kind):
+            for f in dataclasses.fields(record):
+                value = getattr(record, f.name)
+                if f.name in ("vertices", "fixtures", "name"):
+                    continue
+                if f.name in columns:
+                    given = columns.get(f"{f.name}_given", columns.get(f"has_{f.name}"))
+                    if given is not None:
+                        assert bool(given[i]) == (value is not None), (name, f.name)
+                        if value is None:
+                            continue
+                    got = columns[f.name][i]
+                    expected = as_column(value) if f.name in ("shape", "user_data", "body_a", "body_b", "joint_a", "joint_b") else value
+                    assert np.array_equal(np.asarray(got), np.asarray(expected, dtype=np.asarray(got).dtype)), (name, f.name, i)
+                else:
+                    raise AssertionError(f"{name} has no column {f.name}")
+    pool = arrays["vertices"]["vertices"]
+    assert pool.shape == (len(scene.vertices), 2) and pool.dtype == np.float32
+    for i, shape in enumerate(scene.shapes):
+        first, count = arrays["shapes"]["vertices_first"][i], arrays["shapes"]["vertices_count"][i]
+        assert [tuple(float(x) for x in v) for v in pool[first : first + count]] == list(shape.vertices)
+    ids = arrays["fixture_ids"]["fixture_ids"]
+    for i, body in enumerate(scene.bodies):
+        first, count = arrays["bodies"]["fixtures_first"][i], arrays["bodies"]["fixtures_count"][i]
+        assert tuple(int(x) for x in ids[first : first + count]) == body.fixtures
+
+
+def test_every_vec2_argument_takes_a_sequence_or_a_numpy_array():
+    def build(vec):
+        b = Builder()
+        b.set_gravity(vec((0.0, -10.0)))
+        polygon = b.add_shape(Shape.new("polygon", vertices=[vec(v) for v in ((-1.0, 0.0), (1.0, 0.0), (0.0, 1.0))]))
+        circle = b.add_shape(Shape.new("circle", radius=0.5, position=vec((0.25, 0.5))))
+        fixtures = (b.add_fixture(Fixture.new(polygon)), b.add_fixture(Fixture.new(circle)))
+        b.add_body(Body.new("dynamic", fixtures=fixtures, position=vec((1.0, 2.0)), linear_velocity=vec((3.0, -4.0)), center=vec((0.5, 0.5))))
+        return b.finish()
+
+    tuples = build(tuple)
+    assert tuples.bodies[0].position == (1.0, 2.0)
+    for vec in (list, np.array, lambda v: np.array(v, dtype=np.float32)):
+        assert build(vec) == tuples
+    b = Builder()
+    b.add_shape(Shape.new("polygon", vertices=np.array([(-1.0, 0.0), (1.0, 0.0), (0.0, 1.0)])))
+    assert b.finish().shapes[0].vertices == ((-1.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+    with pytest.raises(ValueError, match="a vector is two numbers, not 3"):
+        Builder().set_gravity([0.0, 1.0, 2.0])
+    with pytest.raises(TypeError):
+        Builder().set_gravity(5.0)
+    svg = tuples.draw_svg(trajectories=[[np.array((1.0, 2.0))], [[1.5, 2.5]]])
+    assert svg == tuples.draw_svg(trajectories=[[(1.0, 2.0)], [(1.5, 2.5)]])
+
+
+def comments(text):
+    return re.findall(r"<!--(.*?)-->", text, re.S)
+
+
+def test_a_loaded_scene_edited_keeps_every_comment_of_the_records_left_unchanged(showcase):
+    scene = box2scene.load(showcase)
+    assert len(comments(scene.to_xml())) == 20
+    assert Builder.from_scene(scene).finish().to_xml() == scene.to_xml()
+    b = Builder.from_scene(scene)
+    driver = scene.find_body("GearDriver")
+    b.replace_body(driver, dataclasses.replace(scene.bodies[driver], position=(-3.5, 7.25)))
+    extra = b.add_body(Body.new("dynamic", name="Newcomer", fixtures=scene.bodies[driver].fixtures, position=[1.0, 2.0]))
+    weld = next(i for i, j in enumerate(scene.joints) if j.kind == "weld")
+    b.remove_joint(weld)
+    edited = b.finish()
+    text = edited.to_xml()
+    assert comments(text) == [c for c in comments(scene.to_xml()) if c != " Weld "]
+    again = box2scene.loads(text)
+    assert again.bodies[driver].position == (-3.5, 7.25)
+    assert again.find_body("Newcomer") == extra == len(scene.bodies)
+    assert len(again.joints) == len(scene.joints) - 1
+    gear = again.joints[again.find_joint("GearMesh")]
+    assert (gear.joint_a, gear.joint_b) == (again.find_joint("GearDriverAxle"), again.find_joint("GearFollowerAxle"))
+    untouched = [i for i in range(len(scene.bodies)) if i != driver]
+    assert [again.bodies[i] for i in untouched] == [scene.bodies[i] for i in untouched]
+    every_record = lambda s: (s.version, s.gravity, s.shapes, s.fixtures, s.bodies, s.joints, s.user_data)
+    assert every_record(again) == every_record(edited)
+    assert [d.code for d in again.diagnostics] == ["joint-starts-violated"]
+
+
+def test_what_a_record_refers_to_is_not_removed(showcase):
+    scene = box2scene.load(showcase)
+    b = Builder.from_scene(scene)
+    axle, gear = scene.find_joint("GearDriverAxle"), scene.find_joint("GearMesh")
+    with pytest.raises(Error) as raised:
+        b.remove_joint(axle)
+    assert (raised.value.code, raised.value.message) == ("invalid-argument", f"joint {axle}: gear joint {gear} refers to it; replace or take that out first")
+    with pytest.raises(Error) as raised:
+        b.replace_body(1000, scene.bodies[0])
+    assert (raised.value.code, str(raised.value)) == ("id-out-of-range", "error[id-out-of-range]: body 1000: there is no body 1000: the scene has 34")
+    assert b.finish() == scene

@@ -63,7 +63,16 @@ def simulate_v3():
     path = os.environ.get("B2S_SIMULATE_V3")
     if not path:
         pytest.skip("B2S_SIMULATE_V3 names no simulate_v3 (the CTest entry sets it)")
+    if not os.access(path, os.X_OK):
+        pytest.skip(f"simulate_v3 is configured but not built: {path} (cmake --build BUILD --target simulate_v3)")
     return path
+
+
+def test_an_example_configured_but_not_built_is_skipped_with_the_reason(monkeypatch, tmp_path):
+    monkeypatch.setenv("B2S_SIMULATE_V3", str(tmp_path / "simulate_v3"))
+    with pytest.raises(pytest.skip.Exception) as skipped:
+        simulate_v3()
+    assert str(skipped.value) == f"simulate_v3 is configured but not built: {tmp_path / 'simulate_v3'} (cmake --build BUILD --target simulate_v3)"
 
 
 @pytest.mark.parametrize("steps", [300, 600])

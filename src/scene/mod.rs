@@ -14,6 +14,7 @@
 #![forbid(unsafe_code)]
 
 mod builder;
+mod edit;
 pub(crate) mod joints;
 mod kept;
 mod records;
