@@ -2,7 +2,7 @@
  * The v3.2 adapter's working range, measured in real Box2D v3.2 (docs/working-range.md):
  * what throws v3's bodies off is a line or wheel joint that starts violated across its axis
  * between two dynamic bodies, by about 3 body sizes whatever the scale. The adapter builds
- * such a joint up to B2S_BOX2D32_MAX_INITIAL_VIOLATION radii of gyration of the smaller
+ * such a joint up to the range's max_wheel_violation_gyrations radii of gyration of the smaller
  * body (4, some 1.3 sizes of the triangles here, whose radius of gyration is 0.31 of their
  * size; measured, 2 sizes still hold), which must hold, and leaves out and reports
  * what lies beyond; prismatic, revolute, weld and distance joints that start violated as far
@@ -80,7 +80,7 @@ static int line_joint_beyond_the_range_throws_bodies_off_in_v32(void) {
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
         float size = sizes[s];
         b2WorldDef def = b2DefaultWorldDef();
-        def.maximumLinearSpeed = B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED;
+        def.maximumLinearSpeed = b2s_engine_working_range(B2S_ENGINE_BOX2D32)->world_max_linear_speed;
         b2WorldId world = b2CreateWorld(&def);
         b2Vec2 points[3] = {{-0.5f * size, -0.5f * size}, {0.5f * size, -0.5f * size},
                             {0.0f, 0.5f * size}};

@@ -84,31 +84,31 @@ static bool b2s3_predicted_mass(const b2s3_builder* b, const b2s_body* body, b2s
                          B2S3_ENGINE "'s float arithmetic (which asserts)");
     }
     b2s3_vector(check, "its centre of mass", b2s3_to_b2s(computed.center),
-                B2S3_LIMIT(MAX_LENGTH), "m");
+                b2s3_range()->max_length, "m");
     b2MassData final_mass = b2s3_final_mass(computed, body);
-    b2s3_zero_or_within(check, "its mass", final_mass.mass, B2S3_LIMIT(MIN_MASS),
-                        B2S3_LIMIT(MAX_MASS), "kg");
+    b2s3_zero_or_within(check, "its mass", final_mass.mass, b2s3_range()->min_mass,
+                        b2s3_range()->max_mass, "kg");
     b2s3_vector(check, "its centre of mass", b2s3_to_b2s(final_mass.center),
-                B2S3_LIMIT(MAX_LENGTH), "m");
+                b2s3_range()->max_length, "m");
     if (final_mass.rotationalInertia < 0.0f) {
         b2s3_fail(check, "its MassData leaves a negative inertia about the centre of mass "
                          "(Inertia < Mass * |Center|^2), which " B2S3_ENGINE " asserts against");
     }
     b2s3_zero_or_within(check, "its inertia about the centre of mass",
-                        final_mass.rotationalInertia, B2S3_LIMIT(MIN_INERTIA),
-                        B2S3_LIMIT(MAX_INERTIA), "kg m^2");
+                        final_mass.rotationalInertia, b2s3_range()->min_inertia,
+                        b2s3_range()->max_inertia, "kg m^2");
     *out = final_mass;
     return true;
 }
 
 static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
     b2s3_check check = {{0}};
-    b2s3_vector(&check, "Position", body->position, B2S3_LIMIT(MAX_LENGTH), "m");
-    b2s3_magnitude(&check, "Angle", body->angle, B2S3_LIMIT(MAX_ANGLE), "rad");
+    b2s3_vector(&check, "Position", body->position, b2s3_range()->max_length, "m");
+    b2s3_magnitude(&check, "Angle", body->angle, b2s3_range()->max_angle, "rad");
     if (body->kind != B2S_BODY_KIND_STATIC) {
-        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, B2S3_LIMIT(MAX_SPEED),
+        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, b2s3_range()->max_speed,
                     "m/s");
-        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, B2S3_LIMIT(MAX_SPEED),
+        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, b2s3_range()->max_speed,
                        "rad/s");
         float limit = b2World_GetMaximumLinearSpeed(b->world);
         float speed = b2Length(b2s3_to_b2(body->linear_velocity));
@@ -120,22 +120,22 @@ static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
                       (double)limit);
         }
     }
-    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, B2S3_LIMIT(MAX_DAMPING), "1/s");
-    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, B2S3_LIMIT(MAX_DAMPING),
+    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, b2s3_range()->max_damping, "1/s");
+    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, b2s3_range()->max_damping,
                    "1/s");
-    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, B2S3_LIMIT(MAX_GRAVITY_SCALE), "");
+    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, b2s3_range()->max_gravity_scale, "");
     if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check)) {
         b2Vec2 gravity = b2MulSV(body->gravity_scale, b2World_GetGravity(b->world));
         b2s3_vector(&check, "GravityScale times the world's gravity", b2s3_to_b2s(gravity),
-                    B2S3_LIMIT(MAX_ACCELERATION), "m/s^2");
+                    b2s3_range()->max_acceleration, "m/s^2");
     }
     if (body->mass_data.center_given) {
-        b2s3_vector(&check, "MassData Center", body->mass_data.center, B2S3_LIMIT(MAX_LENGTH),
+        b2s3_vector(&check, "MassData Center", body->mass_data.center, b2s3_range()->max_length,
                     "m");
     }
     if (b2s3_passed(&check)) {
         b2Vec2 placed = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
-        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH),
+        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), b2s3_range()->max_length,
                     "m");
     }
     return check;
