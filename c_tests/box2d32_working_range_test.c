@@ -173,6 +173,104 @@ static int joints_combined_on_one_pair_hold_without_the_line_joint(void) {
     return 0;
 }
 
+/* Whether every body stays finite over STEPS steps. */
+static bool finite_for_steps(const v3_world* world) {
+    for (int step = 0; step < STEPS; ++step) {
+        b2World_Step(world->id, TIME_STEP, SUB_STEPS);
+        if (!bodies_finite(world)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* A 1 m ball whose MassData gives a tiny inertia, on a prismatic joint to a static body
+ * 0.001 rad from satisfied: built or refused as `built` says. */
+static int tiny_inertia_on_a_prismatic_joint(const char* inertia, bool built) {
+    static char xml[2048];
+    snprintf(xml, sizeof xml,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+             "<Radius>1</Radius><Position>0 0</Position></Shape></Shapes>"
+             "<Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>"
+             "<Bodies><Body Type='Static'/><Body Type='Dynamic'><Angle>0.001</Angle>"
+             "<MassData><Inertia>%s</Inertia></MassData><Fixtures><ID>0</ID></Fixtures></Body>"
+             "</Bodies><Joints><Joint Type='Prismatic'><BodyA>0</BodyA><BodyB>1</BodyB>"
+             "</Joint></Joints></World>",
+             inertia);
+    b2s_scene* scene = load_text(xml);
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE_EQ(B2_IS_NON_NULL(world.built->bodies[1]), built);
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "body", 1),
+              !built);
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+/* v3.2 dies of the level v3.1's bound was raised for (SIGILL in prismatic_joint.c at an
+ * inertia of 1e-20 and of 1e-18): both versions refuse an inertia under 1e-12. */
+static int a_ball_at_inertia_1e_20_on_a_prismatic_joint_is_refused(void) {
+    ENSURE(tiny_inertia_on_a_prismatic_joint("1e-20", false) == 0);
+    ENSURE(tiny_inertia_on_a_prismatic_joint("1e-18", false) == 0);
+    ENSURE(tiny_inertia_on_a_prismatic_joint("1e-12", true) == 0);
+    return 0;
+}
+
+/* A rope with the format's default anchors (1 m from each origin) on a 0.25 m ball, 5.7
+ * radii of gyration out: v3.2 holds it, so the ball swings on it instead of falling away. */
+static int a_rope_with_default_anchors_on_a_small_ball_is_built_and_holds(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+        "<Radius>0.25</Radius><Position>0 0</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>"
+        "<Bodies><Body Type='Static'/><Body Type='Dynamic'><Position>-2 -1</Position>"
+        "<Fixtures><ID>0</ID></Fixtures></Body></Bodies><Joints><Joint Type='Rope'>"
+        "<BodyA>0</BodyA><BodyB>1</BodyB><MaxLength>1</MaxLength></Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    if (world.built->reports.count != 0) {
+        print_reports(&world.built->reports);
+    }
+    ENSURE_EQ(world.built->reports.count, 0);
+    ENSURE(!B2_IS_NULL(world.built->joints[0]));
+    ENSURE(finite_for_steps(&world));
+    b2Vec2 ball = v3_position(world.built->bodies[1]);
+    ENSURE(b2Distance(ball, (b2Vec2){-1.0f, 0.0f}) <= 2.1f);
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+/* Two 0.2 m balls 25 m apart on a prismatic joint along the line between them and a
+ * distance joint: body B's anchor lies 177 radii of gyration along the axis from body A's
+ * centre, which is body A's lever too. v3.2 died of it (SIGILL); the prismatic joint is
+ * left out and the distance joint holds the pair. */
+static int a_prismatic_lever_177_radii_along_its_axis_is_refused(void) {
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+        "<Radius>0.2</Radius><Position>0 0</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>"
+        "<Bodies><Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body>"
+        "<Body Type='Dynamic'><Position>25 0</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+        "</Bodies><Joints><Joint Type='Prismatic'><BodyA>0</BodyA><BodyB>1</BodyB>"
+        "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>"
+        "<LocalAxisA>1 0</LocalAxisA></Joint><Joint Type='Distance'><BodyA>0</BodyA>"
+        "<BodyB>1</BodyB><LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>"
+        "<Length>25</Length></Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE(B2_IS_NULL(world.built->joints[0]));
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1);
+    ENSURE(strstr(world.built->reports.items[0].message, "as body A's lever") != NULL);
+    ENSURE(!B2_IS_NULL(world.built->joints[1]));
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
@@ -180,5 +278,8 @@ int main(void) {
     failed += RUN_TEST(line_and_wheel_joints_beyond_the_range_are_left_out_and_reported);
     failed += RUN_TEST(other_joints_that_start_violated_are_built_and_hold);
     failed += RUN_TEST(joints_combined_on_one_pair_hold_without_the_line_joint);
+    failed += RUN_TEST(a_ball_at_inertia_1e_20_on_a_prismatic_joint_is_refused);
+    failed += RUN_TEST(a_rope_with_default_anchors_on_a_small_ball_is_built_and_holds);
+    failed += RUN_TEST(a_prismatic_lever_177_radii_along_its_axis_is_refused);
     return failed;
 }

@@ -194,7 +194,7 @@ const BOX2D_24: WorkingRange = WorkingRange {
 /// Box2D 2.3 as pybox2d holds it: 2.4's solver, whose measurements it shares.
 const BOX2D_23: WorkingRange = BOX2D_24;
 
-/// Box2D v3.1.1, as `c_tests/box2d3_range_sweep_test.c` and the v3 stress test measured it.
+/// Box2D v3.1.1, as `c_tests/v3_range_sweep_test.c` and the v3 stress test measured it.
 const BOX2D_31: WorkingRange = WorkingRange {
     max_length: 1e4,
     max_ratio: NONE,
@@ -207,16 +207,13 @@ const BOX2D_31: WorkingRange = WorkingRange {
     ..BOX2D_24
 };
 
-/// Box2D v3.2, as `c_tests/box2d32_working_range_test.c` measured it.
+/// Box2D v3.2, as `c_tests/v3_range_sweep_test.c` and `c_tests/box2d32_working_range_test.c`
+/// measured it: v3.1's levers and smallest inertia (v3.2 dies of the same levels).
 const BOX2D_32: WorkingRange = WorkingRange {
-    min_inertia: 1e-20,
-    max_lever: 5.0,
-    max_lever_fixed_wheel: 5.0,
     max_pulled_violation: NONE,
     max_wheel_violation: NONE,
     max_wheel_violation_gyrations: 4.0,
     friction_at_anchors: true,
-    prismatic_lever_to_b: false,
     ..BOX2D_31
 };
 
