@@ -201,6 +201,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
     min_stiffness: 0.0,
     max_lever_fixed_wheel: 5.0,
     max_wheel_violation: 0.5,
+    max_wheel_violation_gyrations: 4.0,
     max_joint_acceleration: 1e5,
     world_max_linear_speed: 1.5e3,
     friction_at_anchors: false,
@@ -212,7 +213,6 @@ const BOX2D_31: WorkingRange = WorkingRange {
 const BOX2D_32: WorkingRange = WorkingRange {
     max_pulled_violation: NONE,
     max_wheel_violation: NONE,
-    max_wheel_violation_gyrations: 4.0,
     friction_at_anchors: true,
     ..BOX2D_31
 };

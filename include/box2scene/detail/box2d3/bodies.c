@@ -180,11 +180,10 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        /* v3 does not turn a body whose rotation is fixed: v3.1 ignores an angular velocity
-         * set on one, and v3.2's lock does not stop the one it starts with. A spin kept
-         * under the lock throws what a joint ties to it off (it killed v3.1 in a generated
-         * level: box2d3_working_range_test). */
-        def.angularVelocity = body->fixed_rotation ? 0.0f : body->angular_velocity;
+        /* A body whose rotation is fixed keeps turning at the rate it starts with in 2.x;
+         * what each version makes of it, reported, is its hooks' (B2S3_FIXED_SPIN_*). */
+        bool dropped = body->fixed_rotation && !B2S3_FIXED_SPIN_PASSED;
+        def.angularVelocity = dropped ? 0.0f : body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
     def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");
@@ -214,6 +213,13 @@ static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_b
                     "its Name is longer than the %u bytes " B2S3_ENGINE " keeps of a name; "
                     "the body has none, and a capture writes none",
                     (unsigned)B2S3_NAME_LENGTH);
+    }
+    if (body->fixed_rotation && body->kind != B2S_BODY_KIND_STATIC &&
+        body->angular_velocity != 0.0f) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
+                    "FixedRotation with AngularVelocity %.9g rad/s: %s, where Box2D 2.x keeps "
+                    "the body turning at that rate",
+                    (double)body->angular_velocity, B2S3_FIXED_SPIN_LOSS);
     }
     if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
