@@ -18,7 +18,8 @@ pub enum Engine {
 
 impl Engine {
     /// Every engine version, in the order of their numbers.
-    pub const ALL: [Engine; 4] = [Engine::Box2d23, Engine::Box2d24, Engine::Box2d31, Engine::Box2d32];
+    pub const ALL: [Engine; 4] =
+        [Engine::Box2d23, Engine::Box2d24, Engine::Box2d31, Engine::Box2d32];
 
     /// The engine version of a number, if it is one.
     pub fn from_u32(value: u32) -> Option<Engine> {
