@@ -180,10 +180,9 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        /* A body whose rotation is fixed keeps turning at the rate it starts with in 2.x;
-         * what each version makes of it, reported, is its hooks' (B2S3_FIXED_SPIN_*). */
-        bool dropped = body->fixed_rotation && !B2S3_FIXED_SPIN_PASSED;
-        def.angularVelocity = dropped ? 0.0f : body->angular_velocity;
+        /* A body whose rotation is fixed keeps turning at the rate it starts with in 2.x and
+         * v3.1 (no torque or impulse changes it); v3.2's lock stops it (reported). */
+        def.angularVelocity = body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
     def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");
@@ -214,12 +213,13 @@ static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_b
                     "the body has none, and a capture writes none",
                     (unsigned)B2S3_NAME_LENGTH);
     }
-    if (body->fixed_rotation && body->kind != B2S_BODY_KIND_STATIC &&
+    if (B2S3_LOCK_STOPS_SPIN && body->fixed_rotation && body->kind != B2S_BODY_KIND_STATIC &&
         body->angular_velocity != 0.0f) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
-                    "FixedRotation with AngularVelocity %.9g rad/s: %s, where Box2D 2.x keeps "
-                    "the body turning at that rate",
-                    (double)body->angular_velocity, B2S3_FIXED_SPIN_LOSS);
+                    "FixedRotation with AngularVelocity %.9g rad/s: " B2S3_ENGINE "'s motion "
+                    "lock stops the spin at the first step, where Box2D 2.x and v3.1 keep the "
+                    "body turning at that rate",
+                    (double)body->angular_velocity);
     }
     if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,

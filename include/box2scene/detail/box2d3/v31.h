@@ -50,14 +50,8 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
     return b2Body_GetLocalCenterOfMass(body);
 }
 
-/* v3.1's fixed rotation gives the body no inertia and would keep the spin it starts with,
- * but a spinning fixed-rotation body drags what a joint ties to it around a circle that
- * threw a generated level's bodies to NaN (box2d3_stress_test, level 1325, an assertion in
- * the solver): the body is created without its spin, and that is reported. */
-#define B2S3_FIXED_SPIN_PASSED false
-#define B2S3_FIXED_SPIN_LOSS                                                                 \
-    "the body is created without it (v3.1 would keep it, but a joint dragged around by such " \
-    "a body threw a generated level to NaN)"
+/* v3.1's fixed rotation gives the body no inertia and keeps the spin it starts with. */
+#define B2S3_LOCK_STOPS_SPIN false
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->fixedRotation = fixed;
 }

@@ -60,8 +60,7 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
 /* A fixed rotation is a motion lock; the snapshot keeps the inertia under it and later
  * sources zero it, so the adapter also gives such a body an inertia of 0 (bodies.c). The
  * lock zeroes the spin at every step (spec section 13: reported lossy-body). */
-#define B2S3_FIXED_SPIN_PASSED true
-#define B2S3_FIXED_SPIN_LOSS "Box2D v3.2's motion lock stops the spin at the first step"
+#define B2S3_LOCK_STOPS_SPIN true
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
 }
