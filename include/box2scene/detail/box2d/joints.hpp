@@ -283,7 +283,7 @@ inline void WorldBuilder::check_anchors(const b2s_joint& joint, b2s_vec2 anchor_
     }
     const b2MassData& mass_a = masses_[joint.body_a];
     float lever_a = b2Distance(a, mass_a.center);
-    if (joint.kind == B2S_JOINT_KIND_PRISMATIC) {
+    if (working_range().prismatic_lever_to_b && joint.kind == B2S_JOINT_KIND_PRISMATIC) {
         const b2Body* body_a = built_.bodies[joint.body_a];
         b2Vec2 b_on_a = body_a->GetLocalPoint(built_.bodies[joint.body_b]->GetWorldPoint(b));
         lever_a = std::max(lever_a, b2Distance(b_on_a, mass_a.center));
