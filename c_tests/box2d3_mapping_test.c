@@ -251,7 +251,7 @@ static int gravity_comes_from_the_file_or_the_host(void) {
     ENSURE_FLOAT(fallback.y, 2.0f);
     ENSURE_FLOAT(b2s_box2d3_world_def(w.scene, (b2Vec2){0.5f, -3.0f}).gravity.y, -3.0f);
     ENSURE_FLOAT(b2s_box2d3_world_def(w.scene, b2Vec2_zero).maximumLinearSpeed,
-                 B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED);
+                 b2s_engine_working_range(B2S_ENGINE_BOX2D31)->world_max_linear_speed);
     step_v3(&w.v3, 60);
     ENSURE_NEAR(b2Body_GetPosition(BODY(w, 0)).y, -free_fall(10.0, 60), 1e-3);
     ENSURE_FINITE(w);

@@ -223,7 +223,7 @@ private:
             return ordinary;
         }
         float v = kExtremes[random_.below(kExtremeCount)];
-        while (beyond && !(std::fabs(v) > box2scene::working_range::length)) {
+        while (beyond && !(std::fabs(v) > box2scene::working_range().max_length)) {
             v = kExtremes[random_.below(kExtremeCount)];
         }
         return Pair{v, ordinary.plain};

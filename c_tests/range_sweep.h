@@ -1,6 +1,6 @@
 /*
  * The working-range sweep both engines' tests run (range_sweep_test.cpp for Box2D 2.4,
- * box2d3_range_sweep_test.c for v3): small levels of two bodies and the joints between them,
+ * v3_range_sweep_test.c for v3.1 and v3.2): small levels of two bodies and the joints between them,
  * each once as the file gives it (body B placed `violation` metres from satisfied) and once
  * satisfied, to be moved that far through the engine's own API after the build. Every
  * joint kind the engine has; body A static, free or pinned to the ground at its centre of

@@ -512,6 +512,39 @@ typedef uint32_t b2s_dialect;
 #endif // __cplusplus
 
 /**
+ * A Box2D version a plan is made for.
+ */
+enum b2s_engine
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * Box2D 2.3, as pybox2d holds it.
+   */
+  B2S_ENGINE_BOX2D23 = 1,
+  /**
+   * Box2D 2.4 (`<box2scene/box2d.hpp>`).
+   */
+  B2S_ENGINE_BOX2D24 = 2,
+  /**
+   * Box2D v3.1 (`<box2scene/box2d3.h>`, and pyb2d3, built on v3.1.1).
+   */
+  B2S_ENGINE_BOX2D31 = 3,
+  /**
+   * Box2D v3.2 (`<box2scene/box2d32.h>`).
+   */
+  B2S_ENGINE_BOX2D32 = 4,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum b2s_engine b2s_engine;
+#else
+typedef uint32_t b2s_engine;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * How bad a diagnostic is.
  */
 enum b2s_severity
@@ -1158,6 +1191,138 @@ typedef struct b2s_scene_view {
 } b2s_scene_view;
 
 /**
+ * The bounds an executor checks before it hands a value to one Box2D version. A value
+ * beyond its bound leaves its object out (`beyond-box2d-range`), and what depends on it
+ * (`skipped-dependent`). `FLT_MAX` is no bound: the version needs none there. Static
+ * storage, never freed.
+ */
+typedef struct b2s_working_range {
+  /**
+   * m, each component: positions, vertices, radii, anchors, lengths, limits, offsets.
+   */
+  float max_length;
+  /**
+   * rad: angles, angle limits, reference angles and offsets.
+   */
+  float max_angle;
+  /**
+   * m/s and rad/s, each component: velocities and motor speeds.
+   */
+  float max_speed;
+  /**
+   * m/s^2, each component: the gravity, and a body's gravity scale times it.
+   */
+  float max_acceleration;
+  /**
+   * A body's multiple of the gravity.
+   */
+  float max_gravity_scale;
+  /**
+   * 1/s: linear and angular damping.
+   */
+  float max_damping;
+  /**
+   * kg/m^2.
+   */
+  float max_density;
+  /**
+   * Friction coefficients and restitution.
+   */
+  float max_friction;
+  /**
+   * Pulley and gear ratios.
+   */
+  float max_ratio;
+  /**
+   * Hz, and damping ratios, of springs (and a motor joint's CorrectionFactor).
+   */
+  float max_frequency;
+  /**
+   * N/m or N m/rad: the softest spring the executor makes, unless 0 (rigid); 0 where
+   * the version needs no such bound.
+   */
+  float min_stiffness;
+  /**
+   * N and N m: force and torque maxima.
+   */
+  float max_force;
+  /**
+   * m: the shortest joint axis the version normalises.
+   */
+  float min_axis;
+  /**
+   * kg: a dynamic body's mass, unless 0.
+   */
+  float min_mass;
+  /**
+   * kg.
+   */
+  float max_mass;
+  /**
+   * kg m^2: a dynamic body's inertia about its centre of mass, unless 0.
+   */
+  float min_inertia;
+  /**
+   * kg m^2.
+   */
+  float max_inertia;
+  /**
+   * 1/kg: 1/m + r^2/I of a body at a joint's anchor (r from its centre of mass).
+   */
+  float max_compliance;
+  /**
+   * Radii of gyration sqrt(I/m): how far from its body's centre of mass a revolute
+   * joint may act (in 2.x also a friction or motor joint, which solve the same 2x2
+   * matrix).
+   */
+  float max_lever_revolute;
+  /**
+   * Radii of gyration: how far every other joint with anchors may act (in 2.x only the
+   * prismatic and weld joints, which invert 3x3 matrices; their other kinds solve row by
+   * row and have no such bound).
+   */
+  float max_lever;
+  /**
+   * Radii of gyration: how far a line or wheel joint may act on a body when its other
+   * body does not turn (static, kinematic, or with fixed rotation).
+   */
+  float max_lever_fixed_wheel;
+  /**
+   * m: how far from satisfied a joint may start on a body that another joint starting
+   * that far already pulls (the first is built, the later ones are not).
+   */
+  float max_pulled_violation;
+  /**
+   * m: how far from satisfied a line or wheel joint may start.
+   */
+  float max_wheel_violation;
+  /**
+   * Radii of gyration of the smaller body: how far apart across its axis the anchors of
+   * a line or wheel joint between two dynamic bodies may start.
+   */
+  float max_wheel_violation_gyrations;
+  /**
+   * m/s^2: what a joint's motor or friction force may give either of its dynamic bodies.
+   */
+  float max_joint_acceleration;
+  /**
+   * m/s: the maximum linear speed the executor gives the world (above `max_speed`, with
+   * room for gravity); `FLT_MAX` where the version has no such setting.
+   */
+  float world_max_linear_speed;
+  /**
+   * Whether a friction joint acts at its anchors, whose levers then count (else at the
+   * body origins).
+   */
+  bool friction_at_anchors;
+  /**
+   * Whether a prismatic joint's lever on body A is measured to body B's anchor too (the
+   * joint's axis reaches it).
+   */
+  bool prismatic_lever_to_b;
+} b2s_working_range;
+
+/**
  * How to write.
  */
 typedef struct b2s_write_options {
@@ -1483,6 +1648,13 @@ uint32_t b2s_scene_find_joint(const struct b2s_scene *scene, const char *name);
  * `scene` is NULL or a live scene.
  */
 uint32_t b2s_scene_dialect(const struct b2s_scene *scene);
+
+/**
+ * The working range of an engine version (a `b2s_engine` number): the bounds its executor
+ * checks, each measured (docs/working-range.md). Static storage, never freed; NULL for a
+ * number that is no engine version.
+ */
+const struct b2s_working_range *b2s_engine_working_range(uint32_t engine);
 
 /**
  * The write options with every field at its default (defaults omitted, as the editor

@@ -34,6 +34,7 @@ mod options;
 mod output;
 mod parse;
 mod place;
+pub mod plan;
 mod rules;
 mod scan;
 pub mod scene;
@@ -48,6 +49,7 @@ pub use builder::Builder;
 pub use error::{Code, Error, Position, Severity};
 pub use load::Checked;
 pub use options::{LoadOptions, WriteOptions};
+pub use plan::{Engine, WorkingRange};
 pub use scene::{
     Body, BodyKind, Diagnostic, Dialect, Filter, Fixture, Joint, JointKind, MassData, NONE, Range,
     Scene, Shape, ShapeKind, Str, UserData, Vec2,

@@ -22,7 +22,7 @@
  * calling Box2D (bodies it follows, joint kinds, a negative damping, a MassData that
  * leaves no positive inertia about the centre of mass, a prismatic limit's order, a gear's
  * bodies), whether or not the loader in use already refuses it: a report is better than an
- * abort. Values past box2scene::working_range, where Box2D would compute inf or NaN, are
+ * abort. Values past box2scene::working_range(), where Box2D would compute inf or NaN, are
  * reported and their objects not created.
  * Call it outside b2World::Step (Box2D refuses to add objects to a locked world).
  */
@@ -64,7 +64,7 @@ struct Built {
     std::vector<Report> reports;
 };
 
-/// The scene's gravity when the file gives one within working_range::acceleration, else
+/// The scene's gravity when the file gives one within working_range().max_acceleration, else
 /// `fallback` (the format has no default gravity: the host decides; build_world reports a
 /// gravity beyond the range). A NULL scene gives `fallback`.
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
@@ -79,58 +79,19 @@ inline Built build_world(const b2s_scene* scene, b2World& world);
 /// turned by the placement's, and a pulley's ground anchors (world points) are moved; joint
 /// anchors, local to their bodies, and everything else are not. The placement's rotation
 /// must be normalised; one that is not, or a translation not finite or beyond
-/// working_range::length, builds nothing and is reported (B2S_CODE_INVALID_ARGUMENT, on the
+/// working_range().max_length, builds nothing and is reported (B2S_CODE_INVALID_ARGUMENT, on the
 /// world). The identity builds the scene as build_world does.
 inline Built build_world_at(const b2s_scene* scene, b2World& world, const b2Transform& placement);
 
-/// The values build_world passes to Box2D 2.4. The format, and the loader, accept any
-/// finite float; Box2D does not: near FLT_MAX its solver computes inf and NaN, or trips an
-/// assertion (Debian's Box2D keeps them). An object with a value beyond these bounds is not
-/// created: build_world reports it (B2S_CODE_BEYOND_BOX2D_RANGE, naming the field and the
-/// value) and what depends on it (B2S_CODE_SKIPPED_DEPENDENT). Real levels stay orders of
-/// magnitude inside: Box2D is made for objects of 0.1 to 10 m moving at most 2 m a step.
-/// docs/working-range.md says why these bounds keep a world finite.
-namespace working_range {
-/// m, each component: positions, vertices, radii, anchors, lengths, limits, offsets (their
-/// squares and products stay far below FLT_MAX).
-inline constexpr float length = 1e5f;
-/// rad: angles, angle limits and offsets (float still resolves 0.008 rad there).
-inline constexpr float angle = 1e5f;
-/// m/s and rad/s: velocities and motor speeds (Box2D moves a body at most 120 m/s and
-/// 94 rad/s at 60 Hz; a joint takes the rest of a faster start as one impulse).
-inline constexpr float speed = 1e3f;
-/// m/s^2: each component of the gravity, and of a body's (GravityScale times the world's).
-inline constexpr float acceleration = 1e3f;
-inline constexpr float gravity_scale = 1e3f; ///< a body's multiple of the gravity
-inline constexpr float damping = 1e5f;       ///< 1/s: linear and angular damping
-inline constexpr float density = 1e5f;       ///< kg/m^2
-inline constexpr float friction = 1e5f;      ///< friction coefficient and restitution
-inline constexpr float ratio = 1e5f;         ///< pulley and gear ratios
-inline constexpr float frequency = 1e3f;     ///< Hz, and damping ratios, of springs
-/// N/m or N m/rad: the softest spring, unless 0 (a rigid joint), as build_world makes it
-/// from FrequencyHz and the bodies' masses (b2LinearStiffness for a distance joint, Box2D
-/// 2.2's wheel and soft weld springs).
-inline constexpr float min_stiffness = 1e-20f;
-inline constexpr float force = 1e20f;        ///< N and N m: force and torque maxima
-inline constexpr float min_axis = 1e-6f;     ///< m: the shortest joint axis
-inline constexpr float mass_min = 1e-20f;    ///< kg: a dynamic body's mass, unless 0
-inline constexpr float mass_max = 1e10f;
-/// kg m^2, about the centre of mass, unless 0: a 1 m ball with 1e-16 on a prismatic joint
-/// 0.001 rad from satisfied goes NaN, with 1e-12 it holds.
-inline constexpr float inertia_min = 1e-12f;
-inline constexpr float inertia_max = 1e12f;
-/// 1/kg: 1/m + r^2/I of a body at a joint's anchor.
-inline constexpr float compliance = 1e12f;
-/// A joint's anchor's distance from its body's centre of mass, in radii of gyration
-/// sqrt(I/m), where Box2D inverts a 2x2 matrix for it (revolute, friction and motor joints:
-/// a 10 cm ball can hang 70 m out) or a 3x3 one (prismatic and weld joints: the sweep's
-/// farthest, a 20 cm ball 10 m out, 71 radii, holds).
-inline constexpr float lever_2x2 = 1e3f;
-inline constexpr float lever_3x3 = 75.0f;
-/// m: how far from satisfied a second joint may start on a body that another joint starting
-/// that far already pulls (docs/working-range.md, measured by the sweep).
-inline constexpr float violation = 0.5f;
-} // namespace working_range
+/// The values build_world passes to Box2D 2.4: the library's measured table for it
+/// (b2s_working_range, docs/working-range.md gives each bound's measurement). The format,
+/// and the loader, accept any finite float; Box2D does not: near FLT_MAX its solver computes
+/// inf and NaN, or trips an assertion (Debian's Box2D keeps them). An object with a value
+/// beyond these bounds is not created: build_world reports it (B2S_CODE_BEYOND_BOX2D_RANGE,
+/// naming the field and the value) and what depends on it (B2S_CODE_SKIPPED_DEPENDENT).
+inline const b2s_working_range& working_range() {
+    return *b2s_engine_working_range(B2S_ENGINE_BOX2D24);
+}
 
 // ---- capture: a live b2World back into a scene, so that a host can save its level
 

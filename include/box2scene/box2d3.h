@@ -93,55 +93,17 @@ typedef struct b2s_box2d3_built {
     b2s_box2d3_reports reports;
 } b2s_box2d3_built;
 
-/** The values the adapter passes to Box2D v3: an object with a value beyond them is not
- *  created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it. v3 asserts that
- *  every shape's bounding box stays within +-1e5 m (B2_HUGE), so lengths are bounded ten
- *  times tighter than for Box2D 2.4, leaving room for motion; the other bounds are 2.4's
- *  (docs/box2d.md lists them). Linear speeds are bounded by the world's maximum linear
- *  speed as well, which v3 would otherwise clamp silently. */
-#define B2S_BOX2D3_MAX_LENGTH 1e4f         /**< m: positions, vertices, anchors, lengths */
-#define B2S_BOX2D3_MAX_ANGLE 1e5f          /**< rad */
-#define B2S_BOX2D3_MAX_SPEED 1e3f          /**< m/s and rad/s, each component */
-#define B2S_BOX2D3_MAX_ACCELERATION 1e3f   /**< m/s^2: gravity, times a body's scale */
-#define B2S_BOX2D3_MAX_GRAVITY_SCALE 1e3f
-#define B2S_BOX2D3_MAX_DAMPING 1e5f        /**< 1/s */
-#define B2S_BOX2D3_MAX_DENSITY 1e5f        /**< kg/m^2 */
-#define B2S_BOX2D3_MAX_FRICTION 1e5f       /**< friction and restitution */
-#define B2S_BOX2D3_MAX_FREQUENCY 1e3f      /**< Hz, and damping ratios */
-#define B2S_BOX2D3_MAX_FORCE 1e20f         /**< N and N m */
-#define B2S_BOX2D3_MIN_AXIS 1e-6f          /**< m: the shortest joint axis */
-#define B2S_BOX2D3_MIN_MASS 1e-20f         /**< kg: a dynamic body's mass */
-#define B2S_BOX2D3_MAX_MASS 1e10f
-#define B2S_BOX2D3_MIN_INERTIA 1e-12f      /**< kg m^2 about the centre of mass, unless 0 */
-#define B2S_BOX2D3_MAX_INERTIA 1e12f
-#define B2S_BOX2D3_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
-/** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
- *  as measured by the working-range sweep (docs/working-range.md): for a revolute joint (a
- *  pendulum: a 10 cm ball can hang 70 m out); for line and wheel joints to a body that does
- *  not turn (static, kinematic or with fixed rotation), whose free turn v3 cannot hold on a
- *  small body far out; and for every other kind, whose farthest lever in the sweep (a 20 cm
- *  ball 10 m out, 71 radii) holds. A prismatic joint's axis reaches body
- *  B's anchor, which is body A's lever too. A friction joint's anchors play no part. */
-#define B2S_BOX2D3_MAX_LEVER_REVOLUTE 1e3f
-#define B2S_BOX2D3_MAX_LEVER_WHEEL 5.0f
-#define B2S_BOX2D3_MAX_LEVER 75.0f
-/** m: how far from satisfied a line or wheel joint may start, and a second joint on a body
- *  another already pulls (docs/working-range.md has the measured table). */
-#define B2S_BOX2D3_MAX_VIOLATION 0.5f
-/** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies.
- *  v3, unlike 2.4, does not bound how far a body moves in a step: a stronger motor throws
- *  a light body past B2_HUGE. */
-#define B2S_BOX2D3_MAX_JOINT_ACCELERATION 1e5f
-/** The maximum linear speed b2s_box2d3_world_def gives: above B2S_BOX2D3_MAX_SPEED with
- *  room for gravity, still small enough that 600 steps stay within B2_HUGE. */
-#define B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED 1.5e3f
+/** The values the adapter passes to Box2D are bounded by the library's working range for
+ *  its version, b2s_engine_working_range(B2S_ENGINE_BOX2D31) (box2scene.h): an object with a value beyond
+ *  them is not created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it.
+ *  docs/working-range.md gives each bound and the measurement that set it. */
 
-/** The scene's gravity when the file gives one within B2S_BOX2D3_MAX_ACCELERATION, else
+/** The scene's gravity when the file gives one within the range's max_acceleration, else
  *  `fallback` (the format has no default gravity: the host decides). NULL gives fallback. */
 b2Vec2 b2s_box2d3_scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
 
 /** b2DefaultWorldDef() with the scene's gravity (b2s_box2d3_scene_gravity) and a maximum
- *  linear speed of B2S_BOX2D3_WORLD_MAX_LINEAR_SPEED, so that v3 does not clamp the speeds
+ *  linear speed of the range's world_max_linear_speed, so that v3 does not clamp the speeds
  *  a scene may give. The host may change anything else before b2CreateWorld. */
 b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity);
 

@@ -101,47 +101,17 @@ typedef struct b2s_box2d32_built {
     b2s_box2d32_reports reports;
 } b2s_box2d32_built;
 
-/** The values the adapter passes to Box2D v3.2: an object with a value beyond them is not
- *  created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it. They are those
- *  of the v3.1 adapter (box2scene/box2d3.h); docs/box2d.md and docs/working-range.md list
- *  them and how they were found. */
-#define B2S_BOX2D32_MAX_LENGTH 1e4f         /**< m: positions, vertices, anchors, lengths */
-#define B2S_BOX2D32_MAX_ANGLE 1e5f          /**< rad */
-#define B2S_BOX2D32_MAX_SPEED 1e3f          /**< m/s and rad/s, each component */
-#define B2S_BOX2D32_MAX_ACCELERATION 1e3f   /**< m/s^2: gravity, times a body's scale */
-#define B2S_BOX2D32_MAX_GRAVITY_SCALE 1e3f
-#define B2S_BOX2D32_MAX_DAMPING 1e5f        /**< 1/s */
-#define B2S_BOX2D32_MAX_DENSITY 1e5f        /**< kg/m^2 */
-#define B2S_BOX2D32_MAX_FRICTION 1e5f       /**< friction and restitution */
-#define B2S_BOX2D32_MAX_FREQUENCY 1e3f      /**< Hz, and damping ratios */
-#define B2S_BOX2D32_MAX_FORCE 1e20f         /**< N and N m */
-#define B2S_BOX2D32_MIN_AXIS 1e-6f          /**< m: the shortest joint axis */
-#define B2S_BOX2D32_MIN_MASS 1e-20f         /**< kg: a dynamic body's mass */
-#define B2S_BOX2D32_MAX_MASS 1e10f
-#define B2S_BOX2D32_MIN_INERTIA 1e-20f      /**< kg m^2 about the centre of mass, unless 0 */
-#define B2S_BOX2D32_MAX_INERTIA 1e12f
-#define B2S_BOX2D32_MAX_COMPLIANCE 1e12f    /**< 1/kg: 1/m + r^2/I at a joint's anchor */
-/** A joint anchor's distance from its body's centre of mass, in radii of gyration sqrt(I/m),
- *  for a revolute joint and for every other kind. */
-#define B2S_BOX2D32_MAX_LEVER_REVOLUTE 1e3f
-#define B2S_BOX2D32_MAX_LEVER 5.0f
-/** How far apart the anchors of a line or wheel joint between two dynamic bodies may start
- *  across its axis, in radii of gyration of the body that has the smaller: such a joint
- *  that starts violated by 3 body sizes (about 10 radii) throws both bodies off in v3.2, at
- *  every scale measured (docs/working-range.md); prismatic, revolute, weld and distance
- *  joints that start violated are pulled together. */
-#define B2S_BOX2D32_MAX_INITIAL_VIOLATION 4.0f
-/** m/s^2: what a joint's motor or friction force may give either of its dynamic bodies. */
-#define B2S_BOX2D32_MAX_JOINT_ACCELERATION 1e5f
-/** The maximum linear speed b2s_box2d32_world_def gives. */
-#define B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED 1.5e3f
+/** The values the adapter passes to Box2D are bounded by the library's working range for
+ *  its version, b2s_engine_working_range(B2S_ENGINE_BOX2D32) (box2scene.h): an object with a value beyond
+ *  them is not created (B2S_CODE_BEYOND_BOX2D_RANGE) and neither is what depends on it.
+ *  docs/working-range.md gives each bound and the measurement that set it. */
 
-/** The scene's gravity when the file gives one within B2S_BOX2D32_MAX_ACCELERATION, else
+/** The scene's gravity when the file gives one within the range's max_acceleration, else
  *  `fallback` (the format has no default gravity: the host decides). NULL gives fallback. */
 b2Vec2 b2s_box2d32_scene_gravity(const b2s_scene* scene, b2Vec2 fallback);
 
 /** b2DefaultWorldDef() with the scene's gravity (b2s_box2d32_scene_gravity) and a maximum
- *  linear speed of B2S_BOX2D32_WORLD_MAX_LINEAR_SPEED. The host may change anything else
+ *  linear speed of the range's world_max_linear_speed. The host may change anything else
  *  before b2CreateWorld. */
 b2WorldDef b2s_box2d32_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity);
 

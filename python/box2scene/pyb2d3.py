@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -42,34 +43,10 @@ __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "s
 # The bytes of a body's name Box2D v3.1 keeps (B2_NAME_LENGTH less its terminating NUL).
 NAME_LENGTH = 31
 
-# The working range: the C adapter's B2S_BOX2D3_* bounds (include/box2scene/box2d3.h).
-MAX_LENGTH = 1e4
-MAX_ANGLE = 1e5
-MAX_SPEED = 1e3
-MAX_ACCELERATION = 1e3
-MAX_GRAVITY_SCALE = 1e3
-MAX_DAMPING = 1e5
-MAX_DENSITY = 1e5
-MAX_FRICTION = 1e5
-MAX_FREQUENCY = 1e3
-MAX_FORCE = 1e20
-MIN_AXIS = 1e-6
-MIN_MASS = 1e-20
-MAX_MASS = 1e10
-MIN_INERTIA = 1e-20
-MAX_INERTIA = 1e12
-MAX_COMPLIANCE = 1e12
-MAX_LEVER_REVOLUTE = 1e3
-MAX_LEVER = 5.0
-MAX_JOINT_ACCELERATION = 1e5
-# Radii of gyration (of the smaller of two dynamic bodies) by which a line or wheel joint may
-# start off its axis: measured with pyb2d3, such a pair of bodies of any size blows up
-# within a step from 4.5 on (docs/python.md, "The working range").
-MAX_AXIS_VIOLATION = 4.0
-# Metres from satisfied at which a joint starts beyond v3's working range (the C adapter's
-# B2S_BOX2D3_MAX_VIOLATION).
-MAX_VIOLATION = 0.5
-WORLD_MAX_LINEAR_SPEED = 1.5e3
+# The working range: the library's measured table for Box2D v3.1 (pyb2d3 is built on v3.1.1),
+# the one the C adapter for v3.1 reads (docs/working-range.md).
+RANGE = SimpleNamespace(**_native.working_range("box2d-3.1"))
+WORLD_MAX_LINEAR_SPEED = RANGE.world_max_linear_speed
 
 ENGINE = "Box2D v3"
 LINEAR_SLOP = f32(0.005)
@@ -102,7 +79,7 @@ class Built:
 
 
 def _gravity_fits(g) -> bool:
-    return abs(g[0]) <= MAX_ACCELERATION and abs(g[1]) <= MAX_ACCELERATION
+    return abs(g[0]) <= RANGE.max_acceleration and abs(g[1]) <= RANGE.max_acceleration
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
@@ -302,7 +279,8 @@ class _Build:
         self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * slots, [None] * len(scene.joints), self.reports)
         self.geometries: List[Optional[_Geometry]] = [None] * len(scene.shapes)
         self.masses: Dict[int, tuple] = {}
-        # Per body: the joint that already pulls it from further than MAX_VIOLATION.
+        # Per body: the joint that already pulls it from further than the range's
+        # max_pulled_violation.
         self.pulled: Dict[int, int] = {}
         self.has_sensor = any(f.is_sensor for f in scene.fixtures)
         self.slot_starts = []
@@ -328,7 +306,7 @@ class _Build:
                 0,
                 None,
                 f"Gravity ({g[0]:.9g}, {g[1]:.9g}) lies beyond Box2D v3's working range (each "
-                f"component within +-{MAX_ACCELERATION:g} m/s^2); scene_gravity gives the host's "
+                f"component within +-{RANGE.max_acceleration:g} m/s^2); scene_gravity gives the host's "
                 "fallback instead",
             )
 
@@ -336,19 +314,19 @@ class _Build:
         check = Check(ENGINE)
         edge = shape.kind == "edge"
         if shape.kind == "circle":
-            check.magnitude("Radius", shape.radius, MAX_LENGTH, "m")
-            check.vector("Position", shape.position, MAX_LENGTH, "m")
+            check.magnitude("Radius", shape.radius, RANGE.max_length, "m")
+            check.vector("Position", shape.position, RANGE.max_length, "m")
         for i, v in enumerate(shape.vertices):
             if not check.passed:
                 break
-            check.vector(f"Vertex{i + 1}" if edge else f"Vertex {i}", v, MAX_LENGTH, "m")
+            check.vector(f"Vertex{i + 1}" if edge else f"Vertex {i}", v, RANGE.max_length, "m")
         if shape.kind == "polygon" and shape.centroid is not None:
-            check.vector("Centroid", shape.centroid, MAX_LENGTH, "m")
+            check.vector("Centroid", shape.centroid, RANGE.max_length, "m")
         ghosts = edge or (shape.kind == "chain" and not shape.is_loop)
         if ghosts and shape.prev_vertex is not None:
-            check.vector("Vertex0" if edge else "PrevVertex", shape.prev_vertex, MAX_LENGTH, "m")
+            check.vector("Vertex0" if edge else "PrevVertex", shape.prev_vertex, RANGE.max_length, "m")
         if ghosts and shape.next_vertex is not None:
-            check.vector("Vertex3" if edge else "NextVertex", shape.next_vertex, MAX_LENGTH, "m")
+            check.vector("Vertex3" if edge else "NextVertex", shape.next_vertex, RANGE.max_length, "m")
         return check
 
     def make_polygon(self, index: int, shape: Shape, points) -> Optional[_Geometry]:
@@ -461,9 +439,9 @@ class _Build:
     @staticmethod
     def fixture_check(f: Fixture) -> Check:
         check = Check(ENGINE)
-        check.magnitude("Density", f.density, MAX_DENSITY, "kg/m^2")
-        check.magnitude("Friction", f.friction, MAX_FRICTION, "")
-        check.magnitude("Restitution", f.restitution, MAX_FRICTION, "")
+        check.magnitude("Density", f.density, RANGE.max_density, "kg/m^2")
+        check.magnitude("Friction", f.friction, RANGE.max_friction, "")
+        check.magnitude("Restitution", f.restitution, RANGE.max_friction, "")
         if f.density < 0 or f.friction < 0 or f.restitution < 0:
             check.fail("a negative Density, Friction or Restitution, which Box2D v3 asserts against")
         return check
@@ -481,37 +459,37 @@ class _Build:
         computed, kept = _mass_from_shapes(masses, body.fixed_rotation)
         if not kept:
             check.fail("its shapes leave no positive inertia about its centre of mass in Box2D v3's float arithmetic (which asserts)")
-        check.vector("its centre of mass", computed[1], MAX_LENGTH, "m")
+        check.vector("its centre of mass", computed[1], RANGE.max_length, "m")
         final = _positive_mass(_with_mass_data(computed, body))
-        check.zero_or_within("its mass", float(final[0]), MIN_MASS, MAX_MASS, "kg")
-        check.vector("its centre of mass", final[1], MAX_LENGTH, "m")
+        check.zero_or_within("its mass", float(final[0]), RANGE.min_mass, RANGE.max_mass, "kg")
+        check.vector("its centre of mass", final[1], RANGE.max_length, "m")
         if final[2] < 0:
             check.fail("its MassData leaves a negative inertia about the centre of mass (Inertia < Mass * |Center|^2), which Box2D v3 asserts against")
-        check.zero_or_within("its inertia about the centre of mass", float(final[2]), MIN_INERTIA, MAX_INERTIA, "kg m^2")
+        check.zero_or_within("its inertia about the centre of mass", float(final[2]), RANGE.min_inertia, RANGE.max_inertia, "kg m^2")
         return final
 
     def body_check(self, body: Body) -> Check:
         check = Check(ENGINE)
-        check.vector("Position", body.position, MAX_LENGTH, "m")
-        check.magnitude("Angle", body.angle, MAX_ANGLE, "rad")
+        check.vector("Position", body.position, RANGE.max_length, "m")
+        check.magnitude("Angle", body.angle, RANGE.max_angle, "rad")
         if body.kind != "static":
-            check.vector("LinearVelocity", body.linear_velocity, MAX_SPEED, "m/s")
-            check.magnitude("AngularVelocity", body.angular_velocity, MAX_SPEED, "rad/s")
+            check.vector("LinearVelocity", body.linear_velocity, RANGE.max_speed, "m/s")
+            check.magnitude("AngularVelocity", body.angular_velocity, RANGE.max_speed, "rad/s")
             speed = float(_length(body.linear_velocity))
             if check.passed and not speed <= self.speed_limit:
                 v = body.linear_velocity
                 check.fail(
                     f"LinearVelocity ({v[0]:.9g}, {v[1]:.9g}) is faster than the world's maximum linear speed {self.speed_limit:g} m/s, to which Box2D v3 would clamp it"
                 )
-        check.magnitude("LinearDamping", body.linear_damping, MAX_DAMPING, "1/s")
-        check.magnitude("AngularDamping", body.angular_damping, MAX_DAMPING, "1/s")
-        check.magnitude("GravityScale", body.gravity_scale, MAX_GRAVITY_SCALE, "")
+        check.magnitude("LinearDamping", body.linear_damping, RANGE.max_damping, "1/s")
+        check.magnitude("AngularDamping", body.angular_damping, RANGE.max_damping, "1/s")
+        check.magnitude("GravityScale", body.gravity_scale, RANGE.max_gravity_scale, "")
         if body.kind == "dynamic" and check.passed:
             g = self.world.gravity
             scaled = (float(F(body.gravity_scale) * F(g.x)), float(F(body.gravity_scale) * F(g.y)))
-            check.vector("GravityScale times the world's gravity", scaled, MAX_ACCELERATION, "m/s^2")
+            check.vector("GravityScale times the world's gravity", scaled, RANGE.max_acceleration, "m/s^2")
         if body.center is not None:
-            check.vector("MassData Center", body.center, MAX_LENGTH, "m")
+            check.vector("MassData Center", body.center, RANGE.max_length, "m")
         return check
 
     def skip_fixtures_of(self, index: int, body: Body) -> None:
@@ -690,9 +668,9 @@ class _Build:
         mass, center, inertia = self.masses[body]
         r = float(np.sqrt(_distance_squared(anchor, center)))
         compliance = 1.0 / float(mass) + (r * r / float(inertia) if inertia > 0 else 0.0)
-        if not compliance <= MAX_COMPLIANCE:
+        if not compliance <= RANGE.max_compliance:
             check.fail(
-                f"{field}: the joint acts {r:.9g} m from the centre of mass of body {body} (mass {float(mass):.9g} kg, inertia {float(inertia):.9g} kg m^2), where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D v3's working range (at most {MAX_COMPLIANCE:g} 1/kg)"
+                f"{field}: the joint acts {r:.9g} m from the centre of mass of body {body} (mass {float(mass):.9g} kg, inertia {float(inertia):.9g} kg m^2), where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D v3's working range (at most {RANGE.max_compliance:g} 1/kg)"
             )
         elif inertia > 0 and not r <= lever * math.sqrt(float(inertia) / float(mass)):
             check.fail(
@@ -704,14 +682,14 @@ class _Build:
             return
         mass = float(self.masses[body][0])
         acceleration = force / mass
-        if not acceleration <= MAX_JOINT_ACCELERATION:
+        if not acceleration <= RANGE.max_joint_acceleration:
             check.fail(
-                f"its motor or friction force {force:.9g} N accelerates body {body} (mass {mass:.9g} kg) by {acceleration:g} m/s^2, beyond Box2D v3's working range (at most {MAX_JOINT_ACCELERATION:g} m/s^2)"
+                f"its motor or friction force {force:.9g} N accelerates body {body} (mass {mass:.9g} kg) by {acceleration:g} m/s^2, beyond Box2D v3's working range (at most {RANGE.max_joint_acceleration:g} m/s^2)"
             )
 
     def check_axis_violation(self, check: Check, j: Joint) -> None:
         """A line or wheel joint between two dynamic bodies that starts with body B's anchor
-        off body A's axis: v3 blows such a pair apart."""
+        off body A's axis by more than the range's radii of gyration of the smaller body."""
         a, b = self.scene.bodies[j.body_a], self.scene.bodies[j.body_b]
         if a.kind != "dynamic" or b.kind != "dynamic":
             return
@@ -722,10 +700,10 @@ class _Build:
         anchor_b = _transform_point(b.position, cosf(b.angle), sinf(b.angle), j.local_anchor_b)
         axis = _rotate(cosf(a.angle), sinf(a.angle), _normalize(j.local_axis_a))
         off = abs(axis[0] * (anchor_b[1] - anchor_a[1]) - axis[1] * (anchor_b[0] - anchor_a[0]))
-        bound = MAX_AXIS_VIOLATION * min(radii)
-        if not off <= bound:
+        bound = RANGE.max_wheel_violation_gyrations * min(radii)
+        if off > float(LINEAR_SLOP) and not off <= bound:
             check.fail(
-                f"it starts violated: LocalAnchorB lies {off:.9g} m off the axis through LocalAnchorA, more than {MAX_AXIS_VIOLATION:g} radii of gyration ({bound:.9g} m) of the smaller body, beyond Box2D v3's working range for a {j.kind} joint between two dynamic bodies"
+                f"it starts violated: LocalAnchorB lies {off:.9g} m off the axis through LocalAnchorA, more than {RANGE.max_wheel_violation_gyrations:g} radii of gyration ({bound:.9g} m) of the smaller body, beyond Box2D v3's working range for a {j.kind} joint between two dynamic bodies"
             )
 
     def starting_violation(self, j: Joint) -> float:
@@ -752,26 +730,41 @@ class _Build:
         return 0.0  # springs, motors and friction hold nothing in place
 
     def check_violation(self, index: int, j: Joint, check: Check) -> None:
-        """What the sweep of docs/working-range.md measured: v3 flies a line or wheel joint
-        that starts more than MAX_VIOLATION from satisfied apart, and asserts on a body that
-        two such joints pull; the first such joint of another kind on a body is built."""
+        """What the sweep of docs/working-range.md measured: v3.1 flies a line or wheel joint
+        that starts more than the range's max_wheel_violation from satisfied apart, and
+        asserts on a body that two joints starting more than its max_pulled_violation from
+        satisfied pull; the first such joint of another kind on a body is built."""
         violation = self.starting_violation(j)
-        if not violation > MAX_VIOLATION:
-            return
         if j.kind in ("line", "wheel"):
-            check.fail(
-                f"it starts {violation:.9g} m from satisfied: a line or wheel joint further than {MAX_VIOLATION:g} m from satisfied lies beyond Box2D v3's working range (its solver flings the bodies apart)"
-            )
+            if violation > RANGE.max_wheel_violation:
+                check.fail(
+                    f"it starts {violation:.9g} m from satisfied: a line or wheel joint further than {RANGE.max_wheel_violation:g} m from satisfied lies beyond Box2D v3's working range (its solver flings the bodies apart)"
+                )
+            return
+        if not violation > RANGE.max_pulled_violation:
             return
         for body in (j.body_a, j.body_b):
             if body in self.pulled:
                 check.fail(
-                    f"it starts {violation:.9g} m from satisfied, and joint {self.pulled[body]} already pulls body {body} from further than {MAX_VIOLATION:g} m: two such joints on one body lie beyond Box2D v3's working range (its solver asserts)"
+                    f"it starts {violation:.9g} m from satisfied, and joint {self.pulled[body]} already pulls body {body} from further than {RANGE.max_pulled_violation:g} m: two such joints on one body lie beyond Box2D v3's working range (its solver asserts)"
                 )
                 return
         for body in (j.body_a, j.body_b):
             if self.scene.bodies[body].kind == "dynamic":
                 self.pulled[body] = index
+
+    def lever(self, j: Joint, other: int, lever: float) -> float:
+        """A line or wheel joint to a body that does not turn (static, kinematic, or without
+        rotational inertia) has the range's shorter lever."""
+        turns = self.scene.bodies[other].kind == "dynamic" and self.masses[other][2] > 0
+        return RANGE.max_lever_fixed_wheel if j.kind in ("line", "wheel") and not turns else lever
+
+    def b_anchor_on_a(self, j: Joint):
+        """Body B's anchor in body A's frame: a prismatic joint's axis reaches it."""
+        a, b = self.scene.bodies[j.body_a], self.scene.bodies[j.body_b]
+        world = _transform_point(b.position, cosf(b.angle), sinf(b.angle), j.local_anchor_b)
+        ca, sa = cosf(a.angle), sinf(a.angle)
+        return _rotate(ca, -sa, _sub(world, a.position))
 
     @staticmethod
     def drive_force(j: Joint) -> float:
@@ -785,43 +778,46 @@ class _Build:
         check = Check(ENGINE)
         anchored = j.kind != "motor"
         if anchored:
-            check.vector("LocalAnchorA", j.local_anchor_a, MAX_LENGTH, "m")
-            check.vector("LocalAnchorB", j.local_anchor_b, MAX_LENGTH, "m")
+            check.vector("LocalAnchorA", j.local_anchor_a, RANGE.max_length, "m")
+            check.vector("LocalAnchorB", j.local_anchor_b, RANGE.max_length, "m")
         if j.kind == "revolute" or j.kind == "wheel":
-            check.magnitude("MotorSpeed", j.motor_speed, MAX_SPEED, "rad/s")
-            check.magnitude("MaxMotorTorque", j.max_motor_torque, MAX_FORCE, "N m")
+            check.magnitude("MotorSpeed", j.motor_speed, RANGE.max_speed, "rad/s")
+            check.magnitude("MaxMotorTorque", j.max_motor_torque, RANGE.max_force, "N m")
         elif j.kind in ("prismatic", "line"):
-            check.magnitude("LowerTranslation", j.lower_limit, MAX_LENGTH, "m")
-            check.magnitude("UpperTranslation", j.upper_limit, MAX_LENGTH, "m")
-            check.magnitude("MotorSpeed", j.motor_speed, MAX_SPEED, "m/s")
-            check.magnitude("MaxMotorForce", j.max_motor_force, MAX_FORCE, "N")
-            check.magnitude("ReferenceAngle", j.reference_angle, MAX_ANGLE, "rad")
+            check.magnitude("LowerTranslation", j.lower_limit, RANGE.max_length, "m")
+            check.magnitude("UpperTranslation", j.upper_limit, RANGE.max_length, "m")
+            check.magnitude("MotorSpeed", j.motor_speed, RANGE.max_speed, "m/s")
+            check.magnitude("MaxMotorForce", j.max_motor_force, RANGE.max_force, "N")
+            check.magnitude("ReferenceAngle", j.reference_angle, RANGE.max_angle, "rad")
         elif j.kind == "distance":
-            check.magnitude("Length", j.length, MAX_LENGTH, "m")
+            check.magnitude("Length", j.length, RANGE.max_length, "m")
         elif j.kind == "rope":
-            check.magnitude("MaxLength", j.max_length, MAX_LENGTH, "m")
+            check.magnitude("MaxLength", j.max_length, RANGE.max_length, "m")
         elif j.kind == "weld":
-            check.magnitude("ReferenceAngle", j.reference_angle, MAX_ANGLE, "rad")
+            check.magnitude("ReferenceAngle", j.reference_angle, RANGE.max_angle, "rad")
         elif j.kind in ("friction", "motor"):
-            check.magnitude("MaxForce", j.max_force, MAX_FORCE, "N")
-            check.magnitude("MaxTorque", j.max_torque, MAX_FORCE, "N m")
+            check.magnitude("MaxForce", j.max_force, RANGE.max_force, "N")
+            check.magnitude("MaxTorque", j.max_torque, RANGE.max_force, "N m")
             if j.kind == "motor":
-                check.vector("LinearOffset", j.linear_offset, MAX_LENGTH, "m")
-                check.magnitude("AngularOffset", j.angular_offset, MAX_ANGLE, "rad")
-                check.magnitude("CorrectionFactor", j.correction_factor, MAX_FREQUENCY, "")
+                check.vector("LinearOffset", j.linear_offset, RANGE.max_length, "m")
+                check.magnitude("AngularOffset", j.angular_offset, RANGE.max_angle, "rad")
+                check.magnitude("CorrectionFactor", j.correction_factor, RANGE.max_frequency, "")
         if j.kind in ("prismatic", "line", "wheel"):
-            check.vector("LocalAxisA", j.local_axis_a, MAX_LENGTH, "m")
-            if check.passed and not float(_length(j.local_axis_a)) >= MIN_AXIS:
-                check.fail(f"LocalAxisA is shorter than {MIN_AXIS:g} m: Box2D v3 cannot normalise it")
+            check.vector("LocalAxisA", j.local_axis_a, RANGE.max_length, "m")
+            if check.passed and not float(_length(j.local_axis_a)) >= RANGE.min_axis:
+                check.fail(f"LocalAxisA is shorter than {RANGE.min_axis:g} m: Box2D v3 cannot normalise it")
         if j.kind in ("distance", "wheel", "weld"):
-            check.magnitude("FrequencyHz", j.frequency_hz, MAX_FREQUENCY, "Hz")
-            check.magnitude("DampingRatio", j.damping_ratio, MAX_FREQUENCY, "")
+            check.magnitude("FrequencyHz", j.frequency_hz, RANGE.max_frequency, "Hz")
+            check.magnitude("DampingRatio", j.damping_ratio, RANGE.max_frequency, "")
             if j.frequency_hz < 0 or j.damping_ratio < 0:
                 check.fail("a negative FrequencyHz or DampingRatio, which Box2D v3 asserts against")
-        if check.passed and anchored:
-            lever = MAX_LEVER_REVOLUTE if j.kind == "revolute" else MAX_LEVER
-            self.check_anchor(check, "LocalAnchorA", j.body_a, j.local_anchor_a, lever)
-            self.check_anchor(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
+        levered = anchored and (RANGE.friction_at_anchors or j.kind != "friction")
+        if check.passed and levered:
+            lever = RANGE.max_lever_revolute if j.kind == "revolute" else RANGE.max_lever
+            self.check_anchor(check, "LocalAnchorA", j.body_a, j.local_anchor_a, self.lever(j, j.body_b, lever))
+            self.check_anchor(check, "LocalAnchorB", j.body_b, j.local_anchor_b, self.lever(j, j.body_a, lever))
+            if RANGE.prismatic_lever_to_b and j.kind == "prismatic":
+                self.check_anchor(check, "LocalAnchorB, as body A's lever", j.body_a, self.b_anchor_on_a(j), lever)
         if check.passed and j.kind in ("line", "wheel"):
             self.check_axis_violation(check, j)
         if check.passed:

@@ -23,10 +23,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 from typing import Dict, List, Optional, Sequence, Tuple
 
 import Box2D as B
 
+from . import _native
 from ._error import Error
 from ._f32 import F, f32, search_ulps
 from ._records import Body, Fixture, Joint, Shape
@@ -36,27 +38,9 @@ from ._scene import Builder, Scene
 __all__ = ["Built", "Report", "build_world", "capture_world", "scene_gravity"]
 
 ENGINE = "Box2D 2.3"
-# The working range of the library's Box2D 2.4 adapter (box2scene::working_range), which
-# 2.3's solver shares.
-MAX_LENGTH = 1e5
-MAX_ANGLE = 1e5
-MAX_SPEED = 1e3
-MAX_ACCELERATION = 1e3
-MAX_GRAVITY_SCALE = 1e3
-MAX_DAMPING = 1e5
-MAX_DENSITY = 1e5
-MAX_FRICTION = 1e5
-MAX_RATIO = 1e5
-MAX_FREQUENCY = 1e3
-MAX_FORCE = 1e20
-MIN_AXIS = 1e-6
-MIN_MASS = 1e-20
-MAX_MASS = 1e10
-MIN_INERTIA = 1e-20
-MAX_INERTIA = 1e12
-MAX_COMPLIANCE = 1e12
-LEVER_2X2 = 1e3
-LEVER_3X3 = 30.0
+# The working range: the library's measured table for Box2D 2.3 as pybox2d holds it, 2.4's
+# solver, whose measurements it shares (docs/working-range.md).
+RANGE = SimpleNamespace(**_native.working_range("box2d-2.3"))
 FILTER_BITS = 16
 # Hz: the spring that stands in for none on a Box2D 2.3 wheel joint (see wheel_hertz).
 SPRINGLESS_WHEEL_HZ = 1e-3
@@ -83,7 +67,7 @@ class Built:
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
     """The scene's gravity, or ``fallback`` when it gives none or one beyond the range."""
     g = scene.gravity
-    if g is None or not (abs(g[0]) <= MAX_ACCELERATION and abs(g[1]) <= MAX_ACCELERATION):
+    if g is None or not (abs(g[0]) <= RANGE.max_acceleration and abs(g[1]) <= RANGE.max_acceleration):
         return fallback
     return g
 
@@ -100,6 +84,9 @@ class _Build:
         slots = len(scene.fixture_ids)
         self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * len(scene.joints), self.reports)
         self.shapes: List[Optional[object]] = [None] * len(scene.shapes)
+        # Per body: the joint that already pulls it from further than the range's
+        # max_pulled_violation.
+        self.pulled: Dict[int, int] = {}
         self.slot_starts = []
         slot = 0
         for body in scene.bodies:
@@ -116,7 +103,7 @@ class _Build:
         g = self.scene.gravity
         if g is not None:
             check = Check(ENGINE)
-            check.vector("Gravity", g, MAX_ACCELERATION, "m/s^2")
+            check.vector("Gravity", g, RANGE.max_acceleration, "m/s^2")
             if not check.passed:
                 self.report("beyond-box2d-range", "world", 0, None, f"{check.problem}; scene_gravity gives the host's fallback instead")
 
@@ -144,13 +131,13 @@ class _Build:
         shape = self.scene.shapes[index]
         check = Check(ENGINE)
         if shape.kind == "circle":
-            check.magnitude("Radius", shape.radius, MAX_LENGTH, "m")
-            check.vector("Position", shape.position, MAX_LENGTH, "m")
+            check.magnitude("Radius", shape.radius, RANGE.max_length, "m")
+            check.vector("Position", shape.position, RANGE.max_length, "m")
         for i, v in enumerate(shape.vertices):
-            check.vector(f"Vertex {i}", v, MAX_LENGTH, "m")
+            check.vector(f"Vertex {i}", v, RANGE.max_length, "m")
         for field_name, v in (("Centroid", shape.centroid), ("PrevVertex", shape.prev_vertex), ("NextVertex", shape.next_vertex)):
             if v is not None:
-                check.vector(field_name, v, MAX_LENGTH, "m")
+                check.vector(field_name, v, RANGE.max_length, "m")
         if not check.passed:
             self.beyond(check, "shape", index, shape.name)
             return
@@ -184,26 +171,26 @@ class _Build:
     @staticmethod
     def fixture_check(f: Fixture) -> Check:
         check = Check(ENGINE)
-        check.magnitude("Density", f.density, MAX_DENSITY, "kg/m^2")
-        check.magnitude("Friction", f.friction, MAX_FRICTION, "")
-        check.magnitude("Restitution", f.restitution, MAX_FRICTION, "")
+        check.magnitude("Density", f.density, RANGE.max_density, "kg/m^2")
+        check.magnitude("Friction", f.friction, RANGE.max_friction, "")
+        check.magnitude("Restitution", f.restitution, RANGE.max_friction, "")
         return check
 
     def body_check(self, body: Body) -> Check:
         check = Check(ENGINE)
-        check.vector("Position", body.position, MAX_LENGTH, "m")
-        check.magnitude("Angle", body.angle, MAX_ANGLE, "rad")
+        check.vector("Position", body.position, RANGE.max_length, "m")
+        check.magnitude("Angle", body.angle, RANGE.max_angle, "rad")
         if body.kind != "static":
-            check.vector("LinearVelocity", body.linear_velocity, MAX_SPEED, "m/s")
-            check.magnitude("AngularVelocity", body.angular_velocity, MAX_SPEED, "rad/s")
-        check.magnitude("LinearDamping", body.linear_damping, MAX_DAMPING, "1/s")
-        check.magnitude("AngularDamping", body.angular_damping, MAX_DAMPING, "1/s")
-        check.magnitude("GravityScale", body.gravity_scale, MAX_GRAVITY_SCALE, "")
+            check.vector("LinearVelocity", body.linear_velocity, RANGE.max_speed, "m/s")
+            check.magnitude("AngularVelocity", body.angular_velocity, RANGE.max_speed, "rad/s")
+        check.magnitude("LinearDamping", body.linear_damping, RANGE.max_damping, "1/s")
+        check.magnitude("AngularDamping", body.angular_damping, RANGE.max_damping, "1/s")
+        check.magnitude("GravityScale", body.gravity_scale, RANGE.max_gravity_scale, "")
         if body.kind == "dynamic" and check.passed:
             g = self.world.gravity
-            check.vector("GravityScale times the world's gravity", (body.gravity_scale * g[0], body.gravity_scale * g[1]), MAX_ACCELERATION, "m/s^2")
+            check.vector("GravityScale times the world's gravity", (body.gravity_scale * g[0], body.gravity_scale * g[1]), RANGE.max_acceleration, "m/s^2")
         if body.center is not None:
-            check.vector("MassData Center", body.center, MAX_LENGTH, "m")
+            check.vector("MassData Center", body.center, RANGE.max_length, "m")
         return check
 
     def skip_fixtures_of(self, index: int, body: Body) -> None:
@@ -253,10 +240,10 @@ class _Build:
                 check.fail("its MassData leaves no positive inertia about the centre of mass (Inertia <= Mass * |Center|^2), which Box2D 2.3 asserts against")
         mass = data.mass if data.mass > 0 else 1.0
         central = data.I - mass * (data.center[0] ** 2 + data.center[1] ** 2)
-        check.zero_or_within("its mass", data.mass, MIN_MASS, MAX_MASS, "kg")
-        check.vector("its centre of mass", tuple(data.center), MAX_LENGTH, "m")
+        check.zero_or_within("its mass", data.mass, RANGE.min_mass, RANGE.max_mass, "kg")
+        check.vector("its centre of mass", tuple(data.center), RANGE.max_length, "m")
         if not body.fixed_rotation and data.I > 0:
-            check.zero_or_within("its inertia about the centre of mass", central, MIN_INERTIA, MAX_INERTIA, "kg m^2")
+            check.zero_or_within("its inertia about the centre of mass", central, RANGE.min_inertia, RANGE.max_inertia, "kg m^2")
         return check, (data if given else None)
 
     def make_body(self, index: int) -> None:
@@ -317,45 +304,90 @@ class _Build:
         mass = created.mass
         inertia = created.inertia - mass * (center[0] ** 2 + center[1] ** 2)
         compliance = 1.0 / mass + (r * r / inertia if inertia > 0 else 0.0)
-        if not compliance <= MAX_COMPLIANCE:
-            check.fail(f"{field_name}: the joint acts {r:.9g} m from the centre of mass of body {body}, where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D 2.3's working range (at most {MAX_COMPLIANCE:g} 1/kg)")
+        if not compliance <= RANGE.max_compliance:
+            check.fail(f"{field_name}: the joint acts {r:.9g} m from the centre of mass of body {body}, where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D 2.3's working range (at most {RANGE.max_compliance:g} 1/kg)")
         elif lever > 0 and inertia > 0 and not r <= lever * math.sqrt(inertia / mass):
             check.fail(f"{field_name}: the joint acts {r / math.sqrt(inertia / mass):g} radii of gyration from the centre of mass of body {body}, beyond Box2D 2.3's working range for this joint (at most {lever:g})")
 
     def joint_check(self, j: Joint) -> Check:
         check = Check(ENGINE)
         for name, v in (("LocalAnchorA", j.local_anchor_a), ("LocalAnchorB", j.local_anchor_b), ("LocalAxisA", j.local_axis_a), ("LinearOffset", j.linear_offset), ("GroundAnchorA", j.ground_anchor_a), ("GroundAnchorB", j.ground_anchor_b)):
-            check.vector(name, v, MAX_LENGTH, "m")
+            check.vector(name, v, RANGE.max_length, "m")
         for name, v, bound, unit in (
-            ("ReferenceAngle", j.reference_angle, MAX_ANGLE, "rad"),
-            ("AngularOffset", j.angular_offset, MAX_ANGLE, "rad"),
-            ("MotorSpeed", j.motor_speed, MAX_SPEED, "per s"),
-            ("MaxMotorTorque", j.max_motor_torque, MAX_FORCE, "N m"),
-            ("MaxMotorForce", j.max_motor_force, MAX_FORCE, "N"),
-            ("MaxForce", j.max_force, MAX_FORCE, "N"),
-            ("MaxTorque", j.max_torque, MAX_FORCE, "N m"),
-            ("Length", j.length, MAX_LENGTH, "m"),
-            ("MaxLength", j.max_length, MAX_LENGTH, "m"),
-            ("LengthA", j.length_a, MAX_LENGTH, "m"),
-            ("LengthB", j.length_b, MAX_LENGTH, "m"),
-            ("FrequencyHz", j.frequency_hz, MAX_FREQUENCY, "Hz"),
-            ("DampingRatio", j.damping_ratio, MAX_FREQUENCY, ""),
-            ("Ratio", j.ratio, MAX_RATIO, ""),
-            ("CorrectionFactor", j.correction_factor, MAX_FREQUENCY, ""),
+            ("ReferenceAngle", j.reference_angle, RANGE.max_angle, "rad"),
+            ("AngularOffset", j.angular_offset, RANGE.max_angle, "rad"),
+            ("MotorSpeed", j.motor_speed, RANGE.max_speed, "per s"),
+            ("MaxMotorTorque", j.max_motor_torque, RANGE.max_force, "N m"),
+            ("MaxMotorForce", j.max_motor_force, RANGE.max_force, "N"),
+            ("MaxForce", j.max_force, RANGE.max_force, "N"),
+            ("MaxTorque", j.max_torque, RANGE.max_force, "N m"),
+            ("Length", j.length, RANGE.max_length, "m"),
+            ("MaxLength", j.max_length, RANGE.max_length, "m"),
+            ("LengthA", j.length_a, RANGE.max_length, "m"),
+            ("LengthB", j.length_b, RANGE.max_length, "m"),
+            ("FrequencyHz", j.frequency_hz, RANGE.max_frequency, "Hz"),
+            ("DampingRatio", j.damping_ratio, RANGE.max_frequency, ""),
+            ("Ratio", j.ratio, RANGE.max_ratio, ""),
+            ("CorrectionFactor", j.correction_factor, RANGE.max_frequency, ""),
         ):
             check.magnitude(name, v, bound, unit)
-        if j.kind in ("prismatic", "line", "wheel") and check.passed and not math.hypot(*j.local_axis_a) >= MIN_AXIS:
-            check.fail(f"LocalAxisA is shorter than {MIN_AXIS:g} m: Box2D 2.3 cannot normalise it")
+        if j.kind in ("prismatic", "line", "wheel") and check.passed and not math.hypot(*j.local_axis_a) >= RANGE.min_axis:
+            check.fail(f"LocalAxisA is shorter than {RANGE.min_axis:g} m: Box2D 2.3 cannot normalise it")
         if j.kind in ("revolute", "friction", "motor"):
-            lever = LEVER_2X2
+            lever = RANGE.max_lever_revolute
         elif j.kind in ("prismatic", "weld"):
-            lever = LEVER_3X3
+            lever = RANGE.max_lever
         else:
             lever = 0.0
         if check.passed and j.kind != "gear":
             self.anchor_check(check, "LocalAnchorA", j.body_a, j.local_anchor_a, lever)
             self.anchor_check(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
+        if check.passed and RANGE.prismatic_lever_to_b and j.kind == "prismatic":
+            a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
+            b_on_a = _vec(a.GetLocalPoint(b.GetWorldPoint(j.local_anchor_b)))
+            self.anchor_check(check, "LocalAnchorB, as body A's lever", j.body_a, b_on_a, lever)
         return check
+
+    def starting_violation(self, j: Joint) -> float:
+        """How far the joint starts from satisfied, in metres, along what its kind holds
+        rigidly, with its bodies as created (what the load warning joint-starts-violated
+        measures)."""
+        a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
+        pa, pb = a.GetWorldPoint(j.local_anchor_a), b.GetWorldPoint(j.local_anchor_b)
+        d = (pb[0] - pa[0], pb[1] - pa[1])
+        if j.kind in ("revolute", "weld"):
+            return math.hypot(*d)
+        if j.kind in ("prismatic", "line", "wheel"):
+            axis = a.GetWorldVector(j.local_axis_a)
+            length = math.hypot(axis[0], axis[1])
+            ux, uy = axis[0] / length, axis[1] / length
+            across, along = abs(ux * d[1] - uy * d[0]), ux * d[0] + uy * d[1]
+            beyond = max(j.lower_limit - along, along - j.upper_limit, 0.0) if j.enable_limit and j.kind != "wheel" else 0.0
+            return max(across, beyond)
+        if j.kind == "distance":
+            return 0.0 if j.frequency_hz > 0 else abs(math.hypot(*d) - j.length)
+        if j.kind == "rope":
+            return max(math.hypot(*d) - j.max_length, 0.0)
+        if j.kind == "pulley":
+            ga, gb = j.ground_anchor_a, j.ground_anchor_b
+            now = math.hypot(pa[0] - ga[0], pa[1] - ga[1]) + j.ratio * math.hypot(pb[0] - gb[0], pb[1] - gb[1])
+            return abs(now - (j.length_a + j.ratio * j.length_b))
+        return 0.0  # springs, motors and friction hold nothing in place
+
+    def violation_check(self, index: int, j: Joint, check: Check) -> None:
+        """What the sweep of docs/working-range.md measured: 2.x holds any one joint that
+        starts far from satisfied, but its position solver can tear a body that two such
+        joints pull to NaN. The first such joint on a body is built, the later ones are not."""
+        violation = self.starting_violation(j)
+        if not violation > RANGE.max_pulled_violation:
+            return
+        for body in (j.body_a, j.body_b):
+            if body in self.pulled:
+                check.fail(f"it starts {violation:.9g} m from satisfied, and joint {self.pulled[body]} already pulls body {body} from further than {RANGE.max_pulled_violation:g} m: two such joints on one body lie beyond Box2D 2.3's working range (its position solver can tear the body to NaN)")
+                return
+        for body in (j.body_a, j.body_b):
+            if self.built.bodies[body].type == B.b2_dynamicBody:
+                self.pulled[body] = index
 
     def wheel_hertz(self, index: int, j: Joint, hertz: float) -> float:
         """Box2D 2.3's wheel joint without a spring (0 Hz) reads its lever arms before it
@@ -392,6 +424,8 @@ class _Build:
             self.report("joint-self-reference", "joint", index, j.name, "it connects a body to itself; joint skipped")
             return
         check = self.joint_check(j)
+        if check.passed and j.kind != "gear":
+            self.violation_check(index, j, check)
         if not check.passed:
             self.beyond(check, "joint", index, j.name)
             return

@@ -1000,6 +1000,35 @@ fn nextafterf(x: f32, toward: f32) -> f32 {
     }
 }
 
+const ENGINES: [(&str, box2scene::Engine); 4] = [
+    ("box2d-2.3", box2scene::Engine::Box2d23),
+    ("box2d-2.4", box2scene::Engine::Box2d24),
+    ("box2d-3.1", box2scene::Engine::Box2d31),
+    ("box2d-3.2", box2scene::Engine::Box2d32),
+];
+
+/// The library's working range of an engine version (`"box2d-2.3"` as pybox2d holds it,
+/// `"box2d-3.1"` as pyb2d3 does): every bound by its C field's name, the floats as the
+/// library holds them (f32, widened exactly).
+#[pyfunction]
+fn working_range<'py>(py: Python<'py>, engine: &str) -> PyResult<Bound<'py, PyDict>> {
+    let Some((_, engine)) = ENGINES.iter().find(|(name, _)| *name == engine) else {
+        let names: Vec<&str> = ENGINES.iter().map(|(n, _)| *n).collect();
+        return Err(PyValueError::new_err(format!(
+            "unknown engine {engine:?} (one of {})",
+            names.join(", ")
+        )));
+    };
+    let r = engine.working_range();
+    let d = PyDict::new(py);
+    for (name, value) in r.bounds() {
+        d.set_item(name, f64::from(value))?;
+    }
+    d.set_item("friction_at_anchors", r.friction_at_anchors)?;
+    d.set_item("prismatic_lever_to_b", r.prismatic_lever_to_b)?;
+    Ok(d)
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NativeScene>()?;
@@ -1012,5 +1041,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sinf, m)?)?;
     m.add_function(wrap_pyfunction!(atan2f, m)?)?;
     m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
+    m.add_function(wrap_pyfunction!(working_range, m)?)?;
     Ok(())
 }

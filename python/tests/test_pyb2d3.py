@@ -349,3 +349,56 @@ def test_a_capture_reports_what_has_no_form():
     assert len(scene.bodies) == 1 and scene.joints == ()
     with pytest.raises(box2scene.Error):
         b2s3.capture_world(world, [body, body])
+
+
+def _ball_on(kind, radius, body_b, **joint):
+    """A static body A at the origin and a dynamic ball of ``radius`` (body B's changes in
+    ``body_b``), joined by a joint of ``kind``."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=radius), density=1.0)
+    a = m.body("static", fixtures=())
+    b = m.body(fixtures=(ball,), **body_b)
+    m.joint(kind, a, b, **joint)
+    return m.finish()
+
+
+def test_an_inertia_below_the_tables_bound_is_refused():
+    """The builder's own bound was 1e-20 kg m^2; the library's table for v3.1, which the C
+    adapter reads too, has 1e-12: a 1 m ball at 1e-16 on a prismatic joint is refused."""
+    world, built = build(_ball_on("prismatic", 1.0, dict(angle=0.001, inertia=1e-16)))
+    assert built.bodies[1] is None
+    assert ("beyond-box2d-range", "body", 1) in codes(built.reports)
+    step(world)
+
+
+def test_a_rope_with_default_anchors_on_a_small_ball_is_built_and_holds():
+    """The builder's own lever bound was 5 radii of gyration; the table's is 75: a rope with
+    the format's default anchors (1 m out) on a 0.25 m ball, 5.7 radii, is built."""
+    world, built = build(_ball_on("rope", 0.25, dict(position=(-2.0, -1.0)), max_length=1.0))
+    assert built.joints[0] is not None and built.reports == []
+    step(world)
+    p = built.bodies[1].position
+    assert math.hypot(p.x + 1.0, p.y) <= 2.1
+
+
+def test_friction_anchors_play_no_part_in_the_range():
+    """v3.1's friction acts at the body origins (the table's friction_at_anchors): anchors
+    far out on a small ball are reported lost, not refused as levers."""
+    world, built = build(_ball_on("friction", 0.25, {}, local_anchor_b=(3.0, 0.0), max_force=1.0, max_torque=1.0))
+    assert built.joints[0] is not None
+    assert ("beyond-box2d-range", "joint", 0) not in codes(built.reports)
+
+
+def test_a_prismatic_lever_to_body_bs_anchor_is_refused():
+    """Body B's anchor 25 m along the axis from a 0.2 m ball (177 radii of gyration) is body
+    A's lever too (the table's prismatic_lever_to_b), as in the C adapter."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=0.2), density=1.0)
+    a = m.body(fixtures=(ball,))
+    b = m.body(position=(25.0, 0.0), fixtures=(ball,))
+    m.joint("prismatic", a, b, local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0), local_axis_a=(1.0, 0.0))
+    world, built = build(m.finish())
+    assert built.joints[0] is None
+    assert codes(built.reports) == [("beyond-box2d-range", "joint", 0)]
+    assert "as body A's lever" in built.reports[0].message
+    step(world)

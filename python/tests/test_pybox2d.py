@@ -167,3 +167,58 @@ def test_a_capture_refuses_a_body_named_twice():
     with pytest.raises(box2scene.Error) as raised:
         b2s2.capture_world(world, [body, body])
     assert raised.value.code == "invalid-argument"
+
+
+def _balls(radius, *bodies):
+    """A scene maker with a ball fixture of ``radius`` and bodies (kind, position) holding it
+    (a static one none)."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=radius), density=1.0)
+    made = [m.body(kind, position=position, fixtures=() if kind == "static" else (ball,), **changes) for kind, position, changes in bodies]
+    return m, made
+
+
+def test_an_inertia_below_the_tables_bound_is_refused():
+    """The builder's own bound was 1e-20 kg m^2; the library's table (2.4's measurements,
+    which 2.3's solver shares) has 1e-12."""
+    m, (a, b) = _balls(1.0, ("static", (0.0, 0.0), {}), ("dynamic", (0.0, 0.0), dict(angle=0.001, inertia=1e-16)))
+    m.joint("prismatic", a, b)
+    world, built = build(m.finish())
+    assert built.bodies[1] is None
+    assert ("beyond-box2d-range", "body", 1) in codes(built.reports)
+    step(world)
+
+
+def test_a_weld_35_radii_out_is_built():
+    """The builder's own 3x3 lever bound was 30 radii of gyration; the table's is 75 (the
+    sweep's farthest that holds, 71): a weld 5 m out on a 0.2 m ball (35 radii) holds."""
+    m, (a, b) = _balls(0.2, ("dynamic", (0.0, 0.0), {}), ("dynamic", (5.0, 0.0), {}))
+    m.joint("weld", a, b, local_anchor_a=(0.0, 0.0), local_anchor_b=(-5.0, 0.0))
+    world, built = build(m.finish())
+    assert built.joints[0] is not None and built.reports == []
+    step(world)
+    assert all(finite(*state(body)) for body in built.bodies)
+
+
+def test_a_second_joint_that_starts_violated_on_a_body_is_left_out():
+    """The table's max_pulled_violation, which the builder did not check: 2.x's position
+    solver can tear a body that two joints starting far from satisfied pull to NaN."""
+    m, (a, b, c) = _balls(0.5, ("static", (0.0, 0.0), {}), ("dynamic", (2.0, 0.0), {}), ("static", (0.0, 4.0), {}))
+    m.joint("revolute", a, b, local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    m.joint("revolute", c, b, local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    world, built = build(m.finish())
+    assert built.joints[0] is not None and built.joints[1] is None
+    assert codes(built.reports) == [("beyond-box2d-range", "joint", 1)]
+    assert "already pulls body 1" in built.reports[0].message
+    step(world)
+
+
+def test_a_prismatic_lever_to_body_bs_anchor_is_refused():
+    """Body B's anchor 25 m along the axis from a 0.2 m ball (177 radii) is body A's lever
+    too (the table's prismatic_lever_to_b), as in the 2.4 adapter."""
+    m, (a, b) = _balls(0.2, ("dynamic", (0.0, 0.0), {}), ("dynamic", (25.0, 0.0), {}))
+    m.joint("prismatic", a, b, local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0), local_axis_a=(1.0, 0.0))
+    world, built = build(m.finish())
+    assert built.joints[0] is None
+    assert codes(built.reports) == [("beyond-box2d-range", "joint", 0)]
+    assert "as body A's lever" in built.reports[0].message

@@ -1,7 +1,7 @@
 //! The C API: every export, each inside one panic boundary (`guard`), one submodule a
 //! concern (`load`: loading and the scene's view; `write`: writing and drawing, and the
 //! texts they hand out; `build`: the builder and the records' defaults; `library`: its
-//! version and the codes' names), which the header lists in that order of their names
+//! version and the codes' names; `plan`: what each engine version can be given), which the header lists in that order of their names
 //! (cbindgen's). This module holds what they share: the error record, the panic boundary,
 //! the checks of arguments. This is the only part of the crate with `unsafe`.
 //!
@@ -19,11 +19,13 @@ use crate::scene::{Scene, Str};
 mod build;
 mod library;
 mod load;
+mod plan;
 mod write;
 
 pub use build::*;
 pub use library::*;
 pub use load::*;
+pub use plan::*;
 pub use write::*;
 
 // SAFETY: a `Str` points into the string pool of the scene that holds it, which is never

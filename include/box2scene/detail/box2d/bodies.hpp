@@ -44,25 +44,25 @@ inline void WorldBuilder::make_body(uint32_t index) {
 }
 
 inline RangeCheck WorldBuilder::body_check(const b2s_body& body) const {
-    namespace range = working_range;
+    const b2s_working_range& range = working_range();
     RangeCheck check;
-    check.vector("Position", body.position, range::length, "m");
-    check.magnitude("Angle", body.angle, range::angle, "rad");
-    check.vector("LinearVelocity", body.linear_velocity, range::speed, "m/s");
-    check.magnitude("AngularVelocity", body.angular_velocity, range::speed, "rad/s");
-    check.magnitude("LinearDamping", body.linear_damping, range::damping, "1/s");
-    check.magnitude("AngularDamping", body.angular_damping, range::damping, "1/s");
-    check.magnitude("GravityScale", body.gravity_scale, range::gravity_scale, "");
+    check.vector("Position", body.position, range.max_length, "m");
+    check.magnitude("Angle", body.angle, range.max_angle, "rad");
+    check.vector("LinearVelocity", body.linear_velocity, range.max_speed, "m/s");
+    check.magnitude("AngularVelocity", body.angular_velocity, range.max_speed, "rad/s");
+    check.magnitude("LinearDamping", body.linear_damping, range.max_damping, "1/s");
+    check.magnitude("AngularDamping", body.angular_damping, range.max_damping, "1/s");
+    check.magnitude("GravityScale", body.gravity_scale, range.max_gravity_scale, "");
     if (body.kind == B2S_BODY_KIND_DYNAMIC) {
         b2Vec2 gravity = body.gravity_scale * world_.GetGravity();
         check.vector("GravityScale times the world's gravity", to_b2s(gravity),
-                     range::acceleration, "m/s^2");
+                     range.max_acceleration, "m/s^2");
     }
     if (body.mass_data.center_given) {
-        check.vector("MassData Center", body.mass_data.center, range::length, "m");
+        check.vector("MassData Center", body.mass_data.center, range.max_length, "m");
     }
     if (check.passed()) {
-        check.vector("its placed Position", to_b2s(placed(body.position)), range::length,
+        check.vector("its placed Position", to_b2s(placed(body.position)), range.max_length,
                      "m");
     }
     return check;
@@ -107,13 +107,13 @@ inline b2MassData WorldBuilder::predicted_mass(const b2s_body& body, RangeCheck&
     // MassData then moves it again: a centre made NaN by a subnormal mass (0 * infinity)
     // would stay in the velocity.
     check.vector("with fixtures that have a density, its centre of mass",
-                 to_b2s(mass.center), working_range::length, "m");
+                 to_b2s(mass.center), working_range().max_length, "m");
     mass = with_mass_data(mass, body);
-    check.zero_or_within("its mass", mass.mass, working_range::mass_min,
-                         working_range::mass_max, "kg");
-    check.vector("its centre of mass", to_b2s(mass.center), working_range::length, "m");
+    check.zero_or_within("its mass", mass.mass, working_range().min_mass,
+                         working_range().max_mass, "kg");
+    check.vector("its centre of mass", to_b2s(mass.center), working_range().max_length, "m");
     check.zero_or_within("its inertia about the centre of mass", mass.I,
-                         working_range::inertia_min, working_range::inertia_max, "kg m^2");
+                         working_range().min_inertia, working_range().max_inertia, "kg m^2");
     return mass;
 }
 

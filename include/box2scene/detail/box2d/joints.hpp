@@ -120,12 +120,12 @@ inline float WorldBuilder::starting_violation(const b2s_joint& joint) const {
 
 /// What the sweep of docs/working-range.md measured: Box2D 2.4 holds any one joint that
 /// starts up to 50 m from satisfied, but a body pulled by two joints that start more
-/// than working_range::violation from satisfied can be torn to NaN by its position
+/// than working_range().max_pulled_violation from satisfied can be torn to NaN by its position
 /// solver. The first such joint on a body is built, the later ones are not.
 inline RangeCheck WorldBuilder::violation_check(const b2s_joint& joint) {
     RangeCheck check;
     float violation = starting_violation(joint);
-    if (!(violation > working_range::violation)) {
+    if (!(violation > working_range().max_pulled_violation)) {
         return check;
     }
     for (uint32_t body : {joint.body_a, joint.body_b}) {
@@ -133,7 +133,7 @@ inline RangeCheck WorldBuilder::violation_check(const b2s_joint& joint) {
             check.fail("it starts " + decimal(violation) + " m from satisfied, and joint " +
                        std::to_string(pulled_[body] - view_.joints) + " already pulls body " +
                        std::to_string(body) + " from further than " +
-                       rounded(working_range::violation) +
+                       rounded(working_range().max_pulled_violation) +
                        " m: two such joints on one body lie beyond Box2D 2.4's working "
                        "range (its position solver can tear the body to NaN)");
             return check;
@@ -150,31 +150,31 @@ inline RangeCheck WorldBuilder::violation_check(const b2s_joint& joint) {
 /// The fields Box2D gets of the joint's kind, then how hard its bodies are to move at
 /// its anchors.
 inline RangeCheck WorldBuilder::joint_check(const b2s_joint& joint) const {
-    namespace range = working_range;
+    const b2s_working_range& range = working_range();
     RangeCheck check;
     bool axis = false, spring = false, forces = false;
     b2s_vec2 anchor_a = joint.local_anchor_a, anchor_b = joint.local_anchor_b;
     switch (joint.kind) {
     case B2S_JOINT_KIND_REVOLUTE:
-        check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
-        check.magnitude("LowerAngle", joint.lower_limit, range::angle, "rad");
-        check.magnitude("UpperAngle", joint.upper_limit, range::angle, "rad");
-        check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "rad/s");
-        check.magnitude("MaxMotorTorque", joint.max_motor_torque, range::force, "N m");
+        check.magnitude("ReferenceAngle", joint.reference_angle, range.max_angle, "rad");
+        check.magnitude("LowerAngle", joint.lower_limit, range.max_angle, "rad");
+        check.magnitude("UpperAngle", joint.upper_limit, range.max_angle, "rad");
+        check.magnitude("MotorSpeed", joint.motor_speed, range.max_speed, "rad/s");
+        check.magnitude("MaxMotorTorque", joint.max_motor_torque, range.max_force, "N m");
         break;
     case B2S_JOINT_KIND_PRISMATIC:
-        check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
-        check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "m/s");
-        check.magnitude("MaxMotorForce", joint.max_motor_force, range::force, "N");
+        check.magnitude("ReferenceAngle", joint.reference_angle, range.max_angle, "rad");
+        check.magnitude("MotorSpeed", joint.motor_speed, range.max_speed, "m/s");
+        check.magnitude("MaxMotorForce", joint.max_motor_force, range.max_force, "N");
         [[fallthrough]];
     case B2S_JOINT_KIND_LINE: // its motor stays off
         axis = true;
-        check.magnitude("LowerTranslation", joint.lower_limit, range::length, "m");
-        check.magnitude("UpperTranslation", joint.upper_limit, range::length, "m");
+        check.magnitude("LowerTranslation", joint.lower_limit, range.max_length, "m");
+        check.magnitude("UpperTranslation", joint.upper_limit, range.max_length, "m");
         break;
     case B2S_JOINT_KIND_DISTANCE:
         spring = true;
-        check.magnitude("Length", joint.length, range::length, "m");
+        check.magnitude("Length", joint.length, range.max_length, "m");
         if (joint.frequency_hz > 0.0f && massless(joint.body_a) && massless(joint.body_b)) {
             // Its upper length, FLT_MAX, gives Box2D's solver an infinite bias that
             // only a body with mass multiplies into something other than NaN.
@@ -183,53 +183,53 @@ inline RangeCheck WorldBuilder::joint_check(const b2s_joint& joint) const {
         }
         break;
     case B2S_JOINT_KIND_ROPE:
-        check.magnitude("MaxLength", joint.max_length, range::length, "m");
+        check.magnitude("MaxLength", joint.max_length, range.max_length, "m");
         break;
     case B2S_JOINT_KIND_PULLEY:
-        check.vector("GroundAnchorA", joint.ground_anchor_a, range::length, "m");
-        check.vector("GroundAnchorB", joint.ground_anchor_b, range::length, "m");
-        check.magnitude("LengthA", joint.length_a, range::length, "m");
-        check.magnitude("LengthB", joint.length_b, range::length, "m");
-        check.magnitude("Ratio", joint.ratio, range::ratio, "");
+        check.vector("GroundAnchorA", joint.ground_anchor_a, range.max_length, "m");
+        check.vector("GroundAnchorB", joint.ground_anchor_b, range.max_length, "m");
+        check.magnitude("LengthA", joint.length_a, range.max_length, "m");
+        check.magnitude("LengthB", joint.length_b, range.max_length, "m");
+        check.magnitude("Ratio", joint.ratio, range.max_ratio, "");
         break;
     case B2S_JOINT_KIND_WHEEL:
         axis = spring = true;
-        check.magnitude("MotorSpeed", joint.motor_speed, range::speed, "rad/s");
-        check.magnitude("MaxMotorTorque", joint.max_motor_torque, range::force, "N m");
+        check.magnitude("MotorSpeed", joint.motor_speed, range.max_speed, "rad/s");
+        check.magnitude("MaxMotorTorque", joint.max_motor_torque, range.max_force, "N m");
         break;
     case B2S_JOINT_KIND_WELD:
         spring = true;
-        check.magnitude("ReferenceAngle", joint.reference_angle, range::angle, "rad");
+        check.magnitude("ReferenceAngle", joint.reference_angle, range.max_angle, "rad");
         break;
     case B2S_JOINT_KIND_FRICTION: forces = true; break;
     case B2S_JOINT_KIND_MOTOR:
         forces = true;
         anchor_a = joint.linear_offset; // body B's origin, held there in A's frame
         anchor_b = b2s_vec2{0.0f, 0.0f};
-        check.vector("LinearOffset", joint.linear_offset, range::length, "m");
-        check.magnitude("AngularOffset", joint.angular_offset, range::angle, "rad");
+        check.vector("LinearOffset", joint.linear_offset, range.max_length, "m");
+        check.magnitude("AngularOffset", joint.angular_offset, range.max_angle, "rad");
         check.within("CorrectionFactor", joint.correction_factor, 0.0f, 1.0f, "");
         break;
     default: return check; // not created: reported by make_joint
     }
     if (joint.kind != B2S_JOINT_KIND_MOTOR) {
-        check.vector("LocalAnchorA", joint.local_anchor_a, range::length, "m");
-        check.vector("LocalAnchorB", joint.local_anchor_b, range::length, "m");
+        check.vector("LocalAnchorA", joint.local_anchor_a, range.max_length, "m");
+        check.vector("LocalAnchorB", joint.local_anchor_b, range.max_length, "m");
     }
     if (axis) {
-        check.vector("LocalAxisA", joint.local_axis_a, range::length, "m");
+        check.vector("LocalAxisA", joint.local_axis_a, range.max_length, "m");
         check.at_least("The length of LocalAxisA",
                        b2Vec2(joint.local_axis_a.x, joint.local_axis_a.y).Length(),
-                       range::min_axis, "m");
+                       range.min_axis, "m");
     }
     if (spring) {
-        check.magnitude("FrequencyHz", joint.frequency_hz, range::frequency, "Hz");
-        check.magnitude("DampingRatio", joint.damping_ratio, range::frequency, "");
+        check.magnitude("FrequencyHz", joint.frequency_hz, range.max_frequency, "Hz");
+        check.magnitude("DampingRatio", joint.damping_ratio, range.max_frequency, "");
         check_stiffness(joint, check);
     }
     if (forces) {
-        check.magnitude("MaxForce", joint.max_force, range::force, "N");
-        check.magnitude("MaxTorque", joint.max_torque, range::force, "N m");
+        check.magnitude("MaxForce", joint.max_force, range.max_force, "N");
+        check.magnitude("MaxTorque", joint.max_torque, range.max_force, "N m");
     }
     if (check.passed()) {
         check_anchors(joint, anchor_a, anchor_b, check);
@@ -256,17 +256,17 @@ inline void WorldBuilder::check_stiffness(const b2s_joint& joint, RangeCheck& ch
     default:
         b2LinearStiffness(stiffness, damping, joint.frequency_hz, joint.damping_ratio, a, b);
     }
-    if (stiffness != 0.0f && !(stiffness >= working_range::min_stiffness)) {
+    if (stiffness != 0.0f && !(stiffness >= working_range().min_stiffness)) {
         check.fail("FrequencyHz " + decimal(joint.frequency_hz) + " gives a stiffness of " +
                    decimal(stiffness) + (angular ? " N m/rad" : " N/m") +
                    " with these bodies, beyond Box2D 2.4's working range (0 or at least " +
-                   rounded(working_range::min_stiffness) + ")");
+                   rounded(working_range().min_stiffness) + ")");
     }
 }
 
 /// Box2D's joint solvers invert matrices of 1/m + r^2/I at the anchor (r from the
-/// centre of mass): past working_range::compliance they overflow, and past lever_2x2
-/// (revolute, friction, motor) or lever_3x3 (prismatic, weld) radii of gyration their
+/// centre of mass): past max_compliance they overflow, and past max_lever_revolute
+/// (revolute, friction, motor) or max_lever (prismatic, weld) radii of gyration their
 /// determinants lose every bit to cancellation (docs/working-range.md). A prismatic
 /// joint's lever on body A reaches body B's anchor.
 inline void WorldBuilder::check_anchors(const b2s_joint& joint, b2s_vec2 anchor_a, b2s_vec2 anchor_b,
@@ -276,14 +276,14 @@ inline void WorldBuilder::check_anchors(const b2s_joint& joint, b2s_vec2 anchor_
     switch (joint.kind) {
     case B2S_JOINT_KIND_REVOLUTE:
     case B2S_JOINT_KIND_FRICTION:
-    case B2S_JOINT_KIND_MOTOR: lever = working_range::lever_2x2; break;
+    case B2S_JOINT_KIND_MOTOR: lever = working_range().max_lever_revolute; break;
     case B2S_JOINT_KIND_PRISMATIC:
-    case B2S_JOINT_KIND_WELD: lever = working_range::lever_3x3; break;
+    case B2S_JOINT_KIND_WELD: lever = working_range().max_lever; break;
     default: break;
     }
     const b2MassData& mass_a = masses_[joint.body_a];
     float lever_a = b2Distance(a, mass_a.center);
-    if (joint.kind == B2S_JOINT_KIND_PRISMATIC) {
+    if (working_range().prismatic_lever_to_b && joint.kind == B2S_JOINT_KIND_PRISMATIC) {
         const b2Body* body_a = built_.bodies[joint.body_a];
         b2Vec2 b_on_a = body_a->GetLocalPoint(built_.bodies[joint.body_b]->GetWorldPoint(b));
         lever_a = std::max(lever_a, b2Distance(b_on_a, mass_a.center));
@@ -305,10 +305,10 @@ inline void WorldBuilder::check_anchor(const char* field, uint32_t body, float r
                         " m from the centre of mass of body " + std::to_string(body) +
                         " (mass " + decimal(mass.mass) + " kg, inertia " +
                         decimal(mass.I) + " kg m^2), ";
-    if (!(compliance <= working_range::compliance)) {
+    if (!(compliance <= working_range().max_compliance)) {
         check.fail(where + "where 1/m + r^2/I = " + rounded(compliance) +
                    " 1/kg lies beyond Box2D 2.4's working range (at most " +
-                   rounded(working_range::compliance) + " 1/kg)");
+                   rounded(working_range().max_compliance) + " 1/kg)");
     } else if (lever > 0.0f && mass.I > 0.0f &&
                !(r <= lever * std::sqrt(mass.I / mass.mass))) {
         check.fail(where + rounded(r / std::sqrt(mass.I / mass.mass)) +
@@ -606,7 +606,7 @@ inline void WorldBuilder::make_gear(uint32_t index) {
         return;
     }
     RangeCheck check;
-    check.magnitude("Ratio", joint.ratio, working_range::ratio, "");
+    check.magnitude("Ratio", joint.ratio, working_range().max_ratio, "");
     if (!within_range(check, "joint", index, joint.name)) {
         return;
     }

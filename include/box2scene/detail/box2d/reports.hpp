@@ -154,7 +154,7 @@ private:
 
 inline RangeCheck gravity_check(b2s_vec2 gravity) {
     RangeCheck check;
-    check.vector("Gravity", gravity, working_range::acceleration, "m/s^2");
+    check.vector("Gravity", gravity, working_range().max_acceleration, "m/s^2");
     return check;
 }
 

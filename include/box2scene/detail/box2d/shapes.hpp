@@ -74,7 +74,7 @@ inline bool WorldBuilder::vertices_of(const b2s_shape& shape, std::vector<b2Vec2
 /// The points Box2D gets: every vertex, a circle's centre and radius, the centroid and
 /// the ghost vertices where they are used.
 inline RangeCheck WorldBuilder::shape_check(const b2s_shape& shape, const std::vector<b2Vec2>& points) {
-    using working_range::length;
+    const float length = working_range().max_length;
     RangeCheck check;
     bool edge = shape.kind == B2S_SHAPE_KIND_EDGE;
     if (shape.kind == B2S_SHAPE_KIND_CIRCLE) {
@@ -185,9 +185,9 @@ inline bool WorldBuilder::shape_created(const b2s_fixture& fixture) const {
 
 inline RangeCheck WorldBuilder::fixture_check(const b2s_fixture& fixture) {
     RangeCheck check;
-    check.magnitude("Density", fixture.density, working_range::density, "kg/m^2");
-    check.magnitude("Friction", fixture.friction, working_range::friction, "");
-    check.magnitude("Restitution", fixture.restitution, working_range::friction, "");
+    check.magnitude("Density", fixture.density, working_range().max_density, "kg/m^2");
+    check.magnitude("Friction", fixture.friction, working_range().max_friction, "");
+    check.magnitude("Restitution", fixture.restitution, working_range().max_friction, "");
     return check;
 }
 

@@ -139,7 +139,7 @@ inline Built WorldBuilder::run() {
                "the placement (" + decimal(placement_.p.x) + ", " + decimal(placement_.p.y) +
                    ") turned by (" + decimal(placement_.q.c) + ", " +
                    decimal(placement_.q.s) + ") is not finite, not within +-" +
-                   decimal(working_range::length) +
+                   decimal(working_range().max_length) +
                    " m or not a normalised rotation; nothing was built");
         return std::move(built_);
     }
@@ -201,8 +201,8 @@ inline bool WorldBuilder::placement_valid() const {
     float qq = t.q.c * t.q.c + t.q.s * t.q.s;
     return std::isfinite(t.p.x) && std::isfinite(t.p.y) && std::isfinite(t.q.c) &&
            std::isfinite(t.q.s) && std::fabs(qq - 1.0f) < 1e-4f &&
-           std::fabs(t.p.x) <= working_range::length &&
-           std::fabs(t.p.y) <= working_range::length;
+           std::fabs(t.p.x) <= working_range().max_length &&
+           std::fabs(t.p.y) <= working_range().max_length;
 }
 
 /// A point of the scene's world frame where the placement puts it.

@@ -84,31 +84,31 @@ static bool b2s3_predicted_mass(const b2s3_builder* b, const b2s_body* body, b2s
                          B2S3_ENGINE "'s float arithmetic (which asserts)");
     }
     b2s3_vector(check, "its centre of mass", b2s3_to_b2s(computed.center),
-                B2S3_LIMIT(MAX_LENGTH), "m");
+                b2s3_range()->max_length, "m");
     b2MassData final_mass = b2s3_final_mass(computed, body);
-    b2s3_zero_or_within(check, "its mass", final_mass.mass, B2S3_LIMIT(MIN_MASS),
-                        B2S3_LIMIT(MAX_MASS), "kg");
+    b2s3_zero_or_within(check, "its mass", final_mass.mass, b2s3_range()->min_mass,
+                        b2s3_range()->max_mass, "kg");
     b2s3_vector(check, "its centre of mass", b2s3_to_b2s(final_mass.center),
-                B2S3_LIMIT(MAX_LENGTH), "m");
+                b2s3_range()->max_length, "m");
     if (final_mass.rotationalInertia < 0.0f) {
         b2s3_fail(check, "its MassData leaves a negative inertia about the centre of mass "
                          "(Inertia < Mass * |Center|^2), which " B2S3_ENGINE " asserts against");
     }
     b2s3_zero_or_within(check, "its inertia about the centre of mass",
-                        final_mass.rotationalInertia, B2S3_LIMIT(MIN_INERTIA),
-                        B2S3_LIMIT(MAX_INERTIA), "kg m^2");
+                        final_mass.rotationalInertia, b2s3_range()->min_inertia,
+                        b2s3_range()->max_inertia, "kg m^2");
     *out = final_mass;
     return true;
 }
 
 static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
     b2s3_check check = {{0}};
-    b2s3_vector(&check, "Position", body->position, B2S3_LIMIT(MAX_LENGTH), "m");
-    b2s3_magnitude(&check, "Angle", body->angle, B2S3_LIMIT(MAX_ANGLE), "rad");
+    b2s3_vector(&check, "Position", body->position, b2s3_range()->max_length, "m");
+    b2s3_magnitude(&check, "Angle", body->angle, b2s3_range()->max_angle, "rad");
     if (body->kind != B2S_BODY_KIND_STATIC) {
-        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, B2S3_LIMIT(MAX_SPEED),
+        b2s3_vector(&check, "LinearVelocity", body->linear_velocity, b2s3_range()->max_speed,
                     "m/s");
-        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, B2S3_LIMIT(MAX_SPEED),
+        b2s3_magnitude(&check, "AngularVelocity", body->angular_velocity, b2s3_range()->max_speed,
                        "rad/s");
         float limit = b2World_GetMaximumLinearSpeed(b->world);
         float speed = b2Length(b2s3_to_b2(body->linear_velocity));
@@ -120,22 +120,22 @@ static b2s3_check b2s3_body_check(const b2s3_builder* b, const b2s_body* body) {
                       (double)limit);
         }
     }
-    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, B2S3_LIMIT(MAX_DAMPING), "1/s");
-    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, B2S3_LIMIT(MAX_DAMPING),
+    b2s3_magnitude(&check, "LinearDamping", body->linear_damping, b2s3_range()->max_damping, "1/s");
+    b2s3_magnitude(&check, "AngularDamping", body->angular_damping, b2s3_range()->max_damping,
                    "1/s");
-    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, B2S3_LIMIT(MAX_GRAVITY_SCALE), "");
+    b2s3_magnitude(&check, "GravityScale", body->gravity_scale, b2s3_range()->max_gravity_scale, "");
     if (body->kind == B2S_BODY_KIND_DYNAMIC && b2s3_passed(&check)) {
         b2Vec2 gravity = b2MulSV(body->gravity_scale, b2World_GetGravity(b->world));
         b2s3_vector(&check, "GravityScale times the world's gravity", b2s3_to_b2s(gravity),
-                    B2S3_LIMIT(MAX_ACCELERATION), "m/s^2");
+                    b2s3_range()->max_acceleration, "m/s^2");
     }
     if (body->mass_data.center_given) {
-        b2s3_vector(&check, "MassData Center", body->mass_data.center, B2S3_LIMIT(MAX_LENGTH),
+        b2s3_vector(&check, "MassData Center", body->mass_data.center, b2s3_range()->max_length,
                     "m");
     }
     if (b2s3_passed(&check)) {
         b2Vec2 placed = b2TransformPoint(b->placement, b2s3_to_b2(body->position));
-        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), B2S3_LIMIT(MAX_LENGTH),
+        b2s3_vector(&check, "its placed Position", b2s3_to_b2s(placed), b2s3_range()->max_length,
                     "m");
     }
     return check;
@@ -180,11 +180,9 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
                   b2MulRot(b->placement.q, rotation));
     if (body->kind != B2S_BODY_KIND_STATIC) {
         def.linearVelocity = b2s3_origin_velocity_placed(b, body);
-        /* v3 does not turn a body whose rotation is fixed: v3.1 ignores an angular velocity
-         * set on one, and v3.2's lock does not stop the one it starts with. A spin kept
-         * under the lock throws what a joint ties to it off (it killed v3.1 in a generated
-         * level: box2d3_working_range_test). */
-        def.angularVelocity = body->fixed_rotation ? 0.0f : body->angular_velocity;
+        /* A body whose rotation is fixed keeps turning at the rate it starts with in 2.x and
+         * v3.1 (no torque or impulse changes it); v3.2's lock stops it (reported). */
+        def.angularVelocity = body->angular_velocity;
     }
     def.linearDamping = b2s3_damping(b, index, body, body->linear_damping, "LinearDamping");
     def.angularDamping = b2s3_damping(b, index, body, body->angular_damping, "AngularDamping");
@@ -214,6 +212,14 @@ static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_b
                     "its Name is longer than the %u bytes " B2S3_ENGINE " keeps of a name; "
                     "the body has none, and a capture writes none",
                     (unsigned)B2S3_NAME_LENGTH);
+    }
+    if (B2S3_LOCK_STOPS_SPIN && body->fixed_rotation && body->kind != B2S_BODY_KIND_STATIC &&
+        body->angular_velocity != 0.0f) {
+        B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,
+                    "FixedRotation with AngularVelocity %.9g rad/s: " B2S3_ENGINE "'s motion "
+                    "lock stops the spin at the first step, where Box2D 2.x and v3.1 keep the "
+                    "body turning at that rate",
+                    (double)body->angular_velocity);
     }
     if (!body->awake && !body->allow_sleep && body->kind != B2S_BODY_KIND_STATIC) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_BODY, "body", index, body->name,

@@ -23,13 +23,13 @@ static void b2s3_check_anchor(const b2s3_builder* b, b2s3_check* check, const ch
     float r = b2Distance(anchor, mass->center);
     float inertia = mass->rotationalInertia;
     float compliance = 1.0f / mass->mass + (inertia > 0.0f ? r * r / inertia : 0.0f);
-    if (!(compliance <= B2S3_LIMIT(MAX_COMPLIANCE))) {
+    if (!(compliance <= b2s3_range()->max_compliance)) {
         b2s3_fail(check,
                   "%s: the joint acts %.9g m from the centre of mass of body %u (mass %.9g kg, "
                   "inertia %.9g kg m^2), where 1/m + r^2/I = %g 1/kg lies beyond " B2S3_ENGINE
                   "'s working range (at most %g 1/kg)",
                   field, (double)r, (unsigned)body, (double)mass->mass, (double)inertia,
-                  (double)compliance, (double)B2S3_LIMIT(MAX_COMPLIANCE));
+                  (double)compliance, (double)b2s3_range()->max_compliance);
     } else if (inertia > 0.0f && !(r <= lever * sqrtf(inertia / mass->mass))) {
         b2s3_fail(check,
                   "%s: the joint acts %g radii of gyration from the centre of mass of body %u, "
@@ -52,12 +52,12 @@ static void b2s3_check_drive(const b2s3_builder* b, b2s3_check* check, uint32_t 
     }
     const b2MassData* mass = &b->masses[body];
     float acceleration = force / mass->mass;
-    if (!(acceleration <= B2S3_LIMIT(MAX_JOINT_ACCELERATION))) {
+    if (!(acceleration <= b2s3_range()->max_joint_acceleration)) {
         b2s3_fail(check,
                   "its motor or friction force %.9g N accelerates body %u (mass %.9g kg) by %g "
                   "m/s^2, beyond " B2S3_ENGINE "'s working range (at most %g m/s^2)",
                   (double)force, (unsigned)body, (double)mass->mass, (double)acceleration,
-                  (double)B2S3_LIMIT(MAX_JOINT_ACCELERATION));
+                  (double)b2s3_range()->max_joint_acceleration);
     }
 }
 
@@ -114,17 +114,17 @@ static float b2s3_starting_violation(const b2s3_builder* b, const b2s_joint* joi
 /* The farthest lever of one body of a joint whose other body is `other`: a line or wheel
  * joint to a body that does not turn (one that does not move, or a dynamic one without
  * rotational inertia: fixed rotation) leaves the body free to turn about an anchor that the
- * engine may not hold as far out as other joints (B2S3_MAX_LEVER_FIXED_WHEEL). */
+ * engine may not hold as far out as other joints (the range's max_lever_fixed_wheel). */
 static float b2s3_lever(const b2s3_builder* b, const b2s_joint* joint, uint32_t other,
                         float lever) {
     bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
     bool turns = b2s3_is_dynamic(b, other) && b->masses[other].rotationalInertia > 0.0f;
-    return wheel && !turns ? B2S3_MAX_LEVER_FIXED_WHEEL : lever;
+    return wheel && !turns ? b2s3_range()->max_lever_fixed_wheel : lever;
 }
 
 static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint) {
     b2s3_check check = {{0}};
-    float length = B2S3_LIMIT(MAX_LENGTH);
+    float length = b2s3_range()->max_length;
     bool anchored = joint->kind != B2S_JOINT_KIND_MOTOR;
     if (anchored) {
         b2s3_vector(&check, "LocalAnchorA", joint->local_anchor_a, length, "m");
@@ -132,25 +132,25 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
     }
     switch (joint->kind) {
     case B2S_JOINT_KIND_REVOLUTE:
-        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S3_LIMIT(MAX_SPEED), "rad/s");
-        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, B2S3_LIMIT(MAX_FORCE),
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, b2s3_range()->max_speed, "rad/s");
+        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, b2s3_range()->max_force,
                        "N m");
-        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, B2S3_LIMIT(MAX_ANGLE),
+        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, b2s3_range()->max_angle,
                        "rad");
         break;
     case B2S_JOINT_KIND_PRISMATIC:
     case B2S_JOINT_KIND_LINE:
         b2s3_magnitude(&check, "LowerTranslation", joint->lower_limit, length, "m");
         b2s3_magnitude(&check, "UpperTranslation", joint->upper_limit, length, "m");
-        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S3_LIMIT(MAX_SPEED), "m/s");
-        b2s3_magnitude(&check, "MaxMotorForce", joint->max_motor_force, B2S3_LIMIT(MAX_FORCE),
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, b2s3_range()->max_speed, "m/s");
+        b2s3_magnitude(&check, "MaxMotorForce", joint->max_motor_force, b2s3_range()->max_force,
                        "N");
-        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, B2S3_LIMIT(MAX_ANGLE),
+        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, b2s3_range()->max_angle,
                        "rad");
         break;
     case B2S_JOINT_KIND_WHEEL:
-        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, B2S3_LIMIT(MAX_SPEED), "rad/s");
-        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, B2S3_LIMIT(MAX_FORCE),
+        b2s3_magnitude(&check, "MotorSpeed", joint->motor_speed, b2s3_range()->max_speed, "rad/s");
+        b2s3_magnitude(&check, "MaxMotorTorque", joint->max_motor_torque, b2s3_range()->max_force,
                        "N m");
         break;
     case B2S_JOINT_KIND_DISTANCE:
@@ -160,23 +160,23 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
         b2s3_magnitude(&check, "MaxLength", joint->max_length, length, "m");
         break;
     case B2S_JOINT_KIND_WELD:
-        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, B2S3_LIMIT(MAX_ANGLE),
+        b2s3_magnitude(&check, "ReferenceAngle", joint->reference_angle, b2s3_range()->max_angle,
                        "rad");
         break;
     case B2S_JOINT_KIND_FRICTION:
     case B2S_JOINT_KIND_MOTOR:
-        b2s3_magnitude(&check, "MaxForce", joint->max_force, B2S3_LIMIT(MAX_FORCE), "N");
-        b2s3_magnitude(&check, "MaxTorque", joint->max_torque, B2S3_LIMIT(MAX_FORCE), "N m");
+        b2s3_magnitude(&check, "MaxForce", joint->max_force, b2s3_range()->max_force, "N");
+        b2s3_magnitude(&check, "MaxTorque", joint->max_torque, b2s3_range()->max_force, "N m");
         if (joint->max_force < 0.0f || joint->max_torque < 0.0f) {
             b2s3_fail(&check, "a negative MaxForce or MaxTorque, which " B2S3_ENGINE
                               " asserts against");
         }
         if (joint->kind == B2S_JOINT_KIND_MOTOR) {
             b2s3_vector(&check, "LinearOffset", joint->linear_offset, length, "m");
-            b2s3_magnitude(&check, "AngularOffset", joint->angular_offset, B2S3_LIMIT(MAX_ANGLE),
+            b2s3_magnitude(&check, "AngularOffset", joint->angular_offset, b2s3_range()->max_angle,
                            "rad");
             b2s3_magnitude(&check, "CorrectionFactor", joint->correction_factor,
-                           B2S3_LIMIT(MAX_FREQUENCY), "");
+                           b2s3_range()->max_frequency, "");
         }
         break;
     default: break;
@@ -186,17 +186,17 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
     if (axis) {
         b2s3_vector(&check, "LocalAxisA", joint->local_axis_a, length, "m");
         if (b2s3_passed(&check) &&
-            !(b2Length(b2s3_to_b2(joint->local_axis_a)) >= B2S3_LIMIT(MIN_AXIS))) {
+            !(b2Length(b2s3_to_b2(joint->local_axis_a)) >= b2s3_range()->min_axis)) {
             b2s3_fail(&check, "LocalAxisA is shorter than %g m: " B2S3_ENGINE
                               " cannot normalise it",
-                      (double)B2S3_LIMIT(MIN_AXIS));
+                      (double)b2s3_range()->min_axis);
         }
     }
     bool spring = joint->kind == B2S_JOINT_KIND_DISTANCE || joint->kind == B2S_JOINT_KIND_WHEEL ||
                   joint->kind == B2S_JOINT_KIND_WELD;
     if (spring) {
-        b2s3_magnitude(&check, "FrequencyHz", joint->frequency_hz, B2S3_LIMIT(MAX_FREQUENCY), "Hz");
-        b2s3_magnitude(&check, "DampingRatio", joint->damping_ratio, B2S3_LIMIT(MAX_FREQUENCY),
+        b2s3_magnitude(&check, "FrequencyHz", joint->frequency_hz, b2s3_range()->max_frequency, "Hz");
+        b2s3_magnitude(&check, "DampingRatio", joint->damping_ratio, b2s3_range()->max_frequency,
                        "");
         if (joint->frequency_hz < 0.0f || joint->damping_ratio < 0.0f) {
             b2s3_fail(&check, "a negative FrequencyHz or DampingRatio, which " B2S3_ENGINE
@@ -204,17 +204,17 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
         }
     }
     bool levered =
-        anchored && (B2S3_FRICTION_AT_ANCHORS || joint->kind != B2S_JOINT_KIND_FRICTION);
+        anchored && (b2s3_range()->friction_at_anchors || joint->kind != B2S_JOINT_KIND_FRICTION);
     if (b2s3_passed(&check) && levered) {
-        float lever = joint->kind == B2S_JOINT_KIND_REVOLUTE ? B2S3_LIMIT(MAX_LEVER_REVOLUTE)
-                                                             : B2S3_LIMIT(MAX_LEVER);
+        float lever = joint->kind == B2S_JOINT_KIND_REVOLUTE ? b2s3_range()->max_lever_revolute
+                                                             : b2s3_range()->max_lever;
         b2s3_check_anchor(b, &check, "LocalAnchorA", joint->body_a,
                           b2s3_to_b2(joint->local_anchor_a),
                           b2s3_lever(b, joint, joint->body_b, lever));
         b2s3_check_anchor(b, &check, "LocalAnchorB", joint->body_b,
                           b2s3_to_b2(joint->local_anchor_b),
                           b2s3_lever(b, joint, joint->body_a, lever));
-        if (B2S3_PRISMATIC_LEVER_TO_B && joint->kind == B2S_JOINT_KIND_PRISMATIC) {
+        if (b2s3_range()->prismatic_lever_to_b && joint->kind == B2S_JOINT_KIND_PRISMATIC) {
             /* Its axis reaches body B's anchor: that is body A's lever too. */
             b2Vec2 b_anchor = b2Body_GetWorldPoint(b->built->bodies[joint->body_b],
                                                    b2s3_to_b2(joint->local_anchor_b));
@@ -231,39 +231,39 @@ static b2s3_check b2s3_joint_check(const b2s3_builder* b, const b2s_joint* joint
 }
 
 /* What the working-range sweeps of docs/working-range.md measured of joints that start
- * violated: a line or wheel joint further than B2S3_MAX_WHEEL_VIOLATION from satisfied, or
- * whose anchors start more than B2S3_WHEEL_VIOLATION_GYRATIONS radii of gyration apart
- * across its axis between two dynamic bodies, flings its bodies off; a body pulled by two
- * joints that start more than B2S3_MAX_PULLED_VIOLATION from satisfied makes the solver
- * assert. The first such joint of any other kind on a body is built, the later ones are
+ * violated: a line or wheel joint further than the range's max_wheel_violation from
+ * satisfied, or whose anchors start more than its max_wheel_violation_gyrations radii of
+ * gyration apart across its axis between two dynamic bodies, flings its bodies off; a body
+ * pulled by two joints that start more than its max_pulled_violation from satisfied makes
+ * the solver assert. The first such joint of any other kind on a body is built, the later ones are
  * not. */
 static void b2s3_check_violation(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
                                  b2s3_check* check) {
     float across = 0.0f;
     float violation = b2s3_starting_violation(b, joint, &across);
     bool wheel = joint->kind == B2S_JOINT_KIND_LINE || joint->kind == B2S_JOINT_KIND_WHEEL;
-    if (wheel && violation > B2S3_MAX_WHEEL_VIOLATION) {
+    if (wheel && violation > b2s3_range()->max_wheel_violation) {
         b2s3_fail(check,
                   "it starts %.9g m from satisfied: a line or wheel joint further than %g m from "
                   "satisfied lies beyond " B2S3_ENGINE "'s working range (its solver flings the "
                   "bodies apart)",
-                  (double)violation, (double)B2S3_MAX_WHEEL_VIOLATION);
+                  (double)violation, (double)b2s3_range()->max_wheel_violation);
         return;
     }
     if (wheel && b2s3_is_dynamic(b, joint->body_a) && b2s3_is_dynamic(b, joint->body_b)) {
         float gyration = fminf(b2s3_gyration(&b->masses[joint->body_a]),
                                b2s3_gyration(&b->masses[joint->body_b]));
-        float bound = B2S3_WHEEL_VIOLATION_GYRATIONS * gyration;
+        float bound = b2s3_range()->max_wheel_violation_gyrations * gyration;
         if (across > B2S3_LINEAR_SLOP && !(across <= bound)) {
             b2s3_fail(check,
                       "it starts violated by %.9g m across its axis between two dynamic "
                       "bodies, beyond " B2S3_ENGINE "'s working range (at most %g radii of "
                       "gyration, %.9g m), where its solver throws them off",
-                      (double)across, (double)B2S3_WHEEL_VIOLATION_GYRATIONS, (double)bound);
+                      (double)across, (double)b2s3_range()->max_wheel_violation_gyrations, (double)bound);
             return;
         }
     }
-    if (wheel || !(violation > B2S3_MAX_PULLED_VIOLATION)) {
+    if (wheel || !(violation > b2s3_range()->max_pulled_violation)) {
         return;
     }
     uint32_t bodies[2] = {joint->body_a, joint->body_b};
@@ -274,7 +274,7 @@ static void b2s3_check_violation(b2s3_builder* b, uint32_t index, const b2s_join
                       "further than %g m: two such joints on one body lie beyond " B2S3_ENGINE
                       "'s working range (its solver asserts)",
                       (double)violation, (unsigned)(b->pulled[bodies[i]] - 1),
-                      (unsigned)bodies[i], (double)B2S3_MAX_PULLED_VIOLATION);
+                      (unsigned)bodies[i], (double)b2s3_range()->max_pulled_violation);
             return;
         }
     }

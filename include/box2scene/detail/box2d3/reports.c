@@ -3,6 +3,12 @@
  * them come from: the first value of one object found beyond what the engine holds.
  */
 
+/* The working range of this adapter's engine version: the library's measured table
+ * (docs/working-range.md), which every check below reads. */
+static const b2s_working_range* b2s3_range(void) {
+    return b2s_engine_working_range(B2S3_ENGINE_VERSION);
+}
+
 /* ---- reports */
 
 typedef struct b2s3_list {

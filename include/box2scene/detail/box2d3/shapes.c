@@ -9,24 +9,24 @@ static b2s3_check b2s3_shape_check(const b2s_shape* shape, const b2s_vec2* point
     bool edge = shape->kind == B2S_SHAPE_KIND_EDGE;
     char field[32];
     if (shape->kind == B2S_SHAPE_KIND_CIRCLE) {
-        b2s3_magnitude(&check, "Radius", shape->radius, B2S3_LIMIT(MAX_LENGTH), "m");
-        b2s3_vector(&check, "Position", shape->position, B2S3_LIMIT(MAX_LENGTH), "m");
+        b2s3_magnitude(&check, "Radius", shape->radius, b2s3_range()->max_length, "m");
+        b2s3_vector(&check, "Position", shape->position, b2s3_range()->max_length, "m");
     }
     for (uint32_t i = 0; i < count && b2s3_passed(&check); ++i) {
         snprintf(field, sizeof field, edge ? "Vertex%u" : "Vertex %u", edge ? i + 1 : i);
-        b2s3_vector(&check, field, points[i], B2S3_LIMIT(MAX_LENGTH), "m");
+        b2s3_vector(&check, field, points[i], b2s3_range()->max_length, "m");
     }
     if (shape->kind == B2S_SHAPE_KIND_POLYGON && shape->centroid_given) {
-        b2s3_vector(&check, "Centroid", shape->centroid, B2S3_LIMIT(MAX_LENGTH), "m");
+        b2s3_vector(&check, "Centroid", shape->centroid, b2s3_range()->max_length, "m");
     }
     bool ghosts = edge || (shape->kind == B2S_SHAPE_KIND_CHAIN && !shape->is_loop);
     if (ghosts && shape->has_prev_vertex) {
         b2s3_vector(&check, edge ? "Vertex0" : "PrevVertex", shape->prev_vertex,
-                    B2S3_LIMIT(MAX_LENGTH), "m");
+                    b2s3_range()->max_length, "m");
     }
     if (ghosts && shape->has_next_vertex) {
         b2s3_vector(&check, edge ? "Vertex3" : "NextVertex", shape->next_vertex,
-                    B2S3_LIMIT(MAX_LENGTH), "m");
+                    b2s3_range()->max_length, "m");
     }
     return check;
 }
@@ -269,9 +269,9 @@ static void b2s3_make_shape(b2s3_builder* b, uint32_t index) {
 
 static b2s3_check b2s3_fixture_check(const b2s_fixture* fixture) {
     b2s3_check check = {{0}};
-    b2s3_magnitude(&check, "Density", fixture->density, B2S3_LIMIT(MAX_DENSITY), "kg/m^2");
-    b2s3_magnitude(&check, "Friction", fixture->friction, B2S3_LIMIT(MAX_FRICTION), "");
-    b2s3_magnitude(&check, "Restitution", fixture->restitution, B2S3_LIMIT(MAX_FRICTION), "");
+    b2s3_magnitude(&check, "Density", fixture->density, b2s3_range()->max_density, "kg/m^2");
+    b2s3_magnitude(&check, "Friction", fixture->friction, b2s3_range()->max_friction, "");
+    b2s3_magnitude(&check, "Restitution", fixture->restitution, b2s3_range()->max_friction, "");
     if (fixture->density < 0.0f || fixture->friction < 0.0f || fixture->restitution < 0.0f) {
         b2s3_fail(&check, "a negative Density, Friction or Restitution, which " B2S3_ENGINE
                           " asserts against");

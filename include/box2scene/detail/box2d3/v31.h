@@ -15,10 +15,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* The public names: b2s_box2d3_NAME, B2S_BOX2D3_LIMIT (box2scene/box2d3.h keeps v3.1's names
- * as they were before v3.2 was served). */
+/* The public names: b2s_box2d3_NAME (box2scene/box2d3.h keeps v3.1's names as they were
+ * before v3.2 was served). */
 #define B2S3_API(name) b2s_box2d3_##name
-#define B2S3_LIMIT(name) B2S_BOX2D3_##name
+/* The library's working range the checks read (b2s_working_range). */
+#define B2S3_ENGINE_VERSION B2S_ENGINE_BOX2D31
 /* The engine, as reports name it. */
 #define B2S3_ENGINE "Box2D v3"
 
@@ -49,7 +50,8 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
     return b2Body_GetLocalCenterOfMass(body);
 }
 
-/* v3.1's fixed rotation gives the body no inertia. */
+/* v3.1's fixed rotation gives the body no inertia and keeps the spin it starts with. */
+#define B2S3_LOCK_STOPS_SPIN false
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->fixedRotation = fixed;
 }
@@ -136,24 +138,6 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
     built->chains[slot] = b2CreateChain(body, &def);
     return true;
 }
-
-/* ---- the working range as v3.1's sweep measured it (docs/working-range.md) */
-
-/* v3.1's friction (motor) joint acts at the body origins: its anchors play no part. */
-#define B2S3_FRICTION_AT_ANCHORS false
-/* A line or wheel joint to a body that does not turn (static, kinematic, or with fixed
- * rotation) leaves its body free to turn about an anchor that v3.1 cannot hold far out on a
- * small body: 51 radii of gyration to a body with fixed rotation gave a NaN angular velocity
- * in the first step (box2d3_stress_test, on v3.2's stream of levels). */
-#define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D3_MAX_LEVER_WHEEL
-/* A line or wheel joint is bounded by how far from satisfied it starts, in metres. */
-#define B2S3_MAX_WHEEL_VIOLATION B2S_BOX2D3_MAX_VIOLATION
-#define B2S3_WHEEL_VIOLATION_GYRATIONS FLT_MAX
-/* A prismatic joint's axis reaches body B's anchor, which is body A's lever too; a second
- * joint on a body another already pulls from further than B2S_BOX2D3_MAX_VIOLATION makes
- * v3.1's solver assert. */
-#define B2S3_PRISMATIC_LEVER_TO_B true
-#define B2S3_MAX_PULLED_VIOLATION B2S_BOX2D3_MAX_VIOLATION
 
 /* ---- joints: anchors, axis and reference angle are fields of each def */
 

@@ -27,9 +27,10 @@
 #error "box2scene's Box2D v3.2 adapter serves Box2D's single-precision build only"
 #endif
 
-/* The public names: b2s_box2d32_NAME, B2S_BOX2D32_LIMIT. */
+/* The public names: b2s_box2d32_NAME. */
 #define B2S3_API(name) b2s_box2d32_##name
-#define B2S3_LIMIT(name) B2S_BOX2D32_##name
+/* The library's working range the checks read (b2s_working_range). */
+#define B2S3_ENGINE_VERSION B2S_ENGINE_BOX2D32
 /* The engine, as reports name it. */
 #define B2S3_ENGINE "Box2D v3.2"
 
@@ -59,7 +60,9 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
 }
 
 /* A fixed rotation is a motion lock; the snapshot keeps the inertia under it and later
- * sources zero it, so the adapter also gives such a body an inertia of 0 (bodies.c). */
+ * sources zero it, so the adapter also gives such a body an inertia of 0 (bodies.c). The
+ * lock zeroes the spin at every step (spec section 13: reported lossy-body). */
+#define B2S3_LOCK_STOPS_SPIN true
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
 }
@@ -200,22 +203,6 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
     built->shapes[slot] = built->segment_pool[built->segments[slot].first];
     return true;
 }
-
-/* ---- the working range where v3.2's measurements differ from v3.1's (docs/working-range.md) */
-
-/* Friction acts at the anchors, so their levers count. */
-#define B2S3_FRICTION_AT_ANCHORS true
-/* A line or wheel joint to a body that does not move has the lever of any other kind. */
-#define B2S3_MAX_LEVER_FIXED_WHEEL B2S_BOX2D32_MAX_LEVER
-/* A line or wheel joint is bounded by how far across its axis it starts between two
- * dynamic bodies, in radii of gyration, not in metres. */
-#define B2S3_MAX_WHEEL_VIOLATION FLT_MAX
-#define B2S3_WHEEL_VIOLATION_GYRATIONS B2S_BOX2D32_MAX_INITIAL_VIOLATION
-/* v3.2 holds a prismatic joint whose axis runs far from body A's centre to body B's anchor,
- * and several joints that start violated on one pair of bodies (the line or wheel joint
- * among them left out). */
-#define B2S3_PRISMATIC_LEVER_TO_B false
-#define B2S3_MAX_PULLED_VIOLATION FLT_MAX
 
 /* ---- joints: anchors, axes and reference angles are the bodies' local frames */
 

@@ -6,8 +6,8 @@
 /* ---- gravity and the world def */
 
 static bool b2s3_gravity_fits(b2s_vec2 gravity) {
-    return fabsf(gravity.x) <= B2S3_LIMIT(MAX_ACCELERATION) &&
-           fabsf(gravity.y) <= B2S3_LIMIT(MAX_ACCELERATION);
+    return fabsf(gravity.x) <= b2s3_range()->max_acceleration &&
+           fabsf(gravity.y) <= b2s3_range()->max_acceleration;
 }
 
 b2Vec2 B2S3_API(scene_gravity)(const b2s_scene* scene, b2Vec2 fallback) {
@@ -21,7 +21,7 @@ b2Vec2 B2S3_API(scene_gravity)(const b2s_scene* scene, b2Vec2 fallback) {
 b2WorldDef B2S3_API(world_def)(const b2s_scene* scene, b2Vec2 fallback_gravity) {
     b2WorldDef def = b2DefaultWorldDef();
     def.gravity = B2S3_API(scene_gravity)(scene, fallback_gravity);
-    def.maximumLinearSpeed = B2S3_LIMIT(WORLD_MAX_LINEAR_SPEED);
+    def.maximumLinearSpeed = b2s3_range()->world_max_linear_speed;
     return def;
 }
 
@@ -71,7 +71,7 @@ static void b2s3_check_gravity(b2s3_builder* b) {
                     "component within +-%g m/s^2); the world def gives the host's fallback "
                     "instead",
                     (double)b->view->gravity.x, (double)b->view->gravity.y,
-                    (double)B2S3_LIMIT(MAX_ACCELERATION));
+                    (double)b2s3_range()->max_acceleration);
     }
 }
 
@@ -79,8 +79,8 @@ static void b2s3_check_gravity(b2s3_builder* b) {
 static bool b2s3_placement_valid(b2Transform t) {
     float qq = t.q.c * t.q.c + t.q.s * t.q.s;
     return isfinite(t.p.x) && isfinite(t.p.y) && isfinite(t.q.c) && isfinite(t.q.s) &&
-           fabsf(qq - 1.0f) < 1e-4f && fabsf(t.p.x) <= B2S3_LIMIT(MAX_LENGTH) &&
-           fabsf(t.p.y) <= B2S3_LIMIT(MAX_LENGTH);
+           fabsf(qq - 1.0f) < 1e-4f && fabsf(t.p.x) <= b2s3_range()->max_length &&
+           fabsf(t.p.y) <= b2s3_range()->max_length;
 }
 
 static void b2s3_make_shape(b2s3_builder* b, uint32_t index);
@@ -135,7 +135,7 @@ b2s3_built_t* B2S3_API(build_world_at)(const b2s_scene* scene, b2WorldId world,
                     "the placement (%.9g, %.9g) turned by (%.9g, %.9g) is not finite, not "
                     "within +-%g m or not a normalised rotation; nothing was built",
                     (double)placement.p.x, (double)placement.p.y, (double)placement.q.c,
-                    (double)placement.q.s, (double)B2S3_LIMIT(MAX_LENGTH));
+                    (double)placement.q.s, (double)b2s3_range()->max_length);
     } else if (ok) {
         b2s3_check_gravity(&b);
         for (uint32_t i = 0; i < view->shape_count && !b.list.out_of_memory; ++i) {

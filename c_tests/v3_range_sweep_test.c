@@ -1,12 +1,14 @@
 /*
  * The measured working range of Box2D v3 (docs/working-range.md): every case of
  * range_sweep.h, each run in a child process, since v3 is built with its assertions on.
+ * Compiled once per v3 adapter (V3_SUPPORT names its support header) as
+ * box2d3_range_sweep_test and box2d32_range_sweep_test.
  * Once built satisfied and moved through v3's own API, which measures what the engine holds;
  * once built by the adapter from the file that places body B there, which must hold whatever
  * it builds (finite, within 1e4 m, no assertion, for 600 steps) and report what it leaves out
  * as beyond-box2d-range. v3 has no pulley joint. Prints the table the docs show.
  */
-#include "box2d3_support.h"
+#include V3_SUPPORT
 #include "range_sweep.h"
 
 static bool world_holds(const v3_world* w) {
@@ -17,7 +19,7 @@ static bool world_holds(const v3_world* w) {
             if (B2_IS_NULL(body)) {
                 continue;
             }
-            b2Vec2 p = b2Body_GetPosition(body);
+            b2Vec2 p = v3_position(body);
             b2Rot q = b2Body_GetRotation(body);
             if (!(fabsf(p.x) < SWEEP_BOUND && fabsf(p.y) < SWEEP_BOUND && isfinite(q.c) &&
                   isfinite(q.s))) {
@@ -28,9 +30,9 @@ static bool world_holds(const v3_world* w) {
     return true;
 }
 
-static bool refused(const b2s_box2d3_built* built) {
+static bool refused(const v3_built* built) {
     for (uint32_t i = 0; i < built->reports.count; ++i) {
-        const b2s_box2d3_report* r = &built->reports.items[i];
+        const v3_report* r = &built->reports.items[i];
         if (r->code == B2S_CODE_BEYOND_BOX2D_RANGE && strcmp(r->object, "joint") == 0) {
             return true;
         }
@@ -53,8 +55,8 @@ static void run_moved(const sweep_case* c) {
     float dx, dy;
     sweep_displacement(c, &dx, &dy);
     b2BodyId b = w.built->bodies[SWEEP_BODY_B];
-    b2Vec2 p = b2Body_GetPosition(b);
-    b2Body_SetTransform(b, (b2Vec2){p.x + dx, p.y + dy}, b2Body_GetRotation(b));
+    b2Vec2 p = v3_position(b);
+    b2Body_SetTransform(b, v3_pos((b2Vec2){p.x + dx, p.y + dy}), b2Body_GetRotation(b));
     _exit(world_holds(&w) ? SWEEP_HELD : SWEEP_LOST);
 }
 
@@ -77,7 +79,7 @@ static void run_built(const sweep_case* c) {
 
 /* A line or wheel joint (alone or among four) to a static body A: v3 does not hold body B
  * far out on it even satisfied (measured with the lever bound lifted), so the adapter
- * refuses it past B2S_BOX2D3_MAX_LEVER_WHEEL radii of gyration. */
+ * refuses it past the range's max_lever_fixed_wheel radii of gyration. */
 static bool wheel_on_static(const sweep_case* c) {
     bool wheel = c->joint == SWEEP_LINE || c->joint == SWEEP_WHEEL ||
                  c->joint == SWEEP_FOUR_ON_ONE_PAIR;
@@ -89,7 +91,7 @@ static int every_built_world_holds_and_every_satisfied_one_is_built(void) {
     for (int j = 0; j < SWEEP_JOINT_COUNT; ++j) {
         has[j] = j != SWEEP_PULLEY;
     }
-    ENSURE_EQ(sweep_engine("Box2D v3.1", run_moved, run_built, has, wheel_on_static), 0);
+    ENSURE_EQ(sweep_engine(V3_MINOR == 1 ? "Box2D v3.1" : "Box2D v3.2", run_moved, run_built, has, wheel_on_static), 0);
     return 0;
 }
 
