@@ -101,12 +101,15 @@ struct Reader<'a> {
     /// comments and ignored elements read go.
     object: Object,
     within: &'static str,
+    /// Whether the text the records do not hold is kept for the writer: a check, which
+    /// writes nothing, keeps none.
+    for_writer: bool,
 }
 
 impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict, recovering);
-        Reader { tok, arena, object: Object::World, within: "" }
+        Reader { tok, arena, object: Object::World, within: "", for_writer: !recovering }
     }
 
     /// An error the reading can go on past (see [`crate::arena::Findings::recover`]), placed
@@ -218,7 +221,9 @@ impl<'a> Reader<'a> {
             let message =
                 format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
-            self.keep_str(Place::Attribute, &verbatim(tag, attr));
+            if self.keeping() {
+                self.keep_str(Place::Attribute, &verbatim(tag, attr));
+            }
         }
         Ok(())
     }
@@ -239,10 +244,8 @@ impl<'a> Reader<'a> {
     /// writer at the end of where it was.
     pub fn ignore(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.discard(child, message)?;
-        if !self.tok.pinned() {
-            let text = self.kept_text(child.at, self.tok.position());
-            self.keep(self.object, Place::Inside { within: self.within, before: "" }, text);
-        }
+        let place = Place::Inside { within: self.within, before: "" };
+        self.keep(self.object, place, child.at, self.tok.position());
         Ok(())
     }
 
@@ -257,6 +260,12 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
+    /// Whether text read now is kept for the writer: not by a check, nor inside text kept
+    /// whole.
+    fn keeping(&self) -> bool {
+        self.for_writer && !self.tok.pinned()
+    }
+
     /// The text from `from` to `to`, for the writer: a span when the text stays at hand,
     /// else a copy.
     fn kept_text(&mut self, from: usize, to: usize) -> KeptText {
@@ -266,27 +275,55 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// Keeps `text` for the writer at `place` in `object`: with the piece before it when
-    /// that is at the same place and only white space lies between them.
-    fn keep(&mut self, object: Object, place: Place, text: KeptText) {
-        let last =
-            self.arena.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
-        if let (Some(last), KeptText::File(Span { from, to })) = (last, text)
-            && let KeptText::File(Span { from: first, to: end }) = last.text
-            && trim_xml(self.tok.slice(end, from)).is_empty()
-        {
-            last.text = KeptText::File(Span { from: first, to });
+    /// Keeps the file's text from `from` to `to` for the writer at `place` in `object`
+    /// (unless it is not [`Reader::keeping`]): with the piece before it when that is at
+    /// the same place, was kept from the file, and only white space lies between them,
+    /// which the tokenizer holds at hand from where that piece ends (see
+    /// [`Tokenizer::hold`]), so that a load from a path joins what one from memory joins.
+    fn keep(&mut self, object: Object, place: Place, from: usize, to: usize) {
+        if !self.keeping() {
             return;
         }
-        self.arena.scene.kept.push(Kept { object, place, text });
+        if let Some(end) = self.tok.held().filter(|&end| end <= from)
+            && trim_xml(self.tok.slice(end, from)).is_empty()
+            && let Some(last) =
+                self.arena.scene.kept.last().filter(|k| k.object == object && k.place == place)
+            && let Some(joined) = self.joined(last.text, end, to)
+        {
+            self.arena.scene.kept.last_mut().expect("the piece joined").text = joined;
+        } else {
+            let text = self.kept_text(from, to);
+            self.arena.scene.kept.push(Kept { object, place, text });
+        }
+        self.tok.hold(to);
+    }
+
+    /// The kept text `last`, which ends at offset `end` of the file, made to go on to `to`.
+    fn joined(&mut self, last: KeptText, end: usize, to: usize) -> Option<KeptText> {
+        match last {
+            KeptText::File(Span { from, to: last_end }) => {
+                (last_end == end).then_some(KeptText::File(Span { from, to }))
+            }
+            // Copied on into the pool, which the last piece ends.
+            KeptText::Pooled(Span { from, to: pooled_to }) => {
+                let text = self.tok.slice(end, to);
+                match self.arena.scene.keep_str(text) {
+                    KeptText::Pooled(Span { from: next, to }) if next == pooled_to => {
+                        Some(KeptText::Pooled(Span { from, to }))
+                    }
+                    _ => unreachable!("the pool's text is appended where it ends"),
+                }
+            }
+        }
     }
 
     /// Keeps `text` (not from the file's text as it stands) at `place` in the object being
-    /// read, unless it is inside text kept whole.
+    /// read, unless it is not [`Reader::keeping`].
     fn keep_str(&mut self, place: Place, text: &str) {
-        if !self.tok.pinned() {
+        if self.keeping() {
             let text = self.arena.scene.keep_str(text);
-            self.keep(self.object, place, text);
+            self.arena.scene.kept.push(Kept { object: self.object, place, text });
+            self.tok.release();
         }
     }
 
@@ -304,8 +341,7 @@ impl<'a> Reader<'a> {
     fn keep_comments(&mut self, object: Object, place: Place) {
         let Some(comments) = self.tok.take_comments() else { return };
         for (from, to) in comments {
-            let text = self.kept_text(from, to);
-            self.keep(object, place, text);
+            self.keep(object, place, from, to);
         }
     }
 
@@ -313,12 +349,15 @@ impl<'a> Reader<'a> {
     pub fn begin_object(&mut self, object: Object) {
         self.place_comments(object, Place::Before);
         (self.object, self.within) = (object, "");
+        // Nothing kept later joins what went before the object.
+        self.tok.release();
     }
 
     /// The item ends: the comments inside it not followed by an element go at its end.
     pub fn end_object(&mut self) {
         self.place_comments(self.object, Place::Inside { within: "", before: "" });
         self.object = Object::World;
+        self.tok.release();
     }
 
     /// Reads a child element of the object's child `within` with `read`: the comments in
@@ -332,6 +371,7 @@ impl<'a> Reader<'a> {
         let read = read(self);
         self.place_comments(self.object, Place::Inside { within, before: "" });
         self.within = "";
+        self.tok.release();
         read
     }
 
@@ -353,6 +393,8 @@ impl<'a> Reader<'a> {
             self.unknown(parent, child, E::NAMES.names)?;
             return Ok(None);
         };
+        // A known element lies between what was kept and what is kept next.
+        self.tok.release();
         let bit = 1u64 << index;
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;

@@ -227,6 +227,10 @@ pub(super) struct Tokenizer<'a> {
     /// The comments read since the reader last took them, as spans of the text (which
     /// stay at hand until then).
     comments: Vec<(usize, usize)>,
+    /// Where the text the reader last kept for the writer ends, while text kept next at
+    /// the same place may join it: the text from there on stays at hand (see
+    /// [`Tokenizer::hold`]).
+    held: Option<usize>,
     /// The open elements, outermost first, with the offsets of their start tags: the text
     /// of the third (an item of a world container, an object) stays at hand while it is
     /// open, so that its offsets can be placed until it ends.
@@ -291,6 +295,7 @@ impl<'a> Tokenizer<'a> {
             last: 0,
             pins: Vec::new(),
             comments: Vec::new(),
+            held: None,
             open: Vec::new(),
             elements: 0,
             lines,
@@ -323,7 +328,7 @@ impl<'a> Tokenizer<'a> {
         if self.found.is_some() {
             self.take_found_ends();
         }
-        let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
+        let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at), self.held.as_ref()]
             .into_iter()
             .flatten()
             .fold(self.last, |keep, &at| keep.min(at));
@@ -419,7 +424,21 @@ impl<'a> Tokenizer<'a> {
     #[cold]
     #[inline(never)]
     fn skip_space_on(&mut self) -> Reading<()> {
-        while self.more()? {
+        loop {
+            // Directly in the root or in a container, nothing read before the white space
+            // is looked at again (an item's text is kept while it is open): neither it nor
+            // the white space stays at hand, however long it runs.
+            if self.open.len() <= 2 {
+                (self.last, self.started) = (self.pos, self.pos);
+            }
+            // The scan passes the white space too (it holds no mark), so that it need not
+            // stay at hand for the scan either.
+            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let mark = self.index.next(text, base);
+            debug_assert!(mark.is_none(), "white space holds no markup");
+            if !self.more()? {
+                break;
+            }
             let rest = self.rest(self.pos);
             let (space, all) = (space_len(rest), rest.len());
             self.pos += space;

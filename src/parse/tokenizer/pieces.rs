@@ -163,6 +163,23 @@ impl<'a> Tokenizer<'a> {
         self.pins.pop();
     }
 
+    /// Keeps the text from `end`, where the text the reader kept for the writer ends, at
+    /// hand until [`Tokenizer::release`]: text kept next at the same place joins it, with
+    /// the white space between them, however the windows fall.
+    pub fn hold(&mut self, end: usize) {
+        self.held = Some(end);
+    }
+
+    /// Lets go of the text held by [`Tokenizer::hold`].
+    pub fn release(&mut self) {
+        self.held = None;
+    }
+
+    /// Where the text held by [`Tokenizer::hold`] starts.
+    pub fn held(&self) -> Option<usize> {
+        self.held
+    }
+
     /// Whether text is being kept verbatim (see [`Tokenizer::pin`]).
     pub fn pinned(&self) -> bool {
         !self.pins.is_empty()
