@@ -15,7 +15,6 @@ mod tokenizer;
 mod user_data;
 mod world;
 
-pub(crate) use joint::canonical_joint;
 use names::{Element, elements};
 pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 
@@ -27,7 +26,7 @@ use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::place::{Placer, Spot};
 use crate::rules;
-use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
+use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
 use tokenizer::{Attr, Node, Reading, Tag, Text, Tokenizer, verbatim};
 
@@ -222,7 +221,7 @@ impl<'a> Reader<'a> {
                 format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
             if self.keeping() {
-                self.keep_str(Place::Attribute, &verbatim(tag, attr));
+                self.keep_str(KeptAt::Attribute, &verbatim(tag, attr));
             }
         }
         Ok(())
@@ -244,7 +243,7 @@ impl<'a> Reader<'a> {
     /// writer at the end of where it was.
     pub fn ignore(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.discard(child, message)?;
-        let place = Place::Inside { within: self.within, before: "" };
+        let place = KeptAt::Inside { within: self.within, before: "" };
         self.keep(self.object, place, child.at, self.tok.position());
         Ok(())
     }
@@ -280,7 +279,7 @@ impl<'a> Reader<'a> {
     /// the same place, was kept from the file, and only white space lies between them,
     /// which the tokenizer holds at hand from where that piece ends (see
     /// [`Tokenizer::hold`]), so that a load from a path joins what one from memory joins.
-    fn keep(&mut self, object: Object, place: Place, from: usize, to: usize) {
+    fn keep(&mut self, object: Object, place: KeptAt, from: usize, to: usize) {
         if !self.keeping() {
             return;
         }
@@ -319,7 +318,7 @@ impl<'a> Reader<'a> {
 
     /// Keeps `text` (not from the file's text as it stands) at `place` in the object being
     /// read, unless it is not [`Reader::keeping`].
-    fn keep_str(&mut self, place: Place, text: &str) {
+    fn keep_str(&mut self, place: KeptAt, text: &str) {
         if self.keeping() {
             let text = self.arena.scene.keep_str(text);
             self.arena.scene.kept.push(Kept { object: self.object, place, text });
@@ -330,7 +329,7 @@ impl<'a> Reader<'a> {
     /// Gives the comments read since the last element to `object`, at `place`. Inlined: it
     /// runs for nearly every element, and there are comments before few.
     #[inline(always)]
-    pub fn place_comments(&mut self, object: Object, place: Place) {
+    pub fn place_comments(&mut self, object: Object, place: KeptAt) {
         if self.tok.has_comments() {
             self.keep_comments(object, place);
         }
@@ -338,7 +337,7 @@ impl<'a> Reader<'a> {
 
     /// [`Reader::place_comments`] when there are some.
     #[inline(never)]
-    fn keep_comments(&mut self, object: Object, place: Place) {
+    fn keep_comments(&mut self, object: Object, place: KeptAt) {
         let Some(comments) = self.tok.take_comments() else { return };
         for (from, to) in comments {
             self.keep(object, place, from, to);
@@ -347,7 +346,7 @@ impl<'a> Reader<'a> {
 
     /// An item of a world container begins: the comments before it go before it.
     pub fn begin_object(&mut self, object: Object) {
-        self.place_comments(object, Place::Before);
+        self.place_comments(object, KeptAt::Before);
         (self.object, self.within) = (object, "");
         // Nothing kept later joins what went before the object.
         self.tok.release();
@@ -355,7 +354,7 @@ impl<'a> Reader<'a> {
 
     /// The item ends: the comments inside it not followed by an element go at its end.
     pub fn end_object(&mut self) {
-        self.place_comments(self.object, Place::Inside { within: "", before: "" });
+        self.place_comments(self.object, KeptAt::Inside { within: "", before: "" });
         self.object = Object::World;
         self.tok.release();
     }
@@ -369,7 +368,7 @@ impl<'a> Reader<'a> {
     ) -> Reading<T> {
         self.within = within;
         let read = read(self);
-        self.place_comments(self.object, Place::Inside { within, before: "" });
+        self.place_comments(self.object, KeptAt::Inside { within, before: "" });
         self.within = "";
         self.tok.release();
         read
@@ -387,7 +386,7 @@ impl<'a> Reader<'a> {
         let found = E::NAMES.find(child.name.key());
         if self.tok.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
-            self.keep_comments(self.object, Place::Inside { within: self.within, before });
+            self.keep_comments(self.object, KeptAt::Inside { within: self.within, before });
         }
         let Some(index) = found else {
             self.unknown(parent, child, E::NAMES.names)?;
