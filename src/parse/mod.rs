@@ -57,24 +57,27 @@ fn read_split<'a>(
     split: Option<(Vec<ahead::Boundary>, usize)>,
 ) -> Read<'a> {
     debug_assert!(!recovering || options.threads == 1, "a read that goes on is one thread's");
-    std::thread::scope(|scope| {
-        let helper = ahead::start(scope, source.pieces(), options, split);
-        let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
-        let read = ahead::read(&mut reader, helper);
-        let Reader { mut tok, mut arena, .. } = reader;
-        let read = match read {
-            Ok(()) => {
-                arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
-                Ok(arena)
-            }
-            Err(halt) => {
-                let mut errors = arena.findings.take_errors();
-                errors.push(tok.place(*halt.into_problem()));
-                Err(Stopped { errors, warnings: arena.findings.take_warnings() })
-            }
-        };
-        (read, Placer::new(tok.into_source()))
-    })
+    let helped = ahead::helped(&source, options, &split);
+    let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
+    let read = match helped {
+        None => reader.whole(),
+        Some(pieces) => std::thread::scope(|scope| {
+            ahead::read(&mut reader, ahead::start(scope, pieces, options, split))
+        }),
+    };
+    let Reader { mut tok, mut arena, .. } = reader;
+    let read = match read {
+        Ok(()) => {
+            arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
+            Ok(arena)
+        }
+        Err(halt) => {
+            let mut errors = arena.findings.take_errors();
+            errors.push(tok.place(*halt.into_problem()));
+            Err(Stopped { errors, warnings: arena.findings.take_warnings() })
+        }
+    };
+    (read, Placer::new(tok.into_source()))
 }
 
 /// Which of an object's known elements were already read (for `duplicate-element`).
@@ -109,6 +112,14 @@ impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict, recovering);
         Reader { tok, arena, object: Object::World, within: "", for_writer: !recovering }
+    }
+
+    /// The whole document, on the calling thread alone.
+    fn whole(&mut self) -> Reading<()> {
+        let mut seen = Seen::default();
+        self.document(&mut seen)?;
+        self.end_world(&seen)?;
+        self.epilog()
     }
 
     /// An error the reading can go on past (see [`crate::arena::Findings::recover`]), placed
