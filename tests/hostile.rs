@@ -107,7 +107,9 @@ fn attributes_differing_only_in_case_are_duplicates() {
 #[test]
 fn forty_thousand_attributes_are_checked_in_linear_time() {
     let attributes: String = (0..40_000).map(|i| format!(" a{i}=\"{i}\"")).collect();
-    let places: [(fn(&str) -> String, &str); 3] = [
+    // A scene with the attributes given in one place, and the name repeated there.
+    type Scene = fn(&str) -> String;
+    let places: [(Scene, &str); 3] = [
         (
             |a| format!("<World Version=\"1\"{a}><Shapes/><Fixtures/><Bodies/><Joints/></World>"),
             "A0",

@@ -116,7 +116,7 @@ impl<'a> Reader<'a> {
         let kind = self.joint_type(tag)?;
         if kind == JointKind::Unsupported {
             // It has no Box2Scene form: the writer writes back its whole text.
-            self.tok.pin(tag.at);
+            self.tok.kept.pin(tag.at);
         }
         let mut joint = Joint::new(kind);
         let mut name_str = None;

@@ -264,16 +264,16 @@ impl<'a> Reader<'a> {
     pub fn discard(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.warn(Code::UnknownElement, child.at, message)?;
         self.tok.check_attributes(child)?;
-        self.tok.pin(child.at);
+        self.tok.kept.pin(child.at);
         self.tok.skip(child)?;
-        self.tok.drop_pin();
+        self.tok.kept.unpin();
         Ok(())
     }
 
     /// Whether text read now is kept for the writer: not by a check, nor inside text kept
     /// whole.
     fn keeping(&self) -> bool {
-        self.for_writer && !self.tok.pinned()
+        self.for_writer && !self.tok.kept.pinned()
     }
 
     /// The text from `from` to `to`, for the writer: a span when the text stays at hand,
@@ -289,12 +289,13 @@ impl<'a> Reader<'a> {
     /// (unless it is not [`Reader::keeping`]): with the piece before it when that is at
     /// the same place, was kept from the file, and only white space lies between them,
     /// which the tokenizer holds at hand from where that piece ends (see
-    /// [`Tokenizer::hold`]), so that a load from a path joins what one from memory joins.
+    /// [`Keeping::hold`](tokenizer::Keeping::hold)), so that a load from a path joins what
+    /// one from memory joins.
     fn keep(&mut self, object: Object, place: KeptAt, from: usize, to: usize) {
         if !self.keeping() {
             return;
         }
-        if let Some(end) = self.tok.held().filter(|&end| end <= from)
+        if let Some(end) = self.tok.kept.held().filter(|&end| end <= from)
             && trim_xml(self.tok.slice(end, from)).is_empty()
             && let Some(last) =
                 self.arena.scene.kept.last().filter(|k| k.object == object && k.place == place)
@@ -305,7 +306,7 @@ impl<'a> Reader<'a> {
             let text = self.kept_text(from, to);
             self.arena.scene.kept.push(Kept { object, place, text });
         }
-        self.tok.hold(to);
+        self.tok.kept.hold(to);
     }
 
     /// The kept text `last`, which ends at offset `end` of the file, made to go on to `to`.
@@ -333,7 +334,7 @@ impl<'a> Reader<'a> {
         if self.keeping() {
             let text = self.arena.scene.keep_str(text);
             self.arena.scene.kept.push(Kept { object: self.object, place, text });
-            self.tok.release();
+            self.tok.kept.release();
         }
     }
 
@@ -341,7 +342,7 @@ impl<'a> Reader<'a> {
     /// runs for nearly every element, and there are comments before few.
     #[inline(always)]
     pub fn place_comments(&mut self, object: Object, place: KeptAt) {
-        if self.tok.has_comments() {
+        if self.tok.kept.has_comments() {
             self.keep_comments(object, place);
         }
     }
@@ -349,7 +350,7 @@ impl<'a> Reader<'a> {
     /// [`Reader::place_comments`] when there are some.
     #[inline(never)]
     fn keep_comments(&mut self, object: Object, place: KeptAt) {
-        let Some(comments) = self.tok.take_comments() else { return };
+        let Some(comments) = self.tok.kept.take_comments() else { return };
         for (from, to) in comments {
             self.keep(object, place, from, to);
         }
@@ -360,14 +361,14 @@ impl<'a> Reader<'a> {
         self.place_comments(object, KeptAt::Before);
         (self.object, self.within) = (object, "");
         // Nothing kept later joins what went before the object.
-        self.tok.release();
+        self.tok.kept.release();
     }
 
     /// The item ends: the comments inside it not followed by an element go at its end.
     pub fn end_object(&mut self) {
         self.place_comments(self.object, KeptAt::Inside { within: "", before: "" });
         self.object = Object::World;
-        self.tok.release();
+        self.tok.kept.release();
     }
 
     /// Reads a child element of the object's child `within` with `read`: the comments in
@@ -381,7 +382,7 @@ impl<'a> Reader<'a> {
         let read = read(self);
         self.place_comments(self.object, KeptAt::Inside { within, before: "" });
         self.within = "";
-        self.tok.release();
+        self.tok.kept.release();
         read
     }
 
@@ -395,7 +396,7 @@ impl<'a> Reader<'a> {
         seen: &mut Seen,
     ) -> Reading<Option<(E, bool)>> {
         let found = E::NAMES.find(child.name.key());
-        if self.tok.has_comments() {
+        if self.tok.kept.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
             self.keep_comments(self.object, KeptAt::Inside { within: self.within, before });
         }
@@ -404,7 +405,7 @@ impl<'a> Reader<'a> {
             return Ok(None);
         };
         // A known element lies between what was kept and what is kept next.
-        self.tok.release();
+        self.tok.kept.release();
         let bit = 1u64 << index;
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;

@@ -106,6 +106,8 @@ impl<'a> Reader<'a> {
     /// What follows `</World>`: blank text, comments and processing instructions only (once
     /// read, nothing).
     pub(super) fn epilog(&mut self) -> Reading<()> {
+        // `</World>` lies between what was kept in the world and what is kept after it.
+        self.tok.kept.release();
         loop {
             match self.tok.next_node()? {
                 super::Node::Eof => {

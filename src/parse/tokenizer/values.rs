@@ -11,7 +11,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::Reading;
-use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
+use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
@@ -207,7 +207,7 @@ impl<'a> Tokenizer<'a> {
     fn plain_span(&mut self, tag: &Tag) -> Option<(usize, usize)> {
         // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
         // nodes' path checks.
-        if tag.empty || !self.pins.is_empty() {
+        if tag.empty || self.kept.pinned() {
             return None;
         }
         let at = self.pos;
@@ -279,9 +279,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
-    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Vec<Attr<'t>>> {
+    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Attrs<'t>> {
         let Some(content) = tag.content.as_deref() else {
-            return Ok(Vec::new());
+            return Ok(Attrs::default());
         };
         let attrs = match plain_attributes(content, tag.name.len(), tag.at) {
             Some(attrs) => return Ok(attrs),
@@ -315,11 +315,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
-    pub(super) fn xml_attributes<'t>(
-        &self,
-        tag: &'t Tag,
-        content: &'t str,
-    ) -> Parsed<Vec<Attr<'t>>> {
+    pub(super) fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Attrs<'t>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
         // tag, is found by its offset in `content` (which counts from after `<`).
         let within = |piece: &str| {
@@ -327,7 +323,7 @@ impl<'a> Tokenizer<'a> {
             Some((from, content.get(from..from + piece.len())?))
         };
         let start = BytesStart::from_content(content, tag.name.len());
-        let mut attrs = Vec::new();
+        let mut attrs = Attrs::default();
         for attr in start.attributes() {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
             let raw = within(&attr.value);
@@ -398,10 +394,9 @@ impl<'a> Tokenizer<'a> {
 /// with plain names, values with no reference, `<` or line break, and no name twice (in
 /// any case, found by [`first_repeated`]). None for anything else: quick-xml reads that,
 /// and tells what is malformed.
-pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
+pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Attrs<'_>> {
     let bytes = content.as_bytes();
-    // A tag with more than its name has an attribute or two: one allocation, no growing.
-    let mut attrs: Vec<Attr> = Vec::with_capacity(2);
+    let mut attrs = Attrs::default();
     let mut i = name_len;
     loop {
         // The tag's text is the source's, so white space is every byte up to 0x20.
