@@ -14,10 +14,12 @@
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::holds::{escape, needs_version_2, writable_text};
 use crate::options::LoadOptions;
-use crate::parse::{USER_DATA_DEPTH, canonical_joint, user_data_fragment};
+use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::rules;
-use crate::scene::SceneBuilder;
-use crate::scene::{Body, Fixture, Joint, JointKind, NONE, Object, PoolStr, Range, Scene};
+use crate::scene::joints;
+use crate::scene::{
+    Body, Fixture, Joint, JointKind, NONE, Object, PoolStr, Range, Scene, SceneBuilder,
+};
 use crate::scene::{Shape, ShapeKind, Str, UserDataText, Vec2};
 use crate::text::trim_xml;
 
@@ -520,7 +522,18 @@ impl Builder {
                 "Farseer-only joints have no Box2Scene form and cannot be built",
             ));
         }
-        let canonical = canonical_joint(joint)?;
+        let kind = joint.kind().ok_or_else(|| -> Problem {
+            problem(Code::InvalidArgument, 0, format!("unknown joint kind {}", joint.kind))
+        })?;
+        // Fails on a non-finite value, or a negative one where the format forbids it,
+        // naming the element.
+        let canonical = joints::canonical(joint, kind, |name, v, non_negative| {
+            rules::finite(name, &[v])?;
+            match non_negative {
+                true => rules::not_negative(format_args!("<{name}>"), v, 0),
+                false => Ok(v),
+            }
+        })?;
         reference(canonical.body_a, self.scene.bodies.len(), "bodies", "body")?;
         reference(canonical.body_b, self.scene.bodies.len(), "bodies", "body")?;
         rules::joint(&canonical, 0, 0)?;

@@ -11,7 +11,7 @@ use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::Object;
 use crate::scene::joints::{VERSION_2_KINDS, has_version_2_value};
 use crate::scene::{Body, Joint, JointKind, NONE};
-use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind};
+use crate::scene::{KeptAt, Scene, Shape, ShapeKind};
 
 /// The error for the first joint of the unsupported kind that has no text of its own.
 pub(crate) fn unwritable_joint(scene: &Scene) -> Result<(), Error> {

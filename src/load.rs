@@ -41,7 +41,9 @@ pub fn load_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Res
 /// error, else every error (see [`crate::check`]).
 #[derive(Debug)]
 pub struct Checked {
-    /// The scene, when the file has no error.
+    /// The scene, when the file has no error. A check writes nothing, so it keeps none of
+    /// the file's text for the writer (comments, unknown elements and attributes): write the
+    /// scene a load gives.
     pub scene: Option<Scene>,
     /// Every error, in the order of the file: those the load went on past (a value that
     /// does not convert or is out of range, an ID that names nothing), and the one that

@@ -220,3 +220,54 @@ fn the_checks_after_the_read_hold_no_finding_each() {
         "{count} joints that start apart held {apart} bytes, that start satisfied {satisfied}"
     );
 }
+
+/// `xml` written to a file of its own, checked from it as `box2scene check` checks a file:
+/// the check, and the most bytes it held at once. The caller holds [`alone`].
+fn checked_from_a_file(xml: &str, name: &str) -> (box2scene::Checked, usize) {
+    let path = std::env::temp_dir().join(format!("box2scene-{name}-{}.xml", std::process::id()));
+    std::fs::write(&path, xml).unwrap();
+    let mut checked = None;
+    let held = extra_bytes_while(|| {
+        let file = std::fs::File::open(&path).unwrap();
+        checked = Some(box2scene::check_file(file, &path, &LoadOptions::default()));
+    });
+    std::fs::remove_file(&path).unwrap();
+    (checked.unwrap(), held)
+}
+
+/// 64 MiB of white space between the items of a container is passed a window at a time,
+/// as any text is: neither a check nor a load from the path holds it.
+#[test]
+fn blank_text_between_items_is_not_held() {
+    let _alone = alone();
+    let blank = " \r\n\t".repeat(16 << 20);
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies><Body Type=\"Static\"/>{blank}\
+         </Bodies><Joints/></World>"
+    );
+    let (checked, held) = checked_from_a_file(&xml, "blank");
+    assert!(checked.errors.is_empty(), "{:?}", checked.errors);
+    assert_eq!(checked.scene.unwrap().bodies().len(), 1);
+    assert!(held < 32 << 20, "{held} bytes held checking {} bytes of blank text", blank.len());
+    let held = extra_bytes_while(|| {
+        assert_eq!(load_from_a_file(xml.as_bytes(), "blank").unwrap().bodies().len(), 1);
+    });
+    assert!(held < 32 << 20, "{held} bytes held loading {} bytes of blank text", blank.len());
+}
+
+/// A check writes nothing, so it keeps no unknown element's text for a writer: 8 MiB of
+/// `<a/>` holds what its capped warnings hold, not 2 million pieces of kept text.
+#[test]
+fn a_check_keeps_no_text_for_the_writer() {
+    let _alone = alone();
+    let count = 2 << 20;
+    let xml = format!(
+        "<World Version=\"1\"><Shapes/><Fixtures/><Bodies/><Joints/>{}</World>",
+        "<a/>".repeat(count)
+    );
+    let (checked, held) = checked_from_a_file(&xml, "unknown");
+    assert!(checked.errors.is_empty(), "{:?}", checked.errors);
+    assert!(checked.scene.is_some());
+    assert_eq!(checked.warnings.len(), box2scene::error::MAX_WARNINGS + 1);
+    assert!(held < 32 << 20, "{held} bytes held checking {count} unknown elements");
+}

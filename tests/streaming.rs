@@ -284,3 +284,40 @@ fn a_large_file_loads_from_its_path_on_two_threads_as_on_one() {
     assert_eq!(error.unwrap_err().position.byte_offset as usize, at);
     assert!(!same_both_ways(&xml.as_bytes()[..late], "large-truncated"));
 }
+
+/// What a load keeps for the writer is the same from a path as from memory, wherever the
+/// windows end: a comment, a line break and an unknown element are written back as they
+/// were, the white space between them too, when the window ends before, inside or after
+/// any of them.
+#[test]
+fn kept_text_is_written_alike_from_a_path_and_from_memory() {
+    let kept = "<!-- a note -->\n  <Wind Speed=\"3\"><Gust/></Wind>";
+    let scene = |pad: usize| {
+        format!(
+            "<World Version=\"1\"><!--{}--><Shapes/><Fixtures/><Bodies/><Joints/>\n  {kept}\n\
+             <!--{}-->\n</World>\n",
+            "p".repeat(pad),
+            "q".repeat(2 * CHUNK)
+        )
+    };
+    let first = CHUNK - kept.len() - 4 - scene(0).find(kept).unwrap();
+    let file = std::env::temp_dir().join(format!("box2scene-kept-{}.xml", std::process::id()));
+    for pad in first..first + kept.len() + 8 {
+        let xml = scene(pad);
+        std::fs::write(&file, &xml).unwrap();
+        let options = LoadOptions::default();
+        let written = |scene: box2scene::Scene| {
+            box2scene::write(&scene, &box2scene::WriteOptions::default()).unwrap()
+        };
+        let from_memory = written(load(xml.as_bytes(), &options).unwrap());
+        let from_path = written(load_path(&file, &options).unwrap());
+        assert!(from_memory.contains(kept), "the kept text is written back as it was");
+        let differ = from_memory.lines().zip(from_path.lines()).find(|(m, p)| m != p);
+        assert!(
+            from_path == from_memory,
+            "the window ends {} bytes into the kept text: {differ:?}",
+            CHUNK as i64 - xml.find(kept).unwrap() as i64
+        );
+    }
+    std::fs::remove_file(&file).unwrap();
+}

@@ -10,7 +10,7 @@ use crate::containers::Container;
 use crate::error::{Code, MAX_ERRORS, Parsed, Problem};
 use crate::place::Spot;
 use crate::rules;
-use crate::scene::{Dialect, JointKind, NONE, Object, Place, Range, Vec2};
+use crate::scene::{Dialect, JointKind, KeptAt, NONE, Object, Range, Vec2};
 
 /// Normalises the dialects and checks every reference. A load that goes on past errors
 /// records every reference that names nothing, and stops there if it found any error.
@@ -169,13 +169,13 @@ fn move_kept_of_templates(p: &mut Arena, first_made: &[Option<u32>]) {
         let Object::Fixture(template) = kept.object else { continue };
         (kept.object, kept.place) = match (first_made[template as usize], kept.place) {
             (Some(made), place) => (Object::Fixture(made), place),
-            (None, Place::Attribute) => (Object::World, Place::Attribute),
-            (None, Place::Inside { .. }) => {
-                (Object::World, Place::Inside { within: "", before: "" })
+            (None, KeptAt::Attribute) => (Object::World, KeptAt::Attribute),
+            (None, KeptAt::Inside { .. }) => {
+                (Object::World, KeptAt::Inside { within: "", before: "" })
             }
             (None, _) => {
                 let within = Container::Fixtures.name();
-                (Object::World, Place::Inside { within, before: "" })
+                (Object::World, KeptAt::Inside { within, before: "" })
             }
         };
     }

@@ -94,62 +94,68 @@ struct Done {
     seen: Seen,
 }
 
-/// Starts the helper on `scope`, when the options allow a thread and the text, whose
-/// `pieces` a second reader may read (see [`Source::pieces`]), is large enough to be worth
-/// it. For tests, `split` forces the boundaries and a first piece that is the helper's from
-/// the start, from which on it reads them whatever the timing.
-pub(super) fn start<'a, 'scope>(
-    scope: &'scope Scope<'scope, '_>,
-    pieces: Option<Pieces<'a>>,
-    options: &'a LoadOptions,
-    split: Option<(Vec<Boundary>, usize)>,
-) -> Option<Caller<'scope>>
-where
-    'a: 'scope,
-{
+/// The pieces of `source` a helper would read, when the options allow a thread and the
+/// text, whose pieces a second reader may read (see [`Source::pieces`]), is large enough to
+/// be worth it, or the test's `split` forces them. None for a load on one thread, which
+/// then never enters this module's code again.
+pub(super) fn helped<'a>(
+    source: &Source<'a>,
+    options: &LoadOptions,
+    split: &Option<(Vec<Boundary>, usize)>,
+) -> Option<Pieces<'a>> {
     if options.threads == 1 {
         return None;
     }
-    let pieces = pieces?;
+    let pieces = source.pieces()?;
+    (split.is_some() || pieces.len() >= MIN_BYTES).then_some(pieces)
+}
+
+/// Starts the helper on `scope`, reading `pieces` (see [`helped`]). For tests, `split`
+/// forces the boundaries and a first piece that is the helper's from the start, from which
+/// on it reads them whatever the timing.
+pub(super) fn start<'a, 'scope>(
+    scope: &'scope Scope<'scope, '_>,
+    pieces: Pieces<'a>,
+    options: &'a LoadOptions,
+    split: Option<(Vec<Boundary>, usize)>,
+) -> Caller<'scope>
+where
+    'a: 'scope,
+{
     let found = Found::default();
     let helped = match split {
         Some((boundaries, helped)) => {
             let _ = found.set(boundaries);
             helped
         }
-        None if pieces.len() >= MIN_BYTES => usize::MAX,
-        None => return None,
+        None => usize::MAX,
     };
     let claims = Arc::new(Mutex::new(Claims { caller: 0, helper: helped }));
     let (sender, done) = mpsc::channel();
     let (their_found, their_claims) = (Arc::clone(&found), Arc::clone(&claims));
     let thread = scope.spawn(move || help(pieces, options, &their_found, &their_claims, &sender));
-    Some(Caller { found, claims, done, pieces: Vec::new(), _thread: thread })
+    Caller { found, claims, done, pieces: Vec::new(), _thread: thread }
 }
 
 /// Reads the whole document with `reader`, the calling thread's, taking what the helper
-/// read (when there is one) where the two meet.
-pub(super) fn read(reader: &mut Reader, helper: Option<Caller>) -> Reading<()> {
+/// read where the two meet.
+pub(super) fn read(reader: &mut Reader, mut helper: Caller) -> Reading<()> {
     let mut seen = Seen::default();
-    if let Some(helper) = &helper {
-        let found = Arc::clone(&helper.found);
-        reader.tok.end_before_found(Box::new(move || found.get().map(|found| ends(found))));
-    }
+    let found = Arc::clone(&helper.found);
+    reader.tok.end_before_found(Box::new(move || found.get().map(|found| ends(found))));
     let mut read = reader.document(&mut seen);
-    if let Some(mut helper) = helper {
-        // Where the reading stopped before a piece's item.
-        while matches!(read, Err(Halt::PieceEnd)) {
-            let piece = reader.tok.pass_end();
-            if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
-                read = Ok(());
-                break;
-            }
-            let Some((root, tag)) = reader.tok.open_item() else {
-                return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
-            };
-            let container = helper.boundaries()[piece].1;
-            read = reader.document_from_item((&root, &tag), container, &mut seen);
+    // Where the reading stopped before a piece's item.
+    while matches!(read, Err(Halt::PieceEnd)) {
+        let piece = reader.tok.pass_end();
+        if !helper.claim(piece) && helper.take(reader, piece, &mut seen) {
+            read = Ok(());
+            break;
         }
+        let Some((root, tag)) = reader.tok.open_item() else {
+            return Err(problem(Code::Internal, 0, "a reading stopped outside a container"));
+        };
+        let container = helper.boundaries()[piece].1;
+        read = reader.document_from_item((&root, &tag), container, &mut seen);
     }
     read?;
     reader.end_world(&seen)?;

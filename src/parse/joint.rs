@@ -3,10 +3,10 @@
 
 use super::{Element as _, Reader, Reading, Seen, Tag, elements};
 use crate::arena::JointOrigin;
-use crate::error::{Code, Parsed, Problem, problem};
+use crate::error::{Code, problem};
 use crate::rules;
 use crate::scene::joints::{self, Element, Slot, Value};
-use crate::scene::{Joint, JointKind, NONE, Object, Place, Vec2};
+use crate::scene::{Joint, JointKind, KeptAt, NONE, Object};
 
 elements! {
     enum JointChild {
@@ -83,43 +83,6 @@ static ROWS: [Option<&Element>; JointChild::ALL.len()] = {
     rows
 };
 
-/// The joint as the format can hold it: the defaults of its kind, then every field the
-/// format has for that kind taken from `given` (the common fields included). Fails on a
-/// non-finite value or a negative one where the format forbids it, naming the element.
-pub(crate) fn canonical_joint(given: &Joint) -> Parsed<Joint> {
-    let kind = given.kind().ok_or_else(|| -> Problem {
-        problem(Code::InvalidArgument, 0, format!("unknown joint kind {}", given.kind))
-    })?;
-    let mut joint = Joint {
-        name: given.name,
-        user_data: given.user_data,
-        body_a: given.body_a,
-        body_b: given.body_b,
-        collide_connected: given.collide_connected,
-        ..Joint::new(kind)
-    };
-    let mut source = *given;
-    let finite = |name: &str, v: f32| rules::finite(name, &[v]).map(|()| v);
-    for element in &joints::ELEMENTS {
-        let name = element.name;
-        let Some(Slot::Fills(value)) = element.slot(kind) else { continue };
-        match value {
-            Value::Vector(field) => {
-                let v = *field(&mut source);
-                *field(&mut joint) = Vec2::new(finite(name, v.x)?, finite(name, v.y)?);
-            }
-            Value::Float(field) => *field(&mut joint) = finite(name, *field(&mut source))?,
-            Value::NonNegative(field) => {
-                let v = finite(name, *field(&mut source))?;
-                *field(&mut joint) = rules::not_negative(format_args!("<{name}>"), v, 0)?;
-            }
-            Value::Flag(field) => *field(&mut joint) = *field(&mut source),
-            Value::JointIndex(field) => *field(&mut joint) = *field(&mut source),
-        }
-    }
-    Ok(joint)
-}
-
 /// Every joint `Type` [`joint_kind`] reads, in the format's spelling, for a "did you mean".
 const JOINT_TYPES: [&str; 13] = [
     "Revolute",
@@ -170,7 +133,7 @@ impl<'a> Reader<'a> {
         let kind = self.joint_type(tag)?;
         if kind == JointKind::Unsupported {
             // It has no Box2Scene form: the writer writes back its whole text.
-            self.tok.pin(tag.at);
+            self.tok.kept.pin(tag.at);
         }
         let mut joint = Joint::new(kind);
         let mut name_str = None;
@@ -261,7 +224,7 @@ impl<'a> Reader<'a> {
         self.check_joint(tag, &joint, &at)?;
         if kind == JointKind::Unsupported {
             let text = self.tok.unpin(self.tok.position());
-            self.keep_str(Place::Whole, &text);
+            self.keep_str(KeptAt::Whole, &text);
         }
         self.end_object();
         let origin = JointOrigin {

@@ -15,7 +15,6 @@ mod tokenizer;
 mod user_data;
 mod world;
 
-pub(crate) use joint::canonical_joint;
 use names::{Element, elements};
 pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 
@@ -27,7 +26,7 @@ use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::place::{Placer, Spot};
 use crate::rules;
-use crate::scene::{Kept, KeptText, Object, Place, PoolStr, Span};
+use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
 use tokenizer::{Attr, Node, Reading, Tag, Text, Tokenizer, verbatim};
 
@@ -58,24 +57,27 @@ fn read_split<'a>(
     split: Option<(Vec<ahead::Boundary>, usize)>,
 ) -> Read<'a> {
     debug_assert!(!recovering || options.threads == 1, "a read that goes on is one thread's");
-    std::thread::scope(|scope| {
-        let helper = ahead::start(scope, source.pieces(), options, split);
-        let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
-        let read = ahead::read(&mut reader, helper);
-        let Reader { mut tok, mut arena, .. } = reader;
-        let read = match read {
-            Ok(()) => {
-                arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
-                Ok(arena)
-            }
-            Err(halt) => {
-                let mut errors = arena.findings.take_errors();
-                errors.push(tok.place(*halt.into_problem()));
-                Err(Stopped { errors, warnings: arena.findings.take_warnings() })
-            }
-        };
-        (read, Placer::new(tok.into_source()))
-    })
+    let helped = ahead::helped(&source, options, &split);
+    let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
+    let read = match helped {
+        None => reader.whole(),
+        Some(pieces) => std::thread::scope(|scope| {
+            ahead::read(&mut reader, ahead::start(scope, pieces, options, split))
+        }),
+    };
+    let Reader { mut tok, mut arena, .. } = reader;
+    let read = match read {
+        Ok(()) => {
+            arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
+            Ok(arena)
+        }
+        Err(halt) => {
+            let mut errors = arena.findings.take_errors();
+            errors.push(tok.place(*halt.into_problem()));
+            Err(Stopped { errors, warnings: arena.findings.take_warnings() })
+        }
+    };
+    (read, Placer::new(tok.into_source()))
 }
 
 /// Which of an object's known elements were already read (for `duplicate-element`).
@@ -101,12 +103,23 @@ struct Reader<'a> {
     /// comments and ignored elements read go.
     object: Object,
     within: &'static str,
+    /// Whether the text the records do not hold is kept for the writer: a check, which
+    /// writes nothing, keeps none.
+    for_writer: bool,
 }
 
 impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict, recovering);
-        Reader { tok, arena, object: Object::World, within: "" }
+        Reader { tok, arena, object: Object::World, within: "", for_writer: !recovering }
+    }
+
+    /// The whole document, on the calling thread alone.
+    fn whole(&mut self) -> Reading<()> {
+        let mut seen = Seen::default();
+        self.document(&mut seen)?;
+        self.end_world(&seen)?;
+        self.epilog()
     }
 
     /// An error the reading can go on past (see [`crate::arena::Findings::recover`]), placed
@@ -225,7 +238,9 @@ impl<'a> Reader<'a> {
             let message =
                 format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
             self.warn(Code::UnknownElement, attr.at, message)?;
-            self.keep_str(Place::Attribute, &verbatim(tag, attr));
+            if self.keeping() {
+                self.keep_str(KeptAt::Attribute, &verbatim(tag, attr));
+            }
         }
         Ok(())
     }
@@ -246,10 +261,8 @@ impl<'a> Reader<'a> {
     /// writer at the end of where it was.
     pub fn ignore(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.discard(child, message)?;
-        if !self.tok.pinned() {
-            let text = self.kept_text(child.at, self.tok.position());
-            self.keep(self.object, Place::Inside { within: self.within, before: "" }, text);
-        }
+        let place = KeptAt::Inside { within: self.within, before: "" };
+        self.keep(self.object, place, child.at, self.tok.position());
         Ok(())
     }
 
@@ -258,10 +271,16 @@ impl<'a> Reader<'a> {
     pub fn discard(&mut self, child: &Tag, message: String) -> Reading<()> {
         self.warn(Code::UnknownElement, child.at, message)?;
         self.tok.check_attributes(child)?;
-        self.tok.pin(child.at);
+        self.tok.kept.pin(child.at);
         self.tok.skip(child)?;
-        self.tok.drop_pin();
+        self.tok.kept.unpin();
         Ok(())
+    }
+
+    /// Whether text read now is kept for the writer: not by a check, nor inside text kept
+    /// whole.
+    fn keeping(&self) -> bool {
+        self.for_writer && !self.tok.kept.pinned()
     }
 
     /// The text from `from` to `to`, for the writer: a span when the text stays at hand,
@@ -273,59 +292,90 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// Keeps `text` for the writer at `place` in `object`: with the piece before it when
-    /// that is at the same place and only white space lies between them.
-    fn keep(&mut self, object: Object, place: Place, text: KeptText) {
-        let last =
-            self.arena.scene.kept.last_mut().filter(|k| k.object == object && k.place == place);
-        if let (Some(last), KeptText::File(Span { from, to })) = (last, text)
-            && let KeptText::File(Span { from: first, to: end }) = last.text
-            && trim_xml(self.tok.slice(end, from)).is_empty()
-        {
-            last.text = KeptText::File(Span { from: first, to });
+    /// Keeps the file's text from `from` to `to` for the writer at `place` in `object`
+    /// (unless it is not [`Reader::keeping`]): with the piece before it when that is at
+    /// the same place, was kept from the file, and only white space lies between them,
+    /// which the tokenizer holds at hand from where that piece ends (see
+    /// [`Keeping::hold`](tokenizer::Keeping::hold)), so that a load from a path joins what
+    /// one from memory joins.
+    fn keep(&mut self, object: Object, place: KeptAt, from: usize, to: usize) {
+        if !self.keeping() {
             return;
         }
-        self.arena.scene.kept.push(Kept { object, place, text });
+        if let Some(end) = self.tok.kept.held().filter(|&end| end <= from)
+            && trim_xml(self.tok.slice(end, from)).is_empty()
+            && let Some(last) =
+                self.arena.scene.kept.last().filter(|k| k.object == object && k.place == place)
+            && let Some(joined) = self.joined(last.text, end, to)
+        {
+            self.arena.scene.kept.last_mut().expect("the piece joined").text = joined;
+        } else {
+            let text = self.kept_text(from, to);
+            self.arena.scene.kept.push(Kept { object, place, text });
+        }
+        self.tok.kept.hold(to);
+    }
+
+    /// The kept text `last`, which ends at offset `end` of the file, made to go on to `to`.
+    fn joined(&mut self, last: KeptText, end: usize, to: usize) -> Option<KeptText> {
+        match last {
+            KeptText::File(Span { from, to: last_end }) => {
+                (last_end == end).then_some(KeptText::File(Span { from, to }))
+            }
+            // Copied on into the pool, which the last piece ends.
+            KeptText::Pooled(Span { from, to: pooled_to }) => {
+                let text = self.tok.slice(end, to);
+                match self.arena.scene.keep_str(text) {
+                    KeptText::Pooled(Span { from: next, to }) if next == pooled_to => {
+                        Some(KeptText::Pooled(Span { from, to }))
+                    }
+                    _ => unreachable!("the pool's text is appended where it ends"),
+                }
+            }
+        }
     }
 
     /// Keeps `text` (not from the file's text as it stands) at `place` in the object being
-    /// read, unless it is inside text kept whole.
-    fn keep_str(&mut self, place: Place, text: &str) {
-        if !self.tok.pinned() {
+    /// read, unless it is not [`Reader::keeping`].
+    fn keep_str(&mut self, place: KeptAt, text: &str) {
+        if self.keeping() {
             let text = self.arena.scene.keep_str(text);
-            self.keep(self.object, place, text);
+            self.arena.scene.kept.push(Kept { object: self.object, place, text });
+            self.tok.kept.release();
         }
     }
 
     /// Gives the comments read since the last element to `object`, at `place`. Inlined: it
     /// runs for nearly every element, and there are comments before few.
     #[inline(always)]
-    pub fn place_comments(&mut self, object: Object, place: Place) {
-        if self.tok.has_comments() {
+    pub fn place_comments(&mut self, object: Object, place: KeptAt) {
+        if self.tok.kept.has_comments() {
             self.keep_comments(object, place);
         }
     }
 
     /// [`Reader::place_comments`] when there are some.
     #[inline(never)]
-    fn keep_comments(&mut self, object: Object, place: Place) {
-        let Some(comments) = self.tok.take_comments() else { return };
+    fn keep_comments(&mut self, object: Object, place: KeptAt) {
+        let Some(comments) = self.tok.kept.take_comments() else { return };
         for (from, to) in comments {
-            let text = self.kept_text(from, to);
-            self.keep(object, place, text);
+            self.keep(object, place, from, to);
         }
     }
 
     /// An item of a world container begins: the comments before it go before it.
     pub fn begin_object(&mut self, object: Object) {
-        self.place_comments(object, Place::Before);
+        self.place_comments(object, KeptAt::Before);
         (self.object, self.within) = (object, "");
+        // Nothing kept later joins what went before the object.
+        self.tok.kept.release();
     }
 
     /// The item ends: the comments inside it not followed by an element go at its end.
     pub fn end_object(&mut self) {
-        self.place_comments(self.object, Place::Inside { within: "", before: "" });
+        self.place_comments(self.object, KeptAt::Inside { within: "", before: "" });
         self.object = Object::World;
+        self.tok.kept.release();
     }
 
     /// Reads a child element of the object's child `within` with `read`: the comments in
@@ -337,8 +387,9 @@ impl<'a> Reader<'a> {
     ) -> Reading<T> {
         self.within = within;
         let read = read(self);
-        self.place_comments(self.object, Place::Inside { within, before: "" });
+        self.place_comments(self.object, KeptAt::Inside { within, before: "" });
         self.within = "";
+        self.tok.kept.release();
         read
     }
 
@@ -352,14 +403,16 @@ impl<'a> Reader<'a> {
         seen: &mut Seen,
     ) -> Reading<Option<(E, bool)>> {
         let found = E::NAMES.find(child.name.key());
-        if self.tok.has_comments() {
+        if self.tok.kept.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
-            self.keep_comments(self.object, Place::Inside { within: self.within, before });
+            self.keep_comments(self.object, KeptAt::Inside { within: self.within, before });
         }
         let Some(index) = found else {
             self.unknown(parent, child, E::NAMES.names)?;
             return Ok(None);
         };
+        // A known element lies between what was kept and what is kept next.
+        self.tok.kept.release();
         let bit = 1u64 << index;
         let repeated = seen.bits & bit != 0;
         seen.bits |= bit;

@@ -111,7 +111,8 @@ impl<'a> Reader<'a> {
 
 /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
 fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Reading<(String, EditorForm)> {
-    tok.pin(tok.position());
+    let at = tok.position();
+    tok.kept.pin(at);
     let mut form = EditorForm::default();
     let mut path: Vec<Inside> = Vec::new();
     loop {

@@ -3,7 +3,7 @@
 use super::{Element, Reader, Reading, Seen, Tag, elements};
 use crate::containers::Container;
 use crate::error::{Code, problem};
-use crate::scene::{Object, Place};
+use crate::scene::{KeptAt, Object};
 
 elements! {
     pub(super) enum WorldChild { Gravity, Shapes, Fixtures, Bodies, Joints }
@@ -27,7 +27,7 @@ impl<'a> Reader<'a> {
     /// elements read; [`Reader::end_world`] and [`Reader::epilog`] end the reading.
     pub(super) fn document(&mut self, seen: &mut Seen) -> Reading<()> {
         let root = self.root()?;
-        self.place_comments(Object::World, Place::Before);
+        self.place_comments(Object::World, KeptAt::Before);
         // Placed now: the warnings about the world come once the file is read.
         self.arena.origins.world = self.spot(root.at);
         self.read_version(&root)?;
@@ -106,10 +106,12 @@ impl<'a> Reader<'a> {
     /// What follows `</World>`: blank text, comments and processing instructions only (once
     /// read, nothing).
     pub(super) fn epilog(&mut self) -> Reading<()> {
+        // `</World>` lies between what was kept in the world and what is kept after it.
+        self.tok.kept.release();
         loop {
             match self.tok.next_node()? {
                 super::Node::Eof => {
-                    self.place_comments(Object::World, Place::After);
+                    self.place_comments(Object::World, KeptAt::After);
                     return Ok(());
                 }
                 super::Node::Text(t) if self.tok.is_blank(&t) => {}
@@ -153,7 +155,7 @@ impl<'a> Reader<'a> {
             }
             self.container(&child, container)?;
         }
-        self.place_comments(Object::World, Place::Inside { within: "", before: "" });
+        self.place_comments(Object::World, KeptAt::Inside { within: "", before: "" });
         Ok(())
     }
 
@@ -166,7 +168,7 @@ impl<'a> Reader<'a> {
             Container::Joints => Self::joint,
         };
         self.items(tag, name.item(), each)?;
-        self.place_comments(Object::World, Place::Inside { within: name.name(), before: "" });
+        self.place_comments(Object::World, KeptAt::Inside { within: name.name(), before: "" });
         Ok(())
     }
 

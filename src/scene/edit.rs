@@ -2,7 +2,7 @@
 //! holds, the text its file held beyond the records too, whose records the builder then
 //! replaces or takes out in place, the names and kept text of the others following them.
 
-use super::kept::{Kept, Object, Place};
+use super::kept::{Kept, KeptAt, Object};
 use super::{PoolStr, Scene, SceneBuilder, Str, UserDataText};
 
 /// The index a record at `index` has once the record at `removed` is taken out; None for
@@ -87,7 +87,7 @@ impl SceneBuilder {
             names.retain(|&(i, _)| i != index);
             names.extend(name.map(|name| (index, name)));
         }
-        self.kept.retain(|k| k.object != object || matches!(k.place, Place::Before | Place::After));
+        self.kept.retain(|k| k.object != object || matches!(k.place, KeptAt::Before | KeptAt::After));
     }
 
     /// Forgets `object`, whose record was taken out: its name and the text its file held

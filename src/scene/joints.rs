@@ -2,8 +2,8 @@
 //! file may give a joint, in the order box2scene's own writer writes them, the kinds that
 //! read it, the kinds that writer writes it for, the field of the record it fills (with its
 //! value class), and the kinds in which only a Version 2 file may hold it. The reader, the
-//! builder's canonical joint, both writers, the dump and the check of what needs Version 2
-//! take it from here.
+//! canonical joint (see [`canonical`]), both writers, the dump and the check of what needs
+//! Version 2 take it from here.
 //!
 //! The elements every kind has (`Name`, `BodyA`, `BodyB` and `CollideConnected` before the
 //! table's, `UserData` after them) are not in the table, nor are the defaults, which
@@ -382,6 +382,43 @@ const fn same(a: &[u8], b: &[u8]) -> bool {
         i += 1;
     }
     true
+}
+
+/// `given` as the format can hold a joint of its `kind`: the defaults of the kind, then
+/// every field the format has for it taken from `given` (the common fields too). Each
+/// float goes through `float` with its element's name and whether the format forbids it
+/// negative, which may refuse it.
+pub(crate) fn canonical<E>(
+    given: &Joint,
+    kind: JointKind,
+    mut float: impl FnMut(&str, f32, bool) -> Result<f32, E>,
+) -> Result<Joint, E> {
+    let mut joint = Joint {
+        name: given.name,
+        user_data: given.user_data,
+        body_a: given.body_a,
+        body_b: given.body_b,
+        collide_connected: given.collide_connected,
+        ..Joint::new(kind)
+    };
+    let mut source = *given;
+    for element in &ELEMENTS {
+        let name = element.name;
+        let Some(Slot::Fills(value)) = element.slot(kind) else { continue };
+        match value {
+            Value::Vector(field) => {
+                let v = *field(&mut source);
+                *field(&mut joint) = Vec2::new(float(name, v.x, false)?, float(name, v.y, false)?);
+            }
+            Value::Float(field) => *field(&mut joint) = float(name, *field(&mut source), false)?,
+            Value::NonNegative(field) => {
+                *field(&mut joint) = float(name, *field(&mut source), true)?;
+            }
+            Value::Flag(field) => *field(&mut joint) = *field(&mut source),
+            Value::JointIndex(field) => *field(&mut joint) = *field(&mut source),
+        }
+    }
+    Ok(joint)
 }
 
 /// Whether `joint`, of `kind`, holds a value other than its kind's default in an element

@@ -52,7 +52,7 @@ pub(super) struct Objects {
 /// Where in its object a piece of [`Kept`] text goes. Element names are the writer's
 /// spelling (the canonical one of the loader's tables).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Place {
+pub(crate) enum KeptAt {
     /// Before the object's start tag: a comment that preceded it (for the world, before
     /// `<World>`).
     Before,
@@ -74,7 +74,7 @@ pub(crate) enum Place {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Kept<T = Span> {
     pub object: Object,
-    pub place: Place,
+    pub place: KeptAt,
     pub text: T,
 }
 

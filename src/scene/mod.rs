@@ -20,7 +20,7 @@ mod kept;
 mod records;
 
 pub(crate) use builder::{PoolStr, SceneBuilder, UserDataText};
-pub(crate) use kept::{Beyond, Kept, KeptText, Object, Place, Span};
+pub(crate) use kept::{Beyond, Kept, KeptAt, KeptText, Object, Span};
 pub use records::*;
 
 /// A loaded scene: immutable once built. All arrays are flat; see the field docs of each

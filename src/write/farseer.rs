@@ -13,7 +13,7 @@ use crate::error::{Code, Error, Position};
 use crate::holds::escaped;
 use crate::rules::local_axis;
 use crate::scene::joints::{self, Element, Value};
-use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, Object, Place};
+use crate::scene::{Body, BodyKind, Dialect, Fixture, Joint, JointKind, KeptAt, Object};
 use crate::scene::{Scene, Shape, ShapeKind, Vec2};
 
 /// Writes `scene` in `dialect` (one of the engines' own).
@@ -66,7 +66,7 @@ fn cannot_hold(scene: &Scene, dialect: Dialect) -> Option<(Object, String)> {
     let index = |i: usize| i as u32;
     for kept in &scene.beyond.pieces {
         let text = scene.beyond.text(kept);
-        if kept.place != Place::Whole {
+        if kept.place != KeptAt::Whole {
             return Some((kept.object, "holds comments or unknown content".to_owned()));
         }
         if text.contains("<!") || text.contains("<?") {
@@ -599,7 +599,7 @@ impl FarseerWriter<'_> {
 
     fn joint(&mut self, index: usize, joint: &Joint) {
         let kept = self.scene.beyond.of(Object::Joint(index as u32));
-        if let Some(whole) = kept.iter().find(|k| k.place == Place::Whole) {
+        if let Some(whole) = kept.iter().find(|k| k.place == KeptAt::Whole) {
             self.out.push_str("    ");
             self.out.push_str(self.scene.beyond.text(whole));
             self.out.push('\n');

@@ -10,7 +10,7 @@ use crate::holds::escaped;
 use crate::scene::Object;
 use crate::scene::joints::{self, Value};
 use crate::scene::{Body, BodyKind, Filter, Fixture, Joint, JointKind, Kept, NONE};
-use crate::scene::{Place as KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
+use crate::scene::{KeptAt, Scene, Shape, ShapeKind, Str, Vec2};
 
 /// How many items `container` holds.
 fn count(scene: &Scene, container: Container) -> usize {

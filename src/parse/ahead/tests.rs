@@ -461,7 +461,7 @@ fn the_calling_thread_takes_what_the_helper_read() {
             };
             let pieces = vec![(starts[1], Container::Bodies), (starts[2], Container::Bodies)];
             std::thread::scope(|scope| {
-                let helper = start(scope, Some(second), &options, Some((pieces, first)));
+                let helper = start(scope, second, &options, Some((pieces, first)));
                 read(&mut reader, helper).unwrap();
             });
             let what = format!("helped from piece {first}, from a file: {in_file}");
@@ -504,12 +504,8 @@ fn pieces_with_warnings_are_taken_and_kept_in_order() {
     // One piece: the helper's text matches the caller's up to its start.
     let pieces = vec![(starts[2], Container::Bodies)];
     std::thread::scope(|scope| {
-        let helper = start(
-            scope,
-            Some(Pieces::Memory { text: &theirs, bom: false }),
-            &options,
-            Some((pieces, 0)),
-        );
+        let theirs = Pieces::Memory { text: &theirs, bom: false };
+        let helper = start(scope, theirs, &options, Some((pieces, 0)));
         read(&mut reader, helper).unwrap();
     });
     let warnings = reader.arena.findings.take_warnings();

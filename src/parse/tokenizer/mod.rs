@@ -28,10 +28,12 @@ use crate::place::{Cursor, Lines};
 use crate::scan::{Index, Mark};
 use crate::text::{self};
 
+mod keeping;
 mod pieces;
 mod values;
 
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
+pub(crate) use keeping::Keeping;
 use values::resolve_text;
 pub(super) use values::verbatim;
 
@@ -187,6 +189,7 @@ pub(super) struct Value {
 
 /// An attribute of a [`Tag`], borrowed from it: lowercase comparisons go through
 /// [`Attr::is`].
+#[derive(Default)]
 pub(super) struct Attr<'t> {
     pub key: &'t str,
     pub value: Cow<'t, str>,
@@ -199,6 +202,43 @@ impl Attr<'_> {
     #[inline]
     pub fn is(&self, name: &str) -> bool {
         self.key.eq_ignore_ascii_case(name)
+    }
+}
+
+/// How many attributes [`Attrs`] holds in place: a tag that has any has one or two.
+const IN_PLACE: usize = 2;
+
+/// The attributes of a tag, read as a slice: the usual one or two held in place, so that
+/// reading them allocates nothing; more in a vector.
+#[derive(Default)]
+pub(super) struct Attrs<'t> {
+    in_place: [Attr<'t>; IN_PLACE],
+    len: usize,
+    more: Vec<Attr<'t>>,
+}
+
+impl<'t> Attrs<'t> {
+    fn push(&mut self, attr: Attr<'t>) {
+        if self.len < IN_PLACE {
+            self.in_place[self.len] = attr;
+            self.len += 1;
+            return;
+        }
+        if self.more.is_empty() {
+            self.more.extend(self.in_place.iter_mut().map(std::mem::take));
+        }
+        self.more.push(attr);
+    }
+}
+
+impl<'t> std::ops::Deref for Attrs<'t> {
+    type Target = [Attr<'t>];
+
+    fn deref(&self) -> &[Attr<'t>] {
+        match self.more.is_empty() {
+            true => &self.in_place[..self.len],
+            false => &self.more,
+        }
     }
 }
 
@@ -221,12 +261,9 @@ pub(super) struct Tokenizer<'a> {
     /// before on stays at hand, so a value can be read after the end tag that ends it.
     started: usize,
     last: usize,
-    /// Set while text is kept verbatim (UserData, an unknown element, a Farseer-only
-    /// joint, one inside another): the text from the first on stays at hand.
-    pins: Vec<usize>,
-    /// The comments read since the reader last took them, as spans of the text (which
-    /// stay at hand until then).
-    comments: Vec<(usize, usize)>,
+    /// What stays at hand for the reader: text kept verbatim, comments, the text after
+    /// what it kept for the writer.
+    pub kept: Keeping,
     /// The open elements, outermost first, with the offsets of their start tags: the text
     /// of the third (an item of a world container, an object) stays at hand while it is
     /// open, so that its offsets can be placed until it ends.
@@ -289,8 +326,7 @@ impl<'a> Tokenizer<'a> {
             pos: 0,
             started: 0,
             last: 0,
-            pins: Vec::new(),
-            comments: Vec::new(),
+            kept: Keeping::default(),
             open: Vec::new(),
             elements: 0,
             lines,
@@ -323,10 +359,7 @@ impl<'a> Tokenizer<'a> {
         if self.found.is_some() {
             self.take_found_ends();
         }
-        let keep = [self.pins.first(), self.comments.first().map(|(at, _)| at)]
-            .into_iter()
-            .flatten()
-            .fold(self.last, |keep, &at| keep.min(at));
+        let keep = self.kept.first().map_or(self.last, |kept| kept.min(self.last));
         let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
         // The scan goes on from where it stands.
         let keep = keep.min(self.index.scanned());
@@ -360,8 +393,7 @@ impl<'a> Tokenizer<'a> {
     fn may_end(&self) -> bool {
         let container = &self.ends[self.next_end].1;
         matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes())
-            && self.pins.is_empty()
-            && self.comments.is_empty()
+            && self.kept.waits_for_nothing()
     }
 
     /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
@@ -419,7 +451,21 @@ impl<'a> Tokenizer<'a> {
     #[cold]
     #[inline(never)]
     fn skip_space_on(&mut self) -> Reading<()> {
-        while self.more()? {
+        loop {
+            // Directly in the root or in a container, nothing read before the white space
+            // is looked at again (an item's text is kept while it is open): neither it nor
+            // the white space stays at hand, however long it runs.
+            if self.open.len() <= 2 {
+                (self.last, self.started) = (self.pos, self.pos);
+            }
+            // The scan passes the white space too (it holds no mark), so that it need not
+            // stay at hand for the scan either.
+            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let mark = self.index.next(text, base);
+            debug_assert!(mark.is_none(), "white space holds no markup");
+            if !self.more()? {
+                break;
+            }
             let rest = self.rest(self.pos);
             let (space, all) = (space_len(rest), rest.len());
             self.pos += space;
@@ -681,9 +727,7 @@ impl<'a> Tokenizer<'a> {
             }
             self.index.take();
             self.pos = end + 3;
-            if self.pins.is_empty() {
-                self.comments.push((at, self.pos));
-            }
+            self.kept.comment(at, self.pos);
             return Ok(None);
         }
         if head.starts_with(b"<![CDATA[") {

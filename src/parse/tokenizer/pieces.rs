@@ -1,5 +1,5 @@
-//! Where the reader is and what it keeps: positions placed, findings about elements,
-//! pinned text, comments, and the ends and resumptions of pieces for the second thread.
+//! Where the reader is: positions placed, findings about elements, the text kept verbatim
+//! taken back, and the ends and resumptions of pieces for the second thread.
 
 use super::super::names::Name;
 use super::{FoundEnds, Stop, Tag, Tokenizer};
@@ -46,15 +46,10 @@ impl<'a> Tokenizer<'a> {
         self.pos
     }
 
-    /// Keeps the text from `from` on at hand (UserData keeps its inner XML verbatim),
-    /// until [`Tokenizer::unpin`].
-    pub fn pin(&mut self, from: usize) {
-        self.pins.push(from);
-    }
-
-    /// The text from the last pinned offset to `to`, and lets it go.
+    /// The text from the last pinned offset to `to` (see [`Keeping::pin`](super::Keeping::pin)),
+    /// and lets it go.
     pub fn unpin(&mut self, to: usize) -> String {
-        let from = self.pins.pop().unwrap_or(to);
+        let from = self.kept.unpin().unwrap_or(to);
         self.source.slice(from, to).to_owned()
     }
 
@@ -156,28 +151,6 @@ impl<'a> Tokenizer<'a> {
     /// The elements read so far.
     pub fn elements(&self) -> u64 {
         self.elements
-    }
-
-    /// Lets go of the last pinned offset, keeping nothing.
-    pub fn drop_pin(&mut self) {
-        self.pins.pop();
-    }
-
-    /// Whether text is being kept verbatim (see [`Tokenizer::pin`]).
-    pub fn pinned(&self) -> bool {
-        !self.pins.is_empty()
-    }
-
-    /// Whether comments were read since [`Tokenizer::take_comments`] was last called.
-    #[inline(always)]
-    pub fn has_comments(&self) -> bool {
-        !self.comments.is_empty()
-    }
-
-    /// The comments read since the last call, as spans of the text at hand; None when
-    /// there are none, as between most elements.
-    pub fn take_comments(&mut self) -> Option<Vec<(usize, usize)>> {
-        (!self.comments.is_empty()).then(|| std::mem::take(&mut self.comments))
     }
 
     /// The source it read, all of it at hand again.

@@ -2,6 +2,8 @@
 //! attributes read (the usual ones here, the rest by quick-xml), elements skipped.
 
 use std::borrow::Cow;
+use std::collections::HashSet;
+use std::hash::{Hash, Hasher};
 
 use quick_xml::errors::IllFormedError;
 use quick_xml::events::attributes::AttrError;
@@ -9,7 +11,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::Reading;
-use super::{Attr, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
+use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
@@ -205,7 +207,7 @@ impl<'a> Tokenizer<'a> {
     fn plain_span(&mut self, tag: &Tag) -> Option<(usize, usize)> {
         // Text kept as written (a Farseer-only joint) must be XML as it stands, which the
         // nodes' path checks.
-        if tag.empty || !self.pins.is_empty() {
+        if tag.empty || self.kept.pinned() {
             return None;
         }
         let at = self.pos;
@@ -277,31 +279,26 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, unescaped, each with the offset of its value.
-    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Vec<Attr<'t>>> {
+    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Attrs<'t>> {
         let Some(content) = tag.content.as_deref() else {
-            return Ok(Vec::new());
+            return Ok(Attrs::default());
         };
         let attrs = match plain_attributes(content, tag.name.len(), tag.at) {
-            Some(attrs) => attrs,
+            Some(attrs) => return Ok(attrs),
             None => self.xml_attributes(tag, content)?,
         };
         // Names compare as the loader reads them, ignoring case: `Type` and `type` are one
         // attribute, given twice.
-        for (i, attr) in attrs.iter().enumerate() {
-            if attrs[..i].iter().any(|a| a.is(attr.key)) {
-                let offset = attr.key.as_ptr().addr().saturating_sub(content.as_ptr().addr());
-                return Err(problem(
-                    Code::DuplicateAttribute,
-                    tag.at + 1 + offset,
-                    format!(
-                        "<{}> has the attribute {} twice (names ignore case)",
-                        tag.name(),
-                        attr.key
-                    ),
-                ));
-            }
-        }
-        Ok(attrs)
+        let Some(i) = first_repeated(&attrs) else {
+            return Ok(attrs);
+        };
+        let key = attrs[i].key;
+        let offset = key.as_ptr().addr().saturating_sub(content.as_ptr().addr());
+        Err(problem(
+            Code::DuplicateAttribute,
+            tag.at + 1 + offset,
+            format!("<{}> has the attribute {key} twice (names ignore case)", tag.name()),
+        ))
     }
 
     /// Checks that the attributes of `tag`, which is kept as written rather than read
@@ -318,11 +315,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
-    pub(super) fn xml_attributes<'t>(
-        &self,
-        tag: &'t Tag,
-        content: &'t str,
-    ) -> Parsed<Vec<Attr<'t>>> {
+    pub(super) fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Attrs<'t>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
         // tag, is found by its offset in `content` (which counts from after `<`).
         let within = |piece: &str| {
@@ -330,7 +323,7 @@ impl<'a> Tokenizer<'a> {
             Some((from, content.get(from..from + piece.len())?))
         };
         let start = BytesStart::from_content(content, tag.name.len());
-        let mut attrs = Vec::new();
+        let mut attrs = Attrs::default();
         for attr in start.attributes() {
             let attr = attr.map_err(|e| self.attr_error(tag, e))?;
             let raw = within(&attr.value);
@@ -398,19 +391,19 @@ impl<'a> Tokenizer<'a> {
 
 /// The attributes of the usual tag, whose `content` (what follows its `<`) has its name
 /// of `name_len` bytes and then `name="value"` pairs (or single quotes) after white space,
-/// with plain names, values with no reference, `<` or line break, and no name twice.
-/// None for anything else: quick-xml reads that, and tells what is malformed.
-pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Vec<Attr<'_>>> {
+/// with plain names, values with no reference, `<` or line break, and no name twice (in
+/// any case, found by [`first_repeated`]). None for anything else: quick-xml reads that,
+/// and tells what is malformed.
+pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Attrs<'_>> {
     let bytes = content.as_bytes();
-    // A tag with more than its name has an attribute or two: one allocation, no growing.
-    let mut attrs: Vec<Attr> = Vec::with_capacity(2);
+    let mut attrs = Attrs::default();
     let mut i = name_len;
     loop {
         // The tag's text is the source's, so white space is every byte up to 0x20.
         let space = space_len(&bytes[i..]);
         i += space;
         if i == bytes.len() {
-            return Some(attrs);
+            return first_repeated(&attrs).is_none().then_some(attrs);
         }
         let key_len = bytes[i..].iter().position(|&b| !is_plain_name_byte(b))?;
         let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
@@ -420,13 +413,46 @@ pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Opt
         let len = value
             .iter()
             .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
-        if space == 0 || key_len == 0 || value[len] != *quote || attrs.iter().any(|a| a.is(key)) {
+        if space == 0 || key_len == 0 || value[len] != *quote {
             return None;
         }
         let start = i + key_len + 2;
         let value = Cow::Borrowed(&content[start..start + len]);
         attrs.push(Attr { key, value, at: at + 1 + start });
         i = start + len + 1;
+    }
+}
+
+/// Tags have an attribute or two; past this many, names are compared through a hash set.
+const FEW_ATTRIBUTES: usize = 8;
+
+/// The index of the first of `attrs` whose name one before it has, in any case. Linear in
+/// the attributes however many a tag has: a file may give one tag thousands.
+fn first_repeated(attrs: &[Attr]) -> Option<usize> {
+    if attrs.len() <= FEW_ATTRIBUTES {
+        return (1..attrs.len()).find(|&i| attrs[..i].iter().any(|a| a.is(attrs[i].key)));
+    }
+    let mut seen = HashSet::with_capacity(attrs.len());
+    attrs.iter().position(|attr| !seen.insert(Caseless(attr.key)))
+}
+
+/// A name that hashes and compares ignoring ASCII case, as names are read.
+struct Caseless<'k>(&'k str);
+
+impl PartialEq for Caseless<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.eq_ignore_ascii_case(other.0)
+    }
+}
+
+impl Eq for Caseless<'_> {}
+
+impl Hash for Caseless<'_> {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        for b in self.0.bytes() {
+            state.write_u8(b.to_ascii_lowercase());
+        }
+        state.write_usize(self.0.len());
     }
 }
 
