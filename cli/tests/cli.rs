@@ -1273,7 +1273,11 @@ fn check_recommends_strict_for_pipelines_which_then_fail_on_a_door_in_degrees() 
     let run = sandbox.run(&["check", "door.xml"]);
     assert_eq!(run.status, 0, "{}", run.stderr);
     assert!(run.stdout.contains("(did you mean <LowerAngle>?)"), "{}", run.stdout);
-    assert!(run.stdout.contains("warning[angle-in-degrees]: <LowerAngle> is -45"), "{}", run.stdout);
+    assert!(
+        run.stdout.contains("warning[angle-in-degrees]: <LowerAngle> is -45"),
+        "{}",
+        run.stdout
+    );
     let strict = sandbox.run(&["check", "--strict", "door.xml"]);
     assert_eq!(strict.status, 1, "{}", strict.stdout);
     assert!(strict.stdout.contains("error[unknown-element]"), "{}", strict.stdout);

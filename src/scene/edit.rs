@@ -87,7 +87,8 @@ impl SceneBuilder {
             names.retain(|&(i, _)| i != index);
             names.extend(name.map(|name| (index, name)));
         }
-        self.kept.retain(|k| k.object != object || matches!(k.place, KeptAt::Before | KeptAt::After));
+        self.kept
+            .retain(|k| k.object != object || matches!(k.place, KeptAt::Before | KeptAt::After));
     }
 
     /// Forgets `object`, whose record was taken out: its name and the text its file held
