@@ -178,6 +178,38 @@ b2s_code b2s_box2d32_capture_world(b2WorldId world, const b2BodyId* bodies, uint
 /** Frees the reports of a capture and sets them empty. NULL is ignored. */
 void b2s_box2d32_reports_free(b2s_box2d32_reports* reports);
 
+/* ---- lookups: the engine object built from a named record of the scene, and back. Each
+ * takes time linear in the records of its kind. */
+
+/** The body built from the scene's first body named `name` (b2s_scene_find_body), or
+ *  b2_nullBodyId when the scene has none of that name or it was not created. `built` is
+ *  what building `scene` gave (a result of another scene, with other counts, finds nothing);
+ *  NULL arguments give the null id. */
+b2BodyId b2s_box2d32_find_body(const b2s_box2d32_built* built, const b2s_scene* scene, const char* name);
+
+/** The shape built from the scene's first fixture named `name`, on the first body that has
+ *  that fixture (its first entry in the fixture ID pool); for a chain's (one shape per edge), its first segment. b2_nullShapeId
+ *  when there is none or it was not created. */
+b2ShapeId b2s_box2d32_find_fixture(const b2s_box2d32_built* built, const b2s_scene* scene,
+                              const char* name);
+
+/** The joint built from the scene's first joint named `name`, or b2_nullJointId when there
+ *  is none or it was skipped. */
+b2JointId b2s_box2d32_find_joint(const b2s_box2d32_built* built, const b2s_scene* scene, const char* name);
+
+/** The scene body `body` was built from, by `built`: its index in the scene's bodies, or
+ *  B2S_NONE when `body` is not a live body `built` holds (one the host made itself). */
+uint32_t b2s_box2d32_body_index(const b2s_box2d32_built* built, b2BodyId body);
+
+/** The entry of the fixture ID pool (b2s_scene_view::fixture_ids) that `shape` was built
+ *  for, a chain's segments included: the pool's value there is the scene fixture, and the
+ *  body whose fixtures range holds the entry is its body. B2S_NONE when `shape` is not a
+ *  live shape `built` holds. */
+uint32_t b2s_box2d32_shape_slot(const b2s_box2d32_built* built, b2ShapeId shape);
+
+/** The scene joint `joint` was built from: its index in the scene's joints, or B2S_NONE. */
+uint32_t b2s_box2d32_joint_index(const b2s_box2d32_built* built, b2JointId joint);
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif
