@@ -94,15 +94,13 @@ inline bool axis_normalising_to(b2Vec2 unit, b2Vec2& axis) {
     return false;
 }
 
-/// b2LinearStiffness or b2AngularStiffness.
-using StiffnessFunction = void (*)(float&, float&, float, float, const b2Body*, const b2Body*);
-
-/// The FrequencyHz and DampingRatio from which `stiffness_of`, called by build_world on
-/// the same two bodies (their masses are final by then), gives back `stiffness` and
-/// `damping` bit for bit; false when no floats do (the nearest are stored). A zero
-/// stiffness is no spring: Box2D 2.4 then ignores the damping.
-inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const b2Body* b,
-                          float stiffness, float damping, float& frequency, float& ratio) {
+/// The FrequencyHz and DampingRatio from which `spring_of(hz, ratio, stiffness, damping)`,
+/// what build_world computes for the joint on the same two bodies (their masses are final
+/// by then), gives back `stiffness` and `damping` bit for bit; false when no floats do (the
+/// nearest are stored). A zero stiffness is no spring: Box2D 2.4 then ignores the damping.
+template <class Spring>
+bool spring_giving(Spring spring_of, float stiffness, float damping, float& frequency,
+                   float& ratio) {
     frequency = 0.0f;
     ratio = 0.0f;
     if (stiffness == 0.0f) {
@@ -110,7 +108,7 @@ inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const
     }
     auto stiffness_at = [&](float hz) {
         float k = 0.0f, d = 0.0f;
-        stiffness_of(k, d, hz, 0.0f, a, b);
+        spring_of(hz, 0.0f, k, d);
         return k;
     };
     float per_hz_squared = stiffness_at(1.0f);
@@ -121,7 +119,7 @@ inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const
                                      std::sqrt(stiffness / per_hz_squared), frequency);
     auto damping_at = [&](float r) {
         float k = 0.0f, d = 0.0f;
-        stiffness_of(k, d, frequency, r, a, b);
+        spring_of(frequency, r, k, d);
         return d;
     };
     float per_ratio = damping_at(1.0f);
@@ -169,8 +167,11 @@ inline b2s_str name_of(const std::string& name) {
 /// One capture: the world, the builder filling up, and what each Box2D object became.
 class WorldCapture {
 public:
-    WorldCapture(b2World& world, std::vector<Report>& reports, const Namer* namer)
-        : world_(world), reports_(reports), namer_(namer != nullptr ? namer : &unnamed_) {}
+    /// `built` and `scene`, both null or both given: what build_world made the world of.
+    WorldCapture(b2World& world, std::vector<Report>& reports, const Namer* namer,
+                 const Built* built = nullptr, const b2s_scene* scene = nullptr)
+        : world_(world), reports_(reports), namer_(namer != nullptr ? namer : &unnamed_),
+          built_(built), level_(b2s_scene_get_view(scene)) {}
 
     b2s_scene* run() {
         b2s_vec2 gravity = to_b2s(world_.GetGravity());
@@ -675,15 +676,60 @@ private:
         return to_b2s(axis);
     }
 
-    void spring(StiffnessFunction stiffness_of, b2Joint& joint, float stiffness, float damping,
+    /// The record of the scene `joint` was built from, or nullptr (no scene given, or a
+    /// joint the host made).
+    const b2s_joint* level_joint(const b2Joint& joint) const {
+        if (built_ == nullptr || level_ == nullptr ||
+            built_->joints.size() != level_->joint_count) {
+            return nullptr;
+        }
+        uint32_t index = joint_index(*built_, &joint);
+        return index != B2S_NONE ? &level_->joints[index] : nullptr;
+    }
+
+    /// Writes the FrequencyHz and DampingRatio of the joint's spring: the level's own where
+    /// they give back, as build_world computes them (`spring_of`), the stiffness and damping
+    /// the engine holds; else the ones inverted from them.
+    template <class Spring>
+    void spring(Spring spring_of, const b2Joint& joint, float stiffness, float damping,
                 const std::string& name, b2s_joint& out) {
-        if (!spring_giving(stiffness_of, joint.GetBodyA(), joint.GetBodyB(), stiffness, damping,
-                           out.frequency_hz, out.damping_ratio)) {
+        const b2s_joint* level = level_joint(joint);
+        if (level != nullptr && level->kind == out.kind) {
+            float k = 0.0f, d = 0.0f;
+            spring_of(level->frequency_hz, level->damping_ratio, k, d);
+            if (same_bits(k, stiffness) && same_bits(d, damping)) {
+                out.frequency_hz = level->frequency_hz;
+                out.damping_ratio = level->damping_ratio;
+                return;
+            }
+        }
+        if (!spring_giving(spring_of, stiffness, damping, out.frequency_hz,
+                           out.damping_ratio)) {
             lossy("joint", joint_index_, name,
                   "no FrequencyHz and DampingRatio give back its stiffness " +
                       decimal(stiffness) + " and damping " + decimal(damping) +
                       " exactly; the nearest were written");
         }
+    }
+
+    /// build_world's spring for a distance joint: b2LinearStiffness.
+    static auto linear_spring(b2Joint& joint) {
+        return [&joint](float hz, float ratio, float& stiffness, float& damping) {
+            b2LinearStiffness(stiffness, damping, hz, ratio, joint.GetBodyA(), joint.GetBodyB());
+        };
+    }
+
+    /// build_world's spring for a wheel or weld joint (WorldBuilder::wheel_spring,
+    /// weld_spring), from the record written so far and the joint's bodies.
+    template <class Builder>
+    static auto record_spring(Builder spring_22, b2Joint& joint, const b2s_joint& out) {
+        return [spring_22, &joint, &out](float hz, float ratio, float& stiffness,
+                                         float& damping) {
+            b2s_joint record = out;
+            record.frequency_hz = hz;
+            record.damping_ratio = ratio;
+            spring_22(record, joint.GetBodyA(), joint.GetBodyB(), stiffness, damping);
+        };
     }
 
     bool revolute_record(b2RevoluteJoint& joint, const std::string& name, b2s_joint& out) {
@@ -737,7 +783,8 @@ private:
             out.max_length = max;
         } else if (spring_form) {
             out.length = joint.GetLength();
-            spring(b2LinearStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+            spring(linear_spring(joint), joint, joint.GetStiffness(), joint.GetDamping(), name,
+                   out);
         } else {
             out.length = min;
         }
@@ -810,7 +857,8 @@ private:
         out.enable_motor = joint.IsMotorEnabled();
         out.motor_speed = joint.GetMotorSpeed();
         out.max_motor_torque = joint.GetMaxMotorTorque();
-        spring(b2LinearStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+        spring(record_spring(WorldBuilder::wheel_spring, joint, out), joint, joint.GetStiffness(),
+               joint.GetDamping(), name, out);
         if (joint.IsLimitEnabled()) {
             lossy("joint", joint_index_, name,
                   "a wheel with a spring or motor has no limit in the format; its limit [" +
@@ -827,7 +875,8 @@ private:
         out.local_anchor_a = to_b2s(joint.GetLocalAnchorA());
         out.local_anchor_b = to_b2s(joint.GetLocalAnchorB());
         out.reference_angle = joint.GetReferenceAngle();
-        spring(b2AngularStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+        spring(record_spring(WorldBuilder::weld_spring, joint, out), joint, joint.GetStiffness(),
+               joint.GetDamping(), name, out);
         return true;
     }
 
@@ -858,6 +907,8 @@ private:
     std::vector<Report>& reports_;
     const Namer unnamed_{};
     const Namer* namer_;
+    const Built* built_;                // with level_: what build_world made, or nullptr
+    const b2s_scene_view* level_;       // the scene it was made from
     b2s_builder* builder_ = b2s_builder_new();
     std::unordered_map<std::string, uint32_t> shapes_;   // by shape_key
     std::unordered_map<std::string, uint32_t> fixtures_; // by fixture_key
@@ -873,6 +924,11 @@ private:
 inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
                                 const Namer* namer) {
     return detail::WorldCapture(world, reports, namer).run();
+}
+
+inline b2s_scene* capture_world(b2World& world, const Built& built, const b2s_scene* scene,
+                                std::vector<Report>& reports, const Namer* namer) {
+    return detail::WorldCapture(world, reports, namer, &built, scene).run();
 }
 
 } // namespace box2scene
