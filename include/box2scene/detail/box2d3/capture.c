@@ -24,6 +24,10 @@ typedef struct b2s3_capture {
     b2s_error* error;
     b2s_code failure; /* the first builder error, or B2S_CODE_OK */
     uint32_t shape_count, fixture_count, joint_count;
+    /* bodies whose rotation no float angle gives exactly: how many, the first, and the
+     * largest turn between a rotation and the angle written, said once a capture */
+    uint32_t turned_count, first_turned;
+    double largest_turn;
 } b2s3_capture;
 
 /* Bodies in an order of their own (negative, zero or positive): zero for the same body. */
@@ -351,6 +355,29 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
     return ok;
 }
 
+/* Notes that body `index`'s rotation `q` was written as `angle`, the nearest: the solver
+ * turns nearly every body it moves to such a rotation, so one report a capture says it. */
+static void b2s3_note_turned(b2s3_capture* c, uint32_t index, b2Rot q, float angle) {
+    double turn = fabs(atan2((double)q.s * cos((double)angle) - (double)q.c * sin((double)angle),
+                             (double)q.c * cos((double)angle) + (double)q.s * sin((double)angle)));
+    if (c->turned_count == 0) {
+        c->first_turned = index;
+    }
+    c->turned_count += 1;
+    c->largest_turn = turn > c->largest_turn ? turn : c->largest_turn;
+}
+
+static void b2s3_report_turned(b2s3_capture* c) {
+    if (c->turned_count == 0) {
+        return;
+    }
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "world", 0, NULL,
+                "rotations no angle gives exactly, as the solver turns bodies: %u of the "
+                "bodies (the first body %u) were written at the nearest angle, at most %.3g "
+                "rad from the rotation",
+                (unsigned)c->turned_count, (unsigned)c->first_turned, c->largest_turn);
+}
+
 static bool b2s3_same_mass(b2MassData a, b2MassData b) {
     return a.mass == b.mass && a.center.x == b.center.x && a.center.y == b.center.y &&
            a.rotationalInertia == b.rotationalInertia;
@@ -370,10 +397,7 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     b2s_body_default((uint32_t)type, &body);
     body.position = b2s3_to_b2s(b2s3_body_position(id));
     if (!b2s3_angle_of(b2Body_GetRotation(id), &body.angle)) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
-                    "no angle has exactly its rotation's cosine and sine; the nearest, %.9g "
-                    "rad, was written",
-                    (double)body.angle);
+        b2s3_note_turned(c, index, b2Body_GetRotation(id), body.angle);
     }
     body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
     if (type == b2_dynamicBody) {
@@ -692,6 +716,7 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
     for (uint32_t i = 0; i < body_count && ok; ++i) {
         ok = b2s3_capture_body(&c, i);
     }
+    b2s3_report_turned(&c);
     ok = ok && b2s3_capture_joints(&c);
     free(named);
     if (c.list.out_of_memory) {
