@@ -518,6 +518,63 @@ static int springs_are_inverted_as_the_build_computes_them() {
     return 0;
 }
 
+/// A host Namer that names the Chassis body only, by its own word.
+struct ChassisNamer : box2scene::Namer {
+    const b2Body* chassis = nullptr;
+    box2scene::Label body(b2Body& body) const override {
+        box2scene::Label label;
+        if (&body == chassis) label.name = "Car";
+        return label;
+    }
+};
+
+/// Given the scene and what build_world made, a capture keeps the level's Names and
+/// UserData with no host code: every body, fixture, shape and joint comes back named as the
+/// file named it; where the host's Namer gives a label, the host's wins.
+static int built_level_keeps_its_names_and_user_data() {
+    std::string xml = kCarLevel;
+    auto insert_after = [&xml](const std::string& at, const std::string& text) {
+        xml.insert(xml.find(at) + at.size(), text);
+    };
+    insert_after("<Shape Type=\"Circle\">", "<Name>TyreShape</Name>");
+    insert_after("<Fixture><Shape>2</Shape>",
+                 "<Name>Tyre</Name><UserData><Type>System.String</Type><Value>"
+                 "<string>grip &amp; roll</string></Value></UserData>");
+    insert_after("<Position>-0.8 0.6</Position>", "<Name>RearWheel</Name>"
+                 "<UserData><Type>System.Int32</Type><Value><int>42</int></Value></UserData>");
+    insert_after("<Name>Roof</Name>", "<UserData><Color>red</Color></UserData>");
+    World original(xml.c_str());
+    ENSURE(original.ok());
+    ChassisNamer namer;
+    namer.chassis = original.body(1);
+    std::vector<box2scene::Report> reports;
+    ScenePtr captured(box2scene::capture_world(original.world, original.built,
+                                               original.scene.get(), reports, &namer));
+    print_reports(reports);
+    ENSURE(captured != nullptr && reports.empty());
+    ScenePtr loaded = load_text(written_text(captured.get()).c_str());
+    ENSURE(loaded != nullptr);
+    const b2s_scene_view& view = view_of(loaded);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "Car"), 1);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "Chassis"), B2S_NONE);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "RearWheel"), 2);
+    ENSURE_STR(view.user_data[view.bodies[2].user_data].value, "42");
+    ENSURE_EQ(view.bodies[3].name, nullptr); // the front wheel has no Name in the level
+    ENSURE_EQ(view.bodies[3].user_data, B2S_NONE);
+    // Both wheels' copies of the Tyre fixture come back as the one Tyre.
+    uint32_t tyre = b2s_scene_find_fixture(loaded.get(), "Tyre");
+    ENSURE(tyre != B2S_NONE);
+    ENSURE_EQ(view.fixture_ids[view.bodies[2].fixtures.first], tyre);
+    ENSURE_EQ(view.fixture_ids[view.bodies[3].fixtures.first], tyre);
+    ENSURE_STR(view.user_data[view.fixtures[tyre].user_data].value, "grip & roll");
+    ENSURE_EQ(view.fixtures[tyre].shape, b2s_scene_find_shape(loaded.get(), "TyreShape"));
+    for (const char* joint : {"RearSpring", "FrontSpring", "Roof"}) {
+        ENSURE(b2s_scene_find_joint(loaded.get(), joint) != B2S_NONE);
+    }
+    ENSURE_STR(view.user_data[view.joints[2].user_data].raw, "<Color>red</Color>");
+    return 0;
+}
+
 // ---- what the format cannot hold
 
 static bool has_report(const std::vector<box2scene::Report>& reports, b2s_code code,
@@ -744,6 +801,7 @@ int main() {
     failed += RUN_TEST(world_captured_in_motion_restarts_there);
     failed += RUN_TEST(built_level_springs_round_trip_to_the_bit);
     failed += RUN_TEST(springs_are_inverted_as_the_build_computes_them);
+    failed += RUN_TEST(built_level_keeps_its_names_and_user_data);
     failed += RUN_TEST(mouse_joint_is_reported_not_written);
     failed += RUN_TEST(approximations_are_reported);
     failed += RUN_TEST(namer_supplies_names_and_user_data);

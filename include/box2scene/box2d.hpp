@@ -185,12 +185,15 @@ inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
                                 const Namer* namer = nullptr);
 
 /// capture_world of a world that build_world made from `scene` (`built` is what it gave,
-/// and the scene is still loaded). Where the engine still holds exactly what the build set
-/// from a record of the scene, the record's own values are written back rather than ones
-/// inverted from the engine's: a spring's FrequencyHz and DampingRatio, which Box2D 2.4
-/// holds as a stiffness and damping computed from them and the bodies, come back as the
-/// level gave them, and the world built again from the capture moves like this one to the
-/// bit. Everything else is as for capture_world.
+/// and the scene is still loaded), which keeps the level with no host code: every body,
+/// fixture, shape and joint built from a record is written with the record's Name and
+/// UserData (the Namer's label wins where it gives one; it labels the host's own objects).
+/// Where the engine still holds exactly what the build set from a record, the record's own
+/// values are written back rather than ones inverted from the engine's: a spring's
+/// FrequencyHz and DampingRatio, which Box2D 2.4 holds as a stiffness and damping computed
+/// from them and the bodies, come back as the level gave them, and the world built again
+/// from the capture moves like this one to the bit. Everything else is as for
+/// capture_world.
 inline b2s_scene* capture_world(b2World& world, const Built& built, const b2s_scene* scene,
                                 std::vector<Report>& reports, const Namer* namer = nullptr);
 

@@ -236,11 +236,98 @@ private:
         return accepted(code, error, object, index, label.name) ? added : B2S_NONE;
     }
 
+    // ---- labels: the host's, else (given the scene) the level's
+
+    static bool labelled(const Label& label) {
+        return !label.name.empty() || !label.user_data_raw.empty() ||
+               !label.user_data_type.empty() || !label.user_data_value.empty();
+    }
+
+    /// Whether the capture was given the scene and what build_world made of it.
+    bool has_level() const { return built_ != nullptr && level_ != nullptr; }
+
+    /// Where `object` stands in `made`, a part of what build_world made, when the result
+    /// and the scene agree on how many there are; else B2S_NONE.
+    template <class T>
+    static uint32_t level_index(const std::vector<T*>& made, uint32_t level_count,
+                                const T* object) {
+        if (made.size() != level_count) {
+            return B2S_NONE;
+        }
+        auto found = std::find(made.begin(), made.end(), object);
+        return found != made.end() ? static_cast<uint32_t>(found - made.begin()) : B2S_NONE;
+    }
+
+    /// The Name and UserData of the level's record `record`, or none.
+    template <class Record>
+    Label level_label(const Record* record) const {
+        Label label;
+        if (record == nullptr) {
+            return label;
+        }
+        label.name = text_of(record->name);
+        if (record->user_data != B2S_NONE && record->user_data < level_->user_data_count) {
+            const b2s_user_data& data = level_->user_data[record->user_data];
+            label.user_data_raw = text_of(data.raw);
+            label.user_data_type = text_of(data.type_name);
+            label.user_data_value = text_of(data.value);
+        }
+        return label;
+    }
+
+    /// The level's record a b2Body was built from, or nullptr (none given, or the host's).
+    const b2s_body* level_body(const b2Body& body) const {
+        uint32_t index = has_level() ? level_index(built_->bodies, level_->body_count, &body)
+                                     : B2S_NONE;
+        return index != B2S_NONE ? &level_->bodies[index] : nullptr;
+    }
+
+    const b2s_joint* level_joint(const b2Joint& joint) const {
+        uint32_t index = has_level() ? level_index(built_->joints, level_->joint_count, &joint)
+                                     : B2S_NONE;
+        return index != B2S_NONE ? &level_->joints[index] : nullptr;
+    }
+
+    const b2s_fixture* level_fixture(const b2Fixture& fixture) const {
+        if (!has_level()) {
+            return nullptr;
+        }
+        uint32_t slot = level_index(built_->fixtures, level_->fixture_id_count, &fixture);
+        if (slot == B2S_NONE || level_->fixture_ids[slot] >= level_->fixture_count) {
+            return nullptr;
+        }
+        return &level_->fixtures[level_->fixture_ids[slot]];
+    }
+
+    Label body_label(b2Body& body) const {
+        Label label = namer_->body(body);
+        return labelled(label) ? label : level_label(level_body(body));
+    }
+
+    Label fixture_label(b2Fixture& fixture) const {
+        Label label = namer_->fixture(fixture);
+        return labelled(label) ? label : level_label(level_fixture(fixture));
+    }
+
+    Label joint_label(b2Joint& joint) const {
+        Label label = namer_->joint(joint);
+        return labelled(label) ? label : level_label(level_joint(joint));
+    }
+
+    std::string shape_name(b2Fixture& fixture) const {
+        std::string name = namer_->shape(fixture);
+        const b2s_fixture* record = name.empty() ? level_fixture(fixture) : nullptr;
+        if (record == nullptr || record->shape >= level_->shape_count) {
+            return name;
+        }
+        return text_of(level_->shapes[record->shape].name);
+    }
+
     // ---- shapes and fixtures, each equal one written once
 
     /// The scene shape of the fixture's shape, or B2S_NONE (reported).
     uint32_t scene_shape(b2Fixture& fixture, uint32_t index) {
-        std::string name = namer_->shape(fixture);
+        std::string name = shape_name(fixture);
         b2s_shape shape{};
         std::vector<b2s_vec2> vertices;
         if (!shape_record(*fixture.GetShape(), shape, vertices)) {
@@ -391,7 +478,7 @@ private:
     /// The scene fixture for a fixture, or B2S_NONE (reported).
     uint32_t scene_fixture(b2Fixture& fixture, uint32_t index) {
         uint32_t shape = scene_shape(fixture, index);
-        Label label = namer_->fixture(fixture);
+        Label label = fixture_label(fixture);
         if (shape == B2S_NONE) {
             report(B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, label.name,
                    "its shape was not written; not written");
@@ -464,7 +551,7 @@ private:
                 created.push_back(FixtureMass{fixture->GetDensity(), rebuilt_mass(*fixture)});
             }
         }
-        Label label = namer_->body(body);
+        Label label = body_label(body);
         b2s_body record;
         b2s_body_default(static_cast<b2s_body_kind>(body.GetType()), &record);
         record.name = name_of(label.name);
@@ -605,7 +692,7 @@ private:
     // ---- joints
 
     void capture_joint(b2Joint& joint) {
-        Label label = namer_->joint(joint);
+        Label label = joint_label(joint);
         b2s_joint record;
         if (!joint_record(joint, label.name, record)) {
             return;
@@ -674,17 +761,6 @@ private:
                       decimal(unit.y) + ") exactly; it was written as it is");
         }
         return to_b2s(axis);
-    }
-
-    /// The record of the scene `joint` was built from, or nullptr (no scene given, or a
-    /// joint the host made).
-    const b2s_joint* level_joint(const b2Joint& joint) const {
-        if (built_ == nullptr || level_ == nullptr ||
-            built_->joints.size() != level_->joint_count) {
-            return nullptr;
-        }
-        uint32_t index = joint_index(*built_, &joint);
-        return index != B2S_NONE ? &level_->joints[index] : nullptr;
     }
 
     /// Writes the FrequencyHz and DampingRatio of the joint's spring: the level's own where
