@@ -12,6 +12,23 @@ typedef struct b2s3_named {
     uint32_t index;
 } b2s3_named;
 
+/* A joint the build made and the scene joint it came from. */
+typedef struct b2s3_level_joint {
+    b2JointId id;
+    uint32_t record;
+} b2s3_level_joint;
+
+/* What a capture of a built world labels its objects from: the scene, what the build made
+ * of it, the scene body of each captured body, and the built joints sorted by id (a joint's
+ * record is then a binary search, as a body's index is). */
+typedef struct b2s3_level {
+    const b2s3_built_t* built;
+    const b2s_scene_view* view;
+    const uint32_t* body_records;
+    b2s3_level_joint* joints;
+    uint32_t joint_count;
+} b2s3_level;
+
 typedef struct b2s3_capture {
     b2WorldId world;
     const b2BodyId* bodies;
@@ -28,17 +45,20 @@ typedef struct b2s3_capture {
      * largest turn between a rotation and the angle written, said once a capture */
     uint32_t turned_count, first_turned;
     double largest_turn;
+    const b2s3_level* level;   /* NULL but for a capture of a built world */
+    uint32_t level_body;       /* the scene body of the body being captured */
 } b2s3_capture;
 
-/* Bodies in an order of their own (negative, zero or positive): zero for the same body. */
+/* Ids of one kind in an order of their own (negative, zero or positive): zero for the same
+ * object. */
+#define B2S3_ID_ORDER(a, b)                                                                  \
+    ((a).index1 != (b).index1     ? ((a).index1 < (b).index1 ? -1 : 1)                     \
+     : (a).world0 != (b).world0   ? ((a).world0 < (b).world0 ? -1 : 1)                     \
+                                  : ((a).generation > (b).generation) -                     \
+                                        ((a).generation < (b).generation))
+
 static int b2s3_body_order(b2BodyId a, b2BodyId b) {
-    if (a.index1 != b.index1) {
-        return a.index1 < b.index1 ? -1 : 1;
-    }
-    if (a.world0 != b.world0) {
-        return a.world0 < b.world0 ? -1 : 1;
-    }
-    return (a.generation > b.generation) - (a.generation < b.generation);
+    return B2S3_ID_ORDER(a, b);
 }
 
 static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
@@ -150,6 +170,47 @@ static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center,
     return out;
 }
 
+/* ---- the level's labels */
+
+/* The scene's UserData `index` added to the capture, or B2S_NONE. */
+static uint32_t b2s3_level_user_data(b2s3_capture* c, uint32_t index) {
+    const b2s_scene_view* view = c->level->view;
+    if (index == B2S_NONE || index >= view->user_data_count) {
+        return B2S_NONE;
+    }
+    uint32_t added = B2S_NONE;
+    return b2s3_builder_ok(c, b2s_builder_add_user_data(c->builder, &view->user_data[index],
+                                                        &added, c->error))
+               ? added
+               : B2S_NONE;
+}
+
+/* The scene fixture the shape `from` of the body being captured was built for, or NULL. */
+static const b2s_fixture* b2s3_level_fixture(const b2s3_capture* c, b2ShapeId from) {
+    const b2s_scene_view* view = c->level->view;
+    b2s_range slots = view->bodies[c->level_body].fixtures;
+    for (uint32_t slot = slots.first; slot < slots.first + slots.count; ++slot) {
+        if (b2s3_slot_holds(c->level->built, slot, from) &&
+            view->fixture_ids[slot] < view->fixture_count) {
+            return &view->fixtures[view->fixture_ids[slot]];
+        }
+    }
+    return NULL;
+}
+
+static int b2s3_level_joint_order(const void* a, const void* b) {
+    b2JointId x = ((const b2s3_level_joint*)a)->id, y = ((const b2s3_level_joint*)b)->id;
+    return B2S3_ID_ORDER(x, y);
+}
+
+/* The scene joint `id` was built from, or NULL. */
+static const b2s_joint* b2s3_level_joint_of(const b2s3_capture* c, b2JointId id) {
+    b2s3_level_joint key = {id, 0};
+    const b2s3_level_joint* found = (const b2s3_level_joint*)bsearch(
+        &key, c->level->joints, c->level->joint_count, sizeof key, b2s3_level_joint_order);
+    return found != NULL ? &c->level->view->joints[found->record] : NULL;
+}
+
 /* ---- fixtures */
 
 /* The filter in the scene's own widths (its fields' sizes say them): a mask with every
@@ -185,8 +246,13 @@ static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) 
 static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_vec2* vertices,
                              uint32_t count, b2ShapeId from, float density,
                              uint32_t* out_fixture) {
+    const b2s_fixture* record = c->level != NULL ? b2s3_level_fixture(c, from) : NULL;
+    b2s_shape named = *shape;
+    if (record != NULL && record->shape < c->level->view->shape_count) {
+        named.name = c->level->view->shapes[record->shape].name;
+    }
     uint32_t shape_index = 0;
-    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, shape, vertices, count,
+    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, &named, vertices, count,
                                                   &shape_index, c->error))) {
         return false;
     }
@@ -200,6 +266,10 @@ static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_
     fixture.restitution = material.restitution;
     fixture.is_sensor = b2Shape_IsSensor(from);
     fixture.filter = b2s3_filter_of(c, b2Shape_GetFilter(from), c->fixture_count);
+    if (record != NULL) {
+        fixture.name = record->name;
+        fixture.user_data = b2s3_level_user_data(c, record->user_data);
+    }
     if (!b2s3_builder_ok(c, b2s_builder_add_fixture(c->builder, &fixture, out_fixture,
                                                     c->error))) {
         return false;
@@ -385,6 +455,9 @@ static bool b2s3_same_mass(b2MassData a, b2MassData b) {
 
 static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     b2BodyId id = c->bodies[index];
+    if (c->level != NULL) {
+        c->level_body = c->level->body_records[index];
+    }
     uint32_t* fixtures = NULL;
     uint32_t fixture_count = 0;
     b2MassData computed;
@@ -417,6 +490,11 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     body.active = b2Body_IsEnabled(id);
     const char* name = b2Body_GetName(id);
     body.name = name != NULL && name[0] != '\0' ? name : NULL;
+    if (c->level != NULL) { /* the level's Name, whole: v3 keeps only its first bytes */
+        const b2s_body* record = &c->level->view->bodies[c->level_body];
+        body.name = record->name;
+        body.user_data = b2s3_level_user_data(c, record->user_data);
+    }
     if (type == b2_dynamicBody) {
         b2MassData actual = b2Body_GetMassData(id);
         if (!b2s3_same_mass(actual, computed)) {
@@ -627,6 +705,11 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         joint.body_a = a;
         joint.body_b = bb;
         joint.collide_connected = b2Joint_GetCollideConnected(id);
+        const b2s_joint* record = c->level != NULL ? b2s3_level_joint_of(c, id) : NULL;
+        if (record != NULL) {
+            joint.name = record->name;
+            joint.user_data = b2s3_level_user_data(c, record->user_data);
+        }
         uint32_t added = 0;
         ok = b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error));
         c->joint_count += ok ? 1 : 0;
@@ -650,14 +733,10 @@ static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* 
     return code;
 }
 
-b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
-                                 b2s_scene** out_scene, b2s3_reports_t* reports,
-                                 b2s_error* error) {
-    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
-        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
-                                  B2S3_NAME_OF(B2S3_API(capture_world)) " needs out_scene, "
-                                  "reports and, for a body count above 0, bodies");
-    }
+/* The capture of `bodies`, labelled from `level` when it is not NULL. */
+static b2s_code b2s3_capture_run(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                 const b2s3_level* level, b2s_scene** out_scene,
+                                 b2s3_reports_t* reports, b2s_error* error) {
     *out_scene = NULL;
     reports->items = NULL;
     reports->count = 0;
@@ -711,6 +790,7 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
     c.builder = b2s_builder_new();
     c.list.reports = reports;
     c.error = error;
+    c.level = level;
     b2s_vec2 scene_gravity = b2s3_to_b2s(b2World_GetGravity(world));
     bool ok = b2s3_builder_ok(&c, b2s_builder_set_gravity(c.builder, &scene_gravity, error));
     for (uint32_t i = 0; i < body_count && ok; ++i) {
@@ -729,4 +809,80 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
         return c.failure != B2S_CODE_OK ? c.failure : B2S_CODE_INTERNAL;
     }
     return b2s_builder_finish(c.builder, out_scene, error);
+}
+
+b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                 b2s_scene** out_scene, b2s3_reports_t* reports,
+                                 b2s_error* error) {
+    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  B2S3_NAME_OF(B2S3_API(capture_world)) " needs out_scene, "
+                                  "reports and, for a body count above 0, bodies");
+    }
+    return b2s3_capture_run(world, bodies, body_count, NULL, out_scene, reports, error);
+}
+
+/* The bodies the build made that are still live, in the scene's order, with their scene
+ * bodies, and the joints it made sorted by id; false when memory runs out. */
+static bool b2s3_level_of(const b2s3_built_t* built, b2s3_level* level, b2BodyId* bodies,
+                          uint32_t* records, uint32_t* count) {
+    *count = 0;
+    for (uint32_t i = 0; i < built->body_count; ++i) {
+        if (B2_IS_NON_NULL(built->bodies[i]) && b2Body_IsValid(built->bodies[i])) {
+            bodies[*count] = built->bodies[i];
+            records[(*count)++] = i;
+        }
+    }
+    level->body_records = records;
+    level->joints = (b2s3_level_joint*)malloc(
+        (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(b2s3_level_joint));
+    if (level->joints == NULL) {
+        return false;
+    }
+    level->joint_count = 0;
+    for (uint32_t j = 0; j < built->joint_count; ++j) {
+        if (B2_IS_NON_NULL(built->joints[j])) {
+            level->joints[level->joint_count].id = built->joints[j];
+            level->joints[level->joint_count++].record = j;
+        }
+    }
+    qsort(level->joints, level->joint_count, sizeof(b2s3_level_joint), b2s3_level_joint_order);
+    return true;
+}
+
+b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
+                                 const b2s_scene* scene, b2s_scene** out_scene,
+                                 b2s3_reports_t* reports, b2s_error* error) {
+    const b2s_scene_view* view = scene != NULL ? b2s_scene_get_view(scene) : NULL;
+    if (built == NULL || view == NULL || out_scene == NULL || reports == NULL) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  B2S3_NAME_OF(B2S3_API(capture_built)) " needs built, scene, "
+                                  "out_scene and reports");
+    }
+    if (built->body_count != view->body_count || built->fixture_count != view->fixture_id_count ||
+        built->joint_count != view->joint_count) {
+        *out_scene = NULL;
+        reports->items = NULL;
+        reports->count = 0;
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT,
+                                  "built is not what building this scene gave");
+    }
+    size_t room = (size_t)(built->body_count > 0 ? built->body_count : 1);
+    b2BodyId* bodies = (b2BodyId*)malloc(room * sizeof(b2BodyId));
+    uint32_t* records = (uint32_t*)malloc(room * sizeof(uint32_t));
+    b2s3_level level = {built, view, NULL, NULL, 0};
+    uint32_t count = 0;
+    b2s_code code;
+    if (bodies == NULL || records == NULL || !b2s3_level_of(built, &level, bodies, records, &count)) {
+        *out_scene = NULL;
+        reports->items = NULL;
+        reports->count = 0;
+        code = b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    } else {
+        code = b2s3_capture_run(world, bodies, count, &level, out_scene, reports, error);
+    }
+    free(level.joints);
+    free(records);
+    free(bodies);
+    return code;
 }
