@@ -82,6 +82,15 @@ static int same_state(const v3_world* a, const b2BodyId* b_bodies, uint32_t coun
     return 0;
 }
 
+/* How many reports are on an object of this kind. */
+static uint32_t reports_on(const v3_reports* reports, const char* object) {
+    uint32_t found = 0;
+    for (uint32_t i = 0; i < reports->count; ++i) {
+        found += strcmp(reports->items[i].object, object) == 0;
+    }
+    return found;
+}
+
 /* `given_level` non-NULL: the capture is given the scene (capture_built). */
 static int round_trip(const char* path, const b2s_scene* scene, void* given_level) {
     v3_world first = build_v3(scene);
@@ -90,12 +99,19 @@ static int round_trip(const char* path, const b2s_scene* scene, void* given_leve
     b2s_scene* reloaded =
         captured_and_reloaded_from(&first, given_level != NULL ? scene : NULL, &reports);
     ENSURE(reloaded != NULL);
-    /* a world built from a scene has nothing the format cannot hold */
-    if (reports.count != 0) {
+    /* a world built from a scene has nothing the format cannot hold; given the scene, the
+     * capture writes back the joints the build skipped, and says which it cannot (a gear
+     * before its joints, a Farseer-only joint) */
+    uint32_t allowed = 0;
+    if (given_level != NULL &&
+        count_reports(&first.built->reports, B2S_CODE_SKIPPED_JOINT, NULL, 0) > 0) {
+        allowed = reports_on(&reports, "joint");
+    }
+    if (reports.count != allowed) {
         fprintf(stderr, "%s: capture reported:\n", path);
         print_reports(&reports);
     }
-    ENSURE_EQ(reports.count, 0);
+    ENSURE_EQ(reports.count, allowed);
     V3_ADAPTER(reports_free)(&reports);
 
     v3_world second = build_v3(reloaded);
@@ -402,15 +418,6 @@ static int mass_data_and_rotation_survive_capture(void) {
     return 0;
 }
 
-/* How many reports are on an object of this kind. */
-static uint32_t reports_on(const v3_reports* reports, const char* object) {
-    uint32_t found = 0;
-    for (uint32_t i = 0; i < reports->count; ++i) {
-        found += strcmp(reports->items[i].object, object) == 0;
-    }
-    return found;
-}
-
 /* The showcase saved after 10 s: the solver turns bodies to rotations no float angle gives
  * exactly (a dozen of them), and that is said once, on the world, with how many and how
  * far, so that a real loss (a capsule the host added) stands out rather than drowning among
@@ -514,9 +521,13 @@ static int built_level_keeps_its_names_and_user_data(void) {
         ENSURE_STR(view->user_data[wood->user_data].value, "oak & pine");
         ENSURE_STR(view->shapes[wood->shape].name, "Plank");
     }
-    ENSURE_EQ(view->joint_count, 1);
-    ENSURE_STR(view->joints[0].name, "Hinge");
-    ENSURE_STR(view->user_data[view->joints[0].user_data].raw, "squeaks");
+    ENSURE_EQ(view->joint_count, 2); /* the pulley, written back as the file has it */
+    ENSURE_EQ(view->joints[0].kind, B2S_JOINT_KIND_PULLEY);
+    ENSURE_STR(view->joints[0].name, "Lift");
+    ENSURE_FLOAT(view->joints[0].length_a, 3.0f);
+    ENSURE_EQ(view->joints[0].body_a, 1);
+    ENSURE_STR(view->joints[1].name, "Hinge");
+    ENSURE_STR(view->user_data[view->joints[1].user_data].raw, "squeaks");
     V3_ADAPTER(reports_free)(&reports);
     b2s_scene_free(reloaded);
     b2s_scene_free(captured);
@@ -548,6 +559,39 @@ static int capture_built_refuses_a_result_of_another_scene(void) {
     return 0;
 }
 
+/* The showcase's pulley and gear, which v3 cannot hold, are written back as the file has
+ * them, so every joint keeps its index in the save: CarRearSuspension stays joint 21 (it was
+ * joint 19 of a save of the world alone), and the gear still couples its two axles. */
+static int showcase_save_keeps_every_joint_at_its_index(void) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/examples/scenes/showcase.xml", BOX2SCENE_SOURCE_DIR);
+    b2s_scene* scene = load_path(path);
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    v3_reports reports;
+    b2s_scene* reloaded = captured_and_reloaded_from(&world, scene, &reports);
+    ENSURE(reloaded != NULL);
+    print_reports(&reports);
+    ENSURE_EQ(reports.count, 0);
+    const b2s_scene_view* level = b2s_scene_get_view(scene);
+    const b2s_scene_view* saved = b2s_scene_get_view(reloaded);
+    ENSURE_EQ(saved->joint_count, level->joint_count);
+    for (uint32_t j = 0; j < level->joint_count; ++j) {
+        ENSURE_STR(saved->joints[j].name, level->joints[j].name);
+        ENSURE_EQ(saved->joints[j].kind, level->joints[j].kind);
+    }
+    ENSURE_EQ(b2s_scene_find_joint(reloaded, "CarRearSuspension"), 21);
+    uint32_t gear = b2s_scene_find_joint(reloaded, "GearMesh");
+    ENSURE(gear != B2S_NONE);
+    ENSURE_EQ(saved->joints[gear].joint_a, level->joints[gear].joint_a);
+    ENSURE_EQ(saved->joints[gear].joint_b, level->joints[gear].joint_b);
+    V3_ADAPTER(reports_free)(&reports);
+    b2s_scene_free(reloaded);
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(every_scene_file_round_trips_bit_for_bit);
@@ -562,5 +606,6 @@ int main(void) {
     failed += RUN_TEST(turned_bodies_are_reported_once_a_capture);
     failed += RUN_TEST(built_level_keeps_its_names_and_user_data);
     failed += RUN_TEST(capture_built_refuses_a_result_of_another_scene);
+    failed += RUN_TEST(showcase_save_keeps_every_joint_at_its_index);
     return failed;
 }

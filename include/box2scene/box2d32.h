@@ -179,9 +179,12 @@ b2s_code b2s_box2d32_capture_world(b2WorldId world, const b2BodyId* bodies, uint
  *  order, for a world built from `scene` (`built` is what building it gave, and the scene is
  *  still loaded): the save keeps the level with no host code, every body, shape, fixture and
  *  joint built from a record written with the record's Name (whole, where v3 keeps only the
- *  first bytes of a body's) and UserData. Bodies and joints the host made between those
- *  bodies are captured as by b2s_box2d32_capture_world. B2S_CODE_INVALID_ARGUMENT when `built`
- *  has other counts than the scene. */
+ *  first bytes of a body's) and UserData, in the scene's order. A joint the build skipped
+ *  (v3 has no pulley or gear) is written back as the file has it between the captured
+ *  bodies, so that the joints keep their indices; one that cannot be (a Farseer-only joint,
+ *  a gear before its joints) is reported. Joints the host made between those bodies follow,
+ *  captured as by b2s_box2d32_capture_world. B2S_CODE_INVALID_ARGUMENT when `built` has other
+ *  counts than the scene. */
 b2s_code b2s_box2d32_capture_built(b2WorldId world, const b2s_box2d32_built* built,
                                    const b2s_scene* scene, b2s_scene** out_scene,
                                    b2s_box2d32_reports* reports, b2s_error* error);

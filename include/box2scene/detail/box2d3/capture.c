@@ -27,6 +27,11 @@ typedef struct b2s3_level {
     const uint32_t* body_records;
     b2s3_level_joint* joints;
     uint32_t joint_count;
+    /* per scene body, its captured index; per scene joint, the index it was written at
+     * (B2S_NONE until then); the next scene joint a capture may write as the file had it */
+    uint32_t* captured_bodies;
+    uint32_t* written_joints;
+    uint32_t next_record;
 } b2s3_level;
 
 typedef struct b2s3_capture {
@@ -45,7 +50,7 @@ typedef struct b2s3_capture {
      * largest turn between a rotation and the angle written, said once a capture */
     uint32_t turned_count, first_turned;
     double largest_turn;
-    const b2s3_level* level;   /* NULL but for a capture of a built world */
+    b2s3_level* level;         /* NULL but for a capture of a built world */
     uint32_t level_body;       /* the scene body of the body being captured */
 } b2s3_capture;
 
@@ -201,14 +206,6 @@ static const b2s_fixture* b2s3_level_fixture(const b2s3_capture* c, b2ShapeId fr
 static int b2s3_level_joint_order(const void* a, const void* b) {
     b2JointId x = ((const b2s3_level_joint*)a)->id, y = ((const b2s3_level_joint*)b)->id;
     return B2S3_ID_ORDER(x, y);
-}
-
-/* The scene joint `id` was built from, or NULL. */
-static const b2s_joint* b2s3_level_joint_of(const b2s3_capture* c, b2JointId id) {
-    b2s3_level_joint key = {id, 0};
-    const b2s3_level_joint* found = (const b2s3_level_joint*)bsearch(
-        &key, c->level->joints, c->level->joint_count, sizeof key, b2s3_level_joint_order);
-    return found != NULL ? &c->level->view->joints[found->record] : NULL;
 }
 
 /* ---- fixtures */
@@ -660,7 +657,104 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
     return true;
 }
 
-/* Every joint whose two bodies are captured, once, in creation order. */
+/* ---- joints the build skipped, written back as the file had them */
+
+/* Where a joint stands in a capture of a built world: at its scene joint, the host's after
+ * every scene joint, in creation order. */
+static uint64_t b2s3_joint_place(const b2s3_capture* c, b2JointId id) {
+    b2s3_level_joint key = {id, 0};
+    const b2s3_level_joint* found = (const b2s3_level_joint*)bsearch(
+        &key, c->level->joints, c->level->joint_count, sizeof key, b2s3_level_joint_order);
+    return found != NULL ? (uint64_t)found->record
+                         : (uint64_t)c->level->view->joint_count + (uint64_t)(uint32_t)id.index1;
+}
+
+/* The scene joint `j`, which the build skipped (the engine cannot hold it), written as the
+ * file has it between the captured bodies, so that the joints after it keep their indices;
+ * reported and not written when a body or joint it names was not written. */
+static bool b2s3_write_skipped(b2s3_capture* c, uint32_t j) {
+    const b2s3_level* level = c->level;
+    b2s_joint joint = level->view->joints[j];
+    if (joint.kind == B2S_JOINT_KIND_UNSUPPORTED) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, joint.name,
+                    "scene joint %u, a Farseer-only joint, has no Box2Scene form to write; not "
+                    "written",
+                    (unsigned)j);
+        return true;
+    }
+    uint32_t body_count = level->view->body_count, joint_count = level->view->joint_count;
+    joint.body_a = joint.body_a < body_count ? level->captured_bodies[joint.body_a] : B2S_NONE;
+    joint.body_b = joint.body_b < body_count ? level->captured_bodies[joint.body_b] : B2S_NONE;
+    uint32_t refers[2] = {joint.joint_a, joint.joint_b};
+    uint32_t* written[2] = {&joint.joint_a, &joint.joint_b};
+    bool resolved = joint.body_a != B2S_NONE && joint.body_b != B2S_NONE;
+    for (int k = 0; k < 2; ++k) {
+        if (refers[k] != B2S_NONE) {
+            *written[k] = refers[k] < joint_count ? level->written_joints[refers[k]] : B2S_NONE;
+            resolved = resolved && *written[k] != B2S_NONE;
+        }
+    }
+    if (!resolved) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, joint.name,
+                    "scene joint %u, which " B2S3_ENGINE " cannot hold, joins a body or joint "
+                    "not written before it (a gear is written after its joints); not written",
+                    (unsigned)j);
+        return true;
+    }
+    joint.user_data = b2s3_level_user_data(c, level->view->joints[j].user_data);
+    uint32_t added = 0;
+    if (!b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error))) {
+        return false;
+    }
+    level->written_joints[j] = c->joint_count++;
+    return true;
+}
+
+/* Writes the joints the build skipped among the scene joints before `limit`. */
+static bool b2s3_write_skipped_before(b2s3_capture* c, uint32_t limit) {
+    b2s3_level* level = c->level;
+    bool ok = true;
+    for (; level->next_record < limit && ok; ++level->next_record) {
+        if (B2_IS_NULL(level->built->joints[level->next_record])) {
+            ok = b2s3_write_skipped(c, level->next_record);
+        }
+    }
+    return ok;
+}
+
+/* A joint and where it stands in a capture of a built world. */
+typedef struct b2s3_placed_joint {
+    uint64_t place;
+    b2JointId id;
+} b2s3_placed_joint;
+
+static int b2s3_by_place(const void* a, const void* b) {
+    uint64_t x = ((const b2s3_placed_joint*)a)->place, y = ((const b2s3_placed_joint*)b)->place;
+    return (x > y) - (x < y);
+}
+
+/* `joints` in the order a capture of a built world writes them (b2s3_joint_place). */
+static bool b2s3_order_joints(b2s3_capture* c, b2JointId* joints, size_t count) {
+    b2s3_placed_joint* placed =
+        (b2s3_placed_joint*)malloc((count > 0 ? count : 1) * sizeof(b2s3_placed_joint));
+    if (placed == NULL) {
+        c->list.out_of_memory = true;
+        return false;
+    }
+    for (size_t i = 0; i < count; ++i) {
+        placed[i].place = b2s3_joint_place(c, joints[i]);
+        placed[i].id = joints[i];
+    }
+    qsort(placed, count, sizeof(b2s3_placed_joint), b2s3_by_place);
+    for (size_t i = 0; i < count; ++i) {
+        joints[i] = placed[i].id;
+    }
+    free(placed);
+    return true;
+}
+
+/* Every joint whose two bodies are captured, once, in creation order (in a capture of a
+ * built world, in the scene's order, with the joints the build skipped). */
 static bool b2s3_capture_joints(b2s3_capture* c) {
     size_t total = 0;
     for (uint32_t i = 0; i < c->body_count; ++i) {
@@ -687,9 +781,20 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         count = kept;
     }
     qsort(joints, count, sizeof(b2JointId), b2s3_joint_by_index);
-    bool ok = true;
+    bool ok = c->level == NULL || b2s3_order_joints(c, joints, count);
     for (size_t i = 0; i < count && ok; ++i) {
         b2JointId id = joints[i];
+        uint32_t record = B2S_NONE;
+        if (c->level != NULL) {
+            uint64_t place = b2s3_joint_place(c, id);
+            uint32_t scene_joints = c->level->view->joint_count;
+            record = place < scene_joints ? (uint32_t)place : B2S_NONE;
+            ok = b2s3_write_skipped_before(c, record != B2S_NONE ? record : scene_joints);
+            c->level->next_record += record != B2S_NONE ? 1u : 0u;
+            if (!ok) {
+                break;
+            }
+        }
         uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
         uint32_t bb = b2s3_captured_index(c, b2Joint_GetBodyB(id));
         if (a == B2S_NONE || bb == B2S_NONE) {
@@ -705,14 +810,20 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         joint.body_a = a;
         joint.body_b = bb;
         joint.collide_connected = b2Joint_GetCollideConnected(id);
-        const b2s_joint* record = c->level != NULL ? b2s3_level_joint_of(c, id) : NULL;
-        if (record != NULL) {
-            joint.name = record->name;
-            joint.user_data = b2s3_level_user_data(c, record->user_data);
+        if (record != B2S_NONE) {
+            const b2s_joint* level_joint = &c->level->view->joints[record];
+            joint.name = level_joint->name;
+            joint.user_data = b2s3_level_user_data(c, level_joint->user_data);
         }
         uint32_t added = 0;
         ok = b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error));
+        if (ok && record != B2S_NONE) {
+            c->level->written_joints[record] = c->joint_count;
+        }
         c->joint_count += ok ? 1 : 0;
+    }
+    if (ok && c->level != NULL) {
+        ok = b2s3_write_skipped_before(c, c->level->view->joint_count);
     }
     free(joints);
     return ok;
@@ -834,6 +945,22 @@ static bool b2s3_level_of(const b2s3_built_t* built, b2s3_level* level, b2BodyId
         }
     }
     level->body_records = records;
+    level->captured_bodies =
+        (uint32_t*)malloc((size_t)(built->body_count > 0 ? built->body_count : 1) * sizeof(uint32_t));
+    level->written_joints = (uint32_t*)malloc(
+        (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(uint32_t));
+    if (level->captured_bodies == NULL || level->written_joints == NULL) {
+        return false;
+    }
+    for (uint32_t i = 0; i < built->body_count; ++i) {
+        level->captured_bodies[i] = B2S_NONE;
+    }
+    for (uint32_t k = 0; k < *count; ++k) {
+        level->captured_bodies[records[k]] = k;
+    }
+    for (uint32_t j = 0; j < built->joint_count; ++j) {
+        level->written_joints[j] = B2S_NONE;
+    }
     level->joints = (b2s3_level_joint*)malloc(
         (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(b2s3_level_joint));
     if (level->joints == NULL) {
@@ -870,7 +997,7 @@ b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
     size_t room = (size_t)(built->body_count > 0 ? built->body_count : 1);
     b2BodyId* bodies = (b2BodyId*)malloc(room * sizeof(b2BodyId));
     uint32_t* records = (uint32_t*)malloc(room * sizeof(uint32_t));
-    b2s3_level level = {built, view, NULL, NULL, 0};
+    b2s3_level level = {built, view, NULL, NULL, 0, NULL, NULL, 0};
     uint32_t count = 0;
     b2s_code code;
     if (bodies == NULL || records == NULL || !b2s3_level_of(built, &level, bodies, records, &count)) {
@@ -882,6 +1009,8 @@ b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
         code = b2s3_capture_run(world, bodies, count, &level, out_scene, reports, error);
     }
     free(level.joints);
+    free(level.captured_bodies);
+    free(level.written_joints);
     free(records);
     free(bodies);
     return code;
