@@ -575,6 +575,62 @@ static int built_level_keeps_its_names_and_user_data() {
     return 0;
 }
 
+/// Given the scene, a joint build_world skipped (a motor torque beyond Box2D 2.4's range) is
+/// written back as the file has it, so every joint keeps its index and a gear after it still
+/// names its two axles; the world built again from the save (which skips it again) moves
+/// like the first to the bit.
+static int built_level_keeps_every_joint_at_its_index() {
+    static const char* const xml = R"(<World Version="2">
+  <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+  <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+  <Bodies>
+    <Body Type="Static"></Body>
+    <Body Type="Dynamic"><Position>0 2</Position><AngularVelocity>3</AngularVelocity>
+      <Fixtures><ID>0</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>1.5 2</Position><Fixtures><ID>0</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>4 2</Position><Fixtures><ID>0</ID></Fixtures></Body>
+  </Bodies>
+  <Joints>
+    <Joint Type="Revolute"><Name>AxleA</Name><BodyA>0</BodyA><BodyB>1</BodyB>
+      <LocalAnchorA>0 2</LocalAnchorA></Joint>
+    <Joint Type="Revolute"><Name>Overdriven</Name><BodyA>0</BodyA><BodyB>3</BodyB>
+      <LocalAnchorA>4 2</LocalAnchorA><EnableMotor>true</EnableMotor>
+      <MaxMotorTorque>1e30</MaxMotorTorque><UserData>loud</UserData></Joint>
+    <Joint Type="Revolute"><Name>AxleB</Name><BodyA>0</BodyA><BodyB>2</BodyB>
+      <LocalAnchorA>1.5 2</LocalAnchorA></Joint>
+    <Joint Type="Gear"><Name>Mesh</Name><BodyA>1</BodyA><BodyB>2</BodyB>
+      <JointA>0</JointA><JointB>2</JointB><Ratio>2</Ratio></Joint>
+    <Joint Type="Distance"><Name>Tie</Name><BodyA>2</BodyA><BodyB>3</BodyB>
+      <Length>2.5</Length></Joint>
+  </Joints>
+</World>)";
+    World original(xml);
+    ENSURE(original.scene != nullptr);
+    ENSURE(original.built.joints.at(1) == nullptr); // beyond the range: skipped, reported
+    std::vector<box2scene::Report> reports;
+    ScenePtr captured(box2scene::capture_world(original.world, original.built,
+                                               original.scene.get(), reports));
+    print_reports(reports);
+    ENSURE(captured != nullptr && reports.empty());
+    const b2s_scene_view& level = view_of(original.scene);
+    const b2s_scene_view& saved = view_of(captured);
+    ENSURE_EQ(saved.joint_count, level.joint_count);
+    for (uint32_t j = 0; j < level.joint_count; ++j) {
+        ENSURE_STR(saved.joints[j].name, level.joints[j].name);
+        ENSURE_EQ(saved.joints[j].kind, level.joints[j].kind);
+    }
+    ENSURE_FLOAT(saved.joints[1].max_motor_torque, 1e30f);
+    ENSURE_STR(saved.user_data[saved.joints[1].user_data].raw, "loud");
+    ENSURE_EQ(saved.joints[3].joint_a, 0);
+    ENSURE_EQ(saved.joints[3].joint_b, 2);
+    World copy(load_text(written_text(captured.get()).c_str()));
+    ENSURE(copy.scene != nullptr && copy.built.joints.at(1) == nullptr);
+    step_for(original.world, 120);
+    step_for(copy.world, 120);
+    ENSURE_EQ(count_differences(copy.built.bodies, original.built.bodies), 0);
+    return 0;
+}
+
 // ---- what the format cannot hold
 
 static bool has_report(const std::vector<box2scene::Report>& reports, b2s_code code,
@@ -802,6 +858,7 @@ int main() {
     failed += RUN_TEST(built_level_springs_round_trip_to_the_bit);
     failed += RUN_TEST(springs_are_inverted_as_the_build_computes_them);
     failed += RUN_TEST(built_level_keeps_its_names_and_user_data);
+    failed += RUN_TEST(built_level_keeps_every_joint_at_its_index);
     failed += RUN_TEST(mouse_joint_is_reported_not_written);
     failed += RUN_TEST(approximations_are_reported);
     failed += RUN_TEST(namer_supplies_names_and_user_data);

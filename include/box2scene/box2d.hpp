@@ -187,7 +187,12 @@ inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
 /// capture_world of a world that build_world made from `scene` (`built` is what it gave,
 /// and the scene is still loaded), which keeps the level with no host code: every body,
 /// fixture, shape and joint built from a record is written with the record's Name and
-/// UserData (the Namer's label wins where it gives one; it labels the host's own objects).
+/// UserData (the Namer's label wins where it gives one; it labels the host's own objects),
+/// joints in the scene's order: one build_world skipped (beyond the working range, or
+/// depending on one that is) is written back as the file has it, so that every joint keeps
+/// its index; a gear that the file puts before its joints comes right after them, as the
+/// format wants. Nothing the build made may have been destroyed since: Box2D reuses its
+/// memory for what the host creates next, which would then be taken for the level's.
 /// Where the engine still holds exactly what the build set from a record, the record's own
 /// values are written back rather than ones inverted from the engine's: a spring's
 /// FrequencyHz and DampingRatio, which Box2D 2.4 holds as a stiffness and damping computed

@@ -171,7 +171,14 @@ public:
     WorldCapture(b2World& world, std::vector<Report>& reports, const Namer* namer,
                  const Built* built = nullptr, const b2s_scene* scene = nullptr)
         : world_(world), reports_(reports), namer_(namer != nullptr ? namer : &unnamed_),
-          built_(built), level_(b2s_scene_get_view(scene)) {}
+          built_(built), level_(b2s_scene_get_view(scene)) {
+        if (has_level()) {
+            index_level(built_->bodies, level_->body_count, level_bodies_);
+            index_level(built_->fixtures, level_->fixture_id_count, level_fixtures_);
+            index_level(built_->joints, level_->joint_count, level_joints_);
+            level_written_.assign(level_->joint_count, B2S_NONE);
+        }
+    }
 
     b2s_scene* run() {
         b2s_vec2 gravity = to_b2s(world_.GetGravity());
@@ -179,9 +186,13 @@ public:
         for (b2Body* body : creation_order(world_.GetBodyList())) {
             capture_body(*body);
         }
-        for (b2Joint* joint : creation_order(world_.GetJointList())) {
-            capture_joint(*joint);
-            ++joint_index_;
+        for (const PlacedJoint& placed : joints_in_order()) {
+            if (placed.joint != nullptr) {
+                joint_index_ = placed.created;
+                capture_joint(*placed.joint);
+            } else {
+                write_skipped(placed.record);
+            }
         }
         b2s_scene* scene = nullptr;
         b2s_error error{};
@@ -246,16 +257,27 @@ private:
     /// Whether the capture was given the scene and what build_world made of it.
     bool has_level() const { return built_ != nullptr && level_ != nullptr; }
 
-    /// Where `object` stands in `made`, a part of what build_world made, when the result
-    /// and the scene agree on how many there are; else B2S_NONE.
+    /// Indexes `made`, a part of what build_world made, by object, when the result and the
+    /// scene agree on how many there are (a result of another scene labels nothing).
     template <class T>
-    static uint32_t level_index(const std::vector<T*>& made, uint32_t level_count,
-                                const T* object) {
+    static void index_level(const std::vector<T*>& made, uint32_t level_count,
+                            std::unordered_map<const T*, uint32_t>& index) {
         if (made.size() != level_count) {
-            return B2S_NONE;
+            return;
         }
-        auto found = std::find(made.begin(), made.end(), object);
-        return found != made.end() ? static_cast<uint32_t>(found - made.begin()) : B2S_NONE;
+        for (uint32_t i = 0; i < level_count; ++i) {
+            if (made[i] != nullptr) {
+                index.emplace(made[i], i);
+            }
+        }
+    }
+
+    /// Where `object` stands in what build_world made, or B2S_NONE.
+    template <class T>
+    static uint32_t level_index(const std::unordered_map<const T*, uint32_t>& index,
+                                const T* object) {
+        auto found = index.find(object);
+        return found != index.end() ? found->second : B2S_NONE;
     }
 
     /// The Name and UserData of the level's record `record`, or none.
@@ -277,22 +299,17 @@ private:
 
     /// The level's record a b2Body was built from, or nullptr (none given, or the host's).
     const b2s_body* level_body(const b2Body& body) const {
-        uint32_t index = has_level() ? level_index(built_->bodies, level_->body_count, &body)
-                                     : B2S_NONE;
+        uint32_t index = level_index(level_bodies_, &body);
         return index != B2S_NONE ? &level_->bodies[index] : nullptr;
     }
 
     const b2s_joint* level_joint(const b2Joint& joint) const {
-        uint32_t index = has_level() ? level_index(built_->joints, level_->joint_count, &joint)
-                                     : B2S_NONE;
+        uint32_t index = level_index(level_joints_, &joint);
         return index != B2S_NONE ? &level_->joints[index] : nullptr;
     }
 
     const b2s_fixture* level_fixture(const b2Fixture& fixture) const {
-        if (!has_level()) {
-            return nullptr;
-        }
-        uint32_t slot = level_index(built_->fixtures, level_->fixture_id_count, &fixture);
+        uint32_t slot = level_index(level_fixtures_, &fixture);
         if (slot == B2S_NONE || level_->fixture_ids[slot] >= level_->fixture_count) {
             return nullptr;
         }
@@ -691,6 +708,96 @@ private:
 
     // ---- joints
 
+    /// A joint to write: one of the world (`created`, its place among them in creation
+    /// order) or, given the level, scene joint `record`, which build_world skipped.
+    struct PlacedJoint {
+        uint64_t place;
+        b2Joint* joint;
+        uint32_t created;
+        uint32_t record;
+    };
+
+    /// Where scene joint `r` is written: at its index, but a gear right after the later of
+    /// the joints it couples (the builder takes a gear after them).
+    uint64_t record_place(uint32_t r) const {
+        const b2s_joint& joint = level_->joints[r];
+        uint32_t last = r;
+        if (joint.kind == B2S_JOINT_KIND_GEAR) {
+            for (uint32_t coupled : {joint.joint_a, joint.joint_b}) {
+                last = coupled != B2S_NONE && coupled < level_->joint_count
+                           ? std::max(last, coupled)
+                           : last;
+            }
+        }
+        return 2u * static_cast<uint64_t>(last) + (last > r ? 1u : 0u);
+    }
+
+    /// The joints in the order they are written: creation order, or given the level the
+    /// scene's, with the joints build_world skipped in their places and the host's after.
+    std::vector<PlacedJoint> joints_in_order() const {
+        std::vector<b2Joint*> created = creation_order(world_.GetJointList());
+        uint64_t host = has_level() ? 2u * static_cast<uint64_t>(level_->joint_count) : 0u;
+        std::vector<PlacedJoint> placed;
+        for (uint32_t i = 0; i < created.size(); ++i) {
+            uint32_t r = level_index(level_joints_, created[i]);
+            placed.push_back({r != B2S_NONE ? record_place(r) : host + i, created[i], i, r});
+        }
+        if (has_level() && built_->joints.size() == level_->joint_count) {
+            for (uint32_t r = 0; r < level_->joint_count; ++r) {
+                if (built_->joints[r] == nullptr) {
+                    placed.push_back({record_place(r), nullptr, 0, r});
+                }
+            }
+        }
+        std::stable_sort(placed.begin(), placed.end(),
+                         [](const PlacedJoint& a, const PlacedJoint& b) {
+                             return a.place < b.place;
+                         });
+        return placed;
+    }
+
+    /// The index written for scene body `index`, or B2S_NONE.
+    uint32_t written_body(uint32_t index) const {
+        if (index >= built_->bodies.size()) {
+            return B2S_NONE;
+        }
+        auto found = bodies_.find(built_->bodies[index]);
+        return found != bodies_.end() ? found->second : B2S_NONE;
+    }
+
+    /// Scene joint `r`, which build_world skipped (Box2D 2.4 cannot hold it), written as the
+    /// file has it between the written bodies, so that the joints keep their indices;
+    /// reported and not written when it names a body or joint not written before it.
+    void write_skipped(uint32_t r) {
+        b2s_joint record = level_->joints[r];
+        Label label = level_label(&record);
+        record.body_a = written_body(record.body_a);
+        record.body_b = written_body(record.body_b);
+        bool resolved = record.body_a != B2S_NONE && record.body_b != B2S_NONE &&
+                        record.kind != B2S_JOINT_KIND_UNSUPPORTED;
+        for (uint32_t* coupled : {&record.joint_a, &record.joint_b}) {
+            if (*coupled != B2S_NONE) {
+                *coupled = *coupled < level_written_.size() ? level_written_[*coupled] : B2S_NONE;
+                resolved = resolved && *coupled != B2S_NONE;
+            }
+        }
+        if (!resolved) {
+            report(B2S_CODE_SKIPPED_DEPENDENT, "joint", r, label.name,
+                   "scene joint " + std::to_string(r) +
+                       ", which build_world skipped, names a body or joint not written (or "
+                       "has no Box2Scene form); not written");
+            return;
+        }
+        record.name = name_of(label.name);
+        record.user_data = user_data(label, "joint", r);
+        uint32_t added = B2S_NONE;
+        b2s_error error{};
+        b2s_code code = b2s_builder_add_joint(builder_, &record, &added, &error);
+        if (accepted(code, error, "joint", r, label.name)) {
+            level_written_[r] = added;
+        }
+    }
+
     void capture_joint(b2Joint& joint) {
         Label label = joint_label(joint);
         b2s_joint record;
@@ -704,6 +811,10 @@ private:
         b2s_code code = b2s_builder_add_joint(builder_, &record, &added, &error);
         if (accepted(code, error, "joint", joint_index_, label.name)) {
             joints_.emplace(&joint, added);
+            uint32_t r = level_index(level_joints_, &joint);
+            if (r != B2S_NONE) {
+                level_written_[r] = added;
+            }
         }
     }
 
@@ -985,6 +1096,11 @@ private:
     const Namer* namer_;
     const Built* built_;                // with level_: what build_world made, or nullptr
     const b2s_scene_view* level_;       // the scene it was made from
+    // what build_world made, by object: the index of its record (its fixture ID pool entry)
+    std::unordered_map<const b2Body*, uint32_t> level_bodies_;
+    std::unordered_map<const b2Fixture*, uint32_t> level_fixtures_;
+    std::unordered_map<const b2Joint*, uint32_t> level_joints_;
+    std::vector<uint32_t> level_written_; // per scene joint, the index written, or B2S_NONE
     b2s_builder* builder_ = b2s_builder_new();
     std::unordered_map<std::string, uint32_t> shapes_;   // by shape_key
     std::unordered_map<std::string, uint32_t> fixtures_; // by fixture_key
