@@ -205,17 +205,19 @@ void b2s_box2d3_reports_free(b2s_box2d3_reports* reports);
  *  b2_nullBodyId when the scene has none of that name or it was not created. `built` is
  *  what building `scene` gave (a result of another scene, with other counts, finds nothing);
  *  NULL arguments give the null id. */
-b2BodyId b2s_box2d3_find_body(const b2s_box2d3_built* built, const b2s_scene* scene, const char* name);
+b2BodyId b2s_box2d3_find_body(const b2s_box2d3_built* built, const b2s_scene* scene,
+                              const char* name);
 
 /** The shape built from the scene's first fixture named `name`, on the first body that has
- *  that fixture (its first entry in the fixture ID pool); for a chain's, which is a v3 chain (`chains`), its first segment. b2_nullShapeId
- *  when there is none or it was not created. */
+ *  that fixture (its first entry in the fixture ID pool): for a chain (a v3 chain, in
+ *  `chains`), its first segment. b2_nullShapeId when there is none or it was not created. */
 b2ShapeId b2s_box2d3_find_fixture(const b2s_box2d3_built* built, const b2s_scene* scene,
-                              const char* name);
+                                  const char* name);
 
 /** The joint built from the scene's first joint named `name`, or b2_nullJointId when there
  *  is none or it was skipped. */
-b2JointId b2s_box2d3_find_joint(const b2s_box2d3_built* built, const b2s_scene* scene, const char* name);
+b2JointId b2s_box2d3_find_joint(const b2s_box2d3_built* built, const b2s_scene* scene,
+                                const char* name);
 
 /** The scene body `body` was built from, by `built`: its index in the scene's bodies, or
  *  B2S_NONE when `body` is not a live body `built` holds (one the host made itself). */

@@ -945,8 +945,8 @@ static bool b2s3_level_of(const b2s3_built_t* built, b2s3_level* level, b2BodyId
         }
     }
     level->body_records = records;
-    level->captured_bodies =
-        (uint32_t*)malloc((size_t)(built->body_count > 0 ? built->body_count : 1) * sizeof(uint32_t));
+    size_t bodies_room = (size_t)(built->body_count > 0 ? built->body_count : 1);
+    level->captured_bodies = (uint32_t*)malloc(bodies_room * sizeof(uint32_t));
     level->written_joints = (uint32_t*)malloc(
         (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(uint32_t));
     if (level->captured_bodies == NULL || level->written_joints == NULL) {
@@ -1000,7 +1000,8 @@ b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
     b2s3_level level = {built, view, NULL, NULL, 0, NULL, NULL, 0};
     uint32_t count = 0;
     b2s_code code;
-    if (bodies == NULL || records == NULL || !b2s3_level_of(built, &level, bodies, records, &count)) {
+    if (bodies == NULL || records == NULL ||
+        !b2s3_level_of(built, &level, bodies, records, &count)) {
         *out_scene = NULL;
         reports->items = NULL;
         reports->count = 0;
