@@ -429,6 +429,208 @@ static int world_captured_in_motion_restarts_there() {
     return 0;
 }
 
+// ---- a level built, captured and built again
+
+/// A car on a floor: its wheels on 2.2-style springs (FrequencyHz 4, DampingRatio 0.7) off
+/// the chassis's centre, a soft weld holding its roof.
+static const char* const kCarLevel = R"(<World Version="2">
+  <Shapes>
+    <Shape Type="Polygon"><Vertices><Vertex>-30 -0.5</Vertex><Vertex>30 -0.5</Vertex>
+      <Vertex>30 0</Vertex><Vertex>-30 0</Vertex></Vertices></Shape>
+    <Shape Type="Polygon"><Vertices><Vertex>-1.5 -0.3</Vertex><Vertex>1.5 -0.3</Vertex>
+      <Vertex>1.5 0.3</Vertex><Vertex>-1.5 0.3</Vertex></Vertices></Shape>
+    <Shape Type="Circle"><Radius>0.4</Radius><Position>0 0</Position></Shape>
+    <Shape Type="Polygon"><Vertices><Vertex>-0.7 0</Vertex><Vertex>0.9 0</Vertex>
+      <Vertex>0.6 0.5</Vertex><Vertex>-0.5 0.5</Vertex></Vertices></Shape>
+  </Shapes>
+  <Fixtures>
+    <Fixture><Shape>0</Shape><Friction>0.9</Friction></Fixture>
+    <Fixture><Shape>1</Shape><Density>2</Density></Fixture>
+    <Fixture><Shape>2</Shape><Density>1</Density><Friction>0.9</Friction></Fixture>
+    <Fixture><Shape>3</Shape><Density>0.7</Density></Fixture>
+  </Fixtures>
+  <Bodies>
+    <Body Type="Static"><Fixtures><ID>0</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Name>Chassis</Name><Position>0.3 1.4</Position><Angle>0.05</Angle>
+      <LinearVelocity>3 0</LinearVelocity><Fixtures><ID>1</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>-0.8 0.6</Position><Fixtures><ID>2</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>1.45 0.62</Position><Fixtures><ID>2</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>0.4 1.75</Position><Fixtures><ID>3</ID></Fixtures></Body>
+  </Bodies>
+  <Joints>
+    <Joint Type="Wheel"><Name>RearSpring</Name><BodyA>1</BodyA><BodyB>2</BodyB>
+      <LocalAnchorA>-1.1 -0.8</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>
+      <LocalAxisA>0.1 1</LocalAxisA><FrequencyHz>4</FrequencyHz><DampingRatio>0.7</DampingRatio>
+      <EnableMotor>true</EnableMotor><MotorSpeed>-6</MotorSpeed><MaxMotorTorque>40</MaxMotorTorque></Joint>
+    <Joint Type="Wheel"><Name>FrontSpring</Name><BodyA>1</BodyA><BodyB>3</BodyB>
+      <LocalAnchorA>1.15 -0.78</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>
+      <LocalAxisA>0 1</LocalAxisA><FrequencyHz>4</FrequencyHz><DampingRatio>0.7</DampingRatio></Joint>
+    <Joint Type="Weld"><Name>Roof</Name><BodyA>1</BodyA><BodyB>4</BodyB>
+      <LocalAnchorA>0.1 0.3</LocalAnchorA><LocalAnchorB>0 -0.05</LocalAnchorB>
+      <FrequencyHz>5</FrequencyHz><DampingRatio>0.3</DampingRatio></Joint>
+  </Joints>
+</World>)";
+
+/// A level's springs (2.4 takes stiffness and damping, which build_world computes from
+/// FrequencyHz, DampingRatio and the bodies) come back as the level gave them: the capture
+/// of a world built from a scene writes the scene's own values where the engine still holds
+/// what they give, so the world built again from the file moves like the first to the bit,
+/// over 10 s. Inverting the stiffness alone missed a wheel's, and the copy drifted.
+static int built_level_springs_round_trip_to_the_bit() {
+    World original(kCarLevel);
+    ENSURE(original.ok());
+    std::vector<box2scene::Report> reports;
+    ScenePtr captured(box2scene::capture_world(original.world, original.built,
+                                               original.scene.get(), reports));
+    print_reports(reports);
+    ENSURE(captured != nullptr);
+    ENSURE_EQ(reports.size(), 0);
+    const b2s_scene_view& saved = view_of(captured);
+    for (uint32_t j = 0; j < 3; ++j) {
+        const b2s_joint& level = view_of(original.scene).joints[j];
+        ENSURE_FLOAT(saved.joints[j].frequency_hz, level.frequency_hz);
+        ENSURE_FLOAT(saved.joints[j].damping_ratio, level.damping_ratio);
+    }
+    World copy(load_text(written_text(captured.get()).c_str()));
+    ENSURE(copy.ok());
+    b2Vec2 start = original.body(1)->GetPosition();
+    step_for(original.world, 600);
+    step_for(copy.world, 600);
+    ENSURE_EQ(count_differences(copy.built.bodies, original.built.bodies), 0);
+    ENSURE(b2Distance(start, original.body(1)->GetPosition()) > 1.0f); // the car drove
+    return 0;
+}
+
+/// Without the scene, a spring's FrequencyHz and DampingRatio are inverted from the
+/// stiffness and damping through the spring build_world computes for the joint's kind (a
+/// wheel's and a soft weld's are Box2D 2.2's, from the mass the joint moves), not through
+/// b2LinearStiffness or b2AngularStiffness, which missed them.
+static int springs_are_inverted_as_the_build_computes_them() {
+    World original(kCarLevel);
+    ENSURE(original.ok());
+    ScenePtr loaded = captured_and_reloaded(original.world);
+    ENSURE(loaded != nullptr);
+    World copy(std::move(loaded));
+    ENSURE(copy.ok());
+    step_for(original.world, 600);
+    step_for(copy.world, 600);
+    ENSURE_EQ(count_differences(copy.built.bodies, original.built.bodies), 0);
+    return 0;
+}
+
+/// A host Namer that names the Chassis body only, by its own word.
+struct ChassisNamer : box2scene::Namer {
+    const b2Body* chassis = nullptr;
+    box2scene::Label body(b2Body& body) const override {
+        box2scene::Label label;
+        if (&body == chassis) label.name = "Car";
+        return label;
+    }
+};
+
+/// Given the scene and what build_world made, a capture keeps the level's Names and
+/// UserData with no host code: every body, fixture, shape and joint comes back named as the
+/// file named it; where the host's Namer gives a label, the host's wins.
+static int built_level_keeps_its_names_and_user_data() {
+    std::string xml = kCarLevel;
+    auto insert_after = [&xml](const std::string& at, const std::string& text) {
+        xml.insert(xml.find(at) + at.size(), text);
+    };
+    insert_after("<Shape Type=\"Circle\">", "<Name>TyreShape</Name>");
+    insert_after("<Fixture><Shape>2</Shape>",
+                 "<Name>Tyre</Name><UserData><Type>System.String</Type><Value>"
+                 "<string>grip &amp; roll</string></Value></UserData>");
+    insert_after("<Position>-0.8 0.6</Position>", "<Name>RearWheel</Name>"
+                 "<UserData><Type>System.Int32</Type><Value><int>42</int></Value></UserData>");
+    insert_after("<Name>Roof</Name>", "<UserData><Color>red</Color></UserData>");
+    World original(xml.c_str());
+    ENSURE(original.ok());
+    ChassisNamer namer;
+    namer.chassis = original.body(1);
+    std::vector<box2scene::Report> reports;
+    ScenePtr captured(box2scene::capture_world(original.world, original.built,
+                                               original.scene.get(), reports, &namer));
+    print_reports(reports);
+    ENSURE(captured != nullptr && reports.empty());
+    ScenePtr loaded = load_text(written_text(captured.get()).c_str());
+    ENSURE(loaded != nullptr);
+    const b2s_scene_view& view = view_of(loaded);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "Car"), 1);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "Chassis"), B2S_NONE);
+    ENSURE_EQ(b2s_scene_find_body(loaded.get(), "RearWheel"), 2);
+    ENSURE_STR(view.user_data[view.bodies[2].user_data].value, "42");
+    ENSURE_EQ(view.bodies[3].name, nullptr); // the front wheel has no Name in the level
+    ENSURE_EQ(view.bodies[3].user_data, B2S_NONE);
+    // Both wheels' copies of the Tyre fixture come back as the one Tyre.
+    uint32_t tyre = b2s_scene_find_fixture(loaded.get(), "Tyre");
+    ENSURE(tyre != B2S_NONE);
+    ENSURE_EQ(view.fixture_ids[view.bodies[2].fixtures.first], tyre);
+    ENSURE_EQ(view.fixture_ids[view.bodies[3].fixtures.first], tyre);
+    ENSURE_STR(view.user_data[view.fixtures[tyre].user_data].value, "grip & roll");
+    ENSURE_EQ(view.fixtures[tyre].shape, b2s_scene_find_shape(loaded.get(), "TyreShape"));
+    for (const char* joint : {"RearSpring", "FrontSpring", "Roof"}) {
+        ENSURE(b2s_scene_find_joint(loaded.get(), joint) != B2S_NONE);
+    }
+    ENSURE_STR(view.user_data[view.joints[2].user_data].raw, "<Color>red</Color>");
+    return 0;
+}
+
+/// Given the scene, a joint build_world skipped (a motor torque beyond Box2D 2.4's range) is
+/// written back as the file has it, so every joint keeps its index and a gear after it still
+/// names its two axles; the world built again from the save (which skips it again) moves
+/// like the first to the bit.
+static int built_level_keeps_every_joint_at_its_index() {
+    static const char* const xml = R"(<World Version="2">
+  <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+  <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+  <Bodies>
+    <Body Type="Static"></Body>
+    <Body Type="Dynamic"><Position>0 2</Position><AngularVelocity>3</AngularVelocity>
+      <Fixtures><ID>0</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>1.5 2</Position><Fixtures><ID>0</ID></Fixtures></Body>
+    <Body Type="Dynamic"><Position>4 2</Position><Fixtures><ID>0</ID></Fixtures></Body>
+  </Bodies>
+  <Joints>
+    <Joint Type="Revolute"><Name>AxleA</Name><BodyA>0</BodyA><BodyB>1</BodyB>
+      <LocalAnchorA>0 2</LocalAnchorA></Joint>
+    <Joint Type="Revolute"><Name>Overdriven</Name><BodyA>0</BodyA><BodyB>3</BodyB>
+      <LocalAnchorA>4 2</LocalAnchorA><EnableMotor>true</EnableMotor>
+      <MaxMotorTorque>1e30</MaxMotorTorque><UserData>loud</UserData></Joint>
+    <Joint Type="Revolute"><Name>AxleB</Name><BodyA>0</BodyA><BodyB>2</BodyB>
+      <LocalAnchorA>1.5 2</LocalAnchorA></Joint>
+    <Joint Type="Gear"><Name>Mesh</Name><BodyA>1</BodyA><BodyB>2</BodyB>
+      <JointA>0</JointA><JointB>2</JointB><Ratio>2</Ratio></Joint>
+    <Joint Type="Distance"><Name>Tie</Name><BodyA>2</BodyA><BodyB>3</BodyB>
+      <Length>2.5</Length></Joint>
+  </Joints>
+</World>)";
+    World original(xml);
+    ENSURE(original.scene != nullptr);
+    ENSURE(original.built.joints.at(1) == nullptr); // beyond the range: skipped, reported
+    std::vector<box2scene::Report> reports;
+    ScenePtr captured(box2scene::capture_world(original.world, original.built,
+                                               original.scene.get(), reports));
+    print_reports(reports);
+    ENSURE(captured != nullptr && reports.empty());
+    const b2s_scene_view& level = view_of(original.scene);
+    const b2s_scene_view& saved = view_of(captured);
+    ENSURE_EQ(saved.joint_count, level.joint_count);
+    for (uint32_t j = 0; j < level.joint_count; ++j) {
+        ENSURE_STR(saved.joints[j].name, level.joints[j].name);
+        ENSURE_EQ(saved.joints[j].kind, level.joints[j].kind);
+    }
+    ENSURE_FLOAT(saved.joints[1].max_motor_torque, 1e30f);
+    ENSURE_STR(saved.user_data[saved.joints[1].user_data].raw, "loud");
+    ENSURE_EQ(saved.joints[3].joint_a, 0);
+    ENSURE_EQ(saved.joints[3].joint_b, 2);
+    World copy(load_text(written_text(captured.get()).c_str()));
+    ENSURE(copy.scene != nullptr && copy.built.joints.at(1) == nullptr);
+    step_for(original.world, 120);
+    step_for(copy.world, 120);
+    ENSURE_EQ(count_differences(copy.built.bodies, original.built.bodies), 0);
+    return 0;
+}
+
 // ---- what the format cannot hold
 
 static bool has_report(const std::vector<box2scene::Report>& reports, b2s_code code,
@@ -653,6 +855,10 @@ int main() {
     failed += RUN_TEST(rebuilt_world_evolves_bit_for_bit);
     failed += RUN_TEST(lossy_capture_code_is_the_librarys);
     failed += RUN_TEST(world_captured_in_motion_restarts_there);
+    failed += RUN_TEST(built_level_springs_round_trip_to_the_bit);
+    failed += RUN_TEST(springs_are_inverted_as_the_build_computes_them);
+    failed += RUN_TEST(built_level_keeps_its_names_and_user_data);
+    failed += RUN_TEST(built_level_keeps_every_joint_at_its_index);
     failed += RUN_TEST(mouse_joint_is_reported_not_written);
     failed += RUN_TEST(approximations_are_reported);
     failed += RUN_TEST(namer_supplies_names_and_user_data);

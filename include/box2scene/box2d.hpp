@@ -145,16 +145,108 @@ public:
 inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
                                 const Namer* namer = nullptr);
 
+/// capture_world of a world that build_world made from `scene` (`built` is what it gave,
+/// and the scene is still loaded), which keeps the level with no host code: every body,
+/// fixture, shape and joint built from a record is written with the record's Name and
+/// UserData (the Namer's label wins where it gives one; it labels the host's own objects),
+/// joints in the scene's order: one build_world skipped (beyond the working range, or
+/// depending on one that is) is written back as the file has it, so that every joint keeps
+/// its index; a gear that the file puts before its joints comes right after them, as the
+/// format wants. Nothing the build made may have been destroyed since: Box2D reuses its
+/// memory for what the host creates next, which would then be taken for the level's.
+/// Where the engine still holds exactly what the build set from a record, the record's own
+/// values are written back rather than ones inverted from the engine's: a spring's
+/// FrequencyHz and DampingRatio, which Box2D 2.4 holds as a stiffness and damping computed
+/// from them and the bodies, come back as the level gave them, and the world built again
+/// from the capture moves like this one to the bit. Everything else is as for
+/// capture_world.
+inline b2s_scene* capture_world(b2World& world, const Built& built, const b2s_scene* scene,
+                                std::vector<Report>& reports, const Namer* namer = nullptr);
+
+// ---- lookups: the engine object built from a named record of the scene, and back. Each
+// takes time linear in the records of its kind.
+
+/// The b2Body built from the scene's first body named `name` (b2s_scene_find_body), or
+/// nullptr when the scene has none of that name or it was not created. `built` is what
+/// build_world made of `scene` (a result of another scene, with other counts, finds
+/// nothing); a NULL scene or name finds nothing.
+inline b2Body* find_body(const Built& built, const b2s_scene* scene, const char* name);
+
+/// The b2Fixture built from the scene's first fixture named `name`, on the first body that
+/// has that fixture (its first entry in the fixture ID pool), or nullptr.
+inline b2Fixture* find_fixture(const Built& built, const b2s_scene* scene, const char* name);
+
+/// The b2Joint built from the scene's first joint named `name`, or nullptr (also when it
+/// was skipped).
+inline b2Joint* find_joint(const Built& built, const b2s_scene* scene, const char* name);
+
+/// The scene body `body` was built from: its index in the scene's bodies (and in
+/// built.bodies), or B2S_NONE when `built` does not hold it (a body the host made itself).
+inline uint32_t body_index(const Built& built, const b2Body* body);
+
+/// The entry of the fixture ID pool (b2s_scene_view::fixture_ids, and built.fixtures) that
+/// `fixture` was built for: the pool's value there is the scene fixture, and the body whose
+/// fixtures range holds the entry is its body. B2S_NONE when `built` does not hold it.
+inline uint32_t fixture_slot(const Built& built, const b2Fixture* fixture);
+
+/// The scene joint `joint` was built from: its index in the scene's joints, or B2S_NONE.
+inline uint32_t joint_index(const Built& built, const b2Joint* joint);
+
+/// Owns a scene: b2s_scene_free when it goes out of scope or is given another. Movable, not
+/// copyable (a scene is freed once).
+///
+///     box2scene::Scene scene;
+///     if (b2s_load_file("level.xml", nullptr, scene.out(), nullptr) == B2S_CODE_OK) { ... }
+class Scene {
+public:
+    Scene() noexcept = default;
+    /// Takes ownership of `scene` (nullptr is fine).
+    explicit Scene(b2s_scene* scene) noexcept : scene_(scene) {}
+    Scene(Scene&& other) noexcept : scene_(other.release()) {}
+    Scene& operator=(Scene&& other) noexcept {
+        reset(other.release());
+        return *this;
+    }
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+    ~Scene() { b2s_scene_free(scene_); }
+
+    b2s_scene* get() const noexcept { return scene_; }
+    explicit operator bool() const noexcept { return scene_ != nullptr; }
+    /// Frees the scene held and takes `scene`.
+    void reset(b2s_scene* scene = nullptr) noexcept {
+        b2s_scene* old = scene_;
+        scene_ = scene;
+        b2s_scene_free(old);
+    }
+    /// Gives the scene up without freeing it: the caller owns it.
+    b2s_scene* release() noexcept {
+        b2s_scene* scene = scene_;
+        scene_ = nullptr;
+        return scene;
+    }
+    /// Frees the scene held and gives where a loader stores the next (b2s_load_file's
+    /// `out_scene`).
+    b2s_scene** out() noexcept {
+        reset();
+        return &scene_;
+    }
+
+private:
+    b2s_scene* scene_ = nullptr;
+};
+
 } // namespace box2scene
 
 // The definitions, cut by concept as the v3 adapter's sources are (detail/box2d3/): the
 // reports and working range, the world (the build), its shapes, bodies and joints, the
-// capture.
+// capture, the lookups.
 #include "detail/box2d/reports.hpp"
 #include "detail/box2d/world.hpp"
 #include "detail/box2d/shapes.hpp"
 #include "detail/box2d/bodies.hpp"
 #include "detail/box2d/joints.hpp"
 #include "detail/box2d/capture.hpp"
+#include "detail/box2d/lookup.hpp"
 
 #endif // BOX2SCENE_BOX2D_HPP

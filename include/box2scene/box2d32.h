@@ -145,8 +145,56 @@ b2s_code b2s_box2d32_capture_world(b2WorldId world, const b2BodyId* bodies, uint
                                    b2s_scene** out_scene, b2s_box2d32_reports* reports,
                                    b2s_error* error);
 
+/** b2s_box2d32_capture_world of every body `built` holds that is still live, in the scene's
+ *  order, for a world built from `scene` (`built` is what building it gave, and the scene is
+ *  still loaded): the save keeps the level with no host code, every body, shape, fixture and
+ *  joint built from a record written with the record's Name (whole, where v3 keeps only the
+ *  first bytes of a body's) and UserData, in the scene's order. A joint the build skipped
+ *  (v3 has no pulley or gear) is written back as the file has it between the captured
+ *  bodies, so that the joints keep their indices; one that cannot be (a Farseer-only joint,
+ *  a gear before its joints) is reported. Joints the host made between those bodies follow,
+ *  captured as by b2s_box2d32_capture_world. B2S_CODE_INVALID_ARGUMENT when `built` has other
+ *  counts than the scene. */
+b2s_code b2s_box2d32_capture_built(b2WorldId world, const b2s_box2d32_built* built,
+                                   const b2s_scene* scene, b2s_scene** out_scene,
+                                   b2s_box2d32_reports* reports, b2s_error* error);
+
 /** Frees the reports of a capture and sets them empty. NULL is ignored. */
 void b2s_box2d32_reports_free(b2s_box2d32_reports* reports);
+
+/* ---- lookups: the engine object built from a named record of the scene, and back. Each
+ * takes time linear in the records of its kind. */
+
+/** The body built from the scene's first body named `name` (b2s_scene_find_body), or
+ *  b2_nullBodyId when the scene has none of that name or it was not created. `built` is
+ *  what building `scene` gave (a result of another scene, with other counts, finds nothing);
+ *  NULL arguments give the null id. */
+b2BodyId b2s_box2d32_find_body(const b2s_box2d32_built* built, const b2s_scene* scene,
+                               const char* name);
+
+/** The shape built from the scene's first fixture named `name`, on the first body that has
+ *  that fixture (its first entry in the fixture ID pool): for a chain (one shape per edge),
+ *  its first segment. b2_nullShapeId when there is none or it was not created. */
+b2ShapeId b2s_box2d32_find_fixture(const b2s_box2d32_built* built, const b2s_scene* scene,
+                                   const char* name);
+
+/** The joint built from the scene's first joint named `name`, or b2_nullJointId when there
+ *  is none or it was skipped. */
+b2JointId b2s_box2d32_find_joint(const b2s_box2d32_built* built, const b2s_scene* scene,
+                                 const char* name);
+
+/** The scene body `body` was built from, by `built`: its index in the scene's bodies, or
+ *  B2S_NONE when `body` is not a live body `built` holds (one the host made itself). */
+uint32_t b2s_box2d32_body_index(const b2s_box2d32_built* built, b2BodyId body);
+
+/** The entry of the fixture ID pool (b2s_scene_view::fixture_ids) that `shape` was built
+ *  for, a chain's segments included: the pool's value there is the scene fixture, and the
+ *  body whose fixtures range holds the entry is its body. B2S_NONE when `shape` is not a
+ *  live shape `built` holds. */
+uint32_t b2s_box2d32_shape_slot(const b2s_box2d32_built* built, b2ShapeId shape);
+
+/** The scene joint `joint` was built from: its index in the scene's joints, or B2S_NONE. */
+uint32_t b2s_box2d32_joint_index(const b2s_box2d32_built* built, b2JointId joint);
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -94,15 +94,13 @@ inline bool axis_normalising_to(b2Vec2 unit, b2Vec2& axis) {
     return false;
 }
 
-/// b2LinearStiffness or b2AngularStiffness.
-using StiffnessFunction = void (*)(float&, float&, float, float, const b2Body*, const b2Body*);
-
-/// The FrequencyHz and DampingRatio from which `stiffness_of`, called by build_world on
-/// the same two bodies (their masses are final by then), gives back `stiffness` and
-/// `damping` bit for bit; false when no floats do (the nearest are stored). A zero
-/// stiffness is no spring: Box2D 2.4 then ignores the damping.
-inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const b2Body* b,
-                          float stiffness, float damping, float& frequency, float& ratio) {
+/// The FrequencyHz and DampingRatio from which `spring_of(hz, ratio, stiffness, damping)`,
+/// what build_world computes for the joint on the same two bodies (their masses are final
+/// by then), gives back `stiffness` and `damping` bit for bit; false when no floats do (the
+/// nearest are stored). A zero stiffness is no spring: Box2D 2.4 then ignores the damping.
+template <class Spring>
+bool spring_giving(Spring spring_of, float stiffness, float damping, float& frequency,
+                   float& ratio) {
     frequency = 0.0f;
     ratio = 0.0f;
     if (stiffness == 0.0f) {
@@ -110,7 +108,7 @@ inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const
     }
     auto stiffness_at = [&](float hz) {
         float k = 0.0f, d = 0.0f;
-        stiffness_of(k, d, hz, 0.0f, a, b);
+        spring_of(hz, 0.0f, k, d);
         return k;
     };
     float per_hz_squared = stiffness_at(1.0f);
@@ -121,7 +119,7 @@ inline bool spring_giving(StiffnessFunction stiffness_of, const b2Body* a, const
                                      std::sqrt(stiffness / per_hz_squared), frequency);
     auto damping_at = [&](float r) {
         float k = 0.0f, d = 0.0f;
-        stiffness_of(k, d, frequency, r, a, b);
+        spring_of(frequency, r, k, d);
         return d;
     };
     float per_ratio = damping_at(1.0f);
@@ -169,8 +167,18 @@ inline b2s_str name_of(const std::string& name) {
 /// One capture: the world, the builder filling up, and what each Box2D object became.
 class WorldCapture {
 public:
-    WorldCapture(b2World& world, std::vector<Report>& reports, const Namer* namer)
-        : world_(world), reports_(reports), namer_(namer != nullptr ? namer : &unnamed_) {}
+    /// `built` and `scene`, both null or both given: what build_world made the world of.
+    WorldCapture(b2World& world, std::vector<Report>& reports, const Namer* namer,
+                 const Built* built = nullptr, const b2s_scene* scene = nullptr)
+        : world_(world), reports_(reports), namer_(namer != nullptr ? namer : &unnamed_),
+          built_(built), level_(b2s_scene_get_view(scene)) {
+        if (has_level()) {
+            index_level(built_->bodies, level_->body_count, level_bodies_);
+            index_level(built_->fixtures, level_->fixture_id_count, level_fixtures_);
+            index_level(built_->joints, level_->joint_count, level_joints_);
+            level_written_.assign(level_->joint_count, B2S_NONE);
+        }
+    }
 
     b2s_scene* run() {
         b2s_vec2 gravity = to_b2s(world_.GetGravity());
@@ -178,9 +186,13 @@ public:
         for (b2Body* body : creation_order(world_.GetBodyList())) {
             capture_body(*body);
         }
-        for (b2Joint* joint : creation_order(world_.GetJointList())) {
-            capture_joint(*joint);
-            ++joint_index_;
+        for (const PlacedJoint& placed : joints_in_order()) {
+            if (placed.joint != nullptr) {
+                joint_index_ = placed.created;
+                capture_joint(*placed.joint);
+            } else {
+                write_skipped(placed.record);
+            }
         }
         b2s_scene* scene = nullptr;
         b2s_error error{};
@@ -235,11 +247,104 @@ private:
         return accepted(code, error, object, index, label.name) ? added : B2S_NONE;
     }
 
+    // ---- labels: the host's, else (given the scene) the level's
+
+    static bool labelled(const Label& label) {
+        return !label.name.empty() || !label.user_data_raw.empty() ||
+               !label.user_data_type.empty() || !label.user_data_value.empty();
+    }
+
+    /// Whether the capture was given the scene and what build_world made of it.
+    bool has_level() const { return built_ != nullptr && level_ != nullptr; }
+
+    /// Indexes `made`, a part of what build_world made, by object, when the result and the
+    /// scene agree on how many there are (a result of another scene labels nothing).
+    template <class T>
+    static void index_level(const std::vector<T*>& made, uint32_t level_count,
+                            std::unordered_map<const T*, uint32_t>& index) {
+        if (made.size() != level_count) {
+            return;
+        }
+        for (uint32_t i = 0; i < level_count; ++i) {
+            if (made[i] != nullptr) {
+                index.emplace(made[i], i);
+            }
+        }
+    }
+
+    /// Where `object` stands in what build_world made, or B2S_NONE.
+    template <class T>
+    static uint32_t level_index(const std::unordered_map<const T*, uint32_t>& index,
+                                const T* object) {
+        auto found = index.find(object);
+        return found != index.end() ? found->second : B2S_NONE;
+    }
+
+    /// The Name and UserData of the level's record `record`, or none.
+    template <class Record>
+    Label level_label(const Record* record) const {
+        Label label;
+        if (record == nullptr) {
+            return label;
+        }
+        label.name = text_of(record->name);
+        if (record->user_data != B2S_NONE && record->user_data < level_->user_data_count) {
+            const b2s_user_data& data = level_->user_data[record->user_data];
+            label.user_data_raw = text_of(data.raw);
+            label.user_data_type = text_of(data.type_name);
+            label.user_data_value = text_of(data.value);
+        }
+        return label;
+    }
+
+    /// The level's record a b2Body was built from, or nullptr (none given, or the host's).
+    const b2s_body* level_body(const b2Body& body) const {
+        uint32_t index = level_index(level_bodies_, &body);
+        return index != B2S_NONE ? &level_->bodies[index] : nullptr;
+    }
+
+    const b2s_joint* level_joint(const b2Joint& joint) const {
+        uint32_t index = level_index(level_joints_, &joint);
+        return index != B2S_NONE ? &level_->joints[index] : nullptr;
+    }
+
+    const b2s_fixture* level_fixture(const b2Fixture& fixture) const {
+        uint32_t slot = level_index(level_fixtures_, &fixture);
+        if (slot == B2S_NONE || level_->fixture_ids[slot] >= level_->fixture_count) {
+            return nullptr;
+        }
+        return &level_->fixtures[level_->fixture_ids[slot]];
+    }
+
+    Label body_label(b2Body& body) const {
+        Label label = namer_->body(body);
+        return labelled(label) ? label : level_label(level_body(body));
+    }
+
+    Label fixture_label(b2Fixture& fixture) const {
+        Label label = namer_->fixture(fixture);
+        return labelled(label) ? label : level_label(level_fixture(fixture));
+    }
+
+    Label joint_label(b2Joint& joint) const {
+        Label label = namer_->joint(joint);
+        return labelled(label) ? label : level_label(level_joint(joint));
+    }
+
+    std::string shape_name(b2Fixture& fixture) const {
+        std::string name = namer_->shape(fixture);
+        const b2s_fixture* record = name.empty() ? level_fixture(fixture) : nullptr;
+        if (record == nullptr || record->shape >= level_->shape_count) {
+            return name;
+        }
+        return text_of(level_->shapes[record->shape].name);
+    }
+
     // ---- shapes and fixtures, each equal one written once
 
     /// The scene shape of the fixture's shape, or B2S_NONE (reported).
     uint32_t scene_shape(b2Fixture& fixture, uint32_t index) {
-        std::string name = namer_->shape(fixture);
+        std::string name = shape_name(fixture);
         b2s_shape shape{};
         std::vector<b2s_vec2> vertices;
         if (!shape_record(*fixture.GetShape(), shape, vertices)) {
@@ -390,7 +495,7 @@ private:
     /// The scene fixture for a fixture, or B2S_NONE (reported).
     uint32_t scene_fixture(b2Fixture& fixture, uint32_t index) {
         uint32_t shape = scene_shape(fixture, index);
-        Label label = namer_->fixture(fixture);
+        Label label = fixture_label(fixture);
         if (shape == B2S_NONE) {
             report(B2S_CODE_SKIPPED_DEPENDENT, "fixture", index, label.name,
                    "its shape was not written; not written");
@@ -463,7 +568,7 @@ private:
                 created.push_back(FixtureMass{fixture->GetDensity(), rebuilt_mass(*fixture)});
             }
         }
-        Label label = namer_->body(body);
+        Label label = body_label(body);
         b2s_body record;
         b2s_body_default(static_cast<b2s_body_kind>(body.GetType()), &record);
         record.name = name_of(label.name);
@@ -603,8 +708,98 @@ private:
 
     // ---- joints
 
+    /// A joint to write: one of the world (`created`, its place among them in creation
+    /// order) or, given the level, scene joint `record`, which build_world skipped.
+    struct PlacedJoint {
+        uint64_t place;
+        b2Joint* joint;
+        uint32_t created;
+        uint32_t record;
+    };
+
+    /// Where scene joint `r` is written: at its index, but a gear right after the later of
+    /// the joints it couples (the builder takes a gear after them).
+    uint64_t record_place(uint32_t r) const {
+        const b2s_joint& joint = level_->joints[r];
+        uint32_t last = r;
+        if (joint.kind == B2S_JOINT_KIND_GEAR) {
+            for (uint32_t coupled : {joint.joint_a, joint.joint_b}) {
+                last = coupled != B2S_NONE && coupled < level_->joint_count
+                           ? std::max(last, coupled)
+                           : last;
+            }
+        }
+        return 2u * static_cast<uint64_t>(last) + (last > r ? 1u : 0u);
+    }
+
+    /// The joints in the order they are written: creation order, or given the level the
+    /// scene's, with the joints build_world skipped in their places and the host's after.
+    std::vector<PlacedJoint> joints_in_order() const {
+        std::vector<b2Joint*> created = creation_order(world_.GetJointList());
+        uint64_t host = has_level() ? 2u * static_cast<uint64_t>(level_->joint_count) : 0u;
+        std::vector<PlacedJoint> placed;
+        for (uint32_t i = 0; i < created.size(); ++i) {
+            uint32_t r = level_index(level_joints_, created[i]);
+            placed.push_back({r != B2S_NONE ? record_place(r) : host + i, created[i], i, r});
+        }
+        if (has_level() && built_->joints.size() == level_->joint_count) {
+            for (uint32_t r = 0; r < level_->joint_count; ++r) {
+                if (built_->joints[r] == nullptr) {
+                    placed.push_back({record_place(r), nullptr, 0, r});
+                }
+            }
+        }
+        std::stable_sort(placed.begin(), placed.end(),
+                         [](const PlacedJoint& a, const PlacedJoint& b) {
+                             return a.place < b.place;
+                         });
+        return placed;
+    }
+
+    /// The index written for scene body `index`, or B2S_NONE.
+    uint32_t written_body(uint32_t index) const {
+        if (index >= built_->bodies.size()) {
+            return B2S_NONE;
+        }
+        auto found = bodies_.find(built_->bodies[index]);
+        return found != bodies_.end() ? found->second : B2S_NONE;
+    }
+
+    /// Scene joint `r`, which build_world skipped (Box2D 2.4 cannot hold it), written as the
+    /// file has it between the written bodies, so that the joints keep their indices;
+    /// reported and not written when it names a body or joint not written before it.
+    void write_skipped(uint32_t r) {
+        b2s_joint record = level_->joints[r];
+        Label label = level_label(&record);
+        record.body_a = written_body(record.body_a);
+        record.body_b = written_body(record.body_b);
+        bool resolved = record.body_a != B2S_NONE && record.body_b != B2S_NONE &&
+                        record.kind != B2S_JOINT_KIND_UNSUPPORTED;
+        for (uint32_t* coupled : {&record.joint_a, &record.joint_b}) {
+            if (*coupled != B2S_NONE) {
+                *coupled = *coupled < level_written_.size() ? level_written_[*coupled] : B2S_NONE;
+                resolved = resolved && *coupled != B2S_NONE;
+            }
+        }
+        if (!resolved) {
+            report(B2S_CODE_SKIPPED_DEPENDENT, "joint", r, label.name,
+                   "scene joint " + std::to_string(r) +
+                       ", which build_world skipped, names a body or joint not written (or "
+                       "has no Box2Scene form); not written");
+            return;
+        }
+        record.name = name_of(label.name);
+        record.user_data = user_data(label, "joint", r);
+        uint32_t added = B2S_NONE;
+        b2s_error error{};
+        b2s_code code = b2s_builder_add_joint(builder_, &record, &added, &error);
+        if (accepted(code, error, "joint", r, label.name)) {
+            level_written_[r] = added;
+        }
+    }
+
     void capture_joint(b2Joint& joint) {
-        Label label = namer_->joint(joint);
+        Label label = joint_label(joint);
         b2s_joint record;
         if (!joint_record(joint, label.name, record)) {
             return;
@@ -616,6 +811,10 @@ private:
         b2s_code code = b2s_builder_add_joint(builder_, &record, &added, &error);
         if (accepted(code, error, "joint", joint_index_, label.name)) {
             joints_.emplace(&joint, added);
+            uint32_t r = level_index(level_joints_, &joint);
+            if (r != B2S_NONE) {
+                level_written_[r] = added;
+            }
         }
     }
 
@@ -675,15 +874,49 @@ private:
         return to_b2s(axis);
     }
 
-    void spring(StiffnessFunction stiffness_of, b2Joint& joint, float stiffness, float damping,
+    /// Writes the FrequencyHz and DampingRatio of the joint's spring: the level's own where
+    /// they give back, as build_world computes them (`spring_of`), the stiffness and damping
+    /// the engine holds; else the ones inverted from them.
+    template <class Spring>
+    void spring(Spring spring_of, const b2Joint& joint, float stiffness, float damping,
                 const std::string& name, b2s_joint& out) {
-        if (!spring_giving(stiffness_of, joint.GetBodyA(), joint.GetBodyB(), stiffness, damping,
-                           out.frequency_hz, out.damping_ratio)) {
+        const b2s_joint* level = level_joint(joint);
+        if (level != nullptr && level->kind == out.kind) {
+            float k = 0.0f, d = 0.0f;
+            spring_of(level->frequency_hz, level->damping_ratio, k, d);
+            if (same_bits(k, stiffness) && same_bits(d, damping)) {
+                out.frequency_hz = level->frequency_hz;
+                out.damping_ratio = level->damping_ratio;
+                return;
+            }
+        }
+        if (!spring_giving(spring_of, stiffness, damping, out.frequency_hz,
+                           out.damping_ratio)) {
             lossy("joint", joint_index_, name,
                   "no FrequencyHz and DampingRatio give back its stiffness " +
                       decimal(stiffness) + " and damping " + decimal(damping) +
                       " exactly; the nearest were written");
         }
+    }
+
+    /// build_world's spring for a distance joint: b2LinearStiffness.
+    static auto linear_spring(b2Joint& joint) {
+        return [&joint](float hz, float ratio, float& stiffness, float& damping) {
+            b2LinearStiffness(stiffness, damping, hz, ratio, joint.GetBodyA(), joint.GetBodyB());
+        };
+    }
+
+    /// build_world's spring for a wheel or weld joint (WorldBuilder::wheel_spring,
+    /// weld_spring), from the record written so far and the joint's bodies.
+    template <class Builder>
+    static auto record_spring(Builder spring_22, b2Joint& joint, const b2s_joint& out) {
+        return [spring_22, &joint, &out](float hz, float ratio, float& stiffness,
+                                         float& damping) {
+            b2s_joint record = out;
+            record.frequency_hz = hz;
+            record.damping_ratio = ratio;
+            spring_22(record, joint.GetBodyA(), joint.GetBodyB(), stiffness, damping);
+        };
     }
 
     bool revolute_record(b2RevoluteJoint& joint, const std::string& name, b2s_joint& out) {
@@ -737,7 +970,8 @@ private:
             out.max_length = max;
         } else if (spring_form) {
             out.length = joint.GetLength();
-            spring(b2LinearStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+            spring(linear_spring(joint), joint, joint.GetStiffness(), joint.GetDamping(), name,
+                   out);
         } else {
             out.length = min;
         }
@@ -810,7 +1044,8 @@ private:
         out.enable_motor = joint.IsMotorEnabled();
         out.motor_speed = joint.GetMotorSpeed();
         out.max_motor_torque = joint.GetMaxMotorTorque();
-        spring(b2LinearStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+        spring(record_spring(WorldBuilder::wheel_spring, joint, out), joint, joint.GetStiffness(),
+               joint.GetDamping(), name, out);
         if (joint.IsLimitEnabled()) {
             lossy("joint", joint_index_, name,
                   "a wheel with a spring or motor has no limit in the format; its limit [" +
@@ -827,7 +1062,8 @@ private:
         out.local_anchor_a = to_b2s(joint.GetLocalAnchorA());
         out.local_anchor_b = to_b2s(joint.GetLocalAnchorB());
         out.reference_angle = joint.GetReferenceAngle();
-        spring(b2AngularStiffness, joint, joint.GetStiffness(), joint.GetDamping(), name, out);
+        spring(record_spring(WorldBuilder::weld_spring, joint, out), joint, joint.GetStiffness(),
+               joint.GetDamping(), name, out);
         return true;
     }
 
@@ -858,6 +1094,13 @@ private:
     std::vector<Report>& reports_;
     const Namer unnamed_{};
     const Namer* namer_;
+    const Built* built_;                // with level_: what build_world made, or nullptr
+    const b2s_scene_view* level_;       // the scene it was made from
+    // what build_world made, by object: the index of its record (its fixture ID pool entry)
+    std::unordered_map<const b2Body*, uint32_t> level_bodies_;
+    std::unordered_map<const b2Fixture*, uint32_t> level_fixtures_;
+    std::unordered_map<const b2Joint*, uint32_t> level_joints_;
+    std::vector<uint32_t> level_written_; // per scene joint, the index written, or B2S_NONE
     b2s_builder* builder_ = b2s_builder_new();
     std::unordered_map<std::string, uint32_t> shapes_;   // by shape_key
     std::unordered_map<std::string, uint32_t> fixtures_; // by fixture_key
@@ -873,6 +1116,11 @@ private:
 inline b2s_scene* capture_world(b2World& world, std::vector<Report>& reports,
                                 const Namer* namer) {
     return detail::WorldCapture(world, reports, namer).run();
+}
+
+inline b2s_scene* capture_world(b2World& world, const Built& built, const b2s_scene* scene,
+                                std::vector<Report>& reports, const Namer* namer) {
+    return detail::WorldCapture(world, reports, namer, &built, scene).run();
 }
 
 } // namespace box2scene

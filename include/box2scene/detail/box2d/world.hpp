@@ -35,6 +35,9 @@ public:
     Built run();
 
 private:
+    // capture_world inverts the springs as the build computes them (capture.hpp)
+    friend class WorldCapture;
+
     // ---- the build and its reports (world.hpp)
     void report(b2s_code code, const char* object, uint32_t index, b2s_str name,
                 std::string message);

@@ -12,6 +12,7 @@
  *   bodies.c    a body, and its mass
  *   joints.c    the joints
  *   capture.c   a live world back into a scene
+ *   lookup.c    the engine object of a named record, and the record of an engine object
  */
 #ifndef BOX2SCENE_BOX2D3_ADAPTER_C
 #define BOX2SCENE_BOX2D3_ADAPTER_C
@@ -33,5 +34,6 @@
 #include "bodies.c"
 #include "joints.c"
 #include "capture.c"
+#include "lookup.c"
 
 #endif /* BOX2SCENE_BOX2D3_ADAPTER_C */

@@ -12,6 +12,28 @@ typedef struct b2s3_named {
     uint32_t index;
 } b2s3_named;
 
+/* A joint the build made and the scene joint it came from. */
+typedef struct b2s3_level_joint {
+    b2JointId id;
+    uint32_t record;
+} b2s3_level_joint;
+
+/* What a capture of a built world labels its objects from: the scene, what the build made
+ * of it, the scene body of each captured body, and the built joints sorted by id (a joint's
+ * record is then a binary search, as a body's index is). */
+typedef struct b2s3_level {
+    const b2s3_built_t* built;
+    const b2s_scene_view* view;
+    const uint32_t* body_records;
+    b2s3_level_joint* joints;
+    uint32_t joint_count;
+    /* per scene body, its captured index; per scene joint, the index it was written at
+     * (B2S_NONE until then); the next scene joint a capture may write as the file had it */
+    uint32_t* captured_bodies;
+    uint32_t* written_joints;
+    uint32_t next_record;
+} b2s3_level;
+
 typedef struct b2s3_capture {
     b2WorldId world;
     const b2BodyId* bodies;
@@ -24,17 +46,24 @@ typedef struct b2s3_capture {
     b2s_error* error;
     b2s_code failure; /* the first builder error, or B2S_CODE_OK */
     uint32_t shape_count, fixture_count, joint_count;
+    /* bodies whose rotation no float angle gives exactly: how many, the first, and the
+     * largest turn between a rotation and the angle written, said once a capture */
+    uint32_t turned_count, first_turned;
+    double largest_turn;
+    b2s3_level* level;         /* NULL but for a capture of a built world */
+    uint32_t level_body;       /* the scene body of the body being captured */
 } b2s3_capture;
 
-/* Bodies in an order of their own (negative, zero or positive): zero for the same body. */
+/* Ids of one kind in an order of their own (negative, zero or positive): zero for the same
+ * object. */
+#define B2S3_ID_ORDER(a, b)                                                                  \
+    ((a).index1 != (b).index1     ? ((a).index1 < (b).index1 ? -1 : 1)                     \
+     : (a).world0 != (b).world0   ? ((a).world0 < (b).world0 ? -1 : 1)                     \
+                                  : ((a).generation > (b).generation) -                     \
+                                        ((a).generation < (b).generation))
+
 static int b2s3_body_order(b2BodyId a, b2BodyId b) {
-    if (a.index1 != b.index1) {
-        return a.index1 < b.index1 ? -1 : 1;
-    }
-    if (a.world0 != b.world0) {
-        return a.world0 < b.world0 ? -1 : 1;
-    }
-    return (a.generation > b.generation) - (a.generation < b.generation);
+    return B2S3_ID_ORDER(a, b);
 }
 
 static bool b2s3_same_body(b2BodyId a, b2BodyId b) {
@@ -146,6 +175,39 @@ static b2s_vec2 b2s3_origin_velocity(b2Transform transform, b2Vec2 local_center,
     return out;
 }
 
+/* ---- the level's labels */
+
+/* The scene's UserData `index` added to the capture, or B2S_NONE. */
+static uint32_t b2s3_level_user_data(b2s3_capture* c, uint32_t index) {
+    const b2s_scene_view* view = c->level->view;
+    if (index == B2S_NONE || index >= view->user_data_count) {
+        return B2S_NONE;
+    }
+    uint32_t added = B2S_NONE;
+    return b2s3_builder_ok(c, b2s_builder_add_user_data(c->builder, &view->user_data[index],
+                                                        &added, c->error))
+               ? added
+               : B2S_NONE;
+}
+
+/* The scene fixture the shape `from` of the body being captured was built for, or NULL. */
+static const b2s_fixture* b2s3_level_fixture(const b2s3_capture* c, b2ShapeId from) {
+    const b2s_scene_view* view = c->level->view;
+    b2s_range slots = view->bodies[c->level_body].fixtures;
+    for (uint32_t slot = slots.first; slot < slots.first + slots.count; ++slot) {
+        if (b2s3_slot_holds(c->level->built, slot, from) &&
+            view->fixture_ids[slot] < view->fixture_count) {
+            return &view->fixtures[view->fixture_ids[slot]];
+        }
+    }
+    return NULL;
+}
+
+static int b2s3_level_joint_order(const void* a, const void* b) {
+    b2JointId x = ((const b2s3_level_joint*)a)->id, y = ((const b2s3_level_joint*)b)->id;
+    return B2S3_ID_ORDER(x, y);
+}
+
 /* ---- fixtures */
 
 /* The filter in the scene's own widths (its fields' sizes say them): a mask with every
@@ -181,8 +243,13 @@ static b2s_filter b2s3_filter_of(b2s3_capture* c, b2Filter f, uint32_t fixture) 
 static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_vec2* vertices,
                              uint32_t count, b2ShapeId from, float density,
                              uint32_t* out_fixture) {
+    const b2s_fixture* record = c->level != NULL ? b2s3_level_fixture(c, from) : NULL;
+    b2s_shape named = *shape;
+    if (record != NULL && record->shape < c->level->view->shape_count) {
+        named.name = c->level->view->shapes[record->shape].name;
+    }
     uint32_t shape_index = 0;
-    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, shape, vertices, count,
+    if (!b2s3_builder_ok(c, b2s_builder_add_shape(c->builder, &named, vertices, count,
                                                   &shape_index, c->error))) {
         return false;
     }
@@ -196,6 +263,10 @@ static bool b2s3_add_fixture(b2s3_capture* c, const b2s_shape* shape, const b2s_
     fixture.restitution = material.restitution;
     fixture.is_sensor = b2Shape_IsSensor(from);
     fixture.filter = b2s3_filter_of(c, b2Shape_GetFilter(from), c->fixture_count);
+    if (record != NULL) {
+        fixture.name = record->name;
+        fixture.user_data = b2s3_level_user_data(c, record->user_data);
+    }
     if (!b2s3_builder_ok(c, b2s_builder_add_fixture(c->builder, &fixture, out_fixture,
                                                     c->error))) {
         return false;
@@ -351,6 +422,29 @@ static bool b2s3_capture_fixtures(b2s3_capture* c, b2BodyId body, uint32_t** fix
     return ok;
 }
 
+/* Notes that body `index`'s rotation `q` was written as `angle`, the nearest: the solver
+ * turns nearly every body it moves to such a rotation, so one report a capture says it. */
+static void b2s3_note_turned(b2s3_capture* c, uint32_t index, b2Rot q, float angle) {
+    double turn = fabs(atan2((double)q.s * cos((double)angle) - (double)q.c * sin((double)angle),
+                             (double)q.c * cos((double)angle) + (double)q.s * sin((double)angle)));
+    if (c->turned_count == 0) {
+        c->first_turned = index;
+    }
+    c->turned_count += 1;
+    c->largest_turn = turn > c->largest_turn ? turn : c->largest_turn;
+}
+
+static void b2s3_report_turned(b2s3_capture* c) {
+    if (c->turned_count == 0) {
+        return;
+    }
+    B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "world", 0, NULL,
+                "rotations no angle gives exactly, as the solver turns bodies: %u of the "
+                "bodies (the first body %u) were written at the nearest angle, at most %.3g "
+                "rad from the rotation",
+                (unsigned)c->turned_count, (unsigned)c->first_turned, c->largest_turn);
+}
+
 static bool b2s3_same_mass(b2MassData a, b2MassData b) {
     return a.mass == b.mass && a.center.x == b.center.x && a.center.y == b.center.y &&
            a.rotationalInertia == b.rotationalInertia;
@@ -358,6 +452,9 @@ static bool b2s3_same_mass(b2MassData a, b2MassData b) {
 
 static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     b2BodyId id = c->bodies[index];
+    if (c->level != NULL) {
+        c->level_body = c->level->body_records[index];
+    }
     uint32_t* fixtures = NULL;
     uint32_t fixture_count = 0;
     b2MassData computed;
@@ -370,10 +467,7 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     b2s_body_default((uint32_t)type, &body);
     body.position = b2s3_to_b2s(b2s3_body_position(id));
     if (!b2s3_angle_of(b2Body_GetRotation(id), &body.angle)) {
-        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "body", index, b2Body_GetName(id),
-                    "no angle has exactly its rotation's cosine and sine; the nearest, %.9g "
-                    "rad, was written",
-                    (double)body.angle);
+        b2s3_note_turned(c, index, b2Body_GetRotation(id), body.angle);
     }
     body.linear_velocity = b2s3_to_b2s(b2Body_GetLinearVelocity(id));
     if (type == b2_dynamicBody) {
@@ -393,6 +487,11 @@ static bool b2s3_capture_body(b2s3_capture* c, uint32_t index) {
     body.active = b2Body_IsEnabled(id);
     const char* name = b2Body_GetName(id);
     body.name = name != NULL && name[0] != '\0' ? name : NULL;
+    if (c->level != NULL) { /* the level's Name, whole: v3 keeps only its first bytes */
+        const b2s_body* record = &c->level->view->bodies[c->level_body];
+        body.name = record->name;
+        body.user_data = b2s3_level_user_data(c, record->user_data);
+    }
     if (type == b2_dynamicBody) {
         b2MassData actual = b2Body_GetMassData(id);
         if (!b2s3_same_mass(actual, computed)) {
@@ -558,7 +657,104 @@ static bool b2s3_joint_of(b2s3_capture* c, b2JointId id, b2s_joint* joint) {
     return true;
 }
 
-/* Every joint whose two bodies are captured, once, in creation order. */
+/* ---- joints the build skipped, written back as the file had them */
+
+/* Where a joint stands in a capture of a built world: at its scene joint, the host's after
+ * every scene joint, in creation order. */
+static uint64_t b2s3_joint_place(const b2s3_capture* c, b2JointId id) {
+    b2s3_level_joint key = {id, 0};
+    const b2s3_level_joint* found = (const b2s3_level_joint*)bsearch(
+        &key, c->level->joints, c->level->joint_count, sizeof key, b2s3_level_joint_order);
+    return found != NULL ? (uint64_t)found->record
+                         : (uint64_t)c->level->view->joint_count + (uint64_t)(uint32_t)id.index1;
+}
+
+/* The scene joint `j`, which the build skipped (the engine cannot hold it), written as the
+ * file has it between the captured bodies, so that the joints after it keep their indices;
+ * reported and not written when a body or joint it names was not written. */
+static bool b2s3_write_skipped(b2s3_capture* c, uint32_t j) {
+    const b2s3_level* level = c->level;
+    b2s_joint joint = level->view->joints[j];
+    if (joint.kind == B2S_JOINT_KIND_UNSUPPORTED) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, joint.name,
+                    "scene joint %u, a Farseer-only joint, has no Box2Scene form to write; not "
+                    "written",
+                    (unsigned)j);
+        return true;
+    }
+    uint32_t body_count = level->view->body_count, joint_count = level->view->joint_count;
+    joint.body_a = joint.body_a < body_count ? level->captured_bodies[joint.body_a] : B2S_NONE;
+    joint.body_b = joint.body_b < body_count ? level->captured_bodies[joint.body_b] : B2S_NONE;
+    uint32_t refers[2] = {joint.joint_a, joint.joint_b};
+    uint32_t* written[2] = {&joint.joint_a, &joint.joint_b};
+    bool resolved = joint.body_a != B2S_NONE && joint.body_b != B2S_NONE;
+    for (int k = 0; k < 2; ++k) {
+        if (refers[k] != B2S_NONE) {
+            *written[k] = refers[k] < joint_count ? level->written_joints[refers[k]] : B2S_NONE;
+            resolved = resolved && *written[k] != B2S_NONE;
+        }
+    }
+    if (!resolved) {
+        B2S3_REPORT(c, B2S_CODE_LOSSY_CAPTURE, "joint", c->joint_count, joint.name,
+                    "scene joint %u, which " B2S3_ENGINE " cannot hold, joins a body or joint "
+                    "not written before it (a gear is written after its joints); not written",
+                    (unsigned)j);
+        return true;
+    }
+    joint.user_data = b2s3_level_user_data(c, level->view->joints[j].user_data);
+    uint32_t added = 0;
+    if (!b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error))) {
+        return false;
+    }
+    level->written_joints[j] = c->joint_count++;
+    return true;
+}
+
+/* Writes the joints the build skipped among the scene joints before `limit`. */
+static bool b2s3_write_skipped_before(b2s3_capture* c, uint32_t limit) {
+    b2s3_level* level = c->level;
+    bool ok = true;
+    for (; level->next_record < limit && ok; ++level->next_record) {
+        if (B2_IS_NULL(level->built->joints[level->next_record])) {
+            ok = b2s3_write_skipped(c, level->next_record);
+        }
+    }
+    return ok;
+}
+
+/* A joint and where it stands in a capture of a built world. */
+typedef struct b2s3_placed_joint {
+    uint64_t place;
+    b2JointId id;
+} b2s3_placed_joint;
+
+static int b2s3_by_place(const void* a, const void* b) {
+    uint64_t x = ((const b2s3_placed_joint*)a)->place, y = ((const b2s3_placed_joint*)b)->place;
+    return (x > y) - (x < y);
+}
+
+/* `joints` in the order a capture of a built world writes them (b2s3_joint_place). */
+static bool b2s3_order_joints(b2s3_capture* c, b2JointId* joints, size_t count) {
+    b2s3_placed_joint* placed =
+        (b2s3_placed_joint*)malloc((count > 0 ? count : 1) * sizeof(b2s3_placed_joint));
+    if (placed == NULL) {
+        c->list.out_of_memory = true;
+        return false;
+    }
+    for (size_t i = 0; i < count; ++i) {
+        placed[i].place = b2s3_joint_place(c, joints[i]);
+        placed[i].id = joints[i];
+    }
+    qsort(placed, count, sizeof(b2s3_placed_joint), b2s3_by_place);
+    for (size_t i = 0; i < count; ++i) {
+        joints[i] = placed[i].id;
+    }
+    free(placed);
+    return true;
+}
+
+/* Every joint whose two bodies are captured, once, in creation order (in a capture of a
+ * built world, in the scene's order, with the joints the build skipped). */
 static bool b2s3_capture_joints(b2s3_capture* c) {
     size_t total = 0;
     for (uint32_t i = 0; i < c->body_count; ++i) {
@@ -585,9 +781,20 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         count = kept;
     }
     qsort(joints, count, sizeof(b2JointId), b2s3_joint_by_index);
-    bool ok = true;
+    bool ok = c->level == NULL || b2s3_order_joints(c, joints, count);
     for (size_t i = 0; i < count && ok; ++i) {
         b2JointId id = joints[i];
+        uint32_t record = B2S_NONE;
+        if (c->level != NULL) {
+            uint64_t place = b2s3_joint_place(c, id);
+            uint32_t scene_joints = c->level->view->joint_count;
+            record = place < scene_joints ? (uint32_t)place : B2S_NONE;
+            ok = b2s3_write_skipped_before(c, record != B2S_NONE ? record : scene_joints);
+            c->level->next_record += record != B2S_NONE ? 1u : 0u;
+            if (!ok) {
+                break;
+            }
+        }
         uint32_t a = b2s3_captured_index(c, b2Joint_GetBodyA(id));
         uint32_t bb = b2s3_captured_index(c, b2Joint_GetBodyB(id));
         if (a == B2S_NONE || bb == B2S_NONE) {
@@ -603,9 +810,20 @@ static bool b2s3_capture_joints(b2s3_capture* c) {
         joint.body_a = a;
         joint.body_b = bb;
         joint.collide_connected = b2Joint_GetCollideConnected(id);
+        if (record != B2S_NONE) {
+            const b2s_joint* level_joint = &c->level->view->joints[record];
+            joint.name = level_joint->name;
+            joint.user_data = b2s3_level_user_data(c, level_joint->user_data);
+        }
         uint32_t added = 0;
         ok = b2s3_builder_ok(c, b2s_builder_add_joint(c->builder, &joint, &added, c->error));
+        if (ok && record != B2S_NONE) {
+            c->level->written_joints[record] = c->joint_count;
+        }
         c->joint_count += ok ? 1 : 0;
+    }
+    if (ok && c->level != NULL) {
+        ok = b2s3_write_skipped_before(c, c->level->view->joint_count);
     }
     free(joints);
     return ok;
@@ -626,14 +844,10 @@ static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* 
     return code;
 }
 
-b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
-                                 b2s_scene** out_scene, b2s3_reports_t* reports,
-                                 b2s_error* error) {
-    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
-        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
-                                  B2S3_NAME_OF(B2S3_API(capture_world)) " needs out_scene, "
-                                  "reports and, for a body count above 0, bodies");
-    }
+/* The capture of `bodies`, labelled from `level` when it is not NULL. */
+static b2s_code b2s3_capture_run(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                 const b2s3_level* level, b2s_scene** out_scene,
+                                 b2s3_reports_t* reports, b2s_error* error) {
     *out_scene = NULL;
     reports->items = NULL;
     reports->count = 0;
@@ -687,11 +901,13 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
     c.builder = b2s_builder_new();
     c.list.reports = reports;
     c.error = error;
+    c.level = level;
     b2s_vec2 scene_gravity = b2s3_to_b2s(b2World_GetGravity(world));
     bool ok = b2s3_builder_ok(&c, b2s_builder_set_gravity(c.builder, &scene_gravity, error));
     for (uint32_t i = 0; i < body_count && ok; ++i) {
         ok = b2s3_capture_body(&c, i);
     }
+    b2s3_report_turned(&c);
     ok = ok && b2s3_capture_joints(&c);
     free(named);
     if (c.list.out_of_memory) {
@@ -704,4 +920,99 @@ b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32
         return c.failure != B2S_CODE_OK ? c.failure : B2S_CODE_INTERNAL;
     }
     return b2s_builder_finish(c.builder, out_scene, error);
+}
+
+b2s_code B2S3_API(capture_world)(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
+                                 b2s_scene** out_scene, b2s3_reports_t* reports,
+                                 b2s_error* error) {
+    if (out_scene == NULL || reports == NULL || (bodies == NULL && body_count > 0)) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  B2S3_NAME_OF(B2S3_API(capture_world)) " needs out_scene, "
+                                  "reports and, for a body count above 0, bodies");
+    }
+    return b2s3_capture_run(world, bodies, body_count, NULL, out_scene, reports, error);
+}
+
+/* The bodies the build made that are still live, in the scene's order, with their scene
+ * bodies, and the joints it made sorted by id; false when memory runs out. */
+static bool b2s3_level_of(const b2s3_built_t* built, b2s3_level* level, b2BodyId* bodies,
+                          uint32_t* records, uint32_t* count) {
+    *count = 0;
+    for (uint32_t i = 0; i < built->body_count; ++i) {
+        if (B2_IS_NON_NULL(built->bodies[i]) && b2Body_IsValid(built->bodies[i])) {
+            bodies[*count] = built->bodies[i];
+            records[(*count)++] = i;
+        }
+    }
+    level->body_records = records;
+    size_t bodies_room = (size_t)(built->body_count > 0 ? built->body_count : 1);
+    level->captured_bodies = (uint32_t*)malloc(bodies_room * sizeof(uint32_t));
+    level->written_joints = (uint32_t*)malloc(
+        (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(uint32_t));
+    if (level->captured_bodies == NULL || level->written_joints == NULL) {
+        return false;
+    }
+    for (uint32_t i = 0; i < built->body_count; ++i) {
+        level->captured_bodies[i] = B2S_NONE;
+    }
+    for (uint32_t k = 0; k < *count; ++k) {
+        level->captured_bodies[records[k]] = k;
+    }
+    for (uint32_t j = 0; j < built->joint_count; ++j) {
+        level->written_joints[j] = B2S_NONE;
+    }
+    level->joints = (b2s3_level_joint*)malloc(
+        (size_t)(built->joint_count > 0 ? built->joint_count : 1) * sizeof(b2s3_level_joint));
+    if (level->joints == NULL) {
+        return false;
+    }
+    level->joint_count = 0;
+    for (uint32_t j = 0; j < built->joint_count; ++j) {
+        if (B2_IS_NON_NULL(built->joints[j])) {
+            level->joints[level->joint_count].id = built->joints[j];
+            level->joints[level->joint_count++].record = j;
+        }
+    }
+    qsort(level->joints, level->joint_count, sizeof(b2s3_level_joint), b2s3_level_joint_order);
+    return true;
+}
+
+b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
+                                 const b2s_scene* scene, b2s_scene** out_scene,
+                                 b2s3_reports_t* reports, b2s_error* error) {
+    const b2s_scene_view* view = scene != NULL ? b2s_scene_get_view(scene) : NULL;
+    if (built == NULL || view == NULL || out_scene == NULL || reports == NULL) {
+        return b2s3_capture_error(error, B2S_CODE_NULL_ARGUMENT,
+                                  B2S3_NAME_OF(B2S3_API(capture_built)) " needs built, scene, "
+                                  "out_scene and reports");
+    }
+    if (built->body_count != view->body_count || built->fixture_count != view->fixture_id_count ||
+        built->joint_count != view->joint_count) {
+        *out_scene = NULL;
+        reports->items = NULL;
+        reports->count = 0;
+        return b2s3_capture_error(error, B2S_CODE_INVALID_ARGUMENT,
+                                  "built is not what building this scene gave");
+    }
+    size_t room = (size_t)(built->body_count > 0 ? built->body_count : 1);
+    b2BodyId* bodies = (b2BodyId*)malloc(room * sizeof(b2BodyId));
+    uint32_t* records = (uint32_t*)malloc(room * sizeof(uint32_t));
+    b2s3_level level = {built, view, NULL, NULL, 0, NULL, NULL, 0};
+    uint32_t count = 0;
+    b2s_code code;
+    if (bodies == NULL || records == NULL ||
+        !b2s3_level_of(built, &level, bodies, records, &count)) {
+        *out_scene = NULL;
+        reports->items = NULL;
+        reports->count = 0;
+        code = b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
+    } else {
+        code = b2s3_capture_run(world, bodies, count, &level, out_scene, reports, error);
+    }
+    free(level.joints);
+    free(level.captured_bodies);
+    free(level.written_joints);
+    free(records);
+    free(bodies);
+    return code;
 }

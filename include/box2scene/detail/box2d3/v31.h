@@ -375,4 +375,28 @@ static const char* b2s3_motor_of(b2JointId id, b2s_joint* joint) {
     return NULL;
 }
 
+/* ---- lookups (lookup.c): which shapes a fixture slot holds */
+
+/* The shape of fixture slot `slot`, or its chain's first segment. */
+static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot) {
+    b2ShapeId shape = built->shapes[slot];
+    b2ChainId chain = built->chains[slot];
+    if (B2_IS_NULL(shape) && B2_IS_NON_NULL(chain) && b2Chain_IsValid(chain)) {
+        b2Chain_GetSegments(chain, &shape, 1);
+    }
+    return shape;
+}
+
+/* Whether `shape`, a live shape, is fixture slot `slot`'s or one of its chain's segments. */
+static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape) {
+    if (B2_ID_EQUALS(built->shapes[slot], shape)) {
+        return true;
+    }
+    if (B2_IS_NULL(built->chains[slot]) || b2Shape_GetType(shape) != b2_chainSegmentShape) {
+        return false;
+    }
+    b2ChainId parent = b2Shape_GetParentChain(shape);
+    return B2_ID_EQUALS(parent, built->chains[slot]);
+}
+
 #endif /* BOX2SCENE_BOX2D3_V31_H */

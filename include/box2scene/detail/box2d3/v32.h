@@ -509,4 +509,25 @@ static const char* b2s3_motor_of(b2JointId id, b2s_joint* joint) {
                    "CorrectionFactor from its linear spring's frequency";
 }
 
+/* ---- lookups (lookup.c): which shapes a fixture slot holds */
+
+/* The shape of fixture slot `slot`: a chain's first segment is there too. */
+static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot) {
+    return built->shapes[slot];
+}
+
+/* Whether `shape` is fixture slot `slot`'s or one of its chain's segments. */
+static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape) {
+    if (B2_ID_EQUALS(built->shapes[slot], shape)) {
+        return true;
+    }
+    b2s_range segments = built->segments[slot];
+    for (uint32_t i = 0; i < segments.count; ++i) {
+        if (B2_ID_EQUALS(built->segment_pool[segments.first + i], shape)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 #endif /* BOX2SCENE_BOX2D3_V32_H */
