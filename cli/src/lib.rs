@@ -218,13 +218,22 @@ fn check(run: &Run, io: &mut Io<'_>) -> Status {
                 Format::Json => report.json(&loaded.name),
             })
             .collect();
-        if run.format == Format::Text {
-            text.push_str(&summary(&loaded.name, &reports, *stopped_at));
+        match run.format {
+            Format::Text => text.push_str(&summary(&loaded.name, &reports, *stopped_at)),
+            Format::Json => {
+                if let Some(at) = stopped_at {
+                    text.push_str(&Report::stopped(*at, STOPPED).json(&loaded.name));
+                }
+            }
         }
         worst = worst.max(status).max(io.emit(&text));
     }
     worst
 }
+
+/// What a check says where it stopped after a hundred errors.
+const STOPPED: &str =
+    "the check stopped at this error, after a hundred others: what follows it is not checked";
 
 /// `FILE: N errors, M warnings` (or `no errors or warnings`), the last line of a file's
 /// text check, as compilers end theirs; before it, when the check stopped short after a
@@ -241,10 +250,7 @@ fn summary(file: &str, reports: &[Report], stopped_at: Option<Position>) -> Stri
     };
     let file = terminal_text(file);
     let stopped = stopped_at.map_or(String::new(), |Position { line, column, .. }| {
-        format!(
-            "{file}:{line}:{column}: note: the check stopped at this error, after a hundred \
-             others: what follows it is not checked\n"
-        )
+        format!("{file}:{line}:{column}: note: {STOPPED}\n")
     });
     format!("{stopped}{file}: {counts}\n")
 }

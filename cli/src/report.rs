@@ -46,6 +46,17 @@ impl Report {
         }
     }
 
+    /// The note that a check stopped at `position`, after a hundred errors, as JSON gives it
+    /// beside the findings (severity `note`, code `check-stopped`).
+    pub fn stopped(position: Position, message: &str) -> Report {
+        Report {
+            severity: "note".to_owned(),
+            code: "check-stopped".to_owned(),
+            message: message.to_owned(),
+            position,
+        }
+    }
+
     pub fn of_error(error: &Error) -> Report {
         Report::of(Severity::Error, error)
     }

@@ -365,6 +365,34 @@ fn check_says_where_it_stopped_after_a_hundred_errors() {
     assert!(!run.stdout.contains(": note: "), "{}", run.stdout);
 }
 
+/// In JSON too, a check that stopped after a hundred errors says so, and where: one object of
+/// severity `note` after the findings, so that a pipeline reading JSON does not take 101
+/// errors for the file's count.
+#[test]
+fn check_json_says_where_it_stopped_after_a_hundred_errors() {
+    let xml = with_bad_densities(300);
+    let sandbox = Sandbox::new("error-limit-json");
+    let run = sandbox.write("level.xml", &xml).run(&["check", "--format=json", "level.xml"]);
+    assert_eq!(run.status, 1, "{}", run.stderr);
+    let reports: Vec<Value> =
+        lines(&run.stdout).iter().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let [findings @ .., note] = &reports[..] else { panic!("{}", run.stdout) };
+    assert_eq!(findings.len(), 101);
+    assert!(findings.iter().all(|r| r["code"] == "invalid-float"), "{}", run.stdout);
+    let (line, column) = locate(&xml, "bad-101<");
+    let message =
+        "the check stopped at this error, after a hundred others: what follows it is not checked";
+    assert_eq!(
+        (&note["severity"], &note["code"], &note["line"], &note["column"], &note["message"]),
+        (&json!("note"), &json!("check-stopped"), &json!(line), &json!(column), &json!(message))
+    );
+
+    let xml = with_bad_densities(100);
+    let run = sandbox.write("level.xml", &xml).run(&["check", "--format=json", "level.xml"]);
+    assert!(!run.stdout.contains("\"note\""), "{}", run.stdout);
+    assert_eq!(lines(&run.stdout).len(), 100);
+}
+
 #[test]
 fn a_long_line_is_shown_around_the_column() {
     let (before, after) = ("x".repeat(300), "z".repeat(300));
