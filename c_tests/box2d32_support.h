@@ -10,6 +10,8 @@
 #define V3_ADAPTER(name) b2s_box2d32_##name
 /* The minor version of the Box2D v3 the adapter serves. */
 #define V3_MINOR 2
+/* The engine whose working range the adapter checks. */
+#define V3_ENGINE B2S_ENGINE_BOX2D32
 
 static inline b2Vec2 v3_position(b2BodyId body) {
     return b2ToVec2(b2Body_GetPosition(body));
@@ -47,6 +49,14 @@ static inline void v3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
 }
 
+static inline bool v3_rotation_fixed(b2BodyId body) {
+    return b2Body_GetMotionLocks(body).angularZ;
+}
+
+static inline b2MassData v3_shape_mass_data(b2ShapeId shape) {
+    return b2Shape_ComputeMassData(shape);
+}
+
 static inline b2Vec2 v3_local_center(b2BodyId body) {
     return b2Body_GetLocalCenter(body);
 }
@@ -57,6 +67,11 @@ static inline b2Vec2 v3_local_anchor_a(b2JointId joint) {
 
 static inline b2Vec2 v3_local_anchor_b(b2JointId joint) {
     return b2Joint_GetLocalFrameB(joint).p;
+}
+
+/* The axis of a prismatic or wheel joint in body A's frame: frame A's x axis. */
+static inline b2Vec2 v3_local_axis_a(b2JointId joint) {
+    return b2Rot_GetXAxis(b2Joint_GetLocalFrameA(joint).q);
 }
 
 /* How many segments the chain of fixture slot `slot` has (0 when it is not a chain), and

@@ -132,13 +132,14 @@ fn readme_recommends_strict_check_for_pipelines() {
 }
 
 /// The tests a mapping table's last cell names, with the files of `c_tests/` they are in:
-/// each file named (`physics_test.cpp`) holds the test names that follow it, up to the next
-/// file; files named one after the other share the names that follow them.
+/// each file named (`physics_test.cpp`, or one version's program of a source compiled per v3
+/// version, `box2d32_mapping_test`) holds the test names that follow it, up to the next file;
+/// files named one after the other share the names that follow them.
 fn held_by(cell: &str) -> Vec<(Vec<String>, String)> {
     let mut held = Vec::new();
     let (mut files, mut naming) = (Vec::new(), false);
     for token in cell.split('`').skip(1).step_by(2) {
-        if token.ends_with(".c") || token.ends_with(".cpp") {
+        if token.ends_with(".c") || token.ends_with(".cpp") || token.ends_with("_test") {
             if naming {
                 files.clear();
                 naming = false;
@@ -152,10 +153,81 @@ fn held_by(cell: &str) -> Vec<(Vec<String>, String)> {
     held
 }
 
+/// The programs a file named in a cell stands for: a `v3_*.c` source, compiled once per v3
+/// version, its two programs `box2d3_*` and `box2d32_*`; any other name itself.
+fn programs(file: &str) -> Vec<String> {
+    match file.strip_prefix("v3_").and_then(|rest| rest.strip_suffix(".c")) {
+        Some(rest) => vec![format!("box2d3_{rest}"), format!("box2d32_{rest}")],
+        None => vec![file.to_string()],
+    }
+}
+
+/// The lines of `source` that its build for v3 minor version `minor` compiles: every line but
+/// those of an `#if V3_MINOR ...` branch that excludes that version (other conditionals are
+/// taken as compiled, both branches).
+fn compiled_for(source: &str, minor: u32) -> Vec<&str> {
+    // One entry per open conditional: Some(whether its branch is compiled) for V3_MINOR.
+    let mut open: Vec<Option<bool>> = Vec::new();
+    let mut lines = Vec::new();
+    for line in source.lines() {
+        let directive: String = line.split_whitespace().collect::<Vec<_>>().join(" ");
+        if let Some(condition) = directive.strip_prefix("#if ") {
+            open.push(condition.strip_prefix("V3_MINOR ").map(|test| {
+                let (op, version) = test.split_once(' ').unwrap_or_else(|| panic!("{line}"));
+                let version: u32 = version.parse().unwrap_or_else(|_| panic!("{line}"));
+                match op {
+                    "==" => minor == version,
+                    "!=" => minor != version,
+                    ">=" => minor >= version,
+                    "<=" => minor <= version,
+                    ">" => minor > version,
+                    "<" => minor < version,
+                    _ => panic!("{line}: an unknown test of V3_MINOR"),
+                }
+            }));
+        } else if directive.starts_with("#ifdef") || directive.starts_with("#ifndef") {
+            open.push(None);
+        } else if directive.starts_with("#elif") {
+            assert!(open.last() == Some(&None), "{line}: #elif in a V3_MINOR block");
+        } else if directive == "#else" || directive.starts_with("#else ") {
+            if let Some(Some(kept)) = open.last_mut() {
+                *kept = !*kept;
+            }
+        } else if directive.starts_with("#endif") {
+            open.pop().unwrap_or_else(|| panic!("{line}: #endif without #if"));
+        } else if open.iter().all(|kept| kept.unwrap_or(true)) {
+            lines.push(line);
+        }
+    }
+    lines
+}
+
+/// Whether the file a cell names runs `test`: a source of `c_tests/` calls `RUN_TEST(test)`,
+/// in both versions' builds when it is a `v3_*.c` source; one version's program of such a
+/// source (`box2d32_mapping_test`, v3.2) calls it in that version's build.
+fn runs(file: &str, test: &str) -> bool {
+    let call = format!("RUN_TEST({test})");
+    let calls = |source: &str, minor| compiled_for(source, minor).iter().any(|l| l.contains(&call));
+    let program = [("box2d32_", 2), ("box2d3_", 1)].into_iter().find_map(|(prefix, minor)| {
+        let rest = file.strip_prefix(prefix)?;
+        (!file.contains('.')).then(|| (format!("v3_{rest}.c"), minor))
+    });
+    if let Some((source, minor)) = program {
+        return calls(&read(&format!("c_tests/{source}")), minor);
+    }
+    let source = read(&format!("c_tests/{file}"));
+    if programs(file).len() == 2 {
+        [1, 2].into_iter().all(|minor| calls(&source, minor))
+    } else {
+        source.contains(&call)
+    }
+}
+
 /// Every row of the tables of how a scene maps onto Box2D (docs/box2d.md's three versions
 /// side by side, docs/format.md's 2.4.1 and v3.1) names, in its last column, the tests that
 /// hold it in each engine the table covers (Box2D 2.4's C++ tests, v3.1's `box2d3_*`, v3.2's
-/// `box2d32_*`), each a test its file runs.
+/// `box2d32_*`, both of them a `v3_*.c` source), each a test its file runs (in each version it
+/// is compiled for).
 #[test]
 fn docs_name_the_tests_that_hold_each_mapping_row() {
     let tables: [(&str, &str, &[&str], usize); 3] = [
@@ -174,18 +246,18 @@ fn docs_name_the_tests_that_hold_each_mapping_row() {
             let (scene, last) = (cells[1].trim(), cells[cells.len() - 2]);
             let held = held_by(last);
             for engine in engines {
+                let of_engine = |file: &String| programs(file).iter().any(|p| p.contains(engine));
                 assert!(
-                    held.iter().any(|(files, _)| files.iter().any(|f| f.contains(engine))),
+                    held.iter().any(|(files, _)| files.iter().any(of_engine)),
                     "{page}: the row {scene} names no test of {engine}"
                 );
             }
             for (files, test) in &held {
                 assert!(!files.is_empty(), "{page}: the row {scene} names {test} before a file");
                 for file in files {
-                    let source = read(&format!("c_tests/{file}"));
                     assert!(
-                        source.contains(&format!("RUN_TEST({test})")),
-                        "{page}: the row {scene} names {test}, which c_tests/{file} does not run"
+                        runs(file, test),
+                        "{page}: the row {scene} names {test}, which {file} does not run"
                     );
                 }
             }
@@ -195,7 +267,7 @@ fn docs_name_the_tests_that_hold_each_mapping_row() {
 
 #[test]
 fn a_cell_names_tests_by_the_files_before_them() {
-    let cell = " `a.cpp` `x`; `b.c`, `c.c` `y`, `z`; `c.c` `w` ";
+    let cell = " `a.cpp` `x`; `b.c`, `c.c` `y`, `z`; `c.c` `w`; `box2d32_d_test` `v` ";
     let pair = |files: &[&str], test: &str| {
         (files.iter().map(|f| f.to_string()).collect::<Vec<_>>(), test.to_string())
     };
@@ -205,7 +277,16 @@ fn a_cell_names_tests_by_the_files_before_them() {
             pair(&["a.cpp"], "x"),
             pair(&["b.c", "c.c"], "y"),
             pair(&["b.c", "c.c"], "z"),
-            pair(&["c.c"], "w")
+            pair(&["c.c"], "w"),
+            pair(&["box2d32_d_test"], "v")
         ]
     );
+}
+
+#[test]
+fn a_v3_source_compiles_each_line_for_the_versions_its_blocks_name() {
+    let source = "a\n#if V3_MINOR == 1\nb\n#else\nc\n#endif\n#ifndef X\nd\n#else\nf\n#endif\n\
+                  #if V3_MINOR >= 2\ne\n#endif\n";
+    assert_eq!(compiled_for(source, 1), ["a", "b", "d", "f"]);
+    assert_eq!(compiled_for(source, 2), ["a", "c", "d", "f", "e"]);
 }
