@@ -1050,6 +1050,13 @@ class _Capture:
             raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
         self.joint_records = built._joints if built is not None else {}
         self.chain_records = built._chains if built is not None else {}
+        # The scene name of each fixture the build made, by whether it is a chain and its id
+        # (shapes and chains number apart).
+        self.fixture_names: Dict[Tuple[bool, int], Optional[str]] = {}
+        if built is not None:
+            for made, index in zip(built.fixtures, built._scene.fixture_ids):
+                if made is not None:
+                    self.fixture_names[(isinstance(made, b2.Chain), int(made.id))] = built._scene.fixtures[index].name
         made = [(b, r.name) for b, r in zip(built.bodies, built._scene.bodies) if b is not None and b.is_valid] if built is not None else []
         given = list(zip(bodies, names if names is not None else [b.name or None for b in bodies]))
         self.bodies = [b for b, _ in made + given]
@@ -1090,7 +1097,7 @@ class _Capture:
         group = min(max(f.group_index, group_low), group_high)
         return f.category_bits & low, f.mask_bits & low, group
 
-    def add_fixture(self, shape: Shape, source, density: float, is_sensor: bool) -> int:
+    def add_fixture(self, shape: Shape, source, density: float, is_sensor: bool, name: Optional[str]) -> int:
         shape_index = self.builder.add_shape(shape)
         self.shape_count += 1
         category, mask, group = self.filter_of(source.filter)
@@ -1103,6 +1110,7 @@ class _Capture:
             category_bits=category,
             mask_bits=mask,
             group_index=group,
+            name=name,
         )
         index = self.builder.add_fixture(fixture)
         self.fixture_count += 1
@@ -1131,7 +1139,7 @@ class _Capture:
             shape = Shape.new("chain", vertices=tuple(points), is_loop=True)
         else:
             shape = Shape.new("chain", vertices=tuple(points[1:-1]), prev_vertex=points[0], next_vertex=points[-1])
-        return self.add_fixture(shape, first, 0.0, False)
+        return self.add_fixture(shape, first, 0.0, False, self.fixture_names.get((True, int(chain.id))))
 
     def capture_shape(self, s) -> Optional[int]:
         kind = s.type
@@ -1150,7 +1158,7 @@ class _Capture:
         else:
             self.report("lossy-capture", "shape", self.shape_count, None, "a capsule has no Box2Scene form; not written")
             return None
-        return self.add_fixture(shape, s, float(s.density), bool(s.is_sensor))
+        return self.add_fixture(shape, s, float(s.density), bool(s.is_sensor), self.fixture_names.get((False, int(s.id))))
 
     def capture_fixtures(self, body: b2.Body):
         """The fixtures of one body in the order its shapes were created (a chain where its

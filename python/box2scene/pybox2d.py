@@ -60,8 +60,8 @@ class Built:
     joints: List[Optional[B.b2Joint]]
     reports: List[Report] = field(default_factory=list)
     # What capture needs: the scene (what 2.3's bindings cannot read back, and the names),
-    # and the userData the build gives its joints, which tells them from joints the host
-    # makes later at their freed addresses (Box2D reuses them). One object a build, since
+    # and the userData the build gives its fixtures and joints, which tells them from ones
+    # the host makes later at their freed addresses (Box2D reuses them). One object a build, since
     # pybox2d never releases a joint's userData when its world goes.
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _mark: object = field(default_factory=object, repr=False, compare=False)
@@ -227,6 +227,7 @@ class _Build:
                 categoryBits=f.category_bits & low,
                 maskBits=f.mask_bits & low,
                 groupIndex=f.group_index,
+                userData=self.built._mark,
             )
         )
 
@@ -659,6 +660,8 @@ class _Capture:
         # The scene's joint for each joint the build made that still lives, by its key.
         self.built_joints: Dict[int, Joint] = {}
         self.scene_joints: Dict[int, int] = {}
+        self.fixture_names: Dict[int, Optional[str]] = {}
+        self.mark = built._mark if built is not None else None
         self.builder = Builder()
         self.reports: List[Report] = []
         if built is not None:
@@ -682,6 +685,9 @@ class _Capture:
             if body is not None and int(body.this) in live:
                 self.bodies.append(body)
                 self.names.append(record.name)
+        for fixture, index in zip(built.fixtures, self.scene.fixture_ids):
+            if fixture is not None:
+                self.fixture_names[int(fixture.this)] = self.scene.fixtures[index].name
         live_joints = {_key(j): j for j in self.world.joints}
         for index, joint in enumerate(built.joints):
             if joint is None or _key(joint) not in live_joints:
@@ -729,7 +735,7 @@ class _Capture:
     def capture_body(self, index: int) -> None:
         body = self.bodies[index]
         fixtures = []
-        for f in reversed(list(body.fixtures)):  # 2.3 lists a body's fixtures newest first
+        for f in body.fixtures:  # pybox2d lists them in the order they were created
             shape = self.builder.add_shape(self.capture_shape(f.shape))
             data = f.filterData
             fixtures.append(
@@ -743,6 +749,7 @@ class _Capture:
                         category_bits=int(data.categoryBits),
                         mask_bits=int(data.maskBits),
                         group_index=int(data.groupIndex),
+                        name=self.fixture_names.get(int(f.this)) if f.userData is self.mark else None,
                     )
                 )
             )

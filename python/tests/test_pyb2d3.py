@@ -428,3 +428,17 @@ def test_a_capture_writes_a_destroyed_built_joint_no_more():
     saved, reports = b2s3.capture_world(world, built, joints=[mine])
     assert [(j.name, j.max_motor_torque) for j in saved.joints] == [(None, 400.0)]
     assert codes(reports) == [("lossy-capture", "joint", 0)]
+
+
+def test_a_capture_keeps_the_scene_names_of_fixtures():
+    """Shapes and chains keep the names of the scene's fixtures (their ids number apart)."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=0.5), density=1.0, name="Ball")
+    ground = m.fixture(m.shape("chain", vertices=((-5.0, 0.0), (0.0, 0.0), (5.0, 0.0)), prev_vertex=(-6.0, 0.0), next_vertex=(6.0, 0.0)), name="Ground")
+    m.body("static", fixtures=(ground,), name="Floor")
+    m.body(fixtures=(ball,), position=(0.0, 2.0), name="Puck")
+    world, built = build(m.finish())
+    saved, reports = b2s3.capture_world(world, built)
+    assert reports == []
+    assert [b.name for b in saved.bodies] == ["Floor", "Puck"]
+    assert [saved.fixtures[b.fixtures[0]].name for b in saved.bodies] == ["Ground", "Ball"]

@@ -284,3 +284,23 @@ def test_both_builders_take_the_same_arguments():
     for name in ("create_world", "build_world", "capture_world", "scene_gravity"):
         assert positional(getattr(b2s2, name)) == positional(getattr(b2s3, name)), name
     assert {"bodies", "fixtures", "joints", "reports"} <= {f for f in b2s2.Built.__dataclass_fields__} & {f for f in b2s3.Built.__dataclass_fields__}
+
+
+def test_a_capture_keeps_the_scene_names_of_fixtures_and_not_of_a_later_one_at_the_same_address():
+    """A built fixture keeps its scene name; one the host makes after destroying it, at the
+    address Box2D 2.3 gives back, has none."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=0.5), density=1.0, name="Ball")
+    rim = m.fixture(m.shape("circle", radius=0.25, position=(1.0, 0.0)), density=1.0, name="Rim")
+    m.body(fixtures=(ball, rim), name="Wheel")
+    world, built = build(m.finish())
+    saved, reports = b2s2.capture_world(world, built)
+    assert reports == [] and [f.name for f in saved.fixtures] == ["Ball", "Rim"]
+    assert [b.name for b in saved.bodies] == ["Wheel"]
+    rim_fixture = built.fixtures[1]
+    address = int(rim_fixture.this)
+    built.bodies[0].DestroyFixture(rim_fixture)
+    mine = built.bodies[0].CreateFixture(B.b2FixtureDef(shape=B.b2CircleShape(radius=0.25), density=1.0))
+    assert int(mine.this) == address  # the case under test: Box2D reused the address
+    saved, _ = b2s2.capture_world(world, built)
+    assert [f.name for f in saved.fixtures] == ["Ball", None]
