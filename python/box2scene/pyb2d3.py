@@ -9,14 +9,15 @@ reference, "Mapping onto Box2D v3.1"), with the same reports and the same workin
     built = b2s3.build_world(scene, world)
     for report in built.reports: print(report.code, report.object, report.index, report.message)
     for _ in range(600): world.step(1 / 60, 4)
-    saved, reports = b2s3.capture_world(world, [b for b in built.bodies if b], built.joints)
+    saved, reports = b2s3.capture_world(world, built)
 
 pyb2d3 cannot read everything it was given: a world's maximum linear speed, a joint's
 ``collide_connected``, reference angle and axis (and its name), a chain's ghost points. The builder
-records what it gives each joint and chain (by id) so that a capture of a world it built
-is exact; for joints and chains a host made itself, the capture writes those fields at
-their defaults and reports ``lossy-capture``. pyb2d3 cannot list a body's joints either,
-so :func:`capture_world` takes the joints to save beside the bodies. Its chains cannot
+keeps what it gives each joint and chain on the :class:`Built` it returns, so that a capture
+of the world it built is exact; for joints and chains a host made itself, the capture
+writes those fields at their defaults and reports ``lossy-capture``. pyb2d3 cannot list a
+body's joints either, so :func:`capture_world` takes the host's own joints beside its
+bodies. Its chains cannot
 turn on sensor events (v3's ``enableSensorEvents``, which the C adapter sets): a sensor of
 the scene does not see them, which a build with a sensor and a chain reports.
 """
@@ -33,6 +34,7 @@ import pyb2d3 as b2
 from pyb2d3 import _pyb2d3 as _b2
 
 from . import _native
+from ._error import Error
 from ._f32 import F, angle_of, cosf, f32, search_ulps, sinf
 from ._records import Body, Fixture, Joint, Shape
 from ._report import Check, Report
@@ -58,24 +60,26 @@ MAX_POLYGON_VERTICES = 8
 
 _KINDS = {"static": b2.BodyType.STATIC, "kinematic": b2.BodyType.KINEMATIC, "dynamic": b2.BodyType.DYNAMIC}
 
-# What the builder gave each joint and chain that pyb2d3 cannot read back, by id.
-_joint_records: Dict[Tuple[int, int], dict] = {}
-_chain_points: Dict[Tuple[int, int], Tuple[List[Tuple[float, float]], bool]] = {}
-
 
 @dataclass
 class Built:
     """What :func:`build_world` created, index for index with the scene: ``bodies[i]`` for
     body ``i``; ``shapes[k]`` and ``chains[k]`` for the fixture at slot ``k`` of the
     scene's ``fixture_ids`` (a chain fixture in ``chains``, any other in ``shapes``);
-    ``joints[j]`` for joint ``j``. None where nothing was created (then ``reports`` says
-    why)."""
+    ``joints[j]`` for joint ``j``; ``fixtures[k]`` for either kind. None where nothing was
+    created (then ``reports`` says why)."""
 
     bodies: List[Optional[b2.Body]]
     shapes: List[Optional[b2.Shape]]
     chains: List[Optional[b2.Chain]]
     joints: List[Optional[b2.Joint]]
     reports: List[Report] = field(default_factory=list)
+    fixtures: List[Optional[object]] = field(default_factory=list)
+    # What capture needs that pyb2d3 cannot read back: the scene (its names), and what the
+    # build gave each joint and chain, by id (a v3 id names one object, never a later one).
+    _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
+    _joints: Dict[int, dict] = field(default_factory=dict, repr=False, compare=False)
+    _chains: Dict[int, Tuple[List[Tuple[float, float]], bool]] = field(default_factory=dict, repr=False, compare=False)
 
 
 def _gravity_fits(g) -> bool:
@@ -95,10 +99,6 @@ def create_world(scene: Scene, fallback_gravity: Tuple[float, float] = (0.0, -10
     are pyb2d3's other world settings."""
     settings.setdefault("maximum_linear_speed", WORLD_MAX_LINEAR_SPEED)
     return b2.World(gravity=scene_gravity(scene, fallback_gravity), **settings)
-
-
-def _id(world: b2.World, thing) -> Tuple[int, int]:
-    return (int(world.id), int(thing.id))
 
 
 # ---- single-precision geometry, operation for operation as v3 computes it
@@ -276,7 +276,7 @@ class _Build:
         self.speed_limit = maximum_linear_speed
         self.reports: List[Report] = []
         slots = len(scene.fixture_ids)
-        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * slots, [None] * len(scene.joints), self.reports)
+        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * slots, [None] * len(scene.joints), self.reports, _scene=scene)
         self.geometries: List[Optional[_Geometry]] = [None] * len(scene.shapes)
         self.masses: Dict[int, tuple] = {}
         # Per body: the joint that already pulls it from further than the range's
@@ -583,7 +583,7 @@ class _Build:
                     f"fixture {index} of body {body_index}: pyb2d3's chains cannot turn on sensor events, so the scene's sensors do not see this chain",
                 )
             chain = body.create_chain(chain_def)
-            _chain_points[_id(self.world, chain)] = (list(g.points), g.is_loop)
+            self.built._chains[int(chain.id)] = (list(g.points), g.is_loop)
             self.built.chains[slot] = chain
             return
         shape_def.material = material
@@ -975,7 +975,7 @@ class _Build:
             created = w.create_motor_joint(d)
         else:
             created = self.make_motor(index, j, a, b, record)
-        _joint_records[_id(w, created)] = record
+        self.built._joints[int(created.id)] = record
         self.built.joints[index] = created
 
     def make_motor(self, index: int, j: Joint, a, b, record: dict):
@@ -1036,6 +1036,7 @@ def build_world(scene: Scene, world: b2.World, *, maximum_linear_speed: float = 
     # Joints come after every body has its final mass: their checks depend on it.
     for i in range(len(scene.joints)):
         b.make_joint(i)
+    b.built.fixtures = [s if s is not None else c for s, c in zip(b.built.shapes, b.built.chains)]
     return b.built
 
 
@@ -1043,10 +1044,28 @@ def build_world(scene: Scene, world: b2.World, *, maximum_linear_speed: float = 
 
 
 class _Capture:
-    def __init__(self, world: b2.World, bodies: Sequence[b2.Body]):
+    def __init__(self, world: b2.World, built: Optional[Built], bodies: Sequence[b2.Body], names: Optional[Sequence[Optional[str]]]):
         self.world = world
-        self.bodies = list(bodies)
-        self.index_of = {int(body.id): i for i, body in enumerate(self.bodies)}
+        if names is not None and len(names) != len(bodies):
+            raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
+        self.joint_records = built._joints if built is not None else {}
+        self.chain_records = built._chains if built is not None else {}
+        # The scene name of each fixture the build made, by whether it is a chain and its id
+        # (shapes and chains number apart).
+        self.fixture_names: Dict[Tuple[bool, int], Optional[str]] = {}
+        if built is not None:
+            for made, index in zip(built.fixtures, built._scene.fixture_ids):
+                if made is not None:
+                    self.fixture_names[(isinstance(made, b2.Chain), int(made.id))] = built._scene.fixtures[index].name
+        made = [(b, r.name) for b, r in zip(built.bodies, built._scene.bodies) if b is not None and b.is_valid] if built is not None else []
+        given = list(zip(bodies, names if names is not None else [b.name or None for b in bodies]))
+        self.bodies = [b for b, _ in made + given]
+        self.names = [n for _, n in made + given]
+        self.index_of: Dict[int, int] = {}
+        for i, body in enumerate(self.bodies):
+            if int(body.id) in self.index_of:
+                raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[int(body.id)]} and {i} are the same body")
+            self.index_of[int(body.id)] = i
         self.builder = Builder()
         self.reports: List[Report] = []
         self.shape_count = 0
@@ -1078,7 +1097,7 @@ class _Capture:
         group = min(max(f.group_index, group_low), group_high)
         return f.category_bits & low, f.mask_bits & low, group
 
-    def add_fixture(self, shape: Shape, source, density: float, is_sensor: bool) -> int:
+    def add_fixture(self, shape: Shape, source, density: float, is_sensor: bool, name: Optional[str]) -> int:
         shape_index = self.builder.add_shape(shape)
         self.shape_count += 1
         category, mask, group = self.filter_of(source.filter)
@@ -1091,13 +1110,14 @@ class _Capture:
             category_bits=category,
             mask_bits=mask,
             group_index=group,
+            name=name,
         )
         index = self.builder.add_fixture(fixture)
         self.fixture_count += 1
         return index
 
     def capture_chain(self, chain: b2.Chain, first) -> int:
-        recorded = _chain_points.get(_id(self.world, chain))
+        recorded = self.chain_records.get(int(chain.id))
         if recorded is not None:
             points, loop = recorded
         else:
@@ -1119,7 +1139,7 @@ class _Capture:
             shape = Shape.new("chain", vertices=tuple(points), is_loop=True)
         else:
             shape = Shape.new("chain", vertices=tuple(points[1:-1]), prev_vertex=points[0], next_vertex=points[-1])
-        return self.add_fixture(shape, first, 0.0, False)
+        return self.add_fixture(shape, first, 0.0, False, self.fixture_names.get((True, int(chain.id))))
 
     def capture_shape(self, s) -> Optional[int]:
         kind = s.type
@@ -1138,7 +1158,7 @@ class _Capture:
         else:
             self.report("lossy-capture", "shape", self.shape_count, None, "a capsule has no Box2Scene form; not written")
             return None
-        return self.add_fixture(shape, s, float(s.density), bool(s.is_sensor))
+        return self.add_fixture(shape, s, float(s.density), bool(s.is_sensor), self.fixture_names.get((False, int(s.id))))
 
     def capture_fixtures(self, body: b2.Body):
         """The fixtures of one body in the order its shapes were created (a chain where its
@@ -1175,7 +1195,7 @@ class _Capture:
         kind = {b2.BodyType.STATIC: "static", b2.BodyType.KINEMATIC: "kinematic", b2.BodyType.DYNAMIC: "dynamic"}[body.type]
         q = body.rotation
         exact, angle = angle_of(float(q.c), float(q.s))
-        name = body.name or None
+        name = self.names[index]
         if not exact:
             self.report("lossy-capture", "body", index, name, f"no angle has exactly its rotation's cosine and sine; the nearest, {angle:.9g} rad, was written")
         w = float(body.angular_velocity)
@@ -1223,7 +1243,7 @@ class _Capture:
                 f"it connects body {b if a is None else a} to a body the host did not name; not written",
             )
             return
-        record = _joint_records.get(_id(self.world, joint))
+        record = self.joint_records.get(int(joint.id))
         if record is None:
             self.report(
                 "lossy-capture",
@@ -1373,24 +1393,27 @@ def _origin_inertia(central: float, mass: float, center) -> float:
     return origin
 
 
-def capture_world(world: b2.World, bodies: Sequence[b2.Body], joints: Sequence[b2.Joint] = ()) -> Tuple[Scene, List[Report]]:
-    """A scene of ``bodies`` (their shapes with them) and those of ``joints`` whose two bodies
-    are among them, in the order given, with the world's gravity; and the reports of what
-    has no Box2Scene form. Written and loaded, it builds a world that evolves bit for bit
-    like this one. Raises :class:`box2scene.Error` when a body is named twice."""
-    c = _Capture(world, [b for b in bodies])
-    if len(c.index_of) != len(c.bodies):
-        seen: Dict[int, int] = {}
-        for i, body in enumerate(c.bodies):
-            if int(body.id) in seen:
-                from ._error import Error
-
-                raise Error("invalid-argument", 0, 0, 0, f"bodies {seen[int(body.id)]} and {i} are the same body")
-            seen[int(body.id)] = i
+def capture_world(
+    world: b2.World,
+    built: Optional[Built] = None,
+    bodies: Sequence[b2.Body] = (),
+    joints: Sequence[b2.Joint] = (),
+    names: Optional[Sequence[Optional[str]]] = None,
+) -> Tuple[Scene, List[Report]]:
+    """A scene of what ``built`` made that the world still holds (with the scene's names),
+    then of the host's own ``bodies`` (their shapes with them; named by ``names``, or else
+    by their Box2D names) and those of its ``joints`` whose two bodies are saved, with the
+    world's gravity; and the reports of what has no Box2Scene form. Written and loaded, it
+    builds a world that evolves bit for bit like this one. Raises :class:`box2scene.Error`
+    when a body is given twice."""
+    c = _Capture(world, built, bodies, names)
     g = world.gravity
     c.builder.set_gravity((float(g.x), float(g.y)))
     for i in range(len(c.bodies)):
         c.capture_body(i)
-    for joint in sorted((j for j in joints if j is not None), key=lambda j: int(j.id) & 0xFFFFFFFF):
+    made = [j for j in built.joints if j is not None and j.is_valid] if built is not None else []
+    written = {int(j.id) for j in made}
+    host = sorted((j for j in joints if j is not None and int(j.id) not in written), key=lambda j: int(j.id) & 0xFFFFFFFF)
+    for joint in made + host:
         c.capture_joint(joint)
     return c.builder.finish(), c.reports

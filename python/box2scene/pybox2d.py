@@ -3,10 +3,10 @@ one back into a scene.
 
     import Box2D, box2scene, box2scene.pybox2d as b2s2
     scene = box2scene.load("level.xml")
-    world = Box2D.b2World(gravity=b2s2.scene_gravity(scene, (0, -10)))
+    world = b2s2.create_world(scene, fallback_gravity=(0, -10))
     built = b2s2.build_world(scene, world)
     for _ in range(600): world.Step(1 / 60, 8, 3)
-    saved, reports = b2s2.capture_world(world, built.bodies, [b.name for b in scene.bodies])
+    saved, reports = b2s2.capture_world(world, built)
 
 Box2D 2.3 is the engine the format's Version 2 files were written for, so more of a scene
 is exact here than in Box2D 2.4 or v3: distance joints keep ``FrequencyHz`` and
@@ -35,7 +35,7 @@ from ._records import Body, Fixture, Joint, Shape
 from ._report import Check, Report
 from ._scene import Builder, Scene
 
-__all__ = ["Built", "Report", "build_world", "capture_world", "scene_gravity"]
+__all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
 ENGINE = "Box2D 2.3"
 # The working range: the library's measured table for Box2D 2.3 as pybox2d holds it, 2.4's
@@ -46,9 +46,6 @@ FILTER_BITS = 16
 SPRINGLESS_WHEEL_HZ = 1e-3
 
 _KINDS = {"static": B.b2_staticBody, "kinematic": B.b2_kinematicBody, "dynamic": B.b2_dynamicBody}
-
-# What 2.3's bindings cannot read back from a joint the builder made, by the joint.
-_joint_records: Dict[int, dict] = {}
 
 
 @dataclass
@@ -62,6 +59,12 @@ class Built:
     fixtures: List[Optional[B.b2Fixture]]
     joints: List[Optional[B.b2Joint]]
     reports: List[Report] = field(default_factory=list)
+    # What capture needs: the scene (what 2.3's bindings cannot read back, and the names),
+    # and the userData the build gives its fixtures and joints, which tells them from ones
+    # the host makes later at their freed addresses (Box2D reuses them). One object a build, since
+    # pybox2d never releases a joint's userData when its world goes.
+    _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
+    _mark: object = field(default_factory=object, repr=False, compare=False)
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
@@ -70,6 +73,12 @@ def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) ->
     if g is None or not (abs(g[0]) <= RANGE.max_acceleration and abs(g[1]) <= RANGE.max_acceleration):
         return fallback
     return g
+
+
+def create_world(scene: Scene, fallback_gravity: Tuple[float, float] = (0.0, -10.0), **settings) -> B.b2World:
+    """A pybox2d world for ``scene``: its gravity (or the fallback); ``settings`` are
+    pybox2d's other world settings."""
+    return B.b2World(gravity=scene_gravity(scene, fallback_gravity), **settings)
 
 
 def _key(joint) -> int:
@@ -82,7 +91,7 @@ class _Build:
         self.world = world
         self.reports: List[Report] = []
         slots = len(scene.fixture_ids)
-        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * len(scene.joints), self.reports)
+        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * len(scene.joints), self.reports, scene)
         self.shapes: List[Optional[object]] = [None] * len(scene.shapes)
         # Per body: the joint that already pulls it from further than the range's
         # max_pulled_violation.
@@ -218,6 +227,7 @@ class _Build:
                 categoryBits=f.category_bits & low,
                 maskBits=f.mask_bits & low,
                 groupIndex=f.group_index,
+                userData=self.built._mark,
             )
         )
 
@@ -432,7 +442,6 @@ class _Build:
         common = dict(bodyA=a, bodyB=b, collideConnected=j.collide_connected)
         anchors = dict(localAnchorA=j.local_anchor_a, localAnchorB=j.local_anchor_b)
         w = self.world
-        record: dict = {}
         kind = j.kind
         if kind == "revolute":
             lower, upper = self.limits(index, j, "LowerAngle", "UpperAngle")
@@ -451,7 +460,6 @@ class _Build:
                 if j.enable_limit:
                     self.report("lossy-joint", "joint", index, j.name, "Box2D 2.3's wheel joint has no translation limit; the line joint's limit is off")
                 d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, 0.0), dampingRatio=0.0, **common, **anchors)
-                record["line"] = True
             else:
                 d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, j.frequency_hz), dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor_torque, motorSpeed=j.motor_speed, **common, **anchors)
         elif kind == "weld":
@@ -474,11 +482,8 @@ class _Build:
                     self.report("bad-gear-joint", "joint", index, j.name, f"the gear couples joint {target}, whose body B is not dynamic or whose bodies are not all active, which Box2D 2.3's gear cannot solve; gear skipped")
                     return
             d = B.b2GearJointDef(joint1=joint_a, joint2=joint_b, ratio=j.ratio, **common)
-            record["coupled"] = (_key(joint_a), _key(joint_b))
-        created = w.CreateJoint(d)
-        record["joint"] = j
-        _joint_records[_key(created)] = record
-        self.built.joints[index] = created
+        d.userData = self.built._mark
+        self.built.joints[index] = w.CreateJoint(d)
 
 
 def build_world(scene: Scene, world: B.b2World) -> Built:
@@ -495,6 +500,11 @@ def build_world(scene: Scene, world: B.b2World) -> Built:
     joints = range(len(scene.joints))
     for i in [i for i in joints if scene.joints[i].kind != "gear"] + [i for i in joints if scene.joints[i].kind == "gear"]:
         b.make_joint(i)
+    # pybox2d's fixture def takes a shape from Python and never frees it; Box2D cloned each
+    # into its fixtures, so the build's own shapes go with the build.
+    for shape in b.shapes:
+        if shape is not None:
+            shape.thisown = True
     return b.built
 
 
@@ -590,7 +600,7 @@ _LIVE = {
         ("upper_limit", lambda j: float(j.upperLimit)),
         ("enable_motor", lambda j: bool(j.motorEnabled)),
         ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_force", lambda j: float(j.GetMaxMotorForce())),
+        ("max_motor_force", lambda j: float(j.maxMotorForce)),
     ],
     "distance": _anchors() + [
         ("length", lambda j: float(j.length)),
@@ -613,14 +623,14 @@ _LIVE = {
         ("damping_ratio", lambda j: float(j.GetDampingRatio())),
     ],
     "friction": _anchors() + [
-        ("max_force", lambda j: float(j.GetMaxForce())),
-        ("max_torque", lambda j: float(j.GetMaxTorque())),
+        ("max_force", lambda j: float(j.maxForce)),
+        ("max_torque", lambda j: float(j.maxTorque)),
     ],
     "motor": [
-        ("linear_offset", lambda j: j.GetLinearOffset()),
-        ("angular_offset", lambda j: float(j.GetAngularOffset())),
-        ("max_force", lambda j: float(j.GetMaxForce())),
-        ("max_torque", lambda j: float(j.GetMaxTorque())),
+        ("linear_offset", lambda j: j.linearOffset),
+        ("angular_offset", lambda j: float(j.angularOffset)),
+        ("max_force", lambda j: float(j.maxForce)),
+        ("max_torque", lambda j: float(j.maxTorque)),
         ("correction_factor", lambda j: float(j.GetCorrectionFactor())),
     ],
     "pulley": _anchors() + [
@@ -639,21 +649,61 @@ def _vec(v) -> Tuple[float, float]:
 
 
 class _Capture:
-    def __init__(self, world: B.b2World, bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]]):
+    def __init__(self, world: B.b2World, built: Optional[Built], bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]]):
         self.world = world
-        self.bodies = list(bodies)
-        self.names = list(names) if names is not None else [None] * len(self.bodies)
-        if len(self.names) != len(self.bodies):
-            raise Error("invalid-argument", 0, 0, 0, f"{len(self.names)} names for {len(self.bodies)} bodies")
+        self.scene = built._scene if built is not None else None
+        names = list(names) if names is not None else [None] * len(bodies)
+        if len(names) != len(bodies):
+            raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
+        self.bodies: List[B.b2Body] = []
+        self.names: List[Optional[str]] = []
+        # The scene's joint for each joint the build made that still lives, by its key.
+        self.built_joints: Dict[int, Joint] = {}
+        self.scene_joints: Dict[int, int] = {}
+        self.fixture_names: Dict[int, Optional[str]] = {}
+        self.mark = built._mark if built is not None else None
+        self.builder = Builder()
+        self.reports: List[Report] = []
+        if built is not None:
+            self.take_built(built)
+        self.bodies += list(bodies)
+        self.names += names
         self.index_of: Dict[int, int] = {}
         for i, body in enumerate(self.bodies):
             key = int(body.this)
             if key in self.index_of:
                 raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[key]} and {i} are the same body")
             self.index_of[key] = i
-        self.builder = Builder()
-        self.reports: List[Report] = []
         self.joint_indices: Dict[int, int] = {}
+
+    def take_built(self, built: Built) -> None:
+        """The bodies the build made that the world still holds, with their scene names; and
+        the joints it made that the world holds: a joint at a built joint's address without
+        the userData the build gave it is the host's, made after the build's was destroyed."""
+        live = {int(b.this) for b in self.world.bodies}
+        for body, record in zip(built.bodies, self.scene.bodies):
+            if body is not None and int(body.this) in live:
+                self.bodies.append(body)
+                self.names.append(record.name)
+        for fixture, index in zip(built.fixtures, self.scene.fixture_ids):
+            if fixture is not None:
+                self.fixture_names[int(fixture.this)] = self.scene.fixtures[index].name
+        live_joints = {_key(j): j for j in self.world.joints}
+        for index, joint in enumerate(built.joints):
+            if joint is None or _key(joint) not in live_joints:
+                continue
+            record = self.scene.joints[index]
+            if live_joints[_key(joint)].userData is built._mark:
+                self.built_joints[_key(joint)] = record
+                self.scene_joints[index] = _key(joint)
+            else:
+                self.report(
+                    "lossy-capture",
+                    "joint",
+                    index,
+                    record.name,
+                    f"the joint built for scene joint {index} was destroyed, or its userData replaced: the joint at its address is taken as the host's, saved only when given in joints",
+                )
 
     def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
         self.reports.append(Report(code, obj, index, name, message))
@@ -685,7 +735,7 @@ class _Capture:
     def capture_body(self, index: int) -> None:
         body = self.bodies[index]
         fixtures = []
-        for f in reversed(list(body.fixtures)):  # 2.3 lists a body's fixtures newest first
+        for f in body.fixtures:  # pybox2d lists them in the order they were created
             shape = self.builder.add_shape(self.capture_shape(f.shape))
             data = f.filterData
             fixtures.append(
@@ -699,6 +749,7 @@ class _Capture:
                         category_bits=int(data.categoryBits),
                         mask_bits=int(data.maskBits),
                         group_index=int(data.groupIndex),
+                        name=self.fixture_names.get(int(f.this)) if f.userData is self.mark else None,
                     )
                 )
             )
@@ -725,34 +776,29 @@ class _Capture:
                 changes.update(mass=float(actual.mass), center=_vec(actual.center), inertia=float(actual.I))
         self.builder.add_body(Body.new(kind, name=self.names[index], **changes))
 
-    def capture_joints(self) -> None:
-        seen = set()
-        joints = []
-        for body in self.bodies:
-            for edge in body.joints:
-                joint = edge.joint
-                if _key(joint) not in seen:
-                    seen.add(_key(joint))
-                    joints.append(joint)
-        # pybox2d lists the world's joints in the order they were created.
-        order = {_key(j): n for n, j in enumerate(self.world.joints)}
-        joints.sort(key=lambda j: order[_key(j)])
+    def capture_joints(self, joints: Sequence[B.b2Joint]) -> None:
+        """The build's joints in the order it made them (a gear after the joints it couples),
+        then the host's."""
+        by_key = {_key(j): j for j in self.world.joints}
+        made = sorted(self.scene_joints.items(), key=lambda item: self.scene.joints[item[0]].kind == "gear")
+        for _, key in made:
+            self.capture_joint(by_key[key])
         for joint in joints:
-            self.capture_joint(joint)
+            if _key(joint) not in self.joint_indices:
+                self.capture_joint(joint)
 
     def capture_joint(self, j) -> None:
         index = len(self.joint_indices)
         a = self.index_of.get(int(j.bodyA.this))
         b = self.index_of.get(int(j.bodyB.this))
         if a is None or b is None:
-            self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body the host did not name; not written")
+            self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body not saved; not written")
             return
         kind = next((k for k, cls in _JOINT_CLASSES if isinstance(j, cls)), None)
         if kind is None:
             self.report("lossy-capture", "joint", index, None, "a mouse joint has no Box2Scene form; not written")
             return
-        record = _joint_records.get(_key(j), {})
-        built = record.get("joint")
+        built = self.built_joints.get(_key(j))
         if built is not None:
             kind = built.kind
             changes = {f: getattr(built, f) for f in _JOINT_FIELDS}
@@ -771,7 +817,8 @@ class _Capture:
         if built is None and unread:
             self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
         if kind == "gear":
-            targets = [self.joint_indices.get(k) for k in record.get("coupled", ())]
+            coupled = (built.joint_a, built.joint_b) if built is not None else ()
+            targets = [self.joint_indices.get(self.scene_joints.get(k, -1)) for k in coupled]
             if len(targets) != 2 or None in targets:
                 self.report("lossy-capture", "joint", index, None, "the joints this gear couples were not written (or box2scene did not build it); not written")
                 return
@@ -782,15 +829,22 @@ class _Capture:
         self.joint_indices[_key(j)] = index
 
 
-def capture_world(world: B.b2World, bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]] = None) -> Tuple[Scene, List[Report]]:
-    """A scene of ``bodies`` (with their fixtures) and of every joint between two of them, in
-    creation order, with the world's gravity; and the reports of what has no Box2Scene
-    form. Box2D 2.3's bodies have no names: ``names`` gives body ``i`` its own. Written and loaded, it
-    builds a world that moves like this one. Raises :class:`box2scene.Error` when a body
-    is named twice."""
-    c = _Capture(world, bodies, names)
+def capture_world(
+    world: B.b2World,
+    built: Optional[Built] = None,
+    bodies: Sequence[B.b2Body] = (),
+    joints: Sequence[B.b2Joint] = (),
+    names: Optional[Sequence[Optional[str]]] = None,
+) -> Tuple[Scene, List[Report]]:
+    """A scene of what ``built`` made that the world still holds (with the scene's names),
+    then of the host's own ``bodies`` (with their fixtures; Box2D 2.3's bodies have no
+    names, so ``names`` gives body ``i`` of them its own) and ``joints``, with the world's
+    gravity; and the reports of what has no Box2Scene form. Written and loaded, it builds
+    a world that moves like this one. Raises :class:`box2scene.Error` when a body is given
+    twice."""
+    c = _Capture(world, built, bodies, names)
     c.builder.set_gravity(_vec(world.gravity))
     for i in range(len(c.bodies)):
         c.capture_body(i)
-    c.capture_joints()
+    c.capture_joints(joints)
     return c.builder.finish(), c.reports

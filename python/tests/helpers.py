@@ -46,3 +46,24 @@ def codes(reports):
 
 def finite(*values) -> bool:
     return all(math.isfinite(v) for v in values)
+
+
+def resident_bytes() -> int:
+    """This process's resident memory now (Linux's /proc/self/statm), after a collection."""
+    import gc
+    import os
+
+    gc.collect()
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def growth_over(worlds: int, make_and_drop) -> int:
+    """How much the resident memory grows over ``worlds`` calls of ``make_and_drop``, after
+    a warm-up that lets the allocators and caches of the engines settle."""
+    for _ in range(50):
+        make_and_drop()
+    before = resident_bytes()
+    for _ in range(worlds):
+        make_and_drop()
+    return resident_bytes() - before

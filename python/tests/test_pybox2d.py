@@ -11,7 +11,7 @@ import box2scene
 import box2scene.pybox2d as b2s2
 
 from conftest import scene_files, scene_id
-from helpers import DT, SceneMaker, codes, f32, finite
+from helpers import DT, SceneMaker, codes, f32, finite, growth_over
 
 
 def build(scene):
@@ -147,7 +147,7 @@ def test_pulley_max_lengths_are_reported():
 def test_a_captured_world_writes_and_loads_to_the_same_world(showcase):
     scene = box2scene.load(showcase)
     world, built = build(scene)
-    captured, reports = b2s2.capture_world(world, built.bodies, [b.name for b in scene.bodies])
+    captured, reports = b2s2.capture_world(world, built)
     assert reports == []
     again = box2scene.load(captured.to_xml().encode(), strict=True)
     # In the order they were created: a gear after the joints it couples.
@@ -165,7 +165,7 @@ def test_a_capture_refuses_a_body_named_twice():
     world = B.b2World()
     body = world.CreateDynamicBody()
     with pytest.raises(box2scene.Error) as raised:
-        b2s2.capture_world(world, [body, body])
+        b2s2.capture_world(world, bodies=[body, body])
     assert raised.value.code == "invalid-argument"
 
 
@@ -222,3 +222,85 @@ def test_a_prismatic_lever_to_body_bs_anchor_is_refused():
     assert built.joints[0] is None
     assert codes(built.reports) == [("beyond-box2d-range", "joint", 0)]
     assert "as body A's lever" in built.reports[0].message
+
+
+def _brake_scene():
+    """Two balls joined by a friction joint named PuckBrake (3 N, 1 N m)."""
+    m, (a, b) = _balls(0.5, ("dynamic", (0.0, 0.0), {}), ("dynamic", (3.0, 0.0), {}))
+    m.joint("friction", a, b, name="PuckBrake", max_force=3.0, max_torque=1.0, local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    return m.finish()
+
+
+def test_a_joint_made_at_a_destroyed_built_joints_address_is_captured_as_the_hosts():
+    """Box2D 2.3 gives a new joint the address of the one destroyed before it: the host's
+    brake of 900 N and 400 N m is saved as its own, never as PuckBrake's 3 and 1."""
+    scene = _brake_scene()
+    world, built = build(scene)
+    old = built.joints[0]
+    address = int(old.this)
+    world.DestroyJoint(old)
+    a, b = built.bodies
+    mine = world.CreateJoint(B.b2FrictionJointDef(bodyA=a, bodyB=b, maxForce=900.0, maxTorque=400.0))
+    assert int(mine.this) == address  # the case under test: Box2D reused the address
+    saved, reports = b2s2.capture_world(world, built, joints=[mine])
+    assert [(j.kind, j.name, j.max_force, j.max_torque) for j in saved.joints] == [("friction", None, 900.0, 400.0)]
+    assert codes(reports) == [("lossy-capture", "joint", 0)]
+    assert reports[0].name == "PuckBrake" and "destroyed" in reports[0].message
+    alone, _ = b2s2.capture_world(world, built)
+    assert alone.joints == ()
+
+
+def test_a_joint_the_host_makes_is_captured_with_its_own_maxima():
+    """pybox2d reads a friction and a motor joint's maxima as properties; the capture read
+    them through getters it lacks and wrote the defaults."""
+    world, built = build(_brake_scene())
+    a, b = built.bodies
+    mine = world.CreateJoint(B.b2MotorJointDef(bodyA=a, bodyB=b, maxForce=900.0, maxTorque=400.0, linearOffset=(1.0, 2.0), angularOffset=0.5))
+    saved, _ = b2s2.capture_world(world, built, joints=[mine])
+    made, host = saved.joints
+    assert (made.name, made.max_force, made.max_torque) == ("PuckBrake", 3.0, 1.0)
+    assert (host.kind, host.max_force, host.max_torque, host.linear_offset, host.angular_offset) == ("motor", 900.0, 400.0, (1.0, 2.0), f32(0.5))
+
+
+def test_2000_worlds_built_captured_and_dropped_grow_memory_by_under_4_mib(showcase):
+    """What capture needs lives on the built result: nothing is left behind per world."""
+    scene = box2scene.load(showcase)
+
+    def make_and_drop():
+        world, built = build(scene)
+        b2s2.capture_world(world, built)
+
+    assert growth_over(2000, make_and_drop) < 4 * 1024 * 1024
+
+
+def test_both_builders_take_the_same_arguments():
+    import inspect
+
+    import box2scene.pyb2d3 as b2s3
+
+    def positional(function):
+        return [p.name for p in inspect.signature(function).parameters.values() if p.kind in (p.POSITIONAL_OR_KEYWORD, p.VAR_KEYWORD)]
+
+    for name in ("create_world", "build_world", "capture_world", "scene_gravity"):
+        assert positional(getattr(b2s2, name)) == positional(getattr(b2s3, name)), name
+    assert {"bodies", "fixtures", "joints", "reports"} <= {f for f in b2s2.Built.__dataclass_fields__} & {f for f in b2s3.Built.__dataclass_fields__}
+
+
+def test_a_capture_keeps_the_scene_names_of_fixtures_and_not_of_a_later_one_at_the_same_address():
+    """A built fixture keeps its scene name; one the host makes after destroying it, at the
+    address Box2D 2.3 gives back, has none."""
+    m = SceneMaker()
+    ball = m.fixture(m.shape("circle", radius=0.5), density=1.0, name="Ball")
+    rim = m.fixture(m.shape("circle", radius=0.25, position=(1.0, 0.0)), density=1.0, name="Rim")
+    m.body(fixtures=(ball, rim), name="Wheel")
+    world, built = build(m.finish())
+    saved, reports = b2s2.capture_world(world, built)
+    assert reports == [] and [f.name for f in saved.fixtures] == ["Ball", "Rim"]
+    assert [b.name for b in saved.bodies] == ["Wheel"]
+    rim_fixture = built.fixtures[1]
+    address = int(rim_fixture.this)
+    built.bodies[0].DestroyFixture(rim_fixture)
+    mine = built.bodies[0].CreateFixture(B.b2FixtureDef(shape=B.b2CircleShape(radius=0.25), density=1.0))
+    assert int(mine.this) == address  # the case under test: Box2D reused the address
+    saved, _ = b2s2.capture_world(world, built)
+    assert [f.name for f in saved.fixtures] == ["Ball", None]
