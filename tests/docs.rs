@@ -139,7 +139,8 @@ fn held_by(cell: &str) -> Vec<(Vec<String>, String)> {
     let mut held = Vec::new();
     let (mut files, mut naming) = (Vec::new(), false);
     for token in cell.split('`').skip(1).step_by(2) {
-        if token.ends_with(".c") || token.ends_with(".cpp") || token.ends_with("_test") {
+        let file = [".c", ".cpp", ".py", "_test"].iter().any(|end| token.ends_with(end));
+        if file {
             if naming {
                 files.clear();
                 naming = false;
@@ -204,7 +205,8 @@ fn compiled_for(source: &str, minor: u32) -> Vec<&str> {
 
 /// Whether the file a cell names runs `test`: a source of `c_tests/` calls `RUN_TEST(test)`,
 /// in both versions' builds when it is a `v3_*.c` source; one version's program of such a
-/// source (`box2d32_mapping_test`, v3.2) calls it in that version's build.
+/// source (`box2d32_mapping_test`, v3.2) calls it in that version's build; a Python test
+/// file of `python/tests/` defines it.
 fn runs(file: &str, test: &str) -> bool {
     let call = format!("RUN_TEST({test})");
     let calls = |source: &str, minor| compiled_for(source, minor).iter().any(|l| l.contains(&call));
@@ -215,6 +217,9 @@ fn runs(file: &str, test: &str) -> bool {
     if let Some((source, minor)) = program {
         return calls(&read(&format!("c_tests/{source}")), minor);
     }
+    if file.ends_with(".py") {
+        return read(&format!("python/tests/{file}")).contains(&format!("\ndef {test}("));
+    }
     let source = read(&format!("c_tests/{file}"));
     if programs(file).len() == 2 {
         [1, 2].into_iter().all(|minor| calls(&source, minor))
@@ -224,16 +229,18 @@ fn runs(file: &str, test: &str) -> bool {
 }
 
 /// Every row of the tables of how a scene maps onto Box2D (docs/box2d.md's three versions
-/// side by side, docs/format.md's 2.4.1 and v3.1) names, in its last column, the tests that
-/// hold it in each engine the table covers (Box2D 2.4's C++ tests, v3.1's `box2d3_*`, v3.2's
-/// `box2d32_*`, both of them a `v3_*.c` source), each a test its file runs (in each version it
-/// is compiled for).
+/// side by side, docs/format.md's 2.4.1 and v3.1, docs/python.md's Box2D 2.3 beside 2.4)
+/// names, in its last column, the tests that hold it in each engine the table covers (Box2D
+/// 2.4's C++ tests, v3.1's `box2d3_*`, v3.2's `box2d32_*`, both of them a `v3_*.c` source,
+/// pybox2d's `test_pybox2d.py`), each a test its file runs (in each version it is compiled
+/// for).
 #[test]
 fn docs_name_the_tests_that_hold_each_mapping_row() {
-    let tables: [(&str, &str, &[&str], usize); 3] = [
+    let tables: [(&str, &str, &[&str], usize); 4] = [
         ("docs/box2d.md", "### How each version maps", &[".cpp", "box2d3_", "box2d32_"], 14),
         ("docs/format.md", "## Onto Box2D 2.4.1", &[".cpp"], 20),
         ("docs/format.md", "## Onto Box2D v3.1", &["box2d3_"], 24),
+        ("docs/python.md", "## Into pybox2d (Box2D 2.3)", &["test_pybox2d.py", ".cpp"], 7),
     ];
     for (page, heading, engines, at_least) in tables {
         let text = read(page);
