@@ -103,18 +103,18 @@ const JOINT_TYPES: [&str; 13] = [
 fn joint_kind(value: &str) -> Option<JointKind> {
     use JointKind::*;
     Some(match super::lowercase(value, &mut [0; 16]) {
-        "angle" | "slider" => Unsupported,
-        "revolute" => Revolute,
-        "prismatic" => Prismatic,
-        "distance" => Distance,
-        "pulley" => Pulley,
-        "line" => Line,
-        "weld" => Weld,
-        "friction" => Friction,
-        "gear" => Gear,
-        "wheel" => Wheel,
-        "rope" => Rope,
-        "motor" => Motor,
+        b"angle" | b"slider" => Unsupported,
+        b"revolute" => Revolute,
+        b"prismatic" => Prismatic,
+        b"distance" => Distance,
+        b"pulley" => Pulley,
+        b"line" => Line,
+        b"weld" => Weld,
+        b"friction" => Friction,
+        b"gear" => Gear,
+        b"wheel" => Wheel,
+        b"rope" => Rope,
+        b"motor" => Motor,
         _ => return None,
     })
 }

@@ -219,7 +219,7 @@ impl<'a> Reader<'a> {
     /// ([`rules::angle_in_degrees`]).
     pub fn radians(&mut self, tag: &Tag) -> Reading<f32> {
         let (v, at) = self.value(tag, text::float)?;
-        if let Some(warning) = rules::angle_in_degrees(tag.name(), v, at) {
+        if let Some(warning) = rules::angle_in_degrees(&tag.name, v, at) {
             self.note(warning)?;
         }
         Ok(v)
@@ -471,16 +471,16 @@ pub(crate) fn did_you_mean(name: &str, known: &[&str]) -> String {
     }
 }
 
-/// `word` in ASCII lower case, made in `buffer` when it fits (the words it is matched
-/// against are shorter), so that matching a Type attribute allocates nothing.
-pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b str {
+/// The bytes of `word` in ASCII lower case, made in `buffer` when it fits (the words it is
+/// matched against are shorter), so that matching a Type attribute allocates nothing. Bytes,
+/// not text: the words matched are ASCII, and text would be checked again for UTF-8.
+pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b [u8] {
     let Some(bytes) = buffer.get_mut(..word.len()) else {
-        return word;
+        return word.as_bytes();
     };
     bytes.copy_from_slice(word.as_bytes());
     bytes.make_ascii_lowercase();
-    // Changing the case of ASCII letters keeps the text valid.
-    std::str::from_utf8(bytes).unwrap_or_default()
+    bytes
 }
 
 /// At most 40 characters of `text`, for messages.

@@ -161,11 +161,11 @@ impl<'a> Reader<'a> {
         };
         let value = super::trim_xml(&ty.value);
         let (kind, is_loop) = match super::lowercase(value, &mut [0; 16]) {
-            "circle" => (ShapeKind::Circle, false),
-            "polygon" => (ShapeKind::Polygon, false),
-            "edge" => (ShapeKind::Edge, false),
-            "chain" => (ShapeKind::Chain, false),
-            "loop" => (ShapeKind::Chain, true),
+            b"circle" => (ShapeKind::Circle, false),
+            b"polygon" => (ShapeKind::Polygon, false),
+            b"edge" => (ShapeKind::Edge, false),
+            b"chain" => (ShapeKind::Chain, false),
+            b"loop" => (ShapeKind::Chain, true),
             _ => {
                 return Err(problem(
                     Code::UnknownType,
