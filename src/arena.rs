@@ -28,7 +28,8 @@ pub(crate) struct Findings {
     errors: Vec<Finding>,
     /// The warnings kept, at most [`MAX_WARNINGS`], in the order found, each placed.
     warnings: Vec<Finding>,
-    /// Warnings past [`MAX_WARNINGS`]: how many, and the first.
+    /// Warnings past [`MAX_WARNINGS`]: how many, and the first (only its place is read, so
+    /// [`Findings::note_worded`] leaves its message empty).
     dropped: (u64, Option<Finding>),
 }
 
@@ -190,6 +191,20 @@ impl Findings {
         }
         self.keep(warning);
         Ok(())
+    }
+
+    /// Records `warning` as [`Findings::note`] does, its message the words `words` give,
+    /// asked for only if the warning is kept: a scene keeps [`MAX_WARNINGS`], and a file can
+    /// give many more.
+    pub fn note_worded(
+        &mut self,
+        mut warning: Finding,
+        words: impl FnOnce() -> String,
+    ) -> Parsed<()> {
+        if self.strict || self.warnings.len() < MAX_WARNINGS {
+            warning.message = words();
+        }
+        self.note(warning)
     }
 
     /// An error after which the reading can go on as if the object had not said what it

@@ -226,7 +226,11 @@ pub fn chain(vertices: &[Vec2], is_loop: bool, at: usize) -> Checked {
 /// of radians past a turn is no angle a level is drawn with; larger values are left to
 /// the working range. The warning `angle-in-degrees` for the element `name` at `at`, which
 /// says what the value would be in radians.
-pub(crate) fn angle_in_degrees(name: &str, radians: f32, at: usize) -> Option<Finding> {
+pub(crate) fn angle_in_degrees(
+    name: impl std::fmt::Display,
+    radians: f32,
+    at: usize,
+) -> Option<Finding> {
     let magnitude = radians.abs();
     if radians.fract() != 0.0 || magnitude <= std::f32::consts::TAU || magnitude > 360.0 {
         return None;

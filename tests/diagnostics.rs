@@ -1150,3 +1150,42 @@ fn an_unknown_type_near_a_known_one_gets_a_hint() {
     let message = expect_error(&joint("⌖Mouse", ""), Code::UnsupportedJointType);
     assert!(!message.contains("did you mean"), "{message}");
 }
+
+/// Warnings past the limit are counted and not kept, wherever they are found: here 990 in
+/// the reader (unknown elements) and 20 in the check made once the scene is read (joints
+/// that start far from satisfied). The kept ones keep their words, and the count points at
+/// the first warning not kept, in the check's part.
+#[test]
+fn warnings_past_the_limit_from_the_reader_and_the_check() {
+    let hinges: String = (0..20)
+        .map(|_| "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>\n")
+        .collect();
+    let xml =
+        pair("3 4", &hinges).replace("<Shapes>", &format!("{}<Shapes>", "<Shap/>\n".repeat(990)));
+    let found = warnings_of(&xml);
+    assert_eq!(found.len(), 1001);
+    assert_eq!(
+        found[0],
+        (
+            Code::UnknownElement,
+            2,
+            1,
+            "unknown element <Shap> in <World> ignored (did you mean <Shapes>?)".to_string()
+        )
+    );
+    let last_kept = "joint 9 starts 5.000 m from satisfied where the file places bodies 0 and \
+                     1; an engine pulls them together in its first steps";
+    assert_eq!(found[999], (Code::JointStartsViolated, 1004, 31, last_kept.to_string()));
+    let not_kept = "10 more warnings from here on were not kept (a scene keeps 1000)";
+    assert_eq!(found[1000], (Code::WarningsTruncated, 1005, 31, not_kept.to_string()));
+    let strict = LoadOptions { strict: true, ..LoadOptions::default() };
+    let error = load(xml.as_bytes(), &strict).expect_err("strict");
+    assert_eq!(
+        (error.code, error.position.line, error.position.column),
+        (Code::UnknownElement, 2, 1)
+    );
+    assert_eq!(
+        error.message,
+        "unknown element <Shap> in <World> ignored (did you mean <Shapes>?) (strict mode)"
+    );
+}

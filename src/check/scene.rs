@@ -12,8 +12,8 @@ pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
     let Arena { scene: s, origins, findings, .. } = arena;
     for (i, (b, at)) in s.bodies.iter().zip(origins.bodies.iter()).enumerate() {
         if let Some(why) = zero_density(b, &s.fixture_ids, &s.fixtures) {
-            let message = format!("dynamic body {i} {why}");
-            findings.note(at.finding(Code::DynamicBodyZeroDensity, message))?;
+            let warning = at.finding(Code::DynamicBodyZeroDensity, String::new());
+            findings.note_worded(warning, || format!("dynamic body {i} {why}"))?;
         }
     }
     Ok(())
@@ -113,18 +113,22 @@ pub(crate) fn joints_start_satisfied(arena: &mut Arena) -> Parsed<()> {
         let (metres, radians) = violation(j, a, b);
         let linear = metres > f64::from(LINEAR_SLOP);
         let angular = radians > ANGULAR_SLOP;
-        let how = match (linear, angular) {
-            (false, false) => continue,
-            (true, false) => format!("{metres:.3} m"),
-            (false, true) => format!("{radians:.3} rad"),
-            (true, true) => format!("{metres:.3} m and {radians:.3} rad"),
+        if !linear && !angular {
+            continue;
+        }
+        let words = || {
+            let how = match (linear, angular) {
+                (true, false) => format!("{metres:.3} m"),
+                (false, _) => format!("{radians:.3} rad"),
+                (true, true) => format!("{metres:.3} m and {radians:.3} rad"),
+            };
+            format!(
+                "joint {i} starts {how} from satisfied where the file places bodies {} and {}; \
+                 an engine pulls them together in its first steps",
+                j.body_a, j.body_b
+            )
         };
-        let message = format!(
-            "joint {i} starts {how} from satisfied where the file places bodies {} and {}; \
-             an engine pulls them together in its first steps",
-            j.body_a, j.body_b
-        );
-        findings.note(at.body_a.finding(Code::JointStartsViolated, message))?;
+        findings.note_worded(at.body_a.finding(Code::JointStartsViolated, String::new()), words)?;
     }
     Ok(())
 }

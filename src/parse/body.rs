@@ -143,9 +143,9 @@ impl<'a> Reader<'a> {
         };
         let value = super::trim_xml(&ty.value);
         let kind = match super::lowercase(value, &mut [0; 16]) {
-            "static" => Ok(BodyKind::Static),
-            "kinematic" => Ok(BodyKind::Kinematic),
-            "dynamic" => Ok(BodyKind::Dynamic),
+            b"static" => Ok(BodyKind::Static),
+            b"kinematic" => Ok(BodyKind::Kinematic),
+            b"dynamic" => Ok(BodyKind::Dynamic),
             _ => Err(problem(
                 Code::UnknownType,
                 ty.at,

@@ -50,12 +50,14 @@ impl<'a> Reader<'a> {
                 // A Version 3 body's Pairs give each of its fixtures a shape, and the shape's
                 // Density attribute its density (spec section 8.2).
                 Shape | Density if self.arena.farseer_layout() => {
-                    let message = format!(
-                        "<{}> in a Version 3 <Fixture> ignored: a body's <Pair> gives the \
-                         fixture its shape, and the shape's Density attribute its density",
-                        child.name()
-                    );
-                    self.discard(&child, message)?;
+                    let words = || {
+                        format!(
+                            "<{}> in a Version 3 <Fixture> ignored: a body's <Pair> gives the \
+                             fixture its shape, and the shape's Density attribute its density",
+                            child.name()
+                        )
+                    };
+                    self.discard(&child, words)?;
                 }
                 Shape => {
                     let (shape, at) = self.id(&child)?;

@@ -103,18 +103,18 @@ const JOINT_TYPES: [&str; 13] = [
 fn joint_kind(value: &str) -> Option<JointKind> {
     use JointKind::*;
     Some(match super::lowercase(value, &mut [0; 16]) {
-        "angle" | "slider" => Unsupported,
-        "revolute" => Revolute,
-        "prismatic" => Prismatic,
-        "distance" => Distance,
-        "pulley" => Pulley,
-        "line" => Line,
-        "weld" => Weld,
-        "friction" => Friction,
-        "gear" => Gear,
-        "wheel" => Wheel,
-        "rope" => Rope,
-        "motor" => Motor,
+        b"angle" | b"slider" => Unsupported,
+        b"revolute" => Revolute,
+        b"prismatic" => Prismatic,
+        b"distance" => Distance,
+        b"pulley" => Pulley,
+        b"line" => Line,
+        b"weld" => Weld,
+        b"friction" => Friction,
+        b"gear" => Gear,
+        b"wheel" => Wheel,
+        b"rope" => Rope,
+        b"motor" => Motor,
         _ => return None,
     })
 }
@@ -158,15 +158,15 @@ impl<'a> Reader<'a> {
             let row = ROWS[name as usize];
             let slot = row.and_then(|row| row.slot(kind));
             if !common && !legacy_body && slot.is_none() {
-                let message =
-                    format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
+                let words =
+                    || format!("<{}> does not belong in a {kind:?} joint; ignored", child.name());
                 // Kept for the writer, unless the kind the joint may end as reads it: a Line
                 // joint may be read as a Wheel (`line_is_wheel`), and written back as one,
                 // where the element would be read.
                 let wheel = row.and_then(|row| row.slot(JointKind::Wheel));
                 match kind == JointKind::Line && wheel.is_some() {
-                    true => self.discard(&child, message)?,
-                    false => self.ignore(&child, message)?,
+                    true => self.discard(&child, words)?,
+                    false => self.ignore(&child, words)?,
                 }
                 continue;
             }
@@ -267,15 +267,16 @@ impl<'a> Reader<'a> {
         self.warn(
             Code::LineJointIsWheel,
             tag.at,
-            "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
+            || "this Line joint has a spring or a motor torque (Farseer's wheel joint under its old name); read as a Wheel joint",
         )?;
         for &(value, at, name) in line_only {
             value.copy(&mut wheel, joint);
-            let message = format!(
-                "<{name}> does not belong in a Wheel joint, which this Line joint is read as; \
-                 ignored"
-            );
-            self.warn(Code::UnknownElement, at, message)?;
+            self.warn(Code::UnknownElement, at, || {
+                format!(
+                    "<{name}> does not belong in a Wheel joint, which this Line joint is read \
+                     as; ignored"
+                )
+            })?;
         }
         Ok(())
     }
@@ -303,13 +304,13 @@ impl<'a> Reader<'a> {
             ));
         };
         if joints::VERSION_2_KINDS.contains(kind) {
-            self.newer_construct(ty.at, &format!("a {value} joint"))?;
+            self.newer_construct(ty.at, format_args!("a {value} joint"))?;
         }
         if kind == JointKind::Unsupported {
             self.warn(
                 Code::FarseerOnlyJoint,
                 ty.at,
-                format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
+                || format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
             )?;
         }
         Ok(kind)

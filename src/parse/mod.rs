@@ -173,9 +173,17 @@ impl<'a> Reader<'a> {
         self.value(tag, text::id)
     }
 
-    /// Records a warning at `at`, placed at its line and column while its text is at hand.
-    pub fn warn(&mut self, code: Code, at: usize, message: impl Into<String>) -> Reading<()> {
-        self.note(Finding::new(code, at, message))
+    /// Records a warning at `at`, placed at its line and column while its text is at hand;
+    /// its message, the words `words` give, is made only if the warning is kept (see
+    /// [`Findings::note_worded`](crate::arena::Findings::note_worded)).
+    pub fn warn<W: Into<String>>(
+        &mut self,
+        code: Code,
+        at: usize,
+        words: impl FnOnce() -> W,
+    ) -> Reading<()> {
+        let warning = self.tok.place(Finding::new(code, at, String::new()));
+        Ok(self.arena.findings.note_worded(warning, || words().into())?)
     }
 
     /// Records `warning`, placed at its line and column while its text is at hand (see
@@ -185,20 +193,20 @@ impl<'a> Reader<'a> {
         Ok(self.arena.findings.note(warning)?)
     }
 
-    /// Warns that `what` needs Version 2 when the file says less.
-    pub fn newer_construct(&mut self, at: usize, what: &str) -> Reading<()> {
+    /// Warns that `what` needs Version 2 when the file says less (`what` is put in words
+    /// only then).
+    pub fn newer_construct(&mut self, at: usize, what: impl std::fmt::Display) -> Reading<()> {
         if self.arena.version >= 2 {
             return Ok(());
         }
-        let said = match self.arena.version {
-            0 => "has no Version (legacy)".to_string(),
-            v => format!("says Version {v}"),
-        };
-        self.warn(
-            Code::ConstructNewerThanVersion,
-            at,
-            format!("{what} is a Version 2 construct, but the file {said}"),
-        )
+        let version = self.arena.version;
+        self.warn(Code::ConstructNewerThanVersion, at, || {
+            let said = match version {
+                0 => "has no Version (legacy)".to_string(),
+                v => format!("says Version {v}"),
+            };
+            format!("{what} is a Version 2 construct, but the file {said}")
+        })
     }
 
     /// Where offset `at` is, for what is checked once the whole file is read.
@@ -211,7 +219,7 @@ impl<'a> Reader<'a> {
     /// ([`rules::angle_in_degrees`]).
     pub fn radians(&mut self, tag: &Tag) -> Reading<f32> {
         let (v, at) = self.value(tag, text::float)?;
-        if let Some(warning) = rules::angle_in_degrees(tag.name(), v, at) {
+        if let Some(warning) = rules::angle_in_degrees(&tag.name, v, at) {
             self.note(warning)?;
         }
         Ok(v)
@@ -234,10 +242,10 @@ impl<'a> Reader<'a> {
     /// being read.
     pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Reading<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
-            let hint = did_you_mean(attr.key, known);
-            let message =
-                format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name());
-            self.warn(Code::UnknownElement, attr.at, message)?;
+            self.warn(Code::UnknownElement, attr.at, || {
+                let hint = did_you_mean(attr.key, known);
+                format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name())
+            })?;
             if self.keeping() {
                 self.keep_str(KeptAt::Attribute, &verbatim(tag, attr));
             }
@@ -248,28 +256,28 @@ impl<'a> Reader<'a> {
     /// Warns that `child` is not part of `parent`, with the nearest of `parent`'s `known`
     /// elements as a hint, and skips it (see [`Reader::ignore`]).
     pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Reading<()> {
-        let hint = match names::nearest(child.name(), known) {
-            Some(near) => format!(" (did you mean <{near}>?)"),
-            None => String::new(),
-        };
-        let message =
-            format!("unknown element <{}> in <{}> ignored{hint}", child.name(), parent.name());
-        self.ignore(child, message)
+        self.ignore(child, || {
+            let hint = match names::nearest(child.name(), known) {
+                Some(near) => format!(" (did you mean <{near}>?)"),
+                None => String::new(),
+            };
+            format!("unknown element <{}> in <{}> ignored{hint}", child.name(), parent.name())
+        })
     }
 
-    /// Warns (`unknown-element`, with `message`) and skips `child`, keeping its text for the
-    /// writer at the end of where it was.
-    pub fn ignore(&mut self, child: &Tag, message: String) -> Reading<()> {
-        self.discard(child, message)?;
+    /// Warns (`unknown-element`, in the words `words` give) and skips `child`, keeping its
+    /// text for the writer at the end of where it was.
+    pub fn ignore(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Reading<()> {
+        self.discard(child, words)?;
         let place = KeptAt::Inside { within: self.within, before: "" };
         self.keep(self.object, place, child.at, self.tok.position());
         Ok(())
     }
 
-    /// Warns (`unknown-element`, with `message`) and skips `child`, comments inside it
-    /// included, keeping nothing: for what the writer writes in another form.
-    pub fn discard(&mut self, child: &Tag, message: String) -> Reading<()> {
-        self.warn(Code::UnknownElement, child.at, message)?;
+    /// Warns (`unknown-element`, in the words `words` give) and skips `child`, comments
+    /// inside it included, keeping nothing: for what the writer writes in another form.
+    pub fn discard(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Reading<()> {
+        self.warn(Code::UnknownElement, child.at, words)?;
         self.tok.check_attributes(child)?;
         self.tok.kept.pin(child.at);
         self.tok.skip(child)?;
@@ -421,9 +429,9 @@ impl<'a> Reader<'a> {
 
     /// Warns that a scalar element was repeated (the last one wins).
     pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Reading<()> {
-        let message =
-            format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name());
-        self.warn(Code::DuplicateElement, child.at, message)
+        self.warn(Code::DuplicateElement, child.at, || {
+            format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name())
+        })
     }
 
     /// Reads every child of a container, each of which must be an `item` element (any
@@ -463,16 +471,16 @@ pub(crate) fn did_you_mean(name: &str, known: &[&str]) -> String {
     }
 }
 
-/// `word` in ASCII lower case, made in `buffer` when it fits (the words it is matched
-/// against are shorter), so that matching a Type attribute allocates nothing.
-pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b str {
+/// The bytes of `word` in ASCII lower case, made in `buffer` when it fits (the words it is
+/// matched against are shorter), so that matching a Type attribute allocates nothing. Bytes,
+/// not text: the words matched are ASCII, and text would be checked again for UTF-8.
+pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b [u8] {
     let Some(bytes) = buffer.get_mut(..word.len()) else {
-        return word;
+        return word.as_bytes();
     };
     bytes.copy_from_slice(word.as_bytes());
     bytes.make_ascii_lowercase();
-    // Changing the case of ASCII letters keeps the text valid.
-    std::str::from_utf8(bytes).unwrap_or_default()
+    bytes
 }
 
 /// At most 40 characters of `text`, for messages.

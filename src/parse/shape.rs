@@ -52,9 +52,9 @@ impl<'a> Reader<'a> {
                 continue;
             };
             if !belongs(kind, name) {
-                let message =
-                    format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
-                self.ignore(&child, message)?;
+                let words =
+                    || format!("<{}> does not belong in a {kind:?} shape; ignored", child.name());
+                self.ignore(&child, words)?;
                 continue;
             }
             if repeated && name == ShapeChild::Vertices {
@@ -69,7 +69,7 @@ impl<'a> Reader<'a> {
                     if !repeated && name_str.is_some() {
                         let message = "<Shape> has both a Name attribute and a <Name> element; \
                                        the element wins";
-                        self.warn(Code::DuplicateElement, child.at, message)?;
+                        self.warn(Code::DuplicateElement, child.at, || message)?;
                     }
                     name_str = Some(self.string(&child)?);
                 }
@@ -161,11 +161,11 @@ impl<'a> Reader<'a> {
         };
         let value = super::trim_xml(&ty.value);
         let (kind, is_loop) = match super::lowercase(value, &mut [0; 16]) {
-            "circle" => (ShapeKind::Circle, false),
-            "polygon" => (ShapeKind::Polygon, false),
-            "edge" => (ShapeKind::Edge, false),
-            "chain" => (ShapeKind::Chain, false),
-            "loop" => (ShapeKind::Chain, true),
+            b"circle" => (ShapeKind::Circle, false),
+            b"polygon" => (ShapeKind::Polygon, false),
+            b"edge" => (ShapeKind::Edge, false),
+            b"chain" => (ShapeKind::Chain, false),
+            b"loop" => (ShapeKind::Chain, true),
             _ => {
                 return Err(problem(
                     Code::UnknownType,
@@ -179,7 +179,7 @@ impl<'a> Reader<'a> {
             }
         };
         if matches!(kind, ShapeKind::Edge | ShapeKind::Chain) {
-            self.newer_construct(ty.at, &format!("a {value} shape"))?;
+            self.newer_construct(ty.at, format_args!("a {value} shape"))?;
         }
         let mut shape = Shape::new(kind);
         shape.is_loop = is_loop;

@@ -53,9 +53,10 @@ impl<'a> Reader<'a> {
     pub(super) fn end_world(&mut self, seen: &Seen) -> Reading<()> {
         for container in Container::ALL {
             if !seen.contains(WorldChild::of(container)) {
-                let message = format!("the file has no <{}>; read as empty", container.name());
-                let missing = self.arena.origins.world.finding(Code::MissingContainer, message);
-                self.arena.findings.note(missing)?;
+                let missing =
+                    self.arena.origins.world.finding(Code::MissingContainer, String::new());
+                let words = || format!("the file has no <{}>; read as empty", container.name());
+                self.arena.findings.note_worded(missing, words)?;
             }
         }
         Ok(())
@@ -176,12 +177,10 @@ impl<'a> Reader<'a> {
         let attrs = self.tok.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["Version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
-            return self.warn(
-                Code::LegacyUnversioned,
-                root.at,
-                "the file has no Version: read as a legacy (2010) editor file, whose joints name \
-                 their bodies with JointA and JointB",
-            );
+            return self.warn(Code::LegacyUnversioned, root.at, || {
+                "the file has no Version: read as a legacy (2010) editor file, whose joints \
+                     name their bodies with JointA and JointB"
+            });
         };
         self.arena.version = match super::trim_xml(&version.value) {
             "1" => 1,

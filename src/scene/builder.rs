@@ -93,8 +93,9 @@ impl SceneBuilder {
     /// (the loader rejects NUL bytes before this point).
     pub fn add_str(&mut self, text: &str) -> PoolStr {
         let offset = self.strings.len();
-        let text = text.split('\0').next().unwrap_or_default();
-        self.strings.extend_from_slice(text.as_bytes());
+        let text = text.as_bytes();
+        let text = &text[..memchr::memchr(0, text).unwrap_or(text.len())];
+        self.strings.extend_from_slice(text);
         self.strings.push(0);
         PoolStr(offset)
     }
