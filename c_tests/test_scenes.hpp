@@ -87,11 +87,14 @@ inline std::string project_file_bytes(const std::string& relative) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// The scene written back to text (b2s_write_memory), or "" when that fails.
+/// The scene written back to text (b2s_write_memory) in box2scene's own dialect, which holds
+/// every scene (a file's own engine dialect may refuse one), or "" when that fails.
 inline std::string written_text(const b2s_scene* scene) {
     char* text = nullptr;
     size_t size = 0;
-    if (b2s_write_memory(scene, nullptr, &text, &size, nullptr) != B2S_CODE_OK) {
+    b2s_write_options options = b2s_write_options_default();
+    options.dialect = B2S_DIALECT_BOX2SCENE;
+    if (b2s_write_memory(scene, &options, &text, &size, nullptr) != B2S_CODE_OK) {
         return std::string();
     }
     std::string copy(text, size);
