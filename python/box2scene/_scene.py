@@ -136,17 +136,33 @@ class Scene:
             f"{len(self.joints)} joints, {len(self.diagnostics)} diagnostics>"
         )
 
-    def to_xml(self, all_fields: bool = False) -> str:
+    @property
+    def dialect(self) -> str:
+        """The dialect the scene remembers, which :meth:`to_xml` writes by default: that of
+        the file it was loaded from (``"box2scene"``, ``"farseer-3.3"``, ``"farseer-2013"``,
+        ``"farseer-3.5"``, ``"aether"``), box2scene's for a built scene."""
+        return self._native.dialect()
+
+    def to_xml(self, all_fields: bool = False, dialect: Optional[str] = None) -> str:
         """The scene as Box2Scene XML, which loads back to the same records (every float
         bit for bit). A loaded scene keeps its comments and unknown content. ``all_fields``
-        writes fields equal to their defaults too. Raises :class:`Error` for what cannot be
-        written."""
-        return self._native.to_xml(all_fields)
+        writes fields equal to their defaults too. ``dialect`` names the dialect to write
+        (``"box2scene"``, ``"farseer-3.3"``, ``"farseer-2013"``, ``"farseer-3.5"``,
+        ``"aether"``); by default the scene's own, never another: a scene read from an
+        engine's file that its engine's reader cannot take raises ``dialect-cannot-hold``,
+        and ``dialect="box2scene"`` writes it in box2scene's form. Raises :class:`Error`
+        for what cannot be written."""
+        return self._native.to_xml(all_fields, dialect)
 
-    def write(self, path: "Union[str, os.PathLike[str]]", all_fields: bool = False) -> None:
+    def write(
+        self,
+        path: "Union[str, os.PathLike[str]]",
+        all_fields: bool = False,
+        dialect: Optional[str] = None,
+    ) -> None:
         """Writes :meth:`to_xml`'s text to ``path``, replacing the file atomically: a
         failed write leaves the old file as it was."""
-        self._native.write(os.fspath(path), all_fields)
+        self._native.write(os.fspath(path), all_fields, dialect)
 
     def to_json(self) -> str:
         """Every field of every record as JSON, floats in shortest round-trip form."""

@@ -7,8 +7,8 @@ use std::sync::Mutex;
 
 use box2scene::draw::{Picture, Pose};
 use box2scene::{
-    Body, BodyKind, Builder, Code, Diagnostic, Fixture, Joint, JointKind, LoadOptions, NONE,
-    Position, Scene, Shape, ShapeKind, UserData, Vec2, WriteOptions,
+    Body, BodyKind, Builder, Code, Diagnostic, Dialect, Fixture, Joint, JointKind, LoadOptions,
+    NONE, Position, Scene, Shape, ShapeKind, UserData, Vec2, WriteOptions,
 };
 use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -368,8 +368,17 @@ fn dicts<'py, T>(
     Ok(list)
 }
 
-fn write_options(all_fields: bool) -> WriteOptions {
-    WriteOptions { all_fields, ..WriteOptions::default() }
+/// How `to_xml` and `write` write: `dialect` is a dialect's own name (`"box2scene"`,
+/// `"aether"`, ...), or None for the one the scene remembers.
+fn write_options(all_fields: bool, dialect: Option<&str>) -> PyResult<WriteOptions> {
+    let dialect = match dialect {
+        None => 0,
+        Some(name) => Dialect::named(name).ok_or_else(|| {
+            let names: Vec<&str> = Dialect::ALL.iter().map(|d| d.name()).collect();
+            PyValueError::new_err(format!("unknown dialect {name:?} (one of {})", names.join(", ")))
+        })? as u32,
+    };
+    Ok(WriteOptions { all_fields, dialect, ..WriteOptions::default() })
 }
 
 /// One column of `Scene.arrays()`: its name, NumPy's type of its items, how many items each
@@ -581,11 +590,24 @@ impl NativeScene {
     fn fixture_ids(&self) -> Vec<u32> {
         self.scene.fixture_id_pool().to_vec()
     }
-    fn to_xml(&self, py: Python<'_>, all_fields: bool) -> PyResult<String> {
-        self.scene.to_xml(&write_options(all_fields)).map_err(|e| error(py, e))
+    /// The dialect the scene remembers (that of its file; box2scene's for a built one).
+    fn dialect(&self) -> &'static str {
+        self.scene.dialect().name()
     }
-    fn write(&self, py: Python<'_>, path: PathBuf, all_fields: bool) -> PyResult<()> {
-        let options = write_options(all_fields);
+    #[pyo3(signature = (all_fields, dialect=None))]
+    fn to_xml(&self, py: Python<'_>, all_fields: bool, dialect: Option<&str>) -> PyResult<String> {
+        let options = write_options(all_fields, dialect)?;
+        self.scene.to_xml(&options).map_err(|e| error(py, e))
+    }
+    #[pyo3(signature = (path, all_fields, dialect=None))]
+    fn write(
+        &self,
+        py: Python<'_>,
+        path: PathBuf,
+        all_fields: bool,
+        dialect: Option<&str>,
+    ) -> PyResult<()> {
+        let options = write_options(all_fields, dialect)?;
         py.detach(|| box2scene::write_path(&self.scene, &path, &options)).map_err(|e| error(py, e))
     }
     fn to_json(&self) -> String {
@@ -633,11 +655,8 @@ impl NativeScene {
             };
             return Err(error(py, invalid));
         }
-        let trajectories = trajectories
-            .iter()
-            .flatten()
-            .map(vec2_from_py)
-            .collect::<PyResult<Vec<Vec2>>>()?;
+        let trajectories =
+            trajectories.iter().flatten().map(vec2_from_py).collect::<PyResult<Vec<Vec2>>>()?;
         let picture = Picture {
             title,
             start: start.as_deref(),
