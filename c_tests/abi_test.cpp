@@ -59,11 +59,15 @@ PIN_AT(b2s_fixture, filter, 24);
 PIN_AT(b2s_fixture, is_sensor, 36);
 PIN_AT(b2s_fixture, user_data, 40);
 
-PIN_SIZE(b2s_working_range, 108);
+PIN_SIZE(b2s_working_range, 124);
 PIN_AT(b2s_working_range, max_length, 0);
 PIN_AT(b2s_working_range, world_max_linear_speed, 100);
-PIN_AT(b2s_working_range, friction_at_anchors, 104);
-PIN_AT(b2s_working_range, prismatic_lever_to_b, 105);
+PIN_AT(b2s_working_range, linear_slop, 104);
+PIN_AT(b2s_working_range, max_revolute_limit, 108);
+PIN_AT(b2s_working_range, centroid_tolerance, 112);
+PIN_AT(b2s_working_range, name_bytes, 116);
+PIN_AT(b2s_working_range, friction_at_anchors, 120);
+PIN_AT(b2s_working_range, prismatic_lever_to_b, 121);
 
 PIN_SIZE(b2s_mass_data, 20);
 PIN_AT(b2s_mass_data, mass, 0);

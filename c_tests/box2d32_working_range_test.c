@@ -11,6 +11,8 @@
  */
 #include "box2d32_support.h"
 
+#include <box2d/constants.h>
+
 #define STEPS 600
 
 /* Two dynamic triangles of `size` m, body B `gap` m from body A along x, and a joint of
@@ -295,6 +297,17 @@ static int a_fixed_rotation_spin_is_reported_lossy(void) {
     return 0;
 }
 
+/* The engine facts of v3.2's table are v3.2's own constants (box2d/constants.h and
+ * math_functions.h, at one length unit per metre), to the bit. */
+static int the_tables_engine_facts_are_v32s_constants(void) {
+    const b2s_working_range* range = b2s_engine_working_range(B2S_ENGINE_BOX2D32);
+    ENSURE_FLOAT(range->linear_slop, B2_LINEAR_SLOP);
+    ENSURE_FLOAT(range->max_revolute_limit, 0.99f * B2_PI);
+    ENSURE_FLOAT(range->centroid_tolerance, 0.01f * B2_LINEAR_SLOP);
+    ENSURE_EQ(range->name_bytes, B2_NAME_LENGTH);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
@@ -306,5 +319,6 @@ int main(void) {
     failed += RUN_TEST(a_rope_with_default_anchors_on_a_small_ball_is_built_and_holds);
     failed += RUN_TEST(a_prismatic_lever_177_radii_along_its_axis_is_refused);
     failed += RUN_TEST(a_fixed_rotation_spin_is_reported_lossy);
+    failed += RUN_TEST(the_tables_engine_facts_are_v32s_constants);
     return failed;
 }

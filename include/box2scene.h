@@ -1311,6 +1311,34 @@ typedef struct b2s_working_range {
    */
   float world_max_linear_speed;
   /**
+   * m: the engine's linear slop (2.x `b2_linearSlop` in `b2_settings.h`, v3
+   * `B2_LINEAR_SLOP` in its private `constants.h`, at one length unit per metre): v3
+   * refuses a segment no longer than it, and every version raises a distance joint's
+   * length to it.
+   */
+  float linear_slop;
+  /**
+   * rad: the farthest a revolute joint's limit may reach either way (v3 asserts
+   * -0.99 pi <= lower and upper <= 0.99 pi, `b2CreateRevoluteJoint`; v3.2 even when the
+   * limit is off); the executor clamps a limit to it. `FLT_MAX` where the version has no
+   * such bound.
+   */
+  float max_revolute_limit;
+  /**
+   * m: how far a polygon's Centroid may lie from the one the engine computes before the
+   * executor reports it lost (a hundredth of v3's linear slop: float noise of
+   * `b2ComputeHull`, not a different centroid). `FLT_MAX` where the executor does not
+   * compare them.
+   */
+  float centroid_tolerance;
+  /**
+   * Bytes: the longest body name the engine keeps (v3.1 `name[32]` in `body.h` with its
+   * NUL; v3.2 `B2_NAME_LENGTH` in `constants.h`, which a host's build may redefine, so
+   * the v3.2 adapter reads that macro itself). 0 where the engine's bodies have no name
+   * (2.x).
+   */
+  uint32_t name_bytes;
+  /**
    * Whether a friction joint acts at its anchors, whose levers then count (else at the
    * body origins).
    */

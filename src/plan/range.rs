@@ -108,6 +108,26 @@ pub struct WorkingRange {
     /// m/s: the maximum linear speed the executor gives the world (above `max_speed`, with
     /// room for gravity); `FLT_MAX` where the version has no such setting.
     pub world_max_linear_speed: f32,
+    /// m: the engine's linear slop (2.x `b2_linearSlop` in `b2_settings.h`, v3
+    /// `B2_LINEAR_SLOP` in its private `constants.h`, at one length unit per metre): v3
+    /// refuses a segment no longer than it, and every version raises a distance joint's
+    /// length to it.
+    pub linear_slop: f32,
+    /// rad: the farthest a revolute joint's limit may reach either way (v3 asserts
+    /// -0.99 pi <= lower and upper <= 0.99 pi, `b2CreateRevoluteJoint`; v3.2 even when the
+    /// limit is off); the executor clamps a limit to it. `FLT_MAX` where the version has no
+    /// such bound.
+    pub max_revolute_limit: f32,
+    /// m: how far a polygon's Centroid may lie from the one the engine computes before the
+    /// executor reports it lost (a hundredth of v3's linear slop: float noise of
+    /// `b2ComputeHull`, not a different centroid). `FLT_MAX` where the executor does not
+    /// compare them.
+    pub centroid_tolerance: f32,
+    /// Bytes: the longest body name the engine keeps (v3.1 `name[32]` in `body.h` with its
+    /// NUL; v3.2 `B2_NAME_LENGTH` in `constants.h`, which a host's build may redefine, so
+    /// the v3.2 adapter reads that macro itself). 0 where the engine's bodies have no name
+    /// (2.x).
+    pub name_bytes: u32,
     /// Whether a friction joint acts at its anchors, whose levers then count (else at the
     /// body origins).
     pub friction_at_anchors: bool,
@@ -119,7 +139,7 @@ pub struct WorkingRange {
 impl WorkingRange {
     /// Every numeric bound by its field's name, in the order of the fields (for the Python
     /// extension and the docs' table).
-    pub fn bounds(&self) -> [(&'static str, f32); 26] {
+    pub fn bounds(&self) -> [(&'static str, f32); 29] {
         [
             ("max_length", self.max_length),
             ("max_angle", self.max_angle),
@@ -147,21 +167,34 @@ impl WorkingRange {
             ("max_wheel_violation_gyrations", self.max_wheel_violation_gyrations),
             ("max_joint_acceleration", self.max_joint_acceleration),
             ("world_max_linear_speed", self.world_max_linear_speed),
+            ("linear_slop", self.linear_slop),
+            ("max_revolute_limit", self.max_revolute_limit),
+            ("centroid_tolerance", self.centroid_tolerance),
         ]
     }
 }
 
-/// The ABI is pinned: 26 floats and two flags, also asserted on the C++ side.
+/// The ABI is pinned: 29 floats, a count and two flags, also asserted on the C++ side.
 const _: () = {
     use std::mem::{offset_of, size_of};
     assert!(offset_of!(WorkingRange, world_max_linear_speed) == 100);
-    assert!(offset_of!(WorkingRange, friction_at_anchors) == 104);
-    assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 105);
-    assert!(size_of::<WorkingRange>() == 108);
+    assert!(offset_of!(WorkingRange, linear_slop) == 104);
+    assert!(offset_of!(WorkingRange, max_revolute_limit) == 108);
+    assert!(offset_of!(WorkingRange, centroid_tolerance) == 112);
+    assert!(offset_of!(WorkingRange, name_bytes) == 116);
+    assert!(offset_of!(WorkingRange, friction_at_anchors) == 120);
+    assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 121);
+    assert!(size_of::<WorkingRange>() == 124);
 };
 
 /// No bound.
 const NONE: f32 = f32::MAX;
+
+/// pi as Box2D writes it (`b2_pi`, v3 `B2_PI`), rounded to a float.
+const PI: f32 = 3.14159265359;
+
+/// The linear slop of every version: 2.x's `b2_linearSlop` and v3's `B2_LINEAR_SLOP`.
+const LINEAR_SLOP: f32 = 0.005;
 
 /// Box2D 2.4.1, as `c_tests/range_sweep_test.cpp` and `finite_worlds_test.cpp` measured it.
 const BOX2D_24: WorkingRange = WorkingRange {
@@ -191,6 +224,10 @@ const BOX2D_24: WorkingRange = WorkingRange {
     max_wheel_violation_gyrations: NONE,
     max_joint_acceleration: NONE,
     world_max_linear_speed: NONE,
+    linear_slop: LINEAR_SLOP,
+    max_revolute_limit: NONE,
+    centroid_tolerance: NONE,
+    name_bytes: 0,
     friction_at_anchors: true,
     prismatic_lever_to_b: true,
 };
@@ -208,6 +245,9 @@ const BOX2D_31: WorkingRange = WorkingRange {
     max_wheel_violation_gyrations: 4.0,
     max_joint_acceleration: 1e5,
     world_max_linear_speed: 1.5e3,
+    max_revolute_limit: 0.99 * PI,
+    centroid_tolerance: 0.01 * LINEAR_SLOP,
+    name_bytes: 31,
     friction_at_anchors: false,
     ..BOX2D_24
 };
@@ -217,6 +257,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
 const BOX2D_32: WorkingRange = WorkingRange {
     max_pulled_violation: NONE,
     max_wheel_violation: NONE,
+    name_bytes: 10,
     friction_at_anchors: true,
     ..BOX2D_31
 };
@@ -240,5 +281,18 @@ mod tests {
         assert_eq!(Engine::Box2d23.working_range().max_length, 1e5);
         assert_eq!(Engine::Box2d31.working_range().max_length, 1e4);
         assert_eq!(Engine::Box2d32.working_range().max_length, 1e4);
+    }
+
+    #[test]
+    fn v3_engine_facts_are_the_float_products_the_adapters_had() {
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let r = engine.working_range();
+            assert_eq!(r.linear_slop.to_bits(), 0.005f32.to_bits());
+            assert_eq!(r.max_revolute_limit.to_bits(), 0x4047_0D23);
+            assert_eq!(r.centroid_tolerance.to_bits(), 0x3851_B717);
+        }
+        assert_eq!(Engine::Box2d31.working_range().name_bytes, 31);
+        assert_eq!(Engine::Box2d32.working_range().name_bytes, 10);
+        assert_eq!(Engine::Box2d24.working_range().max_revolute_limit, f32::MAX);
     }
 }

@@ -201,7 +201,7 @@ static b2BodyDef b2s3_body_def(b2s3_builder* b, uint32_t index, const b2s_body* 
 
 /* What a body's def cannot say of the file, reported. */
 static void b2s3_report_body_losses(b2s3_builder* b, uint32_t index, const b2s_body* body) {
-    if (fabsf(body->angle) > 3.14159265359f) {
+    if (fabsf(body->angle) > B2_PI) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_CAPTURE, "body", index, body->name,
                     B2S3_ENGINE " keeps a rotation, not an angle: the whole turns of Angle "
                     "%.9g are lost, and a capture writes it within +-pi",

@@ -254,7 +254,7 @@ static void b2s3_check_violation(b2s3_builder* b, uint32_t index, const b2s_join
         float gyration = fminf(b2s3_gyration(&b->masses[joint->body_a]),
                                b2s3_gyration(&b->masses[joint->body_b]));
         float bound = b2s3_range()->max_wheel_violation_gyrations * gyration;
-        if (across > B2S3_LINEAR_SLOP && !(across <= bound)) {
+        if (across > b2s3_range()->linear_slop && !(across <= bound)) {
             b2s3_fail(check,
                       "it starts violated by %.9g m across its axis between two dynamic "
                       "bodies, beyond " B2S3_ENGINE "'s working range (at most %g radii of "
@@ -342,10 +342,6 @@ static b2s3_frames b2s3_frames_from(const b2s_joint* joint) {
         B2S3_JOINT_BASE(def).collideConnected = (joint)->collide_connected;                    \
     } while (0)
 
-/* v3 asserts that a revolute limit lies within +-0.99 pi (v3.2's snapshot even when the
- * limit is off). */
-#define B2S3_REVOLUTE_LIMIT (0.99f * 3.14159265359f)
-
 static b2JointId b2s3_make_revolute(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
                                     b2BodyId a, b2BodyId bb) {
     b2RevoluteJointDef def = b2DefaultRevoluteJointDef();
@@ -354,8 +350,10 @@ static b2JointId b2s3_make_revolute(b2s3_builder* b, uint32_t index, const b2s_j
     B2S3_REVOLUTE_FRAMES(def, f);
     float lower = joint->lower_limit, upper = joint->upper_limit;
     b2s3_ordered_limits(b, index, joint, "LowerAngle", "UpperAngle", &lower, &upper);
-    def.lowerAngle = b2s3_clamped(lower, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
-    def.upperAngle = b2s3_clamped(upper, -B2S3_REVOLUTE_LIMIT, B2S3_REVOLUTE_LIMIT);
+    /* v3 asserts that a limit lies within +-0.99 pi (v3.2's snapshot even when it is off). */
+    float bound = b2s3_range()->max_revolute_limit;
+    def.lowerAngle = b2s3_clamped(lower, -bound, bound);
+    def.upperAngle = b2s3_clamped(upper, -bound, bound);
     if (joint->enable_limit && (def.lowerAngle != lower || def.upperAngle != upper)) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
                     "its limit [%.9g, %.9g] reaches beyond " B2S3_ENGINE "'s +-0.99 pi; it was "
@@ -390,14 +388,15 @@ static b2JointId b2s3_make_prismatic(b2s3_builder* b, uint32_t index, const b2s_
 /* v3 asserts a length above 0 and raises it to its linear slop. */
 static float b2s3_joint_length(b2s3_builder* b, uint32_t index, const b2s_joint* joint,
                                const char* field, float length) {
-    if (length >= B2S3_LINEAR_SLOP) {
+    float slop = b2s3_range()->linear_slop;
+    if (length >= slop) {
         return length;
     }
     B2S3_REPORT(b, B2S_CODE_LOSSY_JOINT, "joint", index, joint->name,
                 "%s %.9g lies under " B2S3_ENGINE "'s shortest joint length, %g m, which was "
                 "used",
-                field, (double)length, (double)B2S3_LINEAR_SLOP);
-    return B2S3_LINEAR_SLOP;
+                field, (double)length, (double)slop);
+    return slop;
 }
 
 static b2DistanceJointDef b2s3_distance_def(const b2s_joint* joint, b2BodyId a, b2BodyId bb) {

@@ -42,7 +42,7 @@ static bool b2s3_vertex_count_fits(const b2s_shape* shape, uint32_t count) {
 
 /* v3 refuses (asserts against) a segment no longer than its linear slop. */
 static bool b2s3_segment_long_enough(b2Vec2 a, b2Vec2 b) {
-    return b2DistanceSquared(a, b) > B2S3_LINEAR_SLOP * B2S3_LINEAR_SLOP;
+    return b2DistanceSquared(a, b) > b2s3_range()->linear_slop * b2s3_range()->linear_slop;
 }
 
 /* `end` continued by one segment away from `inner`: a ghost vertex v3 needs where the file
@@ -63,10 +63,6 @@ static float b2s3_hull_area(const b2Hull* hull) {
     return 0.5f * area;
 }
 
-/* m: a polygon's Centroid this close to the one v3 computes is the same point written by
- * another float computation, not an override. */
-#define B2S3_CENTROID_NOISE (0.01f * B2S3_LINEAR_SLOP)
-
 static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* shape,
                               const b2Vec2* points, uint32_t count, b2s3_geometry* out) {
     if (count == 2) {
@@ -74,7 +70,7 @@ static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* 
             B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
                         "its two vertices are no farther apart than " B2S3_ENGINE "'s linear "
                         "slop (%g m); shape not created",
-                        (double)B2S3_LINEAR_SLOP);
+                        (double)b2s3_range()->linear_slop);
             return false;
         }
         out->kind = B2S3_SEGMENT;
@@ -88,13 +84,14 @@ static bool b2s3_make_polygon(b2s3_builder* b, uint32_t index, const b2s_shape* 
         B2S3_REPORT(b, B2S_CODE_DEGENERATE_POLYGON, "shape", index, shape->name,
                     B2S3_ENGINE " finds no polygon in its vertices (b2ComputeHull welds points "
                     "closer than %g m and drops collinear ones); shape not created",
-                    (double)(4.0f * B2S3_LINEAR_SLOP));
+                    (double)(4.0f * b2s3_range()->linear_slop));
         return false;
     }
     out->kind = B2S3_POLYGON;
     out->polygon = b2MakePolygon(&hull, 0.0f);
     if (shape->centroid_given &&
-        b2Distance(b2s3_to_b2(shape->centroid), out->polygon.centroid) > B2S3_CENTROID_NOISE) {
+        b2Distance(b2s3_to_b2(shape->centroid), out->polygon.centroid) >
+                                   b2s3_range()->centroid_tolerance) {
         B2S3_REPORT(b, B2S_CODE_LOSSY_SHAPE, "shape", index, shape->name,
                     "its Centroid (%.9g, %.9g) cannot be given to " B2S3_ENGINE ", which uses "
                     "the polygon's own (%.9g, %.9g)",
@@ -255,7 +252,7 @@ static void b2s3_make_shape(b2s3_builder* b, uint32_t index) {
                     "shape", index, shape->name,
                     "a segment of it is no longer than " B2S3_ENGINE "'s linear slop (%g m), "
                     "which it refuses; shape not created",
-                    (double)B2S3_LINEAR_SLOP);
+                    (double)b2s3_range()->linear_slop);
         made = false;
     }
     if (!made) {

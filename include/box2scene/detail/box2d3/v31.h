@@ -27,13 +27,9 @@ typedef b2s_box2d3_report b2s3_report_t;
 typedef b2s_box2d3_reports b2s3_reports_t;
 typedef b2s_box2d3_built b2s3_built_t;
 
-/* v3.1's linear slop (B2_LINEAR_SLOP in its private constants.h) at one length unit per
- * metre: v3.1 refuses a segment no longer than it and raises a distance joint's length to
- * it. */
-#define B2S3_LINEAR_SLOP 0.005f
-
-/* The bytes of a body's name v3.1 keeps (body.h: name[32], NUL-terminated). */
-#define B2S3_NAME_LENGTH ((size_t)31)
+/* The bytes of a body's name v3.1 keeps: the working range's name_bytes (body.h: name[32],
+ * NUL-terminated). */
+#define B2S3_NAME_LENGTH ((size_t)b2s3_range()->name_bytes)
 
 /* ---- bodies */
 

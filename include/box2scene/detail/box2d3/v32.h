@@ -38,10 +38,8 @@ typedef b2s_box2d32_report b2s3_report_t;
 typedef b2s_box2d32_reports b2s3_reports_t;
 typedef b2s_box2d32_built b2s3_built_t;
 
-/* v3.2's linear slop (B2_LINEAR_SLOP) at one length unit per metre: it refuses a segment no
- * longer than that and raises a distance joint's length to it. */
-#define B2S3_LINEAR_SLOP 0.005f
-/* The bytes of a body's name v3.2 keeps (B2_NAME_LENGTH, which a build may redefine). */
+/* The bytes of a body's name v3.2 keeps: B2_NAME_LENGTH itself, which a host's build may
+ * redefine (the working range's name_bytes is its default). */
 #define B2S3_NAME_LENGTH ((size_t)B2_NAME_LENGTH)
 
 /* ---- bodies */
