@@ -42,19 +42,20 @@ from ._scene import Builder, Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
-# The bytes of a body's name Box2D v3.1 keeps (B2_NAME_LENGTH less its terminating NUL).
-NAME_LENGTH = 31
-
 # The working range: the library's measured table for Box2D v3.1 (pyb2d3 is built on v3.1.1),
 # the one the C adapter for v3.1 reads (docs/working-range.md).
 RANGE = SimpleNamespace(**_native.working_range("box2d-3.1"))
 WORLD_MAX_LINEAR_SPEED = RANGE.world_max_linear_speed
+# The engine's own facts, in the same table: its linear slop, the bound of a revolute
+# limit, how far a Centroid may lie from v3's own, and the bytes of a body's name it keeps.
+LINEAR_SLOP = RANGE.linear_slop
+REVOLUTE_LIMIT = RANGE.max_revolute_limit
+CENTROID_NOISE = RANGE.centroid_tolerance
+NAME_LENGTH = RANGE.name_bytes
 
 ENGINE = "Box2D v3"
-LINEAR_SLOP = f32(0.005)
-PI = f32(3.14159265359)
-REVOLUTE_LIMIT = float(F(0.99) * F(PI))
-CENTROID_NOISE = float(F(0.01) * F(LINEAR_SLOP))
+# v3's B2_PI (3.14159265359f) is the float nearest pi.
+PI = f32(math.pi)
 FLT_EPSILON = float(np.finfo(np.float32).eps)
 MAX_POLYGON_VERTICES = 8
 
@@ -883,7 +884,7 @@ class _Build:
         if j.kind == "revolute":
             d = self.common(b2.RevoluteJointDef(), j, a, b)
             # v3 clamps a reference angle to +-pi but measures the joint angle unwound.
-            d.reference_angle = f32(math.remainder(j.reference_angle, 6.283185307179586))
+            d.reference_angle = f32(math.remainder(j.reference_angle, math.tau))
             lower, upper = self.ordered_limits(index, j, "LowerAngle", "UpperAngle")
             lo = min(max(f32(lower), -REVOLUTE_LIMIT), REVOLUTE_LIMIT)
             hi = min(max(f32(upper), -REVOLUTE_LIMIT), REVOLUTE_LIMIT)

@@ -1043,6 +1043,7 @@ fn working_range<'py>(py: Python<'py>, engine: &str) -> PyResult<Bound<'py, PyDi
     for (name, value) in r.bounds() {
         d.set_item(name, f64::from(value))?;
     }
+    d.set_item("name_bytes", r.name_bytes)?;
     d.set_item("friction_at_anchors", r.friction_at_anchors)?;
     d.set_item("prismatic_lever_to_b", r.prismatic_lever_to_b)?;
     Ok(d)
