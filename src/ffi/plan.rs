@@ -11,6 +11,6 @@ use crate::plan::{Engine, WorkingRange};
 #[unsafe(no_mangle)]
 pub extern "C" fn b2s_engine_working_range(engine: u32) -> *const WorkingRange {
     guard(ptr::null, || {
-        Engine::from_u32(engine).map_or(ptr::null(), |e| ptr::from_ref(e.working_range()))
+        Engine::try_from(engine).map_or(ptr::null(), |e| ptr::from_ref(e.working_range()))
     })
 }

@@ -2,6 +2,8 @@
 //! object out and reports it `beyond-box2d-range`. Every number here was set by a
 //! measurement, which `docs/working-range.md` gives bound by bound.
 
+use crate::scene::u32_enum_conversions;
+
 /// A Box2D version a plan is made for.
 #[repr(u32)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -24,11 +26,6 @@ impl Engine {
     pub const ALL: [Engine; 4] =
         [Engine::Box2d23, Engine::Box2d24, Engine::Box2d31, Engine::Box2d32];
 
-    /// The engine version of a number, if it is one.
-    pub fn from_u32(value: u32) -> Option<Engine> {
-        Engine::ALL.into_iter().find(|e| *e as u32 == value)
-    }
-
     /// Its working range.
     pub fn working_range(self) -> &'static WorkingRange {
         match self {
@@ -39,6 +36,8 @@ impl Engine {
         }
     }
 }
+
+u32_enum_conversions!(Engine { Box2d23, Box2d24, Box2d31, Box2d32 });
 
 /// The bounds an executor checks before it hands a value to one Box2D version. A value
 /// beyond its bound leaves its object out (`beyond-box2d-range`), and what depends on it
@@ -269,10 +268,10 @@ mod tests {
     #[test]
     fn every_engine_number_names_its_engine() {
         for engine in Engine::ALL {
-            assert_eq!(Engine::from_u32(engine as u32), Some(engine));
+            assert_eq!(Engine::try_from(engine as u32), Ok(engine));
         }
-        assert_eq!(Engine::from_u32(0), None);
-        assert_eq!(Engine::from_u32(5), None);
+        assert_eq!(Engine::try_from(0), Err(0));
+        assert_eq!(Engine::try_from(5), Err(5));
     }
 
     #[test]

@@ -193,6 +193,8 @@ impl JointKind {
     }
 }
 
+/// `TryFrom<u32>` for a `#[repr(u32)]` enum of the C API, the number back to its variant
+/// (`Err` gives back a number that names none); the plan's `Engine` takes it too.
 macro_rules! u32_enum_conversions {
     ($ty:ident { $($variant:ident),* $(,)? }) => {
         impl TryFrom<u32> for $ty {
@@ -204,6 +206,8 @@ macro_rules! u32_enum_conversions {
         }
     };
 }
+pub(crate) use u32_enum_conversions;
+
 u32_enum_conversions!(ShapeKind { Circle, Polygon, Edge, Chain });
 u32_enum_conversions!(BodyKind { Static, Kinematic, Dynamic });
 u32_enum_conversions!(JointKind {
