@@ -846,7 +846,7 @@ static b2s_code b2s3_capture_error(b2s_error* error, b2s_code code, const char* 
 
 /* The capture of `bodies`, labelled from `level` when it is not NULL. */
 static b2s_code b2s3_capture_run(b2WorldId world, const b2BodyId* bodies, uint32_t body_count,
-                                 const b2s3_level* level, b2s_scene** out_scene,
+                                 b2s3_level* level, b2s_scene** out_scene,
                                  b2s3_reports_t* reports, b2s_error* error) {
     *out_scene = NULL;
     reports->items = NULL;
