@@ -5,5 +5,7 @@
 #![forbid(unsafe_code)]
 
 mod range;
+mod records;
 
 pub use range::{Engine, WorkingRange};
+pub use records::*;
