@@ -1,5 +1,6 @@
 //! Which engine module makes a plan: the one of the version the options name.
 
+use super::box2d3::{self, V3};
 use super::container::Plan;
 use super::range::Engine;
 use super::records::PlanOptions;
@@ -10,17 +11,16 @@ use crate::scene::Scene;
 /// number that names no version is an error, and so is a version whose mapping is not
 /// made here yet (its executor still maps the scene itself). A placement the engine cannot
 /// take is no error: the plan then holds only its report (see [`Plan::placed`]).
-pub fn make(_scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
+pub fn make(scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
     let engine = Engine::try_from(options.engine)
         .map_err(|n| invalid(format!("engine {n} is no b2s_engine: a plan is made for 1 to 4")))?;
-    let family = match engine {
-        Engine::Box2d23 | Engine::Box2d24 => "Box2D 2.x",
-        Engine::Box2d31 | Engine::Box2d32 => "Box2D v3",
-    };
-    Err(invalid(format!(
-        "no plan is made for {family} yet (engine {}): its executor maps the scene itself",
-        options.engine
-    )))
+    match V3::of(engine) {
+        Some(v3) => Ok(box2d3::plan(scene, options, v3)),
+        None => Err(invalid(format!(
+            "no plan is made for Box2D 2.x yet (engine {}): its executor maps the scene itself",
+            options.engine
+        ))),
+    }
 }
 
 fn invalid(message: String) -> Error {

@@ -6,8 +6,10 @@
 
 #![forbid(unsafe_code)]
 
+mod box2d3;
 mod container;
 mod make;
+mod printf;
 mod range;
 mod records;
 
