@@ -380,3 +380,82 @@ fn a_scene_is_written_in_the_dialect_its_options_name_or_in_its_own() {
     assert_eq!((code, none, error), (Code::InvalidArgument, None, Code::InvalidArgument as u32));
     unsafe { b2s_scene_free(scene) };
 }
+
+fn plan_options(engine: u32) -> box2scene::plan::PlanOptions {
+    use box2scene::plan::{PlanOptions, Rot, Transform};
+    PlanOptions {
+        engine,
+        placement: Transform { p: Vec2 { x: 0.0, y: 0.0 }, q: Rot { c: 1.0, s: 0.0 } },
+        gravity: Vec2 { x: 0.0, y: -10.0 },
+        max_linear_speed: f32::MAX,
+        name_bytes: 0,
+    }
+}
+
+#[test]
+fn a_plan_refuses_null_arguments_and_engines_it_does_not_map() {
+    let (scene, code, _) = load_text(SCENE);
+    assert_eq!(code, Code::Ok);
+    let mut plan = null_mut();
+    let mut error = no_error();
+    let options = plan_options(0);
+    unsafe {
+        assert_eq!(b2s_plan_make(null(), &options, &mut plan, &mut error), Code::NullArgument);
+        assert_eq!(text(error.message.as_ptr()), "scene is NULL");
+        assert_eq!(b2s_plan_make(scene, null(), &mut plan, &mut error), Code::NullArgument);
+        assert_eq!(b2s_plan_make(scene, &options, null_mut(), null_mut()), Code::NullArgument);
+        plan = std::ptr::NonNull::dangling().as_ptr();
+        assert_eq!(b2s_plan_make(scene, &options, &mut plan, &mut error), Code::InvalidArgument);
+        assert!(plan.is_null(), "a failed make stores NULL");
+        assert_eq!(error.code, Code::InvalidArgument as u32);
+        assert!(text(error.message.as_ptr()).starts_with("engine 0 is no b2s_engine"));
+        assert!(b2s_plan_get_view(null()).is_null());
+        b2s_plan_free(null_mut());
+        b2s_scene_free(scene);
+    }
+}
+
+#[test]
+fn a_v3_plan_is_read_through_its_view_after_its_scene_is_freed() {
+    let (scene, code, _) = load_text(SCENE);
+    assert_eq!(code, Code::Ok);
+    let mut plan = null_mut();
+    let mut error = no_error();
+    let options = plan_options(box2scene::Engine::Box2d32 as u32);
+    unsafe {
+        assert_eq!(b2s_plan_make(scene, &options, &mut plan, &mut error), Code::Ok);
+        b2s_scene_free(scene);
+        let view = &*b2s_plan_get_view(plan);
+        assert!(view.placed);
+        let bodies = slice(view.bodies, view.body_count);
+        assert_eq!(bodies.len(), 2);
+        assert_eq!(text(bodies[0].name.as_ptr()), "ground");
+        assert_eq!(text(bodies[1].name.as_ptr()), "ball");
+        assert_eq!(bodies[1].shapes.count, 1);
+        let shape = slice(view.shapes, view.shape_count)[0];
+        assert_eq!((shape.kind, shape.radius), (0, 0.5));
+        let joints = slice(view.joints, view.joint_count);
+        assert_eq!((joints.len(), joints[0].body_a, joints[0].body_b), (1, 0, 1));
+        assert_eq!(view.report_count, 0);
+        b2s_plan_free(plan);
+    }
+}
+
+#[test]
+fn a_worlds_gravity_is_the_files_where_the_engine_holds_it() {
+    let fallback = Vec2 { x: 1.0, y: 2.0 };
+    let (scene, _, _) = load_text(SCENE);
+    let (strong, _, _) = load_text(r#"<World Version="1"><Gravity>0 -5000</Gravity></World>"#);
+    unsafe {
+        let g = b2s_plan_world_gravity(scene, box2scene::Engine::Box2d31 as u32, fallback);
+        assert_eq!((g.x, g.y), (0.0, -10.0));
+        let g = b2s_plan_world_gravity(strong, box2scene::Engine::Box2d32 as u32, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0), "beyond v3.2's range: the fallback");
+        let g = b2s_plan_world_gravity(null(), box2scene::Engine::Box2d31 as u32, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0));
+        let g = b2s_plan_world_gravity(scene, 9, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0));
+        b2s_scene_free(scene);
+        b2s_scene_free(strong);
+    }
+}
