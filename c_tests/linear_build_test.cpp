@@ -147,6 +147,7 @@ static int many_joints() {
 }
 
 int main() {
+    growth_keep_memory_in_the_heap();
     int failed = 0;
     failed += RUN_TEST(fixtures_on_one_body);
     failed += RUN_TEST(capture_of_one_body);

@@ -385,6 +385,7 @@ static int capture_of_chains_on_one_body(void) {
 }
 
 int main(void) {
+    growth_keep_memory_in_the_heap();
     int failed = 0;
     failed += RUN_TEST(shapes_on_one_body);
     failed += RUN_TEST(many_bodies);

@@ -79,8 +79,7 @@ pub unsafe extern "C" fn b2s_plan_get_view(plan: *const PlanHandle) -> *const Pl
     })
 }
 
-/// Frees a plan and everything it owns (the memory of its arrays serves the next plan made
-/// on the same thread). NULL is ignored.
+/// Frees a plan and everything it owns. NULL is ignored.
 ///
 /// # Safety
 /// `plan` is NULL or a plan from `b2s_plan_make` that was not freed yet.

@@ -2,10 +2,8 @@
 //! that a plan needs nothing of the scene it was made from. Engine modules fill it through
 //! the few `push_*` and `report` calls below, in the order the executor creates them.
 
-use std::cell::Cell;
 use std::ffi::{CStr, CString};
 use std::fmt;
-use std::mem::take;
 
 use super::records::{PlanBody, PlanJoint, PlanReport, PlanShape, PlanView};
 use crate::error::Code;
@@ -114,11 +112,10 @@ impl Plan {
     // ---- the builder's side, for the engine modules
 
     /// An empty plan with room for as many bodies, shapes and joints as a scene may give:
-    /// one allocation each, not a doubling series of copies, and the memory of the last
-    /// plan freed on this thread where it has room.
+    /// one allocation each, not a doubling series of copies.
     pub(super) fn with_capacity(bodies: usize, shapes: usize, joints: usize) -> Plan {
         Plan {
-            records: Records::reused(bodies, shapes, joints),
+            records: Records::with_room(bodies, shapes, joints),
             texts: Vec::new(),
             unplaced: false,
         }
@@ -197,58 +194,16 @@ struct Records {
     reports: Vec<PlanReport>,
 }
 
-/// A freed plan's arrays, emptied.
-type Spare = (Vec<PlanBody>, Vec<PlanShape>, Vec<Vec2>, Vec<PlanJoint>, Vec<PlanReport>);
-
-thread_local! {
-    /// The arrays of the last plan freed on this thread, for the next one to fill: a host
-    /// that builds level after level reuses memory already in its hands instead of having
-    /// the system hand it fresh pages to fault in (a plan of 16 000 joints holds 3 MB).
-    static SPARE: Cell<Option<Spare>> = const { Cell::new(None) };
-}
-
 impl Records {
-    fn reused(bodies: usize, shapes: usize, joints: usize) -> Records {
-        let spare = SPARE.try_with(Cell::take).ok().flatten().unwrap_or_default();
-        let mut records = Records {
-            bodies: spare.0,
-            shapes: spare.1,
-            points: spare.2,
-            joints: spare.3,
-            reports: spare.4,
-        };
-        records.bodies.reserve(bodies);
-        records.shapes.reserve(shapes);
-        records.joints.reserve(joints);
-        records
-    }
-}
-
-impl Drop for Records {
-    fn drop(&mut self) {
-        // An empty plan's arrays (a test's, an unplaced one) replace no spare.
-        let held = self.bodies.capacity()
-            + self.shapes.capacity()
-            + self.points.capacity()
-            + self.joints.capacity()
-            + self.reports.capacity();
-        if held == 0 {
-            return;
+    /// Empty records with room for the scene's bodies, shapes and joints.
+    fn with_room(bodies: usize, shapes: usize, joints: usize) -> Records {
+        Records {
+            bodies: Vec::with_capacity(bodies),
+            shapes: Vec::with_capacity(shapes),
+            points: Vec::new(),
+            joints: Vec::with_capacity(joints),
+            reports: Vec::new(),
         }
-        let mut spare: Spare = (
-            take(&mut self.bodies),
-            take(&mut self.shapes),
-            take(&mut self.points),
-            take(&mut self.joints),
-            take(&mut self.reports),
-        );
-        spare.0.clear();
-        spare.1.clear();
-        spare.2.clear();
-        spare.3.clear();
-        spare.4.clear();
-        // A thread being torn down keeps nothing.
-        let _ = SPARE.try_with(|s| s.set(Some(spare)));
     }
 }
 
@@ -299,18 +254,5 @@ mod tests {
         plan.set_unplaced();
         assert!(!plan.view().placed);
         assert!(!plan.placed());
-    }
-
-    #[test]
-    fn a_freed_plans_arrays_serve_the_next_plan_on_the_thread_empty() {
-        let mut plan = Plan::with_capacity(0, 0, 1000);
-        plan.push_joint(PlanJoint::default());
-        plan.report(Code::LossyBody, Object::Body, 0, None, format_args!("x"));
-        let joints = plan.joints().as_ptr();
-        drop(plan);
-        let next = Plan::with_capacity(1, 1, 10);
-        assert!(next.joints().is_empty() && next.reports().is_empty());
-        assert_eq!(next.joints().as_ptr(), joints, "the same memory");
-        assert!(next.records.joints.capacity() >= 1000);
     }
 }
