@@ -67,7 +67,8 @@ inline ScenePtr load_quietly(const std::string& bytes) {
 /// root.
 inline std::vector<std::string> project_scene_files() {
     static const char* const folders[] = {"tests/fixtures/scenes", "tests/fixtures/corpus",
-                                          "examples/scenes", "tests/fixtures/adapter"};
+                                          "examples/scenes", "tests/fixtures/adapter",
+                                          "tests/fixtures/dialects"};
     std::vector<std::string> files;
     for (const char* folder : folders) {
         std::filesystem::path dir = std::filesystem::path(BOX2SCENE_SOURCE_DIR) / folder;

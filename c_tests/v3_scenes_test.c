@@ -222,7 +222,22 @@ static int the_showcase_reports_what_v3_lacks(void) {
     return 0;
 }
 
-int main(void) {
+/* Each scene file named on the command line (a generated level), built and stepped. */
+static int files_build_and_stay_finite(int count, char** paths) {
+    int failed = 0;
+    for (int i = 0; i < count; ++i) {
+        b2s_scene* scene = load_path(paths[i]);
+        ENSURE(scene != NULL);
+        failed += build_and_step(paths[i], scene, NULL);
+        b2s_scene_free(scene);
+    }
+    return failed;
+}
+
+int main(int argc, char** argv) {
+    if (argc > 1) {
+        return files_build_and_stay_finite(argc - 1, argv + 1);
+    }
     int failed = 0;
     failed += RUN_TEST(every_scene_file_builds_and_stays_finite);
     failed += RUN_TEST(every_body_has_the_mass_v3_gives_its_shapes);

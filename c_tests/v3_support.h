@@ -122,7 +122,8 @@ static inline bool bodies_finite(const v3_world* world) {
  * freed with free_paths. */
 static inline char** scene_files(void) {
     static const char* const folders[] = {"tests/fixtures/scenes", "tests/fixtures/corpus",
-                                          "examples/scenes", "tests/fixtures/adapter"};
+                                          "examples/scenes", "tests/fixtures/adapter",
+                                          "tests/fixtures/dialects"};
     size_t count = 0, capacity = 64;
     char** paths = (char**)calloc(capacity + 1, sizeof(char*));
     for (size_t f = 0; f < sizeof folders / sizeof folders[0]; ++f) {
