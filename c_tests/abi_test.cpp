@@ -59,15 +59,16 @@ PIN_AT(b2s_fixture, filter, 24);
 PIN_AT(b2s_fixture, is_sensor, 36);
 PIN_AT(b2s_fixture, user_data, 40);
 
-PIN_SIZE(b2s_working_range, 124);
+PIN_SIZE(b2s_working_range, 128);
 PIN_AT(b2s_working_range, max_length, 0);
-PIN_AT(b2s_working_range, world_max_linear_speed, 100);
-PIN_AT(b2s_working_range, linear_slop, 104);
-PIN_AT(b2s_working_range, max_revolute_limit, 108);
-PIN_AT(b2s_working_range, centroid_tolerance, 112);
-PIN_AT(b2s_working_range, name_bytes, 116);
-PIN_AT(b2s_working_range, friction_at_anchors, 120);
-PIN_AT(b2s_working_range, prismatic_lever_to_b, 121);
+PIN_AT(b2s_working_range, max_violation, 88);
+PIN_AT(b2s_working_range, world_max_linear_speed, 104);
+PIN_AT(b2s_working_range, linear_slop, 108);
+PIN_AT(b2s_working_range, max_revolute_limit, 112);
+PIN_AT(b2s_working_range, centroid_tolerance, 116);
+PIN_AT(b2s_working_range, name_bytes, 120);
+PIN_AT(b2s_working_range, friction_at_anchors, 124);
+PIN_AT(b2s_working_range, prismatic_lever_to_b, 125);
 
 PIN_SIZE(b2s_mass_data, 20);
 PIN_AT(b2s_mass_data, mass, 0);

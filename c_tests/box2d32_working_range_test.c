@@ -5,9 +5,9 @@
  * such a joint up to the range's max_wheel_violation_gyrations radii of gyration of the smaller
  * body (4, some 1.3 sizes of the triangles here, whose radius of gyration is 0.31 of their
  * size; measured, 2 sizes still hold), which must hold, and leaves out and reports
- * what lies beyond; prismatic, revolute, weld and distance joints that start violated as far
- * are pulled together, built, and must hold too, and so must the rest of a pair of bodies
- * whose line joint was left out.
+ * what lies beyond; prismatic, revolute, weld and distance joints that start violated up to
+ * the range's max_violation are pulled together, built, and must hold too, and so must the
+ * rest of a pair of bodies whose other joints were left out.
  */
 #include "box2d32_support.h"
 
@@ -133,18 +133,23 @@ static int line_and_wheel_joints_beyond_the_range_are_left_out_and_reported(void
     return 0;
 }
 
-static int other_joints_that_start_violated_are_built_and_hold(void) {
+/* Prismatic, revolute and weld joints that start up to the range's max_violation (4 m) from
+ * satisfied are pulled together and hold; farther, they are left out and reported (alone on
+ * a pair v3.2 holds them, but the same joints among others and contacts assert: the dialect
+ * fixtures' weld 8.4 m off, the bench's level with joints 16 m off). A distance joint as long
+ * as the gap is satisfied, and built at every size. */
+static int other_joints_that_start_violated_are_built_within_the_range(void) {
     static const char* const kinds[] = {"Prismatic", "Revolute", "Weld", "Distance"};
     for (size_t k = 0; k < 4; ++k) {
         for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s) {
-            /* a distance joint of length 1 m pulled from 5 body sizes */
-            b2s_scene* scene = pair_scene(kinds[k], sizes[s], 5.0f * sizes[s], "");
+            float gap = 5.0f * sizes[s];
+            b2s_scene* scene = pair_scene(kinds[k], sizes[s], gap, "");
             ENSURE(scene != NULL);
             v3_world world = build_v3(scene);
-            if (world.built->reports.count != 0) {
-                print_reports(&world.built->reports);
-            }
-            ENSURE(!B2_IS_NULL(world.built->joints[0]));
+            bool within = k == 3 || gap <= 4.0f;
+            ENSURE_EQ(B2_IS_NULL(world.built->joints[0]), !within);
+            ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0),
+                      within ? 0 : 1);
             ENSURE(holds(&world, FALL_BOUND));
             free_v3(&world);
             b2s_scene_free(scene);
@@ -154,8 +159,9 @@ static int other_joints_that_start_violated_are_built_and_hold(void) {
 }
 
 /* The pair that makes v3.2 assert when every joint is built (line, distance, weld and
- * friction 10 m apart): the line joint is left out, the others hold. */
-static int joints_combined_on_one_pair_hold_without_the_line_joint(void) {
+ * friction 10 m apart): the line joint, and the distance and weld joints 9 and 10 m from
+ * satisfied, are left out; the friction joint holds. */
+static int joints_combined_on_one_pair_hold_without_those_far_from_satisfied(void) {
     b2s_scene* scene = pair_scene(
         "Line", 1.0f, 10.0f,
         "<Joint Type='Distance'><BodyA>0</BodyA><BodyB>1</BodyB><Length>1</Length></Joint>"
@@ -164,11 +170,12 @@ static int joints_combined_on_one_pair_hold_without_the_line_joint(void) {
         "<MaxTorque>10</MaxTorque></Joint>");
     ENSURE(scene != NULL);
     v3_world world = build_v3(scene);
-    ENSURE_EQ(world.built->reports.count, 1);
-    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1);
-    for (uint32_t i = 1; i < 4; ++i) {
-        ENSURE(!B2_IS_NULL(world.built->joints[i]));
+    ENSURE_EQ(world.built->reports.count, 3);
+    for (uint32_t i = 0; i < 3; ++i) {
+        ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", i), 1);
+        ENSURE(B2_IS_NULL(world.built->joints[i]));
     }
+    ENSURE(!B2_IS_NULL(world.built->joints[3]));
     ENSURE(holds(&world, FALL_BOUND));
     free_v3(&world);
     b2s_scene_free(scene);
@@ -313,8 +320,8 @@ int main(void) {
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
     failed += RUN_TEST(line_joint_beyond_the_range_throws_bodies_off_in_v32);
     failed += RUN_TEST(line_and_wheel_joints_beyond_the_range_are_left_out_and_reported);
-    failed += RUN_TEST(other_joints_that_start_violated_are_built_and_hold);
-    failed += RUN_TEST(joints_combined_on_one_pair_hold_without_the_line_joint);
+    failed += RUN_TEST(other_joints_that_start_violated_are_built_within_the_range);
+    failed += RUN_TEST(joints_combined_on_one_pair_hold_without_those_far_from_satisfied);
     failed += RUN_TEST(a_ball_at_inertia_1e_20_on_a_prismatic_joint_is_refused);
     failed += RUN_TEST(a_rope_with_default_anchors_on_a_small_ball_is_built_and_holds);
     failed += RUN_TEST(a_prismatic_lever_177_radii_along_its_axis_is_refused);

@@ -71,7 +71,10 @@ static int line_joint_with_anchors_far_along_its_axis_stays_finite(void) {
     return 0;
 }
 
-static int four_joints_on_one_pair_keep_the_first_that_pulls(void) {
+/* A joint other than a line or wheel joint that starts more than the range's max_violation
+ * (0.5 m) from satisfied is left out, whatever else acts on its bodies: the dialect fixtures'
+ * weld 8.4 m off among five other joints on its body made v3.1 assert. */
+static int four_joints_on_one_pair_keep_the_satisfied_ones(void) {
     b2s_scene* scene = NULL;
     v3_world w = build_with(
         "0 5",
@@ -83,7 +86,9 @@ static int four_joints_on_one_pair_keep_the_first_that_pulls(void) {
     ENSURE(scene != NULL);
     ENSURE(B2_IS_NULL(w.built->joints[0]));
     ENSURE(B2_IS_NON_NULL(w.built->joints[1])); /* satisfied */
-    ENSURE(B2_IS_NON_NULL(w.built->joints[2])); /* the first that pulls */
+    ENSURE(B2_IS_NULL(w.built->joints[2]));     /* 5 m from satisfied */
+    ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, 2,
+                       "a joint further than 0.5 m from satisfied"));
     ENSURE(B2_IS_NON_NULL(w.built->joints[3]));
     ENSURE(finite_for_600_steps(&w));
     free_v3(&w);
@@ -91,7 +96,7 @@ static int four_joints_on_one_pair_keep_the_first_that_pulls(void) {
     return 0;
 }
 
-static int two_joints_that_start_violated_on_one_body_keep_the_first(void) {
+static int joints_that_start_violated_are_left_out(void) {
     b2s_scene* scene = NULL;
     v3_world w = build_with(
         "0 5",
@@ -99,9 +104,11 @@ static int two_joints_that_start_violated_on_one_body_keep_the_first(void) {
         "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>",
         &scene);
     ENSURE(scene != NULL);
-    ENSURE(B2_IS_NON_NULL(w.built->joints[0]));
-    ENSURE(B2_IS_NULL(w.built->joints[1]));
-    ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, 1, "joint 0 already pulls"));
+    for (uint32_t i = 0; i < 2; ++i) {
+        ENSURE(B2_IS_NULL(w.built->joints[i]));
+        ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, i,
+                           "it starts 5 m from satisfied"));
+    }
     ENSURE(finite_for_600_steps(&w));
     free_v3(&w);
     b2s_scene_free(scene);
@@ -326,8 +333,8 @@ int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
     failed += RUN_TEST(line_joint_with_anchors_far_along_its_axis_stays_finite);
-    failed += RUN_TEST(four_joints_on_one_pair_keep_the_first_that_pulls);
-    failed += RUN_TEST(two_joints_that_start_violated_on_one_body_keep_the_first);
+    failed += RUN_TEST(four_joints_on_one_pair_keep_the_satisfied_ones);
+    failed += RUN_TEST(joints_that_start_violated_are_left_out);
     failed += RUN_TEST(satisfied_joints_far_from_small_bodies_are_built);
     failed += RUN_TEST(an_inertia_v3_cannot_hold_is_refused);
     failed += RUN_TEST(a_prismatic_lever_reaches_body_bs_anchor);

@@ -1169,7 +1169,7 @@ static int distance_length_below_v3s_minimum_is_reported(void) {
     scene_world w;
     OPEN(w, "1", "0 0", CIRCLE("0.25"), "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
          "<Body Type='Static'></Body>"
-         "<Body Type='Dynamic'><Position>1 0</Position><Fixtures><ID>0</ID></Fixtures></Body>",
+         "<Body Type='Dynamic'><Position>0.4 0</Position><Fixtures><ID>0</ID></Fixtures></Body>",
          "<Joint Type='Distance'><BodyA>0</BodyA><BodyB>1</BodyB><Length>0.001</Length></Joint>");
     ENSURE_REPORT_COUNT(w, 1);
     ENSURE_EQ(count_reports(REPORTS(w), B2S_CODE_LOSSY_JOINT, "joint", 0), 1);

@@ -1399,6 +1399,11 @@ typedef struct b2s_working_range {
    */
   float max_pulled_violation;
   /**
+   * m: how far from satisfied any joint but a line or wheel joint may start, whatever
+   * else acts on its bodies.
+   */
+  float max_violation;
+  /**
    * m: how far from satisfied a line or wheel joint may start.
    */
   float max_wheel_violation;
@@ -2283,8 +2288,7 @@ b2s_code b2s_plan_make(const struct b2s_scene *scene,
 const struct b2s_plan_view *b2s_plan_get_view(const struct b2s_plan *plan);
 
 /**
- * Frees a plan and everything it owns (the memory of its arrays serves the next plan made
- * on the same thread). NULL is ignored.
+ * Frees a plan and everything it owns. NULL is ignored.
  *
  * # Safety
  * `plan` is NULL or a plan from `b2s_plan_make` that was not freed yet.

@@ -97,6 +97,9 @@ pub struct WorkingRange {
     /// m: how far from satisfied a joint may start on a body that another joint starting
     /// that far already pulls (the first is built, the later ones are not).
     pub max_pulled_violation: f32,
+    /// m: how far from satisfied any joint but a line or wheel joint may start, whatever
+    /// else acts on its bodies.
+    pub max_violation: f32,
     /// m: how far from satisfied a line or wheel joint may start.
     pub max_wheel_violation: f32,
     /// Radii of gyration of the smaller body: how far apart across its axis the anchors of
@@ -138,7 +141,7 @@ pub struct WorkingRange {
 impl WorkingRange {
     /// Every numeric bound by its field's name, in the order of the fields (for the Python
     /// extension and the docs' table).
-    pub fn bounds(&self) -> [(&'static str, f32); 29] {
+    pub fn bounds(&self) -> [(&'static str, f32); 30] {
         [
             ("max_length", self.max_length),
             ("max_angle", self.max_angle),
@@ -162,6 +165,7 @@ impl WorkingRange {
             ("max_lever", self.max_lever),
             ("max_lever_fixed_wheel", self.max_lever_fixed_wheel),
             ("max_pulled_violation", self.max_pulled_violation),
+            ("max_violation", self.max_violation),
             ("max_wheel_violation", self.max_wheel_violation),
             ("max_wheel_violation_gyrations", self.max_wheel_violation_gyrations),
             ("max_joint_acceleration", self.max_joint_acceleration),
@@ -173,17 +177,18 @@ impl WorkingRange {
     }
 }
 
-/// The ABI is pinned: 29 floats, a count and two flags, also asserted on the C++ side.
+/// The ABI is pinned: 30 floats, a count and two flags, also asserted on the C++ side.
 const _: () = {
     use std::mem::{offset_of, size_of};
-    assert!(offset_of!(WorkingRange, world_max_linear_speed) == 100);
-    assert!(offset_of!(WorkingRange, linear_slop) == 104);
-    assert!(offset_of!(WorkingRange, max_revolute_limit) == 108);
-    assert!(offset_of!(WorkingRange, centroid_tolerance) == 112);
-    assert!(offset_of!(WorkingRange, name_bytes) == 116);
-    assert!(offset_of!(WorkingRange, friction_at_anchors) == 120);
-    assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 121);
-    assert!(size_of::<WorkingRange>() == 124);
+    assert!(offset_of!(WorkingRange, max_violation) == 88);
+    assert!(offset_of!(WorkingRange, world_max_linear_speed) == 104);
+    assert!(offset_of!(WorkingRange, linear_slop) == 108);
+    assert!(offset_of!(WorkingRange, max_revolute_limit) == 112);
+    assert!(offset_of!(WorkingRange, centroid_tolerance) == 116);
+    assert!(offset_of!(WorkingRange, name_bytes) == 120);
+    assert!(offset_of!(WorkingRange, friction_at_anchors) == 124);
+    assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 125);
+    assert!(size_of::<WorkingRange>() == 128);
 };
 
 /// No bound.
@@ -219,6 +224,7 @@ const BOX2D_24: WorkingRange = WorkingRange {
     max_lever: 75.0,
     max_lever_fixed_wheel: NONE,
     max_pulled_violation: 0.5,
+    max_violation: NONE,
     max_wheel_violation: NONE,
     max_wheel_violation_gyrations: NONE,
     max_joint_acceleration: NONE,
@@ -234,10 +240,14 @@ const BOX2D_24: WorkingRange = WorkingRange {
 /// Box2D 2.3 as pybox2d holds it: 2.4's solver, whose measurements it shares.
 const BOX2D_23: WorkingRange = BOX2D_24;
 
-/// Box2D v3.1.1, as `c_tests/v3_range_sweep_test.c` and the v3 stress test measured it.
+/// Box2D v3.1.1, as `c_tests/v3_range_sweep_test.c` and the v3 stress test measured it, and
+/// the levels that asserted (the dialect fixtures and the bench's generated level): one joint
+/// started far from satisfied is enough, once other joints or contacts act on its bodies.
 const BOX2D_31: WorkingRange = WorkingRange {
     max_length: 1e4,
     max_ratio: NONE,
+    max_pulled_violation: NONE,
+    max_violation: 0.5,
     min_stiffness: 0.0,
     max_lever_fixed_wheel: 5.0,
     max_wheel_violation: 0.5,
@@ -252,9 +262,12 @@ const BOX2D_31: WorkingRange = WorkingRange {
 };
 
 /// Box2D v3.2, as `c_tests/v3_range_sweep_test.c` and `c_tests/box2d32_working_range_test.c`
-/// measured it: v3.1's levers and smallest inertia (v3.2 dies of the same levels).
+/// measured it: v3.1's levers and smallest inertia (v3.2 dies of the same levels). It holds
+/// joints started further from satisfied than v3.1 does: the bench's 10,000-body level holds
+/// with every joint up to 8 m off, and asserts from 16 m; the dialect fixtures' weld 8.4 m off
+/// asserts.
 const BOX2D_32: WorkingRange = WorkingRange {
-    max_pulled_violation: NONE,
+    max_violation: 4.0,
     max_wheel_violation: NONE,
     name_bytes: 10,
     friction_at_anchors: true,

@@ -227,11 +227,12 @@ impl Mapper<'_> {
         }
     }
 
-    /// What the working-range sweeps measured of joints that start violated: a line or
-    /// wheel joint too far from satisfied, or whose anchors start too many radii of gyration
-    /// apart across its axis between two dynamic bodies, flings its bodies off; a body
-    /// pulled by two joints that start too far from satisfied makes the solver assert (the
-    /// first such joint of any other kind on a body is planned, the later ones are not).
+    /// What the working-range sweeps and the levels that asserted measured of joints that
+    /// start violated: a line or wheel joint too far from satisfied, or whose anchors start
+    /// too many radii of gyration apart across its axis between two dynamic bodies, flings
+    /// its bodies off; a joint of another kind too far from satisfied makes the solver
+    /// assert once anything else acts on its bodies; where the version has a bound only for
+    /// a body pulled by two such joints, the first is planned and the later ones are not.
     pub(super) fn check_violation(&mut self, index: u32, joint: &Joint, check: &mut Check) {
         let (v3, r) = (self.v3, self.range);
         let (violation, across) = self.starting_violation(joint);
@@ -263,6 +264,17 @@ impl Mapper<'_> {
                 ));
                 return;
             }
+        }
+        if !wheel && violation > r.max_violation {
+            check.fail(format_args!(
+                "it starts {} m from satisfied: a joint further than {} m from satisfied lies \
+                 beyond {}'s working range (its solver asserts once other joints or contacts \
+                 act on its bodies)",
+                G9(violation),
+                G(r.max_violation),
+                v3.name()
+            ));
+            return;
         }
         if wheel || !(violation > r.max_pulled_violation) {
             return;
@@ -316,25 +328,31 @@ mod tests {
     }
 
     #[test]
-    fn a_second_joint_pulling_a_body_far_from_satisfied_is_refused_in_v31() {
+    fn a_joint_far_from_satisfied_is_refused_in_v3() {
         // Joint 0 pins ball 1 at the origin, 1 m from where it is; joint 1 pins it to ball
-        // 2's origin, sqrt(2) m away.
-        let joints = joint("Revolute", 0, 1, "") + &joint("Revolute", 2, 1, "");
-        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &joints);
-        assert_eq!(plan.joints().len(), 1);
-        assert_eq!(
-            messages(&plan),
-            [(
-                Code::BeyondBox2dRange as u32,
-                "joint",
-                1,
-                "it starts 1.41421354 m from satisfied, and joint 0 already pulls body 1 from \
-                 further than 0.5 m: two such joints on one body lie beyond Box2D v3's working range \
-                 (its solver asserts); joint not created"
-            )]
-        );
-        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &joints);
-        assert_eq!(plan.joints().len(), 2, "v3.2 holds the pair");
+        // 2's origin, sqrt(2) m away; joint 2, a weld 0.5 m off, is held.
+        let joints = joint("Revolute", 0, 1, "")
+            + &joint("Revolute", 2, 1, "")
+            + &joint("Weld", 0, 1, "<LocalAnchorA>0.5 0</LocalAnchorA>");
+        for (engine, name) in [(Engine::Box2d31, "Box2D v3"), (Engine::Box2d32, "Box2D v3.2")] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &joints);
+            assert_eq!(plan.joints().len(), 1);
+            assert_eq!(plan.joints()[0].joint, 2);
+            let refused = |violation: &str| {
+                format!(
+                    "it starts {violation} m from satisfied: a joint further than 0.5 m from \
+                     satisfied lies beyond {name}'s working range (its solver asserts once \
+                     other joints or contacts act on its bodies); joint not created"
+                )
+            };
+            assert_eq!(
+                messages(&plan),
+                [
+                    (Code::BeyondBox2dRange as u32, "joint", 0, refused("1").as_str()),
+                    (Code::BeyondBox2dRange as u32, "joint", 1, refused("1.41421354").as_str()),
+                ]
+            );
+        }
     }
 
     #[test]

@@ -589,7 +589,11 @@ mod joint_tests {
             BALL.0,
             BALL.1,
             BODIES,
-            &joint("Rope", "<MaxLength>0.001</MaxLength>"),
+            &joint(
+                "Rope",
+                "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>\
+                 <MaxLength>0.001</MaxLength>",
+            ),
         );
         let j = plan.joints()[0];
         assert_eq!(j.kind, PlanJointKind::Distance as u32);
