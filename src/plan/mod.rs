@@ -4,6 +4,7 @@
 
 #![forbid(unsafe_code)]
 
+mod box2d2;
 mod range;
 mod records;
 

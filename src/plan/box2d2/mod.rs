@@ -1,0 +1,11 @@
+//! Box2D 2.x (2.3 as pybox2d holds it, and 2.4): the engine's own arithmetic, repeated
+//! operation for operation in `f32` so that what a plan predicts (a body's mass, a
+//! spring's stiffness, where a joint starts) is the engine's to the bit, and the mapping of
+//! a scene onto its definitions.
+
+mod body;
+mod body_mass;
+mod math;
+mod polygon;
+mod shape_mass;
+mod stiffness;
