@@ -5,6 +5,7 @@
 #![forbid(unsafe_code)]
 
 mod box2d2;
+mod printed;
 mod range;
 mod records;
 
