@@ -545,6 +545,103 @@ typedef uint32_t b2s_engine;
 #endif // __cplusplus
 
 /**
+ * What a plan shape is, as the engine creates it.
+ */
+enum b2s_plan_shape_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * `center` and `radius`.
+   */
+  B2S_PLAN_SHAPE_KIND_CIRCLE = 0,
+  /**
+   * `points`: the vertices the engine's polygon call takes (2.x `b2PolygonShape::Set`,
+   * v3 `b2ComputeHull` then `b2MakePolygon` with radius 0).
+   */
+  B2S_PLAN_SHAPE_KIND_POLYGON = 1,
+  /**
+   * `points`: its two ends.
+   */
+  B2S_PLAN_SHAPE_KIND_SEGMENT = 2,
+  /**
+   * `points`: an open chain, `[ghost, vertices..., ghost]` (2.x `CreateChain` with the
+   * ghosts as previous and next vertices; v3 a chain whose first and last points only
+   * guide).
+   */
+  B2S_PLAN_SHAPE_KIND_CHAIN = 3,
+  /**
+   * `points`: a loop, its vertices once each.
+   */
+  B2S_PLAN_SHAPE_KIND_LOOP = 4,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum b2s_plan_shape_kind b2s_plan_shape_kind;
+#else
+typedef uint32_t b2s_plan_shape_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
+ * What a plan joint is, as the engine creates it (its def).
+ */
+enum b2s_plan_joint_kind
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  /**
+   * `b2RevoluteJointDef`.
+   */
+  B2S_PLAN_JOINT_KIND_REVOLUTE = 0,
+  /**
+   * `b2PrismaticJointDef`.
+   */
+  B2S_PLAN_JOINT_KIND_PRISMATIC = 1,
+  /**
+   * `b2DistanceJointDef` (v3 also a rope: a spring of 0 Hz with its upper limit on).
+   */
+  B2S_PLAN_JOINT_KIND_DISTANCE = 2,
+  /**
+   * `b2PulleyJointDef` (2.x).
+   */
+  B2S_PLAN_JOINT_KIND_PULLEY = 3,
+  /**
+   * `b2GearJointDef` (2.x): `joint_a` and `joint_b` are plan joints made before it.
+   */
+  B2S_PLAN_JOINT_KIND_GEAR = 4,
+  /**
+   * `b2WheelJointDef` (also a line joint).
+   */
+  B2S_PLAN_JOINT_KIND_WHEEL = 5,
+  /**
+   * `b2WeldJointDef`.
+   */
+  B2S_PLAN_JOINT_KIND_WELD = 6,
+  /**
+   * `b2FrictionJointDef` (2.x).
+   */
+  B2S_PLAN_JOINT_KIND_FRICTION = 7,
+  /**
+   * `b2MotorJointDef` (v3 also a friction joint).
+   */
+  B2S_PLAN_JOINT_KIND_MOTOR = 8,
+  /**
+   * `b2RopeJointDef` (Box2D 2.3).
+   */
+  B2S_PLAN_JOINT_KIND_ROPE = 9,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum b2s_plan_joint_kind b2s_plan_joint_kind;
+#else
+typedef uint32_t b2s_plan_joint_kind;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
+/**
  * How bad a diagnostic is.
  */
 enum b2s_severity
@@ -575,6 +672,12 @@ typedef uint32_t b2s_severity;
  * threads at once.
  */
 typedef struct b2s_builder b2s_builder;
+
+/**
+ * A plan (opaque): what one engine version creates for a scene. It needs nothing of the
+ * scene once made; free it with `b2s_plan_free`.
+ */
+typedef struct b2s_plan b2s_plan;
 
 /**
  * A loaded scene (opaque). Immutable; free it with `b2s_scene_free`.
@@ -1351,6 +1454,470 @@ typedef struct b2s_working_range {
 } b2s_working_range;
 
 /**
+ * A rotation, as its cosine and sine (Box2D v3's `b2Rot`).
+ */
+typedef struct b2s_rot {
+  /**
+   * The cosine of the angle.
+   */
+  float c;
+  /**
+   * The sine of the angle.
+   */
+  float s;
+} b2s_rot;
+
+/**
+ * A rigid transform: a rotation about the origin, then a translation (`b2Transform`).
+ */
+typedef struct b2s_transform {
+  /**
+   * m: the translation.
+   */
+  struct b2s_vec2 p;
+  /**
+   * The rotation.
+   */
+  struct b2s_rot q;
+} b2s_transform;
+
+/**
+ * What a plan is made for: the engine version, where the scene is placed, and the world
+ * it is built into (its settings, as the host made them).
+ */
+typedef struct b2s_plan_options {
+  /**
+   * The engine version, a `b2s_engine` number.
+   */
+  uint32_t engine;
+  /**
+   * Where the scene goes: every body's position, rotation and linear velocity is moved
+   * by it. Its rotation must be normalised. `{{0, 0}, {1, 0}}` places nothing.
+   */
+  struct b2s_transform placement;
+  /**
+   * m/s^2: the gravity of the world the plan is built into (the file's, or the host's
+   * fallback); the checks of a body's gravity scale use it.
+   */
+  struct b2s_vec2 gravity;
+  /**
+   * m/s: the world's maximum linear speed (v3's `b2World_GetMaximumLinearSpeed`); a
+   * body's faster velocity is reported. `FLT_MAX` where the engine has none.
+   */
+  float max_linear_speed;
+  /**
+   * Bytes: the longest body name the engine build keeps (v3.2's `B2_NAME_LENGTH`, which a
+   * host's build may redefine); 0 takes the working range's `name_bytes`.
+   */
+  uint32_t name_bytes;
+} b2s_plan_options;
+
+/**
+ * Mass data to give a body after its shapes, in the engine's terms: `inertia` about the
+ * body origin in 2.x (`b2MassData::I`), about the centre of mass in v3
+ * (`rotationalInertia`).
+ */
+typedef struct b2s_plan_mass {
+  /**
+   * kg.
+   */
+  float mass;
+  /**
+   * m, in the body's frame.
+   */
+  struct b2s_vec2 center;
+  /**
+   * kg m^2.
+   */
+  float inertia;
+} b2s_plan_mass;
+
+/**
+ * One body to create, with its shapes and the mass to give it after them.
+ */
+typedef struct b2s_plan_body {
+  /**
+   * The scene body it is made from.
+   */
+  uint32_t body;
+  /**
+   * A `b2s_body_kind`, equal to the engine's body type.
+   */
+  uint32_t kind;
+  /**
+   * m: its origin, placed.
+   */
+  struct b2s_vec2 position;
+  /**
+   * rad: its angle, placed (what 2.x takes).
+   */
+  float angle;
+  /**
+   * Its rotation, placed (what v3 takes: the cosine and sine of the file's angle, turned
+   * by the placement's).
+   */
+  struct b2s_rot rotation;
+  /**
+   * m/s: its origin's velocity, placed.
+   */
+  struct b2s_vec2 linear_velocity;
+  /**
+   * rad/s.
+   */
+  float angular_velocity;
+  /**
+   * 1/s.
+   */
+  float linear_damping;
+  /**
+   * 1/s.
+   */
+  float angular_damping;
+  /**
+   * A multiple of the world's gravity.
+   */
+  float gravity_scale;
+  /**
+   * The name the engine keeps, or NULL where it keeps none (2.x, or a name longer
+   * than it keeps). Owned by the plan.
+   */
+  b2s_str name;
+  /**
+   * Its shapes, in the order to create them: a range of the plan's shapes.
+   */
+  struct b2s_range shapes;
+  /**
+   * The mass to give it after its shapes, where `set_mass`.
+   */
+  struct b2s_plan_mass mass;
+  /**
+   * m/s: the linear velocity to give it after its mass, where `set_velocity` (v3's
+   * `b2Body_SetMassData` does not keep the origin's velocity, as 2.x's does).
+   */
+  struct b2s_vec2 velocity_after_mass;
+  /**
+   * Whether it may sleep.
+   */
+  bool allow_sleep;
+  /**
+   * Whether it starts awake.
+   */
+  bool awake;
+  /**
+   * Whether its rotation is fixed (2.x and v3.1 `fixedRotation`, v3.2's angular lock).
+   */
+  bool fixed_rotation;
+  /**
+   * Whether it is a bullet.
+   */
+  bool bullet;
+  /**
+   * Whether it is enabled (the file's `Active`).
+   */
+  bool enabled;
+  /**
+   * Whether the executor computes its mass from its shapes once they are made (v3's
+   * `b2Body_ApplyMassFromShapes`), before `set_mass`.
+   */
+  bool apply_mass_from_shapes;
+  /**
+   * Whether the executor gives it `mass` after its shapes.
+   */
+  bool set_mass;
+  /**
+   * Whether the executor gives it `velocity_after_mass` after its mass.
+   */
+  bool set_velocity;
+} b2s_plan_body;
+
+/**
+ * One shape to create on a body: a fixture of the scene on that body.
+ */
+typedef struct b2s_plan_shape {
+  /**
+   * The entry of the scene's fixture ID pool it is made for (a fixture may serve many
+   * bodies): what the executor's result is indexed by.
+   */
+  uint32_t slot;
+  /**
+   * The scene fixture.
+   */
+  uint32_t fixture;
+  /**
+   * The scene shape.
+   */
+  uint32_t shape;
+  /**
+   * A `b2s_plan_shape_kind`.
+   */
+  uint32_t kind;
+  /**
+   * Its points, a range of the plan's point pool (see `b2s_plan_shape_kind`).
+   */
+  struct b2s_range points;
+  /**
+   * m: a circle's centre, in the body's frame.
+   */
+  struct b2s_vec2 center;
+  /**
+   * m: a circle's radius.
+   */
+  float radius;
+  /**
+   * kg/m^2.
+   */
+  float density;
+  /**
+   * The friction coefficient.
+   */
+  float friction;
+  /**
+   * The restitution.
+   */
+  float restitution;
+  /**
+   * The collision filter.
+   */
+  struct b2s_filter filter;
+  /**
+   * Whether it is a sensor.
+   */
+  bool is_sensor;
+} b2s_plan_shape;
+
+/**
+ * One joint to create, every field its kind's def has in the engine version, in its units.
+ * Fields a kind has not are 0.
+ */
+typedef struct b2s_plan_joint {
+  /**
+   * The scene joint it is made from.
+   */
+  uint32_t joint;
+  /**
+   * A `b2s_plan_joint_kind`.
+   */
+  uint32_t kind;
+  /**
+   * The scene body A: the plan's body of that scene index.
+   */
+  uint32_t body_a;
+  /**
+   * The scene body B.
+   */
+  uint32_t body_b;
+  /**
+   * Gear: the plan joints (indices into the plan's joints) it couples.
+   */
+  uint32_t joint_a;
+  /**
+   * Gear: the second.
+   */
+  uint32_t joint_b;
+  /**
+   * m: the anchor on body A, in its frame (2.x and v3.1 `localAnchorA`).
+   */
+  struct b2s_vec2 anchor_a;
+  /**
+   * m: the anchor on body B (`localAnchorB`).
+   */
+  struct b2s_vec2 anchor_b;
+  /**
+   * The unit axis in body A's frame (`localAxisA`).
+   */
+  struct b2s_vec2 axis;
+  /**
+   * rad (`referenceAngle`).
+   */
+  float reference_angle;
+  /**
+   * Body A's local frame (v3.2 `localFrameA`).
+   */
+  struct b2s_transform frame_a;
+  /**
+   * Body B's local frame (v3.2 `localFrameB`).
+   */
+  struct b2s_transform frame_b;
+  /**
+   * m: a pulley's ground anchors, in world terms, placed.
+   */
+  struct b2s_vec2 ground_anchor_a;
+  /**
+   * m.
+   */
+  struct b2s_vec2 ground_anchor_b;
+  /**
+   * m: a pulley's lengths.
+   */
+  float length_a;
+  /**
+   * m.
+   */
+  float length_b;
+  /**
+   * A pulley's or gear's ratio.
+   */
+  float ratio;
+  /**
+   * m or rad: the limits (`lowerAngle`/`lowerTranslation`, ...).
+   */
+  float lower;
+  /**
+   * m or rad.
+   */
+  float upper;
+  /**
+   * m: a distance joint's length (a 2.3 rope's `maxLength`).
+   */
+  float length;
+  /**
+   * m: a distance joint's shortest and longest lengths.
+   */
+  float min_length;
+  /**
+   * m.
+   */
+  float max_length;
+  /**
+   * m/s or rad/s.
+   */
+  float motor_speed;
+  /**
+   * N or N m: the motor's force or torque.
+   */
+  float max_motor;
+  /**
+   * 2.x spring: N/m or N m/rad.
+   */
+  float stiffness;
+  /**
+   * 2.x spring: N s/m or N m s/rad.
+   */
+  float damping;
+  /**
+   * v3 spring: Hz (weld: angular; motor: linear and angular).
+   */
+  float hertz;
+  /**
+   * v3 spring: the damping ratio.
+   */
+  float damping_ratio;
+  /**
+   * m: a motor joint's linear offset (2.x and v3.1).
+   */
+  struct b2s_vec2 linear_offset;
+  /**
+   * rad: its angular offset.
+   */
+  float angular_offset;
+  /**
+   * N: a friction or motor joint's force maximum.
+   */
+  float max_force;
+  /**
+   * N m: its torque maximum.
+   */
+  float max_torque;
+  /**
+   * A motor joint's correction factor.
+   */
+  float correction_factor;
+  /**
+   * Whether the bodies collide.
+   */
+  bool collide_connected;
+  /**
+   * Whether the limit is on.
+   */
+  bool enable_limit;
+  /**
+   * Whether the motor is on.
+   */
+  bool enable_motor;
+  /**
+   * Whether the spring is on (v3).
+   */
+  bool enable_spring;
+} b2s_plan_joint;
+
+/**
+ * Something of the scene the engine version cannot hold, or holds only approximately.
+ */
+typedef struct b2s_plan_report {
+  /**
+   * A `b2s_code`: `B2S_CODE_BEYOND_BOX2D_RANGE`, `B2S_CODE_SKIPPED_JOINT`, ...
+   */
+  uint32_t code;
+  /**
+   * "shape", "fixture", "body", "joint" or "world" (static storage).
+   */
+  b2s_str object;
+  /**
+   * The object's index in the scene's array of its kind.
+   */
+  uint32_t index;
+  /**
+   * The object's Name, or NULL. Owned by the plan.
+   */
+  b2s_str name;
+  /**
+   * What happened, for a level designer. Owned by the plan.
+   */
+  b2s_str message;
+} b2s_plan_report;
+
+/**
+ * A read-only view of a plan: a pointer and a count per array. Valid until the plan is
+ * freed; the plan needs nothing of the scene it was made from.
+ */
+typedef struct b2s_plan_view {
+  /**
+   * The `body_count` bodies, in the order to create them.
+   */
+  const struct b2s_plan_body *bodies;
+  /**
+   * The `shape_count` shapes, each body's a range.
+   */
+  const struct b2s_plan_shape *shapes;
+  /**
+   * The point pool the shapes' `points` ranges index.
+   */
+  const struct b2s_vec2 *points;
+  /**
+   * The `joint_count` joints, in the order to create them, after every body.
+   */
+  const struct b2s_plan_joint *joints;
+  /**
+   * The reports, in the order the plan met them.
+   */
+  const struct b2s_plan_report *reports;
+  /**
+   * Number of items in `bodies`.
+   */
+  uint32_t body_count;
+  /**
+   * Number of items in `shapes`.
+   */
+  uint32_t shape_count;
+  /**
+   * Number of items in `points`.
+   */
+  uint32_t point_count;
+  /**
+   * Number of items in `joints`.
+   */
+  uint32_t joint_count;
+  /**
+   * Number of items in `reports`.
+   */
+  uint32_t report_count;
+  /**
+   * Whether the placement was usable; when false the plan holds nothing but its report.
+   */
+  bool placed;
+} b2s_plan_view;
+
+/**
  * How to write.
  */
 typedef struct b2s_write_options {
@@ -1683,6 +2250,40 @@ uint32_t b2s_scene_dialect(const struct b2s_scene *scene);
  * number that is no engine version.
  */
 const struct b2s_working_range *b2s_engine_working_range(uint32_t engine);
+
+/**
+ * Makes the plan of `scene` for the engine version and placement `options` give. On
+ * success returns `B2S_CODE_OK` and stores a new plan in `*out_plan`; free it with
+ * `b2s_plan_free`. A placement the engine cannot take is no failure: the plan then holds
+ * only its report and its view's `placed` is false. An engine number that names no
+ * version, or one whose mapping the library does not make yet, fails with
+ * `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there, returns the error's code and,
+ * when `error` is not NULL, fills it. Thread-safe.
+ *
+ * # Safety
+ * `scene` is NULL or a live scene; `options` NULL or valid; `out_plan` NULL or writable;
+ * `error` NULL or writable.
+ */
+b2s_code b2s_plan_make(const struct b2s_scene *scene,
+                       const struct b2s_plan_options *options,
+                       struct b2s_plan **out_plan,
+                       struct b2s_error *error);
+
+/**
+ * The plan's arrays. NULL for a NULL plan. Valid until the plan is freed.
+ *
+ * # Safety
+ * `plan` is NULL or a live plan.
+ */
+const struct b2s_plan_view *b2s_plan_get_view(const struct b2s_plan *plan);
+
+/**
+ * Frees a plan and everything it owns. NULL is ignored.
+ *
+ * # Safety
+ * `plan` is NULL or a plan from `b2s_plan_make` that was not freed yet.
+ */
+void b2s_plan_free(struct b2s_plan *plan);
 
 /**
  * The write options with every field at its default (defaults omitted, as the editor

@@ -380,3 +380,37 @@ fn a_scene_is_written_in_the_dialect_its_options_name_or_in_its_own() {
     assert_eq!((code, none, error), (Code::InvalidArgument, None, Code::InvalidArgument as u32));
     unsafe { b2s_scene_free(scene) };
 }
+
+fn plan_options(engine: u32) -> box2scene::plan::PlanOptions {
+    use box2scene::plan::{PlanOptions, Rot, Transform};
+    PlanOptions {
+        engine,
+        placement: Transform { p: Vec2 { x: 0.0, y: 0.0 }, q: Rot { c: 1.0, s: 0.0 } },
+        gravity: Vec2 { x: 0.0, y: -10.0 },
+        max_linear_speed: f32::MAX,
+        name_bytes: 0,
+    }
+}
+
+#[test]
+fn a_plan_refuses_null_arguments_and_engines_it_does_not_map() {
+    let (scene, code, _) = load_text(SCENE);
+    assert_eq!(code, Code::Ok);
+    let mut plan = null_mut();
+    let mut error = no_error();
+    let options = plan_options(0);
+    unsafe {
+        assert_eq!(b2s_plan_make(null(), &options, &mut plan, &mut error), Code::NullArgument);
+        assert_eq!(text(error.message.as_ptr()), "scene is NULL");
+        assert_eq!(b2s_plan_make(scene, null(), &mut plan, &mut error), Code::NullArgument);
+        assert_eq!(b2s_plan_make(scene, &options, null_mut(), null_mut()), Code::NullArgument);
+        plan = std::ptr::NonNull::dangling().as_ptr();
+        assert_eq!(b2s_plan_make(scene, &options, &mut plan, &mut error), Code::InvalidArgument);
+        assert!(plan.is_null(), "a failed make stores NULL");
+        assert_eq!(error.code, Code::InvalidArgument as u32);
+        assert!(text(error.message.as_ptr()).starts_with("engine 0 is no b2s_engine"));
+        assert!(b2s_plan_get_view(null()).is_null());
+        b2s_plan_free(null_mut());
+        b2s_scene_free(scene);
+    }
+}
