@@ -10,11 +10,12 @@ use crate::scene::Scene;
 /// number that names no version is an error, and so is a version whose mapping is not
 /// made here yet (its executor still maps the scene itself). A placement the engine cannot
 /// take is no error: the plan then holds only its report (see [`Plan::placed`]).
-pub fn make(_scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
+pub fn make(scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
     let engine = Engine::try_from(options.engine)
         .map_err(|n| invalid(format!("engine {n} is no b2s_engine: a plan is made for 1 to 4")))?;
     let family = match engine {
-        Engine::Box2d23 | Engine::Box2d24 => "Box2D 2.x",
+        Engine::Box2d24 => return Ok(super::box2d2::plan(scene, options)),
+        Engine::Box2d23 => "Box2D 2.3",
         Engine::Box2d31 | Engine::Box2d32 => "Box2D v3",
     };
     Err(invalid(format!(
@@ -54,12 +55,10 @@ mod tests {
     }
 
     #[test]
-    fn box2d_2x_is_not_planned_yet() {
+    fn box2d_2_3_is_not_planned_yet() {
         let scene = crate::load(b"<World Version=\"2\"/>", &Default::default()).unwrap();
-        for n in [1, 2] {
-            let e = make(&scene, &options(n)).unwrap_err();
-            assert_eq!(e.code, Code::InvalidArgument);
-            assert!(e.message.starts_with("no plan is made for Box2D 2.x yet"), "{e}");
-        }
+        let e = make(&scene, &options(1)).unwrap_err();
+        assert_eq!(e.code, Code::InvalidArgument);
+        assert!(e.message.starts_with("no plan is made for Box2D 2.3 yet"), "{e}");
     }
 }

@@ -3,8 +3,8 @@
 //! them and the reports of what it cannot hold (`records.rs`); `make.rs` hands the scene to
 //! the module of the version asked for. `range.rs` is the working range, one measured table
 //! per engine version, which the executors in C, C++ and Python also read; `box2d2/` is
-Box2D 2.x's (its arithmetic and its mapping); `printed.rs` spells floats in reports as C
-does.
+//! Box2D 2.x's (its arithmetic and its mapping); `printed.rs` spells floats in reports as C
+//! does.
 
 #![forbid(unsafe_code)]
 

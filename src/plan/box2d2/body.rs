@@ -4,21 +4,21 @@
 
 use super::math::{dot, rotation, transform, untransform};
 use crate::plan::records::{PlanMass, Transform};
-use crate::scene::Vec2;
+use crate::scene::{BodyKind, Vec2};
 
 /// A created body: its frame and the mass it holds, the inertia about its centre of mass
 /// (`m_I`). A static or kinematic body, or one without mass, holds zeros.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Body {
     pub frame: Transform,
     pub mass: PlanMass,
-    pub dynamic: bool,
+    pub kind: BodyKind,
 }
 
 impl Body {
     /// A body created at `position` and `angle` holding `mass`.
-    pub(crate) fn new(position: Vec2, angle: f32, mass: PlanMass, dynamic: bool) -> Body {
-        Body { frame: Transform { p: position, q: rotation(angle) }, mass, dynamic }
+    pub(crate) fn new(position: Vec2, angle: f32, mass: PlanMass, kind: BodyKind) -> Body {
+        Body { frame: Transform { p: position, q: rotation(angle) }, mass, kind }
     }
 
     /// `GetInertia`: about the origin.
@@ -64,7 +64,7 @@ mod tests {
     #[test]
     fn the_centre_of_mass_turns_with_the_body() {
         let mass = PlanMass { mass: 2.0, center: Vec2::new(1.0, 0.0), inertia: 3.0 };
-        let body = Body::new(Vec2::new(5.0, 0.0), std::f32::consts::PI, mass, true);
+        let body = Body::new(Vec2::new(5.0, 0.0), std::f32::consts::PI, mass, BodyKind::Dynamic);
         let c = body.world_center();
         assert!((c.x - 4.0).abs() < 1e-6 && c.y.abs() < 1e-6);
         assert_eq!(body.inertia(), 5.0);
@@ -76,7 +76,7 @@ mod tests {
 
     #[test]
     fn a_body_without_mass_neither_moves_nor_turns() {
-        let body = Body::new(Vec2::ZERO, 0.0, PlanMass::default(), false);
+        let body = Body::new(Vec2::ZERO, 0.0, PlanMass::default(), BodyKind::Static);
         assert_eq!(body.inverse_mass(), 0.0);
         assert_eq!(body.inverse_central_inertia(), 0.0);
     }

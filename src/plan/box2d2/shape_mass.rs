@@ -6,8 +6,7 @@ use super::polygon;
 use crate::plan::records::PlanMass;
 use crate::scene::Vec2;
 
-/// `b2_pi` in `b2_common.h`: a float literal of its own, not `std::f32::consts::PI`.
-pub(crate) const PI: f32 = 3.14159265359;
+use crate::plan::range::PI;
 
 /// A shape as the engine holds it, for its mass.
 #[derive(Clone, Debug, PartialEq)]

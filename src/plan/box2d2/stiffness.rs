@@ -1,7 +1,7 @@
 //! Box2D 2.4's springs from a frequency and a damping ratio (`b2LinearStiffness` in
 //! `b2_joint.cpp`, and the same arithmetic for the mass a joint's spring moves).
 
-use super::shape_mass::PI;
+use crate::plan::range::PI;
 
 /// A spring's stiffness and damping.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -1,0 +1,126 @@
+//! The first value of one object found beyond Box2D 2.4's working range: what its report
+//! says. Later values of the object are not looked at once one is found.
+
+use crate::plan::printed::{Exact, Short};
+use crate::scene::Vec2;
+
+#[derive(Clone, Debug, Default)]
+pub(super) struct Check {
+    problem: Option<String>,
+}
+
+impl Check {
+    pub(super) fn passed(&self) -> bool {
+        self.problem.is_none()
+    }
+
+    pub(super) fn problem(&self) -> &str {
+        self.problem.as_deref().unwrap_or_default()
+    }
+
+    pub(super) fn magnitude(&mut self, field: &str, value: f32, bound: f32, unit: &str) {
+        if self.passed() && !(value.abs() <= bound) {
+            self.beyond(
+                format!("{field} {}", Exact(value)),
+                format!("within +-{} {unit}", Short(bound)),
+            );
+        }
+    }
+
+    pub(super) fn vector(&mut self, field: &str, v: Vec2, bound: f32, unit: &str) {
+        if self.passed() && !(v.x.abs() <= bound && v.y.abs() <= bound) {
+            self.beyond(
+                format!("{field} ({}, {})", Exact(v.x), Exact(v.y)),
+                format!("each component within +-{} {unit}", Short(bound)),
+            );
+        }
+    }
+
+    pub(super) fn within(&mut self, field: &str, value: f32, low: f32, high: f32, unit: &str) {
+        if self.passed() && !(low <= value && value <= high) {
+            self.beyond(
+                format!("{field} {}", Exact(value)),
+                format!("within [{}, {}] {unit}", Short(low), Short(high)),
+            );
+        }
+    }
+
+    pub(super) fn at_least(&mut self, field: &str, value: f32, bound: f32, unit: &str) {
+        if self.passed() && !(value >= bound) {
+            self.beyond(
+                format!("{field} {}", Exact(value)),
+                format!("at least {} {unit}", Short(bound)),
+            );
+        }
+    }
+
+    /// 0, or within [low, high]: a derived quantity such as a body's mass.
+    pub(super) fn zero_or_within(
+        &mut self,
+        field: &str,
+        value: f32,
+        low: f32,
+        high: f32,
+        unit: &str,
+    ) {
+        if self.passed() && value != 0.0 && !(low <= value && value <= high) {
+            self.beyond(
+                format!("{field} {} {unit}", Exact(value)),
+                format!("0 or within [{}, {}] {unit}", Short(low), Short(high)),
+            );
+        }
+    }
+
+    /// What the engine asserts against, whatever the bounds.
+    pub(super) fn fail(&mut self, what: String) {
+        if self.passed() {
+            self.problem = Some(what);
+        }
+    }
+
+    fn beyond(&mut self, value: String, range: String) {
+        self.problem = Some(format!("{value} lies beyond Box2D 2.4's working range ({range})"));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_first_value_beyond_its_bound_is_the_one_reported() {
+        let mut check = Check::default();
+        check.magnitude("Angle", 1.0, 2.0, "rad");
+        assert!(check.passed());
+        check.vector("Position", Vec2::new(0.5, -300.0), 100.0, "m");
+        check.magnitude("Angle", 9.0, 2.0, "rad");
+        assert_eq!(
+            check.problem(),
+            "Position (0.5, -300) lies beyond Box2D 2.4's working range (each component \
+             within +-100 m)"
+        );
+    }
+
+    #[test]
+    fn nan_is_beyond_every_bound_and_an_empty_unit_leaves_a_space() {
+        let mut check = Check::default();
+        check.magnitude("Friction", f32::NAN, 1e6, "");
+        assert_eq!(
+            check.problem(),
+            "Friction nan lies beyond Box2D 2.4's working range (within +-1e+06 )"
+        );
+        let mut mass = Check::default();
+        mass.zero_or_within("its mass", 0.0, 1e-3, 1e9, "kg");
+        assert!(mass.passed());
+        mass.zero_or_within("its mass", 1e-6, 1e-3, 1e9, "kg");
+        assert_eq!(
+            mass.problem(),
+            "its mass 9.99999997e-07 kg lies beyond Box2D 2.4's working range (0 or within \
+             [0.001, 1e+09] kg)"
+        );
+        let mut axis = Check::default();
+        axis.at_least("The length of LocalAxisA", 0.0, 1e-3, "m");
+        axis.within("CorrectionFactor", 2.0, 0.0, 1.0, "");
+        assert!(axis.problem().starts_with("The length of LocalAxisA 0 lies beyond"));
+    }
+}
