@@ -562,7 +562,8 @@ enum b2s_plan_shape_kind
    */
   B2S_PLAN_SHAPE_KIND_POLYGON = 1,
   /**
-   * `points`: its two ends.
+   * `points`: its two ends; in 2.x also four, `[ghost, ends, ghost]`, for a one-sided
+   * edge (`SetOneSided`).
    */
   B2S_PLAN_SHAPE_KIND_SEGMENT = 2,
   /**
@@ -1587,7 +1588,8 @@ typedef struct b2s_plan_body {
    */
   struct b2s_range shapes;
   /**
-   * The mass to give it after its shapes, where `set_mass`.
+   * The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
+   * the engine computes from its shapes (what `b2Body::GetMassData` gives).
    */
   struct b2s_plan_mass mass;
   /**
@@ -1656,7 +1658,8 @@ typedef struct b2s_plan_shape {
    */
   struct b2s_range points;
   /**
-   * m: a circle's centre, in the body's frame.
+   * m: a circle's centre, in the body's frame; in 2.x a polygon's centroid to keep (the
+   * file's `Centroid`), NaN where the engine keeps its own.
    */
   struct b2s_vec2 center;
   /**
@@ -1691,7 +1694,8 @@ typedef struct b2s_plan_shape {
  */
 typedef struct b2s_plan_joint {
   /**
-   * The scene joint it is made from.
+   * The scene joint it is made from; `B2S_NONE` for one the plan adds to the one before
+   * it (2.x: a rope holding a pulley's side, from a static body).
    */
   uint32_t joint;
   /**
