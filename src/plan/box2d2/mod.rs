@@ -20,3 +20,6 @@ mod stiffness;
 mod world;
 
 pub(crate) use world::plan;
+
+#[cfg(test)]
+mod tests;
