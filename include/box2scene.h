@@ -557,8 +557,9 @@ enum b2s_plan_shape_kind
    */
   B2S_PLAN_SHAPE_KIND_CIRCLE = 0,
   /**
-   * `points`: the vertices the engine's polygon call takes (2.x `b2PolygonShape::Set`,
-   * v3 `b2ComputeHull` then `b2MakePolygon` with radius 0).
+   * `points`: the vertices the engine's polygon call takes (2.x `b2PolygonShape::Set`);
+   * for v3 the hull itself, `b2ComputeHull`'s counter-clockwise points, which
+   * `b2MakePolygon` takes as a `b2Hull` with radius 0.
    */
   B2S_PLAN_SHAPE_KIND_POLYGON = 1,
   /**
@@ -622,11 +623,13 @@ enum b2s_plan_joint_kind
    */
   B2S_PLAN_JOINT_KIND_WELD = 6,
   /**
-   * `b2FrictionJointDef` (2.x).
+   * `b2FrictionJointDef` (2.x); in v3 a `b2MotorJointDef` that drives no velocity, with
+   * `max_force` and `max_torque` (v3.2: its velocity limits, at its frames).
    */
   B2S_PLAN_JOINT_KIND_FRICTION = 7,
   /**
-   * `b2MotorJointDef` (v3 also a friction joint).
+   * `b2MotorJointDef` (v3.2: springs of `hertz` and `damping_ratio` limited to
+   * `max_force` and `max_torque`, frame A at the offsets).
    */
   B2S_PLAN_JOINT_KIND_MOTOR = 8,
   /**
@@ -1589,7 +1592,9 @@ typedef struct b2s_plan_body {
   struct b2s_range shapes;
   /**
    * The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
-   * the engine computes from its shapes (what `b2Body::GetMassData` gives).
+   * the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
+   * dynamic body's mass as the engine holds it once made, given or not (what it
+   * computes from the shapes where `set_mass` is false), predicted bit for bit.
    */
   struct b2s_plan_mass mass;
   /**

@@ -414,3 +414,29 @@ fn a_plan_refuses_null_arguments_and_engines_it_does_not_map() {
         b2s_scene_free(scene);
     }
 }
+
+#[test]
+fn a_v3_plan_is_read_through_its_view_after_its_scene_is_freed() {
+    let (scene, code, _) = load_text(SCENE);
+    assert_eq!(code, Code::Ok);
+    let mut plan = null_mut();
+    let mut error = no_error();
+    let options = plan_options(box2scene::Engine::Box2d32 as u32);
+    unsafe {
+        assert_eq!(b2s_plan_make(scene, &options, &mut plan, &mut error), Code::Ok);
+        b2s_scene_free(scene);
+        let view = &*b2s_plan_get_view(plan);
+        assert!(view.placed);
+        let bodies = slice(view.bodies, view.body_count);
+        assert_eq!(bodies.len(), 2);
+        assert_eq!(text(bodies[0].name.as_ptr()), "ground");
+        assert_eq!(text(bodies[1].name.as_ptr()), "ball");
+        assert_eq!(bodies[1].shapes.count, 1);
+        let shape = slice(view.shapes, view.shape_count)[0];
+        assert_eq!((shape.kind, shape.radius), (0, 0.5));
+        let joints = slice(view.joints, view.joint_count);
+        assert_eq!((joints.len(), joints[0].body_a, joints[0].body_b), (1, 0, 1));
+        assert_eq!(view.report_count, 0);
+        b2s_plan_free(plan);
+    }
+}

@@ -1,5 +1,7 @@
 //! Which engine module makes a plan: the one of the version the options name.
 
+use super::box2d2;
+use super::box2d3::{self, V3};
 use super::container::Plan;
 use super::range::Engine;
 use super::records::PlanOptions;
@@ -13,15 +15,16 @@ use crate::scene::Scene;
 pub fn make(scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
     let engine = Engine::try_from(options.engine)
         .map_err(|n| invalid(format!("engine {n} is no b2s_engine: a plan is made for 1 to 4")))?;
-    let family = match engine {
-        Engine::Box2d24 => return Ok(super::box2d2::plan(scene, options)),
-        Engine::Box2d23 => "Box2D 2.3",
-        Engine::Box2d31 | Engine::Box2d32 => "Box2D v3",
-    };
-    Err(invalid(format!(
-        "no plan is made for {family} yet (engine {}): its executor maps the scene itself",
-        options.engine
-    )))
+    if engine == Engine::Box2d24 {
+        return Ok(box2d2::plan(scene, options));
+    }
+    match V3::of(engine) {
+        Some(v3) => Ok(box2d3::plan(scene, options, v3)),
+        None => Err(invalid(format!(
+            "no plan is made for Box2D 2.3 yet (engine {}): its executor maps the scene itself",
+            options.engine
+        ))),
+    }
 }
 
 fn invalid(message: String) -> Error {

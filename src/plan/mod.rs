@@ -2,16 +2,17 @@
 //! (`container.rs`) holds every body, shape and joint as one version's definitions want
 //! them and the reports of what it cannot hold (`records.rs`); `make.rs` hands the scene to
 //! the module of the version asked for. `range.rs` is the working range, one measured table
-//! per engine version, which the executors in C, C++ and Python also read; `box2d2/` is
-//! Box2D 2.x's (its arithmetic and its mapping); `printed.rs` spells floats in reports as C
-//! does.
+//! per engine version, which the executors in C, C++ and Python also read. `box2d2/` maps a
+//! scene onto Box2D 2.4 and `box2d3/` onto v3.1 and v3.2, each with its engine's arithmetic
+//! repeated to the bit; `printf.rs` spells numbers in reports as C does.
 
 #![forbid(unsafe_code)]
 
 mod box2d2;
+mod box2d3;
 mod container;
 mod make;
-mod printed;
+mod printf;
 mod range;
 mod records;
 

@@ -190,7 +190,7 @@ const _: () = {
 const NONE: f32 = f32::MAX;
 
 /// pi as Box2D writes it (`b2_pi`, v3 `B2_PI`), rounded to a float.
-pub(super) const PI: f32 = 3.14159265359;
+pub(in crate::plan) const PI: f32 = 3.14159265359;
 
 /// The linear slop of every version: 2.x's `b2_linearSlop` and v3's `B2_LINEAR_SLOP`.
 const LINEAR_SLOP: f32 = 0.005;

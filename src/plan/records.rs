@@ -52,8 +52,9 @@ pub struct PlanOptions {
 pub enum PlanShapeKind {
     /// `center` and `radius`.
     Circle = 0,
-    /// `points`: the vertices the engine's polygon call takes (2.x `b2PolygonShape::Set`,
-    /// v3 `b2ComputeHull` then `b2MakePolygon` with radius 0).
+    /// `points`: the vertices the engine's polygon call takes (2.x `b2PolygonShape::Set`);
+    /// for v3 the hull itself, `b2ComputeHull`'s counter-clockwise points, which
+    /// `b2MakePolygon` takes as a `b2Hull` with radius 0.
     Polygon = 1,
     /// `points`: its two ends; in 2.x also four, `[ghost, ends, ghost]`, for a one-sided
     /// edge (`SetOneSided`).
@@ -113,7 +114,9 @@ pub struct PlanBody {
     /// Its shapes, in the order to create them: a range of the plan's shapes.
     pub shapes: Range,
     /// The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
-    /// the engine computes from its shapes (what `b2Body::GetMassData` gives).
+    /// the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
+    /// dynamic body's mass as the engine holds it once made, given or not (what it
+    /// computes from the shapes where `set_mass` is false), predicted bit for bit.
     pub mass: PlanMass,
     /// m/s: the linear velocity to give it after its mass, where `set_velocity` (v3's
     /// `b2Body_SetMassData` does not keep the origin's velocity, as 2.x's does).
@@ -187,9 +190,11 @@ pub enum PlanJointKind {
     Wheel = 5,
     /// `b2WeldJointDef`.
     Weld = 6,
-    /// `b2FrictionJointDef` (2.x).
+    /// `b2FrictionJointDef` (2.x); in v3 a `b2MotorJointDef` that drives no velocity, with
+    /// `max_force` and `max_torque` (v3.2: its velocity limits, at its frames).
     Friction = 7,
-    /// `b2MotorJointDef` (v3 also a friction joint).
+    /// `b2MotorJointDef` (v3.2: springs of `hertz` and `damping_ratio` limited to
+    /// `max_force` and `max_torque`, frame A at the offsets).
     Motor = 8,
     /// `b2RopeJointDef` (Box2D 2.3).
     Rope = 9,

@@ -10,7 +10,7 @@ use super::math::{rotate, rotation, scale};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
-use crate::plan::printed::Fixed;
+use crate::plan::printf::F;
 use crate::plan::records::{PlanBody, PlanMass};
 use crate::scene::{Body as SceneBody, BodyKind, MassData, Range, Str, Vec2};
 
@@ -201,7 +201,7 @@ impl Mapper<'_> {
             body.name,
             format_args!(
                 "{field} {} is negative, which Box2D 2.4 does not allow; 0 was used",
-                Fixed(value)
+                F(value)
             ),
         );
         0.0

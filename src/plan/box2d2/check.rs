@@ -1,7 +1,7 @@
 //! The first value of one object found beyond Box2D 2.4's working range: what its report
 //! says. Later values of the object are not looked at once one is found.
 
-use crate::plan::printed::{Exact, Short};
+use crate::plan::printf::{G, G9};
 use crate::scene::Vec2;
 
 #[derive(Clone, Debug, Default)]
@@ -20,18 +20,15 @@ impl Check {
 
     pub(super) fn magnitude(&mut self, field: &str, value: f32, bound: f32, unit: &str) {
         if self.passed() && !(value.abs() <= bound) {
-            self.beyond(
-                format!("{field} {}", Exact(value)),
-                format!("within +-{} {unit}", Short(bound)),
-            );
+            self.beyond(format!("{field} {}", G9(value)), format!("within +-{} {unit}", G(bound)));
         }
     }
 
     pub(super) fn vector(&mut self, field: &str, v: Vec2, bound: f32, unit: &str) {
         if self.passed() && !(v.x.abs() <= bound && v.y.abs() <= bound) {
             self.beyond(
-                format!("{field} ({}, {})", Exact(v.x), Exact(v.y)),
-                format!("each component within +-{} {unit}", Short(bound)),
+                format!("{field} ({}, {})", G9(v.x), G9(v.y)),
+                format!("each component within +-{} {unit}", G(bound)),
             );
         }
     }
@@ -39,18 +36,15 @@ impl Check {
     pub(super) fn within(&mut self, field: &str, value: f32, low: f32, high: f32, unit: &str) {
         if self.passed() && !(low <= value && value <= high) {
             self.beyond(
-                format!("{field} {}", Exact(value)),
-                format!("within [{}, {}] {unit}", Short(low), Short(high)),
+                format!("{field} {}", G9(value)),
+                format!("within [{}, {}] {unit}", G(low), G(high)),
             );
         }
     }
 
     pub(super) fn at_least(&mut self, field: &str, value: f32, bound: f32, unit: &str) {
         if self.passed() && !(value >= bound) {
-            self.beyond(
-                format!("{field} {}", Exact(value)),
-                format!("at least {} {unit}", Short(bound)),
-            );
+            self.beyond(format!("{field} {}", G9(value)), format!("at least {} {unit}", G(bound)));
         }
     }
 
@@ -65,8 +59,8 @@ impl Check {
     ) {
         if self.passed() && value != 0.0 && !(low <= value && value <= high) {
             self.beyond(
-                format!("{field} {} {unit}", Exact(value)),
-                format!("0 or within [{}, {}] {unit}", Short(low), Short(high)),
+                format!("{field} {} {unit}", G9(value)),
+                format!("0 or within [{}, {}] {unit}", G(low), G(high)),
             );
         }
     }

@@ -8,7 +8,7 @@ use super::stiffness::{Spring, linear, spring};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
-use crate::plan::printed::{Exact, Short};
+use crate::plan::printf::{G, G9};
 use crate::plan::records::{PlanJoint, PlanJointKind};
 use crate::scene::{BodyKind, Joint, JointKind, NONE, Vec2};
 
@@ -186,8 +186,8 @@ impl Mapper<'_> {
                     "it starts {} m from satisfied, and joint {other} already pulls body {body} \
                      from further than {} m: two such joints on one body lie beyond Box2D \
                      2.4's working range (its position solver can tear the body to NaN)",
-                    Exact(violation),
-                    Short(self.range.max_pulled_violation)
+                    G9(violation),
+                    G(self.range.max_pulled_violation)
                 ));
                 return check;
             }
@@ -332,10 +332,10 @@ impl Mapper<'_> {
             check.fail(format!(
                 "FrequencyHz {} gives a stiffness of {}{} with these bodies, beyond Box2D 2.4's \
                  working range (0 or at least {})",
-                Exact(joint.frequency_hz),
-                Exact(stiffness),
+                G9(joint.frequency_hz),
+                G9(stiffness),
                 if weld { " N m/rad" } else { " N/m" },
-                Short(self.range.min_stiffness)
+                G(self.range.min_stiffness)
             ));
         }
     }
@@ -378,24 +378,24 @@ impl Mapper<'_> {
         let where_ = format!(
             "{field}: the joint acts {} m from the centre of mass of body {body} (mass {} kg, \
              inertia {} kg m^2), ",
-            Exact(r),
-            Exact(mass.mass),
-            Exact(mass.inertia)
+            G9(r),
+            G9(mass.mass),
+            G9(mass.inertia)
         );
         let gyration = (mass.inertia / mass.mass).sqrt();
         if !(compliance <= self.range.max_compliance) {
             check.fail(format!(
                 "{where_}where 1/m + r^2/I = {} 1/kg lies beyond Box2D 2.4's working range (at \
                  most {} 1/kg)",
-                Short(compliance),
-                Short(self.range.max_compliance)
+                G(compliance),
+                G(self.range.max_compliance)
             ));
         } else if lever > 0.0 && mass.inertia > 0.0 && !(r <= lever * gyration) {
             check.fail(format!(
                 "{where_}{} radii of gyration out, beyond Box2D 2.4's working range for this \
                  joint (at most {})",
-                Short(r / gyration),
-                Short(lever)
+                G(r / gyration),
+                G(lever)
             ));
         }
     }
@@ -428,8 +428,8 @@ impl Mapper<'_> {
                 format_args!(
                     "its disabled limit has LowerTranslation {} above UpperTranslation {}, \
                      which Box2D 2.4 asserts against; they were passed swapped",
-                    Exact(joint.lower_limit),
-                    Exact(joint.upper_limit)
+                    G9(joint.lower_limit),
+                    G9(joint.upper_limit)
                 ),
             );
         }
@@ -545,8 +545,8 @@ impl Mapper<'_> {
                 format_args!(
                     "{field} {} gives a limit of {} m, which Box2D 2.4 cannot hold {why}; the \
                      side is unlimited",
-                    Exact(given),
-                    Exact(limit)
+                    G9(given),
+                    G9(limit)
                 ),
             );
             return;

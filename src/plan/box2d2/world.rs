@@ -10,7 +10,7 @@ use super::math::{angle, transform};
 use super::shapes::Made;
 use crate::error::Code;
 use crate::plan::container::{Object, Plan};
-use crate::plan::printed::Exact;
+use crate::plan::printf::G9;
 use crate::plan::range::{Engine, WorkingRange};
 use crate::plan::records::{PlanMass, PlanOptions};
 use crate::scene::{Scene, Str, Vec2};
@@ -70,11 +70,11 @@ impl<'a> Mapper<'a> {
                 format_args!(
                     "the placement ({}, {}) turned by ({}, {}) is not finite, not within +-{} m \
                      or not a normalised rotation; nothing was built",
-                    Exact(p.p.x),
-                    Exact(p.p.y),
-                    Exact(p.q.c),
-                    Exact(p.q.s),
-                    Exact(self.range.max_length)
+                    G9(p.p.x),
+                    G9(p.p.y),
+                    G9(p.q.c),
+                    G9(p.q.s),
+                    G9(self.range.max_length)
                 ),
             );
             self.plan.set_unplaced();

@@ -1,0 +1,301 @@
+//! The checks of a joint, once every body has its final mass: the working range of its
+//! values, the levers and compliance at its anchors, what its drive does to its bodies, and
+//! how far from satisfied it starts.
+
+use super::check::Check;
+use super::geometry::Mass;
+use super::math::transform_point;
+use super::math::{cross, distance, dot, inv_transform_point, length, normalize, rotate, sub};
+use super::{Created, Mapper};
+use crate::plan::printf::{G, G9};
+use crate::scene::{BodyKind, Joint, JointKind, Vec2};
+
+/// `b2MaxFloat`: `a` unless `b` is greater.
+fn max_float(a: f32, b: f32) -> f32 {
+    if a > b { a } else { b }
+}
+
+fn kind_of(joint: &Joint) -> Option<JointKind> {
+    JointKind::try_from(joint.kind).ok()
+}
+
+fn is_wheel(joint: &Joint) -> bool {
+    matches!(kind_of(joint), Some(JointKind::Line | JointKind::Wheel))
+}
+
+/// sqrt(I/m) about the centre of mass; a body that cannot turn has no bound of its own.
+fn gyration(mass: &Mass) -> f32 {
+    if mass.inertia > 0.0 { (mass.inertia / mass.mass).sqrt() } else { f32::MAX }
+}
+
+impl Mapper<'_> {
+    fn body(&self, index: u32) -> &Created {
+        self.created[index as usize].as_ref().expect("a joint's bodies are created")
+    }
+
+    /// The final mass of a created dynamic body, else none.
+    fn dynamic_mass(&self, index: u32) -> Option<Mass> {
+        let body = self.body(index);
+        (body.kind == BodyKind::Dynamic as u32).then_some(body.mass)
+    }
+
+    /// Box2D's joint solvers work with 1/m + r^2/I of each body at the anchor (r from its
+    /// centre of mass) and invert 2x2 matrices of such terms: past this, their products
+    /// overflow or the determinant loses every bit.
+    fn check_anchor(&self, check: &mut Check, field: &str, body: u32, anchor: Vec2, lever: f32) {
+        let Some(mass) = self.dynamic_mass(body) else { return };
+        let (v3, r_) = (self.v3, self.range);
+        let r = distance(anchor, mass.center);
+        let inertia = mass.inertia;
+        let compliance = 1.0 / mass.mass + if inertia > 0.0 { r * r / inertia } else { 0.0 };
+        if !(compliance <= r_.max_compliance) {
+            check.fail(format_args!(
+                "{field}: the joint acts {} m from the centre of mass of body {body} (mass {} kg, \
+                 inertia {} kg m^2), where 1/m + r^2/I = {} 1/kg lies beyond {}'s working range \
+                 (at most {} 1/kg)",
+                G9(r),
+                G9(mass.mass),
+                G9(inertia),
+                G(compliance),
+                v3.name(),
+                G(r_.max_compliance)
+            ));
+        } else if inertia > 0.0 && !(r <= lever * (inertia / mass.mass).sqrt()) {
+            check.fail(format_args!(
+                "{field}: the joint acts {} radii of gyration from the centre of mass of body \
+                 {body}, beyond {}'s working range (at most {})",
+                G(r / (inertia / mass.mass).sqrt()),
+                v3.name(),
+                G(lever)
+            ));
+        }
+    }
+
+    /// What a motor's or friction's force (N) does to `body`.
+    fn check_drive(&self, check: &mut Check, body: u32, force: f32) {
+        let Some(mass) = self.dynamic_mass(body) else { return };
+        let acceleration = force / mass.mass;
+        let bound = self.range.max_joint_acceleration;
+        if !(acceleration <= bound) {
+            check.fail(format_args!(
+                "its motor or friction force {} N accelerates body {body} (mass {} kg) by {} \
+                 m/s^2, beyond {}'s working range (at most {} m/s^2)",
+                G9(force),
+                G9(mass.mass),
+                G(acceleration),
+                self.v3.name(),
+                G(bound)
+            ));
+        }
+    }
+
+    /// The farthest lever of one body of a joint whose other body is `other`: a line or
+    /// wheel joint to a body that does not turn (one that does not move, or a dynamic one
+    /// without rotational inertia: fixed rotation) leaves the body free to turn about an
+    /// anchor that the engine may not hold as far out as other joints.
+    fn lever(&self, joint: &Joint, other: u32, lever: f32) -> f32 {
+        let turns = self.dynamic_mass(other).is_some_and(|m| m.inertia > 0.0);
+        if is_wheel(joint) && !turns { self.range.max_lever_fixed_wheel } else { lever }
+    }
+
+    pub(super) fn joint_check(&self, joint: &Joint) -> Check {
+        let (v3, r) = (self.v3, self.range);
+        let length = r.max_length;
+        let mut check = Check::default();
+        let c = &mut check;
+        let kind = kind_of(joint);
+        let anchored = kind != Some(JointKind::Motor);
+        if anchored {
+            c.vector(v3, "LocalAnchorA", joint.local_anchor_a, length, "m");
+            c.vector(v3, "LocalAnchorB", joint.local_anchor_b, length, "m");
+        }
+        match kind {
+            Some(JointKind::Revolute) => {
+                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
+                c.magnitude(v3, "MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
+                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+            }
+            Some(JointKind::Prismatic | JointKind::Line) => {
+                c.magnitude(v3, "LowerTranslation", joint.lower_limit, length, "m");
+                c.magnitude(v3, "UpperTranslation", joint.upper_limit, length, "m");
+                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "m/s");
+                c.magnitude(v3, "MaxMotorForce", joint.max_motor_force, r.max_force, "N");
+                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+            }
+            Some(JointKind::Wheel) => {
+                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
+                c.magnitude(v3, "MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
+            }
+            Some(JointKind::Distance) => c.magnitude(v3, "Length", joint.length, length, "m"),
+            Some(JointKind::Rope) => c.magnitude(v3, "MaxLength", joint.max_length, length, "m"),
+            Some(JointKind::Weld) => {
+                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+            }
+            Some(JointKind::Friction | JointKind::Motor) => {
+                c.magnitude(v3, "MaxForce", joint.max_force, r.max_force, "N");
+                c.magnitude(v3, "MaxTorque", joint.max_torque, r.max_force, "N m");
+                if joint.max_force < 0.0 || joint.max_torque < 0.0 {
+                    c.fail(format_args!(
+                        "a negative MaxForce or MaxTorque, which {} asserts against",
+                        v3.name()
+                    ));
+                }
+                if kind == Some(JointKind::Motor) {
+                    c.vector(v3, "LinearOffset", joint.linear_offset, length, "m");
+                    c.magnitude(v3, "AngularOffset", joint.angular_offset, r.max_angle, "rad");
+                    c.magnitude(
+                        v3,
+                        "CorrectionFactor",
+                        joint.correction_factor,
+                        r.max_frequency,
+                        "",
+                    );
+                }
+            }
+            _ => {}
+        }
+        if matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel)) {
+            c.vector(v3, "LocalAxisA", joint.local_axis_a, length, "m");
+            if c.passed() && !(super::math::length(joint.local_axis_a) >= r.min_axis) {
+                c.fail(format_args!(
+                    "LocalAxisA is shorter than {} m: {} cannot normalise it",
+                    G(r.min_axis),
+                    v3.name()
+                ));
+            }
+        }
+        if matches!(kind, Some(JointKind::Distance | JointKind::Wheel | JointKind::Weld)) {
+            c.magnitude(v3, "FrequencyHz", joint.frequency_hz, r.max_frequency, "Hz");
+            c.magnitude(v3, "DampingRatio", joint.damping_ratio, r.max_frequency, "");
+            if joint.frequency_hz < 0.0 || joint.damping_ratio < 0.0 {
+                c.fail(format_args!(
+                    "a negative FrequencyHz or DampingRatio, which {} asserts against",
+                    v3.name()
+                ));
+            }
+        }
+        let levered = anchored && (r.friction_at_anchors || kind != Some(JointKind::Friction));
+        if c.passed() && levered {
+            let lever =
+                if kind == Some(JointKind::Revolute) { r.max_lever_revolute } else { r.max_lever };
+            let (a, b) = (joint.body_a, joint.body_b);
+            let lever_a = self.lever(joint, b, lever);
+            self.check_anchor(c, "LocalAnchorA", a, joint.local_anchor_a, lever_a);
+            let lever_b = self.lever(joint, a, lever);
+            self.check_anchor(c, "LocalAnchorB", b, joint.local_anchor_b, lever_b);
+            if r.prismatic_lever_to_b && kind == Some(JointKind::Prismatic) {
+                // Its axis reaches body B's anchor: that is body A's lever too.
+                let b_anchor = transform_point(self.body(b).transform, joint.local_anchor_b);
+                let local = inv_transform_point(self.body(a).transform, b_anchor);
+                self.check_anchor(c, "LocalAnchorB, as body A's lever", a, local, lever);
+            }
+        }
+        if c.passed() {
+            let force = drive_force(joint);
+            self.check_drive(c, joint.body_a, force);
+            self.check_drive(c, joint.body_b, force);
+        }
+        check
+    }
+
+    /// How far the joint starts from satisfied, in metres, along what its kind holds
+    /// rigidly (what the load warning joint-starts-violated measures), and how far its
+    /// anchors start apart across its axis (0 without one).
+    fn starting_violation(&self, joint: &Joint) -> (f32, f32) {
+        let (ta, tb) = (self.body(joint.body_a).transform, self.body(joint.body_b).transform);
+        let pa = transform_point(ta, joint.local_anchor_a);
+        let pb = transform_point(tb, joint.local_anchor_b);
+        let d = sub(pb, pa);
+        match kind_of(joint) {
+            Some(JointKind::Revolute | JointKind::Weld) => (length(d), 0.0),
+            Some(kind @ (JointKind::Prismatic | JointKind::Line | JointKind::Wheel)) => {
+                let axis = normalize(rotate(ta.q, joint.local_axis_a));
+                let along = dot(axis, d);
+                let across = cross(axis, d).abs();
+                let mut beyond = 0.0;
+                if joint.enable_limit && kind != JointKind::Wheel {
+                    let outside = max_float(joint.lower_limit - along, along - joint.upper_limit);
+                    beyond = max_float(outside, 0.0);
+                }
+                (max_float(across, beyond), across)
+            }
+            Some(JointKind::Distance) if joint.frequency_hz > 0.0 => (0.0, 0.0),
+            Some(JointKind::Distance) => ((length(d) - joint.length).abs(), 0.0),
+            Some(JointKind::Rope) => (max_float(length(d) - joint.max_length, 0.0), 0.0),
+            // Springs, motors and friction hold nothing in place.
+            _ => (0.0, 0.0),
+        }
+    }
+
+    /// What the working-range sweeps measured of joints that start violated: a line or
+    /// wheel joint too far from satisfied, or whose anchors start too many radii of gyration
+    /// apart across its axis between two dynamic bodies, flings its bodies off; a body
+    /// pulled by two joints that start too far from satisfied makes the solver assert (the
+    /// first such joint of any other kind on a body is planned, the later ones are not).
+    pub(super) fn check_violation(&mut self, index: u32, joint: &Joint, check: &mut Check) {
+        let (v3, r) = (self.v3, self.range);
+        let (violation, across) = self.starting_violation(joint);
+        let wheel = is_wheel(joint);
+        if wheel && violation > r.max_wheel_violation {
+            check.fail(format_args!(
+                "it starts {} m from satisfied: a line or wheel joint further than {} m from \
+                 satisfied lies beyond {}'s working range (its solver flings the bodies apart)",
+                G9(violation),
+                G(r.max_wheel_violation),
+                v3.name()
+            ));
+            return;
+        }
+        if wheel
+            && let (Some(a), Some(b)) =
+                (self.dynamic_mass(joint.body_a), self.dynamic_mass(joint.body_b))
+        {
+            let bound = r.max_wheel_violation_gyrations * gyration(&a).min(gyration(&b));
+            if across > r.linear_slop && !(across <= bound) {
+                check.fail(format_args!(
+                    "it starts violated by {} m across its axis between two dynamic bodies, \
+                     beyond {}'s working range (at most {} radii of gyration, {} m), where its \
+                     solver throws them off",
+                    G9(across),
+                    v3.name(),
+                    G(r.max_wheel_violation_gyrations),
+                    G9(bound)
+                ));
+                return;
+            }
+        }
+        if wheel || !(violation > r.max_pulled_violation) {
+            return;
+        }
+        let bodies = [joint.body_a, joint.body_b];
+        for body in bodies {
+            let pulled = self.pulled[body as usize];
+            if pulled != 0 {
+                check.fail(format_args!(
+                    "it starts {} m from satisfied, and joint {} already pulls body {body} from \
+                     further than {} m: two such joints on one body lie beyond {}'s working \
+                     range (its solver asserts)",
+                    G9(violation),
+                    pulled - 1,
+                    G(r.max_pulled_violation),
+                    v3.name()
+                ));
+                return;
+            }
+        }
+        for body in bodies {
+            if self.dynamic_mass(body).is_some() {
+                self.pulled[body as usize] = index + 1;
+            }
+        }
+    }
+}
+
+/// The force a joint's motor or friction may apply, as v3 gets it.
+fn drive_force(joint: &Joint) -> f32 {
+    match kind_of(joint) {
+        Some(JointKind::Prismatic) if joint.enable_motor => joint.max_motor_force,
+        Some(JointKind::Friction | JointKind::Motor) => joint.max_force,
+        _ => 0.0,
+    }
+}

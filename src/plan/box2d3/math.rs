@@ -1,0 +1,107 @@
+//! Box2D v3's vector arithmetic (`math_functions.h`), operation for operation in `f32`, so
+//! that what the plan predicts of a body or a shape is the engine's own result bit for bit.
+//! Rust never fuses a product into a sum, and neither does the engine's build on x86-64.
+
+use crate::plan::{Rot, Transform};
+use crate::scene::Vec2;
+
+pub(super) const ZERO: Vec2 = Vec2 { x: 0.0, y: 0.0 };
+pub(super) const IDENTITY: Rot = Rot { c: 1.0, s: 0.0 };
+
+pub(super) fn vec2(x: f32, y: f32) -> Vec2 {
+    Vec2 { x, y }
+}
+
+pub(super) fn add(a: Vec2, b: Vec2) -> Vec2 {
+    vec2(a.x + b.x, a.y + b.y)
+}
+
+pub(super) fn sub(a: Vec2, b: Vec2) -> Vec2 {
+    vec2(a.x - b.x, a.y - b.y)
+}
+
+pub(super) fn dot(a: Vec2, b: Vec2) -> f32 {
+    a.x * b.x + a.y * b.y
+}
+
+pub(super) fn cross(a: Vec2, b: Vec2) -> f32 {
+    a.x * b.y - a.y * b.x
+}
+
+/// `b2CrossSV`: the scalar `s` (an angular velocity) crossed with `v`.
+pub(super) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
+    vec2(-s * v.y, s * v.x)
+}
+
+pub(super) fn mul_sv(s: f32, v: Vec2) -> Vec2 {
+    vec2(s * v.x, s * v.y)
+}
+
+/// `b2MulAdd`: `a + s * b`.
+pub(super) fn mul_add(a: Vec2, s: f32, b: Vec2) -> Vec2 {
+    vec2(a.x + s * b.x, a.y + s * b.y)
+}
+
+pub(super) fn lerp(a: Vec2, b: Vec2, t: f32) -> Vec2 {
+    vec2((1.0 - t) * a.x + t * b.x, (1.0 - t) * a.y + t * b.y)
+}
+
+pub(super) fn length(v: Vec2) -> f32 {
+    (v.x * v.x + v.y * v.y).sqrt()
+}
+
+pub(super) fn distance(a: Vec2, b: Vec2) -> f32 {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    (dx * dx + dy * dy).sqrt()
+}
+
+pub(super) fn distance_squared(a: Vec2, b: Vec2) -> f32 {
+    let c = vec2(b.x - a.x, b.y - a.y);
+    c.x * c.x + c.y * c.y
+}
+
+/// `b2Normalize`: the unit vector, or zero for a vector shorter than `FLT_EPSILON`.
+pub(super) fn normalize(v: Vec2) -> Vec2 {
+    let length = (v.x * v.x + v.y * v.y).sqrt();
+    if length < f32::EPSILON {
+        return ZERO;
+    }
+    let inverse = 1.0 / length;
+    vec2(inverse * v.x, inverse * v.y)
+}
+
+/// `b2MinFloat` and `b2MaxFloat` component by component, which keep `a` on a tie or NaN.
+pub(super) fn min(a: Vec2, b: Vec2) -> Vec2 {
+    vec2(if a.x < b.x { a.x } else { b.x }, if a.y < b.y { a.y } else { b.y })
+}
+
+pub(super) fn max(a: Vec2, b: Vec2) -> Vec2 {
+    vec2(if a.x > b.x { a.x } else { b.x }, if a.y > b.y { a.y } else { b.y })
+}
+
+/// The rotation of an angle as its cosine and sine (the C library's `cosf` and `sinf`,
+/// which Rust's `f32` methods call): not `b2MakeRot`, which approximates.
+pub(super) fn rotation(angle: f32) -> Rot {
+    Rot { c: angle.cos(), s: angle.sin() }
+}
+
+pub(super) fn mul_rot(q: Rot, r: Rot) -> Rot {
+    Rot { s: q.s * r.c + q.c * r.s, c: q.c * r.c - q.s * r.s }
+}
+
+pub(super) fn inv_mul_rot(q: Rot, r: Rot) -> Rot {
+    Rot { s: q.c * r.s - q.s * r.c, c: q.c * r.c + q.s * r.s }
+}
+
+pub(super) fn rotate(q: Rot, v: Vec2) -> Vec2 {
+    vec2(q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y)
+}
+
+pub(super) fn transform_point(t: Transform, p: Vec2) -> Vec2 {
+    vec2((t.q.c * p.x - t.q.s * p.y) + t.p.x, (t.q.s * p.x + t.q.c * p.y) + t.p.y)
+}
+
+pub(super) fn inv_transform_point(t: Transform, p: Vec2) -> Vec2 {
+    let (vx, vy) = (p.x - t.p.x, p.y - t.p.y);
+    vec2(t.q.c * vx + t.q.s * vy, -t.q.s * vx + t.q.c * vy)
+}
