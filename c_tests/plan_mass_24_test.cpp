@@ -1,6 +1,8 @@
 // The mass the library's Box2D 2.4 plan predicts for every dynamic body is the mass Box2D
-// gives it, bit for bit: each real editor file (tests/fixtures/corpus/) and each scene of
-// fidelity_scenes.h, built by build_world, every b2Body's GetMassData beside its plan body.
+// gives it, bit for bit: each real editor file (tests/fixtures/corpus/), each scene of
+// fidelity_scenes.h and the stress tests' generated levels (every shape kind, fields up to
+// the edges of the working range), built by build_world, every b2Body's GetMassData beside
+// its plan body.
 // Where the plan sets the mass (the file's MassData), Box2D keeps what it was given: the
 // mass and centre; the inertia it gives back is its own sum about the origin.
 #include <box2d/box2d.h>
@@ -11,6 +13,7 @@
 #include <cstring>
 
 #include "fidelity_scenes.h"
+#include "stress_levels.h"
 #include "test_macros.h"
 #include "test_scenes.hpp"
 
@@ -88,11 +91,29 @@ int fidelity_masses_are_box2d_s() {
     return 0;
 }
 
+int generated_masses_are_box2d_s() {
+    int compared = 0;
+    for (int level = 0; level < 1000; ++level) {
+        b2s_scene* scene = generated_level();
+        if (scene == nullptr) {
+            continue;
+        }
+        char what[32];
+        std::snprintf(what, sizeof what, "level %d", level);
+        int failures = ensure_masses_predicted(scene, what, compared);
+        b2s_scene_free(scene);
+        ENSURE_EQ(failures, 0);
+    }
+    ENSURE(compared >= 1000);
+    return 0;
+}
+
 } // namespace
 
 int main() {
     int failed = 0;
     failed += RUN_TEST(corpus_masses_are_box2d_s);
     failed += RUN_TEST(fidelity_masses_are_box2d_s);
+    failed += RUN_TEST(generated_masses_are_box2d_s);
     return failed != 0;
 }
