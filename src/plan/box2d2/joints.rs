@@ -531,12 +531,19 @@ impl Mapper<'_> {
         }
         let limit = min(given, longest);
         let holder = self.static_body();
-        if holder.is_none() || !(limit >= LINEAR_SLOP) {
-            let why = if holder.is_none() {
-                "without a static body in the scene"
-            } else {
-                "(it is shorter than the linear slop)"
-            };
+        let why = match holder {
+            None => Some("without a static body in the scene".to_owned()),
+            // Box2D asserts against a joint of a body to itself.
+            Some((held_by, _)) if held_by == body => Some(format!(
+                "on body {body}, the static body that would hold its rope (a joint needs two \
+                 bodies)"
+            )),
+            Some(_) if !(limit >= LINEAR_SLOP) => {
+                Some("(it is shorter than the linear slop)".to_owned())
+            }
+            Some(_) => None,
+        };
+        if let Some(why) = why {
             self.report(
                 Code::LossyJoint,
                 Object::Joint,

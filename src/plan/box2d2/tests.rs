@@ -294,3 +294,32 @@ fn a_farseer_only_joint_is_skipped_in_the_adapter_s_words() {
         )]
     );
 }
+
+#[test]
+fn a_pulley_side_on_the_holding_static_body_gets_no_rope_of_a_body_to_itself() {
+    let xml = "<World Version=\"1\"><Shapes><Shape Type=\"Circle\"><Radius>0.5</Radius>\
+        <Position>0 0</Position></Shape></Shapes><Fixtures><Fixture><Shape>0</Shape><Density>1\
+        </Density></Fixture></Fixtures><Bodies><Body Type=\"Static\"><Position>-2 0</Position>\
+        </Body><Body Type=\"Dynamic\"><Position>2 0</Position><Fixtures><ID>0</ID></Fixtures>\
+        </Body></Bodies><Joints><Joint Type=\"Pulley\"><BodyA>0</BodyA><BodyB>1</BodyB>\
+        <GroundAnchorA>-2 5</GroundAnchorA><GroundAnchorB>2 5</GroundAnchorB><LengthA>5\
+        </LengthA><LengthB>5</LengthB><Ratio>1</Ratio><MaxLengthA>6</MaxLengthA><MaxLengthB>6\
+        </MaxLengthB></Joint></Joints></World>";
+    let plan = plan(xml);
+    let ropes: Vec<_> = plan.joints().iter().filter(|j| j.joint == NONE).collect();
+    assert_eq!(ropes.len(), 1, "side B's rope only");
+    assert_eq!((ropes[0].body_a, ropes[0].body_b), (0, 1));
+    assert!(plan.joints().iter().all(|j| j.body_a != j.body_b));
+    assert_eq!(
+        reports(&plan),
+        vec![(
+            Code::LossyJoint as u32,
+            "joint".to_owned(),
+            0,
+            "MaxLengthA 6 gives a limit of 6 m, which Box2D 2.4 cannot hold on body 0, the \
+             static body that would hold its rope (a joint needs two bodies); the side is \
+             unlimited"
+                .to_owned()
+        )]
+    );
+}
