@@ -11,6 +11,7 @@ mod bodies;
 mod body;
 mod body_mass;
 mod check;
+mod joint_checks;
 mod joints;
 mod math;
 mod polygon;
