@@ -2287,12 +2287,26 @@ b2s_code b2s_plan_make(const struct b2s_scene *scene,
 const struct b2s_plan_view *b2s_plan_get_view(const struct b2s_plan *plan);
 
 /**
- * Frees a plan and everything it owns. NULL is ignored.
+ * Frees a plan and everything it owns (the memory of its arrays serves the next plan made
+ * on the same thread). NULL is ignored.
  *
  * # Safety
  * `plan` is NULL or a plan from `b2s_plan_make` that was not freed yet.
  */
 void b2s_plan_free(struct b2s_plan *plan);
+
+/**
+ * The gravity a world of engine version `engine` is made with for `scene`: the file's
+ * where it gives one within that version's working range, else `fallback` (the host's;
+ * the plan reports a gravity beyond the range). `fallback` for a NULL scene or a number
+ * that is no engine version.
+ *
+ * # Safety
+ * `scene` is NULL or a live scene.
+ */
+struct b2s_vec2 b2s_plan_world_gravity(const struct b2s_scene *scene,
+                                       uint32_t engine,
+                                       struct b2s_vec2 fallback);
 
 /**
  * The write options with every field at its default (defaults omitted, as the editor

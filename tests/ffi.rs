@@ -440,3 +440,22 @@ fn a_v3_plan_is_read_through_its_view_after_its_scene_is_freed() {
         b2s_plan_free(plan);
     }
 }
+
+#[test]
+fn a_worlds_gravity_is_the_files_where_the_engine_holds_it() {
+    let fallback = Vec2 { x: 1.0, y: 2.0 };
+    let (scene, _, _) = load_text(SCENE);
+    let (strong, _, _) = load_text(r#"<World Version="1"><Gravity>0 -5000</Gravity></World>"#);
+    unsafe {
+        let g = b2s_plan_world_gravity(scene, box2scene::Engine::Box2d31 as u32, fallback);
+        assert_eq!((g.x, g.y), (0.0, -10.0));
+        let g = b2s_plan_world_gravity(strong, box2scene::Engine::Box2d32 as u32, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0), "beyond v3.2's range: the fallback");
+        let g = b2s_plan_world_gravity(null(), box2scene::Engine::Box2d31 as u32, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0));
+        let g = b2s_plan_world_gravity(scene, 9, fallback);
+        assert_eq!((g.x, g.y), (1.0, 2.0));
+        b2s_scene_free(scene);
+        b2s_scene_free(strong);
+    }
+}

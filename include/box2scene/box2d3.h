@@ -109,7 +109,9 @@ b2WorldDef b2s_box2d3_world_def(const b2s_scene* scene, b2Vec2 fallback_gravity)
 
 /** Adds the scene's bodies, shapes and joints to `world`. Returns what it created and its
  *  reports (free it with b2s_box2d3_built_free); NULL only when memory runs out. A NULL
- *  scene adds nothing. */
+ *  scene adds nothing. The library plans the build (b2s_plan_make, for the world's gravity
+ *  and maximum linear speed): the adapter copies the plan's reports and creates what it
+ *  says, converting and checking nothing of its own. */
 b2s_box2d3_built* b2s_box2d3_build_world(const b2s_scene* scene, b2WorldId world);
 
 /** b2s_box2d3_build_world with the whole scene moved by `placement` (a rotation about the

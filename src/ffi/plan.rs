@@ -6,6 +6,7 @@ use std::ptr;
 use super::{ErrorInfo, SceneHandle, fallible, guard, simple_error};
 use crate::error::Code;
 use crate::plan::{self, Engine, Plan, PlanOptions, PlanView, WorkingRange};
+use crate::scene::Vec2;
 
 /// The working range of an engine version (a `b2s_engine` number): the bounds its executor
 /// checks, each measured (docs/working-range.md). Static storage, never freed; NULL for a
@@ -78,7 +79,8 @@ pub unsafe extern "C" fn b2s_plan_get_view(plan: *const PlanHandle) -> *const Pl
     })
 }
 
-/// Frees a plan and everything it owns. NULL is ignored.
+/// Frees a plan and everything it owns (the memory of its arrays serves the next plan made
+/// on the same thread). NULL is ignored.
 ///
 /// # Safety
 /// `plan` is NULL or a plan from `b2s_plan_make` that was not freed yet.
@@ -91,6 +93,33 @@ pub unsafe extern "C" fn b2s_plan_free(plan: *mut PlanHandle) {
                 // SAFETY: made by Box::into_raw in b2s_plan_make, freed once by contract.
                 drop(unsafe { Box::from_raw(plan) });
             }
+        },
+    )
+}
+
+/// The gravity a world of engine version `engine` is made with for `scene`: the file's
+/// where it gives one within that version's working range, else `fallback` (the host's;
+/// the plan reports a gravity beyond the range). `fallback` for a NULL scene or a number
+/// that is no engine version.
+///
+/// # Safety
+/// `scene` is NULL or a live scene.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn b2s_plan_world_gravity(
+    scene: *const SceneHandle,
+    engine: u32,
+    fallback: Vec2,
+) -> Vec2 {
+    guard(
+        || fallback,
+        || {
+            // SAFETY: by the caller's contract.
+            let scene = unsafe { scene.as_ref() };
+            let engine = Engine::try_from(engine).ok();
+            scene
+                .zip(engine)
+                .and_then(|(h, e)| plan::world_gravity(&h.scene, e))
+                .unwrap_or(fallback)
         },
     )
 }

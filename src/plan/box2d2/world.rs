@@ -49,7 +49,11 @@ impl<'a> Mapper<'a> {
             scene,
             options,
             range: Engine::Box2d24.working_range(),
-            plan: Plan::default(),
+            plan: Plan::with_capacity(
+                scene.bodies().len(),
+                scene.fixture_id_pool().len(),
+                scene.joints().len(),
+            ),
             placement_angle: angle(options.placement.q),
             shapes: Vec::new(),
             bodies: vec![None; scene.bodies().len()],

@@ -22,6 +22,7 @@ use self::math::transform_point;
 use self::shapes::Geometry;
 pub(super) use self::version::V3;
 use super::container::{Object, Plan};
+use super::gravity::gravity_fits;
 use super::printf::{G, G9};
 use super::range::WorkingRange;
 use super::records::{PlanOptions, Rot, Transform};
@@ -61,7 +62,11 @@ pub(super) fn plan(scene: &Scene, options: &PlanOptions, v3: V3) -> Plan {
         options,
         v3,
         range: v3.range(),
-        plan: Plan::default(),
+        plan: Plan::with_capacity(
+            scene.bodies().len(),
+            scene.fixture_id_pool().len(),
+            scene.joints().len(),
+        ),
         geometries: vec![None; scene.shapes().len()],
         created: vec![None; scene.bodies().len()],
         pulled: vec![0; scene.bodies().len()],
@@ -164,11 +169,6 @@ impl Mapper<'_> {
     fn placed(&self, position: Vec2) -> Vec2 {
         transform_point(self.options.placement, position)
     }
-}
-
-/// Whether a gravity lies within the working range (else the world takes the host's).
-pub(super) fn gravity_fits(range: &WorkingRange, g: Vec2) -> bool {
-    g.x.abs() <= range.max_acceleration && g.y.abs() <= range.max_acceleration
 }
 
 #[cfg(test)]

@@ -12,7 +12,6 @@
 #include "reports.hpp"
 
 #include <cfloat>
-#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -100,13 +99,8 @@ inline Built failed_build(const b2s_error& error) {
 } // namespace detail
 
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
-    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-    float bound = working_range().max_acceleration;
-    if (view == nullptr || !view->gravity_given || !(std::fabs(view->gravity.x) <= bound) ||
-        !(std::fabs(view->gravity.y) <= bound)) {
-        return fallback;
-    }
-    return detail::to_b2(view->gravity);
+    return detail::to_b2(
+        b2s_plan_world_gravity(scene, B2S_ENGINE_BOX2D24, detail::to_b2s(fallback)));
 }
 
 inline Built build_world_at(const b2s_scene* scene, b2World& world,

@@ -1,10 +1,10 @@
 /*
  * What the Box2D v3 adapter's sources (adapter.c and the files it includes) need to know of
  * Box2D v3.1, the one place where the adapter for v3.1 differs from one for another v3
- * (v32.h is v3.2's): its public names, its constants, how a body takes its position and
- * fixed rotation, how a body's mass is summed, how chains are made (b2ChainDef) and read
+ * (v32.h is v3.2's): its public names, how a body takes its position and fixed rotation,
+ * how a body's mass is summed (for a capture), how chains are made (b2ChainDef) and read
  * back, how joints take their anchors, axes and reference angles (fields of each def) and
- * give them back, and its motor joint. Names starting with b2s3_ are private to the
+ * give them back, and its motor joint. What a build gives each def is the library's plan. Names starting with b2s3_ are private to the
  * adapter's one translation unit.
  */
 #ifndef BOX2SCENE_BOX2D3_V31_H
@@ -27,9 +27,9 @@ typedef b2s_box2d3_report b2s3_report_t;
 typedef b2s_box2d3_reports b2s3_reports_t;
 typedef b2s_box2d3_built b2s3_built_t;
 
-/* The bytes of a body's name v3.1 keeps: the working range's name_bytes (body.h: name[32],
- * NUL-terminated). */
-#define B2S3_NAME_LENGTH ((size_t)b2s3_range()->name_bytes)
+/* The bytes of a body's name the plan keeps: 0, the working range's name_bytes (v3.1's
+ * body.h: name[32], NUL-terminated). */
+#define B2S3_NAME_BYTES 0u
 
 /* ---- bodies */
 
@@ -47,18 +47,12 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
 }
 
 /* v3.1's fixed rotation gives the body no inertia and keeps the spin it starts with. */
-#define B2S3_LOCK_STOPS_SPIN false
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->fixedRotation = fixed;
 }
 
 static bool b2s3_rotation_locked(b2BodyId body) {
     return b2Body_IsFixedRotation(body);
-}
-
-/* v3.1 computes a dynamic body's mass; a kinematic one has none to compute. */
-static bool b2s3_needs_mass_update(b2BodyType type) {
-    return type == b2_dynamicBody;
 }
 
 static b2MassData b2s3_shape_mass(b2ShapeId shape) {
@@ -98,16 +92,6 @@ static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* d
 
 /* ---- chains: v3.1's own (b2ChainDef), one b2ChainId per fixture slot */
 
-/* v3.1 asserts that a loop has 4 points or more. */
-#define B2S3_MIN_LOOP_POINTS 4
-
-/* What a chain loses of its fixture's shape def: v3.1's chains cannot be sensors. */
-static const char* b2s3_chain_loss(const b2ShapeDef* def) {
-    return def->isSensor ? "is a sensor, but Box2D v3's chains have no sensor form; it was "
-                           "made a solid chain"
-                         : NULL;
-}
-
 static bool b2s3_allocate_chains(b2s3_built_t* built, uint32_t slots) {
     built->chains = (b2ChainId*)calloc(slots + 1, sizeof(b2ChainId));
     return built->chains != NULL;
@@ -117,8 +101,9 @@ static void b2s3_free_chains(b2s3_built_t* built) {
     free(built->chains);
 }
 
-/* A chain of `n` points ([ghost, vertices..., ghost], or a loop) with the shape def's
- * material, filter and events. Never runs out of memory: v3.1 keeps the chain. */
+/* A chain of `n` points ([ghost, vertices..., ghost], or a loop, of 4 points or more) with
+ * the shape def's material, filter and events (no sensor flag: the plan makes a sensor
+ * chain solid). Never runs out of memory: v3.1 keeps the chain. */
 static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t slot,
                               b2BodyId body, const b2ShapeDef* shape, const b2Vec2* points, int n,
                               bool loop) {
@@ -139,105 +124,46 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
 
 #define B2S3_JOINT_BASE(def) (def)
 
-typedef struct b2s3_frames {
-    b2Vec2 anchor_a, anchor_b;
-    b2Vec2 axis; /* unit, where the joint kind has one */
-    float reference_angle;
-} b2s3_frames;
-
-/* v3.1 clamps a revolute reference angle to +-pi but measures the joint angle unwound: the
- * same angle less its whole turns keeps the joint as it was. */
-#define B2S3_REVOLUTE_FRAMES(def, f)                                                           \
+#define B2S3_ANCHOR_FRAMES(def, j)                                                             \
     do {                                                                                       \
-        (def).localAnchorA = (f).anchor_a;                                                     \
-        (def).localAnchorB = (f).anchor_b;                                                     \
-        (def).referenceAngle =                                                                 \
-            (float)remainder((double)(f).reference_angle, 6.283185307179586);                  \
+        (def).localAnchorA = b2s3_to_b2((j)->anchor_a);                                        \
+        (def).localAnchorB = b2s3_to_b2((j)->anchor_b);                                        \
     } while (0)
-#define B2S3_WELD_FRAMES(def, f)                                                               \
+#define B2S3_REVOLUTE_FRAMES(def, j)                                                           \
     do {                                                                                       \
-        (def).localAnchorA = (f).anchor_a;                                                     \
-        (def).localAnchorB = (f).anchor_b;                                                     \
-        (def).referenceAngle = (f).reference_angle;                                            \
+        B2S3_ANCHOR_FRAMES(def, j);                                                            \
+        (def).referenceAngle = (j)->reference_angle;                                           \
     } while (0)
-#define B2S3_PRISMATIC_FRAMES(def, f)                                                          \
+#define B2S3_WELD_FRAMES(def, j) B2S3_REVOLUTE_FRAMES(def, j)
+#define B2S3_PRISMATIC_FRAMES(def, j)                                                          \
     do {                                                                                       \
-        (def).localAnchorA = (f).anchor_a;                                                     \
-        (def).localAnchorB = (f).anchor_b;                                                     \
-        (def).localAxisA = (f).axis;                                                           \
-        (def).referenceAngle = (f).reference_angle;                                            \
+        B2S3_REVOLUTE_FRAMES(def, j);                                                          \
+        (def).localAxisA = b2s3_to_b2((j)->axis);                                              \
     } while (0)
-#define B2S3_AXIS_FRAMES(def, f)                                                               \
+#define B2S3_AXIS_FRAMES(def, j)                                                               \
     do {                                                                                       \
-        (def).localAnchorA = (f).anchor_a;                                                     \
-        (def).localAnchorB = (f).anchor_b;                                                     \
-        (def).localAxisA = (f).axis;                                                           \
-    } while (0)
-#define B2S3_ANCHOR_FRAMES(def, f)                                                             \
-    do {                                                                                       \
-        (def).localAnchorA = (f).anchor_a;                                                     \
-        (def).localAnchorB = (f).anchor_b;                                                     \
+        B2S3_ANCHOR_FRAMES(def, j);                                                            \
+        (def).localAxisA = b2s3_to_b2((j)->axis);                                              \
     } while (0)
 
-/* The bytes of a loss a joint def reports. */
+/* The bytes of a loss a capture reports. */
 #define B2S3_LOSS_SIZE 320
 
-/* v3.1's friction is a motor joint that holds no offset, at the body origins; returns true
- * with `loss` written when the file's anchors are not there. */
-static bool b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint, b2s3_frames f,
-                              char* loss) {
-    def->linearOffset = b2Vec2_zero;
-    def->angularOffset = 0.0f;
-    def->correctionFactor = 0.0f;
-    def->maxForce = joint->max_force;
-    def->maxTorque = joint->max_torque;
-    bool at_origins = f.anchor_a.x == 0.0f && f.anchor_a.y == 0.0f && f.anchor_b.x == 0.0f &&
-                      f.anchor_b.y == 0.0f;
-    if (!at_origins) {
-        snprintf(loss, B2S3_LOSS_SIZE,
-                 "Box2D v3's friction (motor) joint acts at the body origins, not at "
-                 "LocalAnchorA (%.9g, %.9g) and LocalAnchorB (%.9g, %.9g)",
-                 (double)f.anchor_a.x, (double)f.anchor_a.y, (double)f.anchor_b.x,
-                 (double)f.anchor_b.y);
-    }
-    return !at_origins;
-}
-
-/* Box2D 2.3's motor joint, whose form v3.1's is, but for one thing: the file's LinearOffset
- * is in body A's frame (as Box2D 2.x and v3's types.h say), and v3.1.1's solver subtracts it
- * from the centres' separation in world axes, so it is passed turned by body A's rotation,
- * which holds only while A cannot turn (reported otherwise). v3.1 clamps CorrectionFactor to
- * [0, 1] (reported). Writes the losses into `losses`, returns their count. */
-static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
-                          char losses[2][B2S3_LOSS_SIZE]) {
-    int count = 0;
-    b2BodyId a = def->bodyIdA;
+/* Box2D 2.3's motor joint, whose form v3.1's is (the plan turns the linear offset into the
+ * world axes v3.1.1's solver reads it in). */
+static void b2s3_motor_def(b2MotorJointDef* def, const b2s_plan_joint* joint) {
     b2Vec2 offset = {joint->linear_offset.x, joint->linear_offset.y};
-    if (offset.x != 0.0f || offset.y != 0.0f) {
-        b2BodyType type = b2Body_GetType(a);
-        bool fixed = type == b2_staticBody ||
-                     (type == b2_kinematicBody && b2Body_GetAngularVelocity(a) == 0.0f) ||
-                     (type == b2_dynamicBody && b2Body_IsFixedRotation(a));
-        if (!fixed) {
-            snprintf(losses[count++], B2S3_LOSS_SIZE,
-                     "Box2D v3.1 holds LinearOffset (%.9g, %.9g) in world axes, not in body "
-                     "A's frame: it was turned by body A's angle as the joint starts, and stays "
-                     "so as body A turns",
-                     (double)offset.x, (double)offset.y);
-        }
-        offset = b2RotateVector(b2Body_GetRotation(a), offset);
-    }
     def->linearOffset = offset;
     def->angularOffset = joint->angular_offset;
     def->maxForce = joint->max_force;
     def->maxTorque = joint->max_torque;
     def->correctionFactor = joint->correction_factor;
-    if (!(joint->correction_factor >= 0.0f && joint->correction_factor <= 1.0f)) {
-        snprintf(losses[count++], B2S3_LOSS_SIZE,
-                 "CorrectionFactor %.9g lies outside [0, 1], to which Box2D v3 clamps it",
-                 (double)joint->correction_factor);
-    }
-    return count;
+}
+
+/* Friction: a motor joint that holds no offset, at the body origins (the plan's offsets and
+ * correction factor are 0). */
+static void b2s3_friction_def(b2MotorJointDef* def, const b2s_plan_joint* joint) {
+    b2s3_motor_def(def, joint);
 }
 
 /* ---- capture: v3.1 holds what the build passed, and its chains are objects */

@@ -1,9 +1,10 @@
 /*
  * What the Box2D v3 adapter's sources (adapter.c and the files it includes) need to know of
  * Box2D v3.2, the one place where the adapter for v3.2 differs from one for another v3:
- * its public names, its constants, how a body takes its position and fixed rotation, how a
- * body's mass is summed, how chains are made and read back, how joints take their anchors,
- * axes and reference angles (local frames) and give them back, and its motor joint.
+ * its public names, how a body takes its position and fixed rotation, how a body's mass is
+ * summed (for a capture), how chains are made and read back, how joints take their
+ * anchors, axes and reference angles (local frames) and give them back, and its motor
+ * joint. What a build gives each def is the library's plan.
  *
  * Built and tested against upstream commit 56edae79 (June 2026, the sources of boxdd-sys
  * 0.6.0); only the part of the API it shares with main 617d32ab (August 2026) is used. The
@@ -38,9 +39,9 @@ typedef b2s_box2d32_report b2s3_report_t;
 typedef b2s_box2d32_reports b2s3_reports_t;
 typedef b2s_box2d32_built b2s3_built_t;
 
-/* The bytes of a body's name v3.2 keeps: B2_NAME_LENGTH itself, which a host's build may
- * redefine (the working range's name_bytes is its default). */
-#define B2S3_NAME_LENGTH ((size_t)B2_NAME_LENGTH)
+/* The bytes of a body's name the plan keeps: B2_NAME_LENGTH itself, which a host's build
+ * may redefine (the working range's name_bytes is its default). */
+#define B2S3_NAME_BYTES ((uint32_t)B2_NAME_LENGTH)
 
 /* ---- bodies */
 
@@ -58,21 +59,14 @@ static b2Vec2 b2s3_local_center(b2BodyId body) {
 }
 
 /* A fixed rotation is a motion lock; the snapshot keeps the inertia under it and later
- * sources zero it, so the adapter also gives such a body an inertia of 0 (bodies.c). The
- * lock zeroes the spin at every step (spec section 13: reported lossy-body). */
-#define B2S3_LOCK_STOPS_SPIN true
+ * sources zero it, so the plan also gives such a body an inertia of 0. The lock zeroes the
+ * spin at every step (spec section 13: the plan reports it lossy-body). */
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed) {
     def->motionLocks.angularZ = fixed;
 }
 
 static bool b2s3_rotation_locked(b2BodyId body) {
     return b2Body_GetMotionLocks(body).angularZ;
-}
-
-/* Every kinematic and dynamic body whose shapes did not update its mass must have it
- * computed once, or v3.2 asserts at the step. */
-static bool b2s3_needs_mass_update(b2BodyType type) {
-    return type != b2_staticBody;
 }
 
 static b2MassData b2s3_shape_mass(b2ShapeId shape) {
@@ -143,15 +137,6 @@ static int b2s3_chain_segment_count(int n, bool loop) {
     return loop ? n : n - 3;
 }
 
-/* v3.2's loose segments make a loop of any 3 points on. */
-#define B2S3_MIN_LOOP_POINTS 3
-
-/* What a chain loses of its fixture's shape def: nothing. */
-static const char* b2s3_chain_loss(const b2ShapeDef* def) {
-    (void)def;
-    return NULL;
-}
-
 /* The built result's store of chain segments: per fixture slot, the range of its segments
  * in one pool that grows by doubling. */
 static bool b2s3_allocate_chains(b2s3_built_t* built, uint32_t slots) {
@@ -206,67 +191,46 @@ static bool b2s3_create_chain(b2s3_built_t* built, uint32_t* capacity, uint32_t 
 
 #define B2S3_JOINT_BASE(def) ((def).base)
 
-typedef struct b2s3_frames {
-    b2Vec2 anchor_a, anchor_b;
-    b2Vec2 axis; /* unit, where the joint kind has one */
-    float reference_angle;
-} b2s3_frames;
-
+/* The rotation of an angle as the build's frames make it (a capture inverts it). */
 static b2Rot b2s3_rotation(float angle) {
     b2Rot q = {cosf(angle), sinf(angle)};
     return q;
 }
 
-static b2Rot b2s3_axis_rotation(b2Vec2 unit) {
-    b2Rot q = {unit.x, unit.y};
-    return q;
+/* The frames the plan gives every kind. */
+static void b2s3_place_frames(b2JointDef* base, const b2s_plan_joint* joint) {
+    const b2s_transform* frames[2] = {&joint->frame_a, &joint->frame_b};
+    b2Transform* out[2] = {&base->localFrameA, &base->localFrameB};
+    for (int i = 0; i < 2; ++i) {
+        out[i]->p.x = frames[i]->p.x;
+        out[i]->p.y = frames[i]->p.y;
+        out[i]->q.c = frames[i]->q.c;
+        out[i]->q.s = frames[i]->q.s;
+    }
 }
 
-static void b2s3_place_frames(b2JointDef* base, b2Vec2 anchor_a, b2Rot qa, b2Vec2 anchor_b,
-                              b2Rot qb) {
-    base->localFrameA.p = anchor_a;
-    base->localFrameA.q = qa;
-    base->localFrameB.p = anchor_b;
-    base->localFrameB.q = qb;
-}
+#define B2S3_REVOLUTE_FRAMES(def, j) b2s3_place_frames(&(def).base, (j))
+#define B2S3_WELD_FRAMES(def, j) b2s3_place_frames(&(def).base, (j))
+#define B2S3_PRISMATIC_FRAMES(def, j) b2s3_place_frames(&(def).base, (j))
+#define B2S3_AXIS_FRAMES(def, j) b2s3_place_frames(&(def).base, (j))
+#define B2S3_ANCHOR_FRAMES(def, j) b2s3_place_frames(&(def).base, (j))
 
-/* Revolute and weld: frame A turned by the reference angle. */
-#define B2S3_REVOLUTE_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
-#define B2S3_WELD_FRAMES(def, f) B2S3_ANGLE_FRAMES(def, f)
-#define B2S3_ANGLE_FRAMES(def, f)                                                              \
-    b2s3_place_frames(&(def).base, (f).anchor_a, b2s3_rotation((f).reference_angle),           \
-                      (f).anchor_b, b2Rot_identity)
-/* Prismatic: the axis is frame A's x, and frame B keeps the bodies at the reference angle. */
-#define B2S3_PRISMATIC_FRAMES(def, f)                                                          \
-    b2s3_place_frames(&(def).base, (f).anchor_a, b2s3_axis_rotation((f).axis), (f).anchor_b,   \
-                      b2InvMulRot(b2s3_rotation((f).reference_angle),                          \
-                                  b2s3_axis_rotation((f).axis)))
-/* Line and wheel: the axis is frame A's x. */
-#define B2S3_AXIS_FRAMES(def, f)                                                               \
-    b2s3_place_frames(&(def).base, (f).anchor_a, b2s3_axis_rotation((f).axis), (f).anchor_b,   \
-                      b2Rot_identity)
-/* Distance, rope and friction: the anchors alone. */
-#define B2S3_ANCHOR_FRAMES(def, f)                                                             \
-    b2s3_place_frames(&(def).base, (f).anchor_a, b2Rot_identity, (f).anchor_b, b2Rot_identity)
-
-/* The bytes of a loss a joint def reports. */
+/* The bytes of a loss a capture reports. */
 #define B2S3_LOSS_SIZE 320
 
 /* Friction acts at the anchors in v3.2: a motor joint driving no velocity, with the file's
- * force and torque as its limits. Loses nothing (returns false). */
-static bool b2s3_friction_def(b2MotorJointDef* def, const b2s_joint* joint, b2s3_frames f,
-                              char* loss) {
-    (void)loss;
-    B2S3_ANCHOR_FRAMES(*def, f);
+ * force and torque as its limits. */
+static void b2s3_friction_def(b2MotorJointDef* def, const b2s_plan_joint* joint) {
+    b2s3_place_frames(&def->base, joint);
     def->linearVelocity = b2Vec2_zero;
     def->angularVelocity = 0.0f;
     def->maxVelocityForce = joint->max_force;
     def->maxVelocityTorque = joint->max_torque;
-    return false;
 }
 
 /* s^-1: the step rate the motor joint's springs assume when they stand in for Box2D 2.x's
- * CorrectionFactor (a share of the error removed each step). */
+ * CorrectionFactor (a share of the error removed each step); the library's plan holds the
+ * same, and a capture inverts it. */
 #define B2S3_MOTOR_STEP_RATE 60.0f
 #define B2S3_TWO_PI 6.28318530718f
 
@@ -275,30 +239,16 @@ static float b2s3_motor_hertz(float correction_factor) {
     return correction_factor * B2S3_MOTOR_STEP_RATE / B2S3_TWO_PI;
 }
 
-/* The nearest v3.2 form of Box2D 2.3's motor joint (whose offsets, force limits and
- * CorrectionFactor v3.2's has no fields for): frame A at the offsets, so that springs drive
- * body B's origin and angle there, a critically damped spring of CorrectionFactor * 60 / 2pi
- * Hz (as quick as 2.x's correction at 60 steps a second), limited to MaxForce and MaxTorque.
- * Writes what the report says of it into `losses` and returns their count. */
-static int b2s3_motor_def(b2MotorJointDef* def, const b2s_joint* joint,
-                          char losses[2][B2S3_LOSS_SIZE]) {
-    float hertz = b2s3_motor_hertz(joint->correction_factor);
-    b2s3_place_frames(&def->base, b2Vec2_zero, b2Rot_identity, b2Vec2_zero, b2Rot_identity);
-    def->base.localFrameA.p.x = joint->linear_offset.x;
-    def->base.localFrameA.p.y = joint->linear_offset.y;
-    def->base.localFrameA.q = b2s3_rotation(joint->angular_offset);
-    def->linearHertz = hertz;
-    def->angularHertz = hertz;
-    def->linearDampingRatio = 1.0f;
-    def->angularDampingRatio = 1.0f;
+/* The nearest v3.2 form of Box2D 2.3's motor joint (the plan's): frame A at the offsets,
+ * critically damped springs of the plan's frequency limited to MaxForce and MaxTorque. */
+static void b2s3_motor_def(b2MotorJointDef* def, const b2s_plan_joint* joint) {
+    b2s3_place_frames(&def->base, joint);
+    def->linearHertz = joint->hertz;
+    def->angularHertz = joint->hertz;
+    def->linearDampingRatio = joint->damping_ratio;
+    def->angularDampingRatio = joint->damping_ratio;
     def->maxSpringForce = joint->max_force;
     def->maxSpringTorque = joint->max_torque;
-    snprintf(losses[0], B2S3_LOSS_SIZE, "%s",
-             "Box2D v3.2's motor joint has no offsets, force limits or CorrectionFactor: its "
-             "frame A carries LinearOffset and AngularOffset, and critically damped springs of "
-             "CorrectionFactor * 60 / 2pi Hz limited to MaxForce and MaxTorque drive body B "
-             "there");
-    return 1;
 }
 
 /* ---- capture: v3.2 holds local frames, which capture inverts, and loose chain segments,
