@@ -33,6 +33,20 @@ impl Check {
         }
     }
 
+    /// `vector` of each point in turn, each named by its place only where it is reported.
+    pub(super) fn vectors(
+        &mut self,
+        name: impl Fn(usize) -> String,
+        points: &[Vec2],
+        bound: f32,
+        unit: &str,
+    ) {
+        let beyond = |v: &Vec2| !(v.x.abs() <= bound && v.y.abs() <= bound);
+        if let Some(i) = points.iter().position(beyond).filter(|_| self.passed()) {
+            self.vector(&name(i), points[i], bound, unit);
+        }
+    }
+
     pub(super) fn within(&mut self, field: &str, value: f32, low: f32, high: f32, unit: &str) {
         if self.passed() && !(low <= value && value <= high) {
             self.beyond(
@@ -116,5 +130,21 @@ mod tests {
         axis.at_least("The length of LocalAxisA", 0.0, 1e-3, "m");
         axis.within("CorrectionFactor", 2.0, 0.0, 1.0, "");
         assert!(axis.problem().starts_with("The length of LocalAxisA 0 lies beyond"));
+    }
+
+    #[test]
+    fn of_many_points_the_first_beyond_is_named_and_only_it() {
+        let points = [Vec2::new(1.0, 1.0), Vec2::new(2e5, 0.0), Vec2::new(3e5, 0.0)];
+        let mut check = Check::default();
+        check.vectors(|i| format!("Vertex {i}"), &points, 1e5, "m");
+        assert_eq!(
+            check.problem(),
+            "Vertex 1 (200000, 0) lies beyond Box2D 2.4's working range (each component within \
+             +-100000 m)"
+        );
+        let mut earlier = Check::default();
+        earlier.magnitude("Radius", -1.0, 0.5, "m");
+        earlier.vectors(|_| unreachable!("not named once a value is reported"), &points, 1e5, "m");
+        assert!(earlier.problem().starts_with("Radius -1 "));
     }
 }

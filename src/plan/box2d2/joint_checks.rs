@@ -262,25 +262,30 @@ impl Mapper<'_> {
         }
         let compliance =
             1.0 / mass.mass + if mass.inertia > 0.0 { r * r / mass.inertia } else { 0.0 };
-        let where_ = format!(
-            "{field}: the joint acts {} m from the centre of mass of body {body} (mass {} kg, \
-             inertia {} kg m^2), ",
-            G9(r),
-            G9(mass.mass),
-            G9(mass.inertia)
-        );
+        // Only a report needs it.
+        let acts = || {
+            format!(
+                "{field}: the joint acts {} m from the centre of mass of body {body} (mass {} \
+                 kg, inertia {} kg m^2), ",
+                G9(r),
+                G9(mass.mass),
+                G9(mass.inertia)
+            )
+        };
         let gyration = (mass.inertia / mass.mass).sqrt();
         if !(compliance <= self.range.max_compliance) {
             check.fail(format!(
-                "{where_}where 1/m + r^2/I = {} 1/kg lies beyond Box2D 2.4's working range (at \
-                 most {} 1/kg)",
+                "{}where 1/m + r^2/I = {} 1/kg lies beyond Box2D 2.4's working range (at most \
+                 {} 1/kg)",
+                acts(),
                 G(compliance),
                 G(self.range.max_compliance)
             ));
         } else if lever > 0.0 && mass.inertia > 0.0 && !(r <= lever * gyration) {
             check.fail(format!(
-                "{where_}{} radii of gyration out, beyond Box2D 2.4's working range for this \
-                 joint (at most {})",
+                "{}{} radii of gyration out, beyond Box2D 2.4's working range for this joint \
+                 (at most {})",
+                acts(),
                 G(r / gyration),
                 G(lever)
             ));

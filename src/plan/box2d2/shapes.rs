@@ -93,7 +93,8 @@ impl Mapper<'_> {
     /// The plan shape of fixture `index` in the pool's entry `slot` of body `body`, or
     /// None (reported) where it is not created.
     pub(super) fn make_fixture(&mut self, body: u32, slot: u32, index: u32) -> Option<PlanShape> {
-        let owner = format!("fixture {index} of body {body}");
+        // Only a report needs it.
+        let owner = format_args!("fixture {index} of body {body}");
         let Some(fixture) = self.scene.fixtures().get(index as usize) else {
             self.report(
                 Code::IdOutOfRange,
@@ -119,19 +120,18 @@ impl Mapper<'_> {
         };
         let check = fixture_check(fixture, self.range);
         if !check.passed() {
-            self.within_range(&check, Object::Fixture, index, fixture.name, &format!("{owner}: "));
+            let owner = format!("{owner}: ");
+            self.within_range(&check, Object::Fixture, index, fixture.name, &owner);
             return None;
         }
-        let (kind, center, radius) = (made.kind, made.center, made.radius);
-        let points = made.points.clone();
         Some(PlanShape {
             slot,
             fixture: index,
             shape: fixture.shape,
-            kind: kind as u32,
-            points: self.plan.push_points(&points),
-            center,
-            radius,
+            kind: made.kind as u32,
+            points: self.plan.push_points(&made.points),
+            center: made.center,
+            radius: made.radius,
             density: fixture.density,
             friction: fixture.friction,
             restitution: fixture.restitution,
@@ -160,10 +160,8 @@ fn shape_check(shape: &Shape, points: &[Vec2], length: f32) -> Check {
         check.magnitude("Radius", shape.radius, length, "m");
         check.vector("Position", shape.position, length, "m");
     }
-    for (i, &point) in points.iter().enumerate() {
-        let field = if edge { format!("Vertex{}", i + 1) } else { format!("Vertex {i}") };
-        check.vector(&field, point, length, "m");
-    }
+    let name = |i: usize| if edge { format!("Vertex{}", i + 1) } else { format!("Vertex {i}") };
+    check.vectors(name, points, length, "m");
     if kind == Ok(ShapeKind::Polygon) && shape.centroid_given {
         check.vector("Centroid", shape.centroid, length, "m");
     }

@@ -21,7 +21,7 @@ inline const b2Vec2* PlanExecutor::points(const b2s_plan_shape& shape) const {
 }
 
 inline b2Fixture* PlanExecutor::make_fixture(const b2s_plan_shape& shape, b2Body* body) {
-    std::unique_ptr<b2Shape> made = make_shape(shape);
+    const b2Shape* made = shape_of(shape);
     if (made == nullptr) {
         return nullptr;
     }
@@ -30,7 +30,7 @@ inline b2Fixture* PlanExecutor::make_fixture(const b2s_plan_shape& shape, b2Body
     // after, and make_body has the mass computed once.
     bool withheld = shape.density > 0.0f;
     b2FixtureDef def;
-    def.shape = made.get();
+    def.shape = made;
     def.density = withheld ? 0.0f : shape.density;
     def.friction = shape.friction;
     def.restitution = shape.restitution;
@@ -43,6 +43,18 @@ inline b2Fixture* PlanExecutor::make_fixture(const b2s_plan_shape& shape, b2Body
         created->SetDensity(shape.density);
     }
     return created;
+}
+
+/// The plan gives every fixture of a scene shape the same one.
+inline const b2Shape* PlanExecutor::shape_of(const b2s_plan_shape& shape) {
+    if (shape.shape >= shapes_.size()) {
+        return nullptr;
+    }
+    std::unique_ptr<b2Shape>& made = shapes_[shape.shape];
+    if (made == nullptr) {
+        made = make_shape(shape);
+    }
+    return made.get();
 }
 
 inline std::unique_ptr<b2Shape> PlanExecutor::make_shape(const b2s_plan_shape& shape) const {

@@ -34,13 +34,16 @@ using PlanPtr = std::unique_ptr<b2s_plan, PlanFree>;
 /// One build: the plan's view, the world, and what was made so far.
 class PlanExecutor {
 public:
-    PlanExecutor(const b2s_plan_view& plan, b2World& world) : plan_(plan), world_(world) {}
+    /// `shape_count`: the scene's shapes, which the plan's shapes name.
+    PlanExecutor(const b2s_plan_view& plan, b2World& world, uint32_t shape_count)
+        : plan_(plan), world_(world), shapes_(shape_count) {}
     void run(Built& built);
 
 private:
     // bodies and their fixtures (bodies.hpp, shapes.hpp)
     void make_body(const b2s_plan_body& body, Built& built);
     b2Fixture* make_fixture(const b2s_plan_shape& shape, b2Body* body);
+    const b2Shape* shape_of(const b2s_plan_shape& shape);
     std::unique_ptr<b2Shape> make_shape(const b2s_plan_shape& shape) const;
     std::unique_ptr<b2Shape> make_circle(const b2s_plan_shape& shape) const;
     std::unique_ptr<b2Shape> make_polygon(const b2s_plan_shape& shape) const;
@@ -58,6 +61,9 @@ private:
     b2World& world_;
     std::vector<b2Joint*> joints_; // indexed like the plan's joints
     std::vector<b2Vec2> points_;   // the plan's point pool, as Box2D takes points
+    // indexed like the scene's shapes: each made once, then cloned by Box2D into every
+    // fixture that uses it
+    std::vector<std::unique_ptr<b2Shape>> shapes_;
 };
 
 inline void PlanExecutor::run(Built& built) {
@@ -127,7 +133,7 @@ inline Built build_world_at(const b2s_scene* scene, b2World& world,
         built.bodies.assign(view->body_count, nullptr);
         built.fixtures.assign(view->fixture_id_count, nullptr);
         built.joints.assign(view->joint_count, nullptr);
-        detail::PlanExecutor(view_of_plan, world).run(built);
+        detail::PlanExecutor(view_of_plan, world, view->shape_count).run(built);
     }
     detail::copy_reports(view_of_plan, built);
     return built;
