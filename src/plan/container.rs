@@ -117,7 +117,11 @@ impl Plan {
     /// one allocation each, not a doubling series of copies, and the memory of the last
     /// plan freed on this thread where it has room.
     pub(super) fn with_capacity(bodies: usize, shapes: usize, joints: usize) -> Plan {
-        Plan { records: Records::reused(bodies, shapes, joints), ..Plan::default() }
+        Plan {
+            records: Records::reused(bodies, shapes, joints),
+            texts: Vec::new(),
+            unplaced: false,
+        }
     }
 
     /// Appends a body; its `name` is a text of this plan (see [`Plan::keep`]).
@@ -222,6 +226,15 @@ impl Records {
 
 impl Drop for Records {
     fn drop(&mut self) {
+        // An empty plan's arrays (a test's, an unplaced one) replace no spare.
+        let held = self.bodies.capacity()
+            + self.shapes.capacity()
+            + self.points.capacity()
+            + self.joints.capacity()
+            + self.reports.capacity();
+        if held == 0 {
+            return;
+        }
         let mut spare: Spare = (
             take(&mut self.bodies),
             take(&mut self.shapes),

@@ -291,3 +291,85 @@ impl Mapper<'_> {
         planned.velocity_after_mass = add(planned.linear_velocity, spin);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_support::{BALL, messages, plan_of};
+    use crate::error::Code;
+    use crate::plan::Engine;
+    use crate::scene::Vec2;
+
+    #[test]
+    fn mass_data_moves_the_centre_and_the_velocity_is_given_again() {
+        let (shape, fixture) = BALL;
+        let body = "<Body Type=\"Dynamic\"><AngularVelocity>2</AngularVelocity>\
+            <LinearVelocity>1 0</LinearVelocity><MassData><Center>0.1 0</Center></MassData>\
+            <Fixtures><ID>0</ID></Fixtures></Body>";
+        let plan = plan_of(Engine::Box2d31, shape, fixture, body, "");
+        let b = plan.bodies()[0];
+        assert!(b.set_mass && b.set_velocity);
+        assert_eq!(b.mass.center, Vec2 { x: 0.1, y: 0.0 });
+        // v = v_origin + w x (centre - origin) = (1, 0) + 2 x (0.1, 0).
+        assert_eq!(b.velocity_after_mass, Vec2 { x: 1.0, y: 0.2 });
+    }
+
+    #[test]
+    fn a_body_asleep_gets_its_mass_but_no_velocity() {
+        let (shape, fixture) = BALL;
+        let body = "<Body Type=\"Dynamic\"><Awake>false</Awake><FixedRotation>true</FixedRotation>\
+            <Fixtures><ID>0</ID></Fixtures></Body>";
+        let plan = plan_of(Engine::Box2d32, shape, fixture, body, "");
+        let b = plan.bodies()[0];
+        assert!(b.set_mass && !b.set_velocity);
+        assert_eq!(b.mass.inertia, 0.0);
+    }
+
+    #[test]
+    fn a_fixed_rotation_spin_is_lost_in_v32_only_and_long_names_by_each_length() {
+        let (shape, fixture) = BALL;
+        let body = "<Body Type=\"Dynamic\"><Name>twelve bytes</Name><FixedRotation>true\
+            </FixedRotation><AngularVelocity>1</AngularVelocity><Fixtures><ID>0</ID></Fixtures>\
+            </Body>";
+        let plan = plan_of(Engine::Box2d31, shape, fixture, body, "");
+        assert!(plan.reports().is_empty());
+        assert_eq!(plan.text(plan.bodies()[0].name), Some("twelve bytes"));
+        let plan = plan_of(Engine::Box2d32, shape, fixture, body, "");
+        assert!(plan.bodies()[0].name.is_null());
+        let reports = messages(&plan);
+        assert_eq!(reports.len(), 2);
+        assert_eq!(
+            reports[0].3,
+            "its Name is longer than the 10 bytes Box2D v3.2 keeps of a name; the body has \
+             none, and a capture writes none"
+        );
+        assert_eq!(reports[1].0, Code::LossyBody as u32);
+        assert!(reports[1].3.starts_with("FixedRotation with AngularVelocity 1 rad/s"));
+    }
+
+    #[test]
+    fn a_body_beyond_the_range_skips_its_fixtures() {
+        let (shape, fixture) = BALL;
+        let body = "<Body Type=\"Dynamic\"><Position>20000 0</Position><Fixtures><ID>0</ID>\
+            </Fixtures></Body>";
+        let plan = plan_of(Engine::Box2d31, shape, fixture, body, "");
+        assert!(plan.bodies().is_empty());
+        assert_eq!(
+            messages(&plan),
+            [
+                (
+                    Code::BeyondBox2dRange as u32,
+                    "body",
+                    0,
+                    "Position (20000, 0) lies beyond Box2D v3's working range (each component \
+                     within +-10000 m); body not created"
+                ),
+                (
+                    Code::SkippedDependent as u32,
+                    "fixture",
+                    0,
+                    "fixture 0 of body 0: the body was not created; fixture skipped"
+                ),
+            ]
+        );
+    }
+}

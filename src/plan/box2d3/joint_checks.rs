@@ -299,3 +299,75 @@ fn drive_force(joint: &Joint) -> f32 {
         _ => 0.0,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_support::{BALL, messages, plan_of};
+    use crate::error::Code;
+    use crate::plan::Engine;
+
+    /// Body 0 static at the origin, bodies 1 and 2 dynamic balls at (1, 0) and (0, 1).
+    const BODIES: &str = "<Body Type=\"Static\"/>\
+        <Body Type=\"Dynamic\"><Position>1 0</Position><Fixtures><ID>0</ID></Fixtures></Body>\
+        <Body Type=\"Dynamic\"><Position>0 1</Position><Fixtures><ID>0</ID></Fixtures></Body>";
+
+    fn joint(kind: &str, a: u32, b: u32, rest: &str) -> String {
+        format!("<Joint Type=\"{kind}\"><BodyA>{a}</BodyA><BodyB>{b}</BodyB>{rest}</Joint>")
+    }
+
+    #[test]
+    fn a_second_joint_pulling_a_body_far_from_satisfied_is_refused_in_v31() {
+        // Joint 0 pins ball 1 at the origin, 1 m from where it is; joint 1 pins it to ball
+        // 2's origin, sqrt(2) m away.
+        let joints = joint("Revolute", 0, 1, "") + &joint("Revolute", 2, 1, "");
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &joints);
+        assert_eq!(plan.joints().len(), 1);
+        assert_eq!(
+            messages(&plan),
+            [(
+                Code::BeyondBox2dRange as u32,
+                "joint",
+                1,
+                "it starts 1.41421354 m from satisfied, and joint 0 already pulls body 1 from \
+                 further than 0.5 m: two such joints on one body lie beyond Box2D v3's working range \
+                 (its solver asserts); joint not created"
+            )]
+        );
+        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &joints);
+        assert_eq!(plan.joints().len(), 2, "v3.2 holds the pair");
+    }
+
+    #[test]
+    fn a_wheel_far_from_satisfied_across_its_axis_is_refused_in_v31() {
+        // Ball 1 lies 1 m from the ground's anchor, across a vertical axis.
+        let across = joint("Wheel", 0, 1, "<LocalAxisA>0 1</LocalAxisA>");
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &across);
+        assert!(plan.joints().is_empty());
+        assert_eq!(
+            messages(&plan)[0].3,
+            "it starts 1 m from satisfied: a line or wheel joint further than 0.5 m from \
+             satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
+             apart); joint not created"
+        );
+        // Along its axis, a wheel is satisfied wherever it starts.
+        let along = joint("Wheel", 0, 1, "<LocalAxisA>1 0</LocalAxisA>");
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &along);
+        assert_eq!(plan.joints().len(), 1);
+        // v3.2 refuses it only between two dynamic bodies, in radii of gyration.
+        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &across);
+        assert_eq!(plan.joints().len(), 1);
+    }
+
+    #[test]
+    fn a_drive_that_flings_a_light_body_is_refused() {
+        let friction = joint("Friction", 0, 1, "<MaxForce>1e9</MaxForce>");
+        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &friction);
+        assert!(plan.joints().is_empty());
+        let (code, _, _, message) = messages(&plan)[0];
+        assert_eq!(code, Code::BeyondBox2dRange as u32);
+        assert!(
+            message.starts_with("its motor or friction force 1e+09 N accelerates body 1 (mass"),
+            "{message}"
+        );
+    }
+}

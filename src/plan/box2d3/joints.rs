@@ -519,3 +519,112 @@ mod tests {
         assert_eq!(motor_hertz(1.0), 60.0 / 6.28318530718);
     }
 }
+
+#[cfg(test)]
+mod joint_tests {
+    use super::super::test_support::{BALL, messages, plan_of};
+    use crate::error::Code;
+    use crate::plan::{Engine, PlanJointKind};
+
+    const BODIES: &str = "<Body Type=\"Static\"/>\
+        <Body Type=\"Dynamic\"><Fixtures><ID>0</ID></Fixtures></Body>";
+
+    fn joint(kind: &str, rest: &str) -> String {
+        format!("<Joint Type=\"{kind}\"><BodyA>0</BodyA><BodyB>1</BodyB>{rest}</Joint>")
+    }
+
+    #[test]
+    fn revolute_limits_are_swapped_or_clamped_and_reported() {
+        let joints = joint("Revolute", "<LowerAngle>1</LowerAngle><UpperAngle>-1</UpperAngle>")
+            + &joint(
+                "Revolute",
+                "<EnableLimit>true</EnableLimit><LowerAngle>-3.2</LowerAngle>\
+                 <UpperAngle>3.2</UpperAngle>",
+            );
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &joints);
+        let j = plan.joints();
+        assert_eq!((j[0].lower, j[0].upper), (-1.0, 1.0));
+        let bound = Engine::Box2d31.working_range().max_revolute_limit;
+        assert_eq!((j[1].lower, j[1].upper), (-bound, bound));
+        let reports = messages(&plan);
+        assert_eq!(
+            reports[0],
+            (
+                Code::BadLimit as u32,
+                "joint",
+                0,
+                "LowerAngle 1 lies above UpperAngle -1, which Box2D v3 asserts against; they were \
+                 passed swapped"
+            )
+        );
+        assert_eq!(
+            reports[1],
+            (
+                Code::LossyJoint as u32,
+                "joint",
+                1,
+                "its limit [-3.20000005, 3.20000005] reaches beyond Box2D v3's +-0.99 pi; it was \
+                 clamped to [-3.1101768, 3.1101768]"
+            )
+        );
+    }
+
+    #[test]
+    fn a_reference_angle_is_unwound_in_v31_and_turns_frame_a_in_v32() {
+        let joints = joint("Revolute", "<ReferenceAngle>7</ReferenceAngle>");
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &joints);
+        assert_eq!(plan.joints()[0].reference_angle, (7.0 - std::f64::consts::TAU) as f32);
+        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &joints);
+        let j = plan.joints()[0];
+        assert_eq!(
+            (j.reference_angle, j.frame_a.q.c, j.frame_a.q.s),
+            (0.0, 7f32.cos(), 7f32.sin())
+        );
+    }
+
+    #[test]
+    fn a_rope_is_a_distance_joint_with_its_limit_on_raised_to_the_slop() {
+        let plan = plan_of(
+            Engine::Box2d32,
+            BALL.0,
+            BALL.1,
+            BODIES,
+            &joint("Rope", "<MaxLength>0.001</MaxLength>"),
+        );
+        let j = plan.joints()[0];
+        assert_eq!(j.kind, PlanJointKind::Distance as u32);
+        assert!(j.enable_limit && j.enable_spring);
+        assert_eq!((j.length, j.min_length, j.max_length, j.hertz), (0.005, 0.0, 0.005, 0.0));
+        assert_eq!(
+            messages(&plan)[0].3,
+            "MaxLength 0.00100000005 lies under Box2D v3.2's shortest joint length, 0.005 m, \
+             which was used"
+        );
+    }
+
+    #[test]
+    fn a_motor_joint_in_each_version() {
+        let motor = joint(
+            "Motor",
+            "<LinearOffset>1 0</LinearOffset><CorrectionFactor>0.5</CorrectionFactor>",
+        );
+        // Body 1 as body A, turned a quarter and free to turn: v3.1 holds the offset turned.
+        let bodies = "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Angle>1.57079637</Angle>\
+            <Fixtures><ID>0</ID></Fixtures></Body>";
+        let turned =
+            motor.replace("<BodyA>0</BodyA><BodyB>1</BodyB>", "<BodyA>1</BodyA><BodyB>0</BodyB>");
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, bodies, &turned);
+        let j = plan.joints()[0];
+        assert_eq!(j.kind, PlanJointKind::Motor as u32);
+        assert_eq!(j.linear_offset.x, 1.57079637f32.cos());
+        assert_eq!(j.linear_offset.y, 1.57079637f32.sin());
+        assert_eq!(j.correction_factor, 0.5);
+        assert!(
+            messages(&plan)[0].3.starts_with("Box2D v3.1 holds LinearOffset (1, 0) in world axes")
+        );
+        let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, bodies, &turned);
+        let j = plan.joints()[0];
+        assert_eq!((j.frame_a.p.x, j.hertz, j.damping_ratio), (1.0, super::motor_hertz(0.5), 1.0));
+        assert_eq!(messages(&plan).len(), 1);
+    }
+}

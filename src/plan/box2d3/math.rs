@@ -105,3 +105,26 @@ pub(super) fn inv_transform_point(t: Transform, p: Vec2) -> Vec2 {
     let (vx, vy) = (p.x - t.p.x, p.y - t.p.y);
     vec2(t.q.c * vx + t.q.s * vy, -t.q.s * vx + t.q.c * vy)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalize_gives_zero_below_flt_epsilon() {
+        assert_eq!(normalize(vec2(3.0, 4.0)), vec2(0.6, 0.8));
+        assert_eq!(normalize(vec2(1e-8, 0.0)), ZERO);
+    }
+
+    #[test]
+    fn a_point_transformed_and_back_and_rotations_composed() {
+        let t = Transform { p: vec2(1.0, 2.0), q: Rot { c: 0.0, s: 1.0 } };
+        assert_eq!(transform_point(t, vec2(1.0, 0.0)), vec2(1.0, 3.0));
+        assert_eq!(inv_transform_point(t, vec2(1.0, 3.0)), vec2(1.0, 0.0));
+        let quarter = Rot { c: 0.0, s: 1.0 };
+        assert_eq!(mul_rot(quarter, quarter), Rot { c: -1.0, s: 0.0 });
+        assert_eq!(inv_mul_rot(quarter, quarter), IDENTITY);
+        assert_eq!(rotate(quarter, vec2(1.0, 0.0)), vec2(0.0, 1.0));
+        assert_eq!(cross_sv(2.0, vec2(1.0, 0.0)), vec2(0.0, 2.0));
+    }
+}

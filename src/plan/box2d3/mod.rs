@@ -13,6 +13,8 @@ mod joints;
 mod mass;
 mod math;
 mod shapes;
+#[cfg(test)]
+mod test_support;
 mod version;
 
 use std::fmt;
@@ -173,6 +175,7 @@ impl Mapper<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::test_support::{IDENTITY, messages, options};
     use super::*;
     use crate::plan::{Engine, PlanShapeKind, make};
 
@@ -182,34 +185,6 @@ mod tests {
 </Shapes><Fixtures><Fixture><Shape>0</Shape><Density>2</Density></Fixture><Fixture><Shape>1</Shape><IsSensor>true</IsSensor></Fixture></Fixtures>
 <Bodies><Body Type="Dynamic"><Name>box</Name><Position>1 2</Position><LinearDamping>-1</LinearDamping><Fixtures><ID>0</ID><ID>1</ID></Fixtures></Body><Body Type="Static"/></Bodies>
 <Joints><Joint Type="Pulley"><BodyA>0</BodyA><BodyB>1</BodyB><Ratio>1</Ratio></Joint></Joints></World>"#;
-
-    fn options(engine: Engine, placement: Transform) -> PlanOptions {
-        PlanOptions {
-            engine: engine as u32,
-            placement,
-            gravity: Vec2 { x: 0.0, y: -10.0 },
-            max_linear_speed: 1500.0,
-            name_bytes: 0,
-        }
-    }
-
-    const IDENTITY: Transform = Transform { p: Vec2 { x: 0.0, y: 0.0 }, q: Rot { c: 1.0, s: 0.0 } };
-
-    fn messages(plan: &Plan) -> Vec<(u32, &str, u32, &str)> {
-        plan.reports()
-            .iter()
-            .map(|r| {
-                let objects =
-                    [Object::World, Object::Shape, Object::Fixture, Object::Body, Object::Joint];
-                let object = objects
-                    .into_iter()
-                    .find(|o| o.name().as_ptr() == r.object.as_ptr())
-                    .and_then(|o| o.name().to_str().ok())
-                    .unwrap();
-                (r.code, object, r.index, plan.text(r.message).unwrap())
-            })
-            .collect()
-    }
 
     #[test]
     fn a_scene_planned_for_each_v3_version() {

@@ -393,3 +393,102 @@ fn vertex_count_fits(shape: &Shape, count: usize) -> bool {
 fn extrapolated(end: Vec2, inner: Vec2) -> Vec2 {
     add(end, sub(end, inner))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_support::{messages, plan_of};
+    use crate::error::Code;
+    use crate::plan::{Engine, PlanShapeKind};
+    use crate::scene::Vec2;
+
+    const TRIANGLE_LOOP: &str = "<Shape Type=\"Chain\"><Loop>true</Loop><Vertices><Vertex>0 0</Vertex>\
+        <Vertex>2 0</Vertex><Vertex>0 2</Vertex></Vertices></Shape>";
+    const ON_A_BODY: (&str, &str) = (
+        "<Fixture><Shape>0</Shape></Fixture>",
+        "<Body Type=\"Static\"><Fixtures><ID>0</ID></Fixtures></Body>",
+    );
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2 { x, y }
+    }
+
+    #[test]
+    fn a_three_vertex_loop_gets_the_closing_midpoint_in_v31_only() {
+        let (f, b) = ON_A_BODY;
+        let plan = plan_of(Engine::Box2d31, TRIANGLE_LOOP, f, b, "");
+        let shape = plan.shapes()[0];
+        assert_eq!(shape.kind, PlanShapeKind::Loop as u32);
+        assert_eq!(plan.points(&shape), [v(0.0, 0.0), v(2.0, 0.0), v(0.0, 2.0), v(0.0, 1.0)]);
+        let plan = plan_of(Engine::Box2d32, TRIANGLE_LOOP, f, b, "");
+        assert_eq!(plan.points(&plan.shapes()[0]).len(), 3);
+        assert!(plan.reports().is_empty());
+    }
+
+    #[test]
+    fn an_edge_with_one_ghost_extrapolates_the_other_and_says_which() {
+        let (f, b) = ON_A_BODY;
+        let edge = "<Shape Type=\"Edge\"><Vertex1>0 0</Vertex1><Vertex2>1 0</Vertex2>\
+            <HasVertex0>true</HasVertex0><Vertex0>-1 1</Vertex0></Shape>";
+        let plan = plan_of(Engine::Box2d32, edge, f, b, "");
+        let shape = plan.shapes()[0];
+        assert_eq!(shape.kind, PlanShapeKind::Chain as u32);
+        assert_eq!(plan.points(&shape), [v(-1.0, 1.0), v(0.0, 0.0), v(1.0, 0.0), v(2.0, 0.0)]);
+        assert_eq!(
+            messages(&plan),
+            [(
+                Code::LossyShape as u32,
+                "shape",
+                0,
+                "Box2D v3.2's chain segments need a ghost vertex at each end: Vertex3 \
+                 extrapolated along the end segment"
+            )]
+        );
+    }
+
+    #[test]
+    fn a_polygon_v3_welds_away_is_reported_and_its_fixture_skipped() {
+        // Box2D 2.x holds this triangle; v3 welds points closer than four slops (0.02 m).
+        let shapes = "<Shape Type=\"Polygon\"><Vertices><Vertex>0 0</Vertex><Vertex>0.015 0\
+            </Vertex><Vertex>0 0.015</Vertex></Vertices></Shape>";
+        let fixtures = "<Fixture><Shape>0</Shape></Fixture>";
+        let body = "<Body Type=\"Static\"><Fixtures><ID>0</ID></Fixtures></Body>";
+        let plan = plan_of(Engine::Box2d31, shapes, fixtures, body, "");
+        assert!(plan.shapes().is_empty());
+        assert_eq!(
+            messages(&plan),
+            [
+                (
+                    Code::DegeneratePolygon as u32,
+                    "shape",
+                    0,
+                    "Box2D v3 finds no polygon in its vertices (b2ComputeHull welds points \
+                     closer than 0.02 m and drops collinear ones); shape not created"
+                ),
+                (
+                    Code::SkippedDependent as u32,
+                    "fixture",
+                    0,
+                    "fixture 0 of body 0 names shape 0, which was not created; fixture skipped"
+                ),
+            ]
+        );
+    }
+
+    #[test]
+    fn a_centroid_other_than_the_hulls_is_reported() {
+        let (f, b) = ON_A_BODY;
+        let square = "<Shape Type=\"Polygon\"><Vertices><Vertex>0 0</Vertex><Vertex>2 0</Vertex>\
+            <Vertex>2 2</Vertex><Vertex>0 2</Vertex></Vertices><Centroid>1 1.5</Centroid></Shape>";
+        let plan = plan_of(Engine::Box2d31, square, f, b, "");
+        assert_eq!(
+            messages(&plan),
+            [(
+                Code::LossyShape as u32,
+                "shape",
+                0,
+                "its Centroid (1, 1.5) cannot be given to Box2D v3, which uses the polygon's \
+                 own (1, 1)"
+            )]
+        );
+    }
+}
