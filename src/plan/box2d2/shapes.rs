@@ -9,18 +9,28 @@ use crate::error::Code;
 use crate::plan::container::Object;
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::rules::{MAX_POLYGON_VERTICES, polygon_hull};
-use crate::scene::{Fixture, Shape, ShapeKind, Str, Vec2};
+use crate::scene::{Fixture, Range, Shape, ShapeKind, Str, Vec2};
 
 /// A scene shape as the engine makes it: the plan's form, and the engine's for its mass.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Made {
     pub kind: PlanShapeKind,
-    pub points: Vec<Vec2>,
+    /// Its points in the plan's pool, which every fixture of the shape shares.
+    pub points: Range,
     /// A circle's centre, or a polygon's Centroid as the file gives it (NaN where it
     /// gives none: the engine keeps its own).
     pub center: Vec2,
     pub radius: f32,
     pub mass: MassShape,
+}
+
+/// A made shape before its points go to the plan's pool.
+struct Geometry {
+    kind: PlanShapeKind,
+    points: Vec<Vec2>,
+    center: Vec2,
+    radius: f32,
+    mass: MassShape,
 }
 
 /// `end` continued by one segment away from `inner`: a ghost vertex for an open chain end
@@ -60,7 +70,7 @@ impl Mapper<'_> {
         if !self.within_range(&check, Object::Shape, index, shape.name, "") {
             return None;
         }
-        let made = match ShapeKind::try_from(shape.kind) {
+        let made: Geometry = match ShapeKind::try_from(shape.kind) {
             Ok(ShapeKind::Circle) => circle(shape),
             Ok(ShapeKind::Polygon) => polygon(shape, points),
             Ok(ShapeKind::Edge) => edge(shape, points),
@@ -76,7 +86,13 @@ impl Mapper<'_> {
                 return None;
             }
         };
-        Some(made)
+        Some(Made {
+            kind: made.kind,
+            points: self.plan.push_points(&made.points),
+            center: made.center,
+            radius: made.radius,
+            mass: made.mass,
+        })
     }
 
     pub(super) fn shape_made(&self, fixture: &Fixture) -> bool {
@@ -129,7 +145,7 @@ impl Mapper<'_> {
             fixture: index,
             shape: fixture.shape,
             kind: made.kind as u32,
-            points: self.plan.push_points(&made.points),
+            points: made.points,
             center: made.center,
             radius: made.radius,
             density: fixture.density,
@@ -183,8 +199,8 @@ pub(super) fn fixture_check(fixture: &Fixture, range: &crate::plan::WorkingRange
     check
 }
 
-fn circle(shape: &Shape) -> Made {
-    Made {
+fn circle(shape: &Shape) -> Geometry {
+    Geometry {
         kind: PlanShapeKind::Circle,
         points: Vec::new(),
         center: shape.position,
@@ -198,11 +214,11 @@ fn no_centroid() -> Vec2 {
 }
 
 /// Two vertices are Box2D 2.1's `SetAsEdge` output: a line segment.
-fn polygon(shape: &Shape, points: &[Vec2]) -> Made {
+fn polygon(shape: &Shape, points: &[Vec2]) -> Geometry {
     if let [a, b] = *points {
         return segment(vec![a, b], a, b);
     }
-    Made {
+    Geometry {
         kind: PlanShapeKind::Polygon,
         points: points.to_vec(),
         center: if shape.centroid_given { shape.centroid } else { no_centroid() },
@@ -211,8 +227,8 @@ fn polygon(shape: &Shape, points: &[Vec2]) -> Made {
     }
 }
 
-fn segment(points: Vec<Vec2>, a: Vec2, b: Vec2) -> Made {
-    Made {
+fn segment(points: Vec<Vec2>, a: Vec2, b: Vec2) -> Geometry {
+    Geometry {
         kind: PlanShapeKind::Segment,
         points,
         center: no_centroid(),
@@ -222,7 +238,7 @@ fn segment(points: Vec<Vec2>, a: Vec2, b: Vec2) -> Made {
 }
 
 /// An edge with both ghosts is one-sided (`SetOneSided`), else two-sided.
-fn edge(shape: &Shape, points: &[Vec2]) -> Made {
+fn edge(shape: &Shape, points: &[Vec2]) -> Geometry {
     let (a, b) = (points[0], points[1]);
     if shape.has_prev_vertex && shape.has_next_vertex {
         segment(vec![shape.prev_vertex, a, b, shape.next_vertex], a, b)
@@ -231,8 +247,8 @@ fn edge(shape: &Shape, points: &[Vec2]) -> Made {
     }
 }
 
-fn chain(shape: &Shape, points: &[Vec2]) -> Made {
-    let made = |kind, points| Made {
+fn chain(shape: &Shape, points: &[Vec2]) -> Geometry {
+    let made = |kind, points| Geometry {
         kind,
         points,
         center: no_centroid(),

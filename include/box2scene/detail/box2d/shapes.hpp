@@ -12,12 +12,19 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace box2scene {
 namespace detail {
 
-inline const b2Vec2* PlanExecutor::points(const b2s_plan_shape& shape) const {
-    return points_.data() + shape.points.first;
+/// A shape's points, as Box2D takes them.
+inline std::vector<b2Vec2> PlanExecutor::points(const b2s_plan_shape& shape) const {
+    std::vector<b2Vec2> points;
+    points.reserve(shape.points.count);
+    for (uint32_t i = 0; i < shape.points.count; ++i) {
+        points.push_back(to_b2(plan_.points[shape.points.first + i]));
+    }
+    return points;
 }
 
 inline b2Fixture* PlanExecutor::make_fixture(const b2s_plan_shape& shape, b2Body* body) {
@@ -78,7 +85,8 @@ inline std::unique_ptr<b2Shape> PlanExecutor::make_circle(const b2s_plan_shape& 
 /// A centroid the file gives is kept (NaN where it gives none).
 inline std::unique_ptr<b2Shape> PlanExecutor::make_polygon(const b2s_plan_shape& shape) const {
     auto polygon = std::make_unique<b2PolygonShape>();
-    polygon->Set(points(shape), static_cast<int32>(shape.points.count));
+    std::vector<b2Vec2> p = points(shape);
+    polygon->Set(p.data(), static_cast<int32>(p.size()));
     if (!std::isnan(shape.center.x)) {
         polygon->m_centroid = to_b2(shape.center);
     }
@@ -88,8 +96,8 @@ inline std::unique_ptr<b2Shape> PlanExecutor::make_polygon(const b2s_plan_shape&
 /// Two points: two-sided; four: one-sided, between its ghosts.
 inline std::unique_ptr<b2Shape> PlanExecutor::make_segment(const b2s_plan_shape& shape) const {
     auto edge = std::make_unique<b2EdgeShape>();
-    const b2Vec2* p = points(shape);
-    if (shape.points.count == 4) {
+    std::vector<b2Vec2> p = points(shape);
+    if (p.size() == 4) {
         edge->SetOneSided(p[0], p[1], p[2], p[3]);
     } else {
         edge->SetTwoSided(p[0], p[1]);
@@ -100,15 +108,16 @@ inline std::unique_ptr<b2Shape> PlanExecutor::make_segment(const b2s_plan_shape&
 /// Its first and last points are the ghosts.
 inline std::unique_ptr<b2Shape> PlanExecutor::make_chain(const b2s_plan_shape& shape) const {
     auto chain = std::make_unique<b2ChainShape>();
-    const b2Vec2* p = points(shape);
-    int32 count = static_cast<int32>(shape.points.count);
-    chain->CreateChain(p + 1, count - 2, p[0], p[count - 1]);
+    std::vector<b2Vec2> p = points(shape);
+    int32 count = static_cast<int32>(p.size());
+    chain->CreateChain(p.data() + 1, count - 2, p[0], p[count - 1]);
     return chain;
 }
 
 inline std::unique_ptr<b2Shape> PlanExecutor::make_loop(const b2s_plan_shape& shape) const {
     auto chain = std::make_unique<b2ChainShape>();
-    chain->CreateLoop(points(shape), static_cast<int32>(shape.points.count));
+    std::vector<b2Vec2> p = points(shape);
+    chain->CreateLoop(p.data(), static_cast<int32>(p.size()));
     return chain;
 }
 

@@ -50,7 +50,7 @@ private:
     std::unique_ptr<b2Shape> make_segment(const b2s_plan_shape& shape) const;
     std::unique_ptr<b2Shape> make_chain(const b2s_plan_shape& shape) const;
     std::unique_ptr<b2Shape> make_loop(const b2s_plan_shape& shape) const;
-    const b2Vec2* points(const b2s_plan_shape& shape) const;
+    std::vector<b2Vec2> points(const b2s_plan_shape& shape) const;
 
     // joints (joints.hpp)
     b2Joint* make_joint(const b2s_plan_joint& joint, const Built& built);
@@ -60,17 +60,12 @@ private:
     const b2s_plan_view& plan_;
     b2World& world_;
     std::vector<b2Joint*> joints_; // indexed like the plan's joints
-    std::vector<b2Vec2> points_;   // the plan's point pool, as Box2D takes points
     // indexed like the scene's shapes: each made once, then cloned by Box2D into every
     // fixture that uses it
     std::vector<std::unique_ptr<b2Shape>> shapes_;
 };
 
 inline void PlanExecutor::run(Built& built) {
-    points_.reserve(plan_.point_count);
-    for (uint32_t i = 0; i < plan_.point_count; ++i) {
-        points_.push_back(to_b2(plan_.points[i]));
-    }
     for (uint32_t i = 0; i < plan_.body_count; ++i) {
         make_body(plan_.bodies[i], built);
     }
