@@ -300,6 +300,36 @@ static int pulley_limits_2_4_cannot_hold_are_reported() {
     return 0;
 }
 
+/// A pulley whose side hangs from the scene's first static body: that body would hold the
+/// side's rope itself, which Box2D 2.4 asserts against (a joint needs two bodies).
+static int pulley_limit_on_the_holding_static_body_is_reported() {
+    ScenePtr scene = load_text(R"(<World Version="1">
+      <Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+      <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+      <Bodies>
+        <Body Type="Static"><Position>-2 0</Position></Body>
+        <Body Type="Dynamic"><Position>2 0</Position><Fixtures><ID>0</ID></Fixtures></Body>
+      </Bodies>
+      <Joints><Joint Type="Pulley"><BodyA>0</BodyA><BodyB>1</BodyB>
+        <GroundAnchorA>-2 5</GroundAnchorA><GroundAnchorB>2 5</GroundAnchorB>
+        <LengthA>5</LengthA><LengthB>5</LengthB><Ratio>1</Ratio>
+        <MaxLengthA>6</MaxLengthA><MaxLengthB>6</MaxLengthB></Joint></Joints></World>)");
+    ENSURE(scene != nullptr);
+    b2World world(b2Vec2(0.0f, -10.0f));
+    box2scene::Built built = box2scene::build_world(scene.get(), world);
+    ENSURE_EQ(world.GetJointCount(), 2); // the pulley and side B's rope
+    ENSURE(built.joints[0] != nullptr);
+    ENSURE_EQ(built.reports.size(), 1);
+    const box2scene::Report& report = built.reports[0];
+    ENSURE_EQ(report.code, B2S_CODE_LOSSY_JOINT);
+    ENSURE_EQ(report.index, 0);
+    ENSURE_STR(report.message.c_str(),
+               "MaxLengthA 6 gives a limit of 6 m, which Box2D 2.4 cannot hold on body 0, the "
+               "static body that would hold its rope (a joint needs two bodies); the side is "
+               "unlimited");
+    return 0;
+}
+
 static int mass_data_box2d_would_reject_is_reported() {
     // Moving the centre 3 m away leaves the computed inertia about the origin smaller than
     // mass * |centre|^2: Box2D 2.4 would assert on the negative central inertia.
@@ -485,6 +515,7 @@ int main() {
     failed += RUN_TEST(body_flags_reach_box2d);
     failed += RUN_TEST(names_are_not_user_data);
     failed += RUN_TEST(pulley_limits_2_4_cannot_hold_are_reported);
+    failed += RUN_TEST(pulley_limit_on_the_holding_static_body_is_reported);
     failed += RUN_TEST(filter_bits_are_reported_only_where_16_change_what_collides);
     return failed;
 }

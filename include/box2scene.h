@@ -563,7 +563,8 @@ enum b2s_plan_shape_kind
    */
   B2S_PLAN_SHAPE_KIND_POLYGON = 1,
   /**
-   * `points`: its two ends.
+   * `points`: its two ends; in 2.x also four, `[ghost, ends, ghost]`, for a one-sided
+   * edge (`SetOneSided`).
    */
   B2S_PLAN_SHAPE_KIND_SEGMENT = 2,
   /**
@@ -1595,9 +1596,10 @@ typedef struct b2s_plan_body {
    */
   struct b2s_range shapes;
   /**
-   * The mass to give it after its shapes, where `set_mass`. For v3, a dynamic body's
-   * mass as the engine holds it once made, given or not (what it computes from the
-   * shapes where `set_mass` is false), predicted bit for bit.
+   * The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
+   * the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
+   * dynamic body's mass as the engine holds it once made, given or not (what it
+   * computes from the shapes where `set_mass` is false), predicted bit for bit.
    */
   struct b2s_plan_mass mass;
   /**
@@ -1666,7 +1668,8 @@ typedef struct b2s_plan_shape {
    */
   struct b2s_range points;
   /**
-   * m: a circle's centre, in the body's frame.
+   * m: a circle's centre, in the body's frame; in 2.x a polygon's centroid to keep (the
+   * file's `Centroid`), NaN where the engine keeps its own.
    */
   struct b2s_vec2 center;
   /**
@@ -1701,7 +1704,8 @@ typedef struct b2s_plan_shape {
  */
 typedef struct b2s_plan_joint {
   /**
-   * The scene joint it is made from.
+   * The scene joint it is made from; `B2S_NONE` for one the plan adds to the one before
+   * it (2.x: a rope holding a pulley's side, from a static body).
    */
   uint32_t joint;
   /**

@@ -116,6 +116,17 @@ pub fn polygon(vertices: &[Vec2], at: usize) -> Checked {
     }
 }
 
+/// The vertices Box2D 2.4.1's `b2PolygonShape::Set` keeps of a polygon's (of 3 to 8): the
+/// close points merged, then the convex hull, counter-clockwise from the rightmost (then
+/// lowest) point; fewer than 3 where [`polygon`] finds it degenerate.
+pub(crate) fn polygon_hull(vertices: &[Vec2]) -> Vec<Vec2> {
+    let (mut merged, mut hull) =
+        ([Vec2::ZERO; MAX_POLYGON_VERTICES], [0; MAX_POLYGON_VERTICES + 1]);
+    let count = vertices.len().min(MAX_POLYGON_VERTICES);
+    let merged = merge_close_points(&vertices[..count], &mut merged);
+    convex_hull(merged, &mut hull).iter().map(|&i| merged[i]).collect()
+}
+
 /// The vertices without those closer than half the linear slop to an earlier one, in
 /// `kept` (as long as `vertices`).
 fn merge_close_points<'k>(vertices: &[Vec2], kept: &'k mut [Vec2]) -> &'k [Vec2] {
@@ -312,6 +323,31 @@ pub(crate) fn local_axis(world: Vec2, angle: f32) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn p(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    #[test]
+    fn set_keeps_the_hull_from_the_rightmost_lowest_point_counter_clockwise() {
+        let square = [p(-1.0, -1.0), p(-1.0, 1.0), p(1.0, 1.0), p(1.0, -1.0)];
+        assert_eq!(
+            polygon_hull(&square),
+            vec![p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0), p(-1.0, -1.0)]
+        );
+        let busy = [
+            p(0.0, 0.0),
+            p(2.0, 0.0),
+            p(1.0, 0.0), // on an edge
+            p(1.0, 0.5), // inside
+            p(2.0, 2.0),
+            p(2.001, 2.0), // within half the linear slop of the last
+            p(0.0, 2.0),
+        ];
+        assert_eq!(polygon_hull(&busy), vec![p(2.0, 0.0), p(2.0, 2.0), p(0.0, 2.0), p(0.0, 0.0)]);
+        assert!(polygon_hull(&[p(0.0, 0.0), p(1.0, 0.0), p(2.0, 0.0)]).len() < 3);
+        assert!(polygon_hull(&[p(0.0, 0.0), p(0.001, 0.0), p(0.0, 0.001)]).len() < 3);
+    }
 
     /// The gift wrapping as it was before it kept the candidate's edge.
     fn old_convex_hull<'h>(points: &[Vec2], hull: &'h mut [usize]) -> &'h [usize] {

@@ -16,14 +16,16 @@
  *     b2s_write_file(saved, "saved.xml", nullptr, nullptr);
  *     b2s_scene_free(saved);
  *
- * docs/format.md tables the mapping ("Onto Box2D 2.4.1"). The adapter never prints, never
- * aborts and throws nothing for bad data: what it cannot create it skips and reports.
- * Debian's Box2D keeps its assertions on, so the adapter checks what they check before
- * calling Box2D (bodies it follows, joint kinds, a negative damping, a MassData that
- * leaves no positive inertia about the centre of mass, a prismatic limit's order, a gear's
- * bodies), whether or not the loader in use already refuses it: a report is better than an
- * abort. Values past box2scene::working_range(), where Box2D would compute inf or NaN, are
- * reported and their objects not created.
+ * docs/format.md tables the mapping ("Onto Box2D 2.4.1"). The library makes it: a build
+ * asks it for the scene's plan for Box2D 2.4 (b2s_plan_make), which holds every body,
+ * fixture and joint as Box2D's defs want them and the reports, and carries the plan out
+ * through Box2D's own calls. The adapter never prints, never aborts and throws nothing for
+ * bad data: what it cannot create it skips and reports. Debian's Box2D keeps its
+ * assertions on, so the plan checks what they check (bodies it follows, joint kinds, a
+ * negative damping, a MassData that leaves no positive inertia about the centre of mass, a
+ * prismatic limit's order, a gear's bodies), whether or not the loader in use already
+ * refuses it: a report is better than an abort. Values past box2scene::working_range(),
+ * where Box2D would compute inf or NaN, are reported and their objects not created.
  * Call it outside b2World::Step (Box2D refuses to add objects to a locked world).
  */
 #ifndef BOX2SCENE_BOX2D_HPP
@@ -238,9 +240,9 @@ private:
 
 } // namespace box2scene
 
-// The definitions, cut by concept as the v3 adapter's sources are (detail/box2d3/): the
-// reports and working range, the world (the build), its shapes, bodies and joints, the
-// capture, the lookups.
+// The definitions, cut by concept as the v3 adapter's sources are (detail/box2d3/): what the
+// build and the capture share, the world (the build, carrying out the library's plan), its
+// shapes, bodies and joints, the capture, the lookups.
 #include "detail/box2d/reports.hpp"
 #include "detail/box2d/world.hpp"
 #include "detail/box2d/shapes.hpp"

@@ -1,5 +1,6 @@
 //! Which engine module makes a plan: the one of the version the options name.
 
+use super::box2d2;
 use super::box2d3::{self, V3};
 use super::container::Plan;
 use super::range::Engine;
@@ -14,10 +15,13 @@ use crate::scene::Scene;
 pub fn make(scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
     let engine = Engine::try_from(options.engine)
         .map_err(|n| invalid(format!("engine {n} is no b2s_engine: a plan is made for 1 to 4")))?;
+    if engine == Engine::Box2d24 {
+        return Ok(box2d2::plan(scene, options));
+    }
     match V3::of(engine) {
         Some(v3) => Ok(box2d3::plan(scene, options, v3)),
         None => Err(invalid(format!(
-            "no plan is made for Box2D 2.x yet (engine {}): its executor maps the scene itself",
+            "no plan is made for Box2D 2.3 yet (engine {}): its executor maps the scene itself",
             options.engine
         ))),
     }
@@ -54,12 +58,10 @@ mod tests {
     }
 
     #[test]
-    fn box2d_2x_is_not_planned_yet() {
+    fn box2d_2_3_is_not_planned_yet() {
         let scene = crate::load(b"<World Version=\"2\"/>", &Default::default()).unwrap();
-        for n in [1, 2] {
-            let e = make(&scene, &options(n)).unwrap_err();
-            assert_eq!(e.code, Code::InvalidArgument);
-            assert!(e.message.starts_with("no plan is made for Box2D 2.x yet"), "{e}");
-        }
+        let e = make(&scene, &options(1)).unwrap_err();
+        assert_eq!(e.code, Code::InvalidArgument);
+        assert!(e.message.starts_with("no plan is made for Box2D 2.3 yet"), "{e}");
     }
 }

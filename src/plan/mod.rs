@@ -1,12 +1,15 @@
 //! The plan stage, after the frozen scene: what each Box2D version can be given. A plan
 //! (`container.rs`) holds every body, shape and joint as one version's definitions want
 //! them and the reports of what it cannot hold (`records.rs`); `make.rs` hands the scene to
-//! the module of the version asked for (`box2d3/` for v3.1 and v3.2); `gravity.rs` is the
-//! gravity a world is made with. `range.rs` is the working range, one measured table per
-//! engine version, which the executors in C, C++ and Python also read.
+//! the module of the version asked for (`box2d2/` for Box2D 2.4, `box2d3/` for v3.1 and
+//! v3.2, each with its engine's arithmetic repeated to the bit); `gravity.rs` is the gravity
+//! a world is made with. `range.rs` is the working range, one measured table per engine
+//! version, which the executors in C, C++ and Python also read; `printf.rs` spells numbers
+//! in reports as C does.
 
 #![forbid(unsafe_code)]
 
+mod box2d2;
 mod box2d3;
 mod container;
 mod gravity;

@@ -1,6 +1,7 @@
-//! Numbers in reports as C's `printf` spells them with `%g` (six significant digits) and
-//! `%.9g` (nine: every `f32` reads back exact), so that a plan's messages are the texts the
-//! executors' reports always had.
+//! Numbers in reports as C's `printf` spells them with `%g` (six significant digits),
+//! `%.9g` (nine: every `f32` reads back exact) and `%f` (six decimals, C++'s
+//! `std::to_string`), so that a plan's messages are the texts the executors' reports always
+//! had.
 
 use std::fmt;
 
@@ -12,6 +13,10 @@ pub struct G(pub f32);
 #[derive(Clone, Copy, Debug)]
 pub struct G9(pub f32);
 
+/// A value spelled as `%f`.
+#[derive(Clone, Copy, Debug)]
+pub struct F(pub f32);
+
 impl fmt::Display for G {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&general(f64::from(self.0), 6))
@@ -21,6 +26,13 @@ impl fmt::Display for G {
 impl fmt::Display for G9 {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&general(f64::from(self.0), 9))
+    }
+}
+
+impl fmt::Display for F {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let value = f64::from(self.0);
+        if value.is_finite() { write!(f, "{value:.6}") } else { f.write_str(&general(value, 6)) }
     }
 }
 
@@ -96,6 +108,19 @@ mod tests {
             (f32::NAN, "nan"),
         ] {
             assert_eq!(G9(value).to_string(), text, "{value}");
+        }
+    }
+
+    #[test]
+    fn six_decimals_as_printf_writes_them() {
+        for (value, text) in [
+            (-0.5, "-0.500000"),
+            (2.0, "2.000000"),
+            (1e-7, "0.000000"),
+            (-1e-7, "-0.000000"),
+            (f32::NEG_INFINITY, "-inf"),
+        ] {
+            assert_eq!(F(value).to_string(), text, "{value}");
         }
     }
 }

@@ -56,7 +56,8 @@ pub enum PlanShapeKind {
     /// for v3 the hull itself, `b2ComputeHull`'s counter-clockwise points, which
     /// `b2MakePolygon` takes as a `b2Hull` with radius 0.
     Polygon = 1,
-    /// `points`: its two ends.
+    /// `points`: its two ends; in 2.x also four, `[ghost, ends, ghost]`, for a one-sided
+    /// edge (`SetOneSided`).
     Segment = 2,
     /// `points`: an open chain, `[ghost, vertices..., ghost]` (2.x `CreateChain` with the
     /// ghosts as previous and next vertices; v3 a chain whose first and last points only
@@ -112,9 +113,10 @@ pub struct PlanBody {
     pub name: Str,
     /// Its shapes, in the order to create them: a range of the plan's shapes.
     pub shapes: Range,
-    /// The mass to give it after its shapes, where `set_mass`. For v3, a dynamic body's
-    /// mass as the engine holds it once made, given or not (what it computes from the
-    /// shapes where `set_mass` is false), predicted bit for bit.
+    /// The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
+    /// the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
+    /// dynamic body's mass as the engine holds it once made, given or not (what it
+    /// computes from the shapes where `set_mass` is false), predicted bit for bit.
     pub mass: PlanMass,
     /// m/s: the linear velocity to give it after its mass, where `set_velocity` (v3's
     /// `b2Body_SetMassData` does not keep the origin's velocity, as 2.x's does).
@@ -153,7 +155,8 @@ pub struct PlanShape {
     pub kind: u32,
     /// Its points, a range of the plan's point pool (see `b2s_plan_shape_kind`).
     pub points: Range,
-    /// m: a circle's centre, in the body's frame.
+    /// m: a circle's centre, in the body's frame; in 2.x a polygon's centroid to keep (the
+    /// file's `Centroid`), NaN where the engine keeps its own.
     pub center: Vec2,
     /// m: a circle's radius.
     pub radius: f32,
@@ -206,7 +209,8 @@ u32_enum_conversions!(PlanJointKind {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PlanJoint {
-    /// The scene joint it is made from.
+    /// The scene joint it is made from; `B2S_NONE` for one the plan adds to the one before
+    /// it (2.x: a rope holding a pulley's side, from a static body).
     pub joint: u32,
     /// A `b2s_plan_joint_kind`.
     pub kind: u32,

@@ -30,6 +30,54 @@ bool same_bits(const T& a, const T& b) {
     return std::memcmp(&a, &b, sizeof(T)) == 0;
 }
 
+/// The springs the plan gives a wheel or weld joint (Box2D 2.2's, from the bodies' mass),
+/// as the engine's getters give them back: what the capture inverts.
+struct BuiltSprings {
+    /// Stiffness m w^2 and damping 2 m zeta w, w = 2 pi FrequencyHz, for the mass `m` the
+    /// spring moves (b2LinearStiffness's arithmetic).
+    static void spring(const b2s_joint& joint, float mass, float& stiffness, float& damping) {
+        float omega = 2.0f * b2_pi * joint.frequency_hz;
+        stiffness = mass * omega * omega;
+        damping = 2.0f * mass * joint.damping_ratio * omega;
+    }
+    /// 1/I about the centre of mass, 0 for a body that does not turn.
+    static float inverse_central_inertia(const b2Body* body) {
+        b2Vec2 c = body->GetLocalCenter();
+        float inertia = body->GetInertia() - body->GetMass() * b2Dot(c, c);
+        return inertia > 0.0f ? 1.0f / inertia : 0.0f;
+    }
+    static float inverse_mass(const b2Body* body) {
+        float mass = body->GetMass();
+        return mass > 0.0f ? 1.0f / mass : 0.0f;
+    }
+    /// The angular mass 1/(1/IA + 1/IB).
+    static void weld_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
+                            float& stiffness, float& damping) {
+        float inverse = inverse_central_inertia(a) + inverse_central_inertia(b);
+        spring(joint, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
+    }
+    /// The effective mass along the axis as the joint starts.
+    static void wheel_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
+                             float& stiffness, float& damping) {
+        if (!(joint.frequency_hz > 0.0f)) {
+            stiffness = damping = 0.0f;
+            return;
+        }
+        b2Vec2 axis = to_b2(joint.local_axis_a);
+        axis.Normalize();
+        b2Rot qA = a->GetTransform().q, qB = b->GetTransform().q;
+        b2Vec2 rA = b2Mul(qA, to_b2(joint.local_anchor_a) - a->GetLocalCenter());
+        b2Vec2 rB = b2Mul(qB, to_b2(joint.local_anchor_b) - b->GetLocalCenter());
+        b2Vec2 d = b->GetWorldCenter() + rB - a->GetWorldCenter() - rA;
+        b2Vec2 ax = b2Mul(qA, axis);
+        float sAx = b2Cross(d + rA, ax), sBx = b2Cross(rB, ax);
+        float inverse = inverse_mass(a) + inverse_mass(b) +
+                        inverse_central_inertia(a) * sAx * sAx +
+                        inverse_central_inertia(b) * sBx * sBx;
+        spring(joint, inverse > 0.0f ? 1.0f / inverse : 0.0f, stiffness, damping);
+    }
+};
+
 /// `x` moved by `steps` representable floats (negative: down).
 inline float ulps_away(float x, int steps) {
     float toward = steps < 0 ? -FLT_MAX : FLT_MAX;
@@ -906,7 +954,7 @@ private:
         };
     }
 
-    /// build_world's spring for a wheel or weld joint (WorldBuilder::wheel_spring,
+    /// build_world's spring for a wheel or weld joint (BuiltSprings::wheel_spring,
     /// weld_spring), from the record written so far and the joint's bodies.
     template <class Builder>
     static auto record_spring(Builder spring_22, b2Joint& joint, const b2s_joint& out) {
@@ -1044,7 +1092,7 @@ private:
         out.enable_motor = joint.IsMotorEnabled();
         out.motor_speed = joint.GetMotorSpeed();
         out.max_motor_torque = joint.GetMaxMotorTorque();
-        spring(record_spring(WorldBuilder::wheel_spring, joint, out), joint, joint.GetStiffness(),
+        spring(record_spring(BuiltSprings::wheel_spring, joint, out), joint, joint.GetStiffness(),
                joint.GetDamping(), name, out);
         if (joint.IsLimitEnabled()) {
             lossy("joint", joint_index_, name,
@@ -1062,7 +1110,7 @@ private:
         out.local_anchor_a = to_b2s(joint.GetLocalAnchorA());
         out.local_anchor_b = to_b2s(joint.GetLocalAnchorB());
         out.reference_angle = joint.GetReferenceAngle();
-        spring(record_spring(WorldBuilder::weld_spring, joint, out), joint, joint.GetStiffness(),
+        spring(record_spring(BuiltSprings::weld_spring, joint, out), joint, joint.GetStiffness(),
                joint.GetDamping(), name, out);
         return true;
     }

@@ -1,6 +1,7 @@
-// Part of <box2scene/box2d.hpp> (a host includes that header only): the world, where a build
-// places the scene, one build from start to end and its reports, and scene_gravity: a loaded
-// scene into a b2World. The builder's parts are in shapes.hpp, bodies.hpp and joints.hpp.
+// Part of <box2scene/box2d.hpp> (a host includes that header only): one build, which has the
+// library plan the scene for Box2D 2.4 (b2s_plan_make: every conversion, check and report)
+// and carries the plan out through Box2D's own calls; and scene_gravity. The calls for the
+// plan's parts are in shapes.hpp, bodies.hpp and joints.hpp.
 #ifndef BOX2SCENE_DETAIL_BOX2D_WORLD_HPP
 #define BOX2SCENE_DETAIL_BOX2D_WORLD_HPP
 
@@ -10,9 +11,7 @@
 
 #include "reports.hpp"
 
-#include <algorithm>
 #include <cfloat>
-#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -26,202 +25,83 @@ inline std::string text_of(b2s_str s) {
     return s != nullptr ? std::string(s) : std::string();
 }
 
-/// One build: the scene's view, the world, and what was made so far.
-class WorldBuilder {
+/// Frees a plan when it goes out of scope.
+struct PlanFree {
+    void operator()(b2s_plan* plan) const { b2s_plan_free(plan); }
+};
+using PlanPtr = std::unique_ptr<b2s_plan, PlanFree>;
+
+/// One build: the plan's view, the world, and what was made so far.
+class PlanExecutor {
 public:
-    WorldBuilder(const struct b2s_scene_view& view, b2World& world, const b2Transform& placement)
-        : view_(view), world_(world), placement_(placement),
-          placement_angle_(placement.q.GetAngle()) {}
-    Built run();
+    /// `shape_count`: the scene's shapes, which the plan's shapes name.
+    PlanExecutor(const b2s_plan_view& plan, b2World& world, uint32_t shape_count)
+        : plan_(plan), world_(world), shapes_(shape_count) {}
+    void run(Built& built);
 
 private:
-    // capture_world inverts the springs as the build computes them (capture.hpp)
-    friend class WorldCapture;
+    // bodies and their fixtures (bodies.hpp, shapes.hpp)
+    void make_body(const b2s_plan_body& body, Built& built);
+    b2Fixture* make_fixture(const b2s_plan_shape& shape, b2Body* body);
+    const b2Shape* shape_of(const b2s_plan_shape& shape);
+    std::unique_ptr<b2Shape> make_shape(const b2s_plan_shape& shape) const;
+    std::unique_ptr<b2Shape> make_circle(const b2s_plan_shape& shape) const;
+    std::unique_ptr<b2Shape> make_polygon(const b2s_plan_shape& shape) const;
+    std::unique_ptr<b2Shape> make_segment(const b2s_plan_shape& shape) const;
+    std::unique_ptr<b2Shape> make_chain(const b2s_plan_shape& shape) const;
+    std::unique_ptr<b2Shape> make_loop(const b2s_plan_shape& shape) const;
+    std::vector<b2Vec2> points(const b2s_plan_shape& shape) const;
 
-    // ---- the build and its reports (world.hpp)
-    void report(b2s_code code, const char* object, uint32_t index, b2s_str name,
-                std::string message);
-    bool within_range(const RangeCheck& check, const char* object, uint32_t index,
-                      b2s_str name, const std::string& owner = std::string());
-    void check_gravity();
-
-    // ---- shapes: made once each, then cloned by Box2D into every fixture that uses them
-    // (shapes.hpp, with the fixtures)
-    void make_shapes();
-    std::unique_ptr<b2Shape> make_shape(uint32_t index);
-    bool vertices_of(const b2s_shape& shape, std::vector<b2Vec2>& points) const;
-    static RangeCheck shape_check(const b2s_shape& shape, const std::vector<b2Vec2>& points);
-    static bool vertex_count_fits(const b2s_shape& shape, size_t count);
-    static std::unique_ptr<b2Shape> make_circle(const b2s_shape& shape);
-    static std::unique_ptr<b2Shape> make_polygon(const b2s_shape& shape,
-                                                 const std::vector<b2Vec2>& points);
-    static std::unique_ptr<b2Shape> make_edge(const b2s_shape& shape,
-                                              const std::vector<b2Vec2>& points);
-    static std::unique_ptr<b2Shape> make_chain(const b2s_shape& shape,
-                                               const std::vector<b2Vec2>& points);
-
-    // ---- where the placement puts the scene (world.hpp)
-    bool placement_valid() const;
-    b2Vec2 placed(b2s_vec2 point) const;
-
-    // ---- bodies and their mass (bodies.hpp)
-    void make_body(uint32_t index);
-    RangeCheck body_check(const b2s_body& body) const;
-    void skip_fixtures_of(uint32_t body_index, const b2s_body& body);
-    b2MassData predicted_mass(const b2s_body& body, RangeCheck& check) const;
-    static b2MassData with_mass_data(const b2MassData& mass, const b2s_body& body);
-    b2BodyDef body_def(uint32_t index, const b2s_body& body);
-    float damping(uint32_t index, const b2s_body& body, float value, const char* field);
-    // a body's fixtures (shapes.hpp)
-    void make_fixtures(uint32_t body_index, const b2s_body& body, b2Body* created);
-    bool shape_created(const b2s_fixture& fixture) const;
-    static RangeCheck fixture_check(const b2s_fixture& fixture);
-    bool fixture_creatable(uint32_t index) const;
-    void report_lossy_filters();
-    b2Fixture* make_fixture(uint32_t body_index, uint32_t index, b2Body* body);
-    // its mass (bodies.hpp)
-    void apply_mass_data(uint32_t index, const b2s_body& body, b2Body* created);
-    static bool mass_data_given(const b2s_mass_data& given);
-    static b2MassData overwritten(b2MassData mass, const b2s_mass_data& given);
-
-    // ---- joints (joints.hpp)
+    // joints (joints.hpp)
+    b2Joint* make_joint(const b2s_plan_joint& joint, const Built& built);
     template <class Def>
-    bool connect(uint32_t index, const b2s_joint& joint, Def& def);
-    b2Body* created_body(uint32_t index) const;
-    template <class Def>
-    void create(uint32_t index, const Def& def);
-    void make_joint(uint32_t index);
-    float starting_violation(const b2s_joint& joint) const;
-    RangeCheck violation_check(const b2s_joint& joint);
-    RangeCheck joint_check(const b2s_joint& joint) const;
-    bool massless(uint32_t body) const;
-    void check_stiffness(const b2s_joint& joint, RangeCheck& check) const;
-    void check_anchors(const b2s_joint& joint, b2s_vec2 anchor_a, b2s_vec2 anchor_b,
-                       RangeCheck& check) const;
-    void check_anchor(const char* field, uint32_t body, float r, float lever,
-                      RangeCheck& check) const;
-    static void spring(const b2s_joint& joint, float mass, float& stiffness, float& damping);
-    static float inverse_central_inertia(const b2Body* body);
-    static float inverse_mass(const b2Body* body);
-    static void weld_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
-                            float& stiffness, float& damping);
-    static void wheel_spring(const b2s_joint& joint, const b2Body* a, const b2Body* b,
-                             float& stiffness, float& damping);
-    void make_revolute(uint32_t index, const b2s_joint& joint);
-    void make_prismatic(uint32_t index, const b2s_joint& joint);
-    void make_distance(uint32_t index, const b2s_joint& joint);
-    void make_rope(uint32_t index, const b2s_joint& joint);
-    void make_pulley(uint32_t index, const b2s_joint& joint);
-    void limit_pulley_side(uint32_t index, const b2s_joint& joint, const char* field,
-                           float given, float longest, b2Vec2 ground, b2Body* body,
-                           b2Vec2 anchor);
-    b2Body* static_body() const;
-    template <class Def>
-    static void set_anchors_and_axis(const b2s_joint& joint, Def& def);
-    void make_line(uint32_t index, const b2s_joint& joint);
-    void make_wheel(uint32_t index, const b2s_joint& joint);
-    void make_weld(uint32_t index, const b2s_joint& joint);
-    void make_friction(uint32_t index, const b2s_joint& joint);
-    void make_motor(uint32_t index, const b2s_joint& joint);
-    void make_gear(uint32_t index);
-    b2Joint* gear_input(uint32_t index, const b2s_joint& gear, uint32_t input);
+    b2Joint* create(const b2s_plan_joint& joint, const Built& built, Def& def);
 
-    const struct b2s_scene_view& view_;
+    const b2s_plan_view& plan_;
     b2World& world_;
-    b2Transform placement_;
-    float placement_angle_; // rad: what the placement adds to every body's Angle
-    std::vector<std::unique_ptr<b2Shape>> shapes_; // indexed like the scene's shapes
-    std::vector<b2MassData> masses_; // each dynamic body's, I about its centre of mass
-    std::vector<const b2s_joint*> pulled_; // per body: the joint that starts it violated
-    Built built_;
+    std::vector<b2Joint*> joints_; // indexed like the plan's joints
+    // indexed like the scene's shapes: each made once, then cloned by Box2D into every
+    // fixture that uses it
+    std::vector<std::unique_ptr<b2Shape>> shapes_;
 };
 
-inline Built WorldBuilder::run() {
-    if (!placement_valid()) {
-        report(B2S_CODE_INVALID_ARGUMENT, "world", 0, nullptr,
-               "the placement (" + decimal(placement_.p.x) + ", " + decimal(placement_.p.y) +
-                   ") turned by (" + decimal(placement_.q.c) + ", " +
-                   decimal(placement_.q.s) + ") is not finite, not within +-" +
-                   decimal(working_range().max_length) +
-                   " m or not a normalised rotation; nothing was built");
-        return std::move(built_);
+inline void PlanExecutor::run(Built& built) {
+    for (uint32_t i = 0; i < plan_.body_count; ++i) {
+        make_body(plan_.bodies[i], built);
     }
-    check_gravity();
-    report_lossy_filters();
-    make_shapes();
-    built_.bodies.assign(view_.body_count, nullptr);
-    masses_.assign(view_.body_count, b2MassData{0.0f, b2Vec2_zero, 0.0f});
-    built_.fixtures.assign(view_.fixture_id_count, nullptr);
-    for (uint32_t i = 0; i < view_.body_count; ++i) {
-        make_body(i);
-    }
-    // Joints come after every body has its final mass (spring stiffness depends on it),
-    // and gears after the joints they couple, which may come later in the file.
-    built_.joints.assign(view_.joint_count, nullptr);
-    pulled_.assign(view_.body_count, nullptr);
-    for (uint32_t i = 0; i < view_.joint_count; ++i) {
-        if (view_.joints[i].kind != B2S_JOINT_KIND_GEAR) {
-            make_joint(i);
+    joints_.reserve(plan_.joint_count);
+    for (uint32_t i = 0; i < plan_.joint_count; ++i) {
+        const b2s_plan_joint& joint = plan_.joints[i];
+        joints_.push_back(make_joint(joint, built));
+        if (joint.joint != B2S_NONE) {
+            built.joints[joint.joint] = joints_.back();
         }
     }
-    for (uint32_t i = 0; i < view_.joint_count; ++i) {
-        if (view_.joints[i].kind == B2S_JOINT_KIND_GEAR) {
-            make_gear(i);
-        }
-    }
-    return std::move(built_);
 }
 
-inline void WorldBuilder::report(b2s_code code, const char* object, uint32_t index, b2s_str name,
-            std::string message) {
-    built_.reports.push_back(Report{code, object, index, text_of(name), std::move(message)});
-}
-
-/// Reports an object found beyond the working range; false when it is.
-inline bool WorldBuilder::within_range(const RangeCheck& check, const char* object, uint32_t index,
-                  b2s_str name, const std::string& owner) {
-    if (check.passed()) {
-        return true;
-    }
-    report(B2S_CODE_BEYOND_BOX2D_RANGE, object, index, name,
-           owner + check.problem() + "; " + object + " not created");
-    return false;
-}
-
-/// scene_gravity gives the host's fallback for a gravity beyond the range.
-inline void WorldBuilder::check_gravity() {
-    RangeCheck check = gravity_check(view_.gravity);
-    if (view_.gravity_given && !check.passed()) {
-        report(B2S_CODE_BEYOND_BOX2D_RANGE, "world", 0, nullptr,
-               check.problem() + "; scene_gravity gives the host's fallback instead");
+/// The reports of a plan, as a Built holds them.
+inline void copy_reports(const b2s_plan_view& plan, Built& built) {
+    built.reports.reserve(plan.report_count);
+    for (uint32_t i = 0; i < plan.report_count; ++i) {
+        const b2s_plan_report& r = plan.reports[i];
+        built.reports.push_back(Report{static_cast<b2s_code>(r.code), r.object, r.index,
+                                       text_of(r.name), text_of(r.message)});
     }
 }
 
-/// A placement Box2D 2.4 can take: finite, within the working range, its rotation
-/// normalised (2.4 keeps a body's angle, and the placement's rotation is added to it).
-inline bool WorldBuilder::placement_valid() const {
-    const b2Transform& t = placement_;
-    float qq = t.q.c * t.q.c + t.q.s * t.q.s;
-    return std::isfinite(t.p.x) && std::isfinite(t.p.y) && std::isfinite(t.q.c) &&
-           std::isfinite(t.q.s) && std::fabs(qq - 1.0f) < 1e-4f &&
-           std::fabs(t.p.x) <= working_range().max_length &&
-           std::fabs(t.p.y) <= working_range().max_length;
-}
-
-/// A point of the scene's world frame where the placement puts it.
-inline b2Vec2 WorldBuilder::placed(b2s_vec2 point) const {
-    return b2Mul(placement_, to_b2(point));
+/// A library failure (never a scene's fault): the build stops, reported on the world.
+inline Built failed_build(const b2s_error& error) {
+    Built built;
+    built.reports.push_back(Report{static_cast<b2s_code>(error.code), "world", 0,
+                                   std::string(), error.message});
+    return built;
 }
 
 } // namespace detail
 
 inline b2Vec2 scene_gravity(const b2s_scene* scene, b2Vec2 fallback) {
-    const struct b2s_scene_view* view = b2s_scene_get_view(scene);
-    if (view == nullptr || !view->gravity_given ||
-        !detail::gravity_check(view->gravity).passed()) {
-        return fallback;
-    }
-    return detail::to_b2(view->gravity);
+    return detail::to_b2(
+        b2s_plan_world_gravity(scene, B2S_ENGINE_BOX2D24, detail::to_b2s(fallback)));
 }
 
 inline Built build_world_at(const b2s_scene* scene, b2World& world,
@@ -230,7 +110,28 @@ inline Built build_world_at(const b2s_scene* scene, b2World& world,
     if (view == nullptr) {
         return Built{};
     }
-    return detail::WorldBuilder(*view, world, placement).run();
+    b2s_plan_options options{};
+    options.engine = B2S_ENGINE_BOX2D24;
+    options.placement = b2s_transform{detail::to_b2s(placement.p),
+                                      b2s_rot{placement.q.c, placement.q.s}};
+    options.gravity = detail::to_b2s(world.GetGravity());
+    options.max_linear_speed = FLT_MAX;
+    b2s_plan* made = nullptr;
+    b2s_error error{};
+    if (b2s_plan_make(scene, &options, &made, &error) != B2S_CODE_OK) {
+        return detail::failed_build(error);
+    }
+    detail::PlanPtr plan(made);
+    const b2s_plan_view& view_of_plan = *b2s_plan_get_view(plan.get());
+    Built built;
+    if (view_of_plan.placed) {
+        built.bodies.assign(view->body_count, nullptr);
+        built.fixtures.assign(view->fixture_id_count, nullptr);
+        built.joints.assign(view->joint_count, nullptr);
+        detail::PlanExecutor(view_of_plan, world, view->shape_count).run(built);
+    }
+    detail::copy_reports(view_of_plan, built);
+    return built;
 }
 
 inline Built build_world(const b2s_scene* scene, b2World& world) {

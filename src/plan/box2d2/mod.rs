@@ -1,0 +1,26 @@
+//! Box2D 2.x (2.3 as pybox2d holds it, and 2.4): the engine's own arithmetic, repeated
+//! operation for operation in `f32` so that what a plan predicts (a body's mass, a
+//! spring's stiffness, where a joint starts) is the engine's to the bit, and the mapping of
+//! a scene onto its definitions.
+
+// The checks keep the adapters' negated comparisons: a NaN fails every one of them, as it
+// fails the engine's.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+mod bodies;
+mod body;
+mod body_mass;
+mod check;
+mod joint_checks;
+mod joints;
+mod math;
+mod polygon;
+mod shape_mass;
+mod shapes;
+mod stiffness;
+mod world;
+
+pub(crate) use world::plan;
+
+#[cfg(test)]
+mod tests;
