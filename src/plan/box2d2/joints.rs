@@ -395,6 +395,24 @@ impl Mapper<'_> {
         if self.connect(index, &joint).is_none() {
             return;
         }
+        // Box2D 2.x's gear acts on the coupled joints' bodies B whatever its def says, and
+        // joins the islands of the def's bodies: other bodies would be read from islands the
+        // gear never joins.
+        let acted =
+            [self.plan.joints()[first as usize].body_b, self.plan.joints()[second as usize].body_b];
+        if acted != [joint.body_a, joint.body_b] {
+            self.report(
+                Code::LossyJoint,
+                Object::Joint,
+                index,
+                joint.name,
+                format_args!(
+                    "BodyA {} and BodyB {} are not the bodies B of the joints it couples, {} and \
+                     {}, on which Box2D 2.x's gear acts: it was made between those",
+                    joint.body_a, joint.body_b, acted[0], acted[1]
+                ),
+            );
+        }
         let mut check = Check::default();
         check.magnitude("Ratio", joint.ratio, self.range.max_ratio, "");
         if !self.within_range(&check, Object::Joint, index, joint.name, "") {
@@ -406,6 +424,8 @@ impl Mapper<'_> {
             ratio: joint.ratio,
             anchor_a: Vec2::ZERO,
             anchor_b: Vec2::ZERO,
+            body_a: acted[0],
+            body_b: acted[1],
             ..Self::def(index, &joint, PlanJointKind::Gear)
         };
         self.create(index, def);
@@ -448,6 +468,20 @@ impl Mapper<'_> {
                 format_args!(
                     "the gear couples joint {input}, whose body B is not dynamic, which Box2D \
                      2.4 asserts against; gear skipped"
+                ),
+            );
+            return None;
+        }
+        let bodies = self.scene.bodies();
+        if !bodies[made.body_a as usize].active || !bodies[made.body_b as usize].active {
+            self.report(
+                Code::BadGearJoint,
+                Object::Joint,
+                index,
+                gear.name,
+                format_args!(
+                    "the gear couples joint {input}, one of whose bodies is not Active: Box2D \
+                     2.x's gear reads that body's place in an island it never joins; gear skipped"
                 ),
             );
             return None;

@@ -281,6 +281,57 @@ fn a_gear_on_two_revolute_joints_names_them_by_their_place_in_the_plan() {
 }
 
 #[test]
+fn a_gear_on_a_joint_to_a_disabled_body_is_skipped() {
+    let xml = with_joints(
+        "<Joint Type=\"Gear\"><BodyA>1</BodyA><BodyB>2</BodyB><JointA>1</JointA><JointB>2\
+         </JointB><Ratio>2</Ratio></Joint>\
+         <Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>-2 3\
+         </LocalAnchorA></Joint>\
+         <Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>2 4\
+         </LocalAnchorA></Joint>",
+    )
+    .replacen("<Body Type=\"Dynamic\">", "<Body Type=\"Dynamic\"><Active>False</Active>", 1);
+    let plan = plan(&xml);
+    assert_eq!(plan.joints().len(), 2);
+    assert_eq!(
+        reports(&plan),
+        vec![(
+            Code::BadGearJoint as u32,
+            "joint".to_owned(),
+            0,
+            "the gear couples joint 1, one of whose bodies is not Active: Box2D 2.x's gear \
+             reads that body's place in an island it never joins; gear skipped"
+                .to_owned()
+        )]
+    );
+}
+
+#[test]
+fn a_gear_acts_on_the_bodies_b_of_its_joints_whatever_its_own_say() {
+    let plan = plan(&with_joints(
+        "<Joint Type=\"Gear\"><BodyA>2</BodyA><BodyB>1</BodyB><JointA>1</JointA><JointB>2\
+         </JointB><Ratio>2</Ratio></Joint>\
+         <Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>-2 3\
+         </LocalAnchorA></Joint>\
+         <Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>2</BodyB><LocalAnchorA>2 4\
+         </LocalAnchorA></Joint>",
+    ));
+    let gear = plan.joints()[2];
+    assert_eq!((gear.body_a, gear.body_b), (1, 2));
+    assert_eq!(
+        reports(&plan),
+        vec![(
+            Code::LossyJoint as u32,
+            "joint".to_owned(),
+            0,
+            "BodyA 2 and BodyB 1 are not the bodies B of the joints it couples, 1 and 2, on \
+             which Box2D 2.x's gear acts: it was made between those"
+                .to_owned()
+        )]
+    );
+}
+
+#[test]
 fn a_farseer_only_joint_is_skipped_in_the_adapter_s_words() {
     let plan = plan(&with_joints("<Joint Type=\"Angle\"><BodyA>1</BodyA><BodyB>2</BodyB></Joint>"));
     assert!(plan.joints().is_empty());
