@@ -200,7 +200,8 @@ pub(in crate::plan) const PI: f32 = 3.14159265359;
 /// The linear slop of every version: 2.x's `b2_linearSlop` and v3's `B2_LINEAR_SLOP`.
 const LINEAR_SLOP: f32 = 0.005;
 
-/// Box2D 2.4.1, as `c_tests/range_sweep_test.cpp` and `finite_worlds_test.cpp` measured it.
+/// Box2D 2.4.1, as `c_tests/range_sweep_test.cpp` and `finite_worlds_test.cpp` measured it,
+/// and the dialect fixtures' weld 8.4 m from satisfied, which goes NaN among other joints.
 const BOX2D_24: WorkingRange = WorkingRange {
     max_length: 1e5,
     max_angle: 1e5,
@@ -224,7 +225,7 @@ const BOX2D_24: WorkingRange = WorkingRange {
     max_lever: 75.0,
     max_lever_fixed_wheel: NONE,
     max_pulled_violation: 0.5,
-    max_violation: NONE,
+    max_violation: 4.0,
     max_wheel_violation: NONE,
     max_wheel_violation_gyrations: NONE,
     max_joint_acceleration: NONE,

@@ -395,24 +395,7 @@ impl Mapper<'_> {
         if self.connect(index, &joint).is_none() {
             return;
         }
-        // Box2D 2.x's gear acts on the coupled joints' bodies B whatever its def says, and
-        // joins the islands of the def's bodies: other bodies would be read from islands the
-        // gear never joins.
-        let acted =
-            [self.plan.joints()[first as usize].body_b, self.plan.joints()[second as usize].body_b];
-        if acted != [joint.body_a, joint.body_b] {
-            self.report(
-                Code::LossyJoint,
-                Object::Joint,
-                index,
-                joint.name,
-                format_args!(
-                    "BodyA {} and BodyB {} are not the bodies B of the joints it couples, {} and \
-                     {}, on which Box2D 2.x's gear acts: it was made between those",
-                    joint.body_a, joint.body_b, acted[0], acted[1]
-                ),
-            );
-        }
+        let bodies = self.gear_bodies(index, &joint, first, second);
         let mut check = Check::default();
         check.magnitude("Ratio", joint.ratio, self.range.max_ratio, "");
         if !self.within_range(&check, Object::Joint, index, joint.name, "") {
@@ -424,11 +407,37 @@ impl Mapper<'_> {
             ratio: joint.ratio,
             anchor_a: Vec2::ZERO,
             anchor_b: Vec2::ZERO,
-            body_a: acted[0],
-            body_b: acted[1],
+            body_a: bodies[0],
+            body_b: bodies[1],
             ..Self::def(index, &joint, PlanJointKind::Gear)
         };
         self.create(index, def);
+    }
+
+    /// The bodies of a gear's def. Box2D 2.x's gear moves the coupled joints' bodies B
+    /// whatever its def says, and joins only the islands of its def's two bodies: other
+    /// bodies would be read from islands the gear never joins. So the def's bodies are those
+    /// two, or, where they are one body, it and the first joint's body A (which that joint
+    /// keeps in its island); the file's, in its order, where they are the same pair.
+    fn gear_bodies(&mut self, index: u32, gear: &Joint, first: u32, second: u32) -> [u32; 2] {
+        let (a, b) = (self.plan.joints()[first as usize], self.plan.joints()[second as usize]);
+        let wanted = if a.body_b == b.body_b { [a.body_b, a.body_a] } else { [a.body_b, b.body_b] };
+        let given = [gear.body_a, gear.body_b];
+        if given == wanted || given == [wanted[1], wanted[0]] {
+            return given;
+        }
+        self.report(
+            Code::LossyJoint,
+            Object::Joint,
+            index,
+            gear.name,
+            format_args!(
+                "BodyA {} and BodyB {} are not the bodies the joints it couples move, {} and {}, \
+                 on which Box2D 2.x's gear acts: it was made between those",
+                gear.body_a, gear.body_b, wanted[0], wanted[1]
+            ),
+        );
+        wanted
     }
 
     /// The plan joint, revolute or prismatic, a gear couples, or None (reported).

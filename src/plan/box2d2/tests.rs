@@ -309,7 +309,7 @@ fn a_gear_on_a_joint_to_a_disabled_body_is_skipped() {
 #[test]
 fn a_gear_acts_on_the_bodies_b_of_its_joints_whatever_its_own_say() {
     let plan = plan(&with_joints(
-        "<Joint Type=\"Gear\"><BodyA>2</BodyA><BodyB>1</BodyB><JointA>1</JointA><JointB>2\
+        "<Joint Type=\"Gear\"><BodyA>2</BodyA><BodyB>0</BodyB><JointA>1</JointA><JointB>2\
          </JointB><Ratio>2</Ratio></Joint>\
          <Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>-2 3\
          </LocalAnchorA></Joint>\
@@ -324,8 +324,53 @@ fn a_gear_acts_on_the_bodies_b_of_its_joints_whatever_its_own_say() {
             Code::LossyJoint as u32,
             "joint".to_owned(),
             0,
-            "BodyA 2 and BodyB 1 are not the bodies B of the joints it couples, 1 and 2, on \
+            "BodyA 2 and BodyB 0 are not the bodies the joints it couples move, 1 and 2, on \
              which Box2D 2.x's gear acts: it was made between those"
+                .to_owned()
+        )]
+    );
+}
+
+#[test]
+fn a_gear_of_two_joints_moving_one_body_joins_it_to_the_first_joints_body_a() {
+    let joints = "<Joint Type=\"Revolute\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>-2 3\
+         </LocalAnchorA></Joint>\
+         <Joint Type=\"Prismatic\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>-2 3\
+         </LocalAnchorA></Joint>";
+    let gear = |a: u32, b: u32| {
+        format!(
+            "{joints}<Joint Type=\"Gear\"><BodyA>{a}</BodyA><BodyB>{b}</BodyB><JointA>0</JointA>\
+             <JointB>1</JointB></Joint>"
+        )
+    };
+    let plan_01 = plan(&with_joints(&gear(0, 1)));
+    assert!(reports(&plan_01).is_empty(), "{:?}", reports(&plan_01));
+    let made = plan_01.joints()[2];
+    assert_eq!((made.kind, made.body_a, made.body_b), (PlanJointKind::Gear as u32, 0, 1));
+    let plan_12 = plan(&with_joints(&gear(1, 2)));
+    let made = plan_12.joints()[2];
+    assert_eq!((made.body_a, made.body_b), (1, 0));
+    assert_eq!(reports(&plan_12).len(), 1);
+    assert_eq!(reports(&plan_12)[0].0, Code::LossyJoint as u32);
+}
+
+#[test]
+fn a_joint_started_further_than_max_violation_is_refused() {
+    let plan = plan(&with_joints(
+        "<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>3 0</LocalAnchorA>\
+         </Joint><Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>",
+    ));
+    assert_eq!(plan.joints().len(), 1);
+    assert_eq!(plan.joints()[0].joint, 1);
+    assert_eq!(
+        reports(&plan),
+        vec![(
+            Code::BeyondBox2dRange as u32,
+            "joint".to_owned(),
+            0,
+            "it starts 5.83095169 m from satisfied: a joint further than 4 m from satisfied \
+             lies beyond Box2D 2.4's working range (its position solver tears a body to NaN \
+             once other joints act on it); joint not created"
                 .to_owned()
         )]
     );
