@@ -21,7 +21,7 @@ use quick_xml::events::{BytesDecl, BytesStart};
 use quick_xml::parser::{ElementParser, Parser as _};
 
 use super::names::{Name, SHORT};
-use crate::error::{Code, Parsed, Position, Problem, problem};
+use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
 use crate::place::{Cursor, Lines};
@@ -39,36 +39,6 @@ pub(super) use values::verbatim;
 
 #[cfg(test)]
 mod tests;
-
-/// Why a reading stopped before the end of its text: a problem of the file, or the end of
-/// the piece of text it was given, before an item (see [`Tokenizer::end_before`]), which is
-/// where a two-thread load's reading is meant to stop and no finding at all.
-#[derive(Debug)]
-pub(crate) enum Halt {
-    Problem(Problem),
-    PieceEnd,
-}
-
-impl From<Problem> for Halt {
-    #[inline]
-    fn from(problem: Problem) -> Halt {
-        Halt::Problem(problem)
-    }
-}
-
-impl Halt {
-    /// The problem that stopped a reading that was given no piece ends (so that it cannot
-    /// stop at one).
-    pub(crate) fn into_problem(self) -> Problem {
-        match self {
-            Halt::Problem(problem) => problem,
-            Halt::PieceEnd => problem(Code::Internal, 0, "a reading stopped at a piece's end"),
-        }
-    }
-}
-
-/// What a reading step gives, or why the reading stopped.
-pub(crate) type Reading<T> = Result<T, Halt>;
 
 #[cold]
 fn malformed<E: From<Problem>>(at: usize, e: impl Into<quick_xml::Error>) -> E {
@@ -274,46 +244,6 @@ pub(super) struct Tokenizer<'a> {
     /// The markup ahead, as the scan stage finds it: the reader takes each piece's mark as
     /// it reads it, and looks for no delimiter itself.
     index: Index,
-    /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
-    /// items' offsets in order, with the names of the containers they are assumed to be
-    /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
-    /// none), where the text at hand ends.
-    ends: Vec<(usize, Name)>,
-    next_end: usize,
-    end_at: usize,
-    /// Where ends that are still being found come from (see
-    /// [`Tokenizer::end_before_found`]).
-    found: Option<FoundEnds<'a>>,
-}
-
-/// Where the ends of a reading come from while they are still being found: asked each time
-/// more text is read, it gives them once they are (see [`Tokenizer::end_before_found`]).
-pub(super) type FoundEnds<'a> = Box<dyn FnMut() -> Option<Vec<(usize, Name)>> + 'a>;
-
-/// Where a tokenizer stopped, for another to go on from there (see [`Tokenizer::resume`]).
-pub(super) struct Stop {
-    pos: usize,
-    started: usize,
-    last: usize,
-    open: Vec<(Name, usize)>,
-    elements: u64,
-    /// The position of `pos`, counted from where the tokenizer started, when it placed
-    /// what it found as it read; None for a text that stays in memory, whose findings are
-    /// placed once the whole is read.
-    end: Option<Position>,
-}
-
-impl Stop {
-    /// The elements the tokenizer read.
-    pub fn elements(&self) -> u64 {
-        self.elements
-    }
-
-    /// The position where it stopped, counted from where it started, when it placed what
-    /// it found as it read.
-    pub fn end(&self) -> Option<Position> {
-        self.end
-    }
 }
 
 impl<'a> Tokenizer<'a> {
@@ -331,10 +261,6 @@ impl<'a> Tokenizer<'a> {
             elements: 0,
             lines,
             index,
-            ends: Vec::new(),
-            next_end: 0,
-            end_at: usize::MAX,
-            found: None,
         }
     }
 
@@ -352,13 +278,8 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
-    /// at the end of the file; the problem that ends the text early, when that is why;
-    /// [`Halt::PieceEnd`] where the reading ends before an item (see
-    /// [`Tokenizer::end_before`]).
-    fn more(&mut self) -> Reading<bool> {
-        if self.found.is_some() {
-            self.take_found_ends();
-        }
+    /// at the end of the text; the problem that ends the text early, when that is why.
+    fn more(&mut self) -> Parsed<bool> {
         let keep = self.kept.first().map_or(self.last, |kept| kept.min(self.last));
         let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
         // The scan goes on from where it stands.
@@ -367,33 +288,13 @@ impl<'a> Tokenizer<'a> {
         if !self.source.is_whole() {
             self.lines.release(self.source.text(), self.source.base(), keep);
         }
-        let end = self.source.end();
-        while !self.source.more(keep) {
-            if self.source.end() != self.end_at {
-                return match self.source.stop() {
-                    Some(stop) => Err(Halt::Problem(Box::new(stop.clone()))),
-                    None => Ok(false),
-                };
-            }
-            if self.pos == self.end_at && self.may_end() {
-                return Err(Halt::PieceEnd);
-            }
-            self.pass_end();
-            // A text in memory is at hand past the end at once.
-            if self.source.end() > end {
-                break;
-            }
+        if self.source.more(keep) {
+            return Ok(true);
         }
-        Ok(true)
-    }
-
-    /// Whether the reading, at the next end, may end there: directly in the container
-    /// assumed, in the root, with nothing read waiting for the reader (text kept
-    /// verbatim, comments, which would go before the item).
-    fn may_end(&self) -> bool {
-        let container = &self.ends[self.next_end].1;
-        matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes())
-            && self.kept.waits_for_nothing()
+        match self.source.stop() {
+            Some(stop) => Err(Box::new(stop.clone())),
+            None => Ok(false),
+        }
     }
 
     /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
@@ -401,7 +302,7 @@ impl<'a> Tokenizer<'a> {
     /// the end of the file. A node longer than `max_text_bytes` is refused before it is all
     /// read: measured, while its end is not at hand, up to the last byte that cannot begin
     /// its closing delimiter of `overlap + 1` bytes.
-    fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Reading<Option<Mark>> {
+    fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Parsed<Option<Mark>> {
         loop {
             if let Some(mark) = self.index.next(self.source.text().as_bytes(), self.source.base()) {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
@@ -436,7 +337,7 @@ impl<'a> Tokenizer<'a> {
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
     #[inline(always)]
-    pub fn skip_space(&mut self) -> Reading<()> {
+    pub fn skip_space(&mut self) -> Parsed<()> {
         let rest = self.rest(self.pos);
         let (space, all) = (space_len(rest), rest.len());
         self.pos += space;
@@ -450,7 +351,7 @@ impl<'a> Tokenizer<'a> {
     /// apart, so that the usual skip is a few instructions where it is inlined.
     #[cold]
     #[inline(never)]
-    fn skip_space_on(&mut self) -> Reading<()> {
+    fn skip_space_on(&mut self) -> Parsed<()> {
         loop {
             // Directly in the root or in a container, nothing read before the white space
             // is looked at again (an item's text is kept while it is open): neither it nor
@@ -482,7 +383,7 @@ impl<'a> Tokenizer<'a> {
         (self.last, self.started) = (self.started, at);
     }
 
-    pub fn next_node(&mut self) -> Reading<Node> {
+    pub fn next_node(&mut self) -> Parsed<Node> {
         self.begin_node(self.pos);
         loop {
             let at = self.pos;
@@ -514,7 +415,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Text up to the next markup, its references resolved and its line ends normalised.
-    fn text_node(&mut self, at: usize) -> Reading<Node> {
+    fn text_node(&mut self, at: usize) -> Parsed<Node> {
         let end = loop {
             let (text, base) = (self.source.text().as_bytes(), self.source.base());
             if let Some(mark) = self.index.next(text, base) {
@@ -546,7 +447,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The end of a tag that starts at `at`: the offset of its `>`.
-    fn tag_end(&mut self, at: usize) -> Reading<usize> {
+    fn tag_end(&mut self, at: usize) -> Parsed<usize> {
         let Some(mark) = self.mark(at, 1, 0)? else {
             // The end of the file: quick-xml tells whether a quoted value is open.
             let mut parser = ElementParser::Outside;
@@ -554,10 +455,10 @@ impl<'a> Tokenizer<'a> {
             return Err(malformed(at, parser.eof_error(&[])));
         };
         self.index.take();
-        Ok(self.within_text_limit(at, mark.end)?)
+        self.within_text_limit(at, mark.end)
     }
 
-    fn start_tag(&mut self, at: usize) -> Reading<Node> {
+    fn start_tag(&mut self, at: usize) -> Parsed<Node> {
         let tag = match self.short_tag(at) {
             Some(tag) => tag,
             None => {
@@ -615,7 +516,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Counts a start tag just read against the limits and opens its element.
     #[inline(always)]
-    fn opened(&mut self, tag: &Tag) -> Reading<()> {
+    fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
         self.elements += 1;
         if self.elements > self.options.max_elements {
@@ -655,7 +556,7 @@ impl<'a> Tokenizer<'a> {
         Some(Tag { name, content: None, at, empty })
     }
 
-    fn end_tag(&mut self, at: usize) -> Reading<Node> {
+    fn end_tag(&mut self, at: usize) -> Parsed<Node> {
         if self.usual_end_tag(at) {
             return Ok(Node::Close(at));
         }
@@ -674,7 +575,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
-    fn processing_instruction(&mut self, at: usize) -> Reading<()> {
+    fn processing_instruction(&mut self, at: usize) -> Parsed<()> {
         let Some(mark) = self.mark(at, 2, 1)? else {
             let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
             return Err(malformed(at, unclosed));
@@ -702,7 +603,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<!...`: a comment (kept for the writer: None), CDATA (its text), or a DOCTYPE (refused).
-    fn bang(&mut self, at: usize) -> Reading<Option<Node>> {
+    fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {

@@ -10,7 +10,6 @@ use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
-use super::Reading;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
@@ -66,7 +65,7 @@ impl<'a> Tokenizer<'a> {
     /// comments are skipped; other text is an error. Inlined into the readers' loops, so
     /// that the usual child costs no more than it needs.
     #[inline(always)]
-    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Reading<bool> {
+    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
         if parent.empty {
             return Ok(false);
         }
@@ -93,7 +92,7 @@ impl<'a> Tokenizer<'a> {
     /// general reading of a child: apart, so that the usual child costs no more than it
     /// needs.
     #[inline(never)]
-    pub(super) fn other_child(&mut self, parent: &Tag) -> Reading<Option<Tag>> {
+    pub(super) fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         loop {
             self.skip_space()?;
             match self.next_node()? {
@@ -113,13 +112,14 @@ impl<'a> Tokenizer<'a> {
                         ));
                     }
                 }
+                Node::Eof if self.at_piece_end() => return Ok(None),
                 Node::Eof => return Err(self.unclosed(parent)),
             }
         }
     }
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
-    pub fn value(&mut self, tag: &Tag) -> Reading<Value> {
+    pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
         match self.plain_value(tag) {
             Some(value) => Ok(value),
             None => self.value_of_nodes(tag),
@@ -127,7 +127,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// [`Tokenizer::value`] when it is not the usual one: read node by node.
-    fn value_of_nodes(&mut self, tag: &Tag) -> Reading<Value> {
+    fn value_of_nodes(&mut self, tag: &Tag) -> Parsed<Value> {
         let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
@@ -235,7 +235,7 @@ impl<'a> Tokenizer<'a> {
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Reading<Result<(T, usize), Problem>> {
+    ) -> Parsed<Result<(T, usize), Problem>> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
             return Ok(match convert(self.source.slice(at, end)) {
@@ -369,7 +369,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Skips `tag` and everything inside it.
-    pub fn skip(&mut self, tag: &Tag) -> Reading<()> {
+    pub fn skip(&mut self, tag: &Tag) -> Parsed<()> {
         if tag.empty {
             return Ok(());
         }
