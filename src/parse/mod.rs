@@ -103,7 +103,13 @@ struct Reader<'a> {
 impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict, recovering);
-        Reader { tok, arena, object: Object::World, within: "", for_writer: !recovering }
+        Reader { for_writer: !recovering, ..Reader::with_arena(tok, arena) }
+    }
+
+    /// A reader that goes on filling `arena`, which a read that stops at its first error
+    /// began.
+    fn with_arena(tok: Tokenizer<'a>, arena: Arena) -> Reader<'a> {
+        Reader { tok, arena, object: Object::World, within: "", for_writer: true }
     }
 
     /// The whole document.

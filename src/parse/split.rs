@@ -81,15 +81,14 @@ pub(super) fn read<'a>(
         return read_whole(source, options, false);
     };
     let claims = Mutex::new(Claims { caller: 0, helper: helped.min(pieces.len()) });
-    let done = std::thread::scope(|scope| {
+    let (mine, theirs) = std::thread::scope(|scope| {
         let (sender, received) = mpsc::channel();
         let (root, pieces, claims, text) = (&root, &pieces, &claims, &text);
         scope.spawn(move || help(text, options, root, pieces, claims, &sender));
-        let mut done = read_mine(text, &mut buffer, options, root, pieces, claims);
-        receive(&mut done, &received);
-        done
+        let mine = read_mine(text, &mut buffer, options, root, pieces, claims);
+        (mine, received.into_iter().collect::<Vec<_>>())
     });
-    match merged(done, &pieces, options) {
+    match mine.and_then(|mine| merged(mine, theirs, &pieces, &text, options)) {
         Some(arena) => (Ok(arena), Placer::new(text.whole().unwrap_or(source))),
         None => read_whole(source, options, false),
     }
@@ -137,32 +136,38 @@ fn root(text: &Shared, options: &LoadOptions, first: usize, buffer: &mut Vec<u8>
     Some(Root { name: root.name, at: root.at, version: reader.arena.version })
 }
 
-/// What a reader read of one piece, to its end: what it built (its kept text copied out of
-/// the piece's text, which is let go; its positions counted from the piece's start), how
-/// many elements it read, the world's elements it read, where it ended.
-struct Done {
-    arena: Arena,
+/// How the reading of one piece ended: how many elements it read, the world's elements it
+/// read, where it ended.
+struct Ended {
     elements: u64,
     seen: Seen,
-    /// Where it ended, counted from its start, when it placed what it found as it read (a
-    /// piece of a file).
+    /// Where it ended, when it placed what it found as it read (a piece of a file): counted
+    /// from where its positions were counted from (see [`read_piece`]).
     end: Option<Position>,
     /// The container it ended in, before the next piece's item; None for the piece that
     /// ends the file.
-    ended_in: Option<Container>,
+    container: Option<Container>,
 }
 
-/// Reads `piece` of `text` (a file's into `buffer`) with the ordinary reader: None when it
-/// does not read to its end without a problem.
+/// What the second thread read of one piece, by its index: what it built (its kept text
+/// copied out of the piece's text, which is let go; its positions counted from the piece's
+/// start) and how its reading ended.
+type Done = (usize, Arena, Ended);
+
+/// Reads `piece` of `text` (a file's into `buffer`) with the ordinary reader into `arena`:
+/// None when it does not read to its end without a problem. Positions are counted on from
+/// `start`, where the piece begins, when it is known (the calling thread's pieces, each
+/// after the one before); else from the piece's start.
 fn read_piece(
     text: &Shared,
     buffer: &mut Vec<u8>,
     options: &LoadOptions,
-    root: &Root,
-    piece: &Piece,
-) -> Option<Done> {
+    (root, piece): (&Root, &Piece),
+    arena: Arena,
+    start: Option<Position>,
+) -> Option<(Arena, Ended)> {
     let source = text.source(piece.from, piece.to, buffer)?;
-    let mut reader = Reader::new(Tokenizer::new(source, options), false);
+    let mut reader = Reader::with_arena(Tokenizer::new(source, options), arena);
     let mut seen = Seen::default();
     let read = match piece.container {
         None => reader.document(&mut seen),
@@ -170,13 +175,13 @@ fn read_piece(
             reader.arena.version = root.version;
             let (root, item) = (Tag::item(root.name.clone(), root.at), Name::new(container.name()));
             let open = vec![(root.name.clone(), root.at), (item.clone(), piece.from)];
-            reader.tok.start_item(piece.from, open);
+            reader.tok.start_item(piece.from, open, start);
             seen.bits |= 1 << WorldChild::of(container).index();
             reader.document_from_item((&root, &Tag::item(item, piece.from)), container, &mut seen)
         }
     };
     read.ok()?;
-    let ended_in = match piece.to == text.len() {
+    let container = match piece.to == text.len() {
         true => {
             reader.epilog().ok()?;
             None
@@ -186,14 +191,9 @@ fn read_piece(
             Some(Container::ALL.into_iter().find(|c| Name::new(c.name()).key() == name)?)
         }
     };
-    let Reader { mut tok, mut arena, .. } = reader;
+    let Reader { mut tok, arena, .. } = reader;
     let end = tok.placed_end();
-    arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
-    if piece.from > 0 {
-        // Appended to the first piece's and let go: on the thread that read it.
-        arena.scene.shrink_to_fit();
-    }
-    Some(Done { arena, elements: tok.elements(), seen, end, ended_in })
+    Some((arena, Ended { elements: tok.elements(), seen, end, container }))
 }
 
 /// Who reads which piece: the calling thread those before `caller`, the second thread
@@ -205,8 +205,8 @@ struct Claims {
     helper: usize,
 }
 
-/// The calling thread's pieces, from the first on, until it reaches the second thread's or
-/// one it cannot use (after which it reads no more): what it read of each, by piece.
+/// The calling thread's pieces, from the first on, until it reaches the second thread's,
+/// read into one arena: how the reading of each ended. None when one could not be used.
 fn read_mine(
     text: &Shared,
     buffer: &mut Vec<u8>,
@@ -214,8 +214,8 @@ fn read_mine(
     root: &Root,
     pieces: &[Piece],
     claims: &Mutex<Claims>,
-) -> Vec<Option<Done>> {
-    let mut done: Vec<Option<Done>> = pieces.iter().map(|_| None).collect();
+) -> Option<(Arena, Vec<Ended>)> {
+    let (mut arena, mut ended) = (Arena::new(options.strict, false), Vec::<Ended>::new());
     for (k, piece) in pieces.iter().enumerate() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
@@ -224,14 +224,18 @@ fn read_mine(
             }
             claims.caller = k + 1;
         }
-        done[k] = read_piece(text, buffer, options, root, piece);
-        if done[k].is_none() {
+        // Each piece is placed on from where the one before ended.
+        let start = ended.last().and_then(|ended| ended.end);
+        let Some((read, end)) = read_piece(text, buffer, options, (root, piece), arena, start)
+        else {
             // The whole is read again: the second thread starts no more pieces.
             claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
-            break;
-        }
+            return None;
+        };
+        arena = read;
+        ended.push(end);
     }
-    done
+    Some((arena, ended))
 }
 
 /// The second thread: claims and reads the pieces from the last one back until it reaches
@@ -242,7 +246,7 @@ fn help(
     root: &Root,
     pieces: &[Piece],
     claims: &Mutex<Claims>,
-    sender: &mpsc::Sender<(usize, Option<Done>)>,
+    sender: &mpsc::Sender<Option<Done>>,
 ) {
     let mut buffer = Vec::new();
     for (k, piece) in pieces.iter().enumerate().skip(1).rev() {
@@ -253,50 +257,72 @@ fn help(
             }
             claims.helper = claims.helper.min(k);
         }
-        let done = read_piece(text, &mut buffer, options, root, piece);
+        let arena = Arena::new(options.strict, false);
+        let done = read_piece(text, &mut buffer, options, (root, piece), arena, None).map(
+            |(mut arena, ended)| {
+                // Appended to the calling thread's and let go: on the thread that read it.
+                arena.scene.shrink_to_fit();
+                (k, arena, ended)
+            },
+        );
         let usable = done.is_some();
-        if sender.send((k, done)).is_err() || !usable {
+        if sender.send(done).is_err() || !usable {
             break;
         }
     }
 }
 
-/// Fills `done` with what the second thread read, once it is done: each piece the calling
-/// thread did not read comes from there, or is missing.
-fn receive(done: &mut [Option<Done>], received: &mpsc::Receiver<(usize, Option<Done>)>) {
-    for (k, piece) in received {
-        done[k] = piece;
-    }
-}
-
-/// The arena of the whole text, the arenas of `done` appended in order, when every piece
-/// was read to where the next begins in the container it was read in, no world element was
-/// read in two pieces and the limits hold; None otherwise.
-fn merged(done: Vec<Option<Done>>, pieces: &[Piece], options: &LoadOptions) -> Option<Arena> {
-    let mut done = done.into_iter().collect::<Option<Vec<Done>>>()?.into_iter();
-    let first = done.next()?;
-    let (mut seen, mut elements, mut ended_in) = (first.seen.bits, first.elements, first.ended_in);
-    let (mut arena, mut start) = (first.arena, first.end.unwrap_or_default());
-    for (piece, done) in pieces[1..].iter().zip(done) {
-        let container = piece.container?;
-        if ended_in != Some(container) {
-            return None;
-        }
-        // Each piece has the container it begins in, as does the one before it.
-        if seen & done.seen.bits & !(1 << WorldChild::of(container).index()) != 0 {
-            return None;
-        }
-        (seen, elements, ended_in) =
-            (seen | done.seen.bits, elements + done.elements, done.ended_in);
-        arena.append(done.arena, start);
-        // Where the next piece starts, for what the pieces of a file placed as they read.
-        start = done.end.map_or(start, |end| end.after(start));
-    }
-    if ended_in.is_some() || elements > options.max_elements {
+/// The arena of the whole text: the calling thread's (`mine`, with how the reading of each
+/// of its pieces ended), the second thread's pieces appended to it in order (`theirs`, as
+/// they were sent, the last first), when every piece was read to where the next begins in
+/// the container that one was read in, no world element was read in two pieces and the
+/// limits hold; None otherwise.
+fn merged(
+    (mut arena, mine): (Arena, Vec<Ended>),
+    mut theirs: Vec<Option<Done>>,
+    pieces: &[Piece],
+    text: &Shared,
+    options: &LoadOptions,
+) -> Option<Arena> {
+    theirs.reverse();
+    let theirs = theirs.into_iter().collect::<Option<Vec<Done>>>()?;
+    let read = theirs.iter().map(|(k, ..)| *k).eq(mine.len()..pieces.len());
+    let ended: Vec<&Ended> = mine.iter().chain(theirs.iter().map(|(.., ended)| ended)).collect();
+    if !read || !fit(&ended, pieces, options) {
         return None;
     }
+    let seen = ended.iter().fold(0, |seen, ended| seen | ended.seen.bits);
+    // The second thread's pieces, placed on from where the calling thread's last one ended.
+    let mut start = mine.last().and_then(|ended| ended.end).unwrap_or_default();
+    for (_, piece, ended) in theirs {
+        arena.append(piece, start);
+        start = ended.end.map_or(start, |end| end.after(start));
+    }
     end_world(&mut arena, &Seen { bits: seen }).ok()?;
+    if let Some(whole) = text.whole() {
+        arena.scene.pool_kept_text(|from, to| whole.slice(from, to));
+    }
     Some(arena)
+}
+
+/// Whether the pieces, read as `ended` says, fit together as one reading of the whole: each
+/// begins in the container the one before ended in, none read a world element another read
+/// (but the container between them), the last ends the file, and all the elements together
+/// keep the limit.
+fn fit(ended: &[&Ended], pieces: &[Piece], options: &LoadOptions) -> bool {
+    let (mut seen, mut elements) = (0, 0);
+    for (k, piece) in pieces.iter().enumerate() {
+        let before = k.checked_sub(1).map(|k| ended[k].container);
+        if before.is_some_and(|container| container != piece.container) {
+            return false;
+        }
+        let own = piece.container.map_or(0, |container| 1 << WorldChild::of(container).index());
+        if seen & ended[k].seen.bits & !own != 0 {
+            return false;
+        }
+        (seen, elements) = (seen | ended[k].seen.bits, elements + ended[k].elements);
+    }
+    ended.last().is_some_and(|last| last.container.is_none()) && elements <= options.max_elements
 }
 
 /// Where the pieces of the text begin: at the first item from every [`PIECE_BYTES`] or so

@@ -29,6 +29,13 @@ impl Cursor {
     pub fn start(offset: usize) -> Cursor {
         Cursor { offset, line: 1, column: 1, units: 0, after_cr: false }
     }
+
+    /// The cursor at `offset` of a UTF-8 text with `position`, as a piece read before it on
+    /// the same thread ends there, before the `<` of an item.
+    pub fn at(offset: usize, position: Position) -> Cursor {
+        let column = u64::from(position.column);
+        Cursor { offset, line: position.line, column, units: 0, after_cr: false }
+    }
 }
 
 /// The cursors of one reader: `mark`, where the last offset was placed, and `base`, where

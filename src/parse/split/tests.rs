@@ -276,20 +276,28 @@ fn a_piece_ends_before_an_item_only_where_another_can_go_on() {
         let mut buffer = Vec::new();
         let root = root(&shared, &options, at[0], &mut buffer).unwrap();
         let first = |to: usize| Piece { from: 0, to, container: None };
-        let mut read = |piece: &Piece| read_piece(&shared, &mut buffer, &options, &root, piece);
+        let fresh = || Arena::new(false, false);
+        let mut read = |piece: &Piece| {
+            read_piece(&shared, &mut buffer, &options, (&root, piece), fresh(), None)
+        };
         let ended: Vec<_> = [inner, at[1], at[2], at[3], at[4]]
-            .map(|end| read(&first(end)).map(|d| d.ended_in))
+            .map(|end| read(&first(end)).map(|(_, ended)| ended.container))
             .into();
         let bodies = Some(Container::Bodies);
         assert_eq!(ended, [None, None, Some(bodies), Some(bodies), Some(bodies)], "{from_path}");
         let cut = |ends: [Boundary; 2]| pieces(&ends, text.len()).unwrap();
         for (assumed, taken) in [(Container::Bodies, true), (Container::Shapes, false)] {
             let pieces = cut([(at[2], assumed), (at[4], Container::Bodies)]);
-            let done: Vec<_> = pieces.iter().map(&mut read).collect();
+            let mut done: Vec<_> = pieces.iter().map(&mut read).collect();
             // Each item read once, where every piece is read.
-            let elements: Option<u64> = done.iter().map(|d| d.as_ref().map(|d| d.elements)).sum();
+            let elements: Option<u64> =
+                done.iter().map(|d| d.as_ref().map(|(_, ended)| ended.elements)).sum();
             assert_eq!(elements, taken.then_some(1 + 4 + 1 + 2 + 5), "{from_path}, {assumed:?}");
-            let arena = merged(done, &pieces, &options);
+            // The first piece the calling thread's, the others the second thread's, as sent.
+            let mine = done.remove(0).map(|(arena, ended)| (arena, vec![ended]));
+            let theirs =
+                (1..pieces.len()).zip(done).map(|(k, d)| d.map(|(a, e)| (k, a, e))).rev().collect();
+            let arena = mine.and_then(|mine| merged(mine, theirs, &pieces, &shared, &options));
             assert_eq!(arena.is_some(), taken, "{from_path}, {assumed:?}");
             if let Some(arena) = arena {
                 assert_eq!(arena.scene.bodies.len(), 5);
@@ -550,7 +558,8 @@ fn every_piece_cut_at_the_found_items_can_be_taken() {
     let root = root(&text, &options, found[0].0, &mut buffer).unwrap();
     let pieces = pieces(&found, text_of.len()).unwrap();
     for (i, piece) in pieces.iter().enumerate() {
-        let done = read_piece(&text, &mut buffer, &options, &root, piece);
+        let arena = Arena::new(false, false);
+        let done = read_piece(&text, &mut buffer, &options, (&root, piece), arena, None);
         let at = piece.from;
         assert!(done.is_some(), "piece {i} at {at}: {}", &text_of[at.saturating_sub(40)..at]);
     }

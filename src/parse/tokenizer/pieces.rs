@@ -55,11 +55,12 @@ impl<'a> Tokenizer<'a> {
 
     /// Starts reading at `at`, the start tag of an item in the open elements `open` (the
     /// root and a container), as a reader of one piece of the text does. Positions are
-    /// counted from there (see [`Cursor::start`]).
-    pub fn start_item(&mut self, at: usize, open: Vec<(Name, usize)>) {
+    /// counted on from `position`, where `at` is, when it is known; else from `at` (see
+    /// [`Cursor::start`]).
+    pub fn start_item(&mut self, at: usize, open: Vec<(Name, usize)>, position: Option<Position>) {
         (self.pos, self.started, self.last, self.open) = (at, at, at, open);
         self.index = Index::new(at);
-        self.lines.resume(Cursor::start(at));
+        self.lines.resume(position.map_or(Cursor::start(at), |position| Cursor::at(at, position)));
     }
 
     /// Whether the reading stands where a piece of the text ends before an item (see
