@@ -24,18 +24,19 @@ use super::names::{Name, SHORT};
 use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::place::{Cursor, Lines};
 use crate::scan::{Index, Mark};
 use crate::text::{self};
 
 mod keeping;
 mod pieces;
 mod values;
+mod window;
 
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
 pub(crate) use keeping::Keeping;
 use values::resolve_text;
 pub(super) use values::verbatim;
+use window::Window;
 
 #[cfg(test)]
 mod tests;
@@ -90,11 +91,11 @@ pub(super) struct Text {
 }
 
 impl Text {
-    /// Its text, from `source` when it is a range of it.
-    fn read<'t>(&'t self, source: &'t Source) -> &'t str {
+    /// Its text, from `window` when it is a range of it.
+    fn read<'t>(&'t self, window: &'t Window) -> &'t str {
         match &self.resolved {
             Some(resolved) => &resolved.text,
-            None => source.slice(self.at, self.end),
+            None => window.slice(self.at, self.end),
         }
     }
 
@@ -220,10 +221,11 @@ pub(super) enum Node {
     Eof,
 }
 
-/// The reader of markup: where it is in the text, which elements are open, and the
-/// comments it passed since the reader last took them.
+/// The reader of markup, the lexer that turns it into nodes: where it is in the text,
+/// which elements are open; over a window of the text, keeping at hand what the reader
+/// will want again.
 pub(super) struct Tokenizer<'a> {
-    source: Source<'a>,
+    window: Window<'a>,
     options: &'a LoadOptions,
     /// The tokenizer's offset: the next node starts here.
     pos: usize,
@@ -239,8 +241,6 @@ pub(super) struct Tokenizer<'a> {
     /// open, so that its offsets can be placed until it ends.
     open: Vec<(Name, usize)>,
     elements: u64,
-    /// Lines and columns, counted over the text as it is passed.
-    lines: Lines,
     /// The markup ahead, as the scan stage finds it: the reader takes each piece's mark as
     /// it reads it, and looks for no delimiter itself.
     index: Index,
@@ -248,10 +248,9 @@ pub(super) struct Tokenizer<'a> {
 
 impl<'a> Tokenizer<'a> {
     pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
-        let lines = Lines::new(source.encoding(), Cursor::start(source.base()));
         let index = Index::new(source.base());
         Tokenizer {
-            source,
+            window: Window::new(source),
             options,
             pos: 0,
             started: 0,
@@ -259,7 +258,6 @@ impl<'a> Tokenizer<'a> {
             kept: Keeping::default(),
             open: Vec::new(),
             elements: 0,
-            lines,
             index,
         }
     }
@@ -273,8 +271,7 @@ impl<'a> Tokenizer<'a> {
     /// The text at hand from offset `from` on (empty when `from` is past it).
     #[inline(always)]
     fn rest(&self, from: usize) -> &[u8] {
-        let text = self.source.text().as_bytes();
-        text.get(from - self.source.base()..).unwrap_or_default()
+        self.window.rest(from)
     }
 
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
@@ -283,18 +280,7 @@ impl<'a> Tokenizer<'a> {
         let keep = self.kept.first().map_or(self.last, |kept| kept.min(self.last));
         let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
         // The scan goes on from where it stands.
-        let keep = keep.min(self.index.scanned());
-        // A text in memory stays at hand: nothing is let go, so nothing is counted yet.
-        if !self.source.is_whole() {
-            self.lines.release(self.source.text(), self.source.base(), keep);
-        }
-        if self.source.more(keep) {
-            return Ok(true);
-        }
-        match self.source.stop() {
-            Some(stop) => Err(Box::new(stop.clone())),
-            None => Ok(false),
-        }
+        self.window.refill(keep.min(self.index.scanned()))
     }
 
     /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
@@ -304,11 +290,11 @@ impl<'a> Tokenizer<'a> {
     /// its closing delimiter of `overlap + 1` bytes.
     fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Parsed<Option<Mark>> {
         loop {
-            if let Some(mark) = self.index.next(self.source.text().as_bytes(), self.source.base()) {
+            if let Some(mark) = self.index.next(self.window.text(), self.window.base()) {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
                 return Ok(Some(mark));
             }
-            self.within_text_limit(at, self.source.end().saturating_sub(overlap).max(at + skip))?;
+            self.within_text_limit(at, self.window.end().saturating_sub(overlap).max(at + skip))?;
             if !self.more()? {
                 return Ok(None);
             }
@@ -319,7 +305,7 @@ impl<'a> Tokenizer<'a> {
     /// without it (a tag it read whole in the text at hand).
     #[inline(always)]
     fn passed(&mut self, at: usize) {
-        self.index.pass(at, self.source.text().as_bytes(), self.source.base());
+        self.index.pass(at, self.window.text(), self.window.base());
     }
 
     /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
@@ -361,7 +347,7 @@ impl<'a> Tokenizer<'a> {
             }
             // The scan passes the white space too (it holds no mark), so that it need not
             // stay at hand for the scan either.
-            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let (text, base) = (self.window.text(), self.window.base());
             let mark = self.index.next(text, base);
             debug_assert!(mark.is_none(), "white space holds no markup");
             if !self.more()? {
@@ -417,20 +403,20 @@ impl<'a> Tokenizer<'a> {
     /// Text up to the next markup, its references resolved and its line ends normalised.
     fn text_node(&mut self, at: usize) -> Parsed<Node> {
         let end = loop {
-            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let (text, base) = (self.window.text(), self.window.base());
             if let Some(mark) = self.index.next(text, base) {
                 break mark.at;
             }
             if let Some(start) = self.index.next_start(text, base) {
                 break start;
             }
-            self.within_text_limit(at, self.source.end())?;
+            self.within_text_limit(at, self.window.end())?;
             if !self.more()? {
-                break self.source.end();
+                break self.window.end();
             }
         };
         self.pos = self.within_text_limit(at, end)?;
-        let text = self.source.slice(at, end);
+        let text = self.window.slice(at, end);
         // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
         if let Some(i) = memchr::memmem::find(text.as_bytes(), b"]]>") {
             return Err(problem(
@@ -464,7 +450,7 @@ impl<'a> Tokenizer<'a> {
             None => {
                 let end = self.tag_end(at)?;
                 self.pos = end + 1;
-                let content = self.source.slice(at + 1, end);
+                let content = self.window.slice(at + 1, end);
                 let (content, empty) = match content.strip_suffix('/') {
                     Some(content) => (content, true),
                     None => (content, false),
@@ -562,7 +548,7 @@ impl<'a> Tokenizer<'a> {
         }
         let end = self.tag_end(at)?;
         self.pos = end + 1;
-        let found = self.source.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
+        let found = self.window.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
         let Some((expected, _)) = self.open.pop() else {
             return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
         };
@@ -584,7 +570,7 @@ impl<'a> Tokenizer<'a> {
         let end = self.within_text_limit(at, mark.end - 1)?;
         self.index.take();
         self.pos = end + 2;
-        let content = self.source.slice(at + 2, end);
+        let content = self.window.slice(at + 2, end);
         let is_declaration = content.starts_with("xml")
             && content.as_bytes().get(3).is_none_or(|&b| is_xml_space_byte(b));
         if is_declaration {

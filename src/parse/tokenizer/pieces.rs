@@ -32,7 +32,7 @@ impl<'a> Tokenizer<'a> {
     pub fn unclosed<E: From<Problem>>(&self, tag: &Tag) -> E {
         problem(
             Code::MalformedXml,
-            self.source.end(),
+            self.window.end(),
             format!(
                 "malformed XML: the file ends before </{}> (opened at byte {})",
                 tag.name(),
@@ -50,7 +50,7 @@ impl<'a> Tokenizer<'a> {
     /// and lets it go.
     pub fn unpin(&mut self, to: usize) -> String {
         let from = self.kept.unpin().unwrap_or(to);
-        self.source.slice(from, to).to_owned()
+        self.window.slice(from, to).to_owned()
     }
 
     /// Starts reading at `at`, the start tag of an item in the open elements `open` (the
@@ -60,7 +60,7 @@ impl<'a> Tokenizer<'a> {
     pub fn start_item(&mut self, at: usize, open: Vec<(Name, usize)>, position: Option<Position>) {
         (self.pos, self.started, self.last, self.open) = (at, at, at, open);
         self.index = Index::new(at);
-        self.lines.resume(position.map_or(Cursor::start(at), |position| Cursor::at(at, position)));
+        self.window.resume(position.map_or(Cursor::start(at), |position| Cursor::at(at, position)));
     }
 
     /// Whether the reading stands where a piece of the text ends before an item (see
@@ -69,8 +69,8 @@ impl<'a> Tokenizer<'a> {
     /// go with the item). There the reading of the piece ends, as the reading of a whole
     /// file would go on to the item.
     pub fn at_piece_end(&self) -> bool {
-        self.source.ends_early()
-            && self.pos == self.source.end()
+        self.window.ends_early()
+            && self.pos == self.window.end()
             && self.open.len() == 2
             && self.kept.waits_for_nothing()
     }
@@ -94,41 +94,33 @@ impl<'a> Tokenizer<'a> {
 
     /// The source it read.
     pub fn into_source(self) -> Source<'a> {
-        self.source
+        self.window.into_source()
     }
 
     /// Whether all the text is at hand, from its start, and stays so.
     pub fn is_whole(&self) -> bool {
-        self.source.is_whole()
+        self.window.is_whole()
     }
 
     /// The text from `from` to `to`, which is at hand.
     pub fn slice(&self, from: usize, to: usize) -> &str {
-        self.source.slice(from, to)
+        self.window.slice(from, to)
     }
 
     /// The line, column and byte offset of offset `at`, which is at hand: after the text
     /// last let go of, or in the object being read (see [`Tokenizer::open`]).
     pub fn locate(&mut self, at: usize) -> Position {
-        self.lines.locate(self.source.text(), self.source.base(), at)
+        self.window.locate(at)
     }
 
-    /// `finding` placed at its line and column, when its text will not stay at hand; a
-    /// text that stays in memory places its findings once it is read (see
-    /// [`super::Placer`]), and only if there are any.
-    pub fn place(&mut self, mut finding: Finding) -> Finding {
-        if finding.position.is_none() && !self.is_whole() {
-            finding.position = Some(self.locate(finding.at));
-        }
-        finding
+    /// `finding` placed at its line and column, when its text will not stay at hand (see
+    /// [`Window::place`](super::window::Window::place)).
+    pub fn place(&mut self, finding: Finding) -> Finding {
+        self.window.place(finding)
     }
 
-    /// Where offset `at` is, for what is checked once the whole file is read (see
-    /// [`Tokenizer::place`]).
+    /// Where offset `at` is, for what is checked once the whole file is read.
     pub fn spot(&mut self, at: usize) -> Spot {
-        match self.is_whole() {
-            true => Spot::offset(at),
-            false => Spot::placed(self.locate(at)),
-        }
+        self.window.spot(at)
     }
 }

@@ -19,7 +19,7 @@ use crate::text::{trim_xml, trim_xml_at};
 impl<'a> Tokenizer<'a> {
     /// The text of `t`, valid until the next node is read.
     pub fn text_of<'t>(&'t self, t: &'t Text) -> &'t str {
-        t.read(&self.source)
+        t.read(&self.window)
     }
 
     pub fn is_blank(&self, t: &Text) -> bool {
@@ -42,7 +42,7 @@ impl<'a> Tokenizer<'a> {
             return Ok(());
         };
         let declared = declared.to_ascii_lowercase();
-        let fits = match self.source.encoding() {
+        let fits = match self.window.encoding() {
             Encoding::Utf8 { .. } => matches!(declared.as_str(), "utf-8" | "utf8"),
             Encoding::Utf16 { .. } => declared.starts_with("utf-16") || declared == "unicode",
         };
@@ -184,12 +184,12 @@ impl<'a> Tokenizer<'a> {
     fn joined(&self, first: &mut Text, second: &Text) -> Resolved {
         let mut joined = first.resolved.take().unwrap_or_else(|| {
             let mut whole = Resolved::default();
-            whole.push(self.source.slice(first.at, first.end), first.at);
+            whole.push(self.window.slice(first.at, first.end), first.at);
             whole
         });
         match &second.resolved {
             Some(resolved) => joined.append(resolved, second.at),
-            None => joined.push(self.source.slice(second.at, second.end), second.at),
+            None => joined.push(self.window.slice(second.at, second.end), second.at),
         }
         joined
     }
@@ -211,7 +211,7 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let at = self.pos;
-        let mark = self.index.next(self.source.text().as_bytes(), self.source.base())?;
+        let mark = self.index.next(self.window.text(), self.window.base())?;
         let len = mark.at - at;
         let rest = self.rest(at);
         if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
@@ -238,7 +238,7 @@ impl<'a> Tokenizer<'a> {
     ) -> Parsed<Result<(T, usize), Problem>> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
-            return Ok(match convert(self.source.slice(at, end)) {
+            return Ok(match convert(self.window.slice(at, end)) {
                 Ok(v) => Ok((v, at)),
                 Err(e) => {
                     let value = Value { text: Text { at, end, resolved: None }, at };
