@@ -1,11 +1,12 @@
 //! A large file read on two threads: a stage above the reader. The text is cut into pieces
 //! before items (a `<Body>` directly in `<Bodies>`), and each piece is read by the ordinary
-//! reader, into an arena of its own, from its start to its end: the first from the start of
-//! the file, each other from its item in its container, with the root's start tag and
-//! Version read once from the file's start. The reader knows nothing of this: it is given a
+//! reader from its start to its end: the first from the start of the file, each other from
+//! its item in its container, with the root's start tag and Version read once from the
+//! file's start. The reader knows nothing of this: it is given a
 //! text that ends where its piece ends (see [`Source::ends_early`]) and reads it as a file.
-//! The calling thread reads the pieces from the first on, a second thread from the last
-//! back, until they meet; the arenas are then appended in order.
+//! The calling thread reads the pieces from the first on, into one arena, and a second
+//! thread from the last back, each into an arena of its own, until they meet; the second
+//! thread's arenas are then appended in order.
 //!
 //! Where the pieces begin is looked for near every [`PIECE_BYTES`] of the text, not found
 //! by a scan of the whole: an item's start tag right after the end tag of another (white
@@ -37,8 +38,8 @@ use crate::place::Placer;
 /// saves.
 const MIN_BYTES: usize = 1 << 20;
 
-/// About how long a piece is. The calling thread may wait for the piece the helper is
-/// reading when they meet, so pieces are short; each costs a reader and a merge.
+/// About how long a piece is. The calling thread may wait for the piece the second thread
+/// is reading when they meet, so pieces are short; each costs a reader and a merge.
 const PIECE_BYTES: usize = 256 << 10;
 
 /// At most this many pieces, however large the text.
@@ -72,19 +73,19 @@ pub(super) fn read<'a>(
     forced: Option<(Vec<Boundary>, usize)>,
 ) -> Read<'a> {
     let mut buffer = Vec::new();
-    let (boundaries, helped) = match forced {
-        Some((boundaries, helped)) => (boundaries, helped.saturating_add(1)),
+    let (boundaries, theirs_from) = match forced {
+        Some((boundaries, theirs)) => (boundaries, theirs.saturating_add(1)),
         None => (boundaries(&text, &mut buffer), usize::MAX),
     };
     let root = boundaries.first().and_then(|&(first, _)| root(&text, options, first, &mut buffer));
     let (Some(root), Some(pieces)) = (root, pieces(&boundaries, text.len())) else {
         return read_whole(source, options, false);
     };
-    let claims = Mutex::new(Claims { caller: 0, helper: helped.min(pieces.len()) });
+    let claims = Mutex::new(Claims { mine: 0, theirs: theirs_from.min(pieces.len()) });
     let (mine, theirs) = std::thread::scope(|scope| {
         let (sender, received) = mpsc::channel();
         let (root, pieces, claims, text) = (&root, &pieces, &claims, &text);
-        scope.spawn(move || help(text, options, root, pieces, claims, &sender));
+        scope.spawn(move || read_theirs(text, options, root, pieces, claims, &sender));
         let mine = read_mine(text, &mut buffer, options, root, pieces, claims);
         (mine, received.into_iter().collect::<Vec<_>>())
     });
@@ -196,13 +197,13 @@ fn read_piece(
     Some((arena, Ended { elements: tok.elements(), seen, end, container }))
 }
 
-/// Who reads which piece: the calling thread those before `caller`, the second thread
-/// those from `helper` on. Each claims a piece before it reads it, so they never read the
-/// same one: the second thread only one from `caller` on, the calling thread only one
-/// before `helper`.
+/// Who reads which piece: the calling thread those before `mine`, the second thread those
+/// from `theirs` on. Each claims a piece before it reads it, so they never read the same
+/// one: the second thread only one from `mine` on, the calling thread only one before
+/// `theirs`.
 struct Claims {
-    caller: usize,
-    helper: usize,
+    mine: usize,
+    theirs: usize,
 }
 
 /// The calling thread's pieces, from the first on, until it reaches the second thread's,
@@ -219,17 +220,17 @@ fn read_mine(
     for (k, piece) in pieces.iter().enumerate() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
-            if k >= claims.helper {
+            if k >= claims.theirs {
                 break;
             }
-            claims.caller = k + 1;
+            claims.mine = k + 1;
         }
         // Each piece is placed on from where the one before ended.
         let start = ended.last().and_then(|ended| ended.end);
         let Some((read, end)) = read_piece(text, buffer, options, (root, piece), arena, start)
         else {
             // The whole is read again: the second thread starts no more pieces.
-            claims.lock().unwrap_or_else(PoisonError::into_inner).caller = usize::MAX;
+            claims.lock().unwrap_or_else(PoisonError::into_inner).mine = usize::MAX;
             return None;
         };
         arena = read;
@@ -240,7 +241,7 @@ fn read_mine(
 
 /// The second thread: claims and reads the pieces from the last one back until it reaches
 /// one the calling thread has claimed, or one it cannot use, sending what it read of each.
-fn help(
+fn read_theirs(
     text: &Shared,
     options: &LoadOptions,
     root: &Root,
@@ -252,10 +253,10 @@ fn help(
     for (k, piece) in pieces.iter().enumerate().skip(1).rev() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
-            if k < claims.caller {
+            if k < claims.mine {
                 break;
             }
-            claims.helper = claims.helper.min(k);
+            claims.theirs = claims.theirs.min(k);
         }
         let arena = Arena::new(options.strict, false);
         let done = read_piece(text, &mut buffer, options, (root, piece), arena, None).map(
