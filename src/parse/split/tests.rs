@@ -564,3 +564,38 @@ fn every_piece_cut_at_the_found_items_can_be_taken() {
         assert!(done.is_some(), "piece {i} at {at}: {}", &text_of[at.saturating_sub(40)..at]);
     }
 }
+
+/// A large file from its path, with a byte-order mark and warnings in every piece, is read
+/// in pieces (the text the calling thread would read alone differs, and is not what the
+/// load gives) whose warnings and origins are placed as one thread reading the file places
+/// them.
+#[test]
+fn a_file_read_in_pieces_is_placed_as_one_thread_places_it() {
+    let body = |i: usize| {
+        let odd = if i % 3 == 0 { "\n      <Wind/>" } else { "" };
+        format!("    <Body Type=\"Static\">{odd}\n      <Position>{i} 0</Position>\n    </Body>\n")
+    };
+    let scene = |bodies: usize| {
+        let all: String = (0..bodies).map(body).collect();
+        format!(
+            "\u{FEFF}<World Version=\"1\">\n  <Shapes />\n  <Bodies>\n{all}  </Bodies>\n</World>\n"
+        )
+    };
+    let (mine, theirs) = (scene(20_000), scene(20_001));
+    let dir = std::env::temp_dir();
+    let file = |name: &str| dir.join(format!("box2scene-split-{name}-{}.xml", std::process::id()));
+    let (mine_file, theirs_file) = (file("mine"), file("theirs"));
+    std::fs::write(&mine_file, &mine).unwrap();
+    std::fs::write(&theirs_file, &theirs).unwrap();
+    let options = LoadOptions::default();
+    let one = LoadOptions { threads: 1, ..options };
+    let expected = shown(read_whole(Source::path(&theirs_file, &one).unwrap(), &one, false).0);
+    assert!(expected.contains("UnknownElement"), "{}", &expected[..200]);
+    let source = Source::path(&mine_file, &options).unwrap();
+    let len = theirs.len() - 3;
+    let text = Shared::File { file: std::fs::File::open(&theirs_file).unwrap(), bom: 3, len };
+    let got = shown(read(source, text, &options, None).0);
+    std::fs::remove_file(&mine_file).unwrap();
+    std::fs::remove_file(&theirs_file).unwrap();
+    assert_same(&got, &expected, format_args!("a file read in pieces"));
+}
