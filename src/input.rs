@@ -12,12 +12,16 @@
 
 use std::borrow::Cow;
 use std::fs::File;
-use std::io::{Read, Seek, SeekFrom};
+use std::io::Read;
 use std::path::Path;
 
 use crate::bytes::first_non_char;
+
+mod shared;
+
 use crate::error::{Code, Error, Finding, Position};
 use crate::options::LoadOptions;
+pub use shared::Shared;
 
 /// How the file's bytes were encoded.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -40,10 +44,14 @@ pub struct Source<'a> {
     text: Cow<'a, str>,
     base: usize,
     /// A text that is borrowed (in memory, or a piece read into a reader's buffer): all of
-    /// it from `base` on, of which `text` is what lies before `limit` and `checked`.
+    /// it from `base` on, of which `text` is what lies before `checked`.
     whole: Option<&'a str>,
-    /// The text at hand goes no further than this offset, for now (see [`Source::end_at`]).
-    limit: usize,
+    /// Whether the text stays at hand once read (see [`Source::is_whole`]): not a piece of a
+    /// file read into a buffer that the next piece reuses.
+    stays: bool,
+    /// Whether the text ends before the file does, where a piece of it ends (see
+    /// [`Source::ends_early`]).
+    ends_early: bool,
     /// How far a text in memory was checked for characters XML does not allow: it is
     /// checked as it is read, a chunk at a time, by the reader that reads it (see
     /// [`Source::more`]), so that each of two threads checks what it reads.
@@ -143,17 +151,18 @@ impl<'a> Source<'a> {
         Ok(Source::holding(text, 0, stop, encoding))
     }
 
-    /// Where a second reader may read pieces of this text: a UTF-8 text in memory that is
-    /// valid to its end, or a UTF-8 file being read (through a second handle on it).
-    pub fn pieces(&self) -> Option<Pieces<'a>> {
+    /// The whole text, any piece of which a reader of its own may read: a UTF-8 text in
+    /// memory that is valid to its end, or a UTF-8 file being read (through a second handle
+    /// on it). None for any other.
+    pub fn shared(&self) -> Option<Shared<'a>> {
         match (self.whole, &self.stop, &self.file) {
             (Some(text), None, None) => {
                 let bom = matches!(self.encoding, Encoding::Utf8 { bom: true });
-                Some(Pieces::Memory { text, bom })
+                Some(Shared::Memory { text, bom })
             }
             (_, None, Some(Stream { file: Reader::File(file), len: Some(len), bom, .. })) => {
-                Some(Pieces::File {
-                    file: second_handle(file)?,
+                Some(Shared::File {
+                    file: shared::second_handle(file)?,
                     bom: *bom,
                     len: usize::try_from(len.checked_sub(*bom)?).ok()?,
                 })
@@ -248,27 +257,19 @@ impl<'a> Source<'a> {
             Cow::Borrowed(text) => Some(text),
             Cow::Owned(_) => None,
         };
-        let (file, origin, limit, checked) = (None, Origin::Memory, usize::MAX, usize::MAX);
-        Source { text, base, whole, limit, checked, file, stop, encoding, origin }
+        let (file, origin, checked) = (None, Origin::Memory, usize::MAX);
+        let (stays, ends_early) = (true, false);
+        Source { text, base, whole, stays, ends_early, checked, file, stop, encoding, origin }
     }
 
     pub fn encoding(&self) -> Encoding {
         self.encoding
     }
 
-    /// Makes the text at hand go no further than offset `limit` (a character boundary),
-    /// until it is set again: a reader reading to there finds the text at hand ending
-    /// there, and [`Source::more`] gives nothing past it. A text at hand that reaches past
-    /// `limit` already is left as it is.
-    pub fn end_at(&mut self, limit: usize) {
-        self.limit = limit;
-        self.cut_whole();
-    }
-
-    /// A text in memory at hand up to the limit, or to where it is checked.
+    /// A text in memory at hand up to where it is checked.
     fn cut_whole(&mut self) {
         if let Some(whole) = self.whole {
-            let cut = self.limit.min(self.checked).checked_sub(self.base);
+            let cut = self.checked.checked_sub(self.base);
             self.text = Cow::Borrowed(cut.and_then(|cut| whole.get(..cut)).unwrap_or(whole));
         }
     }
@@ -307,15 +308,8 @@ impl<'a> Source<'a> {
     /// The file's bytes are read into the very buffer of the text, after what is kept; a
     /// byte is moved again only while it is kept, to the front when half the text can go.
     pub fn more(&mut self, keep: usize) -> bool {
-        let end = self.end();
         let Some(stream) = &mut self.file else {
             return self.check_on(keep);
-        };
-        // Up to the limit, when it lies ahead.
-        let room = match self.limit.checked_sub(end) {
-            Some(0) => return false,
-            Some(room) => room,
-            None => usize::MAX,
         };
         let mut bytes = std::mem::take(self.text.to_mut()).into_bytes();
         let drop = keep.saturating_sub(self.base).min(bytes.len());
@@ -327,7 +321,7 @@ impl<'a> Source<'a> {
         let end = self.base + kept;
         // At least as much as is kept, so that a long node that holds the text is checked
         // again at most as many times over as it is long.
-        let read = stream.read_onto(&mut bytes, CHUNK.max(kept).min(room));
+        let read = stream.read_onto(&mut bytes, CHUNK.max(kept));
         let stop = match read {
             Ok(last) => {
                 self.take_read(bytes, kept, last);
@@ -347,7 +341,7 @@ impl<'a> Source<'a> {
         false
     }
 
-    /// Checks more of a text in memory, up to the limit, for characters XML does not
+    /// Checks more of a text in memory for characters XML does not
     /// allow: at least a chunk, and at least as much as is kept from `keep` on (as
     /// [`Source::more`] reads a file). The text at hand stops before the first one found,
     /// for that reason. Returns false when no more text came to hand.
@@ -356,7 +350,7 @@ impl<'a> Source<'a> {
             return false;
         };
         let (from, end) = (self.checked, self.end());
-        if from >= whole.len() || from >= self.limit {
+        if from >= whole.len() {
             return false;
         }
         let mut to = from.saturating_add(CHUNK.max(from.saturating_sub(keep))).min(whole.len());
@@ -372,29 +366,6 @@ impl<'a> Source<'a> {
         };
         self.cut_whole();
         self.end() > end
-    }
-
-    /// Goes on reading at `offset`, past the text at hand, as if what lies between had
-    /// been read (another reader read it, and checked it); false when a file cannot be
-    /// read on from there.
-    pub fn skip_to(&mut self, offset: usize) -> bool {
-        let end = self.end();
-        let Some(stream) = &mut self.file else {
-            if self.whole.is_some() {
-                self.checked = self.checked.max(offset);
-                self.cut_whole();
-            }
-            return true;
-        };
-        let at = stream.bom + offset as u64;
-        let Reader::File(file) = &mut stream.file else { return false };
-        if offset < end || file.seek(SeekFrom::Start(at)).is_err() {
-            return false;
-        }
-        stream.read = at;
-        self.text.to_mut().clear();
-        self.base = offset;
-        true
     }
 
     /// [`Source::take_in`] of the bytes just read from the file, or of those of them within
@@ -440,119 +411,17 @@ impl<'a> Source<'a> {
         }
     }
 
-    /// Whether all the text is at hand, from its start (and so stays at hand).
+    /// Whether all the text is at hand, from its start, and stays so: what a reader finds
+    /// in it can be placed once the reading is done.
     pub fn is_whole(&self) -> bool {
-        self.base == 0 && self.file.is_none()
-    }
-}
-
-/// The text of a file as a second reader reads it: whole in memory, or a piece at a time
-/// from the file that is being read, through a handle of its own.
-pub enum Pieces<'a> {
-    /// A text in memory, and whether its file began with a byte-order mark (for positions).
-    Memory {
-        text: &'a str,
-        bom: bool,
-    },
-    File {
-        file: File,
-        bom: u64,
-        len: usize,
-    },
-}
-
-impl<'a> Pieces<'a> {
-    /// The length of the text.
-    pub fn len(&self) -> usize {
-        match self {
-            Pieces::Memory { text, .. } => text.len(),
-            Pieces::File { len, .. } => *len,
-        }
+        self.base == 0 && self.file.is_none() && self.stays
     }
 
-    /// The bytes of the text from `from` to `to` (within it), which may cut a character: a
-    /// file's read into `buffer`, which they borrow (see [`Pieces::source`]).
-    pub fn bytes<'s>(
-        &'s self,
-        from: usize,
-        to: usize,
-        buffer: &'s mut Vec<u8>,
-    ) -> Option<&'s [u8]> {
-        match self {
-            Pieces::Memory { text, .. } => text.as_bytes().get(from..to),
-            Pieces::File { .. } => {
-                self.read_into(from, to, buffer)?;
-                Some(buffer)
-            }
-        }
+    /// Whether the text ends before the file does: the text of a piece, which ends before
+    /// an item (see [`Shared::source`]).
+    pub fn ends_early(&self) -> bool {
+        self.ends_early
     }
-
-    /// A source that holds the text from `from` to `to`, at its offsets in the whole (a text
-    /// in memory, all of it up to `to`; a piece of a file, read into `buffer`, which it
-    /// borrows); None unless that is all text (valid UTF-8, only characters XML allows).
-    ///
-    /// One buffer serves all the pieces a reader reads, so that no block the size of a
-    /// piece is let go after each: glibc would take that as a sign to serve every block up
-    /// to that size from its heaps, where the blocks of a load let go stay resident (a fifth
-    /// more at the peak of a 100 MB load from a path).
-    pub fn source<'s>(
-        &'s self,
-        from: usize,
-        to: usize,
-        buffer: &'s mut Vec<u8>,
-    ) -> Option<Source<'s>> {
-        let (text, base, encoding) = match self {
-            // Checked here, as the reader of a text in memory checks what it reads.
-            Pieces::Memory { text, bom } => {
-                if first_non_char(text.as_bytes().get(from..to)?).is_some() {
-                    return None;
-                }
-                (text.get(..to)?, 0, Encoding::Utf8 { bom: *bom })
-            }
-            Pieces::File { bom, .. } => {
-                self.read_into(from, to, buffer)?;
-                let text = utf8(buffer).ok()?;
-                if first_non_char(text.as_bytes()).is_some() {
-                    return None;
-                }
-                (text, from, Encoding::Utf8 { bom: *bom > 0 })
-            }
-        };
-        // A piece is read whole: it has no file to read on from.
-        Some(Source::holding(Cow::Borrowed(text), base, None, encoding))
-    }
-
-    /// Reads the bytes of a file's text from `from` to `to` into `buffer`, in place of what
-    /// it held (only what it grows by is zeroed first: the read writes every byte).
-    fn read_into(&self, from: usize, to: usize, buffer: &mut Vec<u8>) -> Option<()> {
-        let Pieces::File { file, bom, .. } = self else { return None };
-        buffer.resize(to.checked_sub(from)?, 0);
-        read_exact_at(file, buffer, bom + from as u64).ok()
-    }
-}
-
-/// A second handle on `file`, for the second thread: the very file the first reads (not
-/// one opened anew by its path, which may have been replaced since), read at offsets of
-/// its own that leave the first handle's position alone. Unix's positional reads promise
-/// that; elsewhere a file is read on one thread.
-#[cfg(unix)]
-fn second_handle(file: &File) -> Option<File> {
-    file.try_clone().ok()
-}
-
-#[cfg(not(unix))]
-fn second_handle(_: &File) -> Option<File> {
-    None
-}
-
-#[cfg(unix)]
-fn read_exact_at(file: &File, bytes: &mut [u8], offset: u64) -> std::io::Result<()> {
-    std::os::unix::fs::FileExt::read_exact_at(file, bytes, offset)
-}
-
-#[cfg(not(unix))]
-fn read_exact_at(_: &File, _: &mut [u8], _: u64) -> std::io::Result<()> {
-    Err(std::io::ErrorKind::Unsupported.into())
 }
 
 /// How many bytes the character that `bytes` ends with lacks: none when they end with a

@@ -1,4 +1,4 @@
-use super::{CHUNK, Pieces, Source};
+use super::{CHUNK, Shared, Source};
 use crate::error::Code;
 use crate::options::LoadOptions;
 
@@ -56,7 +56,7 @@ fn a_text_in_memory_is_checked_as_it_is_read() {
     let mut bytes = text.into_bytes();
     bytes[2 * CHUNK] = 0x0B;
     let source = Source::memory(&bytes, &options).unwrap();
-    let pieces = source.pieces().expect("a text in memory has pieces");
+    let pieces = source.shared().expect("a text in memory is shared");
     let mut buffer = Vec::new();
     assert!(pieces.source(CHUNK, 2 * CHUNK, &mut buffer).is_some());
     assert!(pieces.source(2 * CHUNK, 3 * CHUNK, &mut buffer).is_none());
@@ -79,8 +79,8 @@ fn pieces_of_a_file_come_from_the_file_opened_not_its_path() {
     let options = LoadOptions::default();
     let source = Source::path(&path, &options).unwrap();
     std::fs::rename(&other, &path).unwrap();
-    let Some(pieces @ Pieces::File { .. }) = source.pieces() else {
-        panic!("a UTF-8 file being read has pieces")
+    let Some(pieces @ Shared::File { .. }) = source.shared() else {
+        panic!("a UTF-8 file being read is shared")
     };
     assert_eq!(pieces.len(), text("a").len());
     assert_eq!(pieces.bytes(150_000, 150_004, &mut Vec::new()).unwrap(), b"aaaa");

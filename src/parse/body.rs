@@ -1,8 +1,8 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Element, Reader, Reading, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
 use crate::arena::Pair;
-use crate::error::{Code, problem};
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{Body, BodyKind, MassData, Object, Range};
 
 elements! {
@@ -34,7 +34,7 @@ elements! {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn body(&mut self, tag: &Tag) -> Reading<()> {
+    pub(super) fn body(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Body(self.arena.scene.bodies.len() as u32));
         let origin = self.spot(tag.at);
         let mut body = Body::new(self.body_type(tag)?);
@@ -49,7 +49,7 @@ impl<'a> Reader<'a> {
                 return Err(self.tok.duplicate_container(tag, &child));
             }
             if let Some(problem) = self.layout_mismatch(&child, name) {
-                return Err(problem.into());
+                return Err(problem);
             }
             if repeated {
                 self.duplicate(tag, &child)?;
@@ -108,7 +108,7 @@ impl<'a> Reader<'a> {
 
     /// Version 3: `<Pair FixtureId="f" ShapeId="s"/>` children, made into fixtures once the
     /// whole file is read. Both are positions in their containers.
-    fn bindings(&mut self, tag: &Tag) -> Reading<()> {
+    fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
             let attrs = p.tok.attributes(pair)?;
@@ -128,7 +128,7 @@ impl<'a> Reader<'a> {
         })
     }
 
-    fn body_type(&mut self, tag: &Tag) -> Reading<BodyKind> {
+    fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] =
             if self.arena.id_is_informational() { &["Type", "Id"] } else { &["Type"] };
@@ -160,7 +160,7 @@ impl<'a> Reader<'a> {
         self.recovered(kind, BodyKind::Static)
     }
 
-    fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Reading<()> {
+    fn mass_data(&mut self, tag: &Tag, mass: &mut MassData) -> Parsed<()> {
         let mut seen = Seen::default();
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
@@ -187,7 +187,7 @@ impl<'a> Reader<'a> {
 
     /// A body's `<Fixtures>`: `ID` children, checked against the fixtures after the whole
     /// file is read.
-    fn fixture_ids(&mut self, tag: &Tag) -> Reading<Range> {
+    fn fixture_ids(&mut self, tag: &Tag) -> Parsed<Range> {
         let first = self.arena.scene.fixture_ids.len();
         self.items(tag, "ID", |p, id| {
             let (index, at) = p.id(id)?;

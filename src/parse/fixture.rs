@@ -1,6 +1,7 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Element, Reader, Reading, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
+use crate::error::Parsed;
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
 
@@ -23,7 +24,7 @@ elements! {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn fixture(&mut self, tag: &Tag) -> Reading<()> {
+    pub(super) fn fixture(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["Id"] } else { &[] };
@@ -91,7 +92,7 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
-    fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Reading<()> {
+    fn filter(&mut self, tag: &Tag, filter: &mut Filter) -> Parsed<()> {
         let mut seen = Seen::default();
         let mut child = Tag::slot();
         while self.tok.child(tag, &mut child)? {
@@ -116,7 +117,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Collision bits, all 32 kept.
-    fn bits(&mut self, tag: &Tag) -> Reading<u32> {
+    fn bits(&mut self, tag: &Tag) -> Parsed<u32> {
         Ok(self.value(tag, text::bits)?.0)
     }
 }

@@ -1,9 +1,9 @@
 //! `<Joint Type="...">`: the common fields, then the kind-specific ones, which the model's
 //! table of joint elements says each kind has, where they go and what they may hold.
 
-use super::{Element as _, Reader, Reading, Seen, Tag, elements};
+use super::{Element as _, Reader, Seen, Tag, elements};
 use crate::arena::JointOrigin;
-use crate::error::{Code, problem};
+use crate::error::{Code, Parsed, problem};
 use crate::rules;
 use crate::scene::joints::{self, Element, Slot, Value};
 use crate::scene::{Joint, JointKind, KeptAt, NONE, Object};
@@ -128,7 +128,7 @@ struct Refs {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn joint(&mut self, tag: &Tag) -> Reading<()> {
+    pub(super) fn joint(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Joint(self.arena.scene.joints.len() as u32));
         let kind = self.joint_type(tag)?;
         if kind == JointKind::Unsupported {
@@ -254,7 +254,7 @@ impl<'a> Reader<'a> {
         joint: &mut Joint,
         seen: &Seen,
         line_only: &[(Value, usize, &str)],
-    ) -> Reading<()> {
+    ) -> Parsed<()> {
         let mut wheel = Joint::new(JointKind::Wheel);
         joint.kind = JointKind::Wheel as u32;
         self.arena.origins.signs.farseer_3_3 = true;
@@ -281,7 +281,7 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
-    fn joint_type(&mut self, tag: &Tag) -> Reading<JointKind> {
+    fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
         let attrs = self.tok.attributes(tag)?;
         self.unknown_attributes(tag, &attrs, &["Type"])?;
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
@@ -317,7 +317,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The rules one joint can break on its own (cross references come later).
-    fn check_joint(&mut self, tag: &Tag, joint: &Joint, at: &Refs) -> Reading<()> {
+    fn check_joint(&mut self, tag: &Tag, joint: &Joint, at: &Refs) -> Parsed<()> {
         let legacy = self.arena.version == 0;
         for (index, name, legacy_name) in
             [(joint.body_a, "BodyA", "JointA"), (joint.body_b, "BodyB", "JointB")]

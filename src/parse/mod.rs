@@ -5,12 +5,12 @@
 //! and columns before their text goes.
 #![forbid(unsafe_code)]
 
-mod ahead;
 mod body;
 mod fixture;
 mod joint;
 mod names;
 mod shape;
+mod split;
 mod tokenizer;
 mod user_data;
 mod world;
@@ -28,14 +28,18 @@ use crate::place::{Placer, Spot};
 use crate::rules;
 use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
-use tokenizer::{Attr, Node, Reading, Tag, Text, Tokenizer, verbatim};
+use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
 
-/// Reads the whole document into an arena, on two threads when [`ahead`] finds the text
-/// worth it. What it finds is placed at its line and column as it reads, or by the
+/// Reads the whole document into an arena, in pieces on two threads when [`split`] finds
+/// the text worth it. What it finds is placed at its line and column as it reads, or by the
 /// [`Placer`] it gives back when the text stays in memory. A read that goes on past errors
 /// (`recovering`, on one thread) keeps those it went on past (see [`Read`]).
 pub(crate) fn read<'a>(source: Source<'a>, options: &'a LoadOptions, recovering: bool) -> Read<'a> {
-    read_split(source, options, recovering, None)
+    debug_assert!(!recovering || options.threads == 1, "a read that goes on is one thread's");
+    match split::shared(&source, options) {
+        Some(text) => split::read(source, text, options, None),
+        None => read_whole(source, options, recovering),
+    }
 }
 
 /// What [`read`] gives: the arena (holding the errors the read went on past) or what a read
@@ -49,31 +53,19 @@ pub(crate) struct Stopped {
     pub warnings: Vec<Finding>,
 }
 
-/// [`read`], with the pieces and the helper's first one forced by `split` (for tests).
-fn read_split<'a>(
-    source: Source<'a>,
-    options: &'a LoadOptions,
-    recovering: bool,
-    split: Option<(Vec<ahead::Boundary>, usize)>,
-) -> Read<'a> {
-    debug_assert!(!recovering || options.threads == 1, "a read that goes on is one thread's");
-    let helped = ahead::helped(&source, options, &split);
+/// [`read`] of the whole text by one reader, on the calling thread.
+fn read_whole<'a>(source: Source<'a>, options: &'a LoadOptions, recovering: bool) -> Read<'a> {
     let mut reader = Reader::new(Tokenizer::new(source, options), recovering);
-    let read = match helped {
-        None => reader.whole(),
-        Some(pieces) => std::thread::scope(|scope| {
-            ahead::read(&mut reader, ahead::start(scope, pieces, options, split))
-        }),
-    };
+    let read = reader.whole();
     let Reader { mut tok, mut arena, .. } = reader;
     let read = match read {
         Ok(()) => {
             arena.scene.pool_kept_text(|from, to| tok.slice(from, to));
             Ok(arena)
         }
-        Err(halt) => {
+        Err(problem) => {
             let mut errors = arena.findings.take_errors();
-            errors.push(tok.place(*halt.into_problem()));
+            errors.push(tok.place(*problem));
             Err(Stopped { errors, warnings: arena.findings.take_warnings() })
         }
     };
@@ -111,27 +103,33 @@ struct Reader<'a> {
 impl<'a> Reader<'a> {
     fn new(tok: Tokenizer<'a>, recovering: bool) -> Reader<'a> {
         let arena = Arena::new(tok.options().strict, recovering);
-        Reader { tok, arena, object: Object::World, within: "", for_writer: !recovering }
+        Reader { for_writer: !recovering, ..Reader::with_arena(tok, arena) }
     }
 
-    /// The whole document, on the calling thread alone.
-    fn whole(&mut self) -> Reading<()> {
+    /// A reader that goes on filling `arena`, which a read that stops at its first error
+    /// began.
+    fn with_arena(tok: Tokenizer<'a>, arena: Arena) -> Reader<'a> {
+        Reader { tok, arena, object: Object::World, within: "", for_writer: true }
+    }
+
+    /// The whole document.
+    fn whole(&mut self) -> Parsed<()> {
         let mut seen = Seen::default();
         self.document(&mut seen)?;
-        self.end_world(&seen)?;
+        world::end_world(&mut self.arena, &seen)?;
         self.epilog()
     }
 
     /// An error the reading can go on past (see [`crate::arena::Findings::recover`]), placed
     /// at its line and column while its text is at hand.
-    pub fn recover(&mut self, error: Finding) -> Reading<()> {
+    pub fn recover(&mut self, error: Finding) -> Parsed<()> {
         let error = self.tok.place(error);
-        Ok(self.arena.findings.recover(Box::new(error))?)
+        self.arena.findings.recover(Box::new(error))
     }
 
     /// What `checked` gives, or `otherwise` after its error when the reading goes on past
     /// it (see [`Reader::recover`]): for a check of a value already read.
-    pub fn recovered<T>(&mut self, checked: Parsed<T>, otherwise: T) -> Reading<T> {
+    pub fn recovered<T>(&mut self, checked: Parsed<T>, otherwise: T) -> Parsed<T> {
         match checked {
             Ok(value) => Ok(value),
             Err(error) => self.recover(*error).map(|()| otherwise),
@@ -146,7 +144,7 @@ impl<'a> Reader<'a> {
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Reading<(T, usize)> {
+    ) -> Parsed<(T, usize)> {
         match self.tok.parsed(tag, convert)? {
             Ok(value) => Ok(value),
             Err(error) => {
@@ -156,20 +154,20 @@ impl<'a> Reader<'a> {
         }
     }
 
-    pub fn float(&mut self, tag: &Tag) -> Reading<f32> {
+    pub fn float(&mut self, tag: &Tag) -> Parsed<f32> {
         Ok(self.value(tag, text::float)?.0)
     }
 
-    pub fn vector(&mut self, tag: &Tag) -> Reading<crate::scene::Vec2> {
+    pub fn vector(&mut self, tag: &Tag) -> Parsed<crate::scene::Vec2> {
         Ok(self.value(tag, text::vector2)?.0)
     }
 
-    pub fn boolean(&mut self, tag: &Tag) -> Reading<bool> {
+    pub fn boolean(&mut self, tag: &Tag) -> Parsed<bool> {
         Ok(self.value(tag, text::boolean)?.0)
     }
 
     /// An ID value and its offset.
-    pub fn id(&mut self, tag: &Tag) -> Reading<(u32, usize)> {
+    pub fn id(&mut self, tag: &Tag) -> Parsed<(u32, usize)> {
         self.value(tag, text::id)
     }
 
@@ -181,21 +179,21 @@ impl<'a> Reader<'a> {
         code: Code,
         at: usize,
         words: impl FnOnce() -> W,
-    ) -> Reading<()> {
+    ) -> Parsed<()> {
         let warning = self.tok.place(Finding::new(code, at, String::new()));
-        Ok(self.arena.findings.note_worded(warning, || words().into())?)
+        self.arena.findings.note_worded(warning, || words().into())
     }
 
     /// Records `warning`, placed at its line and column while its text is at hand (see
     /// [`Tokenizer::place`]).
-    pub fn note(&mut self, warning: Finding) -> Reading<()> {
+    pub fn note(&mut self, warning: Finding) -> Parsed<()> {
         let warning = self.tok.place(warning);
-        Ok(self.arena.findings.note(warning)?)
+        self.arena.findings.note(warning)
     }
 
     /// Warns that `what` needs Version 2 when the file says less (`what` is put in words
     /// only then).
-    pub fn newer_construct(&mut self, at: usize, what: impl std::fmt::Display) -> Reading<()> {
+    pub fn newer_construct(&mut self, at: usize, what: impl std::fmt::Display) -> Parsed<()> {
         if self.arena.version >= 2 {
             return Ok(());
         }
@@ -217,7 +215,7 @@ impl<'a> Reader<'a> {
     /// A float that must not be negative (error `negative-value`).
     /// An angle in radians, warned about where it reads as degrees
     /// ([`rules::angle_in_degrees`]).
-    pub fn radians(&mut self, tag: &Tag) -> Reading<f32> {
+    pub fn radians(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.value(tag, text::float)?;
         if let Some(warning) = rules::angle_in_degrees(&tag.name, v, at) {
             self.note(warning)?;
@@ -225,14 +223,14 @@ impl<'a> Reader<'a> {
         Ok(v)
     }
 
-    pub fn non_negative(&mut self, tag: &Tag) -> Reading<f32> {
+    pub fn non_negative(&mut self, tag: &Tag) -> Parsed<f32> {
         let (v, at) = self.value(tag, text::float)?;
         let checked = rules::not_negative(format_args!("<{}>", tag.name), v, at);
         self.recovered(checked, 0.0)
     }
 
     /// A string value, stored in the scene's string pool.
-    pub fn string(&mut self, tag: &Tag) -> Reading<PoolStr> {
+    pub fn string(&mut self, tag: &Tag) -> Parsed<PoolStr> {
         let value = self.tok.value(tag)?;
         Ok(self.arena.scene.add_str(self.tok.text_of(&value.text)))
     }
@@ -240,7 +238,7 @@ impl<'a> Reader<'a> {
     /// Warns about every attribute of `tag` except those named in `known` (in any case), with
     /// the nearest known name as a hint, and keeps them for the start tag of the object
     /// being read.
-    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Reading<()> {
+    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
         for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
             self.warn(Code::UnknownElement, attr.at, || {
                 let hint = did_you_mean(attr.key, known);
@@ -255,7 +253,7 @@ impl<'a> Reader<'a> {
 
     /// Warns that `child` is not part of `parent`, with the nearest of `parent`'s `known`
     /// elements as a hint, and skips it (see [`Reader::ignore`]).
-    pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Reading<()> {
+    pub fn unknown(&mut self, parent: &Tag, child: &Tag, known: &[&str]) -> Parsed<()> {
         self.ignore(child, || {
             let hint = match names::nearest(child.name(), known) {
                 Some(near) => format!(" (did you mean <{near}>?)"),
@@ -267,7 +265,7 @@ impl<'a> Reader<'a> {
 
     /// Warns (`unknown-element`, in the words `words` give) and skips `child`, keeping its
     /// text for the writer at the end of where it was.
-    pub fn ignore(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Reading<()> {
+    pub fn ignore(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Parsed<()> {
         self.discard(child, words)?;
         let place = KeptAt::Inside { within: self.within, before: "" };
         self.keep(self.object, place, child.at, self.tok.position());
@@ -276,7 +274,7 @@ impl<'a> Reader<'a> {
 
     /// Warns (`unknown-element`, in the words `words` give) and skips `child`, comments
     /// inside it included, keeping nothing: for what the writer writes in another form.
-    pub fn discard(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Reading<()> {
+    pub fn discard(&mut self, child: &Tag, words: impl FnOnce() -> String) -> Parsed<()> {
         self.warn(Code::UnknownElement, child.at, words)?;
         self.tok.check_attributes(child)?;
         self.tok.kept.pin(child.at);
@@ -391,8 +389,8 @@ impl<'a> Reader<'a> {
     pub fn within<T>(
         &mut self,
         within: &'static str,
-        read: impl FnOnce(&mut Self) -> Reading<T>,
-    ) -> Reading<T> {
+        read: impl FnOnce(&mut Self) -> Parsed<T>,
+    ) -> Parsed<T> {
         self.within = within;
         let read = read(self);
         self.place_comments(self.object, KeptAt::Inside { within, before: "" });
@@ -409,7 +407,7 @@ impl<'a> Reader<'a> {
         parent: &Tag,
         child: &Tag,
         seen: &mut Seen,
-    ) -> Reading<Option<(E, bool)>> {
+    ) -> Parsed<Option<(E, bool)>> {
         let found = E::NAMES.find(child.name.key());
         if self.tok.kept.has_comments() {
             let before = found.map_or("", |index| E::ALL[index].name());
@@ -428,7 +426,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Warns that a scalar element was repeated (the last one wins).
-    pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Reading<()> {
+    pub fn duplicate(&mut self, parent: &Tag, child: &Tag) -> Parsed<()> {
         self.warn(Code::DuplicateElement, child.at, || {
             format!("<{}> appears twice in <{}>; the last one wins", child.name(), parent.name())
         })
@@ -440,8 +438,8 @@ impl<'a> Reader<'a> {
         &mut self,
         container: &Tag,
         item: &str,
-        mut each: impl FnMut(&mut Self, &Tag) -> Reading<()>,
-    ) -> Reading<()> {
+        mut each: impl FnMut(&mut Self, &Tag) -> Parsed<()>,
+    ) -> Parsed<()> {
         let key = names::key(item);
         let mut child = Tag::slot();
         while self.tok.child(container, &mut child)? {

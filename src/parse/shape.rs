@@ -1,7 +1,7 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Element, Reader, Reading, Seen, Tag, elements};
-use crate::error::{Code, problem};
+use super::{Element, Reader, Seen, Tag, elements};
+use crate::error::{Code, Parsed, problem};
 use crate::rules;
 use crate::scene::{Object, PoolStr, Range, Shape, ShapeKind, Vec2};
 
@@ -40,7 +40,7 @@ fn belongs(kind: ShapeKind, name: ShapeChild) -> bool {
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn shape(&mut self, tag: &Tag) -> Reading<()> {
+    pub(super) fn shape(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Shape(self.arena.scene.shapes.len() as u32));
         let (mut shape, mut name_str) = self.shape_type(tag)?;
         let kind = shape.kind().expect("shape_type sets a known kind");
@@ -132,7 +132,7 @@ impl<'a> Reader<'a> {
 
     /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
     /// the `Density` of the fixtures made with it).
-    fn shape_type(&mut self, tag: &Tag) -> Reading<(Shape, Option<PoolStr>)> {
+    fn shape_type(&mut self, tag: &Tag) -> Parsed<(Shape, Option<PoolStr>)> {
         let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.farseer_layout() {
             &["Type", "Name", "Density"]
@@ -189,7 +189,7 @@ impl<'a> Reader<'a> {
     }
 
     /// `<Vertices>` of a polygon (at most 8) or a chain (at most the chain limit).
-    fn vertices(&mut self, tag: &Tag, kind: ShapeKind) -> Reading<Range> {
+    fn vertices(&mut self, tag: &Tag, kind: ShapeKind) -> Parsed<Range> {
         let first = self.arena.scene.vertices.len();
         let most = match kind {
             ShapeKind::Polygon => rules::MAX_POLYGON_VERTICES,
@@ -213,7 +213,7 @@ impl<'a> Reader<'a> {
         Ok(Range::between(first, self.arena.scene.vertices.len()))
     }
 
-    fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Reading<()> {
+    fn check_geometry(&mut self, tag: &Tag, shape: &Shape) -> Parsed<()> {
         let vertices = &self.arena.scene.vertices[shape.vertices.indices()];
         let checked = match shape.kind() {
             Some(ShapeKind::Polygon) => rules::polygon(vertices, tag.at),

@@ -1,7 +1,7 @@
 //! `<UserData>`: kept verbatim, never interpreted, plus the type name and value text when
 //! it has the editor's form `<Type>T</Type><Value><x>V</x></Value>` (docs/format.md, "UserData").
 
-use super::{Node, Reader, Reading, Tag, Tokenizer, trim_xml};
+use super::{Node, Reader, Tag, Tokenizer, trim_xml};
 use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
@@ -26,7 +26,7 @@ pub(crate) fn user_data_fragment(
     let source = Source::memory(document.as_bytes(), &options)
         .map_err(|e| problem::<Problem>(e.code, 0, e.message))?;
     let mut tok = Tokenizer::new(source, &options);
-    let read = |tok: &mut Tokenizer| -> Reading<EditorForm> {
+    let read = |tok: &mut Tokenizer| -> Parsed<EditorForm> {
         let Node::Open(tag) = tok.next_node()? else {
             unreachable!("the document starts with <UserData>")
         };
@@ -36,8 +36,7 @@ pub(crate) fn user_data_fragment(
             _ => Err(problem(Code::MalformedXml, 0, "closes <UserData> early")),
         }
     };
-    let form = read(&mut tok).map_err(|halt| -> Problem {
-        let p = halt.into_problem();
+    let form = read(&mut tok).map_err(|p| -> Problem {
         problem(p.code, 0, format!("the UserData is not well-formed XML content: {}", p.message))
     })?;
     Ok(form.texts())
@@ -89,13 +88,13 @@ enum Inside {
 
 impl<'a> Reader<'a> {
     /// [`Reader::user_data`] of Aether.Physics2D's `<Tag>`.
-    pub(super) fn tagged_user_data(&mut self, tag: &Tag) -> Reading<u32> {
+    pub(super) fn tagged_user_data(&mut self, tag: &Tag) -> Parsed<u32> {
         self.arena.origins.signs.tags = true;
         self.user_data(tag)
     }
 
     /// Stores the user data of `tag` and returns its index.
-    pub(super) fn user_data(&mut self, tag: &Tag) -> Reading<u32> {
+    pub(super) fn user_data(&mut self, tag: &Tag) -> Parsed<u32> {
         let (raw, form) = match tag.empty {
             true => (String::new(), EditorForm::default()),
             false => walk_user_data(&mut self.tok, tag)?,
@@ -110,7 +109,7 @@ impl<'a> Reader<'a> {
 }
 
 /// Reads to the end of `tag`; returns its inner XML and what it saw of the editor's form.
-fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Reading<(String, EditorForm)> {
+fn walk_user_data(tok: &mut Tokenizer, tag: &Tag) -> Parsed<(String, EditorForm)> {
     let at = tok.position();
     tok.kept.pin(at);
     let mut form = EditorForm::default();

@@ -1,8 +1,9 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Element, Reader, Reading, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, elements};
+use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, problem};
+use crate::error::{Code, Parsed, problem};
 use crate::scene::{KeptAt, Object};
 
 elements! {
@@ -25,7 +26,7 @@ impl WorldChild {
 impl<'a> Reader<'a> {
     /// The document from its start to `</World>`: prolog and world. `seen` gets the world's
     /// elements read; [`Reader::end_world`] and [`Reader::epilog`] end the reading.
-    pub(super) fn document(&mut self, seen: &mut Seen) -> Reading<()> {
+    pub(super) fn document(&mut self, seen: &mut Seen) -> Parsed<()> {
         let root = self.root()?;
         self.place_comments(Object::World, KeptAt::Before);
         // Placed now: the warnings about the world come once the file is read.
@@ -43,27 +44,13 @@ impl<'a> Reader<'a> {
         (root, tag): (&Tag, &Tag),
         container: Container,
         seen: &mut Seen,
-    ) -> Reading<()> {
+    ) -> Parsed<()> {
         self.container(tag, container)?;
         self.world_children(root, seen)
     }
 
-    /// Once the world is read, with `seen` its elements: warns of each container it did not
-    /// have.
-    pub(super) fn end_world(&mut self, seen: &Seen) -> Reading<()> {
-        for container in Container::ALL {
-            if !seen.contains(WorldChild::of(container)) {
-                let missing =
-                    self.arena.origins.world.finding(Code::MissingContainer, String::new());
-                let words = || format!("the file has no <{}>; read as empty", container.name());
-                self.arena.findings.note_worded(missing, words)?;
-            }
-        }
-        Ok(())
-    }
-
     /// The prolog and the root's start tag, which must be `<World>`.
-    pub(super) fn root(&mut self) -> Reading<Tag> {
+    pub(super) fn root(&mut self) -> Parsed<Tag> {
         let root = loop {
             match self.tok.next_node()? {
                 super::Node::Open(tag) => break tag,
@@ -106,7 +93,7 @@ impl<'a> Reader<'a> {
 
     /// What follows `</World>`: blank text, comments and processing instructions only (once
     /// read, nothing).
-    pub(super) fn epilog(&mut self) -> Reading<()> {
+    pub(super) fn epilog(&mut self) -> Parsed<()> {
         // `</World>` lies between what was kept in the world and what is kept after it.
         self.tok.kept.release();
         loop {
@@ -138,7 +125,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The root's children up to `</World>`.
-    pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Reading<()> {
+    pub(super) fn world_children(&mut self, root: &Tag, seen: &mut Seen) -> Parsed<()> {
         let mut child = Tag::slot();
         while self.tok.child(root, &mut child)? {
             let Some((name, repeated)) = self.known::<WorldChild>(root, &child, seen)? else {
@@ -161,8 +148,8 @@ impl<'a> Reader<'a> {
     }
 
     /// The items of a container, to its end.
-    fn container(&mut self, tag: &Tag, name: Container) -> Reading<()> {
-        let each: fn(&mut Self, &Tag) -> Reading<()> = match name {
+    fn container(&mut self, tag: &Tag, name: Container) -> Parsed<()> {
+        let each: fn(&mut Self, &Tag) -> Parsed<()> = match name {
             Container::Shapes => Self::shape,
             Container::Fixtures => Self::fixture,
             Container::Bodies => Self::body,
@@ -173,7 +160,7 @@ impl<'a> Reader<'a> {
         Ok(())
     }
 
-    pub(super) fn read_version(&mut self, root: &Tag) -> Reading<()> {
+    pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
         let attrs = self.tok.attributes(root)?;
         self.unknown_attributes(root, &attrs, &["Version"])?;
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
@@ -200,6 +187,19 @@ impl<'a> Reader<'a> {
         self.arena.scene.version = self.arena.version;
         Ok(())
     }
+}
+
+/// Once the world is read into `arena`, with `seen` its elements: warns of each container it
+/// did not have.
+pub(super) fn end_world(arena: &mut Arena, seen: &Seen) -> Parsed<()> {
+    for container in Container::ALL {
+        if !seen.contains(WorldChild::of(container)) {
+            let missing = arena.origins.world.finding(Code::MissingContainer, String::new());
+            let words = || format!("the file has no <{}>; read as empty", container.name());
+            arena.findings.note_worded(missing, words)?;
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

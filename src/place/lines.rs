@@ -30,7 +30,8 @@ impl Cursor {
         Cursor { offset, line: 1, column: 1, units: 0, after_cr: false }
     }
 
-    /// The cursor at `offset` with `position`, as a piece read elsewhere ends there.
+    /// The cursor at `offset` of a UTF-8 text with `position`, as a piece read before it on
+    /// the same thread ends there, before the `<` of an item.
     pub fn at(offset: usize, position: Position) -> Cursor {
         let column = u64::from(position.column);
         Cursor { offset, line: position.line, column, units: 0, after_cr: false }

@@ -32,58 +32,85 @@ impl Step {
 
 /// Where something a later stage may report is: its position, placed while its text was
 /// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
-/// ever needs it. Both fit in a [`Position`]: an offset is kept as line 0.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Spot(Position);
+/// ever needs it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Spot {
+    Offset(usize),
+    Placed(Position),
+}
+
+impl Default for Spot {
+    fn default() -> Spot {
+        Spot::Offset(0)
+    }
+}
 
 impl Spot {
     /// Offset `at` of a text that stays in memory.
     pub const fn offset(at: usize) -> Spot {
-        Spot(Position { line: 0, column: 0, byte_offset: at as u64 })
+        Spot::Offset(at)
     }
 
     pub fn placed(position: Position) -> Spot {
-        Spot(position)
+        Spot::Placed(position)
     }
 
     /// This spot, counted from the start of a piece of the text, placed in the whole text
     /// where the piece begins at `start` (see [`Position::after`]); offsets are the whole
     /// text's already.
     pub fn after(self, start: Position) -> Spot {
-        match self.0.line {
-            0 => self,
-            _ => Spot(self.0.after(start)),
+        match self {
+            Spot::Offset(_) => self,
+            Spot::Placed(position) => Spot::Placed(position.after(start)),
         }
     }
 
-    /// This spot as a step from `before`, when a [`Step`] holds it. (Offsets differ by
-    /// less than 2^63: a text is at most `isize::MAX` bytes.)
+    /// The start of the text, as a spot of this one's kind: what the first spot of
+    /// [`Spots`] is a step from.
+    fn origin(self) -> Spot {
+        match self {
+            Spot::Offset(_) => Spot::Offset(0),
+            Spot::Placed(_) => Spot::Placed(Position::default()),
+        }
+    }
+
+    /// This spot as a step from `before`, of the same kind, when a [`Step`] holds it.
+    /// (Offsets differ by less than 2^63: a text is at most `isize::MAX` bytes.)
     #[inline]
     pub fn step_from(self, before: Spot) -> Option<Step> {
-        let (this, before) = (self.0, before.0);
-        let lines = i16::try_from(i64::from(this.line) - i64::from(before.line)).ok()?;
-        let bytes = this.byte_offset.wrapping_sub(before.byte_offset) as i64;
-        match (lines, u16::try_from(this.column), i32::try_from(bytes)) {
-            (Step::ASIDE, ..) | (_, Err(_), _) | (.., Err(_)) => None,
-            (lines, Ok(column), Ok(bytes)) => Some(Step { lines, column, bytes }),
+        let (lines, column, bytes) = match (self, before) {
+            (Spot::Offset(this), Spot::Offset(before)) => (0, 0, this.wrapping_sub(before) as u64),
+            (Spot::Placed(this), Spot::Placed(before)) => (
+                i64::from(this.line) - i64::from(before.line),
+                this.column,
+                this.byte_offset.wrapping_sub(before.byte_offset),
+            ),
+            _ => return None,
+        };
+        match (i16::try_from(lines), u16::try_from(column), i32::try_from(bytes as i64)) {
+            (Ok(Step::ASIDE), ..) | (Err(_), ..) | (_, Err(_), _) | (.., Err(_)) => None,
+            (Ok(lines), Ok(column), Ok(bytes)) => Some(Step { lines, column, bytes }),
         }
     }
 
     /// The spot `step` leads to from this one.
     #[inline]
     pub fn stepped(self, step: Step) -> Spot {
-        Spot(Position {
-            line: self.0.line.wrapping_add_signed(step.lines.into()),
-            column: step.column.into(),
-            byte_offset: self.0.byte_offset.wrapping_add_signed(step.bytes.into()),
-        })
+        match self {
+            Spot::Offset(at) => Spot::Offset(at.wrapping_add_signed(step.bytes as isize)),
+            Spot::Placed(position) => Spot::Placed(Position {
+                line: position.line.wrapping_add_signed(step.lines.into()),
+                column: step.column.into(),
+                byte_offset: position.byte_offset.wrapping_add_signed(step.bytes.into()),
+            }),
+        }
     }
 
     /// A finding here.
     pub fn finding(self, code: Code, message: impl Into<String>) -> Finding {
-        match self.0.line {
-            0 => Finding::new(code, self.0.byte_offset as usize, message),
-            _ => Finding::placed(code, 0, self.0, message),
+        match self {
+            Spot::Offset(at) => Finding::new(code, at, message),
+            Spot::Placed(position) => Finding::placed(code, 0, position, message),
         }
     }
 }
@@ -95,26 +122,27 @@ impl Spot {
 /// reports in one pass, see [`Spots::at`]): a piece of the file read on the second thread
 /// then carries no small block beside its steps, which the calling thread would let go
 /// and keep in its cache of small blocks, high in the helper's heap.
+#[derive(Default)]
 pub(crate) struct Spots {
     steps: Vec<Step>,
     aside: Vec<Spot>,
+    /// What the first spot is a step from: the start of the text, as a spot of the first
+    /// one's kind.
+    start: Spot,
     /// The last spot, which the next is a step from.
-    last: Spot,
-}
-
-impl Default for Spots {
-    fn default() -> Spots {
-        Spots { steps: Vec::new(), aside: Vec::new(), last: Spots::START }
-    }
+    last: Option<Spot>,
 }
 
 impl Spots {
-    /// What the first spot is a step from.
-    const START: Spot = Spot::offset(0);
-
     #[inline]
     pub fn push(&mut self, spot: Spot) {
-        let before = std::mem::replace(&mut self.last, spot);
+        let before = match self.last.replace(spot) {
+            Some(before) => before,
+            None => {
+                self.start = spot.origin();
+                self.start
+            }
+        };
         let step = spot.step_from(before).unwrap_or_else(|| {
             self.aside.push(spot);
             Step::aside(self.aside.len() - 1)
@@ -123,7 +151,7 @@ impl Spots {
     }
 
     pub fn iter(&self) -> impl Iterator<Item = Spot> + '_ {
-        self.steps.iter().scan(Spots::START, |spot, &step| {
+        self.steps.iter().scan(self.start, |spot, &step| {
             *spot = match step.aside_index() {
                 Some(index) => self.aside[index],
                 None => spot.stepped(step),
@@ -137,8 +165,8 @@ impl Spots {
     pub fn at(&self, indices: &[usize]) -> Vec<Spot> {
         let mut order: Vec<usize> = (0..indices.len()).collect();
         order.sort_by_key(|&i| indices[i]);
-        let mut found = vec![Spots::START; indices.len()];
-        let (mut spots, mut next, mut spot) = (self.iter(), 0, Spots::START);
+        let mut found = vec![self.start; indices.len()];
+        let (mut spots, mut next, mut spot) = (self.iter(), 0, self.start);
         for i in order {
             while next <= indices[i] {
                 let Some(following) = spots.next() else { return found };
@@ -152,7 +180,7 @@ impl Spots {
     pub fn clear(&mut self) {
         self.steps.clear();
         self.aside.clear();
-        self.last = Spots::START;
+        (self.start, self.last) = (Spot::default(), None);
     }
 }
 

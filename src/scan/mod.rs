@@ -2,35 +2,21 @@
 //!
 //! A [`Scanner`] goes over the text once, [`BLOCK`] bytes at a time with the machine's
 //! vector instructions, and follows its markup: every tag to its `>` (its quoted values
-//! passed over), comments, CDATA and processing instructions to their ends. It counts the
-//! elements and the depth as it goes, and lists the items ([`Item`]: the start tags
-//! directly in an element of the root, a world container's items in a scene), which are
-//! where a two-thread read cuts the text into pieces: facts of the text, not guesses. It
-//! carries its state from one window of the text to the next, so a delimiter cut by the end
-//! of a window is found once more text comes. It checks nothing: where the text is not
-//! well-formed it stops or lists what it saw, and the reader reports the problem.
+//! passed over), comments, CDATA and processing instructions to their ends. It carries its
+//! state from one window of the text to the next, so a delimiter cut by the end of a window
+//! is found once more text comes. It checks nothing: where the text is not well-formed it
+//! stops or marks what it saw, and the reader reports the problem.
 //!
-//! For the reader it also marks every piece of markup ([`Mark`]: a tag, an end tag, a
-//! comment, CDATA, a processing instruction, from its `<` to its last byte), in order. The
-//! reader walks them through an [`Index`], which scans a chunk of the text ahead of it at a
-//! time: it looks for no delimiter of markup itself.
+//! It marks every piece of markup ([`Mark`]: a tag, an end tag, a comment, CDATA, a
+//! processing instruction, from its `<` to its last byte), in order. The reader walks them
+//! through an [`Index`], which scans a chunk of the text ahead of it at a time: it looks
+//! for no delimiter of markup itself.
 #![forbid(unsafe_code)]
 
 use crate::bytes::{BLOCK, block_masks};
 
 #[cfg(test)]
 mod tests;
-
-/// A start tag directly in an element of the root (at depth 2), with the offset of that
-/// element's start tag, how many elements began before it, and whether other markup (a
-/// comment, CDATA, a processing instruction) comes between it and the tag before it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct Item {
-    pub at: usize,
-    pub parent: usize,
-    pub elements_before: u64,
-    pub after_markup: bool,
-}
 
 /// A piece of markup: a tag, an end tag, a comment, CDATA or a processing instruction, from
 /// its `<` (`at`) to its last byte (`end`: the `>` that ends it).
@@ -61,20 +47,14 @@ pub(crate) struct Scanner {
     /// The offset up to which the text was scanned: the next byte to look at.
     at: usize,
     mode: Mode,
-    tally: Tally,
-    /// The tally where the last markup other than a tag began.
-    markup: Option<Tally>,
-    items: Vec<Item>,
-    /// The marks, when they are made (see [`Index`]), and what they carry from one call to
-    /// the next.
+    /// The marks found, and what they carry from one call to the next.
     marks: Marks,
 }
 
-/// The marks of a scan: whether it makes them, those found, and the start of the comment,
-/// CDATA or processing instruction the scan is in.
+/// The marks of a scan: those found, and the start of the comment, CDATA or processing
+/// instruction the scan is in.
 #[derive(Default)]
 struct Marks {
-    on: bool,
     list: Vec<Mark>,
     open: Option<usize>,
 }
@@ -88,47 +68,10 @@ impl Marks {
     }
 }
 
-/// What the scan counts as it goes: a value, which the loop over the tags keeps in
-/// registers.
-#[derive(Clone, Copy, Default, PartialEq, Eq)]
-struct Tally {
-    /// Elements open, and elements begun.
-    depth: usize,
-    elements: u64,
-    /// The start tag of the element open at depth 1.
-    parent: usize,
-}
-
 impl Scanner {
-    /// A scan from the start of a text.
-    pub fn new() -> Scanner {
-        Scanner {
-            at: 0,
-            mode: Mode::Text,
-            tally: Tally::default(),
-            markup: None,
-            items: Vec::new(),
-            marks: Marks::default(),
-        }
-    }
-
-    /// A scan that marks the markup, from offset `at` of a text, between markup.
-    fn marking(at: usize) -> Scanner {
-        let mut scanner = Scanner::new();
-        scanner.at = at;
-        scanner.marks.on = true;
-        scanner
-    }
-
-    /// The offset up to which the text is scanned: the next call is given the text from
-    /// there on.
-    pub fn scanned(&self) -> usize {
-        self.at
-    }
-
-    /// The items found since the last call.
-    pub fn take_items(&mut self) -> Vec<Item> {
-        std::mem::take(&mut self.items)
+    /// A scan from offset `at` of a text, between markup.
+    fn new(at: usize) -> Scanner {
+        Scanner { at, mode: Mode::Text, marks: Marks::default() }
     }
 
     /// Scans `text`, which starts at offset `base`, where the scan stands. Markup that
@@ -154,14 +97,7 @@ impl Scanner {
     /// Text and tags up to other markup; true when the text at hand is too short to go on
     /// (markup it cuts).
     fn text(&mut self, rest: &[u8]) -> bool {
-        let (at, tally, markup) = (self.at, self.tally, self.markup);
-        let (items, marks) = (&mut self.items, &mut self.marks.list);
-        let (tally, stop) = match self.marks.on {
-            true => tags::<true>(rest, at, tally, markup, items, marks),
-            false => tags::<false>(rest, at, tally, markup, items, marks),
-        };
-        self.tally = tally;
-        match stop {
+        match tags(rest, self.at, &mut self.marks.list) {
             Stop::End => {
                 self.at += rest.len();
                 false
@@ -171,14 +107,11 @@ impl Scanner {
                 true
             }
             Stop::Markup(lt, at, mode) => {
-                self.markup = Some(tally);
                 self.at = at;
                 self.mode = mode;
-                if self.marks.on {
-                    self.marks.open = Some(lt);
-                    if mode == Mode::Stopped {
-                        self.marks.close(lt, true);
-                    }
+                self.marks.open = Some(lt);
+                if mode == Mode::Stopped {
+                    self.marks.close(lt, true);
                 }
                 false
             }
@@ -238,7 +171,7 @@ pub(crate) struct Index {
 impl Index {
     /// An index of the text from offset `at` on, which is between markup.
     pub fn new(at: usize) -> Index {
-        Index { scanner: Scanner::marking(at), next: 0 }
+        Index { scanner: Scanner::new(at), next: 0 }
     }
 
     /// The offset up to which the text is scanned: the text from there on must stay at hand.
@@ -310,23 +243,16 @@ enum Stop {
     Markup(usize, usize, Mode),
 }
 
-/// The tags of `rest`, text that starts at offset `start`, up to other markup, counted into
-/// `tally`, the items pushed on `items` (and with `MARK`, every tag and end tag on `marks`).
+/// The tags of `rest`, text that starts at offset `start`, up to other markup, every tag
+/// and end tag marked on `marks`.
 /// A block's masks of `<`, `>` and each quote give each tag: its end is the first `>` after
 /// its `<` outside quoted values (see [`tag_end_in`]); a tag the block does not end is
 /// followed into the next blocks, inside a quoted value or not. The byte after a `<` tells
 /// start tags from end tags and sends the rest of markup to [`classify`].
-fn tags<const MARK: bool>(
-    rest: &[u8],
-    start: usize,
-    mut tally: Tally,
-    markup: Option<Tally>,
-    items: &mut Vec<Item>,
-    marks: &mut Vec<Mark>,
-) -> (Tally, Stop) {
-    // The tag begun in an earlier block: its `<`, the byte after it, and the quoted value
-    // it is in at the end of the last block.
-    let mut open: Option<(usize, u8, Quoted)> = None;
+fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
+    // The tag begun in an earlier block: its `<`, and the quoted value it is in at the end
+    // of the last block.
+    let mut open: Option<(usize, Quoted)> = None;
     let mut from = 0;
     let mut padded = [0; BLOCK];
     while from < rest.len() {
@@ -340,29 +266,18 @@ fn tags<const MARK: bool>(
         };
         let masks = block_masks(block, [b'<', b'>', b'"', b'\'']);
         let mut lts = masks[0];
-        let mut ended = |tally: &mut Tally, i: usize, next: u8, gt: usize| {
-            if MARK {
-                // The reader counts for itself.
-                marks.push(Mark { at: start + i, end: start + gt, stops: false });
-            } else if next == b'/' {
-                tally.depth = tally.depth.saturating_sub(1);
-            } else {
-                if tally.depth <= 2 {
-                    tally.parent = near_root(*tally, start + i, markup, items);
-                }
-                tally.elements += 1;
-                tally.depth += usize::from(rest[gt - 1] != b'/');
-            }
+        let mut ended = |i: usize, gt: usize| {
+            marks.push(Mark { at: start + i, end: start + gt, stops: false });
         };
-        if let Some((i, next, quoted)) = open {
+        if let Some((i, quoted)) = open {
             match tag_end_in(u64::MAX, quoted, masks) {
                 Ok(end) => {
-                    ended(&mut tally, i, next, from + end);
+                    ended(i, from + end);
                     lts &= above(end);
                     open = None;
                 }
                 Err(quoted) => {
-                    open = Some((i, next, quoted));
+                    open = Some((i, quoted));
                     from += BLOCK;
                     continue;
                 }
@@ -372,17 +287,12 @@ fn tags<const MARK: bool>(
             let bit = lts.trailing_zeros() as usize;
             let i = from + bit;
             let Some(&next) = rest.get(i + 1) else {
-                return (tally, Stop::Cut(start + i));
+                return Stop::Cut(start + i);
             };
-            if next == b'/' && !MARK {
-                tally.depth = tally.depth.saturating_sub(1);
-                lts &= lts - 1;
-                continue;
-            }
             if next == b'!' || next == b'?' {
                 return match classify(&rest[i..]) {
-                    Some((mode, len)) => (tally, Stop::Markup(start + i, start + i + len, mode)),
-                    None => (tally, Stop::Cut(start + i)),
+                    Some((mode, len)) => Stop::Markup(start + i, start + i + len, mode),
+                    None => Stop::Cut(start + i),
                 };
             }
             // The usual tag: its `>` before any quote.
@@ -395,11 +305,11 @@ fn tags<const MARK: bool>(
             };
             match end {
                 Ok(end) => {
-                    ended(&mut tally, i, next, from + end);
+                    ended(i, from + end);
                     lts &= above(end);
                 }
                 Err(quoted) => {
-                    open = Some((i, next, quoted));
+                    open = Some((i, quoted));
                     break;
                 }
             }
@@ -407,8 +317,8 @@ fn tags<const MARK: bool>(
         from += BLOCK;
     }
     match open {
-        Some((i, ..)) => (tally, Stop::Cut(start + i)),
-        None => (tally, Stop::End),
+        Some((i, _)) => Stop::Cut(start + i),
+        None => Stop::End,
     }
 }
 
@@ -458,26 +368,6 @@ fn tag_end_in(
         after = above(close);
         quoted = Quoted::No;
     }
-}
-
-/// A start tag at `lt` opens an element directly in the root, or in an element of the root:
-/// an item, pushed on `items`; other markup came right before it when the last began at the
-/// same tally (`markup`: no tag came since). Returns the start tag of the element open at
-/// depth 1 from then on. Out of the loop, which keeps `tally` in registers.
-#[cold]
-#[inline(never)]
-fn near_root(tally: Tally, lt: usize, markup: Option<Tally>, items: &mut Vec<Item>) -> usize {
-    match tally.depth {
-        1 => return lt,
-        2 => items.push(Item {
-            at: lt,
-            parent: tally.parent,
-            elements_before: tally.elements,
-            after_markup: markup == Some(tally),
-        }),
-        _ => {}
-    }
-    tally.parent
 }
 
 /// The bits of a block's mask above bit `bit`, one of its 64.

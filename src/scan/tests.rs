@@ -1,48 +1,38 @@
 use super::*;
 use crate::Xorshift;
 
-/// An item: its offset, its parent's, the elements before it and whether other markup
-/// comes right before it.
-type Found = (usize, usize, u64, bool);
-
-fn found(items: Vec<Item>) -> Vec<Found> {
-    items.iter().map(|i| (i.at, i.parent, i.elements_before, i.after_markup)).collect()
+/// The offsets of the marks of `text`, read whole through an index.
+fn marked(text: &str) -> Vec<(usize, usize, bool)> {
+    indexed(text.as_bytes(), 0, text.len()).iter().map(|m| (m.at, m.end, m.stops)).collect()
 }
 
-/// The items of `text`, scanned whole, and the elements counted.
-fn scanned(text: &str) -> (Vec<Found>, u64) {
-    let mut scanner = Scanner::new();
-    scanner.scan(text.as_bytes(), 0);
-    let items = found(scanner.take_items());
-    (items, scanner.tally.elements)
-}
-
+/// A `<` in a comment, CDATA, a processing instruction or a quoted value begins no mark of
+/// its own; a tag ends at its first `>` outside quoted values.
 #[test]
-fn items_are_the_start_tags_directly_in_an_element_of_the_root() {
-    let text = "<World><Bodies><Body><X/></Body><Body/></Bodies><Joints><Joint/></Joints></World>";
-    assert_eq!(scanned(text), (vec![(15, 7, 2, false), (32, 7, 4, false), (56, 48, 6, false)], 7));
-}
-
-/// A `<` in a comment, CDATA, a processing instruction or a quoted value begins no tag;
-/// `/>` ends an empty element, whatever a value holds.
-#[test]
-fn only_tags_count() {
+fn only_markup_is_marked() {
     let text = "<?pi <a> ?><World><!-- <a> --><Bodies a='<b>' b=\"/>\"><![CDATA[<c>]]>\
-                <Body c=\"/\"/><Body/></Bodies></World>";
-    let body = text.find("<Body c").unwrap();
-    let bodies = text.find("<Bodies").unwrap();
-    assert_eq!(scanned(text), (vec![(body, bodies, 2, true), (body + 13, bodies, 3, false)], 4));
+                <Body c=\"/\"/></Bodies></World>";
+    let at = |piece: &str| text.find(piece).unwrap();
+    let end = |piece: &str| at(piece) + piece.len() - 1;
+    let expected = ["<?pi <a> ?>", "<World>", "<!-- <a> -->", "<Bodies a='<b>' b=\"/>\">"]
+        .into_iter()
+        .chain(["<![CDATA[<c>]]>", "<Body c=\"/\"/>", "</Bodies>", "</World>"])
+        .map(|piece| (at(piece), end(piece), false))
+        .collect::<Vec<_>>();
+    assert_eq!(marked(text), expected);
 }
 
 /// Markup XML does not have stops the scan: the reader stops there.
 #[test]
 fn markup_that_cannot_be_read_stops_the_scan() {
     for text in ["<W><B><!DOCTYPE W><I/></B></W>", "<W><B><!-- a -- b --><I/></B></W>"] {
-        assert_eq!(scanned(text), (vec![], 2), "{text}");
+        let marks = marked(text);
+        assert_eq!(marks.len(), 3, "{text}");
+        assert!(marks[2].2, "{text}");
     }
 }
 
-/// Cut anywhere, over as many windows as it takes, a text gives the items it gives whole.
+/// Cut anywhere, over as many windows as it takes, a text gives the marks it gives whole.
 /// Tags longer than a block and blocks full of tags are read as well as short ones.
 #[test]
 fn windows_give_what_the_whole_text_gives() {
@@ -53,83 +43,11 @@ fn windows_give_what_the_whole_text_gives() {
          </Joints></World>",
         "<Body/>".repeat(30)
     );
-    let expected = scanned(&text);
-    assert_eq!(expected.0.len(), 4 + 30 + 1);
+    let expected = indexed(text.as_bytes(), 0, text.len());
+    assert_eq!(expected.len(), 10 + 30 + 6);
     for window in [1, 2, 3, 5, 7, 63, 64, 65, 100] {
-        let mut scanner = Scanner::new();
-        let mut end = 0;
-        while end < text.len() {
-            end = (end + window).min(text.len());
-            // Only what is not scanned yet need be at hand.
-            let from = scanner.scanned();
-            scanner.scan(&text.as_bytes()[from..end], from);
-        }
-        let items: Vec<_> = found(scanner.take_items());
-        assert_eq!((items, scanner.tally.elements), expected, "windows of {window}");
+        assert_eq!(indexed(text.as_bytes(), 0, window), expected, "windows of {window}");
     }
-}
-
-/// The scan's rules, followed a byte at a time: the items and the elements of `text` as
-/// [`scanned`] gives them.
-fn one_by_one(text: &[u8]) -> (Vec<Found>, u64) {
-    let (mut i, mut depth, mut elements, mut parent, mut items) = (0, 0usize, 0, 0, vec![]);
-    let mut markup = None;
-    let after = |from: usize, delimiter: &[u8]| {
-        memchr::memmem::find(&text[from..], delimiter).map(|at| from + at + delimiter.len())
-    };
-    while let Some(at) = text[i..].iter().position(|&b| b == b'<') {
-        i += at;
-        let rest = &text[i..];
-        let next = match rest {
-            [_, b'/', ..] => {
-                depth = depth.saturating_sub(1);
-                Some(i + 2)
-            }
-            [_, b'?', ..] => {
-                markup = Some((elements, depth, parent));
-                after(i + 2, b"?>")
-            }
-            _ if rest.starts_with(b"<![CDATA[") => {
-                markup = Some((elements, depth, parent));
-                after(i + 9, b"]]>")
-            }
-            _ if rest.starts_with(b"<!--") => {
-                markup = Some((elements, depth, parent));
-                after(i + 4, b"--").filter(|&e| text.get(e) == Some(&b'>')).map(|e| e + 1)
-            }
-            [_, b'!', ..] | [_] => None,
-            _ => {
-                let mut end = i + 1;
-                loop {
-                    match text[end..].iter().position(|b| b"\"'>".contains(b)) {
-                        Some(q) if text[end + q] == b'>' => break Some(end + q),
-                        Some(q) => {
-                            match text[end + q + 1..].iter().position(|&b| b == text[end + q]) {
-                                Some(close) => end = end + q + 1 + close + 1,
-                                None => break None,
-                            }
-                        }
-                        None => break None,
-                    }
-                }
-                .map(|gt| {
-                    match depth {
-                        1 => parent = i,
-                        2 => {
-                            items.push((i, parent, elements, markup == Some((elements, 2, parent))))
-                        }
-                        _ => {}
-                    }
-                    elements += 1;
-                    depth += usize::from(text[gt - 1] != b'/');
-                    gt + 1
-                })
-            }
-        };
-        let Some(next) = next else { break };
-        i = next;
-    }
-    (items, elements)
 }
 
 /// Appends up to `most` of `pieces` to `text`, at random: mostly tags that open and close
@@ -150,55 +68,6 @@ fn random_pieces(
             _ => random.below(others),
         };
         text.extend_from_slice(pieces[piece]);
-    }
-}
-
-/// Texts made at random of tags, text, markup and broken markup: the scan, whole and in
-/// windows, finds what a byte-at-a-time reading finds, where blocks of plain tags are
-/// counted at once and where tags are looked at one by one.
-#[test]
-fn the_scan_counts_what_a_byte_at_a_time_reading_counts() {
-    let pieces: [&[u8]; 18] = [
-        b"<a>",
-        b"</a>",
-        b"<b/>",
-        b"<c x='1'>",
-        b"<d y=\"/>\"/>",
-        b" text ",
-        b"\n    ",
-        b"1.5 2",
-        b">",
-        b"</>",
-        b"<>",
-        b"<!-- c -->",
-        b"<?p ?>",
-        b"<![CDATA[<x>]]>",
-        b"<<",
-        b"</a/>",
-        b"<e\n/>",
-        b"&amp;",
-    ];
-    let mut random = Xorshift(0x2545_f491_4f6c_dd1d);
-    for round in 0..3000 {
-        let mut text = b"<W><C>".to_vec();
-        random_pieces(&mut random, &mut text, &pieces, 200, pieces.len());
-        let expected = one_by_one(&text);
-        for window in [text.len().max(1), 1, 13, 64, 100] {
-            let mut scanner = Scanner::new();
-            let mut end = 0;
-            while end < text.len() {
-                end = (end + window).min(text.len());
-                let from = scanner.scanned();
-                scanner.scan(&text[from..end], from);
-            }
-            let items: Vec<_> = found(scanner.take_items());
-            assert_eq!(
-                (items, scanner.tally.elements),
-                expected,
-                "round {round}, windows of {window}: {}",
-                String::from_utf8_lossy(&text)
-            );
-        }
     }
 }
 

@@ -21,54 +21,25 @@ use quick_xml::events::{BytesDecl, BytesStart};
 use quick_xml::parser::{ElementParser, Parser as _};
 
 use super::names::{Name, SHORT};
-use crate::error::{Code, Parsed, Position, Problem, problem};
+use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::place::{Cursor, Lines};
 use crate::scan::{Index, Mark};
 use crate::text::{self};
 
 mod keeping;
 mod pieces;
 mod values;
+mod window;
 
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
 pub(crate) use keeping::Keeping;
 use values::resolve_text;
 pub(super) use values::verbatim;
+use window::Window;
 
 #[cfg(test)]
 mod tests;
-
-/// Why a reading stopped before the end of its text: a problem of the file, or the end of
-/// the piece of text it was given, before an item (see [`Tokenizer::end_before`]), which is
-/// where a two-thread load's reading is meant to stop and no finding at all.
-#[derive(Debug)]
-pub(crate) enum Halt {
-    Problem(Problem),
-    PieceEnd,
-}
-
-impl From<Problem> for Halt {
-    #[inline]
-    fn from(problem: Problem) -> Halt {
-        Halt::Problem(problem)
-    }
-}
-
-impl Halt {
-    /// The problem that stopped a reading that was given no piece ends (so that it cannot
-    /// stop at one).
-    pub(crate) fn into_problem(self) -> Problem {
-        match self {
-            Halt::Problem(problem) => problem,
-            Halt::PieceEnd => problem(Code::Internal, 0, "a reading stopped at a piece's end"),
-        }
-    }
-}
-
-/// What a reading step gives, or why the reading stopped.
-pub(crate) type Reading<T> = Result<T, Halt>;
 
 #[cold]
 fn malformed<E: From<Problem>>(at: usize, e: impl Into<quick_xml::Error>) -> E {
@@ -120,11 +91,11 @@ pub(super) struct Text {
 }
 
 impl Text {
-    /// Its text, from `source` when it is a range of it.
-    fn read<'t>(&'t self, source: &'t Source) -> &'t str {
+    /// Its text, from `window` when it is a range of it.
+    fn read<'t>(&'t self, window: &'t Window) -> &'t str {
         match &self.resolved {
             Some(resolved) => &resolved.text,
-            None => source.slice(self.at, self.end),
+            None => window.slice(self.at, self.end),
         }
     }
 
@@ -250,10 +221,11 @@ pub(super) enum Node {
     Eof,
 }
 
-/// The reader of markup: where it is in the text, which elements are open, and the
-/// comments it passed since the reader last took them.
+/// The reader of markup, the lexer that turns it into nodes: where it is in the text,
+/// which elements are open; over a window of the text, keeping at hand what the reader
+/// will want again.
 pub(super) struct Tokenizer<'a> {
-    source: Source<'a>,
+    window: Window<'a>,
     options: &'a LoadOptions,
     /// The tokenizer's offset: the next node starts here.
     pos: usize,
@@ -269,59 +241,16 @@ pub(super) struct Tokenizer<'a> {
     /// open, so that its offsets can be placed until it ends.
     open: Vec<(Name, usize)>,
     elements: u64,
-    /// Lines and columns, counted over the text as it is passed.
-    lines: Lines,
     /// The markup ahead, as the scan stage finds it: the reader takes each piece's mark as
     /// it reads it, and looks for no delimiter itself.
     index: Index,
-    /// Where the reading may end before an item (see [`Tokenizer::end_before`]): the
-    /// items' offsets in order, with the names of the containers they are assumed to be
-    /// in; those from `next_end` on lie ahead, the first at `end_at` (`usize::MAX` for
-    /// none), where the text at hand ends.
-    ends: Vec<(usize, Name)>,
-    next_end: usize,
-    end_at: usize,
-    /// Where ends that are still being found come from (see
-    /// [`Tokenizer::end_before_found`]).
-    found: Option<FoundEnds<'a>>,
-}
-
-/// Where the ends of a reading come from while they are still being found: asked each time
-/// more text is read, it gives them once they are (see [`Tokenizer::end_before_found`]).
-pub(super) type FoundEnds<'a> = Box<dyn FnMut() -> Option<Vec<(usize, Name)>> + 'a>;
-
-/// Where a tokenizer stopped, for another to go on from there (see [`Tokenizer::resume`]).
-pub(super) struct Stop {
-    pos: usize,
-    started: usize,
-    last: usize,
-    open: Vec<(Name, usize)>,
-    elements: u64,
-    /// The position of `pos`, counted from where the tokenizer started, when it placed
-    /// what it found as it read; None for a text that stays in memory, whose findings are
-    /// placed once the whole is read.
-    end: Option<Position>,
-}
-
-impl Stop {
-    /// The elements the tokenizer read.
-    pub fn elements(&self) -> u64 {
-        self.elements
-    }
-
-    /// The position where it stopped, counted from where it started, when it placed what
-    /// it found as it read.
-    pub fn end(&self) -> Option<Position> {
-        self.end
-    }
 }
 
 impl<'a> Tokenizer<'a> {
     pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
-        let lines = Lines::new(source.encoding(), Cursor::start(source.base()));
         let index = Index::new(source.base());
         Tokenizer {
-            source,
+            window: Window::new(source),
             options,
             pos: 0,
             started: 0,
@@ -329,12 +258,7 @@ impl<'a> Tokenizer<'a> {
             kept: Keeping::default(),
             open: Vec::new(),
             elements: 0,
-            lines,
             index,
-            ends: Vec::new(),
-            next_end: 0,
-            end_at: usize::MAX,
-            found: None,
         }
     }
 
@@ -347,53 +271,16 @@ impl<'a> Tokenizer<'a> {
     /// The text at hand from offset `from` on (empty when `from` is past it).
     #[inline(always)]
     fn rest(&self, from: usize) -> &[u8] {
-        let text = self.source.text().as_bytes();
-        text.get(from - self.source.base()..).unwrap_or_default()
+        self.window.rest(from)
     }
 
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
-    /// at the end of the file; the problem that ends the text early, when that is why;
-    /// [`Halt::PieceEnd`] where the reading ends before an item (see
-    /// [`Tokenizer::end_before`]).
-    fn more(&mut self) -> Reading<bool> {
-        if self.found.is_some() {
-            self.take_found_ends();
-        }
+    /// at the end of the text; the problem that ends the text early, when that is why.
+    fn more(&mut self) -> Parsed<bool> {
         let keep = self.kept.first().map_or(self.last, |kept| kept.min(self.last));
         let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
         // The scan goes on from where it stands.
-        let keep = keep.min(self.index.scanned());
-        // A text in memory stays at hand: nothing is let go, so nothing is counted yet.
-        if !self.source.is_whole() {
-            self.lines.release(self.source.text(), self.source.base(), keep);
-        }
-        let end = self.source.end();
-        while !self.source.more(keep) {
-            if self.source.end() != self.end_at {
-                return match self.source.stop() {
-                    Some(stop) => Err(Halt::Problem(Box::new(stop.clone()))),
-                    None => Ok(false),
-                };
-            }
-            if self.pos == self.end_at && self.may_end() {
-                return Err(Halt::PieceEnd);
-            }
-            self.pass_end();
-            // A text in memory is at hand past the end at once.
-            if self.source.end() > end {
-                break;
-            }
-        }
-        Ok(true)
-    }
-
-    /// Whether the reading, at the next end, may end there: directly in the container
-    /// assumed, in the root, with nothing read waiting for the reader (text kept
-    /// verbatim, comments, which would go before the item).
-    fn may_end(&self) -> bool {
-        let container = &self.ends[self.next_end].1;
-        matches!(&self.open[..], [_, (open, _)] if open.as_bytes() == container.as_bytes())
-            && self.kept.waits_for_nothing()
+        self.window.refill(keep.min(self.index.scanned()))
     }
 
     /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
@@ -401,13 +288,13 @@ impl<'a> Tokenizer<'a> {
     /// the end of the file. A node longer than `max_text_bytes` is refused before it is all
     /// read: measured, while its end is not at hand, up to the last byte that cannot begin
     /// its closing delimiter of `overlap + 1` bytes.
-    fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Reading<Option<Mark>> {
+    fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Parsed<Option<Mark>> {
         loop {
-            if let Some(mark) = self.index.next(self.source.text().as_bytes(), self.source.base()) {
+            if let Some(mark) = self.index.next(self.window.text(), self.window.base()) {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
                 return Ok(Some(mark));
             }
-            self.within_text_limit(at, self.source.end().saturating_sub(overlap).max(at + skip))?;
+            self.within_text_limit(at, self.window.end().saturating_sub(overlap).max(at + skip))?;
             if !self.more()? {
                 return Ok(None);
             }
@@ -418,7 +305,7 @@ impl<'a> Tokenizer<'a> {
     /// without it (a tag it read whole in the text at hand).
     #[inline(always)]
     fn passed(&mut self, at: usize) {
-        self.index.pass(at, self.source.text().as_bytes(), self.source.base());
+        self.index.pass(at, self.window.text(), self.window.base());
     }
 
     /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
@@ -436,7 +323,7 @@ impl<'a> Tokenizer<'a> {
     /// the text at hand: blank text between elements is never a node of its own where
     /// only elements may follow, however it falls across a window.
     #[inline(always)]
-    pub fn skip_space(&mut self) -> Reading<()> {
+    pub fn skip_space(&mut self) -> Parsed<()> {
         let rest = self.rest(self.pos);
         let (space, all) = (space_len(rest), rest.len());
         self.pos += space;
@@ -450,7 +337,7 @@ impl<'a> Tokenizer<'a> {
     /// apart, so that the usual skip is a few instructions where it is inlined.
     #[cold]
     #[inline(never)]
-    fn skip_space_on(&mut self) -> Reading<()> {
+    fn skip_space_on(&mut self) -> Parsed<()> {
         loop {
             // Directly in the root or in a container, nothing read before the white space
             // is looked at again (an item's text is kept while it is open): neither it nor
@@ -460,7 +347,7 @@ impl<'a> Tokenizer<'a> {
             }
             // The scan passes the white space too (it holds no mark), so that it need not
             // stay at hand for the scan either.
-            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let (text, base) = (self.window.text(), self.window.base());
             let mark = self.index.next(text, base);
             debug_assert!(mark.is_none(), "white space holds no markup");
             if !self.more()? {
@@ -482,7 +369,7 @@ impl<'a> Tokenizer<'a> {
         (self.last, self.started) = (self.started, at);
     }
 
-    pub fn next_node(&mut self) -> Reading<Node> {
+    pub fn next_node(&mut self) -> Parsed<Node> {
         self.begin_node(self.pos);
         loop {
             let at = self.pos;
@@ -514,22 +401,22 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Text up to the next markup, its references resolved and its line ends normalised.
-    fn text_node(&mut self, at: usize) -> Reading<Node> {
+    fn text_node(&mut self, at: usize) -> Parsed<Node> {
         let end = loop {
-            let (text, base) = (self.source.text().as_bytes(), self.source.base());
+            let (text, base) = (self.window.text(), self.window.base());
             if let Some(mark) = self.index.next(text, base) {
                 break mark.at;
             }
             if let Some(start) = self.index.next_start(text, base) {
                 break start;
             }
-            self.within_text_limit(at, self.source.end())?;
+            self.within_text_limit(at, self.window.end())?;
             if !self.more()? {
-                break self.source.end();
+                break self.window.end();
             }
         };
         self.pos = self.within_text_limit(at, end)?;
-        let text = self.source.slice(at, end);
+        let text = self.window.slice(at, end);
         // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
         if let Some(i) = memchr::memmem::find(text.as_bytes(), b"]]>") {
             return Err(problem(
@@ -546,7 +433,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The end of a tag that starts at `at`: the offset of its `>`.
-    fn tag_end(&mut self, at: usize) -> Reading<usize> {
+    fn tag_end(&mut self, at: usize) -> Parsed<usize> {
         let Some(mark) = self.mark(at, 1, 0)? else {
             // The end of the file: quick-xml tells whether a quoted value is open.
             let mut parser = ElementParser::Outside;
@@ -554,16 +441,16 @@ impl<'a> Tokenizer<'a> {
             return Err(malformed(at, parser.eof_error(&[])));
         };
         self.index.take();
-        Ok(self.within_text_limit(at, mark.end)?)
+        self.within_text_limit(at, mark.end)
     }
 
-    fn start_tag(&mut self, at: usize) -> Reading<Node> {
+    fn start_tag(&mut self, at: usize) -> Parsed<Node> {
         let tag = match self.short_tag(at) {
             Some(tag) => tag,
             None => {
                 let end = self.tag_end(at)?;
                 self.pos = end + 1;
-                let content = self.source.slice(at + 1, end);
+                let content = self.window.slice(at + 1, end);
                 let (content, empty) = match content.strip_suffix('/') {
                     Some(content) => (content, true),
                     None => (content, false),
@@ -615,7 +502,7 @@ impl<'a> Tokenizer<'a> {
 
     /// Counts a start tag just read against the limits and opens its element.
     #[inline(always)]
-    fn opened(&mut self, tag: &Tag) -> Reading<()> {
+    fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
         self.elements += 1;
         if self.elements > self.options.max_elements {
@@ -655,13 +542,13 @@ impl<'a> Tokenizer<'a> {
         Some(Tag { name, content: None, at, empty })
     }
 
-    fn end_tag(&mut self, at: usize) -> Reading<Node> {
+    fn end_tag(&mut self, at: usize) -> Parsed<Node> {
         if self.usual_end_tag(at) {
             return Ok(Node::Close(at));
         }
         let end = self.tag_end(at)?;
         self.pos = end + 1;
-        let found = self.source.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
+        let found = self.window.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
         let Some((expected, _)) = self.open.pop() else {
             return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
         };
@@ -674,7 +561,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<?...?>`: the XML declaration is checked, other processing instructions skipped.
-    fn processing_instruction(&mut self, at: usize) -> Reading<()> {
+    fn processing_instruction(&mut self, at: usize) -> Parsed<()> {
         let Some(mark) = self.mark(at, 2, 1)? else {
             let unclosed = quick_xml::parser::PiParser(false).eof_error(self.rest(at));
             return Err(malformed(at, unclosed));
@@ -683,7 +570,7 @@ impl<'a> Tokenizer<'a> {
         let end = self.within_text_limit(at, mark.end - 1)?;
         self.index.take();
         self.pos = end + 2;
-        let content = self.source.slice(at + 2, end);
+        let content = self.window.slice(at + 2, end);
         let is_declaration = content.starts_with("xml")
             && content.as_bytes().get(3).is_none_or(|&b| is_xml_space_byte(b));
         if is_declaration {
@@ -702,7 +589,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// `<!...`: a comment (kept for the writer: None), CDATA (its text), or a DOCTYPE (refused).
-    fn bang(&mut self, at: usize) -> Reading<Option<Node>> {
+    fn bang(&mut self, at: usize) -> Parsed<Option<Node>> {
         while self.rest(at).len() < 9 && self.more()? {}
         let head = self.rest(at);
         if head.starts_with(b"<!--") {

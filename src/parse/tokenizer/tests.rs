@@ -36,8 +36,7 @@ fn children(xml: &str, usual: bool, limits: &LoadOptions) -> Vec<String> {
             Ok(Some(tag)) => {
                 let attrs = tok.attributes(tag).map(|a| read(&a)).map_err(|e| e.at);
                 seen.push(format!("{} {} {} {attrs:?}", tag.name(), tag.at, tag.empty));
-                let (pos, skipped) =
-                    (tok.position(), tok.skip(tag).map_err(|e| e.into_problem().at));
+                let (pos, skipped) = (tok.position(), tok.skip(tag).map_err(|e| e.at));
                 seen.push(format!("at {pos}, skipped {skipped:?} to {}", tok.position()));
                 if skipped.is_err() {
                     return seen;
@@ -48,7 +47,6 @@ fn children(xml: &str, usual: bool, limits: &LoadOptions) -> Vec<String> {
                 return seen;
             }
             Err(e) => {
-                let e = e.into_problem();
                 seen.push(format!("{:?} at {}: {}", e.code, e.at, e.message));
                 return seen;
             }

@@ -10,7 +10,6 @@ use quick_xml::events::attributes::AttrError;
 use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
-use super::Reading;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
@@ -20,7 +19,7 @@ use crate::text::{trim_xml, trim_xml_at};
 impl<'a> Tokenizer<'a> {
     /// The text of `t`, valid until the next node is read.
     pub fn text_of<'t>(&'t self, t: &'t Text) -> &'t str {
-        t.read(&self.source)
+        t.read(&self.window)
     }
 
     pub fn is_blank(&self, t: &Text) -> bool {
@@ -43,7 +42,7 @@ impl<'a> Tokenizer<'a> {
             return Ok(());
         };
         let declared = declared.to_ascii_lowercase();
-        let fits = match self.source.encoding() {
+        let fits = match self.window.encoding() {
             Encoding::Utf8 { .. } => matches!(declared.as_str(), "utf-8" | "utf8"),
             Encoding::Utf16 { .. } => declared.starts_with("utf-16") || declared == "unicode",
         };
@@ -66,7 +65,7 @@ impl<'a> Tokenizer<'a> {
     /// comments are skipped; other text is an error. Inlined into the readers' loops, so
     /// that the usual child costs no more than it needs.
     #[inline(always)]
-    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Reading<bool> {
+    pub fn child(&mut self, parent: &Tag, child: &mut Tag) -> Parsed<bool> {
         if parent.empty {
             return Ok(false);
         }
@@ -93,7 +92,7 @@ impl<'a> Tokenizer<'a> {
     /// general reading of a child: apart, so that the usual child costs no more than it
     /// needs.
     #[inline(never)]
-    pub(super) fn other_child(&mut self, parent: &Tag) -> Reading<Option<Tag>> {
+    pub(super) fn other_child(&mut self, parent: &Tag) -> Parsed<Option<Tag>> {
         loop {
             self.skip_space()?;
             match self.next_node()? {
@@ -113,13 +112,14 @@ impl<'a> Tokenizer<'a> {
                         ));
                     }
                 }
+                Node::Eof if self.at_piece_end() => return Ok(None),
                 Node::Eof => return Err(self.unclosed(parent)),
             }
         }
     }
 
     /// The text of a value element (`<Density>5</Density>`), trimmed.
-    pub fn value(&mut self, tag: &Tag) -> Reading<Value> {
+    pub fn value(&mut self, tag: &Tag) -> Parsed<Value> {
         match self.plain_value(tag) {
             Some(value) => Ok(value),
             None => self.value_of_nodes(tag),
@@ -127,7 +127,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// [`Tokenizer::value`] when it is not the usual one: read node by node.
-    fn value_of_nodes(&mut self, tag: &Tag) -> Reading<Value> {
+    fn value_of_nodes(&mut self, tag: &Tag) -> Parsed<Value> {
         let mut value: Option<Text> = None;
         if !tag.empty {
             loop {
@@ -184,12 +184,12 @@ impl<'a> Tokenizer<'a> {
     fn joined(&self, first: &mut Text, second: &Text) -> Resolved {
         let mut joined = first.resolved.take().unwrap_or_else(|| {
             let mut whole = Resolved::default();
-            whole.push(self.source.slice(first.at, first.end), first.at);
+            whole.push(self.window.slice(first.at, first.end), first.at);
             whole
         });
         match &second.resolved {
             Some(resolved) => joined.append(resolved, second.at),
-            None => joined.push(self.source.slice(second.at, second.end), second.at),
+            None => joined.push(self.window.slice(second.at, second.end), second.at),
         }
         joined
     }
@@ -211,7 +211,7 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let at = self.pos;
-        let mark = self.index.next(self.source.text().as_bytes(), self.source.base())?;
+        let mark = self.index.next(self.window.text(), self.window.base())?;
         let len = mark.at - at;
         let rest = self.rest(at);
         if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
@@ -235,10 +235,10 @@ impl<'a> Tokenizer<'a> {
         &mut self,
         tag: &Tag,
         convert: impl FnOnce(&str) -> Result<T, Finding>,
-    ) -> Reading<Result<(T, usize), Problem>> {
+    ) -> Parsed<Result<(T, usize), Problem>> {
         // The usual value converted where it is written, without a Value to carry it.
         if let Some((at, end)) = self.plain_span(tag) {
-            return Ok(match convert(self.source.slice(at, end)) {
+            return Ok(match convert(self.window.slice(at, end)) {
                 Ok(v) => Ok((v, at)),
                 Err(e) => {
                     let value = Value { text: Text { at, end, resolved: None }, at };
@@ -369,7 +369,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Skips `tag` and everything inside it.
-    pub fn skip(&mut self, tag: &Tag) -> Reading<()> {
+    pub fn skip(&mut self, tag: &Tag) -> Parsed<()> {
         if tag.empty {
             return Ok(());
         }

@@ -1,7 +1,6 @@
 use super::*;
 use crate::error::{Code, Position};
 use crate::place::Spot;
-use crate::scan::Scanner;
 use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 
 /// What a read on one thread, or on two with the pieces and the helper's first piece of
@@ -10,9 +9,13 @@ use crate::scene::{Body, Fixture, Joint, Scene, Shape, Str};
 fn outcome(bytes: &[u8], options: &LoadOptions, split: Option<(Vec<Boundary>, usize)>) -> String {
     let threads = if split.is_some() { 2 } else { 1 };
     let options = &LoadOptions { threads, ..*options };
-    match Source::memory(bytes, options) {
-        Ok(source) => shown(super::super::read_split(source, options, false, split).0),
-        Err(e) => format!("{e:?}"),
+    let source = match Source::memory(bytes, options) {
+        Ok(source) => source,
+        Err(e) => return format!("{e:?}"),
+    };
+    match (split, source.shared()) {
+        (Some(split), Some(text)) => shown(read(source, text, options, Some(split)).0),
+        _ => shown(read_whole(source, options, false).0),
     }
 }
 
@@ -73,17 +76,16 @@ fn tags(bytes: &[u8]) -> impl Iterator<Item = usize> + '_ {
     memchr::memchr_iter(b'<', bytes)
 }
 
-/// Where pieces may begin: every item the scan finds in a container.
+/// Where pieces may begin: every start tag that names a container's item, in the
+/// container it names, wherever it is (every item, and more).
 fn container_items(bytes: &[u8]) -> Vec<Boundary> {
-    let text = Pieces::Memory { text: std::str::from_utf8(bytes).unwrap_or_default(), bom: false };
-    let mut scanner = Scanner::new();
-    scanner.scan(bytes, 0);
-    let mut parent = None;
-    scanner
-        .take_items()
-        .into_iter()
-        .filter_map(|item| in_container(&text, item, &mut parent, &mut Vec::new()))
-        .collect()
+    let named = |at: usize| Container::ALL.into_iter().find(|c| names(&bytes[at + 1..], c.item()));
+    tags(bytes).filter_map(|at| Some((at, named(at)?))).collect()
+}
+
+/// The text `text` in memory, shared.
+fn memory(text: &str) -> Shared<'_> {
+    Shared::Memory { text, bom: false }
 }
 
 #[test]
@@ -91,8 +93,7 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
     for (bodies, pieces) in [(100, 2), (30_000, 4), (1_000_000, MAX_PIECES)] {
         let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(bodies));
-        let found =
-            boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
+        let found = boundaries(&memory(&text), &mut Vec::new());
         assert_eq!(found.len(), pieces - 1, "{bodies} bodies");
         let step = text.len() / pieces;
         for (k, &(at, container)) in (1..).zip(&found) {
@@ -101,45 +102,16 @@ fn pieces_begin_at_the_first_item_from_every_step_on() {
             assert!(at >= step * k && at - step * k <= body.len(), "piece {k} at {at}");
         }
     }
-    assert_eq!(
-        boundaries(
-            &Pieces::Memory { text: "<World><Bodies></Bodies></World>", bom: false },
-            || true,
-            &mut Vec::new()
-        ),
-        []
-    );
+    assert_eq!(boundaries(&memory("<World><Bodies></Bodies></World>"), &mut Vec::new()), []);
 }
 
-/// The scan goes on only while its pieces are wanted (the calling thread, done with its
-/// reading, waits for the helper): it looks at the next window only when asked.
+/// A piece begins where an item's start tag follows the end tag of another, a guess the
+/// reading settles: a body in a comment, in CDATA, in a quoted value or in UserData, or in
+/// an element that is not a container, is looked at like any other, and a piece cut there
+/// is not taken; nor one right after a comment, CDATA or a processing instruction, which
+/// goes with the item after it. However the pieces fall, the load is one thread's.
 #[test]
-fn the_scan_stops_when_its_pieces_are_no_longer_wanted() {
-    let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
-    let text = format!("<World Version=\"1\"><Bodies>{}</Bodies></World>", body.repeat(100_000));
-    let text = Pieces::Memory { text: &text, bom: false };
-    assert_eq!(boundaries(&text, || false, &mut Vec::new()), []);
-    // Wanted for two windows: asked a third time, and no piece found, the first lying
-    // past them.
-    let asked = std::cell::Cell::new(0);
-    let found = boundaries(
-        &text,
-        || {
-            asked.set(asked.get() + 1);
-            asked.get() <= 2
-        },
-        &mut Vec::new(),
-    );
-    assert_eq!(asked.get(), 3);
-    assert_eq!(found, []);
-    assert_eq!(boundaries(&text, || true, &mut Vec::new()).len(), 14);
-}
-
-/// Only an item is where a piece begins: not a body in a comment, in CDATA, in a quoted
-/// value or in UserData, nor one in an element that is not a container; nor one right after
-/// a comment, CDATA or a processing instruction, which a reading cannot stop before.
-#[test]
-fn pieces_begin_only_at_items() {
+fn pieces_begin_after_an_item_and_wrong_guesses_are_not_taken() {
     // Each piece of text, and whether a piece may begin at it.
     let items = [
         ("<!-- </Body><Body> -->", false),
@@ -163,11 +135,22 @@ fn pieces_begin_only_at_items() {
         }
     }
     text += "</Bodies></World>";
-    let found = boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
+    let found = boundaries(&memory(&text), &mut Vec::new());
     assert_eq!(found.len(), 3);
     for &(at, container) in &found {
         assert_eq!(container, Container::Bodies);
-        assert!(starts.binary_search(&at).is_ok(), "a piece at {at}: {}", &text[at..at + 20]);
+        assert!(text[..at].trim_end().ends_with("</Body>"), "{}", &text[at - 20..at + 20]);
+    }
+    let options = LoadOptions::default();
+    let expected = outcome(text.as_bytes(), &options, None);
+    let inner = text.find("<Body/><Body/></UserData>").unwrap() + "<Body/>".len();
+    let comment = text.find("</Body><Body> -->").unwrap() + "</Body>".len();
+    let wrong = [(inner, Container::Bodies), (comment, Container::Bodies)];
+    for split in [found.clone(), wrong.to_vec(), vec![(starts[8], Container::Bodies)]] {
+        for helped in 0..=split.len() {
+            let got = outcome(text.as_bytes(), &options, Some((split.clone(), helped)));
+            assert_same(&got, &expected, format_args!("pieces at {split:?}, helped from {helped}"));
+        }
     }
 }
 
@@ -256,12 +239,12 @@ fn changed_files_load_as_one_thread_reads_them() {
     }
 }
 
-/// A reading stops before an item only where a reading that goes on from there reads
-/// what it would have read: directly in the container assumed, with nothing read
-/// waiting. Elsewhere it reads on to the next end, past the last to the end of the
-/// text; from memory and from a path (whose text at hand is a window) alike.
+/// A piece is read to its end only where a reading that goes on from there reads what it
+/// would have read: directly in a container, with nothing read waiting; and it is taken
+/// only where the next piece was read in that container. From memory and from a file
+/// (whose pieces are placed as they are read) alike.
 #[test]
-fn a_reading_ends_before_an_item_only_where_another_can_go_on() {
+fn a_piece_ends_before_an_item_only_where_another_can_go_on() {
     let bodies = [
         // An item after its twin inside UserData, which is kept verbatim.
         "<Body Type=\"Static\"><UserData><Body/>\n<Body/></UserData></Body>\n",
@@ -272,46 +255,62 @@ fn a_reading_ends_before_an_item_only_where_another_can_go_on() {
         "<Body Type=\"Static\"/>\n",
         "<Body Type=\"Static\"/>\n",
     ];
-    // A prolog longer than a window, so that a path's ends lie past its first one.
+    // A prolog of many lines.
     let text = format!(
         "<!--{}-->\n<World Version=\"1\"><Shapes /><Fixtures /><Bodies>{}</Bodies><Joints /></World>",
-        " ".repeat(100_000),
+        " \n".repeat(1_000),
         bodies.concat()
     );
     let at: Vec<usize> = text.match_indices("<Body Type").map(|(at, _)| at).collect();
     let inner = text.find("<Body/>\n<Body/>").unwrap() + "<Body/>\n".len();
-    let name = |container: Container| Name::new(container.name());
-    let ends = vec![
-        (inner, name(Container::Bodies)),
-        (at[1], name(Container::Bodies)),
-        (at[2], name(Container::Shapes)),
-        (at[3], name(Container::Bodies)),
-        (at[4], name(Container::Bodies)),
-    ];
     let options = LoadOptions::default();
     let file = std::env::temp_dir().join(format!("box2scene-ends-{}.xml", std::process::id()));
     std::fs::write(&file, &text).unwrap();
     for from_path in [false, true] {
-        let source = match from_path {
-            false => Source::memory(text.as_bytes(), &options).unwrap(),
-            true => Source::path(&file, &options).unwrap(),
+        let shared = match from_path {
+            false => memory(&text),
+            true => {
+                Shared::File { file: std::fs::File::open(&file).unwrap(), bom: 0, len: text.len() }
+            }
         };
-        let mut reader = Reader::new(Tokenizer::new(source, &options), false);
-        reader.tok.end_before(ends.clone());
-        let mut seen = Seen::default();
-        let mut read = reader.document(&mut seen);
-        let mut stops = Vec::new();
-        while matches!(read, Err(Halt::PieceEnd)) {
-            let end = reader.tok.pass_end();
-            stops.push((end, reader.tok.position(), reader.arena.scene.bodies.len()));
-            let (root, tag) = reader.tok.open_item().unwrap();
-            read = reader.document_from_item((&root, &tag), Container::Bodies, &mut seen);
+        let mut buffer = Vec::new();
+        let root = root(&shared, &options, at[0], &mut buffer).unwrap();
+        let first = |to: usize| Piece { from: 0, to, container: None };
+        let fresh = || Arena::new(false, false);
+        let mut read = |piece: &Piece| {
+            read_piece(&shared, &mut buffer, &options, (&root, piece), fresh(), None)
+        };
+        let ended: Vec<_> = [inner, at[1], at[2], at[3], at[4]]
+            .map(|end| read(&first(end)).map(|(_, ended)| ended.container))
+            .into();
+        let bodies = Some(Container::Bodies);
+        assert_eq!(ended, [None, None, Some(bodies), Some(bodies), Some(bodies)], "{from_path}");
+        let cut = |ends: [Boundary; 2]| pieces(&ends, text.len()).unwrap();
+        for (assumed, taken) in [(Container::Bodies, true), (Container::Shapes, false)] {
+            let pieces = cut([(at[2], assumed), (at[4], Container::Bodies)]);
+            let mut done: Vec<_> = pieces.iter().map(&mut read).collect();
+            // Each item read once, where every piece is read.
+            let elements: Option<u64> =
+                done.iter().map(|d| d.as_ref().map(|(_, ended)| ended.elements)).sum();
+            assert_eq!(elements, taken.then_some(1 + 4 + 1 + 2 + 5), "{from_path}, {assumed:?}");
+            // The first piece the calling thread's, the others the second thread's, as sent.
+            let mine = done.remove(0).map(|(arena, ended)| (arena, vec![ended]));
+            let theirs =
+                (1..pieces.len()).zip(done).map(|(k, d)| d.map(|(a, e)| (k, a, e))).rev().collect();
+            let arena = mine.and_then(|mine| merged(mine, theirs, &pieces, &shared, &options));
+            assert_eq!(arena.is_some(), taken, "{from_path}, {assumed:?}");
+            if let Some(arena) = arena {
+                assert_eq!(arena.scene.bodies.len(), 5);
+                // The last body begins line 1,007, in a piece that begins on line 1,006.
+                let last = match from_path {
+                    false => Spot::offset(at[4]),
+                    true => {
+                        Spot::placed(Position { line: 1007, column: 1, byte_offset: at[4] as u64 })
+                    }
+                };
+                assert_eq!(arena.origins.bodies.iter().last(), Some(last), "{from_path}");
+            }
         }
-        assert!(read.is_ok(), "from a path: {from_path}");
-        assert_eq!(stops, [(3, at[3], 3), (4, at[4], 4)], "from a path: {from_path}");
-        assert_eq!(reader.arena.scene.bodies.len(), 5);
-        // Each item after an end was read once.
-        assert_eq!(reader.tok.elements(), 1 + 4 + 1 + 2 + 5);
     }
     std::fs::remove_file(&file).unwrap();
 }
@@ -400,7 +399,7 @@ fn a_large_scene_loads_on_two_threads_as_on_one() {
     text += "</Joints></World>";
     let bytes = text.as_bytes();
     assert!(bytes.len() >= MIN_BYTES, "{} bytes", bytes.len());
-    let pieces = boundaries(&Pieces::Memory { text: &text, bom: false }, || true, &mut Vec::new());
+    let pieces = boundaries(&memory(&text), &mut Vec::new());
     assert_eq!(pieces.len(), bytes.len() / PIECE_BYTES - 1);
     let containers: Vec<_> = pieces.iter().map(|&(_, c)| c).collect();
     for container in Container::ALL {
@@ -432,8 +431,9 @@ fn a_large_scene_loads_on_two_threads_as_on_one() {
     }
 }
 
-/// The helper's pieces are used where the assumptions hold: given a text with one more
-/// body at the end than the calling thread's, that thread ends with it.
+/// The second thread's pieces are used where the assumptions hold: given a text with one
+/// more body at the end than the one the calling thread would read alone, the load ends
+/// with it, its origin placed where it is.
 #[test]
 fn the_calling_thread_takes_what_the_helper_read() {
     let scene = |bodies: usize| {
@@ -451,22 +451,19 @@ fn the_calling_thread_takes_what_the_helper_read() {
     for in_file in [false, true] {
         for first in 0..2 {
             let source = Source::memory(mine.as_bytes(), &options).unwrap();
-            let mut reader = Reader::new(Tokenizer::new(source, &options), false);
             let second = match in_file {
-                false => Pieces::Memory { text: &theirs, bom: false },
+                false => memory(&theirs),
                 true => {
                     let file = std::fs::File::open(&file).unwrap();
-                    Pieces::File { file, bom: 0, len: theirs.len() }
+                    Shared::File { file, bom: 0, len: theirs.len() }
                 }
             };
             let pieces = vec![(starts[1], Container::Bodies), (starts[2], Container::Bodies)];
-            std::thread::scope(|scope| {
-                let helper = start(scope, second, &options, Some((pieces, first)));
-                read(&mut reader, helper).unwrap();
-            });
+            let (Ok(arena), _) = read(source, second, &options, Some((pieces, first))) else {
+                panic!("the pieces read")
+            };
             let what = format!("helped from piece {first}, from a file: {in_file}");
-            assert_eq!(reader.arena.scene.bodies.len(), 4, "{what}");
-            assert_eq!(reader.tok.elements(), 4 + 4 * 2 + 1, "{what}");
+            assert_eq!(arena.scene.bodies.len(), 4, "{what}");
             // A piece read from a file is placed as it is read (the text is one line).
             let last = theirs.rfind("<Body ").unwrap();
             let last = match in_file {
@@ -477,7 +474,7 @@ fn the_calling_thread_takes_what_the_helper_read() {
                     byte_offset: last as u64,
                 }),
             };
-            assert_eq!(reader.arena.origins.bodies.iter().last(), Some(last), "{what}");
+            assert_eq!(arena.origins.bodies.iter().last(), Some(last), "{what}");
         }
     }
     std::fs::remove_file(&file).unwrap();
@@ -500,15 +497,12 @@ fn pieces_with_warnings_are_taken_and_kept_in_order() {
     let starts: Vec<_> = mine.match_indices("<Body ").map(|(at, _)| at).collect();
     let options = LoadOptions::default();
     let source = Source::memory(mine.as_bytes(), &options).unwrap();
-    let mut reader = Reader::new(Tokenizer::new(source, &options), false);
-    // One piece: the helper's text matches the caller's up to its start.
+    // One piece: the second thread's text matches the calling thread's up to its start.
     let pieces = vec![(starts[2], Container::Bodies)];
-    std::thread::scope(|scope| {
-        let theirs = Pieces::Memory { text: &theirs, bom: false };
-        let helper = start(scope, theirs, &options, Some((pieces, 0)));
-        read(&mut reader, helper).unwrap();
-    });
-    let warnings = reader.arena.findings.take_warnings();
+    let (Ok(mut arena), _) = read(source, memory(&theirs), &options, Some((pieces, 0))) else {
+        panic!("the pieces read")
+    };
+    let warnings = arena.findings.take_warnings();
     let wind: Vec<_> = theirs.match_indices("<Wind/>").map(|(at, _)| at).collect();
     let found: Vec<_> = warnings.iter().map(|w| (w.code, w.at)).collect();
     assert_eq!(found, wind.iter().map(|&at| (Code::UnknownElement, at)).collect::<Vec<_>>());
@@ -539,37 +533,69 @@ fn pieces_with_warnings_are_taken_and_kept_in_order() {
 #[test]
 fn every_piece_cut_at_the_found_items_can_be_taken() {
     let body = "<Body Type=\"Static\"><Fixtures /></Body>\n";
-    let mut text = String::from("<World Version=\"1\"><Bodies>\n");
+    let mut text_of = String::from("<World Version=\"1\"><Bodies>\n");
     for i in 0..40_000 {
-        text += body;
+        text_of += body;
         if i % 7 == 0 {
-            text += "<!-- a comment between bodies -->\n";
+            text_of += "<!-- a comment between bodies -->\n";
         }
     }
-    text += "</Bodies><Joints>";
+    text_of += "</Bodies><Joints>";
     for i in 0..20_000 {
-        text += "<!-- joints -->\n<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>\n";
+        text_of +=
+            "<!-- joints -->\n<Joint Type=\"Weld\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint>\n";
         if i % 3 == 0 {
-            text += "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>0</BodyB></Joint>\n";
+            text_of += "<Joint Type=\"Weld\"><BodyA>1</BodyA><BodyB>0</BodyB></Joint>\n";
         }
     }
-    text += "</Joints></World>";
-    let pieces = Pieces::Memory { text: &text, bom: false };
-    let found = boundaries(&pieces, || true, &mut Vec::new());
+    text_of += "</Joints></World>";
+    let text = memory(&text_of);
+    let found = boundaries(&text, &mut Vec::new());
     assert!(found.len() >= 8, "{} pieces", found.len());
     assert!(found.iter().any(|&(_, container)| container == Container::Joints));
     let options = LoadOptions::default();
     let mut buffer = Vec::new();
-    let (root, version) = root(&pieces, &options, found[0].0, &mut buffer).unwrap();
-    for (i, &boundary) in found.iter().enumerate() {
-        let end = found.get(i + 1).copied();
-        let source = pieces.source(boundary.0, end.map_or(text.len(), |(at, _)| at), &mut buffer);
-        let done = source.and_then(|s| read_piece(s, &options, &root, version, boundary, end));
-        assert!(
-            done.is_some(),
-            "piece {i} at {}: {}",
-            boundary.0,
-            &text[boundary.0 - 40..boundary.0]
-        );
+    let root = root(&text, &options, found[0].0, &mut buffer).unwrap();
+    let pieces = pieces(&found, text_of.len()).unwrap();
+    for (i, piece) in pieces.iter().enumerate() {
+        let arena = Arena::new(false, false);
+        let done = read_piece(&text, &mut buffer, &options, (&root, piece), arena, None);
+        let at = piece.from;
+        assert!(done.is_some(), "piece {i} at {at}: {}", &text_of[at.saturating_sub(40)..at]);
     }
+}
+
+/// A large file from its path, with a byte-order mark and warnings in every piece, is read
+/// in pieces (the text the calling thread would read alone differs, and is not what the
+/// load gives) whose warnings and origins are placed as one thread reading the file places
+/// them.
+#[test]
+fn a_file_read_in_pieces_is_placed_as_one_thread_places_it() {
+    let body = |i: usize| {
+        let odd = if i % 3 == 0 { "\n      <Wind/>" } else { "" };
+        format!("    <Body Type=\"Static\">{odd}\n      <Position>{i} 0</Position>\n    </Body>\n")
+    };
+    let scene = |bodies: usize| {
+        let all: String = (0..bodies).map(body).collect();
+        format!(
+            "\u{FEFF}<World Version=\"1\">\n  <Shapes />\n  <Bodies>\n{all}  </Bodies>\n</World>\n"
+        )
+    };
+    let (mine, theirs) = (scene(20_000), scene(20_001));
+    let dir = std::env::temp_dir();
+    let file = |name: &str| dir.join(format!("box2scene-split-{name}-{}.xml", std::process::id()));
+    let (mine_file, theirs_file) = (file("mine"), file("theirs"));
+    std::fs::write(&mine_file, &mine).unwrap();
+    std::fs::write(&theirs_file, &theirs).unwrap();
+    let options = LoadOptions::default();
+    let one = LoadOptions { threads: 1, ..options };
+    let expected = shown(read_whole(Source::path(&theirs_file, &one).unwrap(), &one, false).0);
+    assert!(expected.contains("UnknownElement"), "{}", &expected[..200]);
+    let source = Source::path(&mine_file, &options).unwrap();
+    let len = theirs.len() - 3;
+    let text = Shared::File { file: std::fs::File::open(&theirs_file).unwrap(), bom: 3, len };
+    let got = shown(read(source, text, &options, None).0);
+    std::fs::remove_file(&mine_file).unwrap();
+    std::fs::remove_file(&theirs_file).unwrap();
+    assert_same(&got, &expected, format_args!("a file read in pieces"));
 }
