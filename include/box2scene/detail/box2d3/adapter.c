@@ -6,6 +6,7 @@
  * B2S_BOX2D32_IMPLEMENTATION; CMake's box2scene::box2d3 and box2scene::box2d32 targets
  * compile it (cmake/box2d3.c, cmake/box2d32.c). It is cut as Box2D cuts its own sources, so
  * that a fix in one concept is found by file name:
+ *   hooks.h     what a version's header defines (v31.h, v32.h), declared once
  *   reports.c   the reports, and the checks of the working range they come from
  *   world.c     the world def, the placement, one build from start to end
  *   shapes.c    a scene shape as v3 geometry, and the shapes a fixture makes of it
@@ -28,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hooks.h"
 #include "reports.c"
 #include "world.c"
 #include "shapes.c"
