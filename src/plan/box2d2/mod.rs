@@ -3,10 +3,6 @@
 //! spring's stiffness, where a joint starts) is the engine's to the bit, and the mapping of
 //! a scene onto its definitions.
 
-// The checks keep the adapters' negated comparisons: a NaN fails every one of them, as it
-// fails the engine's.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
-
 mod bodies;
 mod body;
 mod body_mass;
