@@ -78,6 +78,8 @@ class NativePlanShape:
     mask_bits: int
     group_index: int
     is_sensor: bool
+    name: Optional[str]
+    fixture_is_sensor: bool
 
 class NativePlanBody:
     body: int
@@ -107,6 +109,7 @@ class NativePlanBody:
 
 class NativePlanJoint:
     joint: int
+    name: Optional[str]
     kind: str
     body_a: int
     body_b: int
@@ -147,6 +150,10 @@ class NativePlan:
     joints: Tuple[NativePlanJoint, ...]
     reports: Tuple[Tuple[str, str, int, Optional[str], str], ...]
     placed: bool
+    body_count: int
+    slot_count: int
+    joint_count: int
+    has_sensor: bool
 
 def make_plan(
     scene: NativeScene,

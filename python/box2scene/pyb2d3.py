@@ -120,25 +120,23 @@ def _body_def(body) -> b2.BodyDef:
 
 class _Build:
     def __init__(self, scene: Scene, world: b2.World, plan):
-        self.scene = scene
         self.world = world
-        slots = len(scene.fixture_ids)
+        self.has_sensor = plan.has_sensor
         reports = [Report(*r) for r in plan.reports]
-        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * slots, [None] * len(scene.joints), reports, _scene=scene)
+        slots = [None] * plan.slot_count
+        self.built = Built([None] * plan.body_count, slots, list(slots), [None] * plan.joint_count, reports, _scene=scene)
         self.rotations: Dict[int, Tuple[float, float]] = {}
-        self.has_sensor = any(f.is_sensor for f in scene.fixtures)
 
     def report_chain_sensor(self, shape, body: int) -> None:
         """pyb2d3's chain def has no ``enableSensorEvents``: the scene's sensors do not see
         its chains (a sensor chain itself the plan reports)."""
-        fixture = self.scene.fixtures[shape.fixture]
-        if self.has_sensor and not fixture.is_sensor:
+        if self.has_sensor and not shape.fixture_is_sensor:
             self.built.reports.append(
                 Report(
                     "lossy-shape",
                     "fixture",
                     shape.fixture,
-                    fixture.name,
+                    shape.name,
                     f"fixture {shape.fixture} of body {body}: pyb2d3's chains cannot turn on sensor events, so the scene's sensors do not see this chain",
                 )
             )
@@ -199,7 +197,7 @@ class _Build:
         a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
         kind = j.kind
         # What capture reads back that pyb2d3 cannot give: as the build passed it.
-        record = {"collide_connected": j.collide_connected, "name": self.scene.joints[j.joint].name}
+        record = {"collide_connected": j.collide_connected, "name": j.name}
         if kind == "revolute":
             d = b2.RevoluteJointDef()
             d.local_anchor_a, d.local_anchor_b, d.reference_angle = j.anchor_a, j.anchor_b, j.reference_angle

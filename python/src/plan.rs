@@ -35,6 +35,10 @@ pub struct NativePlanShape {
     mask_bits: u32,
     group_index: i16,
     is_sensor: bool,
+    /// The scene fixture's Name.
+    name: Option<String>,
+    /// The scene fixture's IsSensor (a sensor chain the plan makes solid, and reports).
+    fixture_is_sensor: bool,
 }
 
 /// One body to create, its shapes, and the mass and velocity to give it after them.
@@ -71,6 +75,8 @@ pub struct NativePlanBody {
 #[pyclass(frozen, get_all, module = "box2scene._native")]
 pub struct NativePlanJoint {
     joint: u32,
+    /// The scene joint's Name.
+    name: Option<String>,
     /// "revolute", "prismatic", "distance", "pulley", "gear", "wheel", "weld", "friction",
     /// "motor" or "rope".
     kind: &'static str,
@@ -110,13 +116,19 @@ pub struct NativePlanJoint {
 }
 
 /// A plan: `bodies` and `joints` in the order to create them, `reports` as
-/// (code, object, index, name, message) tuples in the order the plan met them.
+/// (code, object, index, name, message) tuples in the order the plan met them; the counts of
+/// the scene's bodies, fixture slots and joints, which a builder's results are indexed by.
 #[pyclass(frozen, get_all, module = "box2scene._native")]
 pub struct NativePlan {
     bodies: Py<PyTuple>,
     joints: Py<PyTuple>,
     reports: Py<PyTuple>,
     placed: bool,
+    body_count: usize,
+    slot_count: usize,
+    joint_count: usize,
+    /// Whether a fixture of the scene is a sensor.
+    has_sensor: bool,
 }
 
 fn shape_kind(kind: u32) -> &'static str {
@@ -146,7 +158,8 @@ fn joint_kind(kind: u32) -> &'static str {
     }
 }
 
-fn shape(plan: &Plan, s: &PlanShape) -> NativePlanShape {
+fn shape(scene: &Scene, plan: &Plan, s: &PlanShape) -> NativePlanShape {
+    let fixture = scene.fixtures().get(s.fixture as usize);
     NativePlanShape {
         slot: s.slot,
         fixture: s.fixture,
@@ -162,6 +175,8 @@ fn shape(plan: &Plan, s: &PlanShape) -> NativePlanShape {
         mask_bits: s.filter.mask_bits,
         group_index: s.filter.group_index,
         is_sensor: s.is_sensor,
+        name: fixture.and_then(|f| scene.text(f.name)).map(str::to_owned),
+        fixture_is_sensor: fixture.is_some_and(|f| f.is_sensor),
     }
 }
 
@@ -178,7 +193,7 @@ fn body_name(scene: &Scene, b: &PlanBody) -> Option<String> {
 fn body(py: Python<'_>, scene: &Scene, plan: &Plan, b: &PlanBody) -> PyResult<NativePlanBody> {
     let shapes = plan.shapes().get(b.shapes.indices()).unwrap_or(&[]);
     let shapes =
-        shapes.iter().map(|s| Py::new(py, shape(plan, s))).collect::<PyResult<Vec<_>>>()?;
+        shapes.iter().map(|s| Py::new(py, shape(scene, plan, s))).collect::<PyResult<Vec<_>>>()?;
     Ok(NativePlanBody {
         body: b.body,
         kind: b.kind,
@@ -207,9 +222,11 @@ fn body(py: Python<'_>, scene: &Scene, plan: &Plan, b: &PlanBody) -> PyResult<Na
     })
 }
 
-fn joint(j: &PlanJoint) -> NativePlanJoint {
+fn joint(scene: &Scene, j: &PlanJoint) -> NativePlanJoint {
+    let name = scene.joints().get(j.joint as usize).and_then(|s| scene.text(s.name));
     NativePlanJoint {
         joint: j.joint,
+        name: name.map(str::to_owned),
         kind: joint_kind(j.kind),
         body_a: j.body_a,
         body_b: j.body_b,
@@ -299,11 +316,15 @@ pub fn make(py: Python<'_>, scene: &Scene, options: &PlanOptions) -> Result<Nati
         .map(|b| Py::new(py, body(py, scene, &plan, b)?))
         .collect::<PyResult<Vec<_>>>()?;
     let joints =
-        plan.joints().iter().map(|j| Py::new(py, joint(j))).collect::<PyResult<Vec<_>>>()?;
+        plan.joints().iter().map(|j| Py::new(py, joint(scene, j))).collect::<PyResult<Vec<_>>>()?;
     Ok(NativePlan {
         bodies: PyTuple::new(py, bodies)?.unbind(),
         joints: PyTuple::new(py, joints)?.unbind(),
         reports: PyTuple::new(py, reports(&plan))?.unbind(),
         placed: plan.placed(),
+        body_count: scene.bodies().len(),
+        slot_count: scene.fixture_id_pool().len(),
+        joint_count: scene.joints().len(),
+        has_sensor: scene.fixtures().iter().any(|f| f.is_sensor),
     })
 }
