@@ -159,6 +159,38 @@ def distance(h):
     h.world.create_distance_joint(d)
 
 
+def rope(h):
+    ground = h.body(b2.BodyType.STATIC)
+    box = h.body(b2.BodyType.DYNAMIC, 2.0, 5.0)
+    add_polygon(box, BOX)
+    # Slack up to MaxLength: a spring of 0 Hz with its upper limit on.
+    d = joined(b2.DistanceJointDef(), ground, box, local_anchor_a=(0.0, 5.0), length=3.0)
+    d.enable_spring, d.hertz = True, 0.0
+    d.enable_limit, d.min_length, d.max_length = True, 0.0, 3.0
+    h.world.create_distance_joint(d)
+
+
+def line(h):
+    ground = h.body(b2.BodyType.STATIC)
+    box = h.body(b2.BodyType.DYNAMIC, 0.0, 2.0, linear_velocity=(3.0, 0.0))
+    add_polygon(box, BOX)
+    # Box2D 2.1's line joint: a wheel joint without its spring.
+    d = joined(b2.WheelJointDef(), ground, box, local_anchor_a=(0.0, 2.0), local_axis_a=(1.0, 0.0))
+    d.enable_spring = False
+    d.enable_limit, d.lower_translation, d.upper_translation = True, -1.0, 2.0
+    h.world.create_wheel_joint(d)
+
+
+def friction(h):
+    h.world.gravity = (0.0, 0.0)
+    ground = h.body(b2.BodyType.STATIC)
+    puck = h.body(b2.BodyType.DYNAMIC, linear_velocity=(4.0, 1.0), angular_velocity=3.0)
+    add_polygon(puck, BOX)
+    # A motor joint that holds no offset.
+    d = joined(b2.MotorJointDef(), ground, puck, linear_offset=(0.0, 0.0), angular_offset=0.0, correction_factor=0.0, max_force=2.0, max_torque=0.5)
+    h.world.create_motor_joint(d)
+
+
 def weld(h):
     ground = h.body(b2.BodyType.STATIC)
     soft, rigid = h.body(b2.BodyType.DYNAMIC, 0.0, 5.0), h.body(b2.BodyType.DYNAMIC, 0.0, 2.0, 0.1)
@@ -188,7 +220,10 @@ SCENES = {
     "mass_data": mass_data_scene,
     "revolute": revolute,
     "distance": distance,
+    "rope": rope,
+    "line": line,
     "weld": weld,
+    "friction": friction,
     "motor": motor,
 }
 

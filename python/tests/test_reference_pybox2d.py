@@ -106,6 +106,22 @@ def distance(h):
     h.world.CreateJoint(B.b2DistanceJointDef(bodyA=ground_body, bodyB=spring_ball, localAnchorA=(6.0, 6.0), length=2.0, frequencyHz=2.0, dampingRatio=0.3))
 
 
+def rope(h):
+    ground_body = h.body(STATIC)
+    box = h.body(DYNAMIC, 2.0, 5.0)
+    fixture(box, B.b2PolygonShape(vertices=BOX), 1.0)
+    # Box2D 2.3's own rope joint.
+    h.world.CreateJoint(B.b2RopeJointDef(bodyA=ground_body, bodyB=box, localAnchorA=(0.0, 5.0), localAnchorB=(0.0, 0.0), maxLength=3.0))
+
+
+def friction(h):
+    h.world.gravity = (0.0, 0.0)
+    ground_body = h.body(STATIC)
+    puck = h.body(DYNAMIC, linearVelocity=(4.0, 1.0), angularVelocity=3.0)
+    fixture(puck, B.b2PolygonShape(vertices=BOX), 1.0)
+    h.world.CreateJoint(B.b2FrictionJointDef(bodyA=ground_body, bodyB=puck, maxForce=2.0, maxTorque=0.5))
+
+
 def weld(h):
     ground_body = h.body(STATIC)
     soft, rigid = h.body(DYNAMIC, 0.0, 5.0), h.body(DYNAMIC, 0.0, 2.0, 0.1)
@@ -129,7 +145,9 @@ SCENES = {
     "mass_data": mass_data_scene,
     "revolute": revolute,
     "distance": distance,
+    "rope": rope,
     "weld": weld,
+    "friction": friction,
     "motor": motor,
 }
 
