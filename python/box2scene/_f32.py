@@ -1,8 +1,9 @@
-"""Single-precision arithmetic as the engines' C code does it, for the builders' values that
-must match the C adapters bit for bit: NumPy's float32 operations round as C's float ones,
-and the C library's own ``cosf``/``sinf`` (called by the extension) make a rotation from an
-angle as the C adapters do (NumPy's vectorised float32 cosine may differ from them in the
-last bit)."""
+"""Single-precision arithmetic as the engines' C code does it, for the captures, which read
+a world back into the values whose build gives its bits (a build computes nothing: the
+library's plan does): NumPy's float32 operations round as C's float ones, and the C
+library's own ``cosf``/``sinf``/``atan2f`` (called by the extension) turn angles and
+rotations into each other as the C adapters do (NumPy's vectorised float32 cosine may
+differ from them in the last bit)."""
 
 from __future__ import annotations
 
@@ -19,11 +20,6 @@ F = np.float32
 def f32(x: float) -> float:
     """``x`` rounded to the nearest float, as a Python float."""
     return float(F(x))
-
-
-def rotation(angle: float) -> Tuple[float, float]:
-    """The cosine and sine of ``angle``, as the C adapters make a rotation."""
-    return cosf(angle), sinf(angle)
 
 
 def ulps_away(x: float, steps: int) -> float:

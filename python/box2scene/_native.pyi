@@ -61,3 +61,104 @@ def sinf(x: float) -> float: ...
 def atan2f(y: float, x: float) -> float: ...
 def nextafterf(x: float, toward: float) -> float: ...
 def working_range(engine: str) -> Dict[str, Any]: ...
+def world_gravity(scene: NativeScene, engine: str) -> Optional[Vec2]: ...
+
+class NativePlanShape:
+    slot: int
+    fixture: int
+    shape: int
+    kind: str
+    points: List[Vec2]
+    center: Vec2
+    radius: float
+    density: float
+    friction: float
+    restitution: float
+    category_bits: int
+    mask_bits: int
+    group_index: int
+    is_sensor: bool
+    name: Optional[str]
+    fixture_is_sensor: bool
+
+class NativePlanBody:
+    body: int
+    kind: int
+    position: Vec2
+    angle: float
+    rotation: Vec2
+    linear_velocity: Vec2
+    angular_velocity: float
+    linear_damping: float
+    angular_damping: float
+    gravity_scale: float
+    name: Optional[str]
+    shapes: Tuple[NativePlanShape, ...]
+    mass: float
+    center: Vec2
+    inertia: float
+    velocity_after_mass: Vec2
+    allow_sleep: bool
+    awake: bool
+    fixed_rotation: bool
+    bullet: bool
+    enabled: bool
+    apply_mass_from_shapes: bool
+    set_mass: bool
+    set_velocity: bool
+
+class NativePlanJoint:
+    joint: int
+    name: Optional[str]
+    kind: str
+    body_a: int
+    body_b: int
+    joint_a: int
+    joint_b: int
+    anchor_a: Vec2
+    anchor_b: Vec2
+    axis: Vec2
+    reference_angle: float
+    ground_anchor_a: Vec2
+    ground_anchor_b: Vec2
+    length_a: float
+    length_b: float
+    ratio: float
+    lower: float
+    upper: float
+    length: float
+    min_length: float
+    max_length: float
+    motor_speed: float
+    max_motor: float
+    stiffness: float
+    damping: float
+    hertz: float
+    damping_ratio: float
+    linear_offset: Vec2
+    angular_offset: float
+    max_force: float
+    max_torque: float
+    correction_factor: float
+    collide_connected: bool
+    enable_limit: bool
+    enable_motor: bool
+    enable_spring: bool
+
+class NativePlan:
+    bodies: Tuple[NativePlanBody, ...]
+    joints: Tuple[NativePlanJoint, ...]
+    reports: Tuple[Tuple[str, str, int, Optional[str], str], ...]
+    placed: bool
+    body_count: int
+    slot_count: int
+    joint_count: int
+    has_sensor: bool
+
+def make_plan(
+    scene: NativeScene,
+    engine: str,
+    gravity: Vec2,
+    max_linear_speed: float = ...,
+    placement: Tuple[Vec2, Vec2] = ...,
+) -> NativePlan: ...

@@ -14,6 +14,8 @@ use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
+mod plan;
+
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
     ("circle", ShapeKind::Circle),
     ("polygon", ShapeKind::Polygon),
@@ -1019,6 +1021,18 @@ fn nextafterf(x: f32, toward: f32) -> f32 {
     }
 }
 
+/// The engine version a Python name means.
+fn engine_named(engine: &str) -> PyResult<box2scene::Engine> {
+    let Some((_, engine)) = ENGINES.iter().find(|(name, _)| *name == engine) else {
+        let names: Vec<&str> = ENGINES.iter().map(|(n, _)| *n).collect();
+        return Err(PyValueError::new_err(format!(
+            "unknown engine {engine:?} (one of {})",
+            names.join(", ")
+        )));
+    };
+    Ok(*engine)
+}
+
 const ENGINES: [(&str, box2scene::Engine); 4] = [
     ("box2d-2.3", box2scene::Engine::Box2d23),
     ("box2d-2.4", box2scene::Engine::Box2d24),
@@ -1031,14 +1045,7 @@ const ENGINES: [(&str, box2scene::Engine); 4] = [
 /// library holds them (f32, widened exactly).
 #[pyfunction]
 fn working_range<'py>(py: Python<'py>, engine: &str) -> PyResult<Bound<'py, PyDict>> {
-    let Some((_, engine)) = ENGINES.iter().find(|(name, _)| *name == engine) else {
-        let names: Vec<&str> = ENGINES.iter().map(|(n, _)| *n).collect();
-        return Err(PyValueError::new_err(format!(
-            "unknown engine {engine:?} (one of {})",
-            names.join(", ")
-        )));
-    };
-    let r = engine.working_range();
+    let r = engine_named(engine)?.working_range();
     let d = PyDict::new(py);
     for (name, value) in r.bounds() {
         d.set_item(name, f64::from(value))?;
@@ -1047,6 +1054,30 @@ fn working_range<'py>(py: Python<'py>, engine: &str) -> PyResult<Bound<'py, PyDi
     d.set_item("friction_at_anchors", r.friction_at_anchors)?;
     d.set_item("prismatic_lever_to_b", r.prismatic_lever_to_b)?;
     Ok(d)
+}
+
+/// The library's plan of `scene` for `engine` (a name of `working_range`), placed at
+/// `placement` ((x, y), (cos, sin)), in a world of `gravity` whose maximum linear speed is
+/// `max_linear_speed` (FLT_MAX where the engine has none).
+#[pyfunction]
+#[pyo3(signature = (scene, engine, gravity, max_linear_speed=f32::MAX, placement=((0.0, 0.0), (1.0, 0.0))))]
+fn make_plan(
+    py: Python<'_>,
+    scene: &NativeScene,
+    engine: &str,
+    gravity: (f32, f32),
+    max_linear_speed: f32,
+    placement: ((f32, f32), (f32, f32)),
+) -> PyResult<plan::NativePlan> {
+    let options = plan::options(engine_named(engine)?, placement, gravity, max_linear_speed);
+    plan::make(py, &scene.scene, &options)
+}
+
+/// The scene's gravity where `engine` holds it (within its working range), else None.
+#[pyfunction]
+fn world_gravity(scene: &NativeScene, engine: &str) -> PyResult<Option<(f32, f32)>> {
+    let gravity = box2scene::plan::world_gravity(&scene.scene, engine_named(engine)?);
+    Ok(gravity.map(|g| (g.x, g.y)))
 }
 
 #[pymodule]
@@ -1062,5 +1093,11 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(atan2f, m)?)?;
     m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
+    m.add_function(wrap_pyfunction!(make_plan, m)?)?;
+    m.add_function(wrap_pyfunction!(world_gravity, m)?)?;
+    m.add_class::<plan::NativePlan>()?;
+    m.add_class::<plan::NativePlanBody>()?;
+    m.add_class::<plan::NativePlanShape>()?;
+    m.add_class::<plan::NativePlanJoint>()?;
     Ok(())
 }

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import os
+import re
 
 import numpy as np
 
@@ -67,3 +69,20 @@ def growth_over(worlds: int, make_and_drop) -> int:
     for _ in range(worlds):
         make_and_drop()
     return resident_bytes() - before
+
+
+def fidelity_scene(root: str, name: str) -> str:
+    """The XML of reference scene ``name`` of c_tests/fidelity_scenes.h, the scenes the C and
+    C++ adapters are checked against worlds built by hand: its C string literals and the
+    header's FIDELITY_ macros joined."""
+    with open(os.path.join(root, "c_tests", "fidelity_scenes.h")) as f:
+        header = f.read()
+    literal = r'"((?:[^"\\]|\\.)*)"'
+    macros = {m.group(1): m.group(2) for m in re.finditer(r"#define (FIDELITY_\w+)((?:[^\n]*\\\n)*[^\n]*)", header)}
+
+    def text(source: str) -> str:
+        parts = re.finditer(literal + r"|(FIDELITY_\w+)", source)
+        return "".join(p.group(1).replace('\\"', '"') if p.group(1) is not None else text(macros[p.group(2)]) for p in parts)
+
+    start = header.index('{"%s",' % name) + len(name) + 4
+    return text(header[start : header.index('</World>"}', start) + len('</World>"')])

@@ -237,33 +237,47 @@ impl Mapper<'_> {
         let (v3, r) = (self.v3, self.range);
         let (violation, across) = self.starting_violation(joint);
         let wheel = is_wheel(joint);
+        // Between two dynamic bodies, the bound of the pair in radii of gyration, where
+        // the joint starts beyond it.
+        let thrown = match (self.dynamic_mass(joint.body_a), self.dynamic_mass(joint.body_b)) {
+            (Some(a), Some(b)) if wheel => {
+                let bound = r.max_wheel_violation_gyrations * gyration(&a).min(gyration(&b));
+                (across > r.linear_slop && !(across <= bound)).then_some(bound)
+            }
+            _ => None,
+        };
         if wheel && violation > r.max_wheel_violation {
+            // Where the pair's bound is passed too, the report names it as well.
+            let also = thrown.map_or(String::new(), |bound| {
+                format!(
+                    ", and it starts violated by {} m across its axis between two dynamic \
+                     bodies, beyond {} radii of gyration ({} m)",
+                    G9(across),
+                    G(r.max_wheel_violation_gyrations),
+                    G9(bound)
+                )
+            });
             check.fail(format_args!(
                 "it starts {} m from satisfied: a line or wheel joint further than {} m from \
-                 satisfied lies beyond {}'s working range (its solver flings the bodies apart)",
+                 satisfied lies beyond {}'s working range (its solver flings the bodies \
+                 apart){also}",
                 G9(violation),
                 G(r.max_wheel_violation),
                 v3.name()
             ));
             return;
         }
-        if wheel
-            && let (Some(a), Some(b)) =
-                (self.dynamic_mass(joint.body_a), self.dynamic_mass(joint.body_b))
-        {
-            let bound = r.max_wheel_violation_gyrations * gyration(&a).min(gyration(&b));
-            if across > r.linear_slop && !(across <= bound) {
-                check.fail(format_args!(
-                    "it starts violated by {} m across its axis between two dynamic bodies, \
-                     beyond {}'s working range (at most {} radii of gyration, {} m), where its \
-                     solver throws them off",
-                    G9(across),
-                    v3.name(),
-                    G(r.max_wheel_violation_gyrations),
-                    G9(bound)
-                ));
-                return;
-            }
+        if let Some(bound) = thrown {
+            check.fail(format_args!(
+                "it starts violated by {} m across its axis between two dynamic bodies, \
+                 beyond {}'s working range (at most {} radii of gyration, {} m), where its \
+                 solver throws them off",
+                G9(across),
+                v3.name(),
+                G(r.max_wheel_violation_gyrations),
+                G9(bound)
+            ));
+            return;
         }
         if !wheel && violation > r.max_violation {
             check.fail(format_args!(
@@ -378,6 +392,23 @@ mod tests {
         // v3.2 refuses it only between two dynamic bodies, in radii of gyration.
         let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &across);
         assert_eq!(plan.joints().len(), 1);
+    }
+
+    #[test]
+    fn a_wheel_far_from_satisfied_between_two_dynamic_bodies_names_both_bounds() {
+        // Ball 2's anchor lies 3 m off a vertical axis through ball 1: beyond the 0.5 m of
+        // any wheel and the pair's 4 radii of gyration.
+        let anchors = "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>-2 0</LocalAnchorB>";
+        let across = joint("Wheel", 1, 2, &format!("{anchors}<LocalAxisA>0 1</LocalAxisA>"));
+        let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &across);
+        assert!(plan.joints().is_empty());
+        assert_eq!(
+            messages(&plan)[0].3,
+            "it starts 3 m from satisfied: a line or wheel joint further than 0.5 m from \
+             satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
+             apart), and it starts violated by 3 m across its axis between two dynamic bodies, \
+             beyond 4 radii of gyration (1.41421354 m); joint not created"
+        );
     }
 
     #[test]
