@@ -201,7 +201,16 @@ pub enum PlanJointKind {
 }
 
 u32_enum_conversions!(PlanJointKind {
-    Revolute, Prismatic, Distance, Pulley, Gear, Wheel, Weld, Friction, Motor, Rope
+    Revolute,
+    Prismatic,
+    Distance,
+    Pulley,
+    Gear,
+    Wheel,
+    Weld,
+    Friction,
+    Motor,
+    Rope
 });
 
 /// One joint to create, every field its kind's def has in the engine version, in its units.

@@ -18,8 +18,10 @@ mod polygon;
 mod shape_mass;
 mod shapes;
 mod stiffness;
+mod version;
 mod world;
 
+pub(crate) use version::Version;
 pub(crate) use world::plan;
 
 #[cfg(test)]
