@@ -7,7 +7,7 @@ use super::stiffness::{Spring, linear, weld_spring, wheel_spring};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
-use crate::plan::printf::G9;
+use crate::plan::printf::{G, G9};
 use crate::plan::records::{PlanJoint, PlanJointKind};
 use crate::scene::{BodyKind, Joint, JointKind, NONE, Vec2};
 
@@ -406,7 +406,7 @@ impl Mapper<'_> {
                 "{}'s wheel joint without a spring reads uninitialised memory; a spring of {} \
                  Hz, undamped, stands in for none (about 1e-6 N s per metre and kg a step)",
                 self.version.name,
-                G9(stand_in)
+                G(stand_in)
             ),
         );
         PlanJoint { hertz: stand_in, damping_ratio: 0.0, ..def }

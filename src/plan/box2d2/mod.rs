@@ -26,3 +26,5 @@ pub(crate) use world::plan;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_23;
