@@ -141,7 +141,7 @@ impl Mapper<'_> {
         let (mut lower, mut upper) = (joint.lower_limit, joint.upper_limit);
         if lower > upper {
             // Only a disabled limit gets here (the loader refuses an enabled one), and Box2D
-            // 2.x's limit setter asserts against it all the same.
+            // asserts against it all the same (`inverted_limit_asserted_by`).
             std::mem::swap(&mut lower, &mut upper);
             self.report(
                 Code::BadLimit,
@@ -153,7 +153,7 @@ impl Mapper<'_> {
                      which {} asserts against; they were passed swapped",
                     G9(joint.lower_limit),
                     G9(joint.upper_limit),
-                    self.version.name
+                    self.version.inverted_limit_asserted_by
                 ),
             );
         }

@@ -171,3 +171,24 @@ fn only_the_16_filter_bits_2_x_holds_are_planned() {
     assert_eq!(reports(&plan)[0].0, Code::LossyFilter as u32);
     assert!(reports(&plan)[0].3.contains("above Box2D 2.3's 16 filter bits"));
 }
+
+#[test]
+fn a_disabled_inverted_prismatic_limit_is_swapped_as_2_3_s_set_limits_wants_it() {
+    let plan = plan(&with_joints(
+        "<Joint Type=\"Prismatic\"><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>4 1\
+         </LocalAnchorA><LowerTranslation>2</LowerTranslation><UpperTranslation>1\
+         </UpperTranslation></Joint>",
+    ));
+    assert_eq!((plan.joints()[0].lower, plan.joints()[0].upper), (1.0, 2.0));
+    assert_eq!(
+        reports(&plan),
+        vec![(
+            Code::BadLimit as u32,
+            "joint".to_owned(),
+            0,
+            "its disabled limit has LowerTranslation 2 above UpperTranslation 1, which Box2D \
+             2.3's SetLimits asserts against; they were passed swapped"
+                .to_owned()
+        )]
+    );
+}

@@ -47,6 +47,10 @@ pub(crate) struct Version {
     /// final (each fixture's `ResetMassData` moves it by w x the centre's shift); 2.4's
     /// adapter keeps what the engine made of it.
     pub velocity_after_mass: bool,
+    /// What asserts against a prismatic joint's disabled limit with its lower translation
+    /// above its upper: 2.4's joint as it is created, 2.3's only `SetLimits` (a host that
+    /// sets them later), so the plan passes them swapped in both.
+    pub inverted_limit_asserted_by: &'static str,
 }
 
 pub(crate) const BOX2D_23: Version = Version {
@@ -61,6 +65,7 @@ pub(crate) const BOX2D_23: Version = Version {
     ghosts_on_their_own: true,
     refuses_inconsistent_mass: true,
     velocity_after_mass: true,
+    inverted_limit_asserted_by: "Box2D 2.3's SetLimits",
 };
 
 pub(crate) const BOX2D_24: Version = Version {
@@ -75,6 +80,7 @@ pub(crate) const BOX2D_24: Version = Version {
     ghosts_on_their_own: false,
     refuses_inconsistent_mass: false,
     velocity_after_mass: false,
+    inverted_limit_asserted_by: "Box2D 2.4",
 };
 
 impl Version {
