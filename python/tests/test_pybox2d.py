@@ -323,3 +323,20 @@ def test_a_capture_keeps_the_scene_names_of_fixtures_and_not_of_a_later_one_at_t
     assert int(mine.this) == address  # the case under test: Box2D reused the address
     saved, _ = b2s2.capture_world(world, built)
     assert [f.name for f in saved.fixtures] == ["Ball", None]
+
+
+@pytest.mark.parametrize("path", scene_files(), ids=scene_id)
+def test_the_plans_masses_are_pybox2ds_to_the_bit(path):
+    """The plan predicts each body's mass in f32 as Box2D 2.3 sums it (its polygons fanned
+    from the mean of their vertices, 1 kg for a dynamic body without mass): what pybox2d's
+    bodies hold once built. A body given its MassData holds the mass and centre given."""
+    scene = box2scene.load(path)
+    world, built = build(scene)
+    g = world.gravity
+    plan = box2scene._native.make_plan(scene._native, "box2d-2.3", (float(g[0]), float(g[1])))
+    for planned in plan.bodies:
+        held = built.bodies[planned.body].massData
+        if planned.set_mass:
+            assert (held.mass, tuple(held.center)) == (planned.mass, planned.center), planned.body
+        else:
+            assert (held.mass, tuple(held.center), held.I) == (planned.mass, planned.center, planned.inertia), planned.body
