@@ -15,15 +15,18 @@ Box2D's rope joint, a wheel joint's spring is 2.2's, a weld joint's spring is 2.
 weld, the motor and friction joints are Box2D's own, an edge keeps each ghost vertex on
 its own (2.4 needs both), and a chain takes the ghosts the file gives (none extrapolated).
 What 2.3 lacks is reported: a line joint's linear motor (``lossy-line-motor``) and limit
-(2.3's wheel joint has none), pulley ``MaxLengthA``/``MaxLengthB`` (2.1 only), a
+(2.3's wheel joint has none), and a wheel joint without a spring, which gets a stand-in.
+Pulley ``MaxLengthA``/``MaxLengthB`` (2.1 only) become rope joints from a static body, a
 polygon's ``Centroid`` is applied as in the 2.4 adapter. Filter bits are 16 wide.
+
+The library plans the world (``make_plan``: every conversion, check, predicted mass and
+report); this module creates what the plan says through pybox2d, in its order.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from types import SimpleNamespace
 from typing import Dict, List, Optional, Sequence, Tuple
 
 import Box2D as B
@@ -32,20 +35,12 @@ from . import _native
 from ._error import Error
 from ._f32 import F, f32, search_ulps
 from ._records import Body, Fixture, Joint, Shape
-from ._report import Check, Report
+from ._report import Report
 from ._scene import Builder, Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
-ENGINE = "Box2D 2.3"
-# The working range: the library's measured table for Box2D 2.3 as pybox2d holds it, 2.4's
-# solver, whose measurements it shares (docs/working-range.md).
-RANGE = SimpleNamespace(**_native.working_range("box2d-2.3"))
-FILTER_BITS = 16
-# Hz: the spring that stands in for none on a Box2D 2.3 wheel joint (see wheel_hertz).
-SPRINGLESS_WHEEL_HZ = 1e-3
-
-_KINDS = {"static": B.b2_staticBody, "kinematic": B.b2_kinematicBody, "dynamic": B.b2_dynamicBody}
+ENGINE = "box2d-2.3"
 
 
 @dataclass
@@ -69,10 +64,8 @@ class Built:
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
     """The scene's gravity, or ``fallback`` when it gives none or one beyond the range."""
-    g = scene.gravity
-    if g is None or not (abs(g[0]) <= RANGE.max_acceleration and abs(g[1]) <= RANGE.max_acceleration):
-        return fallback
-    return g
+    gravity = _native.world_gravity(scene._native, ENGINE)
+    return fallback if gravity is None else gravity
 
 
 def create_world(scene: Scene, fallback_gravity: Tuple[float, float] = (0.0, -10.0), **settings) -> B.b2World:
@@ -85,187 +78,103 @@ def _key(joint) -> int:
     return int(joint.this)
 
 
+def _vertices(points) -> List[Tuple[float, float]]:
+    return [tuple(p) for p in points]
+
+
+def _given(point) -> bool:
+    """A ghost vertex the plan gives (NaN where the file gives none)."""
+    return not math.isnan(point[0])
+
+
+def _shape(shape):
+    """A pybox2d shape of the plan's: Box2D 2.3 keeps each ghost vertex of an edge or chain
+    on its own."""
+    kind, points = shape.kind, shape.points
+    if kind == "circle":
+        return B.b2CircleShape(radius=shape.radius, pos=shape.center)
+    if kind == "polygon":
+        made = B.b2PolygonShape(vertices=_vertices(points))
+        if not math.isnan(shape.center[0]):
+            made.centroid = shape.center
+        return made
+    if kind == "segment":
+        if len(points) == 2:
+            return B.b2EdgeShape(vertices=_vertices(points))
+        made = B.b2EdgeShape(vertices=_vertices(points[1:3]))
+        if _given(points[0]):
+            made.vertex0, made.hasVertex0 = points[0], True
+        if _given(points[3]):
+            made.vertex3, made.hasVertex3 = points[3], True
+        return made
+    if kind == "loop":
+        return B.b2ChainShape(vertices_loop=_vertices(points))
+    made = B.b2ChainShape(vertices_chain=_vertices(points[1:-1]))
+    if _given(points[0]):
+        made.SetPrevVertex(points[0])
+    if _given(points[-1]):
+        made.SetNextVertex(points[-1])
+    return made
+
+
+def _joint_def(j, made: List[B.b2Joint]):
+    """pybox2d's def of the plan joint ``j``; ``made`` holds the plan joints created so far."""
+    kind = j.kind
+    anchors = dict(localAnchorA=j.anchor_a, localAnchorB=j.anchor_b)
+    if kind == "revolute":
+        return B.b2RevoluteJointDef(referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerAngle=j.lower, upperAngle=j.upper, enableMotor=j.enable_motor, motorSpeed=j.motor_speed, maxMotorTorque=j.max_motor, **anchors)
+    if kind == "prismatic":
+        return B.b2PrismaticJointDef(localAxisA=j.axis, referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerTranslation=j.lower, upperTranslation=j.upper, enableMotor=j.enable_motor, maxMotorForce=j.max_motor, motorSpeed=j.motor_speed, **anchors)
+    if kind == "distance":
+        return B.b2DistanceJointDef(length=j.length, frequencyHz=j.hertz, dampingRatio=j.damping_ratio, **anchors)
+    if kind == "rope":
+        return B.b2RopeJointDef(maxLength=j.length, **anchors)
+    if kind == "wheel":
+        return B.b2WheelJointDef(localAxisA=j.axis, frequencyHz=j.hertz, dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor, motorSpeed=j.motor_speed, **anchors)
+    if kind == "weld":
+        return B.b2WeldJointDef(referenceAngle=j.reference_angle, frequencyHz=j.hertz, dampingRatio=j.damping_ratio, **anchors)
+    if kind == "friction":
+        return B.b2FrictionJointDef(maxForce=j.max_force, maxTorque=j.max_torque, **anchors)
+    if kind == "motor":
+        return B.b2MotorJointDef(linearOffset=j.linear_offset, angularOffset=j.angular_offset, maxForce=j.max_force, maxTorque=j.max_torque, correctionFactor=j.correction_factor)
+    if kind == "pulley":
+        return B.b2PulleyJointDef(groundAnchorA=j.ground_anchor_a, groundAnchorB=j.ground_anchor_b, lengthA=j.length_a, lengthB=j.length_b, ratio=j.ratio, **anchors)
+    return B.b2GearJointDef(joint1=made[j.joint_a], joint2=made[j.joint_b], ratio=j.ratio)
+
+
 class _Build:
-    def __init__(self, scene: Scene, world: B.b2World):
-        self.scene = scene
+    def __init__(self, scene: Scene, world: B.b2World, plan):
         self.world = world
-        self.reports: List[Report] = []
-        slots = len(scene.fixture_ids)
-        self.built = Built([None] * len(scene.bodies), [None] * slots, [None] * len(scene.joints), self.reports, scene)
-        self.shapes: List[Optional[object]] = [None] * len(scene.shapes)
-        # Per body: the joint that already pulls it from further than the range's
-        # max_pulled_violation.
-        self.pulled: Dict[int, int] = {}
-        self.slot_starts = []
-        slot = 0
-        for body in scene.bodies:
-            self.slot_starts.append(slot)
-            slot += len(body.fixtures)
+        reports = [Report(*r) for r in plan.reports]
+        slots = [None] * plan.slot_count
+        self.built = Built([None] * plan.body_count, slots, [None] * plan.joint_count, reports, scene)
+        # One pybox2d shape per scene shape, which Box2D clones into each of its fixtures.
+        self.shapes: Dict[int, object] = {}
+        # Index for index with the plan's joints: what a gear couples.
+        self.made: List[B.b2Joint] = []
 
-    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
-        self.reports.append(Report(code, obj, index, name, message))
-
-    def beyond(self, check: Check, obj: str, index: int, name: Optional[str], owner: str = "") -> None:
-        self.report("beyond-box2d-range", obj, index, name, f"{owner}{check.problem}; {obj} not created")
-
-    def check_gravity(self) -> None:
-        g = self.scene.gravity
-        if g is not None:
-            check = Check(ENGINE)
-            check.vector("Gravity", g, RANGE.max_acceleration, "m/s^2")
-            if not check.passed:
-                self.report("beyond-box2d-range", "world", 0, None, f"{check.problem}; scene_gravity gives the host's fallback instead")
-
-    def check_filters(self) -> None:
-        """Box2D 2.3 holds 16 filter bits: reported only where that changes what collides, a
-        category bit above 16 in use (high mask bits matter only against those)."""
-        high = 0
-        for f in self.scene.fixtures:
-            high |= f.category_bits >> FILTER_BITS
-        if not high:
-            return
-        for i, f in enumerate(self.scene.fixtures):
-            if f.category_bits >> FILTER_BITS or (f.mask_bits >> FILTER_BITS) & high not in (0, high):
-                self.report(
-                    "lossy-filter",
-                    "fixture",
-                    i,
-                    f.name,
-                    f"its filter (category 0x{f.category_bits:x}, mask 0x{f.mask_bits:x}) uses bits above Box2D 2.3's 16, which change what collides; the low 16 bits were used",
-                )
-
-    # ---- shapes
-
-    def make_shape(self, index: int) -> None:
-        shape = self.scene.shapes[index]
-        check = Check(ENGINE)
-        if shape.kind == "circle":
-            check.magnitude("Radius", shape.radius, RANGE.max_length, "m")
-            check.vector("Position", shape.position, RANGE.max_length, "m")
-        for i, v in enumerate(shape.vertices):
-            check.vector(f"Vertex {i}", v, RANGE.max_length, "m")
-        for field_name, v in (("Centroid", shape.centroid), ("PrevVertex", shape.prev_vertex), ("NextVertex", shape.next_vertex)):
-            if v is not None:
-                check.vector(field_name, v, RANGE.max_length, "m")
-        if not check.passed:
-            self.beyond(check, "shape", index, shape.name)
-            return
-        vertices = [tuple(v) for v in shape.vertices]
-        if shape.kind == "circle":
-            made = B.b2CircleShape(radius=shape.radius, pos=shape.position)
-        elif shape.kind == "polygon" and len(vertices) == 2:
-            made = B.b2EdgeShape(vertices=vertices)
-        elif shape.kind == "polygon":
-            made = B.b2PolygonShape(vertices=vertices)
-            if shape.centroid is not None:
-                made.centroid = shape.centroid
-        elif shape.kind == "edge":
-            made = B.b2EdgeShape(vertices=vertices)
-            if shape.prev_vertex is not None:
-                made.vertex0, made.hasVertex0 = shape.prev_vertex, True
-            if shape.next_vertex is not None:
-                made.vertex3, made.hasVertex3 = shape.next_vertex, True
-        elif shape.is_loop:
-            made = B.b2ChainShape(vertices_loop=vertices)
-        else:
-            made = B.b2ChainShape(vertices_chain=vertices)
-            if shape.prev_vertex is not None:
-                made.SetPrevVertex(shape.prev_vertex)
-            if shape.next_vertex is not None:
-                made.SetNextVertex(shape.next_vertex)
-        self.shapes[index] = made
-
-    # ---- bodies
-
-    @staticmethod
-    def fixture_check(f: Fixture) -> Check:
-        check = Check(ENGINE)
-        check.magnitude("Density", f.density, RANGE.max_density, "kg/m^2")
-        check.magnitude("Friction", f.friction, RANGE.max_friction, "")
-        check.magnitude("Restitution", f.restitution, RANGE.max_friction, "")
-        return check
-
-    def body_check(self, body: Body) -> Check:
-        check = Check(ENGINE)
-        check.vector("Position", body.position, RANGE.max_length, "m")
-        check.magnitude("Angle", body.angle, RANGE.max_angle, "rad")
-        if body.kind != "static":
-            check.vector("LinearVelocity", body.linear_velocity, RANGE.max_speed, "m/s")
-            check.magnitude("AngularVelocity", body.angular_velocity, RANGE.max_speed, "rad/s")
-        check.magnitude("LinearDamping", body.linear_damping, RANGE.max_damping, "1/s")
-        check.magnitude("AngularDamping", body.angular_damping, RANGE.max_damping, "1/s")
-        check.magnitude("GravityScale", body.gravity_scale, RANGE.max_gravity_scale, "")
-        if body.kind == "dynamic" and check.passed:
-            g = self.world.gravity
-            check.vector("GravityScale times the world's gravity", (body.gravity_scale * g[0], body.gravity_scale * g[1]), RANGE.max_acceleration, "m/s^2")
-        if body.center is not None:
-            check.vector("MassData Center", body.center, RANGE.max_length, "m")
-        return check
-
-    def skip_fixtures_of(self, index: int, body: Body) -> None:
-        for f in body.fixtures:
-            self.report("skipped-dependent", "fixture", f, self.scene.fixtures[f].name, f"fixture {f} of body {index}: the body was not created; fixture skipped")
-
-    def make_fixture(self, body_index: int, slot: int, index: int, body: B.b2Body) -> None:
-        f = self.scene.fixtures[index]
-        shape = self.shapes[f.shape]
-        if shape is None:
-            self.report("skipped-dependent", "fixture", index, f.name, f"fixture {index} of body {body_index} names shape {f.shape}, which was not created; fixture skipped")
-            return
-        check = self.fixture_check(f)
-        if not check.passed:
-            self.beyond(check, "fixture", index, f.name, f"fixture {index} of body {body_index}: ")
-            return
-        low = (1 << FILTER_BITS) - 1
-        self.built.fixtures[slot] = body.CreateFixture(
+    def make_fixture(self, shape, body: B.b2Body) -> None:
+        made = self.shapes.get(shape.shape)
+        if made is None:
+            made = self.shapes[shape.shape] = _shape(shape)
+        self.built.fixtures[shape.slot] = body.CreateFixture(
             B.b2FixtureDef(
-                shape=shape,
-                density=f.density,
-                friction=f.friction,
-                restitution=f.restitution,
-                isSensor=f.is_sensor,
-                categoryBits=f.category_bits & low,
-                maskBits=f.mask_bits & low,
-                groupIndex=f.group_index,
+                shape=made,
+                density=shape.density,
+                friction=shape.friction,
+                restitution=shape.restitution,
+                isSensor=shape.is_sensor,
+                categoryBits=shape.category_bits,
+                maskBits=shape.mask_bits,
+                groupIndex=shape.group_index,
                 userData=self.built._mark,
             )
         )
 
-    def mass_check(self, created: B.b2Body, body: Body) -> Tuple[Check, Optional[B.b2MassData]]:
-        """The mass data to set (None to keep 2.3's), checked: 2.3 asserts that the inertia
-        about the centre of mass stays positive."""
-        check = Check(ENGINE)
-        given = body.mass is not None or body.center is not None or body.inertia is not None
-        data = created.massData
-        if given:
-            if body.mass is not None:
-                data.mass = body.mass
-            if body.center is not None:
-                data.center = body.center
-            if body.inertia is not None:
-                data.I = body.inertia
-            mass = data.mass if data.mass > 0 else 1.0
-            central = data.I - mass * (data.center[0] ** 2 + data.center[1] ** 2)
-            if data.I > 0 and not body.fixed_rotation and not central > 0:
-                check.fail("its MassData leaves no positive inertia about the centre of mass (Inertia <= Mass * |Center|^2), which Box2D 2.3 asserts against")
-        mass = data.mass if data.mass > 0 else 1.0
-        central = data.I - mass * (data.center[0] ** 2 + data.center[1] ** 2)
-        check.zero_or_within("its mass", data.mass, RANGE.min_mass, RANGE.max_mass, "kg")
-        check.vector("its centre of mass", tuple(data.center), RANGE.max_length, "m")
-        if not body.fixed_rotation and data.I > 0:
-            check.zero_or_within("its inertia about the centre of mass", central, RANGE.min_inertia, RANGE.max_inertia, "kg m^2")
-        return check, (data if given else None)
-
-    def make_body(self, index: int) -> None:
-        body = self.scene.bodies[index]
-        check = self.body_check(body)
-        if not check.passed:
-            self.beyond(check, "body", index, body.name)
-            self.skip_fixtures_of(index, body)
-            return
+    def make_body(self, body) -> None:
         created = self.world.CreateBody(
             B.b2BodyDef(
-                type=_KINDS[body.kind],
+                type=body.kind,
                 position=body.position,
                 angle=body.angle,
                 linearVelocity=body.linear_velocity,
@@ -277,234 +186,43 @@ class _Build:
                 awake=body.awake,
                 bullet=body.bullet,
                 fixedRotation=body.fixed_rotation,
-                active=body.active,
+                active=body.enabled,
             )
         )
-        kept = len(self.reports)
-        start = self.slot_starts[index]
-        for k, fixture in enumerate(body.fixtures):
-            self.make_fixture(index, start + k, fixture, created)
-        if body.kind == "dynamic":
-            check, data = self.mass_check(created, body)
-            if not check.passed:
-                self.world.DestroyBody(created)
-                del self.reports[kept:]
-                for k in range(len(body.fixtures)):
-                    self.built.fixtures[start + k] = None
-                self.beyond(check, "body", index, body.name)
-                self.skip_fixtures_of(index, body)
-                return
-            if data is not None:
-                created.massData = data
-            # Box2D shifts the centre's velocity each time a fixture moves the centre of
-            # mass; the file's velocity is its origin's, given once the mass is final.
-            velocity = _center_velocity(created, body.linear_velocity, body.angular_velocity)
-            if velocity != _vec(created.linearVelocity) and body.awake:
-                created.linearVelocity = velocity
-        self.built.bodies[index] = created
+        for shape in body.shapes:
+            self.make_fixture(shape, created)
+        if body.set_mass:
+            data = created.massData
+            data.mass, data.center, data.I = body.mass, body.center, body.inertia
+            created.massData = data
+        if body.set_velocity:
+            created.linearVelocity = body.velocity_after_mass
+        self.built.bodies[body.body] = created
 
-    # ---- joints
-
-    def anchor_check(self, check: Check, field_name: str, body: int, anchor, lever: float) -> None:
-        created = self.built.bodies[body]
-        if created.mass == 0:
-            return
-        center = created.localCenter
-        r = math.hypot(anchor[0] - center[0], anchor[1] - center[1])
-        mass = created.mass
-        inertia = created.inertia - mass * (center[0] ** 2 + center[1] ** 2)
-        compliance = 1.0 / mass + (r * r / inertia if inertia > 0 else 0.0)
-        if not compliance <= RANGE.max_compliance:
-            check.fail(f"{field_name}: the joint acts {r:.9g} m from the centre of mass of body {body}, where 1/m + r^2/I = {compliance:g} 1/kg lies beyond Box2D 2.3's working range (at most {RANGE.max_compliance:g} 1/kg)")
-        elif lever > 0 and inertia > 0 and not r <= lever * math.sqrt(inertia / mass):
-            check.fail(f"{field_name}: the joint acts {r / math.sqrt(inertia / mass):g} radii of gyration from the centre of mass of body {body}, beyond Box2D 2.3's working range for this joint (at most {lever:g})")
-
-    def joint_check(self, j: Joint) -> Check:
-        check = Check(ENGINE)
-        for name, v in (("LocalAnchorA", j.local_anchor_a), ("LocalAnchorB", j.local_anchor_b), ("LocalAxisA", j.local_axis_a), ("LinearOffset", j.linear_offset), ("GroundAnchorA", j.ground_anchor_a), ("GroundAnchorB", j.ground_anchor_b)):
-            check.vector(name, v, RANGE.max_length, "m")
-        for name, v, bound, unit in (
-            ("ReferenceAngle", j.reference_angle, RANGE.max_angle, "rad"),
-            ("AngularOffset", j.angular_offset, RANGE.max_angle, "rad"),
-            ("MotorSpeed", j.motor_speed, RANGE.max_speed, "per s"),
-            ("MaxMotorTorque", j.max_motor_torque, RANGE.max_force, "N m"),
-            ("MaxMotorForce", j.max_motor_force, RANGE.max_force, "N"),
-            ("MaxForce", j.max_force, RANGE.max_force, "N"),
-            ("MaxTorque", j.max_torque, RANGE.max_force, "N m"),
-            ("Length", j.length, RANGE.max_length, "m"),
-            ("MaxLength", j.max_length, RANGE.max_length, "m"),
-            ("LengthA", j.length_a, RANGE.max_length, "m"),
-            ("LengthB", j.length_b, RANGE.max_length, "m"),
-            ("FrequencyHz", j.frequency_hz, RANGE.max_frequency, "Hz"),
-            ("DampingRatio", j.damping_ratio, RANGE.max_frequency, ""),
-            ("Ratio", j.ratio, RANGE.max_ratio, ""),
-            ("CorrectionFactor", j.correction_factor, RANGE.max_frequency, ""),
-        ):
-            check.magnitude(name, v, bound, unit)
-        if j.kind in ("prismatic", "line", "wheel") and check.passed and not math.hypot(*j.local_axis_a) >= RANGE.min_axis:
-            check.fail(f"LocalAxisA is shorter than {RANGE.min_axis:g} m: Box2D 2.3 cannot normalise it")
-        if j.kind in ("revolute", "friction", "motor"):
-            lever = RANGE.max_lever_revolute
-        elif j.kind in ("prismatic", "weld"):
-            lever = RANGE.max_lever
-        else:
-            lever = 0.0
-        if check.passed and j.kind != "gear":
-            self.anchor_check(check, "LocalAnchorA", j.body_a, j.local_anchor_a, lever)
-            self.anchor_check(check, "LocalAnchorB", j.body_b, j.local_anchor_b, lever)
-        if check.passed and RANGE.prismatic_lever_to_b and j.kind == "prismatic":
-            a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
-            b_on_a = _vec(a.GetLocalPoint(b.GetWorldPoint(j.local_anchor_b)))
-            self.anchor_check(check, "LocalAnchorB, as body A's lever", j.body_a, b_on_a, lever)
-        return check
-
-    def starting_violation(self, j: Joint) -> float:
-        """How far the joint starts from satisfied, in metres, along what its kind holds
-        rigidly, with its bodies as created (what the load warning joint-starts-violated
-        measures)."""
-        a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
-        pa, pb = a.GetWorldPoint(j.local_anchor_a), b.GetWorldPoint(j.local_anchor_b)
-        d = (pb[0] - pa[0], pb[1] - pa[1])
-        if j.kind in ("revolute", "weld"):
-            return math.hypot(*d)
-        if j.kind in ("prismatic", "line", "wheel"):
-            axis = a.GetWorldVector(j.local_axis_a)
-            length = math.hypot(axis[0], axis[1])
-            ux, uy = axis[0] / length, axis[1] / length
-            across, along = abs(ux * d[1] - uy * d[0]), ux * d[0] + uy * d[1]
-            beyond = max(j.lower_limit - along, along - j.upper_limit, 0.0) if j.enable_limit and j.kind != "wheel" else 0.0
-            return max(across, beyond)
-        if j.kind == "distance":
-            return 0.0 if j.frequency_hz > 0 else abs(math.hypot(*d) - j.length)
-        if j.kind == "rope":
-            return max(math.hypot(*d) - j.max_length, 0.0)
-        if j.kind == "pulley":
-            ga, gb = j.ground_anchor_a, j.ground_anchor_b
-            now = math.hypot(pa[0] - ga[0], pa[1] - ga[1]) + j.ratio * math.hypot(pb[0] - gb[0], pb[1] - gb[1])
-            return abs(now - (j.length_a + j.ratio * j.length_b))
-        return 0.0  # springs, motors and friction hold nothing in place
-
-    def violation_check(self, index: int, j: Joint, check: Check) -> None:
-        """What the sweep of docs/working-range.md measured: 2.x holds any one joint that
-        starts far from satisfied, but its position solver can tear a body that two such
-        joints pull to NaN. The first such joint on a body is built, the later ones are not."""
-        violation = self.starting_violation(j)
-        if not violation > RANGE.max_pulled_violation:
-            return
-        for body in (j.body_a, j.body_b):
-            if body in self.pulled:
-                check.fail(f"it starts {violation:.9g} m from satisfied, and joint {self.pulled[body]} already pulls body {body} from further than {RANGE.max_pulled_violation:g} m: two such joints on one body lie beyond Box2D 2.3's working range (its position solver can tear the body to NaN)")
-                return
-        for body in (j.body_a, j.body_b):
-            if self.built.bodies[body].type == B.b2_dynamicBody:
-                self.pulled[body] = index
-
-    def wheel_hertz(self, index: int, j: Joint, hertz: float) -> float:
-        """Box2D 2.3's wheel joint without a spring (0 Hz) reads its lever arms before it
-        ever computes them (b2WheelJoint::InitVelocityConstraints computes m_sAx, m_sBx only
-        for a spring, and warm starting multiplies them by 0): whatever the memory held,
-        NaN included, goes into the bodies. A spring too soft to matter stands in for none."""
-        if hertz > 0.0:
-            return hertz
-        self.report(
-            "lossy-joint",
-            "joint",
-            index,
-            j.name,
-            f"Box2D 2.3's wheel joint without a spring reads uninitialised memory; a spring of {SPRINGLESS_WHEEL_HZ:g} Hz, undamped, stands in for none (about 1e-6 N s per metre and kg a step)",
-        )
-        return SPRINGLESS_WHEEL_HZ
-
-    def limits(self, index: int, j: Joint, lower_name: str, upper_name: str) -> Tuple[float, float]:
-        if j.lower_limit > j.upper_limit:
-            self.report("bad-limit", "joint", index, j.name, f"{lower_name} {j.lower_limit:.9g} lies above {upper_name} {j.upper_limit:.9g}; they were passed swapped")
-            return j.upper_limit, j.lower_limit
-        return j.lower_limit, j.upper_limit
-
-    def make_joint(self, index: int) -> None:
-        j = self.scene.joints[index]
-        if j.kind == "unsupported":
-            self.report("skipped-joint", "joint", index, j.name, "Box2D 2.3 has no form for a Farseer-only joint; joint skipped")
-            return
-        a, b = self.built.bodies[j.body_a], self.built.bodies[j.body_b]
-        if a is None or b is None:
-            self.report("skipped-dependent", "joint", index, j.name, f"it names body {j.body_a if a is None else j.body_b}, which was not created; joint skipped")
-            return
-        if j.body_a == j.body_b:
-            self.report("joint-self-reference", "joint", index, j.name, "it connects a body to itself; joint skipped")
-            return
-        check = self.joint_check(j)
-        if check.passed and j.kind != "gear":
-            self.violation_check(index, j, check)
-        if not check.passed:
-            self.beyond(check, "joint", index, j.name)
-            return
-        common = dict(bodyA=a, bodyB=b, collideConnected=j.collide_connected)
-        anchors = dict(localAnchorA=j.local_anchor_a, localAnchorB=j.local_anchor_b)
-        w = self.world
-        kind = j.kind
-        if kind == "revolute":
-            lower, upper = self.limits(index, j, "LowerAngle", "UpperAngle")
-            d = B.b2RevoluteJointDef(referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerAngle=lower, upperAngle=upper, enableMotor=j.enable_motor, motorSpeed=j.motor_speed, maxMotorTorque=j.max_motor_torque, **common, **anchors)
-        elif kind == "prismatic":
-            lower, upper = self.limits(index, j, "LowerTranslation", "UpperTranslation")
-            d = B.b2PrismaticJointDef(localAxisA=j.local_axis_a, referenceAngle=j.reference_angle, enableLimit=j.enable_limit, lowerTranslation=lower, upperTranslation=upper, enableMotor=j.enable_motor, maxMotorForce=j.max_motor_force, motorSpeed=j.motor_speed, **common, **anchors)
-        elif kind == "distance":
-            d = B.b2DistanceJointDef(length=j.length, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, **common, **anchors)
-        elif kind == "rope":
-            d = B.b2RopeJointDef(maxLength=j.max_length, **common, **anchors)
-        elif kind in ("line", "wheel"):
-            if kind == "line":
-                if j.enable_motor:
-                    self.report("lossy-line-motor", "joint", index, j.name, "Box2D 2.3 has no linear motor on a line (wheel) joint; the motor is off")
-                if j.enable_limit:
-                    self.report("lossy-joint", "joint", index, j.name, "Box2D 2.3's wheel joint has no translation limit; the line joint's limit is off")
-                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, 0.0), dampingRatio=0.0, **common, **anchors)
-            else:
-                d = B.b2WheelJointDef(localAxisA=j.local_axis_a, frequencyHz=self.wheel_hertz(index, j, j.frequency_hz), dampingRatio=j.damping_ratio, enableMotor=j.enable_motor, maxMotorTorque=j.max_motor_torque, motorSpeed=j.motor_speed, **common, **anchors)
-        elif kind == "weld":
-            d = B.b2WeldJointDef(referenceAngle=j.reference_angle, frequencyHz=j.frequency_hz, dampingRatio=j.damping_ratio, **common, **anchors)
-        elif kind == "friction":
-            d = B.b2FrictionJointDef(maxForce=j.max_force, maxTorque=j.max_torque, **common, **anchors)
-        elif kind == "motor":
-            d = B.b2MotorJointDef(linearOffset=j.linear_offset, angularOffset=j.angular_offset, maxForce=j.max_force, maxTorque=j.max_torque, correctionFactor=j.correction_factor, **common)
-        elif kind == "pulley":
-            if j.max_length_a > 0 or j.max_length_b > 0:
-                self.report("lossy-joint", "joint", index, j.name, f"MaxLengthA {j.max_length_a:.9g} and MaxLengthB {j.max_length_b:.9g} are Box2D 2.1's, which 2.3 has not: the sides are not limited")
-            d = B.b2PulleyJointDef(groundAnchorA=j.ground_anchor_a, groundAnchorB=j.ground_anchor_b, lengthA=j.length_a, lengthB=j.length_b, ratio=j.ratio, **common, **anchors)
-        else:  # gear
-            joint_a, joint_b = self.built.joints[j.joint_a], self.built.joints[j.joint_b]
-            if joint_a is None or joint_b is None:
-                self.report("skipped-dependent", "joint", index, j.name, f"it couples joint {j.joint_a if joint_a is None else j.joint_b}, which was not created; joint skipped")
-                return
-            for target, coupled in ((j.joint_a, joint_a), (j.joint_b, joint_b)):
-                if coupled.bodyB.type != B.b2_dynamicBody or not (coupled.bodyA.active and coupled.bodyB.active):
-                    self.report("bad-gear-joint", "joint", index, j.name, f"the gear couples joint {target}, whose body B is not dynamic or whose bodies are not all active, which Box2D 2.3's gear cannot solve; gear skipped")
-                    return
-            d = B.b2GearJointDef(joint1=joint_a, joint2=joint_b, ratio=j.ratio, **common)
+    def make_joint(self, j) -> None:
+        d = _joint_def(j, self.made)
+        d.bodyA, d.bodyB, d.collideConnected = self.built.bodies[j.body_a], self.built.bodies[j.body_b], j.collide_connected
         d.userData = self.built._mark
-        self.built.joints[index] = w.CreateJoint(d)
+        created = self.world.CreateJoint(d)
+        self.made.append(created)
+        if j.joint < len(self.built.joints):  # not a rope the plan adds to a pulley's side
+            self.built.joints[j.joint] = created
 
 
 def build_world(scene: Scene, world: B.b2World) -> Built:
     """Creates every object of ``scene`` that Box2D 2.3 can hold in ``world`` and reports
     the rest (never asserting, never producing NaN)."""
-    b = _Build(scene, world)
-    b.check_gravity()
-    b.check_filters()
-    for i in range(len(scene.shapes)):
-        b.make_shape(i)
-    for i in range(len(scene.bodies)):
-        b.make_body(i)
-    # A gear is created after the joints it couples, wherever it stands in the scene.
-    joints = range(len(scene.joints))
-    for i in [i for i in joints if scene.joints[i].kind != "gear"] + [i for i in joints if scene.joints[i].kind == "gear"]:
-        b.make_joint(i)
+    g = world.gravity
+    plan = _native.make_plan(scene._native, ENGINE, (float(g[0]), float(g[1])))
+    b = _Build(scene, world, plan)
+    for body in plan.bodies:
+        b.make_body(body)
+    for joint in plan.joints:
+        b.make_joint(joint)
     # pybox2d's fixture def takes a shape from Python and never frees it; Box2D cloned each
     # into its fixtures, so the build's own shapes go with the build.
-    for shape in b.shapes:
-        if shape is not None:
-            shape.thisown = True
+    for shape in b.shapes.values():
+        shape.thisown = True
     return b.built
 
 
@@ -517,11 +235,6 @@ def _shift(body: B.b2Body, w: float):
     cx = (c * lx - s * ly) + px
     cy = (s * lx + c * ly) + py
     return (-F(w) * (cy - py), F(w) * (cx - px))
-
-
-def _center_velocity(body: B.b2Body, origin_velocity, w: float):
-    shift = _shift(body, w)
-    return (float(F(origin_velocity[0]) + shift[0]), float(F(origin_velocity[1]) + shift[1]))
 
 
 def _origin_velocity(body: B.b2Body, velocity, w: float):
@@ -813,7 +526,8 @@ class _Capture:
                 continue
             changes[field_name] = tuple(map(float, value)) if isinstance(value, B.b2Vec2) else value
         if built is not None and kind in ("line", "wheel") and built.frequency_hz == 0.0:
-            changes["frequency_hz"] = 0.0  # the stand-in spring of wheel_hertz
+            # the plan's stand-in spring for none
+            changes.update(frequency_hz=0.0, damping_ratio=built.damping_ratio)
         if built is None and unread:
             self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
         if kind == "gear":

@@ -1,6 +1,6 @@
 //! Which engine module makes a plan: the one of the version the options name.
 
-use super::box2d2;
+use super::box2d2::{self, Version};
 use super::box2d3::{self, V3};
 use super::container::Plan;
 use super::range::Engine;
@@ -9,22 +9,16 @@ use crate::error::{Code, Error, Position};
 use crate::scene::Scene;
 
 /// The plan of `scene` for the engine version and placement `options` name. An engine
-/// number that names no version is an error, and so is a version whose mapping is not
-/// made here yet (its executor still maps the scene itself). A placement the engine cannot
+/// number that names no version is an error. A placement the engine cannot
 /// take is no error: the plan then holds only its report (see [`Plan::placed`]).
 pub fn make(scene: &Scene, options: &PlanOptions) -> Result<Plan, Error> {
     let engine = Engine::try_from(options.engine)
         .map_err(|n| invalid(format!("engine {n} is no b2s_engine: a plan is made for 1 to 4")))?;
-    if engine == Engine::Box2d24 {
-        return Ok(box2d2::plan(scene, options));
+    if let Some(version) = Version::of(engine) {
+        return Ok(box2d2::plan(scene, options, version));
     }
-    match V3::of(engine) {
-        Some(v3) => Ok(box2d3::plan(scene, options, v3)),
-        None => Err(invalid(format!(
-            "no plan is made for Box2D 2.3 yet (engine {}): its executor maps the scene itself",
-            options.engine
-        ))),
-    }
+    let v3 = V3::of(engine).expect("every engine is 2.x or v3");
+    Ok(box2d3::plan(scene, options, v3))
 }
 
 fn invalid(message: String) -> Error {
@@ -58,10 +52,10 @@ mod tests {
     }
 
     #[test]
-    fn box2d_2_3_is_not_planned_yet() {
+    fn every_engine_version_is_planned() {
         let scene = crate::load(b"<World Version=\"2\"/>", &Default::default()).unwrap();
-        let e = make(&scene, &options(1)).unwrap_err();
-        assert_eq!(e.code, Code::InvalidArgument);
-        assert!(e.message.starts_with("no plan is made for Box2D 2.3 yet"), "{e}");
+        for engine in Engine::ALL {
+            assert!(make(&scene, &options(engine as u32)).unwrap().placed(), "{engine:?}");
+        }
     }
 }

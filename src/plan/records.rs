@@ -57,11 +57,11 @@ pub enum PlanShapeKind {
     /// `b2MakePolygon` takes as a `b2Hull` with radius 0.
     Polygon = 1,
     /// `points`: its two ends; in 2.x also four, `[ghost, ends, ghost]`, for a one-sided
-    /// edge (`SetOneSided`).
+    /// edge (2.4 `SetOneSided`; 2.3 keeps each ghost on its own, NaN for one it has not).
     Segment = 2,
     /// `points`: an open chain, `[ghost, vertices..., ghost]` (2.x `CreateChain` with the
-    /// ghosts as previous and next vertices; v3 a chain whose first and last points only
-    /// guide).
+    /// ghosts as previous and next vertices, in 2.3 a ghost NaN where it has none; v3 a
+    /// chain whose first and last points only guide).
     Chain = 3,
     /// `points`: a loop, its vertices once each.
     Loop = 4,

@@ -1,4 +1,4 @@
-//! The bodies of a Box2D 2.4 plan: each checked, placed, given its fixtures and the mass
+//! The bodies of a Box2D 2.x plan: each checked, placed, given its fixtures and the mass
 //! the engine will hold, predicted as the engine sums it.
 
 use super::body::Body;
@@ -6,7 +6,7 @@ use super::body_mass::{
     FixtureMass, about_origin, central_inertia_positive, inertia_centred, reset_mass, set_mass,
 };
 use super::check::Check;
-use super::math::{rotate, rotation, scale};
+use super::math::{rotate, rotation, scale, sub, transform};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
@@ -38,7 +38,7 @@ impl Mapper<'_> {
         }
         let position = self.placed(body.position);
         let angle = body.angle + self.placement_angle;
-        // Box2D 2.4 keeps the velocity a static body is created with and moves the body
+        // Box2D 2.x keeps the velocity a static body is created with and moves the body
         // by it whenever a joint puts it in an island; static bodies never move.
         let moves = kind != BodyKind::Static;
         let linear_velocity =
@@ -51,7 +51,9 @@ impl Mapper<'_> {
         let shapes = Range::between(first, self.plan.shape_count());
         let dense = fixtures.iter().any(|f| f.density > 0.0);
         let from_fixtures = match kind {
-            BodyKind::Dynamic => reset_mass(&fixtures, body.fixed_rotation),
+            BodyKind::Dynamic => {
+                reset_mass(&fixtures, body.fixed_rotation, self.version.massless_weighs_one_kg)
+            }
             _ => PlanMass::default(),
         };
         let given = self.mass_to_set(index, body, from_fixtures);
@@ -59,7 +61,17 @@ impl Mapper<'_> {
             (Some(mass), BodyKind::Dynamic) => set_mass(mass, body.fixed_rotation),
             _ => from_fixtures,
         };
-        self.bodies[index as usize] = Some(Body::new(position, angle, held, kind));
+        let made = Body::new(position, angle, held, kind);
+        self.bodies[index as usize] = Some(made);
+        let set_velocity = self.version.velocity_after_mass
+            && kind == BodyKind::Dynamic
+            && body.awake
+            && angular_velocity != 0.0;
+        let velocity_after_mass = if set_velocity {
+            center_velocity(made, linear_velocity, angular_velocity)
+        } else {
+            Vec2::ZERO
+        };
         self.plan.push_body(PlanBody {
             body: index,
             kind: body.kind,
@@ -75,7 +87,7 @@ impl Mapper<'_> {
             shapes,
             // What GetMassData will give: inertia about the origin.
             mass: given.unwrap_or(about_origin(held)),
-            velocity_after_mass: Vec2::ZERO,
+            velocity_after_mass,
             allow_sleep: body.allow_sleep,
             awake: body.awake,
             fixed_rotation: body.fixed_rotation,
@@ -83,13 +95,13 @@ impl Mapper<'_> {
             enabled: body.active,
             apply_mass_from_shapes: dense,
             set_mass: given.is_some(),
-            set_velocity: false,
+            set_velocity,
         });
     }
 
     fn body_check(&self, body: &SceneBody, kind: BodyKind) -> Check {
         let range = self.range;
-        let mut check = Check::default();
+        let mut check = self.check();
         check.vector("Position", body.position, range.max_length, "m");
         check.magnitude("Angle", body.angle, range.max_angle, "rad");
         check.vector("LinearVelocity", body.linear_velocity, range.max_speed, "m/s");
@@ -140,10 +152,11 @@ impl Mapper<'_> {
         }
     }
 
-    /// The mass Box2D 2.4 will give a dynamic body, as the executor has the engine compute
+    /// The mass Box2D 2.x will give a dynamic body, as the executor has the engine compute
     /// it: from all of its fixtures at once (`ResetMassData`, which asserts that an
     /// inertia it centres stays positive), then MassData. `check` fails when the engine
-    /// would assert or the result lies beyond the working range.
+    /// would assert or the result lies beyond the working range, and in 2.3 when the
+    /// MassData leaves no positive inertia about the centre of mass.
     fn predicted_mass(&self, body: &SceneBody, check: &mut Check) -> PlanMass {
         let created: Vec<FixtureMass> = self
             .slots(body)
@@ -152,13 +165,13 @@ impl Mapper<'_> {
             .map(|index| self.fixture_mass(index))
             .collect();
         let range = self.range;
-        let mass = reset_mass(&created, body.fixed_rotation);
+        let engine = self.version.name;
+        let mass = reset_mass(&created, body.fixed_rotation, self.version.massless_weighs_one_kg);
         if inertia_centred(&created, body.fixed_rotation) && !(mass.inertia > 0.0) {
-            check.fail(
+            check.fail(format!(
                 "with fixtures that have a density, it has no positive inertia about its \
-                 centre of mass in Box2D 2.4's float arithmetic (which asserts)"
-                    .to_owned(),
-            );
+                 centre of mass in {engine}'s float arithmetic (which asserts)"
+            ));
         }
         // The new centre of mass moves the body's velocity (w x its shift), even where
         // MassData then moves it again: a centre made NaN by a subnormal mass (0 * infinity)
@@ -169,6 +182,12 @@ impl Mapper<'_> {
             range.max_length,
             "m",
         );
+        if self.version.refuses_inconsistent_mass && !mass_data_consistent(mass, body) {
+            check.fail(format!(
+                "its MassData leaves no positive inertia about the centre of mass (Inertia <= \
+                 Mass * |Center|^2), which {engine} asserts against"
+            ));
+        }
         let mass = with_mass_data(mass, body);
         check.zero_or_within("its mass", mass.mass, range.min_mass, range.max_mass, "kg");
         check.vector("its centre of mass", mass.center, range.max_length, "m");
@@ -186,10 +205,11 @@ impl Mapper<'_> {
     fn fixture_mass(&self, index: u32) -> FixtureMass {
         let fixture = &self.scene.fixtures()[index as usize];
         let made = self.shapes[fixture.shape as usize].as_ref().expect("a creatable fixture");
-        FixtureMass { density: fixture.density, mass: made.mass.mass(fixture.density) }
+        let mass = made.mass.mass(fixture.density, self.version.polygon_reference);
+        FixtureMass { density: fixture.density, mass }
     }
 
-    /// Box2D 2.4 asserts against a negative damping, which the format does not forbid.
+    /// Box2D 2.x asserts against a negative damping, which the format does not forbid.
     fn damping(&mut self, index: u32, body: &SceneBody, value: f32, field: &str) -> f32 {
         if value >= 0.0 {
             return value;
@@ -200,8 +220,9 @@ impl Mapper<'_> {
             index,
             body.name,
             format_args!(
-                "{field} {} is negative, which Box2D 2.4 does not allow; 0 was used",
-                F(value)
+                "{field} {} is negative, which {} does not allow; 0 was used",
+                F(value),
+                self.version.name
             ),
         );
         0.0
@@ -254,6 +275,24 @@ impl Mapper<'_> {
         }
         Some(mass)
     }
+}
+
+/// Whether the body's MassData, written over `mass` (from the fixtures, inertia about the
+/// centre), leaves the inertia about the centre of mass positive where it is used.
+fn mass_data_consistent(mass: PlanMass, body: &SceneBody) -> bool {
+    !mass_data_given(&body.mass_data)
+        || central_inertia_positive(
+            overwritten(about_origin(mass), &body.mass_data),
+            body.fixed_rotation,
+        )
+}
+
+/// The velocity of a created body's centre of mass whose origin moves at `origin` turning
+/// at `w` (`v + w x (c - p)`, as 2.x's `SetMassData` moves it), what the executor gives it
+/// once its mass is final.
+fn center_velocity(body: Body, origin: Vec2, w: f32) -> Vec2 {
+    let arm = sub(transform(body.frame, body.mass.center), body.frame.p);
+    Vec2::new(origin.x + -w * arm.y, origin.y + w * arm.x)
 }
 
 /// `mass` (from the fixtures, inertia about the centre) as the MassData leaves it.

@@ -16,8 +16,13 @@ pub(crate) struct FixtureMass {
 /// What `ResetMassData` leaves in a dynamic body holding `fixtures` in the order they were
 /// created (the engine walks them newest first): fixtures without density left out, the
 /// centre the mass-weighted mean, the inertia moved to it unless the rotation is fixed or
-/// there is none.
-pub(crate) fn reset_mass(fixtures: &[FixtureMass], fixed_rotation: bool) -> PlanMass {
+/// there is none. Box2D 2.3 gives a body without mass 1 kg (`massless_weighs_one_kg`);
+/// 2.4 leaves it 0.
+pub(crate) fn reset_mass(
+    fixtures: &[FixtureMass],
+    fixed_rotation: bool,
+    massless_weighs_one_kg: bool,
+) -> PlanMass {
     let mut body = PlanMass::default();
     for f in fixtures.iter().rev().filter(|f| f.density != 0.0) {
         body.mass += f.mass.mass;
@@ -27,6 +32,8 @@ pub(crate) fn reset_mass(fixtures: &[FixtureMass], fixed_rotation: bool) -> Plan
     if body.mass > 0.0 {
         let inverse = 1.0 / body.mass;
         body.center = scale(inverse, body.center);
+    } else if massless_weighs_one_kg {
+        body.mass = 1.0;
     }
     if body.inertia > 0.0 && !fixed_rotation {
         body.inertia -= body.mass * dot(body.center, body.center);
@@ -87,13 +94,13 @@ mod tests {
     fn the_sum_skips_fixtures_without_density_and_centres_the_inertia() {
         let fixtures =
             [fixture(1.0, 2.0, 1.0, 5.0), fixture(0.0, 9.0, 9.0, 9.0), fixture(1.0, 2.0, 3.0, 7.0)];
-        let body = reset_mass(&fixtures, false);
+        let body = reset_mass(&fixtures, false, false);
         assert_eq!(body.mass, 4.0);
         assert_eq!(body.center, Vec2::new(2.0, 0.0));
         assert_eq!(body.inertia, 12.0 - 4.0 * 4.0 * 1.0 + 0.0);
         assert!(inertia_centred(&fixtures, false));
         assert!(!inertia_centred(&fixtures, true));
-        assert_eq!(reset_mass(&fixtures, true).inertia, 0.0);
+        assert_eq!(reset_mass(&fixtures, true, false).inertia, 0.0);
     }
 
     #[test]
@@ -104,7 +111,16 @@ mod tests {
             fixture(1.0, 1.0, 0.0, -1e8),
             fixture(1.0, 1.0, 0.0, 1e8),
         ];
-        assert_eq!(reset_mass(&fixtures, false).inertia, 1.0);
+        assert_eq!(reset_mass(&fixtures, false, false).inertia, 1.0);
+    }
+
+    #[test]
+    fn box2d_2_3_gives_a_dynamic_body_without_mass_one_kilogram_and_2_4_none() {
+        let fixtures = [fixture(0.0, 9.0, 9.0, 9.0), fixture(1.0, 0.0, 2.0, 0.0)];
+        let one = reset_mass(&fixtures, false, true);
+        assert_eq!(one, PlanMass { mass: 1.0, center: Vec2::ZERO, inertia: 0.0 });
+        assert_eq!(reset_mass(&fixtures, false, false), PlanMass::default());
+        assert_eq!(reset_mass(&[], true, true).mass, 1.0);
     }
 
     #[test]

@@ -1,15 +1,21 @@
-//! The first value of one object found beyond Box2D 2.4's working range: what its report
+//! The first value of one object found beyond a Box2D 2.x version's working range: what its report
 //! says. Later values of the object are not looked at once one is found.
 
 use crate::plan::printf::{G, G9};
 use crate::scene::Vec2;
 
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub(super) struct Check {
+    /// The version, as its reports name it.
+    engine: &'static str,
     problem: Option<String>,
 }
 
 impl Check {
+    pub(super) fn new(engine: &'static str) -> Check {
+        Check { engine, problem: None }
+    }
+
     pub(super) fn passed(&self) -> bool {
         self.problem.is_none()
     }
@@ -87,7 +93,8 @@ impl Check {
     }
 
     fn beyond(&mut self, value: String, range: String) {
-        self.problem = Some(format!("{value} lies beyond Box2D 2.4's working range ({range})"));
+        self.problem =
+            Some(format!("{value} lies beyond {}'s working range ({range})", self.engine));
     }
 }
 
@@ -97,7 +104,7 @@ mod tests {
 
     #[test]
     fn the_first_value_beyond_its_bound_is_the_one_reported() {
-        let mut check = Check::default();
+        let mut check = Check::new("Box2D 2.4");
         check.magnitude("Angle", 1.0, 2.0, "rad");
         assert!(check.passed());
         check.vector("Position", Vec2::new(0.5, -300.0), 100.0, "m");
@@ -111,13 +118,13 @@ mod tests {
 
     #[test]
     fn nan_is_beyond_every_bound_and_an_empty_unit_leaves_a_space() {
-        let mut check = Check::default();
+        let mut check = Check::new("Box2D 2.4");
         check.magnitude("Friction", f32::NAN, 1e6, "");
         assert_eq!(
             check.problem(),
             "Friction nan lies beyond Box2D 2.4's working range (within +-1e+06 )"
         );
-        let mut mass = Check::default();
+        let mut mass = Check::new("Box2D 2.4");
         mass.zero_or_within("its mass", 0.0, 1e-3, 1e9, "kg");
         assert!(mass.passed());
         mass.zero_or_within("its mass", 1e-6, 1e-3, 1e9, "kg");
@@ -126,7 +133,7 @@ mod tests {
             "its mass 9.99999997e-07 kg lies beyond Box2D 2.4's working range (0 or within \
              [0.001, 1e+09] kg)"
         );
-        let mut axis = Check::default();
+        let mut axis = Check::new("Box2D 2.4");
         axis.at_least("The length of LocalAxisA", 0.0, 1e-3, "m");
         axis.within("CorrectionFactor", 2.0, 0.0, 1.0, "");
         assert!(axis.problem().starts_with("The length of LocalAxisA 0 lies beyond"));
@@ -135,14 +142,14 @@ mod tests {
     #[test]
     fn of_many_points_the_first_beyond_is_named_and_only_it() {
         let points = [Vec2::new(1.0, 1.0), Vec2::new(2e5, 0.0), Vec2::new(3e5, 0.0)];
-        let mut check = Check::default();
+        let mut check = Check::new("Box2D 2.4");
         check.vectors(|i| format!("Vertex {i}"), &points, 1e5, "m");
         assert_eq!(
             check.problem(),
             "Vertex 1 (200000, 0) lies beyond Box2D 2.4's working range (each component within \
              +-100000 m)"
         );
-        let mut earlier = Check::default();
+        let mut earlier = Check::new("Box2D 2.4");
         earlier.magnitude("Radius", -1.0, 0.5, "m");
         earlier.vectors(|_| unreachable!("not named once a value is reported"), &points, 1e5, "m");
         assert!(earlier.problem().starts_with("Radius -1 "));

@@ -1,4 +1,4 @@
-//! The checks of a Box2D 2.4 joint, once every body has its final mass: its fields against
+//! The checks of a Box2D 2.x joint, once every body has its final mass: its fields against
 //! the working range, how hard its bodies are to move at its anchors, its spring's
 //! stiffness, and how far it starts from satisfied.
 
@@ -54,22 +54,24 @@ impl Mapper<'_> {
         }
     }
 
-    /// What the sweep of docs/working-range.md measured: Box2D 2.4 holds any one joint that
+    /// What the sweep of docs/working-range.md measured: Box2D 2.4 (whose solver 2.3
+    /// shares) holds any one joint that
     /// starts up to 50 m from satisfied alone, but not among other joints (the dialect
     /// fixtures' weld 8.4 m off goes NaN at the first step), so no joint may start further
     /// than `max_violation`; and a body pulled by two joints that start more than
     /// `max_pulled_violation` from satisfied can be torn to NaN by its position solver: the
     /// first such joint on a body is built, the later ones are not.
     pub(super) fn violation_check(&mut self, index: u32, joint: &Joint) -> Check {
-        let mut check = Check::default();
+        let mut check = self.check();
         let (Some(a), Some(b)) = (self.body(joint.body_a), self.body(joint.body_b)) else {
             return check;
         };
         let violation = self.starting_violation(joint, a, b);
+        let engine = self.version.name;
         if violation > self.range.max_violation {
             check.fail(format!(
                 "it starts {} m from satisfied: a joint further than {} m from satisfied lies \
-                 beyond Box2D 2.4's working range (its position solver tears a body to NaN \
+                 beyond {engine}'s working range (its position solver tears a body to NaN \
                  once other joints act on it)",
                 G9(violation),
                 G(self.range.max_violation)
@@ -83,8 +85,8 @@ impl Mapper<'_> {
             if let Some(other) = self.pulled[body as usize] {
                 check.fail(format!(
                     "it starts {} m from satisfied, and joint {other} already pulls body {body} \
-                     from further than {} m: two such joints on one body lie beyond Box2D \
-                     2.4's working range (its position solver can tear the body to NaN)",
+                     from further than {} m: two such joints on one body lie beyond \
+                     {engine}'s working range (its position solver can tear the body to NaN)",
                     G9(violation),
                     G(self.range.max_pulled_violation)
                 ));
@@ -103,7 +105,7 @@ impl Mapper<'_> {
     /// its anchors.
     pub(super) fn joint_check(&self, joint: &Joint) -> Check {
         let range = self.range;
-        let mut check = Check::default();
+        let mut check = self.check();
         let (mut axis, mut spring, mut forces) = (false, false, false);
         let (mut anchor_a, mut anchor_b) = (joint.local_anchor_a, joint.local_anchor_b);
         let kind = JointKind::try_from(joint.kind);
@@ -134,7 +136,8 @@ impl Mapper<'_> {
             Ok(JointKind::Distance) => {
                 spring = true;
                 check.magnitude("Length", joint.length, range.max_length, "m");
-                if joint.frequency_hz > 0.0
+                if !self.version.rope_joint
+                    && joint.frequency_hz > 0.0
                     && self.massless(joint.body_a)
                     && self.massless(joint.body_b)
                 {
@@ -210,11 +213,12 @@ impl Mapper<'_> {
         self.masses[body as usize].mass == 0.0
     }
 
-    /// Box2D divides by h * (damping + h * stiffness): a spring whose stiffness underflows,
-    /// from a tiny FrequencyHz or mass, makes that infinite. The stiffness is the one the
-    /// def gets.
+    /// Box2D 2.4 divides by h * (damping + h * stiffness): a spring whose stiffness
+    /// underflows, from a tiny FrequencyHz or mass, makes that infinite. The stiffness is the
+    /// one the def gets. Box2D 2.3 computes its own from the frequency and leaves a zero
+    /// divisor out.
     fn check_stiffness(&self, joint: &Joint, check: &mut Check) {
-        if !check.passed() || !(joint.frequency_hz > 0.0) {
+        if self.version.springs_in_hertz || !check.passed() || !(joint.frequency_hz > 0.0) {
             return;
         }
         let (Some(a), Some(b)) = (self.body(joint.body_a), self.body(joint.body_b)) else {
@@ -229,11 +233,12 @@ impl Mapper<'_> {
         .stiffness;
         if stiffness != 0.0 && !(stiffness >= self.range.min_stiffness) {
             check.fail(format!(
-                "FrequencyHz {} gives a stiffness of {}{} with these bodies, beyond Box2D 2.4's \
+                "FrequencyHz {} gives a stiffness of {}{} with these bodies, beyond {}'s \
                  working range (0 or at least {})",
                 G9(joint.frequency_hz),
                 G9(stiffness),
                 if weld { " N m/rad" } else { " N/m" },
+                self.version.name,
                 G(self.range.min_stiffness)
             ));
         }
@@ -285,9 +290,10 @@ impl Mapper<'_> {
             )
         };
         let gyration = (mass.inertia / mass.mass).sqrt();
+        let engine = self.version.name;
         if !(compliance <= self.range.max_compliance) {
             check.fail(format!(
-                "{}where 1/m + r^2/I = {} 1/kg lies beyond Box2D 2.4's working range (at most \
+                "{}where 1/m + r^2/I = {} 1/kg lies beyond {engine}'s working range (at most \
                  {} 1/kg)",
                 acts(),
                 G(compliance),
@@ -295,7 +301,7 @@ impl Mapper<'_> {
             ));
         } else if lever > 0.0 && mass.inertia > 0.0 && !(r <= lever * gyration) {
             check.fail(format!(
-                "{}{} radii of gyration out, beyond Box2D 2.4's working range for this joint \
+                "{}{} radii of gyration out, beyond {engine}'s working range for this joint \
                  (at most {})",
                 acts(),
                 G(r / gyration),

@@ -1,14 +1,13 @@
-//! The joints of a Box2D 2.4 plan, made once every body has its final mass: checked
+//! The joints of a Box2D 2.x plan, made once every body has its final mass: checked
 //! (`joint_checks.rs`), then each kind's def filled as the engine takes it.
 
 use super::body::Body;
-use super::check::Check;
 use super::math::normalized;
 use super::stiffness::{Spring, linear, weld_spring, wheel_spring};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
-use crate::plan::printf::G9;
+use crate::plan::printf::{G, G9};
 use crate::plan::records::{PlanJoint, PlanJointKind};
 use crate::scene::{BodyKind, Joint, JointKind, NONE, Vec2};
 
@@ -120,7 +119,7 @@ impl Mapper<'_> {
             Object::Joint,
             index,
             joint.name,
-            format_args!("{what} has no Box2D 2.4 equivalent; joint skipped"),
+            format_args!("{what} has no {} equivalent; joint skipped", self.version.name),
         );
     }
 
@@ -142,7 +141,7 @@ impl Mapper<'_> {
         let (mut lower, mut upper) = (joint.lower_limit, joint.upper_limit);
         if lower > upper {
             // Only a disabled limit gets here (the loader refuses an enabled one), and Box2D
-            // 2.4's prismatic joint asserts against it all the same.
+            // asserts against it all the same (`inverted_limit_asserted_by`).
             std::mem::swap(&mut lower, &mut upper);
             self.report(
                 Code::BadLimit,
@@ -151,9 +150,10 @@ impl Mapper<'_> {
                 joint.name,
                 format_args!(
                     "its disabled limit has LowerTranslation {} above UpperTranslation {}, \
-                     which Box2D 2.4 asserts against; they were passed swapped",
+                     which {} asserts against; they were passed swapped",
                     G9(joint.lower_limit),
-                    G9(joint.upper_limit)
+                    G9(joint.upper_limit),
+                    self.version.inverted_limit_asserted_by
                 ),
             );
         }
@@ -171,12 +171,15 @@ impl Mapper<'_> {
         self.create(index, def);
     }
 
-    /// FrequencyHz 0 is a rigid rod. Box2D 2.4 reads stiffness 0 with the default
-    /// min/max lengths as a slack rope, so the rod pins both lengths to its own.
+    /// FrequencyHz 0 is a rigid rod. Box2D 2.3 takes the spring as it is; 2.4 reads
+    /// stiffness 0 with the default min/max lengths as a slack rope, so the rod pins both
+    /// lengths to its own.
     fn make_distance(&mut self, index: u32, joint: &Joint, a: Body, b: Body) {
         let mut def =
             PlanJoint { length: joint.length, ..Self::def(index, joint, PlanJointKind::Distance) };
-        if joint.frequency_hz > 0.0 {
+        if self.version.springs_in_hertz {
+            (def.hertz, def.damping_ratio) = (joint.frequency_hz, joint.damping_ratio);
+        } else if joint.frequency_hz > 0.0 {
             let s = linear(joint.frequency_hz, joint.damping_ratio, a.mass.mass, b.mass.mass);
             (def.min_length, def.max_length) = (0.0, f32::MAX);
             (def.stiffness, def.damping) = (s.stiffness, s.damping);
@@ -186,18 +189,27 @@ impl Mapper<'_> {
         self.create(index, def);
     }
 
-    /// Box2D 2.4 has no rope joint: a distance joint that is slack up to MaxLength.
     fn make_rope(&mut self, index: u32, joint: &Joint) {
-        let def = PlanJoint {
-            length: joint.max_length,
-            min_length: 0.0,
-            max_length: joint.max_length,
-            ..Self::def(index, joint, PlanJointKind::Distance)
-        };
+        let def = self.rope(Self::def(index, joint, PlanJointKind::Distance), joint.max_length);
         self.create(index, def);
     }
 
-    /// MaxLengthA/B (Box2D 2.1 only) have no 2.4 field: each side's limit becomes a rope
+    /// `def` made a rope of `length`: Box2D 2.3's rope joint, or in 2.4 (which has none) a
+    /// distance joint that is slack up to it.
+    fn rope(&self, def: PlanJoint, length: f32) -> PlanJoint {
+        if self.version.rope_joint {
+            return PlanJoint { kind: PlanJointKind::Rope as u32, length, ..def };
+        }
+        PlanJoint {
+            kind: PlanJointKind::Distance as u32,
+            length,
+            min_length: 0.0,
+            max_length: length,
+            ..def
+        }
+    }
+
+    /// MaxLengthA/B (Box2D 2.1 only) have no 2.x field: each side's limit becomes a rope
     /// from its ground anchor, held by a static body, right after the pulley.
     fn make_pulley(&mut self, index: u32, joint: &Joint) {
         // The ground anchors are world points: the placement moves them with the bodies.
@@ -274,27 +286,26 @@ impl Mapper<'_> {
                 index,
                 joint.name,
                 format_args!(
-                    "{field} {} gives a limit of {} m, which Box2D 2.4 cannot hold {why}; the \
-                     side is unlimited",
+                    "{field} {} gives a limit of {} m, which {} cannot hold {why}; the side is \
+                     unlimited",
                     G9(given),
-                    G9(limit)
+                    G9(limit),
+                    self.version.name
                 ),
             );
             return;
         }
         let (holder_index, holder) = holder.expect("checked above");
-        self.plan.push_joint(PlanJoint {
+        let side = PlanJoint {
             joint: NONE,
-            kind: PlanJointKind::Distance as u32,
             body_a: holder_index,
             body_b: body,
             anchor_a: holder.local_point(ground),
             anchor_b: anchor,
-            length: limit,
-            min_length: 0.0,
-            max_length: limit,
             ..PlanJoint::default()
-        });
+        };
+        let side = self.rope(side, limit);
+        self.plan.push_joint(side);
     }
 
     /// The first static body of the scene that was created.
@@ -316,14 +327,10 @@ impl Mapper<'_> {
     }
 
     /// Box2D 2.1's line joint is a wheel joint without a spring. Its motor drove the
-    /// translation; the wheel joint's motor drives the rotation, so it stays off.
+    /// translation; the wheel joint's motor drives the rotation, so it stays off. Box2D 2.3's
+    /// wheel joint has no limit either.
     fn make_line(&mut self, index: u32, joint: &Joint) {
-        let def = PlanJoint {
-            enable_limit: joint.enable_limit,
-            lower: joint.lower_limit,
-            upper: joint.upper_limit,
-            ..Self::wheel_def(index, joint)
-        };
+        let engine = self.version.name;
         if joint.enable_motor {
             self.report(
                 Code::LossyLineMotor,
@@ -331,33 +338,91 @@ impl Mapper<'_> {
                 index,
                 joint.name,
                 format_args!(
-                    "Box2D 2.4 has no linear motor on a line (wheel) joint; the motor is off"
+                    "{engine} has no linear motor on a line (wheel) joint; the motor is off"
                 ),
             );
         }
+        let limited = joint.enable_limit && self.version.wheel_limit;
+        if joint.enable_limit && !limited {
+            self.report(
+                Code::LossyJoint,
+                Object::Joint,
+                index,
+                joint.name,
+                format_args!(
+                    "{engine}'s wheel joint has no translation limit; the line joint's limit is off"
+                ),
+            );
+        }
+        let def = PlanJoint {
+            enable_limit: limited,
+            lower: if limited { joint.lower_limit } else { 0.0 },
+            upper: if limited { joint.upper_limit } else { 0.0 },
+            ..Self::wheel_def(index, joint)
+        };
+        let def = self.wheel_spring_in_hertz(index, joint, def, 0.0, 0.0);
         self.create(index, def);
     }
 
     fn make_wheel(&mut self, index: u32, joint: &Joint, a: Body, b: Body) {
-        let s = wheel_spring(joint, a, b);
         let def = PlanJoint {
             enable_motor: joint.enable_motor,
             max_motor: joint.max_motor_torque,
             motor_speed: joint.motor_speed,
-            stiffness: s.stiffness,
-            damping: s.damping,
             ..Self::wheel_def(index, joint)
+        };
+        let def = if self.version.springs_in_hertz {
+            self.wheel_spring_in_hertz(index, joint, def, joint.frequency_hz, joint.damping_ratio)
+        } else {
+            let s = wheel_spring(joint, a, b);
+            PlanJoint { stiffness: s.stiffness, damping: s.damping, ..def }
         };
         self.create(index, def);
     }
 
+    /// A Box2D 2.3 wheel's spring of `hertz` and `ratio`, or the version's stand-in where
+    /// it has none (reported); 2.4's `def` as it is.
+    fn wheel_spring_in_hertz(
+        &mut self,
+        index: u32,
+        joint: &Joint,
+        def: PlanJoint,
+        hertz: f32,
+        ratio: f32,
+    ) -> PlanJoint {
+        let stand_in = self.version.springless_wheel_hertz;
+        if !self.version.springs_in_hertz {
+            return def;
+        }
+        if hertz > 0.0 || stand_in == 0.0 {
+            return PlanJoint { hertz, damping_ratio: ratio, ..def };
+        }
+        self.report(
+            Code::LossyJoint,
+            Object::Joint,
+            index,
+            joint.name,
+            format_args!(
+                "{}'s wheel joint without a spring reads uninitialised memory; a spring of {} \
+                 Hz, undamped, stands in for none (about 1e-6 N s per metre and kg a step)",
+                self.version.name,
+                G(stand_in)
+            ),
+        );
+        PlanJoint { hertz: stand_in, damping_ratio: 0.0, ..def }
+    }
+
     fn make_weld(&mut self, index: u32, joint: &Joint, a: Body, b: Body) {
-        let s = if joint.frequency_hz > 0.0 { weld_spring(joint, a, b) } else { Spring::default() };
         let def = PlanJoint {
             reference_angle: joint.reference_angle,
-            stiffness: s.stiffness,
-            damping: s.damping,
             ..Self::def(index, joint, PlanJointKind::Weld)
+        };
+        let def = if self.version.springs_in_hertz {
+            PlanJoint { hertz: joint.frequency_hz, damping_ratio: joint.damping_ratio, ..def }
+        } else {
+            let s =
+                if joint.frequency_hz > 0.0 { weld_spring(joint, a, b) } else { Spring::default() };
+            PlanJoint { stiffness: s.stiffness, damping: s.damping, ..def }
         };
         self.create(index, def);
     }
@@ -396,7 +461,7 @@ impl Mapper<'_> {
             return;
         }
         let bodies = self.gear_bodies(index, &joint, first, second);
-        let mut check = Check::default();
+        let mut check = self.check();
         check.magnitude("Ratio", joint.ratio, self.range.max_ratio, "");
         if !self.within_range(&check, Object::Joint, index, joint.name, "") {
             return;
@@ -475,8 +540,9 @@ impl Mapper<'_> {
                 index,
                 gear.name,
                 format_args!(
-                    "the gear couples joint {input}, whose body B is not dynamic, which Box2D \
-                     2.4 asserts against; gear skipped"
+                    "the gear couples joint {input}, whose body B is not dynamic, which {} \
+                     asserts against; gear skipped",
+                    self.version.name
                 ),
             );
             return None;

@@ -14,9 +14,13 @@ mod polygon;
 mod shape_mass;
 mod shapes;
 mod stiffness;
+mod version;
 mod world;
 
+pub(crate) use version::Version;
 pub(crate) use world::plan;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_23;

@@ -3,6 +3,7 @@
 
 use super::math::{add, dot, scale};
 use super::polygon;
+use super::version::PolygonReference;
 use crate::plan::records::PlanMass;
 use crate::scene::Vec2;
 
@@ -23,8 +24,8 @@ pub(crate) enum MassShape {
 }
 
 impl MassShape {
-    /// `ComputeMass(&data, density)`.
-    pub(crate) fn mass(&self, density: f32) -> PlanMass {
+    /// `ComputeMass(&data, density)`, a polygon's fanned from `reference`.
+    pub(crate) fn mass(&self, density: f32, reference: PolygonReference) -> PlanMass {
         match self {
             MassShape::Circle { center, radius } => {
                 let mass = density * PI * radius * radius;
@@ -34,7 +35,7 @@ impl MassShape {
                     inertia: mass * (0.5 * radius * radius + dot(*center, *center)),
                 }
             }
-            MassShape::Polygon(vertices) => polygon::mass(vertices, density),
+            MassShape::Polygon(vertices) => polygon::mass(vertices, density, reference),
             MassShape::Edge(a, b) => {
                 PlanMass { mass: 0.0, center: scale(0.5, add(*a, *b)), inertia: 0.0 }
             }
@@ -50,7 +51,7 @@ mod tests {
     #[test]
     fn a_circle_s_inertia_is_about_the_body_origin() {
         let circle = MassShape::Circle { center: Vec2::new(3.0, 4.0), radius: 1.0 };
-        let m = circle.mass(2.0);
+        let m = circle.mass(2.0, PolygonReference::First);
         assert_eq!(m.mass, 2.0 * PI);
         assert_eq!(m.center, Vec2::new(3.0, 4.0));
         assert_eq!(m.inertia, m.mass * (0.5 + 25.0));
@@ -58,8 +59,9 @@ mod tests {
 
     #[test]
     fn edges_and_chains_have_no_mass() {
-        let edge = MassShape::Edge(Vec2::new(0.0, 0.0), Vec2::new(2.0, 4.0)).mass(5.0);
+        let edge = MassShape::Edge(Vec2::new(0.0, 0.0), Vec2::new(2.0, 4.0))
+            .mass(5.0, PolygonReference::First);
         assert_eq!(edge, PlanMass { mass: 0.0, center: Vec2::new(1.0, 2.0), inertia: 0.0 });
-        assert_eq!(MassShape::Chain.mass(5.0), PlanMass::default());
+        assert_eq!(MassShape::Chain.mass(5.0, PolygonReference::First), PlanMass::default());
     }
 }

@@ -1,4 +1,4 @@
-//! The shapes of a Box2D 2.4 plan: each scene shape checked and made once, then given to
+//! The shapes of a Box2D 2.x plan: each scene shape checked and made once, then given to
 //! every fixture that uses it (as the engine clones one shape into each fixture).
 
 use super::check::Check;
@@ -9,7 +9,11 @@ use crate::error::Code;
 use crate::plan::container::Object;
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::rules::{MAX_POLYGON_VERTICES, polygon_hull};
-use crate::scene::{Fixture, Range, Shape, ShapeKind, Str, Vec2};
+use crate::scene::{Filter, Fixture, Range, Shape, ShapeKind, Str, Vec2};
+
+/// The 16 filter bits Box2D 2.x holds (`uint16`); `report_lossy_filters` says where the
+/// cut changes what collides.
+const LOW_FILTER_BITS: u32 = 0xFFFF;
 
 /// A scene shape as the engine makes it: the plan's form, and the engine's for its mass.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,15 +70,15 @@ impl Mapper<'_> {
             );
             return None;
         }
-        let check = shape_check(shape, points, self.range.max_length);
+        let check = shape_check(self.check(), shape, points, self.range.max_length);
         if !self.within_range(&check, Object::Shape, index, shape.name, "") {
             return None;
         }
         let made: Geometry = match ShapeKind::try_from(shape.kind) {
             Ok(ShapeKind::Circle) => circle(shape),
             Ok(ShapeKind::Polygon) => polygon(shape, points),
-            Ok(ShapeKind::Edge) => edge(shape, points),
-            Ok(ShapeKind::Chain) => chain(shape, points),
+            Ok(ShapeKind::Edge) => edge(shape, points, self.version.ghosts_on_their_own),
+            Ok(ShapeKind::Chain) => chain(shape, points, self.version.ghosts_on_their_own),
             Err(kind) => {
                 self.report(
                     Code::UnknownType,
@@ -101,9 +105,10 @@ impl Mapper<'_> {
 
     /// Whether `make_fixture` will create fixture `index`.
     pub(super) fn fixture_creatable(&self, index: u32) -> bool {
-        self.scene.fixtures().get(index as usize).is_some_and(|fixture| {
-            self.shape_made(fixture) && fixture_check(fixture, self.range).passed()
-        })
+        self.scene
+            .fixtures()
+            .get(index as usize)
+            .is_some_and(|fixture| self.shape_made(fixture) && self.fixture_check(fixture).passed())
     }
 
     /// The plan shape of fixture `index` in the pool's entry `slot` of body `body`, or
@@ -134,7 +139,7 @@ impl Mapper<'_> {
             );
             return None;
         };
-        let check = fixture_check(fixture, self.range);
+        let check = self.fixture_check(fixture);
         if !check.passed() {
             let owner = format!("{owner}: ");
             self.within_range(&check, Object::Fixture, index, fixture.name, &owner);
@@ -151,9 +156,24 @@ impl Mapper<'_> {
             density: fixture.density,
             friction: fixture.friction,
             restitution: fixture.restitution,
-            filter: fixture.filter,
+            filter: Filter {
+                category_bits: fixture.filter.category_bits & LOW_FILTER_BITS,
+                mask_bits: fixture.filter.mask_bits & LOW_FILTER_BITS,
+                ..fixture.filter
+            },
             is_sensor: fixture.is_sensor,
         })
+    }
+}
+
+impl Mapper<'_> {
+    fn fixture_check(&self, fixture: &Fixture) -> Check {
+        let range = self.range;
+        let mut check = self.check();
+        check.magnitude("Density", fixture.density, range.max_density, "kg/m^2");
+        check.magnitude("Friction", fixture.friction, range.max_friction, "");
+        check.magnitude("Restitution", fixture.restitution, range.max_friction, "");
+        check
     }
 }
 
@@ -168,8 +188,7 @@ fn vertex_count_fits(shape: &Shape, count: usize) -> bool {
 
 /// The points Box2D gets: every vertex, a circle's centre and radius, the centroid and
 /// the ghost vertices where they are used.
-fn shape_check(shape: &Shape, points: &[Vec2], length: f32) -> Check {
-    let mut check = Check::default();
+fn shape_check(mut check: Check, shape: &Shape, points: &[Vec2], length: f32) -> Check {
     let kind = ShapeKind::try_from(shape.kind);
     let edge = kind == Ok(ShapeKind::Edge);
     if kind == Ok(ShapeKind::Circle) {
@@ -188,14 +207,6 @@ fn shape_check(shape: &Shape, points: &[Vec2], length: f32) -> Check {
     if ghosts && shape.has_next_vertex {
         check.vector(if edge { "Vertex3" } else { "NextVertex" }, shape.next_vertex, length, "m");
     }
-    check
-}
-
-pub(super) fn fixture_check(fixture: &Fixture, range: &crate::plan::WorkingRange) -> Check {
-    let mut check = Check::default();
-    check.magnitude("Density", fixture.density, range.max_density, "kg/m^2");
-    check.magnitude("Friction", fixture.friction, range.max_friction, "");
-    check.magnitude("Restitution", fixture.restitution, range.max_friction, "");
     check
 }
 
@@ -237,17 +248,28 @@ fn segment(points: Vec<Vec2>, a: Vec2, b: Vec2) -> Geometry {
     }
 }
 
-/// An edge with both ghosts is one-sided (`SetOneSided`), else two-sided.
-fn edge(shape: &Shape, points: &[Vec2]) -> Geometry {
+/// A ghost the file gives, else NaN: Box2D 2.3 keeps each ghost on its own.
+fn ghost(given: bool, vertex: Vec2) -> Vec2 {
+    if given { vertex } else { no_centroid() }
+}
+
+/// An edge with both ghosts is one-sided (`SetOneSided`), else two-sided; in 2.3 one with
+/// either keeps it (NaN standing for the one it has not).
+fn edge(shape: &Shape, points: &[Vec2], ghosts_on_their_own: bool) -> Geometry {
     let (a, b) = (points[0], points[1]);
-    if shape.has_prev_vertex && shape.has_next_vertex {
+    if ghosts_on_their_own && (shape.has_prev_vertex || shape.has_next_vertex) {
+        let prev = ghost(shape.has_prev_vertex, shape.prev_vertex);
+        segment(vec![prev, a, b, ghost(shape.has_next_vertex, shape.next_vertex)], a, b)
+    } else if shape.has_prev_vertex && shape.has_next_vertex {
         segment(vec![shape.prev_vertex, a, b, shape.next_vertex], a, b)
     } else {
         segment(vec![a, b], a, b)
     }
 }
 
-fn chain(shape: &Shape, points: &[Vec2]) -> Geometry {
+/// An open chain with its ghosts: in 2.4 each one the file leaves out extrapolated, in 2.3
+/// NaN (2.3 keeps only those given).
+fn chain(shape: &Shape, points: &[Vec2], ghosts_on_their_own: bool) -> Geometry {
     let made = |kind, points| Geometry {
         kind,
         points,
@@ -259,6 +281,24 @@ fn chain(shape: &Shape, points: &[Vec2]) -> Geometry {
         return made(PlanShapeKind::Loop, points.to_vec());
     }
     let n = points.len();
+    let (prev, next) = if ghosts_on_their_own {
+        (
+            ghost(shape.has_prev_vertex, shape.prev_vertex),
+            ghost(shape.has_next_vertex, shape.next_vertex),
+        )
+    } else {
+        extrapolated_ghosts(shape, points)
+    };
+    let mut all = Vec::with_capacity(n + 2);
+    all.push(prev);
+    all.extend_from_slice(points);
+    all.push(next);
+    made(PlanShapeKind::Chain, all)
+}
+
+/// An open chain's ghosts as 2.4 gets them: the file's, or its end continued.
+fn extrapolated_ghosts(shape: &Shape, points: &[Vec2]) -> (Vec2, Vec2) {
+    let n = points.len();
     let prev =
         if shape.has_prev_vertex { shape.prev_vertex } else { extrapolated(points[0], points[1]) };
     let next = if shape.has_next_vertex {
@@ -266,9 +306,5 @@ fn chain(shape: &Shape, points: &[Vec2]) -> Geometry {
     } else {
         extrapolated(points[n - 1], points[n - 2])
     };
-    let mut all = Vec::with_capacity(n + 2);
-    all.push(prev);
-    all.extend_from_slice(points);
-    all.push(next);
-    made(PlanShapeKind::Chain, all)
+    (prev, next)
 }

@@ -16,7 +16,7 @@ fn options(placement: Transform) -> PlanOptions {
     }
 }
 
-fn identity() -> Transform {
+pub(super) fn identity() -> Transform {
     Transform { p: Vec2::ZERO, q: Rot { c: 1.0, s: 0.0 } }
 }
 
@@ -30,7 +30,7 @@ fn plan(xml: &str) -> Plan {
 }
 
 /// Every report as (its code's number, object, index, message).
-fn reports(plan: &Plan) -> Vec<(u32, String, u32, String)> {
+pub(super) fn reports(plan: &Plan) -> Vec<(u32, String, u32, String)> {
     plan.reports()
         .iter()
         .map(|r| {
@@ -57,10 +57,10 @@ fn plan_object(s: crate::scene::Str) -> String {
         .to_owned()
 }
 
-const BOX: &str = "<Shape Type=\"Polygon\"><Vertices><Vertex>-0.5 -0.5</Vertex><Vertex>0.5 -0.5\
+pub(super) const BOX: &str = "<Shape Type=\"Polygon\"><Vertices><Vertex>-0.5 -0.5</Vertex><Vertex>0.5 -0.5\
                    </Vertex><Vertex>0.5 0.5</Vertex><Vertex>-0.5 0.5</Vertex></Vertices></Shape>";
 
-fn one_body(body: &str) -> String {
+pub(super) fn one_body(body: &str) -> String {
     format!(
         "<World Version=\"2\"><Gravity>0 -10</Gravity><Shapes>{BOX}</Shapes><Fixtures><Fixture>\
          <Shape>0</Shape><Density>2</Density></Fixture></Fixtures><Bodies>{body}</Bodies></World>"
@@ -196,13 +196,13 @@ fn edges_and_chains_carry_their_ghosts() {
     assert!(!plan.bodies()[0].apply_mass_from_shapes);
 }
 
-const TWO_BOXES: &str = "<Shapes>{BOX}</Shapes><Fixtures><Fixture><Shape>0</Shape><Density>2\
+pub(super) const TWO_BOXES: &str = "<Shapes>{BOX}</Shapes><Fixtures><Fixture><Shape>0</Shape><Density>2\
     </Density></Fixture><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>\
     <Bodies><Body Type=\"Static\"/><Body Type=\"Dynamic\"><Position>-2 3</Position><Fixtures>\
     <ID>0</ID></Fixtures></Body><Body Type=\"Dynamic\"><Position>2 4</Position><Fixtures><ID>1\
     </ID></Fixtures></Body></Bodies>";
 
-fn with_joints(joints: &str) -> String {
+pub(super) fn with_joints(joints: &str) -> String {
     format!(
         "<World Version=\"1\"><Gravity>0 -10</Gravity>{}<Joints>{joints}</Joints></World>",
         TWO_BOXES.replace("{BOX}", BOX)

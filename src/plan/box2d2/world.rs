@@ -1,4 +1,4 @@
-//! The mapping of a scene onto Box2D 2.4: one pass in the order the executor creates what
+//! The mapping of a scene onto Box2D 2.x (`version.rs` says where 2.3 and 2.4 differ): one pass in the order the executor creates what
 //! it makes (the shapes checked first, then each body with its fixtures and mass, then the
 //! joints, gears last), reporting what the engine cannot hold as it meets it.
 
@@ -8,16 +8,17 @@ use super::body::Body;
 use super::check::Check;
 use super::math::{angle, transform};
 use super::shapes::Made;
+use super::version::Version;
 use crate::error::Code;
 use crate::plan::container::{Object, Plan};
 use crate::plan::printf::G9;
-use crate::plan::range::{Engine, WorkingRange};
+use crate::plan::range::WorkingRange;
 use crate::plan::records::{PlanMass, PlanOptions};
 use crate::scene::{Scene, Str, Vec2};
 
-/// The plan of `scene` for Box2D 2.4.
-pub(crate) fn plan(scene: &Scene, options: &PlanOptions) -> Plan {
-    let mut mapper = Mapper::new(scene, options);
+/// The plan of `scene` for a Box2D 2.x version.
+pub(crate) fn plan(scene: &Scene, options: &PlanOptions, version: &'static Version) -> Plan {
+    let mut mapper = Mapper::new(scene, options, version);
     mapper.run();
     mapper.plan
 }
@@ -26,6 +27,7 @@ pub(crate) fn plan(scene: &Scene, options: &PlanOptions) -> Plan {
 pub(super) struct Mapper<'a> {
     pub(super) scene: &'a Scene,
     pub(super) options: &'a PlanOptions,
+    pub(super) version: &'static Version,
     pub(super) range: &'static WorkingRange,
     pub(super) plan: Plan,
     /// rad: what the placement adds to every body's angle.
@@ -44,11 +46,12 @@ pub(super) struct Mapper<'a> {
 }
 
 impl<'a> Mapper<'a> {
-    fn new(scene: &'a Scene, options: &'a PlanOptions) -> Mapper<'a> {
+    fn new(scene: &'a Scene, options: &'a PlanOptions, version: &'static Version) -> Mapper<'a> {
         Mapper {
             scene,
             options,
-            range: Engine::Box2d24.working_range(),
+            version,
+            range: version.engine.working_range(),
             plan: Plan::with_capacity(
                 scene.bodies().len(),
                 scene.fixture_id_pool().len(),
@@ -105,6 +108,11 @@ impl<'a> Mapper<'a> {
         }
     }
 
+    /// A check whose report names this version.
+    pub(super) fn check(&self) -> Check {
+        Check::new(self.version.name)
+    }
+
     pub(super) fn report(
         &mut self,
         code: Code,
@@ -145,7 +153,7 @@ impl<'a> Mapper<'a> {
         let Some(gravity) = self.scene.gravity() else {
             return;
         };
-        let mut check = Check::default();
+        let mut check = self.check();
         check.vector("Gravity", gravity, self.range.max_acceleration, "m/s^2");
         if !check.passed() {
             self.report(
@@ -161,7 +169,7 @@ impl<'a> Mapper<'a> {
         }
     }
 
-    /// A placement Box2D 2.4 can take: finite, within the working range, its rotation
+    /// A placement Box2D 2.x can take: finite, within the working range, its rotation
     /// normalised (2.4 keeps a body's angle, and the placement's rotation is added to it).
     fn placement_valid(&self) -> bool {
         let t = self.options.placement;
@@ -177,7 +185,7 @@ impl<'a> Mapper<'a> {
         transform(self.options.placement, point)
     }
 
-    /// Box2D 2.4 holds 16 of the scene's 32 filter bits: reports each fixture that the cut
+    /// Box2D 2.x holds 16 of the scene's 32 filter bits: reports each fixture that the cut
     /// makes collide otherwise (a category bit above 16, or a mask meeting one in use).
     fn report_lossy_filters(&mut self) {
         const HIGH: u32 = 0xFFFF_0000;
@@ -195,10 +203,10 @@ impl<'a> Mapper<'a> {
                     index as u32,
                     fixture.name,
                     format_args!(
-                        "category bits {} and mask bits {} reach above Box2D 2.4's 16 filter \
-                         bits where categories in use are; the low 16 were used, so it \
-                         collides otherwise",
-                        filter.category_bits, filter.mask_bits
+                        "category bits {} and mask bits {} reach above {}'s 16 filter bits \
+                         where categories in use are; the low 16 were used, so it collides \
+                         otherwise",
+                        filter.category_bits, filter.mask_bits, self.version.name
                     ),
                 );
             }
