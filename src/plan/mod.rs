@@ -18,6 +18,7 @@ mod box2d3;
 mod container;
 mod gravity;
 mod make;
+mod math;
 mod printf;
 mod range;
 mod records;

@@ -6,7 +6,7 @@ use super::body_mass::{
     FixtureMass, about_origin, central_inertia_positive, inertia_centred, reset_mass, set_mass,
 };
 use super::check::Check;
-use super::math::{rotate, rotation, scale, sub, transform};
+use super::math::{mul_sv, rotate, rotation, sub, transform};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::container::Object;
@@ -110,7 +110,7 @@ impl Mapper<'_> {
         check.magnitude("AngularDamping", body.angular_damping, range.max_damping, "1/s");
         check.magnitude("GravityScale", body.gravity_scale, range.max_gravity_scale, "");
         if kind == BodyKind::Dynamic {
-            let gravity = scale(body.gravity_scale, self.options.gravity);
+            let gravity = mul_sv(body.gravity_scale, self.options.gravity);
             check.vector(
                 "GravityScale times the world's gravity",
                 gravity,

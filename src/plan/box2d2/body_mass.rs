@@ -3,7 +3,7 @@
 //! Both leave the inertia about the centre of mass (`m_I`); `b2Body::GetMassData` gives it
 //! about the origin.
 
-use super::math::{add, dot, scale};
+use super::math::{add, dot, mul_sv};
 use crate::plan::records::PlanMass;
 
 /// One fixture of a body: its density and its shape's mass at it.
@@ -26,12 +26,12 @@ pub(crate) fn reset_mass(
     let mut body = PlanMass::default();
     for f in fixtures.iter().rev().filter(|f| f.density != 0.0) {
         body.mass += f.mass.mass;
-        body.center = add(body.center, scale(f.mass.mass, f.mass.center));
+        body.center = add(body.center, mul_sv(f.mass.mass, f.mass.center));
         body.inertia += f.mass.inertia;
     }
     if body.mass > 0.0 {
         let inverse = 1.0 / body.mass;
-        body.center = scale(inverse, body.center);
+        body.center = mul_sv(inverse, body.center);
     } else if massless_weighs_one_kg {
         body.mass = 1.0;
     }

@@ -1,35 +1,9 @@
-//! Box2D 2.x's vector arithmetic (`b2_math.h`), one float operation at a time in the
-//! engine's order, so that what the plan predicts agrees with the engine to the bit. Rust
-//! neither reorders nor fuses float operations, as the engine's build does not.
+//! Box2D 2.x's vector arithmetic (`b2_math.h`) where it is its own: the rest is the plan's
+//! shared `math.rs`, which this module hands on.
 
+pub(crate) use crate::plan::math::{add, cross, dot, length, mul_sv, rotate, rotation, sub};
 use crate::plan::records::{Rot, Transform};
 use crate::scene::Vec2;
-
-pub(crate) fn add(a: Vec2, b: Vec2) -> Vec2 {
-    Vec2::new(a.x + b.x, a.y + b.y)
-}
-
-pub(crate) fn sub(a: Vec2, b: Vec2) -> Vec2 {
-    Vec2::new(a.x - b.x, a.y - b.y)
-}
-
-/// `s * v`.
-pub(crate) fn scale(s: f32, v: Vec2) -> Vec2 {
-    Vec2::new(s * v.x, s * v.y)
-}
-
-pub(crate) fn dot(a: Vec2, b: Vec2) -> f32 {
-    a.x * b.x + a.y * b.y
-}
-
-/// The 2D cross product of two vectors (`b2Cross(a, b)`).
-pub(crate) fn cross(a: Vec2, b: Vec2) -> f32 {
-    a.x * b.y - a.y * b.x
-}
-
-pub(crate) fn length(v: Vec2) -> f32 {
-    (v.x * v.x + v.y * v.y).sqrt()
-}
 
 pub(crate) fn distance(a: Vec2, b: Vec2) -> f32 {
     length(sub(a, b))
@@ -45,19 +19,9 @@ pub(crate) fn normalized(v: Vec2) -> Vec2 {
     Vec2::new(v.x * inverse, v.y * inverse)
 }
 
-/// `b2Rot(angle)`: the C library's `sinf` and `cosf`, which Rust's `f32` calls too.
-pub(crate) fn rotation(angle: f32) -> Rot {
-    Rot { c: angle.cos(), s: angle.sin() }
-}
-
 /// `b2Rot::GetAngle`.
 pub(crate) fn angle(q: Rot) -> f32 {
     q.s.atan2(q.c)
-}
-
-/// `b2Mul(q, v)`.
-pub(crate) fn rotate(q: Rot, v: Vec2) -> Vec2 {
-    Vec2::new(q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y)
 }
 
 /// `b2Mul(xf, v)`: a point of the frame in world terms.

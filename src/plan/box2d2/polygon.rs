@@ -1,7 +1,7 @@
 //! The mass Box2D 2.x gives a polygon (`b2PolygonShape::ComputeMass`), of the hull that
 //! `b2PolygonShape::Set` keeps (`rules::polygon_hull`).
 
-use super::math::{add, cross, dot, scale, sub};
+use super::math::{add, cross, dot, mul_sv, sub};
 use super::version::PolygonReference;
 use crate::plan::records::PlanMass;
 use crate::scene::Vec2;
@@ -14,7 +14,7 @@ pub(crate) fn mass(vertices: &[Vec2], density: f32, reference: PolygonReference)
         PolygonReference::First => vertices[0],
         PolygonReference::Mean => {
             let sum = vertices.iter().fold(Vec2::ZERO, |s, &v| add(s, v));
-            scale(1.0 / vertices.len() as f32, sum)
+            mul_sv(1.0 / vertices.len() as f32, sum)
         }
     };
     let mut center = Vec2::ZERO;
@@ -26,13 +26,13 @@ pub(crate) fn mass(vertices: &[Vec2], density: f32, reference: PolygonReference)
         let d = cross(e1, e2);
         let triangle = 0.5 * d;
         area += triangle;
-        center = add(center, scale(triangle * third, add(e1, e2)));
+        center = add(center, mul_sv(triangle * third, add(e1, e2)));
         let x2 = e1.x * e1.x + e2.x * e1.x + e2.x * e2.x;
         let y2 = e1.y * e1.y + e2.y * e1.y + e2.y * e2.y;
         inertia += (0.25 * third * d) * (x2 + y2);
     }
     let mass = density * area;
-    center = scale(1.0 / area, center);
+    center = mul_sv(1.0 / area, center);
     let centroid = add(center, s);
     let about_s = density * inertia;
     PlanMass {

@@ -1,7 +1,7 @@
 //! The mass each kind of Box2D 2.x shape gives at a density (its `ComputeMass`), the
 //! inertia about the body origin.
 
-use super::math::{add, dot, scale};
+use super::math::{add, dot, mul_sv};
 use super::polygon;
 use super::version::PolygonReference;
 use crate::plan::records::PlanMass;
@@ -37,7 +37,7 @@ impl MassShape {
             }
             MassShape::Polygon(vertices) => polygon::mass(vertices, density, reference),
             MassShape::Edge(a, b) => {
-                PlanMass { mass: 0.0, center: scale(0.5, add(*a, *b)), inertia: 0.0 }
+                PlanMass { mass: 0.0, center: mul_sv(0.5, add(*a, *b)), inertia: 0.0 }
             }
             MassShape::Chain => PlanMass::default(),
         }

@@ -1,7 +1,7 @@
-//! Box2D v3's vector arithmetic (`math_functions.h`), operation for operation in `f32`, so
-//! that what the plan predicts of a body or a shape is the engine's own result bit for bit.
-//! Rust never fuses a product into a sum, and neither does the engine's build on x86-64.
+//! Box2D v3's vector arithmetic (`math_functions.h`) where it is its own: the rest is the
+//! plan's shared `math.rs`, which this module hands on.
 
+pub(super) use crate::plan::math::{add, cross, dot, length, mul_sv, rotate, rotation, sub};
 use crate::plan::{Rot, Transform};
 use crate::scene::Vec2;
 
@@ -12,29 +12,9 @@ pub(super) fn vec2(x: f32, y: f32) -> Vec2 {
     Vec2 { x, y }
 }
 
-pub(super) fn add(a: Vec2, b: Vec2) -> Vec2 {
-    vec2(a.x + b.x, a.y + b.y)
-}
-
-pub(super) fn sub(a: Vec2, b: Vec2) -> Vec2 {
-    vec2(a.x - b.x, a.y - b.y)
-}
-
-pub(super) fn dot(a: Vec2, b: Vec2) -> f32 {
-    a.x * b.x + a.y * b.y
-}
-
-pub(super) fn cross(a: Vec2, b: Vec2) -> f32 {
-    a.x * b.y - a.y * b.x
-}
-
 /// `b2CrossSV`: the scalar `s` (an angular velocity) crossed with `v`.
 pub(super) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
     vec2(-s * v.y, s * v.x)
-}
-
-pub(super) fn mul_sv(s: f32, v: Vec2) -> Vec2 {
-    vec2(s * v.x, s * v.y)
 }
 
 /// `b2MulAdd`: `a + s * b`.
@@ -44,10 +24,6 @@ pub(super) fn mul_add(a: Vec2, s: f32, b: Vec2) -> Vec2 {
 
 pub(super) fn lerp(a: Vec2, b: Vec2, t: f32) -> Vec2 {
     vec2((1.0 - t) * a.x + t * b.x, (1.0 - t) * a.y + t * b.y)
-}
-
-pub(super) fn length(v: Vec2) -> f32 {
-    (v.x * v.x + v.y * v.y).sqrt()
 }
 
 pub(super) fn distance(a: Vec2, b: Vec2) -> f32 {
@@ -79,22 +55,12 @@ pub(super) fn max(a: Vec2, b: Vec2) -> Vec2 {
     vec2(if a.x > b.x { a.x } else { b.x }, if a.y > b.y { a.y } else { b.y })
 }
 
-/// The rotation of an angle as its cosine and sine (the C library's `cosf` and `sinf`,
-/// which Rust's `f32` methods call): not `b2MakeRot`, which approximates.
-pub(super) fn rotation(angle: f32) -> Rot {
-    Rot { c: angle.cos(), s: angle.sin() }
-}
-
 pub(super) fn mul_rot(q: Rot, r: Rot) -> Rot {
     Rot { s: q.s * r.c + q.c * r.s, c: q.c * r.c - q.s * r.s }
 }
 
 pub(super) fn inv_mul_rot(q: Rot, r: Rot) -> Rot {
     Rot { s: q.c * r.s - q.s * r.c, c: q.c * r.c + q.s * r.s }
-}
-
-pub(super) fn rotate(q: Rot, v: Vec2) -> Vec2 {
-    vec2(q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y)
 }
 
 pub(super) fn transform_point(t: Transform, p: Vec2) -> Vec2 {
