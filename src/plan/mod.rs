@@ -15,6 +15,7 @@
 
 mod box2d2;
 mod box2d3;
+mod check;
 mod container;
 mod gravity;
 mod make;

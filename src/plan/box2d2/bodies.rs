@@ -5,10 +5,10 @@ use super::body::Body;
 use super::body_mass::{
     FixtureMass, about_origin, central_inertia_positive, inertia_centred, reset_mass, set_mass,
 };
-use super::check::Check;
 use super::math::{mul_sv, rotate, rotation, sub, transform};
 use super::world::Mapper;
 use crate::error::Code;
+use crate::plan::check::Check;
 use crate::plan::container::Object;
 use crate::plan::printf::F;
 use crate::plan::records::{PlanBody, PlanMass};
@@ -168,7 +168,7 @@ impl Mapper<'_> {
         let engine = self.version.name;
         let mass = reset_mass(&created, body.fixed_rotation, self.version.massless_weighs_one_kg);
         if inertia_centred(&created, body.fixed_rotation) && !(mass.inertia > 0.0) {
-            check.fail(format!(
+            check.fail(format_args!(
                 "with fixtures that have a density, it has no positive inertia about its \
                  centre of mass in {engine}'s float arithmetic (which asserts)"
             ));
@@ -183,7 +183,7 @@ impl Mapper<'_> {
             "m",
         );
         if self.version.refuses_inconsistent_mass && !mass_data_consistent(mass, body) {
-            check.fail(format!(
+            check.fail(format_args!(
                 "its MassData leaves no positive inertia about the centre of mass (Inertia <= \
                  Mass * |Center|^2), which {engine} asserts against"
             ));

@@ -3,10 +3,10 @@
 //! stiffness, and how far it starts from satisfied.
 
 use super::body::Body;
-use super::check::Check;
 use super::math::{cross, distance, dot, length, normalized, rotate, sub};
 use super::stiffness::{linear, weld_spring, wheel_spring};
 use super::world::Mapper;
+use crate::plan::check::Check;
 use crate::plan::printf::{G, G9};
 use crate::scene::{BodyKind, Joint, JointKind, Vec2};
 
@@ -69,7 +69,7 @@ impl Mapper<'_> {
         let violation = self.starting_violation(joint, a, b);
         let engine = self.version.name;
         if violation > self.range.max_violation {
-            check.fail(format!(
+            check.fail(format_args!(
                 "it starts {} m from satisfied: a joint further than {} m from satisfied lies \
                  beyond {engine}'s working range (its position solver tears a body to NaN \
                  once other joints act on it)",
@@ -83,7 +83,7 @@ impl Mapper<'_> {
         }
         for body in [joint.body_a, joint.body_b] {
             if let Some(other) = self.pulled[body as usize] {
-                check.fail(format!(
+                check.fail(format_args!(
                     "it starts {} m from satisfied, and joint {other} already pulls body {body} \
                      from further than {} m: two such joints on one body lie beyond \
                      {engine}'s working range (its position solver can tear the body to NaN)",
@@ -143,11 +143,10 @@ impl Mapper<'_> {
                 {
                     // Its upper length, FLT_MAX, gives Box2D's solver an infinite bias that
                     // only a body with mass multiplies into something other than NaN.
-                    check.fail(
+                    check.fail(format_args!(
                         "a spring (FrequencyHz > 0) between two bodies without mass, for which \
                          Box2D 2.4's distance joint computes 0 * infinity = NaN"
-                            .to_owned(),
-                    );
+                    ));
                 }
             }
             Ok(JointKind::Rope) => {
@@ -232,7 +231,7 @@ impl Mapper<'_> {
         }
         .stiffness;
         if stiffness != 0.0 && !(stiffness >= self.range.min_stiffness) {
-            check.fail(format!(
+            check.fail(format_args!(
                 "FrequencyHz {} gives a stiffness of {}{} with these bodies, beyond {}'s \
                  working range (0 or at least {})",
                 G9(joint.frequency_hz),
@@ -292,7 +291,7 @@ impl Mapper<'_> {
         let gyration = (mass.inertia / mass.mass).sqrt();
         let engine = self.version.name;
         if !(compliance <= self.range.max_compliance) {
-            check.fail(format!(
+            check.fail(format_args!(
                 "{}where 1/m + r^2/I = {} 1/kg lies beyond {engine}'s working range (at most \
                  {} 1/kg)",
                 acts(),
@@ -300,7 +299,7 @@ impl Mapper<'_> {
                 G(self.range.max_compliance)
             ));
         } else if lever > 0.0 && mass.inertia > 0.0 && !(r <= lever * gyration) {
-            check.fail(format!(
+            check.fail(format_args!(
                 "{}{} radii of gyration out, beyond {engine}'s working range for this joint \
                  (at most {})",
                 acts(),

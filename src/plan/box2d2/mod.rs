@@ -6,7 +6,6 @@
 mod bodies;
 mod body;
 mod body_mass;
-mod check;
 mod joint_checks;
 mod joints;
 mod math;

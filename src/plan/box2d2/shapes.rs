@@ -1,11 +1,11 @@
 //! The shapes of a Box2D 2.x plan: each scene shape checked and made once, then given to
 //! every fixture that uses it (as the engine clones one shape into each fixture).
 
-use super::check::Check;
 use super::math::{add, sub};
 use super::shape_mass::MassShape;
 use super::world::Mapper;
 use crate::error::Code;
+use crate::plan::check::Check;
 use crate::plan::container::Object;
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::rules::{MAX_POLYGON_VERTICES, polygon_hull};

@@ -5,11 +5,11 @@
 use std::fmt;
 
 use super::body::Body;
-use super::check::Check;
 use super::math::{angle, transform};
 use super::shapes::Made;
 use super::version::Version;
 use crate::error::Code;
+use crate::plan::check::Check;
 use crate::plan::container::{Object, Plan};
 use crate::plan::printf::G9;
 use crate::plan::range::WorkingRange;

@@ -1,12 +1,12 @@
 //! Bodies: the checks, the body def placed, its fixtures, and the mass the executor gives
 //! it once its shapes are made.
 
-use super::check::Check;
 use super::geometry::Mass;
 use super::mass::{self, ShapeMass};
 use super::math::{add, cross_sv, length, mul_rot, mul_sv, rotate, rotation, sub, transform_point};
 use super::{Created, Mapper};
 use crate::error::Code;
+use crate::plan::check::Check;
 use crate::plan::container::Object;
 use crate::plan::printf::{G, G9};
 use crate::plan::range::PI;
@@ -77,12 +77,12 @@ impl Mapper<'_> {
 
     fn body_check(&self, body: &Body) -> Check {
         let (v3, r) = (self.v3, self.range);
-        let mut check = Check::default();
-        check.vector(v3, "Position", body.position, r.max_length, "m");
-        check.magnitude(v3, "Angle", body.angle, r.max_angle, "rad");
+        let mut check = Check::new(v3.name());
+        check.vector("Position", body.position, r.max_length, "m");
+        check.magnitude("Angle", body.angle, r.max_angle, "rad");
         if body.kind != BodyKind::Static as u32 {
-            check.vector(v3, "LinearVelocity", body.linear_velocity, r.max_speed, "m/s");
-            check.magnitude(v3, "AngularVelocity", body.angular_velocity, r.max_speed, "rad/s");
+            check.vector("LinearVelocity", body.linear_velocity, r.max_speed, "m/s");
+            check.magnitude("AngularVelocity", body.angular_velocity, r.max_speed, "rad/s");
             let limit = self.options.max_linear_speed;
             let v = body.linear_velocity;
             if check.passed() && !(length(v) <= limit) {
@@ -96,20 +96,20 @@ impl Mapper<'_> {
                 ));
             }
         }
-        check.magnitude(v3, "LinearDamping", body.linear_damping, r.max_damping, "1/s");
-        check.magnitude(v3, "AngularDamping", body.angular_damping, r.max_damping, "1/s");
-        check.magnitude(v3, "GravityScale", body.gravity_scale, r.max_gravity_scale, "");
+        check.magnitude("LinearDamping", body.linear_damping, r.max_damping, "1/s");
+        check.magnitude("AngularDamping", body.angular_damping, r.max_damping, "1/s");
+        check.magnitude("GravityScale", body.gravity_scale, r.max_gravity_scale, "");
         if body.kind == BodyKind::Dynamic as u32 && check.passed() {
             let gravity = mul_sv(body.gravity_scale, self.options.gravity);
             let field = "GravityScale times the world's gravity";
-            check.vector(v3, field, gravity, r.max_acceleration, "m/s^2");
+            check.vector(field, gravity, r.max_acceleration, "m/s^2");
         }
         if body.mass_data.center_given {
-            check.vector(v3, "MassData Center", body.mass_data.center, r.max_length, "m");
+            check.vector("MassData Center", body.mass_data.center, r.max_length, "m");
         }
         if check.passed() {
             let placed = self.placed(body.position);
-            check.vector(v3, "its placed Position", placed, r.max_length, "m");
+            check.vector("its placed Position", placed, r.max_length, "m");
         }
         check
     }

@@ -2,11 +2,11 @@
 //! values, the levers and compliance at its anchors, what its drive does to its bodies, and
 //! how far from satisfied it starts.
 
-use super::check::Check;
 use super::geometry::Mass;
 use super::math::transform_point;
 use super::math::{cross, distance, dot, inv_transform_point, length, normalize, rotate, sub};
 use super::{Created, Mapper};
+use crate::plan::check::Check;
 use crate::plan::printf::{G, G9};
 use crate::scene::{BodyKind, Joint, JointKind, Vec2};
 
@@ -101,39 +101,39 @@ impl Mapper<'_> {
     pub(super) fn joint_check(&self, joint: &Joint) -> Check {
         let (v3, r) = (self.v3, self.range);
         let length = r.max_length;
-        let mut check = Check::default();
+        let mut check = Check::new(v3.name());
         let c = &mut check;
         let kind = kind_of(joint);
         let anchored = kind != Some(JointKind::Motor);
         if anchored {
-            c.vector(v3, "LocalAnchorA", joint.local_anchor_a, length, "m");
-            c.vector(v3, "LocalAnchorB", joint.local_anchor_b, length, "m");
+            c.vector("LocalAnchorA", joint.local_anchor_a, length, "m");
+            c.vector("LocalAnchorB", joint.local_anchor_b, length, "m");
         }
         match kind {
             Some(JointKind::Revolute) => {
-                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
-                c.magnitude(v3, "MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
-                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+                c.magnitude("MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
+                c.magnitude("MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
+                c.magnitude("ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
             }
             Some(JointKind::Prismatic | JointKind::Line) => {
-                c.magnitude(v3, "LowerTranslation", joint.lower_limit, length, "m");
-                c.magnitude(v3, "UpperTranslation", joint.upper_limit, length, "m");
-                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "m/s");
-                c.magnitude(v3, "MaxMotorForce", joint.max_motor_force, r.max_force, "N");
-                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+                c.magnitude("LowerTranslation", joint.lower_limit, length, "m");
+                c.magnitude("UpperTranslation", joint.upper_limit, length, "m");
+                c.magnitude("MotorSpeed", joint.motor_speed, r.max_speed, "m/s");
+                c.magnitude("MaxMotorForce", joint.max_motor_force, r.max_force, "N");
+                c.magnitude("ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
             }
             Some(JointKind::Wheel) => {
-                c.magnitude(v3, "MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
-                c.magnitude(v3, "MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
+                c.magnitude("MotorSpeed", joint.motor_speed, r.max_speed, "rad/s");
+                c.magnitude("MaxMotorTorque", joint.max_motor_torque, r.max_force, "N m");
             }
-            Some(JointKind::Distance) => c.magnitude(v3, "Length", joint.length, length, "m"),
-            Some(JointKind::Rope) => c.magnitude(v3, "MaxLength", joint.max_length, length, "m"),
+            Some(JointKind::Distance) => c.magnitude("Length", joint.length, length, "m"),
+            Some(JointKind::Rope) => c.magnitude("MaxLength", joint.max_length, length, "m"),
             Some(JointKind::Weld) => {
-                c.magnitude(v3, "ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
+                c.magnitude("ReferenceAngle", joint.reference_angle, r.max_angle, "rad");
             }
             Some(JointKind::Friction | JointKind::Motor) => {
-                c.magnitude(v3, "MaxForce", joint.max_force, r.max_force, "N");
-                c.magnitude(v3, "MaxTorque", joint.max_torque, r.max_force, "N m");
+                c.magnitude("MaxForce", joint.max_force, r.max_force, "N");
+                c.magnitude("MaxTorque", joint.max_torque, r.max_force, "N m");
                 if joint.max_force < 0.0 || joint.max_torque < 0.0 {
                     c.fail(format_args!(
                         "a negative MaxForce or MaxTorque, which {} asserts against",
@@ -141,21 +141,15 @@ impl Mapper<'_> {
                     ));
                 }
                 if kind == Some(JointKind::Motor) {
-                    c.vector(v3, "LinearOffset", joint.linear_offset, length, "m");
-                    c.magnitude(v3, "AngularOffset", joint.angular_offset, r.max_angle, "rad");
-                    c.magnitude(
-                        v3,
-                        "CorrectionFactor",
-                        joint.correction_factor,
-                        r.max_frequency,
-                        "",
-                    );
+                    c.vector("LinearOffset", joint.linear_offset, length, "m");
+                    c.magnitude("AngularOffset", joint.angular_offset, r.max_angle, "rad");
+                    c.magnitude("CorrectionFactor", joint.correction_factor, r.max_frequency, "");
                 }
             }
             _ => {}
         }
         if matches!(kind, Some(JointKind::Prismatic | JointKind::Line | JointKind::Wheel)) {
-            c.vector(v3, "LocalAxisA", joint.local_axis_a, length, "m");
+            c.vector("LocalAxisA", joint.local_axis_a, length, "m");
             if c.passed() && !(super::math::length(joint.local_axis_a) >= r.min_axis) {
                 c.fail(format_args!(
                     "LocalAxisA is shorter than {} m: {} cannot normalise it",
@@ -165,8 +159,8 @@ impl Mapper<'_> {
             }
         }
         if matches!(kind, Some(JointKind::Distance | JointKind::Wheel | JointKind::Weld)) {
-            c.magnitude(v3, "FrequencyHz", joint.frequency_hz, r.max_frequency, "Hz");
-            c.magnitude(v3, "DampingRatio", joint.damping_ratio, r.max_frequency, "");
+            c.magnitude("FrequencyHz", joint.frequency_hz, r.max_frequency, "Hz");
+            c.magnitude("DampingRatio", joint.damping_ratio, r.max_frequency, "");
             if joint.frequency_hz < 0.0 || joint.damping_ratio < 0.0 {
                 c.fail(format_args!(
                     "a negative FrequencyHz or DampingRatio, which {} asserts against",

@@ -4,9 +4,9 @@
 //! `SetMassData` would.
 
 use super::V3;
-use super::check::Check;
 use super::geometry::Mass;
 use super::math::{ZERO, dot, mul_add, mul_sv, sub};
+use crate::plan::check::Check;
 use crate::plan::range::WorkingRange;
 use crate::scene::Body;
 
@@ -112,9 +112,9 @@ pub(super) fn check(
             v3.name()
         ));
     }
-    check.vector(v3, "its centre of mass", computed.center, range.max_length, "m");
-    check.zero_or_within(v3, "its mass", final_mass.mass, (range.min_mass, range.max_mass), "kg");
-    check.vector(v3, "its centre of mass", final_mass.center, range.max_length, "m");
+    check.vector("its centre of mass", computed.center, range.max_length, "m");
+    check.zero_or_within("its mass", final_mass.mass, range.min_mass, range.max_mass, "kg");
+    check.vector("its centre of mass", final_mass.center, range.max_length, "m");
     if final_mass.inertia < 0.0 {
         check.fail(format_args!(
             "its MassData leaves a negative inertia about the centre of mass (Inertia < Mass * \
@@ -123,10 +123,10 @@ pub(super) fn check(
         ));
     }
     check.zero_or_within(
-        v3,
         "its inertia about the centre of mass",
         final_mass.inertia,
-        (range.min_inertia, range.max_inertia),
+        range.min_inertia,
+        range.max_inertia,
         "kg m^2",
     );
 }

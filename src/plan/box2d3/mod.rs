@@ -5,7 +5,6 @@
 //! their fixtures, then the joints (whose checks need every body's final mass).
 
 mod bodies;
-mod check;
 mod geometry;
 mod hull;
 mod joint_checks;

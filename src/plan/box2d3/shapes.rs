@@ -2,11 +2,11 @@
 //! plan shapes a fixture makes of it on one body.
 
 use super::Mapper;
-use super::check::Check;
 use super::geometry::{Mass, circle_mass, hull_area, polygon_centroid, polygon_mass};
 use super::hull::{MAX_POLYGON_VERTICES, compute_hull};
 use super::math::{ZERO, add, distance, distance_squared, lerp, sub};
 use crate::error::Code;
+use crate::plan::check::Check;
 use crate::plan::container::Object;
 use crate::plan::printf::{G, G9};
 use crate::plan::records::{PlanShape, PlanShapeKind};
@@ -98,30 +98,30 @@ impl Mapper<'_> {
 
     fn shape_check(&self, shape: &Shape, points: &[Vec2]) -> Check {
         let (v3, bound) = (self.v3, self.range.max_length);
-        let mut check = Check::default();
+        let mut check = Check::new(v3.name());
         let edge = shape.kind == ShapeKind::Edge as u32;
         if shape.kind == ShapeKind::Circle as u32 {
-            check.magnitude(v3, "Radius", shape.radius, bound, "m");
-            check.vector(v3, "Position", shape.position, bound, "m");
+            check.magnitude("Radius", shape.radius, bound, "m");
+            check.vector("Position", shape.position, bound, "m");
         }
         for (i, &p) in points.iter().enumerate() {
             if !check.passed() {
                 break;
             }
             let field = if edge { format!("Vertex{}", i + 1) } else { format!("Vertex {i}") };
-            check.vector(v3, &field, p, bound, "m");
+            check.vector(&field, p, bound, "m");
         }
         if shape.kind == ShapeKind::Polygon as u32 && shape.centroid_given {
-            check.vector(v3, "Centroid", shape.centroid, bound, "m");
+            check.vector("Centroid", shape.centroid, bound, "m");
         }
         let ghosts = edge || (shape.kind == ShapeKind::Chain as u32 && !shape.is_loop);
         if ghosts && shape.has_prev_vertex {
             let field = if edge { "Vertex0" } else { "PrevVertex" };
-            check.vector(v3, field, shape.prev_vertex, bound, "m");
+            check.vector(field, shape.prev_vertex, bound, "m");
         }
         if ghosts && shape.has_next_vertex {
             let field = if edge { "Vertex3" } else { "NextVertex" };
-            check.vector(v3, field, shape.next_vertex, bound, "m");
+            check.vector(field, shape.next_vertex, bound, "m");
         }
         check
     }
@@ -283,10 +283,10 @@ impl Mapper<'_> {
 
     pub(super) fn fixture_check(&self, fixture: &Fixture) -> Check {
         let (v3, r) = (self.v3, self.range);
-        let mut check = Check::default();
-        check.magnitude(v3, "Density", fixture.density, r.max_density, "kg/m^2");
-        check.magnitude(v3, "Friction", fixture.friction, r.max_friction, "");
-        check.magnitude(v3, "Restitution", fixture.restitution, r.max_friction, "");
+        let mut check = Check::new(v3.name());
+        check.magnitude("Density", fixture.density, r.max_density, "kg/m^2");
+        check.magnitude("Friction", fixture.friction, r.max_friction, "");
+        check.magnitude("Restitution", fixture.restitution, r.max_friction, "");
         if fixture.density < 0.0 || fixture.friction < 0.0 || fixture.restitution < 0.0 {
             check.fail(format_args!(
                 "a negative Density, Friction or Restitution, which {} asserts against",

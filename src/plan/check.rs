@@ -1,6 +1,8 @@
 //! The first value of one object found beyond a Box2D 2.x version's working range: what its report
 //! says. Later values of the object are not looked at once one is found.
 
+use std::fmt;
+
 use crate::plan::printf::{G, G9};
 use crate::scene::Vec2;
 
@@ -85,10 +87,11 @@ impl Check {
         }
     }
 
-    /// What the engine asserts against, whatever the bounds.
-    pub(super) fn fail(&mut self, what: String) {
+    /// A problem other than a value beyond its bound (what the engine asserts against,
+    /// whatever the bounds), unless one is found already.
+    pub(super) fn fail(&mut self, problem: fmt::Arguments<'_>) {
         if self.passed() {
-            self.problem = Some(what);
+            self.problem = Some(fmt::format(problem));
         }
     }
 
@@ -137,6 +140,22 @@ mod tests {
         axis.at_least("The length of LocalAxisA", 0.0, 1e-3, "m");
         axis.within("CorrectionFactor", 2.0, 0.0, 1.0, "");
         assert!(axis.problem().starts_with("The length of LocalAxisA 0 lies beyond"));
+    }
+
+    #[test]
+    fn a_report_names_the_engine_version_and_keeps_the_first_problem() {
+        let mut check = Check::new("Box2D v3.2");
+        check.vector("Position", Vec2::new(0.1, 2e4), 1e4, "m");
+        check.fail(format_args!("a later problem"));
+        assert_eq!(
+            check.problem(),
+            "Position (0.100000001, 20000) lies beyond Box2D v3.2's working range (each \
+             component within +-10000 m)"
+        );
+        let mut asserted = Check::new("Box2D v3");
+        asserted.fail(format_args!("a negative Density, which Box2D v3 asserts against"));
+        asserted.magnitude("Density", 1e9, 1e5, "kg/m^2");
+        assert_eq!(asserted.problem(), "a negative Density, which Box2D v3 asserts against");
     }
 
     #[test]
