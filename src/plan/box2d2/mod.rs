@@ -8,6 +8,7 @@ mod body;
 mod body_mass;
 mod joint_checks;
 mod joints;
+mod made;
 mod math;
 mod polygon;
 mod shape_mass;

@@ -1,6 +1,7 @@
 //! The shapes of a Box2D 2.x plan: each scene shape checked and made once, then given to
 //! every fixture that uses it (as the engine clones one shape into each fixture).
 
+use super::made::Made;
 use super::math::{add, sub};
 use super::shape_mass::MassShape;
 use super::world::Mapper;
@@ -9,24 +10,11 @@ use crate::plan::check::Check;
 use crate::plan::container::Object;
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::rules::{MAX_POLYGON_VERTICES, polygon_hull};
-use crate::scene::{Filter, Fixture, Range, Shape, ShapeKind, Str, Vec2};
+use crate::scene::{Filter, Fixture, Shape, ShapeKind, Str, Vec2};
 
 /// The 16 filter bits Box2D 2.x holds (`uint16`); `report_lossy_filters` says where the
 /// cut changes what collides.
 const LOW_FILTER_BITS: u32 = 0xFFFF;
-
-/// A scene shape as the engine makes it: the plan's form, and the engine's for its mass.
-#[derive(Clone, Debug, PartialEq)]
-pub(super) struct Made {
-    pub kind: PlanShapeKind,
-    /// Its points in the plan's pool, which every fixture of the shape shares.
-    pub points: Range,
-    /// A circle's centre, or a polygon's Centroid as the file gives it (NaN where it
-    /// gives none: the engine keeps its own).
-    pub center: Vec2,
-    pub radius: f32,
-    pub mass: MassShape,
-}
 
 /// A made shape before its points go to the plan's pool.
 struct Geometry {

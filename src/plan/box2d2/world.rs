@@ -5,8 +5,8 @@
 use std::fmt;
 
 use super::body::Body;
+use super::made::Made;
 use super::math::{angle, transform};
-use super::shapes::Made;
 use super::version::Version;
 use crate::error::Code;
 use crate::plan::check::Check;
