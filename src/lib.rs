@@ -19,6 +19,7 @@
 mod arena;
 mod builder;
 mod bytes;
+pub mod capture;
 mod check;
 #[doc(hidden)]
 mod containers;

@@ -1,0 +1,82 @@
+//! The capture stage, the plan's way back: what an engine holds of a live world, read by an
+//! adapter into the plan's records (`records.rs`), turned into a scene whose build gives
+//! the same bits back, and the reports of what the format cannot hold. Every conversion of
+//! the way back lives here, once per engine family, beside the plan it inverts:
+//!
+//! - `mod.rs` (this file): the input and the result;
+//! - `level.rs`: a capture of a built world labelled from the level it was built from (its
+//!   Names and UserData where the host gives none, the joints the build skipped written
+//!   back where the file had them, gears that name them);
+//! - `world.rs`: the pass over the held records into a builder, equal shapes and fixtures
+//!   written once, the order of the joints, what is not written and why;
+//! - `box2d2/` (Box2D 2.3 and 2.4) and `box2d3/` (v3.1 and v3.2): one engine family's
+//!   inverses, each computing forward with the plan's own arithmetic and searching the
+//!   floats that give back what the engine holds.
+//!
+//! A family turns one held record into the scene's record and says what it loses; the
+//! labels, indices, order and de-duplication are `world.rs`'s, the same for every engine.
+
+#![forbid(unsafe_code)]
+
+mod records;
+
+pub use records::*;
+
+use crate::plan::{Engine, PlanReport};
+use crate::scene::{Scene, Vec2};
+
+/// A Name and UserData as text (what a [`HeldLabel`] points at, read).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Label<'a> {
+    /// The name, if any.
+    pub name: Option<&'a str>,
+    /// The UserData's raw XML, if any.
+    pub user_data_raw: Option<&'a str>,
+    /// Its type name (the editor's form), if any.
+    pub user_data_type: Option<&'a str>,
+    /// Its value (the editor's form), if any.
+    pub user_data_value: Option<&'a str>,
+}
+
+/// What an engine holds of a world, read: the records and, beside them, the texts their
+/// `Str` fields point at (one entry per record, in the same order), so that nothing here
+/// reads a pointer.
+#[derive(Clone, Copy, Debug)]
+pub struct Held<'a> {
+    /// The engine version the records are read from.
+    pub engine: Engine,
+    /// m/s^2.
+    pub gravity: Vec2,
+    /// The bodies.
+    pub bodies: &'a [HeldBody],
+    /// The shapes.
+    pub shapes: &'a [HeldShape],
+    /// The shapes' points.
+    pub points: &'a [Vec2],
+    /// The joints.
+    pub joints: &'a [HeldJoint],
+    /// The scene joints the build skipped.
+    pub skipped_joints: &'a [u32],
+    /// Per body, its label.
+    pub body_labels: &'a [Label<'a>],
+    /// Per shape, its fixture's label.
+    pub fixture_labels: &'a [Label<'a>],
+    /// Per shape, the shape's name.
+    pub shape_names: &'a [Option<&'a str>],
+    /// Per shape, what it is where it has no form (`HeldShape::other`).
+    pub shape_others: &'a [Option<&'a str>],
+    /// Per joint, its label.
+    pub joint_labels: &'a [Label<'a>],
+    /// Per joint, what it is where it has no form (`HeldJoint::other`).
+    pub joint_others: &'a [Option<&'a str>],
+}
+
+/// A capture's result: the scene, and the reports of what it could not hold exactly (the
+/// plan's report records, their index counting the held objects of their kind).
+#[derive(Debug)]
+pub struct Captured {
+    /// The scene.
+    pub scene: Scene,
+    /// What was lost or not written, in the order met.
+    pub reports: Vec<PlanReport>,
+}
