@@ -519,25 +519,18 @@ fn cut_at_non_char(
 /// XML does not allow.
 fn non_char(text: &str, at: usize, base: usize) -> Finding {
     match text.as_bytes()[at] {
-        0 => Finding {
-            position: None,
-            code: Code::NulByte,
-            at: base + at,
-            message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
-                      padded)"
-                .into(),
-        },
+        0 => Finding::new(
+            Code::NulByte,
+            base + at,
+            "the file holds a NUL byte: it is not a text file (or it was truncated or padded)",
+        ),
         _ => {
             let c = text[at..].chars().next().unwrap_or_default();
-            Finding {
-                position: None,
-                code: Code::MalformedXml,
-                at: base + at,
-                message: format!(
-                    "malformed XML: the character U+{:04X} is not allowed in an XML document",
-                    u32::from(c)
-                ),
-            }
+            let message = format!(
+                "malformed XML: the character U+{:04X} is not allowed in an XML document",
+                u32::from(c)
+            );
+            Finding::new(Code::MalformedXml, base + at, message)
         }
     }
 }
@@ -598,13 +591,12 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding,
             }
         }
     }
-    let stop = (!valid).then(|| Finding {
-        position: None,
-        code: Code::InvalidUtf8,
-        at: text.len(),
-        message: "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of \
-                  bytes)"
-            .into(),
+    let stop = (!valid).then(|| {
+        Finding::new(
+            Code::InvalidUtf8,
+            text.len(),
+            "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of bytes)",
+        )
     });
     (Cow::Owned(text), Encoding::Utf16 { big_endian }, stop)
 }

@@ -1,5 +1,5 @@
 use super::{CHUNK, Shared, Source};
-use crate::error::Code;
+use crate::error::{Code, Spot};
 use crate::options::LoadOptions;
 
 /// A file that grows past the input limit while it is read stops the text after the
@@ -16,7 +16,7 @@ fn a_file_that_grows_past_the_limit_stops_the_text() {
     std::fs::remove_file(&path).unwrap();
     // Three chunks were read within the limit; the fourth passed it.
     let stop = source.stop().expect("the limit stops the text");
-    assert_eq!((stop.code, stop.at), (Code::LimitExceeded, 3 * CHUNK));
+    assert_eq!((stop.code, stop.at), (Code::LimitExceeded, Spot::offset(3 * CHUNK)));
     assert_eq!(source.end(), 3 * CHUNK);
 }
 
@@ -45,13 +45,13 @@ fn a_text_in_memory_is_checked_as_it_is_read() {
     let mut bytes = text.clone().into_bytes();
     bytes[4 * CHUNK + 9] = 0x01;
     let ends = vec![CHUNK, 2 * CHUNK, 3 * CHUNK, 4 * CHUNK, 4 * CHUNK + 9];
-    assert_eq!(read(&bytes), (ends, Some((Code::MalformedXml, 4 * CHUNK + 9))));
+    assert_eq!(read(&bytes), (ends, Some((Code::MalformedXml, Spot::offset(4 * CHUNK + 9)))));
     bytes[4 * CHUNK + 10] = 0xFF;
-    assert_eq!(read(&bytes).1, Some((Code::MalformedXml, 4 * CHUNK + 9)));
+    assert_eq!(read(&bytes).1, Some((Code::MalformedXml, Spot::offset(4 * CHUNK + 9))));
     bytes[3 * CHUNK] = 0xFF;
-    assert_eq!(read(&bytes).1, Some((Code::InvalidUtf8, 3 * CHUNK)));
+    assert_eq!(read(&bytes).1, Some((Code::InvalidUtf8, Spot::offset(3 * CHUNK))));
     bytes[3 * CHUNK] = 0;
-    assert_eq!(read(&bytes).1, Some((Code::NulByte, 3 * CHUNK)));
+    assert_eq!(read(&bytes).1, Some((Code::NulByte, Spot::offset(3 * CHUNK))));
 
     let mut bytes = text.into_bytes();
     bytes[2 * CHUNK] = 0x0B;

@@ -3,9 +3,9 @@
 
 use super::super::names::Name;
 use super::{Tag, Tokenizer};
-use crate::error::{Code, Finding, Position, Problem, problem};
+use crate::error::{Code, Finding, Position, Problem, Spot, problem};
 use crate::input::Source;
-use crate::place::{Cursor, Spot};
+use crate::place::Cursor;
 use crate::scan::Index;
 
 impl<'a> Tokenizer<'a> {
@@ -81,10 +81,13 @@ impl<'a> Tokenizer<'a> {
         self.open.get(1).filter(|_| self.at_piece_end()).map(|(name, _)| name)
     }
 
-    /// The position of offset `at` counted from where the reading started, when it places
+    /// The position the reading reached, counted from where it started, when it places
     /// what it finds as it reads (a text that does not stay at hand).
     pub fn placed_end(&mut self) -> Option<Position> {
-        (!self.is_whole()).then(|| self.locate(self.pos))
+        match self.spot(self.pos) {
+            Spot::Placed(position) => Some(position),
+            Spot::Offset(_) => None,
+        }
     }
 
     /// The elements read so far.
@@ -105,12 +108,6 @@ impl<'a> Tokenizer<'a> {
     /// The text from `from` to `to`, which is at hand.
     pub fn slice(&self, from: usize, to: usize) -> &str {
         self.window.slice(from, to)
-    }
-
-    /// The line, column and byte offset of offset `at`, which is at hand: after the text
-    /// last let go of, or in the object being read (see [`Tokenizer::open`]).
-    pub fn locate(&mut self, at: usize) -> Position {
-        self.window.locate(at)
     }
 
     /// `finding` placed at its line and column, when its text will not stay at hand (see

@@ -256,8 +256,8 @@ impl<'a> Tokenizer<'a> {
     /// The error for the value of `tag`, which `convert` refused with `e`.
     #[cold]
     fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
-        let at = value.text.written_at(e.at);
-        problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
+        let at = e.at.map_offset(|at| value.text.written_at(at));
+        Box::new(Finding::at(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
     }
 
     /// Converts an attribute's value with `convert`; errors point into the value.
@@ -270,11 +270,11 @@ impl<'a> Tokenizer<'a> {
         let (lead, value) = trim_xml_at(&attr.value);
         match convert(value) {
             Ok(v) => Ok((v, written_at(tag, attr, lead))),
-            Err(e) => Err(problem(
+            Err(e) => Err(Box::new(Finding::at(
                 e.code,
-                written_at(tag, attr, lead + e.at),
+                e.at.map_offset(|at| written_at(tag, attr, lead + at)),
                 format!("<{} {}>: {}", tag.name(), attr.key, e.message),
-            )),
+            ))),
         }
     }
 
