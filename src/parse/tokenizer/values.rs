@@ -70,8 +70,8 @@ impl<'a> Tokenizer<'a> {
             return Ok(false);
         }
         self.skip_space()?;
-        if let Some(tag) = self.short_tag(self.pos) {
-            self.begin_node(tag.at);
+        if let Some(tag) = self.short_tag(self.lex.pos) {
+            self.lex.begin_node(tag.at);
             self.opened(&tag)?;
             *child = tag;
             return Ok(true);
@@ -210,8 +210,8 @@ impl<'a> Tokenizer<'a> {
         if tag.empty || self.kept.pinned() {
             return None;
         }
-        let at = self.pos;
-        let mark = self.index.next(self.window.text(), self.window.base())?;
+        let at = self.lex.pos;
+        let mark = self.lex.index.next(self.window.text(), self.window.base())?;
         let len = mark.at - at;
         let rest = self.rest(at);
         if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
@@ -219,9 +219,9 @@ impl<'a> Tokenizer<'a> {
         }
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
         let (start, end) = trimmed_span(&rest[..len]);
-        self.index.take();
-        self.pos = at + len + end_tag;
-        self.open.pop();
+        self.lex.index.take();
+        self.lex.pos = at + len + end_tag;
+        self.lex.open.pop();
         // `<X></X>` has its value at its tag.
         Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
     }
