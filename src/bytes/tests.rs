@@ -131,3 +131,21 @@ fn plain_text_has_no_reference_or_carriage_return() {
         }
     }
 }
+
+/// The end of a short name is the first byte of sixteen that ends a name or that no name
+/// holds, wherever it is and whichever byte it is, as a look at one byte at a time finds it.
+#[test]
+fn short_name_len_finds_the_first_byte_that_ends_a_name() {
+    let ends = |b: u8| ENDS_NAME[usize::from(b)] || (b'!'..=b'&').contains(&b);
+    for b in 0..=255u8 {
+        for at in 0..16 {
+            let mut head = *b"VeryLongElementN";
+            head[at] = b;
+            let expected = head.iter().position(|&b| ends(b));
+            assert_eq!(short_name_len(&head), expected, "{b:#04x} at {at}");
+        }
+    }
+    assert_eq!(short_name_len(b"\xC3\xA9t\xC3\xA9 x=\"1\">    "), Some(5));
+    assert_eq!(short_name_len(b"Angle>0.5</Angle"), Some(5));
+    assert_eq!(short_name_len(b"Pair/><Pair/><Pa"), Some(4));
+}

@@ -33,7 +33,7 @@ mod pieces;
 mod values;
 mod window;
 
-use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
+use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, short_name_len, space_len};
 pub(crate) use keeping::Keeping;
 use lexer::Lexer;
 use values::resolve_text;
@@ -501,7 +501,12 @@ impl<'a> Tokenizer<'a> {
         if matches!(head[0], b'/' | b'?' | b'!') {
             return None;
         }
-        let len = head.iter().position(|&b| ENDS_NAME[usize::from(b)]).filter(|&n| n <= SHORT)?;
+        let (sixteen, after) = head.split_first_chunk::<SHORT>()?;
+        let len = match short_name_len(sixteen) {
+            Some(len) => len,
+            None if ENDS_NAME[usize::from(after[0])] => SHORT,
+            None => return None,
+        };
         let empty = match head[len..] {
             [b'>', ..] => false,
             [b'/', b'>', ..] => true,
