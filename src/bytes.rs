@@ -180,6 +180,43 @@ pub(crate) fn is_plain(text: &[u8]) -> bool {
     }) && !tail.iter().any(|&b| b == b'&' || b == b'\r')
 }
 
+/// Where the first `len` bytes of the text at hand `rest` start and end without leading and
+/// trailing white space (see [`trimmed_span`]), when they are plain (see [`is_plain`]): the
+/// usual value, which a reader takes as it stands. A value of at most sixteen bytes with
+/// sixteen at hand is looked at in one pass with SSE2: its references, carriage returns and
+/// white space all at once. (Two passes of sixteen for longer values measured no cheaper
+/// than the eight bytes at a time of the others.)
+#[inline(always)]
+pub(crate) fn plain_trimmed(rest: &[u8], len: usize) -> Option<(usize, usize)> {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(sixteen) = rest.first_chunk::<16>().filter(|_| len <= 16) {
+        use safe_arch::{
+            bitor_m128i, cmp_eq_mask_i8_m128i, load_unaligned_m128i, max_u8_m128i,
+            move_mask_i8_m128i, set_splat_i8_m128i,
+        };
+        let v = load_unaligned_m128i(sixteen);
+        let splat = |b: u8| set_splat_i8_m128i(b as i8);
+        let within = (1u32 << len) - 1;
+        let mask = |m| move_mask_i8_m128i(m) as u32 & within;
+        let rare = bitor_m128i(
+            cmp_eq_mask_i8_m128i(v, splat(b'&')),
+            cmp_eq_mask_i8_m128i(v, splat(b'\r')),
+        );
+        if mask(rare) != 0 {
+            return None;
+        }
+        // Up to 0x20: the bytes the unsigned maximum with a space leaves as a space.
+        let space = mask(cmp_eq_mask_i8_m128i(max_u8_m128i(v, splat(b' ')), splat(b' ')));
+        let other = !space & within;
+        return Some(match other {
+            0 => (len, len),
+            _ => (other.trailing_zeros() as usize, 32 - other.leading_zeros() as usize),
+        });
+    }
+    let text = &rest[..len];
+    is_plain(text).then(|| trimmed_span(text))
+}
+
 /// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little
 /// endian) of `word` that is `b`; 0 when no byte is. Bits above that one may be set too.
 ///

@@ -11,7 +11,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
+use crate::bytes::{first_non_char, is_plain_name_byte, plain_trimmed, space_len};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -214,11 +214,11 @@ impl<'a> Tokenizer<'a> {
         let mark = self.lex.index.next(self.window.text(), self.window.base())?;
         let len = mark.at - at;
         let rest = self.rest(at);
-        if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
+        if len as u64 > self.options.max_text_bytes {
             return None;
         }
+        let (start, end) = plain_trimmed(rest, len)?;
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        let (start, end) = trimmed_span(&rest[..len]);
         self.lex.index.take();
         self.lex.pos = at + len + end_tag;
         self.lex.open.pop();
