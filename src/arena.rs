@@ -4,8 +4,8 @@
 //! the check stage finishes it.
 #![forbid(unsafe_code)]
 
-use crate::error::{Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem};
-use crate::place::{Spot, Spots};
+use crate::error::{Code, Finding, MAX_ERRORS, MAX_WARNINGS, Parsed, Position, Problem, Spot};
+use crate::place::Spots;
 use crate::scene::{SceneBuilder, Vec2};
 
 /// A scene under construction, with what the later stages need to check it.
@@ -243,7 +243,7 @@ impl Findings {
     /// Appends the warnings of `other`, found after these in the text from `start` on. It
     /// has no errors: a piece whose reading found one is never appended.
     fn append(&mut self, other: Findings, start: Position) {
-        let after = |w: Finding| Finding { position: w.position.map(|p| p.after(start)), ..w };
+        let after = |w: Finding| Finding { at: w.at.after(start), ..w };
         for warning in other.warnings {
             self.keep(after(warning));
         }

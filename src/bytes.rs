@@ -106,6 +106,34 @@ pub(crate) const ENDS_NAME: [bool; 256] = {
     ends
 };
 
+/// How long the name a usual tag's first sixteen bytes after its `<` begin with is: the
+/// index of the first byte that ends a name there (see [`ENDS_NAME`]), or of a byte from
+/// `!` to `&`, which no XML name holds (a name that has one is read by the general path);
+/// None when none of the sixteen does. With SSE2, the sixteen bytes are looked at in a few
+/// instructions: a look at one byte at a time cost a load 0.7 instructions a byte more.
+#[inline(always)]
+pub(crate) fn short_name_len(head: &[u8; 16]) -> Option<usize> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use safe_arch::{
+            bitor_m128i, cmp_eq_mask_i8_m128i, load_unaligned_m128i, max_u8_m128i,
+            move_mask_i8_m128i, set_splat_i8_m128i,
+        };
+        let v = load_unaligned_m128i(head);
+        let splat = |b: u8| set_splat_i8_m128i(b as i8);
+        // Up to `'`: the bytes the unsigned maximum with it leaves as `'`.
+        let low = cmp_eq_mask_i8_m128i(max_u8_m128i(v, splat(b'\'')), splat(b'\''));
+        let marks =
+            bitor_m128i(cmp_eq_mask_i8_m128i(v, splat(b'/')), cmp_eq_mask_i8_m128i(v, splat(b'>')));
+        let ends = move_mask_i8_m128i(bitor_m128i(low, marks)) as u32;
+        (ends != 0).then(|| ends.trailing_zeros() as usize)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        head.iter().position(|&b| b <= b'\'' || b == b'/' || b == b'>')
+    }
+}
+
 /// How many bytes of white space the text at hand `text` starts with. Every byte of it up to
 /// 0x20 is white space, as the source stops before any other control character
 /// ([`first_non_char`]): so the test is one comparison a byte, made eight at a time. For
@@ -150,6 +178,43 @@ pub(crate) fn is_plain(text: &[u8]) -> bool {
         let word = u64::from_le_bytes(eight);
         first_equal(word, b'&') | first_equal(word, b'\r') == 0
     }) && !tail.iter().any(|&b| b == b'&' || b == b'\r')
+}
+
+/// Where the first `len` bytes of the text at hand `rest` start and end without leading and
+/// trailing white space (see [`trimmed_span`]), when they are plain (see [`is_plain`]): the
+/// usual value, which a reader takes as it stands. A value of at most sixteen bytes with
+/// sixteen at hand is looked at in one pass with SSE2: its references, carriage returns and
+/// white space all at once. (Two passes of sixteen for longer values measured no cheaper
+/// than the eight bytes at a time of the others.)
+#[inline(always)]
+pub(crate) fn plain_trimmed(rest: &[u8], len: usize) -> Option<(usize, usize)> {
+    #[cfg(target_arch = "x86_64")]
+    if let Some(sixteen) = rest.first_chunk::<16>().filter(|_| len <= 16) {
+        use safe_arch::{
+            bitor_m128i, cmp_eq_mask_i8_m128i, load_unaligned_m128i, max_u8_m128i,
+            move_mask_i8_m128i, set_splat_i8_m128i,
+        };
+        let v = load_unaligned_m128i(sixteen);
+        let splat = |b: u8| set_splat_i8_m128i(b as i8);
+        let within = (1u32 << len) - 1;
+        let mask = |m| move_mask_i8_m128i(m) as u32 & within;
+        let rare = bitor_m128i(
+            cmp_eq_mask_i8_m128i(v, splat(b'&')),
+            cmp_eq_mask_i8_m128i(v, splat(b'\r')),
+        );
+        if mask(rare) != 0 {
+            return None;
+        }
+        // Up to 0x20: the bytes the unsigned maximum with a space leaves as a space.
+        let space = mask(cmp_eq_mask_i8_m128i(max_u8_m128i(v, splat(b' ')), splat(b' ')));
+        let other = !space & within;
+        return Some(match other {
+            0 => (len, len),
+            _ => (other.trailing_zeros() as usize, 32 - other.leading_zeros() as usize),
+        });
+    }
+    let text = &rest[..len];
+    is_plain(text).then(|| trimmed_span(text))
 }
 
 /// A mask whose lowest set bit is the high bit of the first byte (the lowest, read little

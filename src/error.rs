@@ -412,15 +412,73 @@ impl Error {
     }
 }
 
-/// A coded finding of any load stage, a warning or an error alike: what, and where, as a
-/// byte offset of the decoded text and, once the reader has placed it, as a position in the
-/// file (worked out while its text was at hand).
+/// Where something a load found is: an offset of the decoded text, until it is placed; its
+/// position in the file, once it is. An offset becomes a position only through the lines
+/// the reader counts (`place::Lines`): while its text is at hand, or once the read is done
+/// when the whole text stays in memory (`place::Placer`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Spot {
+    Offset(usize),
+    Placed(Position),
+}
+
+impl Default for Spot {
+    fn default() -> Spot {
+        Spot::Offset(0)
+    }
+}
+
+impl Spot {
+    /// Offset `at` of the decoded text.
+    pub const fn offset(at: usize) -> Spot {
+        Spot::Offset(at)
+    }
+
+    pub fn placed(position: Position) -> Spot {
+        Spot::Placed(position)
+    }
+
+    /// Its position, once placed; none (zero) for an offset never placed.
+    pub fn position(self) -> Position {
+        match self {
+            Spot::Offset(_) => Position::default(),
+            Spot::Placed(position) => position,
+        }
+    }
+
+    /// The spot `to` gives an offset (a place in a value's text made a place in the file's),
+    /// a position as it is.
+    pub fn map_offset(self, to: impl FnOnce(usize) -> usize) -> Spot {
+        match self {
+            Spot::Offset(at) => Spot::Offset(to(at)),
+            placed => placed,
+        }
+    }
+
+    /// Its offset, while it is not placed.
+    pub fn unplaced(self) -> Option<usize> {
+        match self {
+            Spot::Offset(at) => Some(at),
+            Spot::Placed(_) => None,
+        }
+    }
+
+    /// Where it is in the file, to put spots in order: a load's spots are all placed or all
+    /// not, and offsets and byte offsets grow together.
+    pub fn order(self) -> u64 {
+        match self {
+            Spot::Offset(at) => at as u64,
+            Spot::Placed(position) => position.byte_offset,
+        }
+    }
+}
+
+/// A coded finding of any load stage, a warning or an error alike: what, and where (see
+/// [`Spot`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) struct Finding {
     pub code: Code,
-    /// The offset in the decoded text; 0 for a finding placed from a `Spot`.
-    pub at: usize,
-    pub position: Option<Position>,
+    pub at: Spot,
     pub message: String,
 }
 
@@ -432,24 +490,18 @@ pub(crate) type Problem = Box<Finding>;
 pub(crate) type Parsed<T> = Result<T, Problem>;
 
 impl Finding {
+    /// A finding at offset `at` of the decoded text.
     pub fn new(code: Code, at: usize, message: impl Into<String>) -> Finding {
-        Finding { code, at, position: None, message: message.into() }
+        Finding::at(code, Spot::Offset(at), message)
     }
 
-    /// Where it is in the file, to put findings in order: a load's findings are all placed,
-    /// or all not (see `place::Spot`), and offsets and byte offsets grow together.
+    pub fn at(code: Code, at: Spot, message: impl Into<String>) -> Finding {
+        Finding { code, at, message: message.into() }
+    }
+
+    /// Where it is in the file, to put findings in order (see [`Spot::order`]).
     pub fn order(&self) -> u64 {
-        self.position.map_or(self.at as u64, |p| p.byte_offset)
-    }
-
-    /// A finding at `position`, the place of offset `at`.
-    pub fn placed(
-        code: Code,
-        at: usize,
-        position: Position,
-        message: impl Into<String>,
-    ) -> Finding {
-        Finding { code, at, position: Some(position), message: message.into() }
+        self.at.order()
     }
 }
 

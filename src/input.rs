@@ -71,7 +71,8 @@ enum Origin<'a> {
     Path(&'a Path),
 }
 
-/// What a text is read from: a file, or a stream read once from its start.
+/// What a text is read from: a file, or a stream read once from where it stands (a pipe, or
+/// a piece of a file read at its offsets).
 enum Reader<'a> {
     File(File),
     Stream(Box<dyn Read + 'a>),
@@ -242,6 +243,24 @@ impl<'a> Source<'a> {
         source.file = Some(stream);
         source.take_read(bytes, 0, last);
         Ok(source)
+    }
+
+    /// The text of a piece of a file from offset `base` on, which `piece` reads, through a
+    /// window as [`Source::read`] reads a whole file (the file began with a byte-order mark
+    /// when `bom`). None when its first chunk cannot be read.
+    fn piece(piece: Box<dyn Read + 'a>, base: usize, bom: u64) -> Option<Source<'a>> {
+        let file = Reader::Stream(piece);
+        let mut stream = Stream { file, len: None, bom, read: 0, max: u64::MAX };
+        let mut bytes = Vec::with_capacity(2 * CHUNK);
+        let last = stream.read_onto(&mut bytes, CHUNK).ok()?;
+        let encoding = Encoding::Utf8 { bom: bom > 0 };
+        let mut source = Source {
+            stays: false,
+            ..Source::holding(Cow::Owned(String::new()), base, None, encoding)
+        };
+        source.file = Some(stream);
+        source.take_in(bytes, 0, last);
+        Some(source)
     }
 
     /// A source whose text at hand is `text`, from offset `base` on, checked, ending early
@@ -500,25 +519,18 @@ fn cut_at_non_char(
 /// XML does not allow.
 fn non_char(text: &str, at: usize, base: usize) -> Finding {
     match text.as_bytes()[at] {
-        0 => Finding {
-            position: None,
-            code: Code::NulByte,
-            at: base + at,
-            message: "the file holds a NUL byte: it is not a text file (or it was truncated or \
-                      padded)"
-                .into(),
-        },
+        0 => Finding::new(
+            Code::NulByte,
+            base + at,
+            "the file holds a NUL byte: it is not a text file (or it was truncated or padded)",
+        ),
         _ => {
             let c = text[at..].chars().next().unwrap_or_default();
-            Finding {
-                position: None,
-                code: Code::MalformedXml,
-                at: base + at,
-                message: format!(
-                    "malformed XML: the character U+{:04X} is not allowed in an XML document",
-                    u32::from(c)
-                ),
-            }
+            let message = format!(
+                "malformed XML: the character U+{:04X} is not allowed in an XML document",
+                u32::from(c)
+            );
+            Finding::new(Code::MalformedXml, base + at, message)
         }
     }
 }
@@ -579,13 +591,12 @@ fn decode_utf16(bytes: &[u8], big_endian: bool) -> (Cow<'static, str>, Encoding,
             }
         }
     }
-    let stop = (!valid).then(|| Finding {
-        position: None,
-        code: Code::InvalidUtf8,
-        at: text.len(),
-        message: "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of \
-                  bytes)"
-            .into(),
+    let stop = (!valid).then(|| {
+        Finding::new(
+            Code::InvalidUtf8,
+            text.len(),
+            "the file is not valid UTF-16 here (an unpaired surrogate or an odd number of bytes)",
+        )
     });
     (Cow::Owned(text), Encoding::Utf16 { big_endian }, stop)
 }

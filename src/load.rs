@@ -139,7 +139,7 @@ fn finish((read, placer): parse::Read<'_>) -> Checked {
     placer.place(&mut warnings);
     let mut kept = Vec::with_capacity(warnings.len());
     for w in warnings {
-        arena.scene.push_warning(w.code, w.position.unwrap_or_default(), &w.message);
+        arena.scene.push_warning(w.code, w.at.position(), &w.message);
         kept.push(error_of(w));
     }
     Checked {
@@ -157,7 +157,7 @@ fn failed(mut errors: Vec<Finding>, mut warnings: Vec<Finding>, placer: &Placer<
     placer.place(&mut warnings);
     placer.place(&mut errors);
     let stopped_at = match errors.len() > MAX_ERRORS {
-        true => errors.last().map(|last| last.position.unwrap_or_default()),
+        true => errors.last().map(|last| last.at.position()),
         false => None,
     };
     let warnings = warnings.into_iter().map(error_of).collect();
@@ -173,8 +173,8 @@ fn placed(mut errors: Vec<Finding>, placer: &Placer<'_>) -> Vec<Error> {
     errors.into_iter().map(error_of).collect()
 }
 
-fn error_of(Finding { code, position, message, .. }: Finding) -> Error {
-    Error { code, position: position.unwrap_or_default(), message }
+fn error_of(Finding { code, at, message }: Finding) -> Error {
+    Error { code, position: at.position(), message }
 }
 
 #[cfg(test)]

@@ -226,7 +226,7 @@ pub fn vector2(s: &str) -> Result<Vec2, Finding> {
         if trimmed.is_empty() {
             return Err(bad(Code::InvalidVector2, at, format!("'{s}' has an empty component")));
         }
-        float(trimmed).map_err(|e| Finding { at: at + lead + e.at, ..e })
+        float(trimmed).map_err(|e| Finding { at: e.at.map_offset(|o| at + lead + o), ..e })
     };
     Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
 }

@@ -131,3 +131,45 @@ fn plain_text_has_no_reference_or_carriage_return() {
         }
     }
 }
+
+/// The end of a short name is the first byte of sixteen that ends a name or that no name
+/// holds, wherever it is and whichever byte it is, as a look at one byte at a time finds it.
+#[test]
+fn short_name_len_finds_the_first_byte_that_ends_a_name() {
+    let ends = |b: u8| ENDS_NAME[usize::from(b)] || (b'!'..=b'&').contains(&b);
+    for b in 0..=255u8 {
+        for at in 0..16 {
+            let mut head = *b"VeryLongElementN";
+            head[at] = b;
+            let expected = head.iter().position(|&b| ends(b));
+            assert_eq!(short_name_len(&head), expected, "{b:#04x} at {at}");
+        }
+    }
+    assert_eq!(short_name_len(b"\xC3\xA9t\xC3\xA9 x=\"1\">    "), Some(5));
+    assert_eq!(short_name_len(b"Angle>0.5</Angle"), Some(5));
+    assert_eq!(short_name_len(b"Pair/><Pair/><Pa"), Some(4));
+}
+
+/// A value and the text after it, of every length up to past 32 bytes, mostly white space
+/// with references, carriage returns and characters past ASCII among it: the plain value's
+/// span in one pass is what the check for references and the trimming give apart.
+#[test]
+fn plain_trimmed_agrees_with_is_plain_and_trimmed_span() {
+    let pieces: [&[u8]; 9] = [b" ", b"\t", b"\n", b"\r", b"a", b"&", b"\xC3\xA9", b"<", b"1"];
+    let mut random = crate::Xorshift(0x2545_F491_4F6C_DD1D);
+    for len in 0..40 {
+        for _ in 0..2_000 {
+            let mut text = Vec::new();
+            while text.len() < len + random.below(20) {
+                let pick = random.below(24);
+                text.extend_from_slice(
+                    pieces[if pick < 9 { pick } else { [0, 2, 4, 8][pick % 4] }],
+                );
+            }
+            let len = len.min(text.len());
+            let value = &text[..len];
+            let apart = is_plain(value).then(|| trimmed_span(value));
+            assert_eq!(plain_trimmed(&text, len), apart, "{text:?} {len}");
+        }
+    }
+}

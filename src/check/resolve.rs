@@ -7,8 +7,7 @@
 
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, MAX_ERRORS, Parsed, Problem};
-use crate::place::Spot;
+use crate::error::{Code, Finding, MAX_ERRORS, Parsed, Problem, Spot};
 use crate::rules;
 use crate::scene::{Dialect, JointKind, KeptAt, NONE, Object, Range, Vec2};
 
@@ -286,5 +285,5 @@ impl FirstErrors {
 /// A problem at `spot`.
 #[cold]
 fn placed(code: Code, spot: Spot, why: String) -> Problem {
-    Box::new(spot.finding(code, why))
+    Box::new(Finding::at(code, spot, why))
 }

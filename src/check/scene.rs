@@ -3,7 +3,7 @@
 //! object's place in the file.
 
 use crate::arena::Arena;
-use crate::error::{Code, Parsed};
+use crate::error::{Code, Finding, Parsed};
 use crate::rules::{LINEAR_SLOP, zero_density};
 use crate::scene::{Body, Joint, JointKind, Vec2};
 
@@ -12,7 +12,7 @@ pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
     let Arena { scene: s, origins, findings, .. } = arena;
     for (i, (b, at)) in s.bodies.iter().zip(origins.bodies.iter()).enumerate() {
         if let Some(why) = zero_density(b, &s.fixture_ids, &s.fixtures) {
-            let warning = at.finding(Code::DynamicBodyZeroDensity, String::new());
+            let warning = Finding::at(Code::DynamicBodyZeroDensity, at, String::new());
             findings.note_worded(warning, || format!("dynamic body {i} {why}"))?;
         }
     }
@@ -128,7 +128,8 @@ pub(crate) fn joints_start_satisfied(arena: &mut Arena) -> Parsed<()> {
                 j.body_a, j.body_b
             )
         };
-        findings.note_worded(at.body_a.finding(Code::JointStartsViolated, String::new()), words)?;
+        findings
+            .note_worded(Finding::at(Code::JointStartsViolated, at.body_a, String::new()), words)?;
     }
     Ok(())
 }

@@ -3,8 +3,9 @@
 
 use std::borrow::Cow;
 use std::fs::File;
+use std::io::Read;
 
-use super::{Encoding, Source, utf8};
+use super::{Encoding, Source};
 use crate::bytes::first_non_char;
 
 /// The text of a file, any piece of which can be read apart: whole in memory, or a piece at
@@ -32,7 +33,7 @@ impl<'a> Shared<'a> {
     }
 
     /// The bytes of the text from `from` to `to` (within it), which may cut a character: a
-    /// file's read into `buffer`, which they borrow (see [`Shared::source`]).
+    /// file's read into `buffer`, which they borrow.
     pub fn bytes<'s>(
         &'s self,
         from: usize,
@@ -50,38 +51,27 @@ impl<'a> Shared<'a> {
 
     /// A source that holds the text from `from` to `to`, at its offsets in the whole, and
     /// ends there (see [`Source::ends_early`]): a text in memory, all of it up to `to`, which
-    /// stays at hand; a piece of a file, read into `buffer`, which it borrows. None unless
-    /// that is all text (valid UTF-8, only characters XML allows).
-    ///
-    /// One buffer serves all the pieces a reader reads, so that no block the size of a
-    /// piece is let go after each: glibc would take that as a sign to serve every block up
-    /// to that size from its heaps, where the blocks of a load let go stay resident (a fifth
-    /// more at the peak of a 100 MB load from a path).
-    pub fn source<'s>(
-        &'s self,
-        from: usize,
-        to: usize,
-        buffer: &'s mut Vec<u8>,
-    ) -> Option<Source<'s>> {
-        let (text, base, bom, stays) = match self {
+    /// stays at hand, None unless that is all text (valid UTF-8, only characters XML
+    /// allows); a piece of a file, read through a window as a whole file is (see
+    /// [`Source::more`]), so that a reader never holds more of it than a window: where it
+    /// is not all text, its window stops there, as a whole file's does.
+    pub fn source(&self, from: usize, to: usize) -> Option<Source<'_>> {
+        let ends_early = to < self.len();
+        match self {
             Shared::Memory { text, bom } => {
                 if first_non_char(text.as_bytes().get(from..to)?).is_some() {
                     return None;
                 }
-                (text.get(..to)?, 0, *bom, true)
+                let encoding = Encoding::Utf8 { bom: *bom };
+                let source = Source::holding(Cow::Borrowed(text.get(..to)?), 0, None, encoding);
+                Some(Source { ends_early, ..source })
             }
-            Shared::File { bom, .. } => {
-                self.read_into(from, to, buffer)?;
-                let text = utf8(buffer).ok()?;
-                if first_non_char(text.as_bytes()).is_some() {
-                    return None;
-                }
-                (text, from, *bom > 0, false)
+            Shared::File { file, bom, .. } => {
+                let span = Span { file, at: bom + from as u64, end: bom + to as u64 };
+                let source = Source::piece(Box::new(span), from, *bom)?;
+                Some(Source { ends_early, ..source })
             }
-        };
-        // A piece is read whole: it has no file to read on from.
-        let source = Source::holding(Cow::Borrowed(text), base, None, Encoding::Utf8 { bom });
-        Some(Source { stays, ends_early: to < self.len(), ..source })
+        }
     }
 
     /// The whole text in memory, as it stays at hand once its pieces are read; None for a
@@ -100,6 +90,24 @@ impl<'a> Shared<'a> {
     }
 }
 
+/// The bytes of a file from offset `at` to `end`, read at their offsets: a piece of the
+/// text, which the window of its reader reads as it would a whole file.
+struct Span<'a> {
+    file: &'a File,
+    at: u64,
+    end: u64,
+}
+
+impl Read for Span<'_> {
+    fn read(&mut self, bytes: &mut [u8]) -> std::io::Result<usize> {
+        let room = usize::try_from(self.end.saturating_sub(self.at)).unwrap_or(usize::MAX);
+        let len = bytes.len().min(room);
+        let read = read_at(self.file, &mut bytes[..len], self.at)?;
+        self.at += read as u64;
+        Ok(read)
+    }
+}
+
 /// A second handle on `file`, for the second thread: the very file the first reads (not
 /// one opened anew by its path, which may have been replaced since), read at offsets of
 /// its own that leave the first handle's position alone. Unix's positional reads promise
@@ -112,6 +120,16 @@ pub(super) fn second_handle(file: &File) -> Option<File> {
 #[cfg(not(unix))]
 pub(super) fn second_handle(_: &File) -> Option<File> {
     None
+}
+
+#[cfg(unix)]
+fn read_at(file: &File, bytes: &mut [u8], offset: u64) -> std::io::Result<usize> {
+    std::os::unix::fs::FileExt::read_at(file, bytes, offset)
+}
+
+#[cfg(not(unix))]
+fn read_at(_: &File, _: &mut [u8], _: u64) -> std::io::Result<usize> {
+    Err(std::io::ErrorKind::Unsupported.into())
 }
 
 #[cfg(unix)]

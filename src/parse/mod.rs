@@ -21,10 +21,10 @@ pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
 use std::borrow::Cow;
 
 use crate::arena::Arena;
-use crate::error::{Code, Finding, Parsed, Problem};
+use crate::error::{Code, Finding, Parsed, Problem, Spot};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::place::{Placer, Spot};
+use crate::place::Placer;
 use crate::rules;
 use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
@@ -148,7 +148,8 @@ impl<'a> Reader<'a> {
         match self.tok.parsed(tag, convert)? {
             Ok(value) => Ok(value),
             Err(error) => {
-                let at = error.at;
+                // Not placed yet: where in the text it points (the element's start, were it).
+                let at = error.at.unplaced().unwrap_or(tag.at);
                 self.recover(*error).map(|()| (T::default(), at))
             }
         }

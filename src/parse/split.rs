@@ -19,7 +19,8 @@
 //! calling thread alone. Either way the scene, the warnings and the first error are those
 //! of one reader reading the whole file; a busy core only moves where the two meet. The
 //! text may be in memory or in a file: each thread reads a file's pieces with a handle of
-//! its own, one piece at a time.
+//! its own, each through a window as a whole file is read, so that neither holds a whole
+//! piece.
 
 use std::sync::{Mutex, PoisonError, mpsc};
 
@@ -86,7 +87,7 @@ pub(super) fn read<'a>(
         let (sender, received) = mpsc::channel();
         let (root, pieces, claims, text) = (&root, &pieces, &claims, &text);
         scope.spawn(move || read_theirs(text, options, root, pieces, claims, &sender));
-        let mine = read_mine(text, &mut buffer, options, root, pieces, claims);
+        let mine = read_mine(text, options, root, pieces, claims);
         (mine, received.into_iter().collect::<Vec<_>>())
     });
     match mine.and_then(|mine| merged(mine, theirs, &pieces, &text, options)) {
@@ -131,7 +132,7 @@ struct Root {
 fn root(text: &Shared, options: &LoadOptions, first: usize, buffer: &mut Vec<u8>) -> Option<Root> {
     let head = text.bytes(0, first.min(ROOT_BYTES), buffer)?;
     let end = memchr::memrchr(b'<', head)?;
-    let mut reader = Reader::new(Tokenizer::new(text.source(0, end, buffer)?, options), false);
+    let mut reader = Reader::new(Tokenizer::new(text.source(0, end)?, options), false);
     let root = reader.root().ok()?;
     reader.read_version(&root).ok()?;
     Some(Root { name: root.name, at: root.at, version: reader.arena.version })
@@ -155,19 +156,19 @@ struct Ended {
 /// start) and how its reading ended.
 type Done = (usize, Arena, Ended);
 
-/// Reads `piece` of `text` (a file's into `buffer`) with the ordinary reader into `arena`:
+/// Reads `piece` of `text` with the ordinary reader into `arena` (a file's through a
+/// window, as a whole file is read):
 /// None when it does not read to its end without a problem. Positions are counted on from
 /// `start`, where the piece begins, when it is known (the calling thread's pieces, each
 /// after the one before); else from the piece's start.
 fn read_piece(
     text: &Shared,
-    buffer: &mut Vec<u8>,
     options: &LoadOptions,
     (root, piece): (&Root, &Piece),
     arena: Arena,
     start: Option<Position>,
 ) -> Option<(Arena, Ended)> {
-    let source = text.source(piece.from, piece.to, buffer)?;
+    let source = text.source(piece.from, piece.to)?;
     let mut reader = Reader::with_arena(Tokenizer::new(source, options), arena);
     let mut seen = Seen::default();
     let read = match piece.container {
@@ -210,7 +211,6 @@ struct Claims {
 /// read into one arena: how the reading of each ended. None when one could not be used.
 fn read_mine(
     text: &Shared,
-    buffer: &mut Vec<u8>,
     options: &LoadOptions,
     root: &Root,
     pieces: &[Piece],
@@ -227,8 +227,7 @@ fn read_mine(
         }
         // Each piece is placed on from where the one before ended.
         let start = ended.last().and_then(|ended| ended.end);
-        let Some((read, end)) = read_piece(text, buffer, options, (root, piece), arena, start)
-        else {
+        let Some((read, end)) = read_piece(text, options, (root, piece), arena, start) else {
             // The whole is read again: the second thread starts no more pieces.
             claims.lock().unwrap_or_else(PoisonError::into_inner).mine = usize::MAX;
             return None;
@@ -249,7 +248,6 @@ fn read_theirs(
     claims: &Mutex<Claims>,
     sender: &mpsc::Sender<Option<Done>>,
 ) {
-    let mut buffer = Vec::new();
     for (k, piece) in pieces.iter().enumerate().skip(1).rev() {
         {
             let mut claims = claims.lock().unwrap_or_else(PoisonError::into_inner);
@@ -259,13 +257,12 @@ fn read_theirs(
             claims.theirs = claims.theirs.min(k);
         }
         let arena = Arena::new(options.strict, false);
-        let done = read_piece(text, &mut buffer, options, (root, piece), arena, None).map(
-            |(mut arena, ended)| {
+        let done =
+            read_piece(text, options, (root, piece), arena, None).map(|(mut arena, ended)| {
                 // Appended to the calling thread's and let go: on the thread that read it.
                 arena.scene.shrink_to_fit();
                 (k, arena, ended)
-            },
-        );
+            });
         let usable = done.is_some();
         if sender.send(done).is_err() || !usable {
             break;

@@ -3,7 +3,7 @@
 use super::{Element, Reader, Seen, Tag, elements};
 use crate::arena::Arena;
 use crate::containers::Container;
-use crate::error::{Code, Parsed, problem};
+use crate::error::{Code, Finding, Parsed, problem};
 use crate::scene::{KeptAt, Object};
 
 elements! {
@@ -194,7 +194,7 @@ impl<'a> Reader<'a> {
 pub(super) fn end_world(arena: &mut Arena, seen: &Seen) -> Parsed<()> {
     for container in Container::ALL {
         if !seen.contains(WorldChild::of(container)) {
-            let missing = arena.origins.world.finding(Code::MissingContainer, String::new());
+            let missing = Finding::at(Code::MissingContainer, arena.origins.world, String::new());
             let words = || format!("the file has no <{}>; read as empty", container.name());
             arena.findings.note_worded(missing, words)?;
         }

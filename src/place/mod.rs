@@ -1,8 +1,9 @@
 //! Where a byte is: the one owner of turning an offset of the decoded text into the line,
 //! column and byte offset of the file that a [`Position`] reports. The reader counts lines
-//! as it goes ([`Lines`], from a [`Cursor`]); what a later stage may report is kept as a
-//! [`Spot`] (in [`Spots`], as small steps); what a text kept whole in memory left
-//! unplaced is placed once the read is done ([`Placer`]). Nothing else counts lines.
+//! as it goes ([`Lines`], from a [`Cursor`]): every offset a load reports is made a
+//! [`Spot`](crate::error::Spot) there, placed while its text is at hand, or once the read
+//! is done ([`Placer`]) when the whole text stays in memory; what a later stage may report
+//! is kept small in [`Spots`]. Nothing else counts lines.
 #![forbid(unsafe_code)]
 
 mod lines;
@@ -11,7 +12,7 @@ mod spots;
 
 pub(crate) use lines::{Cursor, Lines};
 pub(crate) use placer::Placer;
-pub(crate) use spots::{Spot, Spots};
+pub(crate) use spots::Spots;
 
 use crate::error::Position;
 

@@ -1,7 +1,7 @@
 //! Placing what a read left for later, once it is done.
 
 use super::{Cursor, Lines};
-use crate::error::Finding;
+use crate::error::{Finding, Spot};
 use crate::input::Source;
 
 /// Places the findings a read left for later: those in a text that stayed whole in memory
@@ -18,12 +18,17 @@ impl<'a> Placer<'a> {
     /// Places every finding of `findings` that is not placed.
     pub fn place(&self, findings: &mut [Finding]) {
         let Some(source) = &self.whole else { return };
-        let mut order: Vec<&mut Finding> =
-            findings.iter_mut().filter(|f| f.position.is_none()).collect();
-        order.sort_by_key(|f| f.at);
+        let mut order: Vec<(usize, &mut Finding)> = findings
+            .iter_mut()
+            .filter_map(|f| match f.at {
+                Spot::Offset(at) => Some((at, f)),
+                Spot::Placed(_) => None,
+            })
+            .collect();
+        order.sort_by_key(|&(at, _)| at);
         let mut lines = Lines::new(source.encoding(), Cursor::start(0));
-        for finding in order {
-            finding.position = Some(lines.locate(source.text(), 0, finding.at));
+        for (at, finding) in order {
+            finding.at = Spot::placed(lines.locate(source.text(), 0, at));
         }
     }
 }

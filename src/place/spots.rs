@@ -1,7 +1,7 @@
-//! Where a later stage may point: a [`Spot`] (a position, or only an offset of a text that
-//! stays in memory), and [`Spots`], many of them kept small as [`Step`]s.
+//! Where a later stage may point: [`Spot`]s, placed in a piece of the text and kept many
+//! together, small, as [`Step`]s in [`Spots`].
 
-use crate::error::{Code, Finding, Position};
+use crate::error::{Position, Spot};
 
 /// A [`Spot`] in 8 bytes, as the step to it from the spot before it: how many lines on,
 /// its column, how many bytes on (see [`crate::arena::Spots`]). Or, for a spot no step
@@ -30,31 +30,7 @@ impl Step {
     }
 }
 
-/// Where something a later stage may report is: its position, placed while its text was
-/// at hand; or, when the whole text stays in memory, only its offset, placed if a finding
-/// ever needs it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Spot {
-    Offset(usize),
-    Placed(Position),
-}
-
-impl Default for Spot {
-    fn default() -> Spot {
-        Spot::Offset(0)
-    }
-}
-
 impl Spot {
-    /// Offset `at` of a text that stays in memory.
-    pub const fn offset(at: usize) -> Spot {
-        Spot::Offset(at)
-    }
-
-    pub fn placed(position: Position) -> Spot {
-        Spot::Placed(position)
-    }
-
     /// This spot, counted from the start of a piece of the text, placed in the whole text
     /// where the piece begins at `start` (see [`Position::after`]); offsets are the whole
     /// text's already.
@@ -103,14 +79,6 @@ impl Spot {
                 column: step.column.into(),
                 byte_offset: position.byte_offset.wrapping_add_signed(step.bytes.into()),
             }),
-        }
-    }
-
-    /// A finding here.
-    pub fn finding(self, code: Code, message: impl Into<String>) -> Finding {
-        match self {
-            Spot::Offset(at) => Finding::new(code, at, message),
-            Spot::Placed(position) => Finding::placed(code, 0, position, message),
         }
     }
 }
@@ -201,7 +169,6 @@ impl std::fmt::Debug for Spots {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::error::Position;
 
     /// Every spot comes back as it went in, whether a step from the one before holds it or
     /// it is kept aside: far apart in lines or bytes, back in the file, past 4 GiB, on a

@@ -1,4 +1,5 @@
 use super::*;
+use crate::error::Spot;
 
 // The editor's own text of pi and -pi/4.
 #[allow(clippy::approx_constant)]
@@ -80,16 +81,16 @@ fn vectors_in_every_spelling() {
 #[test]
 fn bad_vectors_point_at_the_culprit() {
     let e = vector2("1").unwrap_err();
-    assert_eq!((e.code, e.at), (Code::InvalidVector2, 0));
+    assert_eq!((e.code, e.at), (Code::InvalidVector2, Spot::offset(0)));
     assert_eq!(vector2("1 2 3").unwrap_err().code, Code::InvalidVector2);
     let e = vector2("1,,2").unwrap_err();
     assert_eq!(e.code, Code::InvalidVector2);
     let e = vector2("1, x").unwrap_err();
-    assert_eq!((e.code, e.at), (Code::InvalidFloat, 3));
+    assert_eq!((e.code, e.at), (Code::InvalidFloat, Spot::offset(3)));
     assert_eq!(vector2("0,5 1,5").unwrap_err().code, Code::FloatDecimalComma);
     for (text, comma) in [("0,5 -20", 1), ("0 -9,82", 4), ("1,5\t2", 1)] {
         let e = vector2(text).unwrap_err();
-        assert_eq!((e.code, e.at), (Code::FloatDecimalComma, comma), "{text}");
+        assert_eq!((e.code, e.at), (Code::FloatDecimalComma, Spot::offset(comma)), "{text}");
     }
     assert_eq!(vector2("1, 5").unwrap(), Vec2::new(1.0, 5.0));
     assert_eq!(vector2("1 NaN").unwrap_err().code, Code::NonFiniteFloat);
@@ -203,7 +204,7 @@ mod old {
             if part.is_empty() {
                 return Err(bad(Code::InvalidVector2, at, format!("'{s}' has an empty component")));
             }
-            float(part).map_err(|e| Finding { at: at + lead + e.at, ..e })
+            float(part).map_err(|e| Finding { at: e.at.map_offset(|o| at + lead + o), ..e })
         };
         Ok(Vec2 { x: component(at_x, x)?, y: component(at_y, y)? })
     }

@@ -2,9 +2,9 @@
 //! over a streamed file). It enforces the limits, counts lines as it goes, and hands whole
 //! elements, values and attributes to the reader; it builds nothing.
 //!
-//! It walks the marks of the scan stage ([`Index`]): where a tag, a comment, CDATA or a
-//! processing instruction ends, and where text ends, is the next mark, taken as the markup
-//! is read; it looks for no delimiter itself. The usual markup is read here: tags with short
+//! It walks the marks of the scan stage ([`Index`](crate::scan::Index)): where a tag, a
+//! comment, CDATA or a processing instruction ends, and where text ends, is the next mark,
+//! taken as the markup is read; it looks for no delimiter itself. The usual markup is read here: tags with short
 //! names and plain `name="value"` attributes, values followed by their end tag. Anything
 //! else goes to quick-xml: its attribute iterator reads and checks the other attributes, its
 //! reference and declaration types resolve entities and read the XML declaration, and its
@@ -24,16 +24,18 @@ use super::names::{Name, SHORT};
 use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
-use crate::scan::{Index, Mark};
+use crate::scan::Mark;
 use crate::text::{self};
 
 mod keeping;
+mod lexer;
 mod pieces;
 mod values;
 mod window;
 
-use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, space_len};
+use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, short_name_len, space_len};
 pub(crate) use keeping::Keeping;
+use lexer::Lexer;
 use values::resolve_text;
 pub(super) use values::verbatim;
 use window::Window;
@@ -221,45 +223,23 @@ pub(super) enum Node {
     Eof,
 }
 
-/// The reader of markup, the lexer that turns it into nodes: where it is in the text,
-/// which elements are open; over a window of the text, keeping at hand what the reader
-/// will want again.
+/// The reader of markup, made of its three parts: the window of the text at hand, the
+/// lexer's state that turns the markup into nodes, and what is kept at hand for the reader.
 pub(super) struct Tokenizer<'a> {
+    /// The text at hand.
     window: Window<'a>,
-    options: &'a LoadOptions,
-    /// The tokenizer's offset: the next node starts here.
-    pos: usize,
-    /// Where the node being read and the one before it began: the text from the one
-    /// before on stays at hand, so a value can be read after the end tag that ends it.
-    started: usize,
-    last: usize,
+    /// Where the reading stands, the open elements, the marks ahead.
+    lex: Lexer,
     /// What stays at hand for the reader: text kept verbatim, comments, the text after
     /// what it kept for the writer.
     pub kept: Keeping,
-    /// The open elements, outermost first, with the offsets of their start tags: the text
-    /// of the third (an item of a world container, an object) stays at hand while it is
-    /// open, so that its offsets can be placed until it ends.
-    open: Vec<(Name, usize)>,
-    elements: u64,
-    /// The markup ahead, as the scan stage finds it: the reader takes each piece's mark as
-    /// it reads it, and looks for no delimiter itself.
-    index: Index,
+    options: &'a LoadOptions,
 }
 
 impl<'a> Tokenizer<'a> {
     pub fn new(source: Source<'a>, options: &'a LoadOptions) -> Tokenizer<'a> {
-        let index = Index::new(source.base());
-        Tokenizer {
-            window: Window::new(source),
-            options,
-            pos: 0,
-            started: 0,
-            last: 0,
-            kept: Keeping::default(),
-            open: Vec::new(),
-            elements: 0,
-            index,
-        }
+        let lex = Lexer::at(source.base(), Vec::new());
+        Tokenizer { window: Window::new(source), lex, kept: Keeping::default(), options }
     }
 
     pub fn options(&self) -> &LoadOptions {
@@ -277,10 +257,10 @@ impl<'a> Tokenizer<'a> {
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
     /// at the end of the text; the problem that ends the text early, when that is why.
     fn more(&mut self) -> Parsed<bool> {
-        let keep = self.kept.first().map_or(self.last, |kept| kept.min(self.last));
-        let keep = self.open.get(2).map_or(keep, |&(_, object)| keep.min(object));
+        let needed = self.lex.first_needed();
+        let keep = self.kept.first().map_or(needed, |kept| kept.min(needed));
         // The scan goes on from where it stands.
-        self.window.refill(keep.min(self.index.scanned()))
+        self.window.refill(keep.min(self.lex.index.scanned()))
     }
 
     /// The index's next mark, that of the markup at `at` (whose first `skip` bytes the
@@ -290,7 +270,7 @@ impl<'a> Tokenizer<'a> {
     /// its closing delimiter of `overlap + 1` bytes.
     fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Parsed<Option<Mark>> {
         loop {
-            if let Some(mark) = self.index.next(self.window.text(), self.window.base()) {
+            if let Some(mark) = self.lex.index.next(self.window.text(), self.window.base()) {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
                 return Ok(Some(mark));
             }
@@ -305,7 +285,7 @@ impl<'a> Tokenizer<'a> {
     /// without it (a tag it read whole in the text at hand).
     #[inline(always)]
     fn passed(&mut self, at: usize) {
-        self.index.pass(at, self.window.text(), self.window.base());
+        self.lex.index.pass(at, self.window.text(), self.window.base());
     }
 
     /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
@@ -324,9 +304,9 @@ impl<'a> Tokenizer<'a> {
     /// only elements may follow, however it falls across a window.
     #[inline(always)]
     pub fn skip_space(&mut self) -> Parsed<()> {
-        let rest = self.rest(self.pos);
+        let rest = self.rest(self.lex.pos);
         let (space, all) = (space_len(rest), rest.len());
-        self.pos += space;
+        self.lex.pos += space;
         match space < all {
             true => Ok(()),
             false => self.skip_space_on(),
@@ -342,20 +322,20 @@ impl<'a> Tokenizer<'a> {
             // Directly in the root or in a container, nothing read before the white space
             // is looked at again (an item's text is kept while it is open): neither it nor
             // the white space stays at hand, however long it runs.
-            if self.open.len() <= 2 {
-                (self.last, self.started) = (self.pos, self.pos);
+            if self.lex.outside_items() {
+                (self.lex.last, self.lex.started) = (self.lex.pos, self.lex.pos);
             }
             // The scan passes the white space too (it holds no mark), so that it need not
             // stay at hand for the scan either.
             let (text, base) = (self.window.text(), self.window.base());
-            let mark = self.index.next(text, base);
+            let mark = self.lex.index.next(text, base);
             debug_assert!(mark.is_none(), "white space holds no markup");
             if !self.more()? {
                 break;
             }
-            let rest = self.rest(self.pos);
+            let rest = self.rest(self.lex.pos);
             let (space, all) = (space_len(rest), rest.len());
-            self.pos += space;
+            self.lex.pos += space;
             if space < all {
                 break;
             }
@@ -363,16 +343,10 @@ impl<'a> Tokenizer<'a> {
         Ok(())
     }
 
-    /// A node begins at `at`: the one before it stays at hand (see [`Tokenizer::started`]).
-    #[inline(always)]
-    fn begin_node(&mut self, at: usize) {
-        (self.last, self.started) = (self.started, at);
-    }
-
     pub fn next_node(&mut self) -> Parsed<Node> {
-        self.begin_node(self.pos);
+        self.lex.begin_node(self.lex.pos);
         loop {
-            let at = self.pos;
+            let at = self.lex.pos;
             let second = match *self.rest(at) {
                 [b'<', second, ..] => second,
                 [first, ..] if first != b'<' => return self.text_node(at),
@@ -404,10 +378,10 @@ impl<'a> Tokenizer<'a> {
     fn text_node(&mut self, at: usize) -> Parsed<Node> {
         let end = loop {
             let (text, base) = (self.window.text(), self.window.base());
-            if let Some(mark) = self.index.next(text, base) {
+            if let Some(mark) = self.lex.index.next(text, base) {
                 break mark.at;
             }
-            if let Some(start) = self.index.next_start(text, base) {
+            if let Some(start) = self.lex.index.next_start(text, base) {
                 break start;
             }
             self.within_text_limit(at, self.window.end())?;
@@ -415,7 +389,7 @@ impl<'a> Tokenizer<'a> {
                 break self.window.end();
             }
         };
-        self.pos = self.within_text_limit(at, end)?;
+        self.lex.pos = self.within_text_limit(at, end)?;
         let text = self.window.slice(at, end);
         // `]]>` ends CDATA only: in text, XML wants its `>` escaped.
         if let Some(i) = memchr::memmem::find(text.as_bytes(), b"]]>") {
@@ -440,7 +414,7 @@ impl<'a> Tokenizer<'a> {
             let _ = parser.feed(self.rest(at + 1));
             return Err(malformed(at, parser.eof_error(&[])));
         };
-        self.index.take();
+        self.lex.index.take();
         self.within_text_limit(at, mark.end)
     }
 
@@ -449,7 +423,7 @@ impl<'a> Tokenizer<'a> {
             Some(tag) => tag,
             None => {
                 let end = self.tag_end(at)?;
-                self.pos = end + 1;
+                self.lex.pos = end + 1;
                 let content = self.window.slice(at + 1, end);
                 let (content, empty) = match content.strip_suffix('/') {
                     Some(content) => (content, true),
@@ -469,10 +443,10 @@ impl<'a> Tokenizer<'a> {
     /// was.
     #[inline(always)]
     fn closes_parent(&mut self) -> bool {
-        let at = self.pos;
+        let at = self.lex.pos;
         let closed = self.usual_end_tag(at);
         if closed {
-            self.begin_node(at);
+            self.lex.begin_node(at);
         }
         closed
     }
@@ -485,8 +459,8 @@ impl<'a> Tokenizer<'a> {
             return false;
         };
         self.passed(at);
-        self.pos = at + len;
-        self.open.pop();
+        self.lex.pos = at + len;
+        self.lex.open.pop();
         true
     }
 
@@ -494,7 +468,7 @@ impl<'a> Tokenizer<'a> {
     /// with it.
     #[inline(always)]
     fn usual_end_tag_len(&self, text: &[u8]) -> Option<usize> {
-        let (expected, _) = self.open.last()?;
+        let (expected, _) = self.lex.open.last()?;
         let len = expected.end_tag_len(text)?;
         // Longer than the limit (measured up to its `>`): the ordinary reading refuses it.
         ((len - 1) as u64 <= self.options.max_text_bytes).then_some(len)
@@ -504,15 +478,15 @@ impl<'a> Tokenizer<'a> {
     #[inline(always)]
     fn opened(&mut self, tag: &Tag) -> Parsed<()> {
         let at = tag.at;
-        self.elements += 1;
-        if self.elements > self.options.max_elements {
+        self.lex.elements += 1;
+        if self.lex.elements > self.options.max_elements {
             return Err(self.limit(at, "max_elements", self.options.max_elements));
         }
         if !tag.empty {
-            if self.open.len() as u64 >= u64::from(self.options.max_depth) {
+            if self.lex.open.len() as u64 >= u64::from(self.options.max_depth) {
                 return Err(self.limit(at, "max_depth", self.options.max_depth.into()));
             }
-            self.open.push((tag.name.clone(), at));
+            self.lex.open.push((tag.name.clone(), at));
         }
         Ok(())
     }
@@ -527,7 +501,12 @@ impl<'a> Tokenizer<'a> {
         if matches!(head[0], b'/' | b'?' | b'!') {
             return None;
         }
-        let len = head.iter().position(|&b| ENDS_NAME[usize::from(b)]).filter(|&n| n <= SHORT)?;
+        let (sixteen, after) = head.split_first_chunk::<SHORT>()?;
+        let len = match short_name_len(sixteen) {
+            Some(len) => len,
+            None if ENDS_NAME[usize::from(after[0])] => SHORT,
+            None => return None,
+        };
         let empty = match head[len..] {
             [b'>', ..] => false,
             [b'/', b'>', ..] => true,
@@ -538,7 +517,7 @@ impl<'a> Tokenizer<'a> {
         }
         let name = Name::from_head(head.first_chunk()?, len);
         self.passed(at);
-        self.pos = at + 2 + len + usize::from(empty);
+        self.lex.pos = at + 2 + len + usize::from(empty);
         Some(Tag { name, content: None, at, empty })
     }
 
@@ -547,9 +526,9 @@ impl<'a> Tokenizer<'a> {
             return Ok(Node::Close(at));
         }
         let end = self.tag_end(at)?;
-        self.pos = end + 1;
+        self.lex.pos = end + 1;
         let found = self.window.slice(at + 2, end).trim_end_matches(text::XML_SPACE);
-        let Some((expected, _)) = self.open.pop() else {
+        let Some((expected, _)) = self.lex.open.pop() else {
             return Err(malformed(at, IllFormedError::UnmatchedEndTag(found.to_owned())));
         };
         if expected.as_str() != found {
@@ -568,8 +547,8 @@ impl<'a> Tokenizer<'a> {
         };
         // `end` is the `?` of `?>`.
         let end = self.within_text_limit(at, mark.end - 1)?;
-        self.index.take();
-        self.pos = end + 2;
+        self.lex.index.take();
+        self.lex.pos = end + 2;
         let content = self.window.slice(at + 2, end);
         let is_declaration = content.starts_with("xml")
             && content.as_bytes().get(3).is_none_or(|&b| is_xml_space_byte(b));
@@ -612,9 +591,9 @@ impl<'a> Tokenizer<'a> {
                      which must be followed by `>`)",
                 ));
             }
-            self.index.take();
-            self.pos = end + 3;
-            self.kept.comment(at, self.pos);
+            self.lex.index.take();
+            self.lex.pos = end + 3;
+            self.kept.comment(at, self.lex.pos);
             return Ok(None);
         }
         if head.starts_with(b"<![CDATA[") {
@@ -622,8 +601,8 @@ impl<'a> Tokenizer<'a> {
             let mark = mark.ok_or_else(|| malformed::<Problem>(at, SyntaxError::UnclosedCData))?;
             // `end` is the `]]>`.
             let end = self.within_text_limit(at, mark.end - 2)?;
-            self.index.take();
-            self.pos = end + 3;
+            self.lex.index.take();
+            self.lex.pos = end + 3;
             return Ok(Some(Node::Text(Text { at: at + 9, end, resolved: None })));
         }
         if matches!(head.get(2), Some(b'D' | b'd')) {

@@ -2,11 +2,10 @@
 //! taken back, and where a text that is a piece of the file starts and ends.
 
 use super::super::names::Name;
-use super::{Tag, Tokenizer};
-use crate::error::{Code, Finding, Position, Problem, problem};
+use super::{Lexer, Tag, Tokenizer};
+use crate::error::{Code, Finding, Position, Problem, Spot, problem};
 use crate::input::Source;
-use crate::place::{Cursor, Spot};
-use crate::scan::Index;
+use crate::place::Cursor;
 
 impl<'a> Tokenizer<'a> {
     /// The error for a repeated container.
@@ -43,7 +42,7 @@ impl<'a> Tokenizer<'a> {
 
     /// The offset the tokenizer has reached: just past the last node read.
     pub fn position(&self) -> usize {
-        self.pos
+        self.lex.pos
     }
 
     /// The text from the last pinned offset to `to` (see [`Keeping::pin`](super::Keeping::pin)),
@@ -58,8 +57,7 @@ impl<'a> Tokenizer<'a> {
     /// counted on from `position`, where `at` is, when it is known; else from `at` (see
     /// [`Cursor::start`]).
     pub fn start_item(&mut self, at: usize, open: Vec<(Name, usize)>, position: Option<Position>) {
-        (self.pos, self.started, self.last, self.open) = (at, at, at, open);
-        self.index = Index::new(at);
+        self.lex = Lexer { elements: self.lex.elements, ..Lexer::at(at, open) };
         self.window.resume(position.map_or(Cursor::start(at), |position| Cursor::at(at, position)));
     }
 
@@ -70,26 +68,29 @@ impl<'a> Tokenizer<'a> {
     /// file would go on to the item.
     pub fn at_piece_end(&self) -> bool {
         self.window.ends_early()
-            && self.pos == self.window.end()
-            && self.open.len() == 2
+            && self.lex.pos == self.window.end()
+            && self.lex.open.len() == 2
             && self.kept.waits_for_nothing()
     }
 
     /// The element the reading stands in, directly in the root, at the end of a piece (see
     /// [`Tokenizer::at_piece_end`]).
     pub fn open_container(&self) -> Option<&Name> {
-        self.open.get(1).filter(|_| self.at_piece_end()).map(|(name, _)| name)
+        self.lex.open.get(1).filter(|_| self.at_piece_end()).map(|(name, _)| name)
     }
 
-    /// The position of offset `at` counted from where the reading started, when it places
+    /// The position the reading reached, counted from where it started, when it places
     /// what it finds as it reads (a text that does not stay at hand).
     pub fn placed_end(&mut self) -> Option<Position> {
-        (!self.is_whole()).then(|| self.locate(self.pos))
+        match self.spot(self.lex.pos) {
+            Spot::Placed(position) => Some(position),
+            Spot::Offset(_) => None,
+        }
     }
 
     /// The elements read so far.
     pub fn elements(&self) -> u64 {
-        self.elements
+        self.lex.elements
     }
 
     /// The source it read.
@@ -105,12 +106,6 @@ impl<'a> Tokenizer<'a> {
     /// The text from `from` to `to`, which is at hand.
     pub fn slice(&self, from: usize, to: usize) -> &str {
         self.window.slice(from, to)
-    }
-
-    /// The line, column and byte offset of offset `at`, which is at hand: after the text
-    /// last let go of, or in the object being read (see [`Tokenizer::open`]).
-    pub fn locate(&mut self, at: usize) -> Position {
-        self.window.locate(at)
     }
 
     /// `finding` placed at its line and column, when its text will not stay at hand (see

@@ -47,7 +47,7 @@ fn children(xml: &str, usual: bool, limits: &LoadOptions) -> Vec<String> {
                 return seen;
             }
             Err(e) => {
-                seen.push(format!("{:?} at {}: {}", e.code, e.at, e.message));
+                seen.push(format!("{:?} at {:?}: {}", e.code, e.at, e.message));
                 return seen;
             }
         }

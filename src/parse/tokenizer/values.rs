@@ -11,7 +11,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{first_non_char, is_plain, is_plain_name_byte, space_len, trimmed_span};
+use crate::bytes::{first_non_char, is_plain_name_byte, plain_trimmed, space_len};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -70,8 +70,8 @@ impl<'a> Tokenizer<'a> {
             return Ok(false);
         }
         self.skip_space()?;
-        if let Some(tag) = self.short_tag(self.pos) {
-            self.begin_node(tag.at);
+        if let Some(tag) = self.short_tag(self.lex.pos) {
+            self.lex.begin_node(tag.at);
             self.opened(&tag)?;
             *child = tag;
             return Ok(true);
@@ -210,18 +210,18 @@ impl<'a> Tokenizer<'a> {
         if tag.empty || self.kept.pinned() {
             return None;
         }
-        let at = self.pos;
-        let mark = self.index.next(self.window.text(), self.window.base())?;
+        let at = self.lex.pos;
+        let mark = self.lex.index.next(self.window.text(), self.window.base())?;
         let len = mark.at - at;
         let rest = self.rest(at);
-        if len as u64 > self.options.max_text_bytes || !is_plain(&rest[..len]) {
+        if len as u64 > self.options.max_text_bytes {
             return None;
         }
+        let (start, end) = plain_trimmed(rest, len)?;
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        let (start, end) = trimmed_span(&rest[..len]);
-        self.index.take();
-        self.pos = at + len + end_tag;
-        self.open.pop();
+        self.lex.index.take();
+        self.lex.pos = at + len + end_tag;
+        self.lex.open.pop();
         // `<X></X>` has its value at its tag.
         Some(if len == 0 { (tag.at, tag.at) } else { (at + start, at + end) })
     }
@@ -256,8 +256,8 @@ impl<'a> Tokenizer<'a> {
     /// The error for the value of `tag`, which `convert` refused with `e`.
     #[cold]
     fn bad_value(&self, tag: &Tag, value: &Value, e: Finding) -> Problem {
-        let at = value.text.written_at(e.at);
-        problem(e.code, at, format!("<{}>: {}", tag.name(), e.message))
+        let at = e.at.map_offset(|at| value.text.written_at(at));
+        Box::new(Finding::at(e.code, at, format!("<{}>: {}", tag.name(), e.message)))
     }
 
     /// Converts an attribute's value with `convert`; errors point into the value.
@@ -270,11 +270,11 @@ impl<'a> Tokenizer<'a> {
         let (lead, value) = trim_xml_at(&attr.value);
         match convert(value) {
             Ok(v) => Ok((v, written_at(tag, attr, lead))),
-            Err(e) => Err(problem(
+            Err(e) => Err(Box::new(Finding::at(
                 e.code,
-                written_at(tag, attr, lead + e.at),
+                e.at.map_offset(|at| written_at(tag, attr, lead + at)),
                 format!("<{} {}>: {}", tag.name(), attr.key, e.message),
-            )),
+            ))),
         }
     }
 

@@ -1,9 +1,9 @@
 //! The window: the text at hand, which refills as the reading needs more and keeps what the
 //! reading may still look at, and the lines and columns counted over the text it lets go.
 
-use crate::error::{Finding, Parsed, Position};
+use crate::error::{Finding, Parsed, Spot};
 use crate::input::{Encoding, Source};
-use crate::place::{Cursor, Lines, Spot};
+use crate::place::{Cursor, Lines};
 
 /// The text at hand of a source, and where its offsets are.
 pub(super) struct Window<'a> {
@@ -81,29 +81,23 @@ impl<'a> Window<'a> {
         self.source.ends_early()
     }
 
-    /// The line, column and byte offset of offset `at`, which is at hand: after the text
-    /// last let go of.
-    pub fn locate(&mut self, at: usize) -> Position {
-        self.lines.locate(self.source.text(), self.source.base(), at)
-    }
-
-    /// `finding` placed at its line and column, when its text will not stay at hand; a
-    /// text that stays in memory places its findings once it is read (see
-    /// [`crate::place::Placer`]), and only if there are any.
-    pub fn place(&mut self, mut finding: Finding) -> Finding {
-        if finding.position.is_none() && !self.is_whole() {
-            finding.position = Some(self.locate(finding.at));
-        }
-        finding
-    }
-
-    /// Where offset `at` is, for what is checked once the whole file is read (see
-    /// [`Window::place`]).
+    /// Where offset `at` is, which is at hand (after the text last let go of): the one route
+    /// from an offset of the text read to a line and column. Placed now, when its text will
+    /// not stay at hand; a text that stays in memory places what it found once it is read
+    /// (see [`crate::place::Placer`]), and only if a finding needs it.
     pub fn spot(&mut self, at: usize) -> Spot {
         match self.is_whole() {
             true => Spot::offset(at),
-            false => Spot::placed(self.locate(at)),
+            false => Spot::placed(self.lines.locate(self.source.text(), self.source.base(), at)),
         }
+    }
+
+    /// `finding` where [`Window::spot`] puts it.
+    pub fn place(&mut self, mut finding: Finding) -> Finding {
+        if let Spot::Offset(at) = finding.at {
+            finding.at = self.spot(at);
+        }
+        finding
     }
 
     /// The source it holds.
