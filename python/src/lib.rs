@@ -14,6 +14,7 @@ use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
+mod capture;
 mod plan;
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
@@ -1073,6 +1074,27 @@ fn make_plan(
     plan::make(py, &scene.scene, &options)
 }
 
+/// The scene the library makes of what a builder read from its `engine` world (the held
+/// records as dicts, `box2scene.pyb2d3` and `box2scene.pybox2d`), labelled from `level`, the
+/// scene it was built from, where given; and the reports as (code, object, index, name,
+/// message) tuples.
+#[pyfunction]
+#[pyo3(signature = (engine, gravity, bodies, joints, skipped_joints, level=None))]
+fn capture(
+    py: Python<'_>,
+    engine: &str,
+    gravity: (f32, f32),
+    bodies: &Bound<'_, PyList>,
+    joints: &Bound<'_, PyList>,
+    skipped_joints: Vec<u32>,
+    level: Option<&NativeScene>,
+) -> PyResult<(NativeScene, Vec<capture::ReportTuple>)> {
+    let level = level.map(|l| &l.scene);
+    let (scene, reports) =
+        capture::capture(py, engine_named(engine)?, gravity, bodies, joints, skipped_joints, level)?;
+    Ok((NativeScene { scene }, reports))
+}
+
 /// The scene's gravity where `engine` holds it (within its working range), else None.
 #[pyfunction]
 fn world_gravity(scene: &NativeScene, engine: &str) -> PyResult<Option<(f32, f32)>> {
@@ -1095,6 +1117,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
     m.add_function(wrap_pyfunction!(make_plan, m)?)?;
     m.add_function(wrap_pyfunction!(world_gravity, m)?)?;
+    m.add_function(wrap_pyfunction!(capture, m)?)?;
     m.add_class::<plan::NativePlan>()?;
     m.add_class::<plan::NativePlanBody>()?;
     m.add_class::<plan::NativePlanShape>()?;
