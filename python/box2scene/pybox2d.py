@@ -244,7 +244,7 @@ def _vec(v) -> Tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-def _shape(s) -> dict:
+def _held_shape(s) -> dict:
     """A shape as Box2D 2.3 holds it: an edge's and a chain's ghost vertices each NaN where
     it has none."""
     t = s.type
@@ -267,7 +267,7 @@ def _body(body: B.b2Body, record: int, name: Optional[str], slots: Dict[int, int
     shapes = []
     for f in body.fixtures:  # pybox2d lists them in the order they were created
         data = f.filterData
-        held = _shape(f.shape)
+        held = _held_shape(f.shape)
         held.update(
             slot=slots.get(int(f.this), _NONE) if f.userData is mark else _NONE,
             density=float(f.density),

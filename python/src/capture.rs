@@ -4,21 +4,29 @@
 //! library's, as it is for the C and C++ adapters.
 
 use box2scene::capture::{self, Held, HeldBody, HeldJoint, HeldLabel, HeldShape, Label};
-use box2scene::plan::{PlanBody, PlanJoint, PlanJointKind, PlanMass, PlanShape, PlanShapeKind, Rot, Transform};
+use box2scene::plan::{
+    PlanBody, PlanJoint, PlanJointKind, PlanMass, PlanShape, PlanShapeKind, Rot, Transform,
+};
 use box2scene::{Filter, NONE, Range, Scene, Str, UserData, Vec2};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+
+use crate::plan::ReportTuple;
 
 type Pair = (f32, f32);
 
 /// One record's dict: each field by its name, its default where the builder gives none.
 struct Fields<'a, 'py>(&'a Bound<'py, PyDict>);
 
-impl Fields<'_, '_> {
-    fn get<T: for<'b> FromPyObject<'b>>(&self, name: &str, default: T) -> PyResult<T> {
+impl<'py> Fields<'_, 'py> {
+    fn get<T: pyo3::conversion::FromPyObjectOwned<'py>>(
+        &self,
+        name: &str,
+        default: T,
+    ) -> PyResult<T> {
         match self.0.get_item(name)? {
-            Some(v) if !v.is_none() => v.extract(),
+            Some(v) if !v.is_none() => v.extract::<T>().map_err(Into::into),
             _ => Ok(default),
         }
     }
@@ -185,7 +193,11 @@ impl Read {
             gravity_scale: f.f32("gravity_scale")?,
             name: Str::NULL,
             shapes: Range { first, count: shapes.len() as u32 },
-            mass: PlanMass { mass: f.f32("mass")?, center: f.vec("center")?, inertia: f.f32("inertia")? },
+            mass: PlanMass {
+                mass: f.f32("mass")?,
+                center: f.vec("center")?,
+                inertia: f.f32("inertia")?,
+            },
             velocity_after_mass: Vec2::default(),
             allow_sleep: f.flag("allow_sleep")?,
             awake: f.flag("awake")?,
@@ -264,7 +276,13 @@ impl Read {
     }
 }
 
-pub type ReportTuple = (&'static str, &'static str, u32, Option<String>, String);
+fn labels(texts: &[Texts]) -> Vec<Label<'_>> {
+    texts.iter().map(Texts::label).collect()
+}
+
+fn texts(texts: &[Option<String>]) -> Vec<Option<&str>> {
+    texts.iter().map(Option::as_deref).collect()
+}
 
 /// The scene the library makes of what a builder read from its world, and the reports.
 pub fn capture(
@@ -278,15 +296,13 @@ pub fn capture(
 ) -> PyResult<(Scene, Vec<ReportTuple>)> {
     let mut read = Read::default();
     for body in bodies.iter() {
-        read.body(body.downcast()?)?;
+        read.body(body.cast()?)?;
     }
     for joint in joints.iter() {
-        read.joint(joint.downcast()?)?;
+        read.joint(joint.cast()?)?;
     }
-    let labels = |texts: &[Texts]| texts.iter().map(Texts::label).collect::<Vec<_>>();
     let (body_labels, fixture_labels, joint_labels) =
         (labels(&read.body_texts), labels(&read.fixture_texts), labels(&read.joint_texts));
-    let texts = |t: &[Option<String>]| t.iter().map(Option::as_deref).collect::<Vec<_>>();
     let (shape_names, shape_others, joint_others) =
         (texts(&read.shape_names), texts(&read.shape_others), texts(&read.joint_others));
     let held = Held {
@@ -305,10 +321,6 @@ pub fn capture(
         joint_others: &joint_others,
     };
     let captured = capture::capture(&held, level).map_err(|e| crate::error(py, e))?;
-    let reports = captured
-        .reports
-        .iter()
-        .map(|r| (r.code.name(), r.object, r.index, r.name.clone(), r.message.clone()))
-        .collect();
+    let reports = crate::plan::reports(&captured.reports);
     Ok((captured.scene, reports))
 }

@@ -1079,8 +1079,8 @@ fn make_plan(
 /// scene it was built from, where given; and the reports as (code, object, index, name,
 /// message) tuples.
 #[pyfunction]
-#[pyo3(signature = (engine, gravity, bodies, joints, skipped_joints, level=None))]
-fn capture(
+#[pyo3(name = "capture", signature = (engine, gravity, bodies, joints, skipped_joints, level=None))]
+fn capture_held(
     py: Python<'_>,
     engine: &str,
     gravity: (f32, f32),
@@ -1088,10 +1088,17 @@ fn capture(
     joints: &Bound<'_, PyList>,
     skipped_joints: Vec<u32>,
     level: Option<&NativeScene>,
-) -> PyResult<(NativeScene, Vec<capture::ReportTuple>)> {
+) -> PyResult<(NativeScene, Vec<plan::ReportTuple>)> {
     let level = level.map(|l| &l.scene);
-    let (scene, reports) =
-        capture::capture(py, engine_named(engine)?, gravity, bodies, joints, skipped_joints, level)?;
+    let (scene, reports) = capture::capture(
+        py,
+        engine_named(engine)?,
+        gravity,
+        bodies,
+        joints,
+        skipped_joints,
+        level,
+    )?;
     Ok((NativeScene { scene }, reports))
 }
 
@@ -1117,7 +1124,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
     m.add_function(wrap_pyfunction!(make_plan, m)?)?;
     m.add_function(wrap_pyfunction!(world_gravity, m)?)?;
-    m.add_function(wrap_pyfunction!(capture, m)?)?;
+    m.add_function(wrap_pyfunction!(capture_held, m)?)?;
     m.add_class::<plan::NativePlan>()?;
     m.add_class::<plan::NativePlanBody>()?;
     m.add_class::<plan::NativePlanShape>()?;

@@ -276,9 +276,9 @@ fn object_name(plan_object: box2scene::Str) -> &'static str {
         .unwrap_or("world")
 }
 
-type ReportTuple = (&'static str, &'static str, u32, Option<String>, String);
+pub type ReportTuple = (&'static str, &'static str, u32, Option<String>, String);
 
-fn reports(plan: &Plan) -> Vec<ReportTuple> {
+pub fn reports(plan: &Plan) -> Vec<ReportTuple> {
     plan.reports()
         .iter()
         .map(|r| {

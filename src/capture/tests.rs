@@ -64,12 +64,17 @@ fn joint_as_held(joint: PlanJoint) -> PlanJoint {
 fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
     let plan = crate::plan::make(scene, &options(engine)).unwrap();
     assert_eq!(plan.reports(), [], "the level is planned whole");
+    held_of_plan(&plan, engine)
+}
+
+/// What an engine holds once `plan` is built.
+fn held_of_plan(plan: &crate::plan::Plan, engine: Engine) -> Engine2 {
     let bodies = plan.bodies().iter().map(|&body| HeldBody { body, label: unlabelled() }).collect();
     let shapes = plan
         .shapes()
         .iter()
         .map(|&shape| HeldShape {
-            shape: as_held(shape, &plan),
+            shape: as_held(shape, plan),
             category_bits: u64::from(shape.filter.category_bits),
             mask_bits: u64::from(shape.filter.mask_bits),
             group_index: i32::from(shape.filter.group_index),
@@ -290,4 +295,27 @@ fn a_capture_of_engine_v3_is_the_v3_adapter_s() {
     };
     let error = capture(&held, None).unwrap_err();
     assert_eq!(error.code, Code::InvalidArgument);
+}
+
+/// Box2D 2.3 holds a line joint, and a wheel without a spring, only as a wheel with the
+/// build's stand-in spring: a capture of the built world gives the level's joint back.
+#[test]
+fn a_box2d_23_stand_in_wheel_is_captured_as_the_level_s_springless_joint() {
+    let xml = br#"<World Version="2"><Shapes><Shape Type="Circle"><Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes>
+        <Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>
+        <Bodies><Body Type="Static"/><Body Type="Dynamic"><Fixtures><ID>0</ID></Fixtures></Body>
+        <Body Type="Dynamic"><Fixtures><ID>0</ID></Fixtures></Body></Bodies>
+        <Joints><Joint Type="Line"><BodyA>0</BodyA><BodyB>1</BodyB><EnableLimit>true</EnableLimit>
+        <LowerLimit>-1</LowerLimit><UpperLimit>2</UpperLimit></Joint>
+        <Joint Type="Wheel"><BodyA>0</BodyA><BodyB>2</BodyB><FrequencyHz>0</FrequencyHz><DampingRatio>0.3</DampingRatio></Joint>
+        </Joints></World>"#;
+    let level = crate::load(xml, &Default::default()).unwrap();
+    let plan = crate::plan::make(&level, &options(Engine::Box2d23)).unwrap();
+    let stand_in = crate::plan::box2d2::version::BOX2D_23.springless_wheel_hertz;
+    assert!(plan.joints().iter().all(|j| j.hertz == stand_in), "the plan stands a spring in");
+    let e = held_of_plan(&plan, Engine::Box2d23);
+    let c = capture_of(&e, Engine::Box2d23, Some(&level), &[]);
+    let unnamed = |s: &Scene, j: usize| Joint { name: Str::NULL, ..s.joints()[j] };
+    assert_eq!(unnamed(&c.scene, 0), unnamed(&level, 0));
+    assert_eq!(unnamed(&c.scene, 1), unnamed(&level, 1));
 }

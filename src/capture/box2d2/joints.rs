@@ -228,6 +228,20 @@ fn distance(
     joint
 }
 
+/// The level's springless wheel or line joint that the held wheel stands in for: 2.3 holds
+/// a wheel without a spring only with the build's stand-in spring (what a capture gives back
+/// as the level has it, its limit and linear motor, which 2.3 has not, too).
+fn stand_in_for<'a>(j: &PlanJoint, springs: &Springs<'a>) -> Option<&'a Joint> {
+    let stand_in = springs.version.springless_wheel_hertz;
+    let level = springs.level?;
+    let springless = match level.kind() {
+        Some(JointKind::Line) => true,
+        Some(JointKind::Wheel) => !(level.frequency_hz > 0.0),
+        _ => false,
+    };
+    (stand_in > 0.0 && j.hertz == stand_in && springless).then_some(level)
+}
+
 /// A wheel with a limit is the format's Line only without spring and motor, which Line
 /// lacks; with either, it stays a Wheel and loses the limit (reported).
 fn wheel(
@@ -236,6 +250,16 @@ fn wheel(
     anchored: impl Fn(JointKind) -> Joint,
     say: &mut Say,
 ) -> Joint {
+    if let Some(level) = stand_in_for(j, springs) {
+        let axis = axis_giving(j.axis, say);
+        return Joint {
+            local_anchor_a: j.anchor_a,
+            local_anchor_b: j.anchor_b,
+            local_axis_a: axis,
+            collide_connected: j.collide_connected,
+            ..*level
+        };
+    }
     let sprung = if springs.version.springs_in_hertz { j.hertz > 0.0 } else { j.stiffness > 0.0 };
     let line = j.enable_limit && !(sprung || j.enable_motor);
     let kind = if line { JointKind::Line } else { JointKind::Wheel };
