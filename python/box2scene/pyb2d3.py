@@ -35,6 +35,7 @@ import pyb2d3 as b2
 
 from . import _native
 from ._error import Error
+from ._lookup import Lookups
 from ._report import Report
 from ._scene import Scene
 
@@ -47,7 +48,7 @@ WORLD_MAX_LINEAR_SPEED = _native.working_range(ENGINE)["world_max_linear_speed"]
 
 
 @dataclass
-class Built:
+class Built(Lookups):
     """What :func:`build_world` created, index for index with the scene: ``bodies[i]`` for
     body ``i``; ``shapes[k]`` and ``chains[k]`` for the fixture at slot ``k`` of the
     scene's ``fixture_ids`` (a chain fixture in ``chains``, any other in ``shapes``);
@@ -66,6 +67,11 @@ class Built:
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _joints: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
     _chains: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
+
+    @staticmethod
+    def _same(made, wanted) -> bool:
+        """A v3 id names one object, never a later one."""
+        return int(made.id) == int(wanted.id)
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:

@@ -33,6 +33,7 @@ import Box2D as B
 
 from . import _native
 from ._error import Error
+from ._lookup import Lookups
 from ._report import Report
 from ._scene import Scene
 
@@ -42,7 +43,7 @@ ENGINE = "box2d-2.3"
 
 
 @dataclass
-class Built:
+class Built(Lookups):
     """What :func:`build_world` created, index for index with the scene: ``bodies[i]`` for
     body ``i``, ``fixtures[k]`` for the fixture at slot ``k`` of the scene's
     ``fixture_ids``, ``joints[j]`` for joint ``j``; None where nothing was created
@@ -53,8 +54,8 @@ class Built:
     joints: List[Optional[B.b2Joint]]
     reports: List[Report] = field(default_factory=list)
     # What capture needs: the scene (what 2.3's bindings cannot read back, and the names),
-    # and the userData the build gives its fixtures and joints, which tells them from ones
-    # the host makes later at their freed addresses (Box2D reuses them). One object a build, since
+    # and the userData the build gives its bodies, fixtures and joints, which tells them from
+    # ones the host makes later at their freed addresses (Box2D reuses them). One object a build, since
     # pybox2d never releases a joint's userData when its world goes.
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _mark: object = field(default_factory=object, repr=False, compare=False)
@@ -62,6 +63,11 @@ class Built:
     # has no getter for), and the scene joints each built gear couples.
     _plans: List[object] = field(default_factory=list, repr=False, compare=False)
     _coupled: Dict[int, Tuple[int, int]] = field(default_factory=dict, repr=False, compare=False)
+
+    def _same(self, made, wanted) -> bool:
+        """pybox2d wraps one Box2D object in many Python objects: its address and the
+        build's mark tell them apart (Box2D gives a freed address to a later object)."""
+        return int(made.this) == int(wanted.this) and wanted.userData is self._mark
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
@@ -191,6 +197,7 @@ class _Build:
                 bullet=body.bullet,
                 fixedRotation=body.fixed_rotation,
                 active=body.enabled,
+                userData=self.built._mark,
             )
         )
         for shape in body.shapes:
@@ -433,7 +440,8 @@ def capture_world(
     if names is not None and len(names) != len(bodies):
         raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
     read = _Read(world, built)
-    live = {int(b.this) for b in world.bodies}
+    mark = built._mark if built is not None else None
+    live = {int(b.this) for b in world.bodies if b.userData is mark}
     made = [(b, i) for i, b in enumerate(built.bodies) if b is not None and int(b.this) in live] if built is not None else []
     given = [(b, _NONE) for b in bodies]
     labels = [None] * len(made) + (list(names) if names is not None else [None] * len(bodies))
