@@ -68,6 +68,12 @@ fn joint_as_held(joint: PlanJoint) -> PlanJoint {
 pub(super) fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
     let plan = crate::plan::make(scene, &options(engine)).unwrap();
     assert_eq!(plan.reports(), [], "the level is planned whole");
+    read_back(scene, engine)
+}
+
+/// What the engine holds once it has made the plan of `scene`, whatever the plan reports.
+pub(super) fn read_back(scene: &Scene, engine: Engine) -> Engine2 {
+    let plan = crate::plan::make(scene, &options(engine)).unwrap();
     let bodies = plan.bodies().iter().map(|&body| HeldBody { body, label: unlabelled() }).collect();
     let shapes = plan
         .shapes()

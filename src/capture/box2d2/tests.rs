@@ -2,7 +2,9 @@
 //! the plan, captured; the capture planned again gives the engine the same bits.
 
 use crate::Builder;
-use crate::capture::tests::{Engine2, capture_of, held_of, messages, square, square_vertices};
+use crate::capture::tests::{
+    Engine2, capture_of, held_of, messages, read_back, square, square_vertices,
+};
 use crate::capture::{Captured, HeldShape};
 use crate::plan::{Engine, PlanJoint, PlanMass, PlanShapeKind};
 use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, Scene, Shape, ShapeKind, Vec2};
@@ -363,4 +365,42 @@ fn edges_and_chains_come_back_in_their_forms() {
             assert_eq!(captured.scene.vertices(got), scene.vertices(want), "{engine:?}");
         }
     }
+}
+
+/// Box2D 2.3's wheel joint without a spring gets a stand-in spring, which is none; a line
+/// joint comes back a Line where the level has one.
+#[test]
+fn box2d_2_3_s_stand_in_spring_is_no_spring_and_the_level_s_line_stays_a_line() {
+    let line = Joint { local_axis_a: v(0.0, 1.0), ..between_boxes(JointKind::Line) };
+    let scene = scene_with(&[line]);
+    let held = read_back(&scene, Engine::Box2d23);
+    assert_eq!(held.joints[0].joint.hertz, 1e-3, "the plan's stand-in");
+    let alone = capture_of(&held, Engine::Box2d23, None, &[]);
+    let wheel = alone.scene.joints()[0];
+    assert_eq!((wheel.kind, wheel.frequency_hz), (JointKind::Wheel as u32, 0.0));
+    let labelled = capture_of(&held, Engine::Box2d23, Some(&scene), &[]);
+    let line = labelled.scene.joints()[0];
+    assert_eq!((line.kind, line.enable_limit), (JointKind::Line as u32, false));
+    assert_eq!(messages(&labelled), Vec::<String>::new());
+}
+
+/// pybox2d's Box2D 2.3 makes a loop without ghost vertices: its first vertex repeated at
+/// the end is what tells it.
+#[test]
+fn a_loop_without_ghosts_is_a_loop() {
+    let mut held = held_of(&scene_with(&[]), Engine::Box2d23);
+    let first = held.points.len() as u32;
+    let nan = v(f32::NAN, f32::NAN);
+    held.points.extend([nan, v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0), v(0.0, 0.0), nan]);
+    let loop_shape = crate::plan::PlanShape {
+        kind: PlanShapeKind::Chain as u32,
+        points: crate::scene::Range { first, count: 6 },
+        density: 0.0,
+        ..held.shapes[0].shape
+    };
+    held.shapes[0] = HeldShape { shape: loop_shape, ..held.shapes[0] };
+    let captured = capture_of(&held, Engine::Box2d23, None, &[]);
+    let shape = captured.scene.shapes()[0];
+    assert!(shape.is_loop);
+    assert_eq!(captured.scene.vertices(&shape), [v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0)]);
 }
