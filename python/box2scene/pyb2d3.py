@@ -62,11 +62,10 @@ class Built(Lookups):
     reports: List[Report] = field(default_factory=list)
     fixtures: List[Optional[object]] = field(default_factory=list)
     # What capture needs that pyb2d3 cannot read back: the scene (the level a capture keeps),
-    # and the plan's record of each joint and chain the build made, by id (a v3 id names one
-    # object, never a later one).
+    # and the plan's record of each joint the build made, by id (a v3 id names one object,
+    # never a later one).
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _joints: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
-    _chains: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
 
     @staticmethod
     def _same(made, wanted) -> bool:
@@ -157,7 +156,6 @@ class _Build:
             chain_def.filter = _filter(shape)
             self.report_chain_sensor(shape, body_index)
             chain = body.create_chain(chain_def)
-            self.built._chains[int(chain.id)] = shape
             self.built.chains[shape.slot] = chain
             return
         d.material = material
@@ -283,7 +281,6 @@ class _Read:
 
     def __init__(self, built: Optional[Built]):
         self.joints = built._joints if built is not None else {}
-        self.chains = built._chains if built is not None else {}
         self.slots: Dict[Tuple[bool, int], int] = {}
         if built is not None:
             for slot, made in enumerate(built.fixtures):
@@ -302,17 +299,14 @@ class _Read:
         )
         return held
 
-    def chain(self, chain: b2.Chain, first) -> dict:
-        plan = self.chains.get(int(chain.id))
-        if plan is not None:
-            held = dict(kind=plan.kind, points=list(plan.points))
-        else:
-            # pyb2d3 gives a chain's segments without their ghosts: NaN says so
-            points = [_pair(s.segment.point1) for s in chain.get_segments()]
-            points.append(_pair(chain.get_segments()[-1].segment.point2))
-            held = dict(kind="chain", points=[(math.nan, math.nan)] + points + [(math.nan, math.nan)])
-        held["slot"] = self.slots.get((True, int(chain.id)), _NONE)
-        return self.material(first, held)
+    def chain(self, chain: b2.Chain, first) -> List[dict]:
+        """A chain as v3 holds it: its segments, each with its ghosts, marked as one chain."""
+        slot = self.slots.get((True, int(chain.id)), _NONE)
+        held = []
+        for s in chain.get_segments():
+            points = [_pair(s.ghost1), _pair(s.segment.point1), _pair(s.segment.point2), _pair(s.ghost2)]
+            held.append(self.material(first, dict(kind="segment", points=points, chain=int(chain.id) & 0xFFFFFFFF, slot=slot)))
+        return held
 
     def shape(self, s) -> dict:
         kind = _KINDS.get(s.type)
@@ -337,7 +331,7 @@ class _Read:
                 out.append(self.shape(s))
             elif int(s.parent_chain.id) not in seen:
                 seen.add(int(s.parent_chain.id))
-                out.append(self.chain(s.parent_chain, s))
+                out += self.chain(s.parent_chain, s)
         return out
 
     def body(self, body: b2.Body, record: int, name: Optional[str]) -> dict:
