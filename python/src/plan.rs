@@ -1,5 +1,6 @@
 //! The library's plan of a scene for one engine version, as Python objects: every body (with
-//! its shapes), joint and report in the order the builders create them. The Python builders
+//! its shapes), joint and report in the order the builders create them (a report also as a
+//! capture gives it). The Python builders
 //! carry it out through their engine's own calls; every conversion, check and predicted
 //! mass stays the library's.
 
