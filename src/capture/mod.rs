@@ -18,7 +18,9 @@
 
 #![forbid(unsafe_code)]
 
+mod box2d3;
 mod records;
+mod search;
 
 pub use records::*;
 
