@@ -3,7 +3,7 @@
 //! the same bits back, and the reports of what the format cannot hold. Every conversion of
 //! the way back lives here, once per engine family, beside the plan it inverts:
 //!
-//! - `mod.rs` (this file): the input and the result;
+//! - `mod.rs` (this file): the input, the result, and the family a capture is made by;
 //! - `level.rs`: a capture of a built world labelled from the level it was built from (its
 //!   Names and UserData where the host gives none, the joints the build skipped written
 //!   back where the file had them, gears that name them);
@@ -13,19 +13,31 @@
 //!   inverses, each computing forward with the plan's own arithmetic and searching the
 //!   floats that give back what the engine holds.
 //!
+//! - `search.rs`: the floats near a guess for which a forward computation gives the wanted
+//!   bits, which every family's inverses search.
+//!
 //! A family turns one held record into the scene's record and says what it loses; the
 //! labels, indices, order and de-duplication are `world.rs`'s, the same for every engine.
 
 #![forbid(unsafe_code)]
+// The checks are negated comparisons, `!(value > 0)`, so that a NaN fails them as it fails
+// the engine's.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+mod box2d2;
 mod box2d3;
+mod level;
 mod records;
 mod search;
+mod world;
 
 pub use records::*;
 
-use crate::plan::{Engine, PlanReport};
-use crate::scene::{Scene, Vec2};
+use crate::error::{Code, Error, Position};
+use crate::plan::box2d2::Version;
+use crate::plan::{Engine, Plan, PlanReport};
+use crate::scene::{Scene, Str, Vec2};
+use world::Family;
 
 /// A Name and UserData as text (what a [`HeldLabel`] points at, read).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -74,11 +86,43 @@ pub struct Held<'a> {
 }
 
 /// A capture's result: the scene, and the reports of what it could not hold exactly (the
-/// plan's report records, their index counting the held objects of their kind).
+/// plan's report records, their index counting the held objects of their kind, a joint
+/// the build skipped counted in the level's joints).
 #[derive(Debug)]
 pub struct Captured {
     /// The scene.
     pub scene: Scene,
-    /// What was lost or not written, in the order met.
-    pub reports: Vec<PlanReport>,
+    /// What was lost or not written, in the order met: a plan that holds only reports,
+    /// which owns their texts.
+    pub reports: Plan,
 }
+
+impl Captured {
+    /// The reports, in the order met.
+    pub fn reports(&self) -> &[PlanReport] {
+        self.reports.reports()
+    }
+
+    /// The text of a report's name or message.
+    pub fn text(&self, s: Str) -> Option<&str> {
+        self.reports.text(s)
+    }
+}
+
+/// The scene holding what `held` says an engine holds, and the reports of what it cannot
+/// hold exactly; `level`, the scene the world was built from, labels what the host does
+/// not and gives the joints the build skipped back. An engine number whose capture the
+/// library does not make is an error.
+pub fn capture(held: &Held<'_>, level: Option<&Scene>) -> Result<Captured, Error> {
+    if let Some(version) = Version::of(held.engine) {
+        return Ok(world::capture(held, level, Family::Box2d2(version)));
+    }
+    Err(Error {
+        code: Code::InvalidArgument,
+        position: Position::default(),
+        message: "capture of engine v3 is made by the v3 adapter".to_owned(),
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -29,6 +29,12 @@ pub(crate) fn cross(a: Vec2, b: Vec2) -> f32 {
     a.x * b.y - a.y * b.x
 }
 
+/// A scalar crossed with a vector, `s x v` (2.x `b2Cross(s, v)`, v3 `b2CrossSV`): what a
+/// turning at `s` gives a point at `v` from the axis.
+pub(crate) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
+    Vec2::new(-s * v.y, s * v.x)
+}
+
 pub(crate) fn length(v: Vec2) -> f32 {
     (v.x * v.x + v.y * v.y).sqrt()
 }

@@ -1,7 +1,7 @@
 //! Box2D v3's vector arithmetic (`math_functions.h`) where it is its own: the rest is the
 //! plan's shared `math.rs`, which this module hands on.
 
-pub(super) use crate::plan::math::{add, cross, length, mul_sv, rotate, sub};
+pub(super) use crate::plan::math::{add, cross, cross_sv, length, mul_sv, rotate, sub};
 pub(crate) use crate::plan::math::{dot, rotation};
 use crate::plan::{Rot, Transform};
 use crate::scene::Vec2;
@@ -11,11 +11,6 @@ pub(super) const IDENTITY: Rot = Rot { c: 1.0, s: 0.0 };
 
 pub(super) fn vec2(x: f32, y: f32) -> Vec2 {
     Vec2 { x, y }
-}
-
-/// `b2CrossSV`: the scalar `s` (an angular velocity) crossed with `v`.
-pub(super) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
-    vec2(-s * v.y, s * v.x)
 }
 
 /// `b2MulAdd`: `a + s * b`.
