@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::Builder;
+use crate::error::Code;
 use crate::plan::{
     PlanJoint, PlanJointKind, PlanOptions, PlanShape, PlanShapeKind, Rot, Transform,
 };
@@ -10,12 +11,12 @@ use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, NONE, Shape, Shape
 
 /// The records an engine holds once it has made `plan` (nothing stepped): the plan's own,
 /// labelled by nothing.
-pub(super) struct Engine2 {
-    pub(super) bodies: Vec<HeldBody>,
-    pub(super) shapes: Vec<HeldShape>,
-    pub(super) points: Vec<Vec2>,
-    pub(super) joints: Vec<HeldJoint>,
-    pub(super) skipped: Vec<u32>,
+struct Engine2 {
+    bodies: Vec<HeldBody>,
+    shapes: Vec<HeldShape>,
+    points: Vec<Vec2>,
+    joints: Vec<HeldJoint>,
+    skipped: Vec<u32>,
 }
 
 fn unlabelled() -> HeldLabel {
@@ -51,13 +52,9 @@ fn as_held(shape: PlanShape, plan: &crate::plan::Plan) -> PlanShape {
     PlanShape { center: mass.center, ..shape }
 }
 
-/// A joint as the engine holds it: a prismatic joint's axis normalised, 2.4's distance
-/// joint's lengths raised to the linear slop.
+/// A joint as the engine holds it: 2.4's distance joint raises its lengths to the linear
+/// slop.
 fn joint_as_held(joint: PlanJoint) -> PlanJoint {
-    if joint.kind == PlanJointKind::Prismatic as u32 {
-        // b2PrismaticJoint's constructor normalises its axis
-        return PlanJoint { axis: crate::plan::box2d2::math::normalized(joint.axis), ..joint };
-    }
     if joint.kind != PlanJointKind::Distance as u32 {
         return joint;
     }
@@ -65,7 +62,7 @@ fn joint_as_held(joint: PlanJoint) -> PlanJoint {
     PlanJoint { length: joint.length.max(slop), min_length: joint.min_length.max(slop), ..joint }
 }
 
-pub(super) fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
+fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
     let plan = crate::plan::make(scene, &options(engine)).unwrap();
     assert_eq!(plan.reports(), [], "the level is planned whole");
     let bodies = plan.bodies().iter().map(|&body| HeldBody { body, label: unlabelled() }).collect();
@@ -103,7 +100,7 @@ pub(super) fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
 }
 
 /// The captured scene of what `e` holds, with its labels empty but where `others` says.
-pub(super) fn capture_of(
+fn capture_of(
     e: &Engine2,
     engine: Engine,
     level: Option<&Scene>,
@@ -132,21 +129,21 @@ pub(super) fn capture_of(
     capture(&held, level).unwrap()
 }
 
-pub(super) fn messages(c: &Captured) -> Vec<String> {
+fn messages(c: &Captured) -> Vec<String> {
     c.reports().iter().map(|r| c.text(r.message).unwrap_or_default().to_owned()).collect()
 }
 
-pub(super) fn square() -> Shape {
+fn square() -> Shape {
     Shape { ..Shape::new(ShapeKind::Polygon) }
 }
 
-pub(super) fn square_vertices() -> [Vec2; 4] {
+fn square_vertices() -> [Vec2; 4] {
     [Vec2::new(1.0, -1.0), Vec2::new(1.0, 1.0), Vec2::new(-1.0, 1.0), Vec2::new(-1.0, -1.0)]
 }
 
 /// A ground and two boxes on one shared shape and fixture, named, with UserData; a wheel
 /// joint of FrequencyHz 4 and DampingRatio 0.7, a revolute joint, and a rope.
-pub(super) fn level() -> Scene {
+fn level() -> Scene {
     let mut b = Builder::new();
     let shape = b.add_shape(&square(), Some("crate"), &square_vertices()).unwrap();
     let data = b.add_user_data(None, Some("System.String"), Some("wood")).unwrap();
@@ -272,26 +269,4 @@ fn a_gear_whose_joint_was_not_written_is_not_written() {
     let c = capture_of(&e, Engine::Box2d24, Some(&level), &[None, Some("Box2D joint type 99")]);
     assert_eq!(messages(&c)[1], "a joint the gear couples was not written; not written");
     assert_eq!(c.text(c.reports()[1].name), Some("gear"));
-}
-
-#[test]
-fn a_capture_of_engine_v3_is_the_v3_adapter_s() {
-    let e = held_of(&level(), Engine::Box2d24);
-    let held = Held {
-        engine: Engine::Box2d31,
-        gravity: Vec2::ZERO,
-        bodies: &e.bodies,
-        shapes: &[],
-        points: &[],
-        joints: &[],
-        skipped_joints: &[],
-        body_labels: &[],
-        fixture_labels: &[],
-        shape_names: &[],
-        shape_others: &[],
-        joint_labels: &[],
-        joint_others: &[],
-    };
-    let error = capture(&held, None).unwrap_err();
-    assert_eq!(error.code, Code::InvalidArgument);
 }

@@ -3,54 +3,43 @@
 //! inverse searches the value whose forward computation, the plan's, gives the held bits.
 
 use super::shapes::in_chain;
-use super::{Family, Say};
 use crate::capture::search::nearest;
+use crate::capture::world::Say;
 use crate::capture::{HeldBody, HeldShape};
+use crate::plan::box2d3::V3;
 use crate::plan::box2d3::bodies::center_velocity;
 use crate::plan::box2d3::geometry::{Mass, circle_mass, polygon_mass};
 use crate::plan::box2d3::mass::{ShapeMass, final_mass, from_shapes};
 use crate::plan::box2d3::math::{dot, rotation};
 use crate::plan::printf::G3;
-use crate::plan::{Object, PlanMass, PlanShapeKind, Rot, Transform};
+use crate::plan::{PlanMass, PlanShapeKind, Rot, Transform};
 use crate::scene::{Body, BodyKind, MassData, Vec2};
 
-/// The bodies whose rotation no float angle gives exactly: the solver turns nearly every
-/// body it moves to such a rotation, so one report a capture says how many, the first and
-/// the largest turn between a rotation and the angle written.
-#[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Turned {
-    count: u32,
-    first: u32,
-    largest: f64,
-}
-
-impl Turned {
-    fn note(&mut self, index: u32, q: Rot, angle: f32) {
+/// Says once, of all the held bodies, those whose rotation no float angle gives exactly:
+/// the solver turns nearly every body it moves to such a rotation, so one report says how
+/// many, the first, and the largest turn between a rotation and the angle written.
+pub(crate) fn turned(bodies: &[HeldBody], say: &mut Say) {
+    let mut count = 0u32;
+    let (mut first, mut largest) = (0usize, 0.0f64);
+    for (index, held) in bodies.iter().enumerate() {
+        let q = held.body.rotation;
+        let Err(angle) = angle_of(q) else { continue };
         let (c, s) = (f64::from(q.c), f64::from(q.s));
         let (cos, sin) = (f64::from(angle).cos(), f64::from(angle).sin());
         let turn = (s * cos - c * sin).atan2(c * cos + s * sin).abs();
-        if self.count == 0 {
-            self.first = index;
+        if count == 0 {
+            first = index;
         }
-        self.count += 1;
-        self.largest = if turn > self.largest { turn } else { self.largest };
+        count += 1;
+        largest = if turn > largest { turn } else { largest };
     }
-
-    pub(super) fn report(&self, say: &mut Say<'_>) {
-        if self.count == 0 {
-            return;
-        }
-        say(
-            Object::World,
-            format_args!(
-                "rotations no angle gives exactly, as the solver turns bodies: {} of the bodies \
-                 (the first body {}) were written at the nearest angle, at most {} rad from \
-                 the rotation",
-                self.count,
-                self.first,
-                G3(self.largest)
-            ),
-        );
+    if count > 0 {
+        say.lossy(format_args!(
+            "rotations no angle gives exactly, as the solver turns bodies: {count} of the bodies \
+             (the first body {first}) were written at the nearest angle, at most {} rad from \
+             the rotation",
+            G3(largest)
+        ));
     }
 }
 
@@ -59,68 +48,55 @@ pub(super) fn angle_of(q: Rot) -> Result<f32, f32> {
     nearest(q.s.atan2(q.c), |angle| rotation(angle) == q)
 }
 
-impl Family {
-    /// The scene body (no name, fixtures or user data) for held body `index`, given its
-    /// held shapes in creation order.
-    pub(crate) fn body(
-        &mut self,
-        index: u32,
-        held: &HeldBody,
-        shapes: &[HeldShape],
-        points: &[Vec2],
-    ) -> Body {
-        let b = &held.body;
-        let mut body = Body::new(BodyKind::Static);
-        body.kind = b.kind;
-        body.position = b.position;
-        body.angle = angle_of(b.rotation).unwrap_or_else(|nearest| {
-            self.turned.note(index, b.rotation, nearest);
-            nearest
-        });
-        let dynamic = b.kind == BodyKind::Dynamic as u32;
-        body.linear_velocity = if dynamic { origin_velocity(b) } else { b.linear_velocity };
-        body.angular_velocity = b.angular_velocity;
-        body.linear_damping = b.linear_damping;
-        body.angular_damping = b.angular_damping;
-        body.gravity_scale = b.gravity_scale;
-        body.allow_sleep = b.allow_sleep;
-        body.awake = b.awake;
-        body.bullet = b.bullet;
-        body.fixed_rotation = b.fixed_rotation;
-        body.active = b.enabled;
-        if dynamic {
-            let computed = from_shapes(self.v3, &self.masses(shapes, points), b.fixed_rotation).0;
-            let built = final_mass(computed, &Body::new(BodyKind::Dynamic));
-            if !same_mass(built, b.mass) {
-                body.mass_data = mass_data(computed, b.mass);
-            }
+/// The scene body (no name, fixtures or user data) of a held body, given its held shapes
+/// that are written, in creation order.
+pub(crate) fn body(v3: V3, held: &HeldBody, shapes: &[HeldShape], points: &[Vec2]) -> Body {
+    let b = &held.body;
+    let mut body = Body::new(BodyKind::Static);
+    body.kind = b.kind;
+    body.position = b.position;
+    body.angle = angle_of(b.rotation).unwrap_or_else(|nearest| nearest);
+    let dynamic = b.kind == BodyKind::Dynamic as u32;
+    body.linear_velocity = if dynamic { origin_velocity(b) } else { b.linear_velocity };
+    body.angular_velocity = b.angular_velocity;
+    body.linear_damping = b.linear_damping;
+    body.angular_damping = b.angular_damping;
+    body.gravity_scale = b.gravity_scale;
+    body.allow_sleep = b.allow_sleep;
+    body.awake = b.awake;
+    body.bullet = b.bullet;
+    body.fixed_rotation = b.fixed_rotation;
+    body.active = b.enabled;
+    if dynamic {
+        let computed = from_shapes(v3, &masses(v3, shapes, points), b.fixed_rotation).0;
+        let built = final_mass(computed, &Body::new(BodyKind::Dynamic));
+        if !same_mass(built, b.mass) {
+            body.mass_data = mass_data(computed, b.mass);
         }
-        body
     }
+    body
+}
 
-    /// The masses of the shapes the capture writes with their density, in creation order.
-    fn masses(&self, shapes: &[HeldShape], points: &[Vec2]) -> Vec<ShapeMass> {
-        let massive = shapes.iter().filter(|s| s.other.is_null() && !in_chain(s));
-        massive
-            .filter_map(|s| {
-                let density = s.shape.density;
-                let mass = match PlanShapeKind::try_from(s.shape.kind).ok()? {
-                    PlanShapeKind::Circle => {
-                        circle_mass(self.v3, s.shape.center, s.shape.radius, density)
+/// The masses of the shapes the capture writes with their density, in creation order.
+fn masses(v3: V3, shapes: &[HeldShape], points: &[Vec2]) -> Vec<ShapeMass> {
+    let massive = shapes.iter().filter(|s| s.other.is_null() && !in_chain(s));
+    massive
+        .filter_map(|s| {
+            let density = s.shape.density;
+            let mass = match PlanShapeKind::try_from(s.shape.kind).ok()? {
+                PlanShapeKind::Circle => circle_mass(v3, s.shape.center, s.shape.radius, density),
+                PlanShapeKind::Polygon => {
+                    let vertices = points.get(s.shape.points.indices())?;
+                    if vertices.len() < 3 {
+                        return None;
                     }
-                    PlanShapeKind::Polygon => {
-                        let vertices = points.get(s.shape.points.indices())?;
-                        if vertices.len() < 3 {
-                            return None;
-                        }
-                        polygon_mass(self.v3, vertices, density)
-                    }
-                    _ => return None,
-                };
-                Some(ShapeMass { mass, density })
-            })
-            .collect()
-    }
+                    polygon_mass(v3, vertices, density)
+                }
+                _ => return None,
+            };
+            Some(ShapeMass { mass, density })
+        })
+        .collect()
 }
 
 fn same_mass(a: Mass, b: PlanMass) -> bool {

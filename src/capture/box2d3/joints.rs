@@ -3,67 +3,61 @@
 //! frames), the motor joint read back as Friction or Motor, and what has no form.
 
 use super::bodies::angle_of;
-use super::{Family, Say};
 use crate::capture::HeldJoint;
 use crate::capture::search::{nearest, nearest_pair};
+use crate::capture::world::Say;
 use crate::plan::box2d3::V3;
 use crate::plan::box2d3::joints::{MOTOR_STEP_RATE, TWO_PI, motor_hertz, planned_frames};
 use crate::plan::printf::G9;
-use crate::plan::{Object, PlanJointKind, Rot};
+use crate::plan::{PlanJointKind, Rot};
 use crate::scene::{Joint, JointKind, Vec2};
 
 const UNTURNED: Rot = Rot { c: 1.0, s: 0.0 };
 
 /// Says that `what` has no Box2Scene form and the joint was written without it.
-fn without(say: &mut Say<'_>, what: &str) {
-    say(Object::Joint, format_args!("{what} has no Box2Scene form; written without it"));
+fn without(say: &mut Say, what: &str) {
+    say.lossy(format_args!("{what} has no Box2Scene form; written without it"));
 }
 
-impl Family {
-    /// The scene joint (bodies, joints, name and user data left for the caller) for a held
-    /// joint, or `None` where it has no form (reported).
-    pub(crate) fn joint(&self, held: &HeldJoint, say: &mut Say<'_>) -> Option<Joint> {
-        let j = &held.joint;
-        let kind = match PlanJointKind::try_from(j.kind) {
-            Ok(PlanJointKind::Revolute) => JointKind::Revolute,
-            Ok(PlanJointKind::Prismatic) => JointKind::Prismatic,
-            Ok(PlanJointKind::Weld) => JointKind::Weld,
-            Ok(PlanJointKind::Distance) if j.enable_spring && j.hertz == 0.0 => JointKind::Rope,
-            Ok(PlanJointKind::Distance) => JointKind::Distance,
-            Ok(PlanJointKind::Wheel) if j.enable_spring => JointKind::Wheel,
-            Ok(PlanJointKind::Wheel) => JointKind::Line,
-            Ok(PlanJointKind::Motor | PlanJointKind::Friction) => {
-                let mut joint =
-                    if self.v3.frames() { motor_v32(held, say) } else { motor_v31(held) };
-                joint.collide_connected = j.collide_connected;
-                return Some(joint);
-            }
-            _ => {
-                say(
-                    Object::Joint,
-                    format_args!(
-                        "a joint of a kind this adapter does not know has no Box2Scene form; \
-                         not written"
-                    ),
-                );
-                return None;
-            }
-        };
-        let mut joint = Joint::new(kind);
-        joint.collide_connected = j.collide_connected;
-        if self.v3.frames() {
-            frames_v32(held, &mut joint, say);
-        } else {
-            frames_v31(held, &mut joint);
+/// The scene joint (bodies, joints, name and user data left for the caller) for a held
+/// joint, or `None` where it has no form (reported).
+pub(crate) fn joint(v3: V3, held: &HeldJoint, say: &mut Say) -> Option<Joint> {
+    let j = &held.joint;
+    let kind = match PlanJointKind::try_from(j.kind) {
+        Ok(PlanJointKind::Revolute) => JointKind::Revolute,
+        Ok(PlanJointKind::Prismatic) => JointKind::Prismatic,
+        Ok(PlanJointKind::Weld) => JointKind::Weld,
+        Ok(PlanJointKind::Distance) if j.enable_spring && j.hertz == 0.0 => JointKind::Rope,
+        Ok(PlanJointKind::Distance) => JointKind::Distance,
+        Ok(PlanJointKind::Wheel) if j.enable_spring => JointKind::Wheel,
+        Ok(PlanJointKind::Wheel) => JointKind::Line,
+        Ok(PlanJointKind::Motor | PlanJointKind::Friction) => {
+            let mut joint = if v3.frames() { motor_v32(held, say) } else { motor_v31(held) };
+            joint.collide_connected = j.collide_connected;
+            return Some(joint);
         }
-        fields(held, &mut joint, say);
-        Some(joint)
+        _ => {
+            say.lossy(format_args!(
+                "a joint of a kind this adapter does not know has no Box2Scene form; \
+                     not written"
+            ));
+            return None;
+        }
+    };
+    let mut joint = Joint::new(kind);
+    joint.collide_connected = j.collide_connected;
+    if v3.frames() {
+        frames_v32(held, &mut joint, say);
+    } else {
+        frames_v31(held, &mut joint);
     }
+    fields(held, &mut joint, say);
+    Some(joint)
 }
 
 /// What each kind holds beyond its frames, and what it holds that the format has no form
 /// for.
-fn fields(held: &HeldJoint, joint: &mut Joint, say: &mut Say<'_>) {
+fn fields(held: &HeldJoint, joint: &mut Joint, say: &mut Say) {
     let j = &held.joint;
     match joint.kind() {
         Some(JointKind::Revolute | JointKind::Prismatic) => {
@@ -151,7 +145,7 @@ fn frames_v31(held: &HeldJoint, joint: &mut Joint) {
 /// v3.2's frames as the plan sets them (frame A carries the axis or the reference angle,
 /// frame B is unturned but for a prismatic joint's), inverted exactly; what has no exact
 /// inverse or is not of the plan's form is written as the nearest and reported.
-fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say<'_>) {
+fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say) {
     let (a, b) = (held.joint.frame_a, held.joint.frame_b);
     let kind = joint.kind();
     let prismatic = kind == Some(JointKind::Prismatic);
@@ -168,14 +162,11 @@ fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say<'_>) {
             });
             joint.reference_angle = found.unwrap_or_else(|x| x);
             if found.is_err() {
-                say(
-                    Object::Joint,
-                    format_args!(
-                        "no angle has exactly the rotation of its frame A; the nearest, {} rad, \
+                say.lossy(format_args!(
+                    "no angle has exactly the rotation of its frame A; the nearest, {} rad, \
                          was written as ReferenceAngle",
-                        G9(joint.reference_angle)
-                    ),
-                );
+                    G9(joint.reference_angle)
+                ));
             }
         }
         Some(JointKind::Prismatic | JointKind::Wheel | JointKind::Line) => {
@@ -185,14 +176,11 @@ fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say<'_>) {
             });
             joint.local_axis_a = found.unwrap_or_else(|x| x);
             if found.is_err() {
-                say(
-                    Object::Joint,
-                    format_args!(
-                        "no axis near ({}, {}) normalises to it exactly; it was written",
-                        G9(unit.x),
-                        G9(unit.y)
-                    ),
-                );
+                say.lossy(format_args!(
+                    "no axis near ({}, {}) normalises to it exactly; it was written",
+                    G9(unit.x),
+                    G9(unit.y)
+                ));
             }
             if !prismatic {
                 return;
@@ -203,14 +191,11 @@ fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say<'_>) {
             });
             joint.reference_angle = found.unwrap_or_else(|x| x);
             if found.is_err() {
-                say(
-                    Object::Joint,
-                    format_args!(
-                        "no reference angle gives exactly the rotation of its frame B; the \
+                say.lossy(format_args!(
+                    "no reference angle gives exactly the rotation of its frame B; the \
                          nearest, {} rad, was written",
-                        G9(joint.reference_angle)
-                    ),
-                );
+                    G9(joint.reference_angle)
+                ));
             }
         }
         _ => {}
@@ -237,7 +222,7 @@ fn motor_v31(held: &HeldJoint) -> Joint {
 /// unturned (what the build makes of one); else the Motor the build approximates by it,
 /// its offsets from frame A and its CorrectionFactor from its spring frequency, inverted
 /// exactly. One of neither form is written as the nearest Motor and reported.
-fn motor_v32(held: &HeldJoint, say: &mut Say<'_>) -> Joint {
+fn motor_v32(held: &HeldJoint, say: &mut Say) -> Joint {
     let j = &held.joint;
     let (a, b) = (j.frame_a, j.frame_b);
     let v = held.linear_velocity;
@@ -271,14 +256,11 @@ fn motor_v32(held: &HeldJoint, say: &mut Say<'_>) -> Joint {
     let offset = angle_of(a.q);
     joint.angular_offset = offset.unwrap_or_else(|x| x);
     if !(exact && factor.is_ok() && offset.is_ok()) {
-        say(
-            Object::Joint,
-            format_args!(
-                "a motor joint other than the build makes of a Motor joint: written as the \
+        say.lossy(format_args!(
+            "a motor joint other than the build makes of a Motor joint: written as the \
                  nearest, from the offsets of its frame A, its spring limits and a \
                  CorrectionFactor from its linear spring's frequency"
-            ),
-        );
+        ));
     }
     joint
 }

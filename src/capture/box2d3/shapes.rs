@@ -1,11 +1,11 @@
 //! Shapes and fixtures: a v3 shape as the format's, a chain regrouped from the segments the
 //! build made of it, and a filter in the format's widths.
 
-use super::{Family, Say};
 use crate::capture::HeldShape;
+use crate::capture::world::Say;
+use crate::plan::PlanShapeKind;
 use crate::plan::box2d3::V3;
 use crate::plan::printf::G9;
-use crate::plan::{Object, PlanShapeKind};
 use crate::scene::{Filter, Fixture, NONE, Shape, ShapeKind, Vec2};
 
 /// A chain segment's points, `[ghost, ends, ghost]`, or `None` where it has not four.
@@ -23,97 +23,85 @@ pub(super) fn in_chain(held: &HeldShape) -> bool {
     held.chain != NONE
 }
 
-impl Family {
-    /// How many of `run`, a body's consecutive segments the adapter marked as one chain,
-    /// make its first chain: v3.1's chain whole; of v3.2's loose segments those that
-    /// continue the first, up to the one that closes a loop (a loop built beside another of
-    /// the same points must not run into it).
-    pub(crate) fn chain_length(&self, run: &[HeldShape], points: &[Vec2]) -> usize {
-        if self.v3.chains_are_objects() {
-            return run.len();
-        }
-        let Some(head) = segment(&run[0], points) else { return 1 };
-        let mut cur = head;
-        let mut length = 1;
-        while length < run.len() && !(length >= 3 && continues(&cur, &head)) {
-            match segment(&run[length], points) {
-                Some(next) if continues(&cur, &next) => cur = next,
-                _ => break,
-            }
-            length += 1;
-        }
-        length
+/// How many of `run`, a body's consecutive segments the adapter marked as one chain,
+/// make its first chain: v3.1's chain whole; of v3.2's loose segments those that
+/// continue the first, up to the one that closes a loop (a loop built beside another of
+/// the same points must not run into it).
+pub(crate) fn chain_length(v3: V3, run: &[HeldShape], points: &[Vec2]) -> usize {
+    if v3.chains_are_objects() {
+        return run.len();
     }
-
-    /// The scene shape (no name) and its vertices for one held shape, or for a chain's
-    /// segments in their order.
-    pub(crate) fn shape(
-        &self,
-        run: &[HeldShape],
-        points: &[Vec2],
-        say: &mut Say<'_>,
-    ) -> Option<(Shape, Vec<Vec2>)> {
-        let held = &run[0];
-        if in_chain(held) {
-            let segments: Option<Vec<[Vec2; 4]>> = run.iter().map(|s| segment(s, points)).collect();
-            if segments.is_none() {
-                say(
-                    Object::Shape,
-                    format_args!("a chain segment without its four points; not written"),
-                );
-            }
-            return segments.map(|segments| chain(self.v3, &segments));
+    let Some(head) = segment(&run[0], points) else { return 1 };
+    let mut cur = head;
+    let mut length = 1;
+    while length < run.len() && !(length >= 3 && continues(&cur, &head)) {
+        match segment(&run[length], points) {
+            Some(next) if continues(&cur, &next) => cur = next,
+            _ => break,
         }
-        let Some(vertices) = points.get(held.shape.points.indices()).map(<[Vec2]>::to_vec) else {
-            say(Object::Shape, format_args!("its points lie outside the held points; not written"));
+        length += 1;
+    }
+    length
+}
+
+/// The scene shape (no name) and its vertices for one held shape, or for a chain's
+/// segments in their order.
+pub(crate) fn shape(
+    v3: V3,
+    run: &[HeldShape],
+    points: &[Vec2],
+    say: &mut Say,
+) -> Option<(Shape, Vec<Vec2>)> {
+    let held = &run[0];
+    if in_chain(held) {
+        let segments: Option<Vec<[Vec2; 4]>> = run.iter().map(|s| segment(s, points)).collect();
+        if segments.is_none() {
+            say.lossy(format_args!("a chain segment without its four points; not written"));
+        }
+        return segments.map(|segments| chain(v3, &segments));
+    }
+    let Some(vertices) = points.get(held.shape.points.indices()).map(<[Vec2]>::to_vec) else {
+        say.lossy(format_args!("its points lie outside the held points; not written"));
+        return None;
+    };
+    let kind = PlanShapeKind::try_from(held.shape.kind).ok()?;
+    let shape = match kind {
+        PlanShapeKind::Circle => {
+            let mut circle = Shape::new(ShapeKind::Circle);
+            circle.radius = held.shape.radius;
+            circle.position = held.shape.center;
+            return Some((circle, Vec::new()));
+        }
+        PlanShapeKind::Polygon => {
+            if held.shape.radius > 0.0 {
+                say.lossy(format_args!(
+                    "a rounded polygon (radius {} m): written without its rounding",
+                    G9(held.shape.radius)
+                ));
+            }
+            Shape::new(ShapeKind::Polygon)
+        }
+        PlanShapeKind::Segment => Shape::new(ShapeKind::Edge),
+        PlanShapeKind::Chain | PlanShapeKind::Loop => {
+            say.lossy(format_args!(
+                "a chain held whole, where Box2D v3 holds its segments; not written"
+            ));
             return None;
-        };
-        let kind = PlanShapeKind::try_from(held.shape.kind).ok()?;
-        let shape = match kind {
-            PlanShapeKind::Circle => {
-                let mut circle = Shape::new(ShapeKind::Circle);
-                circle.radius = held.shape.radius;
-                circle.position = held.shape.center;
-                return Some((circle, Vec::new()));
-            }
-            PlanShapeKind::Polygon => {
-                if held.shape.radius > 0.0 {
-                    say(
-                        Object::Shape,
-                        format_args!(
-                            "a rounded polygon (radius {} m): written without its rounding",
-                            G9(held.shape.radius)
-                        ),
-                    );
-                }
-                Shape::new(ShapeKind::Polygon)
-            }
-            PlanShapeKind::Segment => Shape::new(ShapeKind::Edge),
-            PlanShapeKind::Chain | PlanShapeKind::Loop => {
-                say(
-                    Object::Shape,
-                    format_args!(
-                        "a chain held whole, where Box2D v3 holds its segments; not written"
-                    ),
-                );
-                return None;
-            }
-        };
-        Some((shape, vertices))
-    }
-
-    /// The fixture (its shape left for the caller) that carries the shape of `run`: the
-    /// material of its first shape, a chain's without density (it has no mass).
-    pub(crate) fn fixture(&self, run: &[HeldShape], say: &mut Say<'_>) -> Fixture {
-        let held = &run[0];
-        Fixture {
-            density: if in_chain(held) { 0.0 } else { held.shape.density },
-            friction: held.shape.friction,
-            restitution: held.shape.restitution,
-            is_sensor: held.shape.is_sensor,
-            filter: filter(held, say),
-            ..Fixture::default()
         }
+    };
+    Some((shape, vertices))
+}
+
+/// The fixture (its shape left for the caller) that carries the shape of `run`: the
+/// material of its first shape, a chain's without density (it has no mass).
+pub(crate) fn fixture(held: &HeldShape, say: &mut Say) -> Fixture {
+    Fixture {
+        density: if in_chain(held) { 0.0 } else { held.shape.density },
+        friction: held.shape.friction,
+        restitution: held.shape.restitution,
+        is_sensor: held.shape.is_sensor,
+        filter: filter(held, say),
+        ..Fixture::default()
     }
 }
 
@@ -138,7 +126,7 @@ fn chain(v3: V3, segments: &[[Vec2; 4]]) -> (Shape, Vec<Vec2>) {
 
 /// The filter in the format's widths (its fields' sizes say them): a mask with every
 /// higher bit set is "all"; what is beyond them is reported and the low bits written.
-fn filter(held: &HeldShape, say: &mut Say<'_>) -> Filter {
+fn filter(held: &HeldShape, say: &mut Say) -> Filter {
     let (category, mask, group) = (held.category_bits, held.mask_bits, held.group_index);
     let low = u64::from(u32::MAX);
     let high_mask = mask & !low;
@@ -146,14 +134,11 @@ fn filter(held: &HeldShape, say: &mut Say<'_>) -> Filter {
     let exact = category & !low == 0 && (high_mask == 0 || high_mask == !low) && group_fits;
     if !exact {
         let (bits, group_bits) = (u32::BITS, i16::BITS);
-        say(
-            Object::Fixture,
-            format_args!(
-                "its filter (category 0x{category:x}, mask 0x{mask:x}, group {group}) has bits \
+        say.lossy(format_args!(
+            "its filter (category 0x{category:x}, mask 0x{mask:x}, group {group}) has bits \
                  above the format's {bits} or a group beyond {group_bits} bits; the low {bits} \
                  bits were written"
-            ),
-        );
+        ));
     }
     Filter {
         category_bits: (category & low) as u32,
