@@ -43,12 +43,13 @@ impl Family {
         }
     }
 
-    /// How many of `run`, held shapes that share a chain, make its first chain: v3.2's
-    /// loose segments are one chain where they continue one another.
-    fn chain_length(self, run: &[HeldShape], points: &[Vec2]) -> usize {
+    /// How many of `rest`, a body's held shapes from a chain's first segment on, make that
+    /// chain: the ones that share its `chain`, and of v3.2's loose segments those that
+    /// continue one another.
+    fn chain_length(self, rest: &[HeldShape], points: &[Vec2]) -> usize {
         match self {
-            Family::Box2d2(_) => run.len(),
-            Family::Box2d3(v3) => box2d3::chain_length(v3, run, points),
+            Family::Box2d2(_) => rest.iter().take_while(|s| s.chain == rest[0].chain).count(),
+            Family::Box2d3(v3) => box2d3::chain_length(v3, rest, points),
         }
     }
 
@@ -91,6 +92,12 @@ impl Family {
     /// adapter's says each with its own code and counts the held joints.
     fn v3_reports(self) -> bool {
         matches!(self, Family::Box2d3(_))
+    }
+
+    /// Whether equal shapes and equal fixtures are written once. The Box2D v3 adapter
+    /// always wrote each engine shape as its own shape and fixture (its tests count them).
+    fn writes_equal_once(self) -> bool {
+        matches!(self, Family::Box2d2(_))
     }
 
     /// The scene joint (no bodies, joints, name or UserData) of a held joint between its
@@ -287,7 +294,9 @@ impl<'h> Pass<'h> {
             return None;
         };
         let key = shape_key(&shape, &vertices, name);
-        if let Some(&found) = self.shapes.get(&key) {
+        if let Some(&found) =
+            self.family.writes_equal_once().then(|| self.shapes.get(&key)).flatten()
+        {
             return Some(found);
         }
         match self.builder.add_shape(&shape, name, &vertices) {
@@ -333,7 +342,9 @@ impl<'h> Pass<'h> {
         let family = self.family;
         let fixture = family.fixture(&run[0], &mut self.say(Object::Fixture, index, name));
         let key = fixture_key(&fixture, shape, &label);
-        if let Some(&found) = self.fixtures.get(&key) {
+        if let Some(&found) =
+            self.family.writes_equal_once().then(|| self.fixtures.get(&key)).flatten()
+        {
             return Some(found);
         }
         let user_data = self.user_data(&label, Object::Fixture, index);
@@ -371,13 +382,11 @@ impl<'h> Pass<'h> {
         let mut runs = Vec::new();
         let mut first = shapes.start;
         while first < end {
-            let chain = self.held.shapes[first].chain;
-            let mut last = first + 1;
-            while chain != NONE && last < end && self.held.shapes[last].chain == chain {
-                last += 1;
-            }
-            let last =
-                first + self.family.chain_length(&self.held.shapes[first..last], self.held.points);
+            let rest = &self.held.shapes[first..end];
+            let last = match rest[0].chain {
+                NONE => first + 1,
+                _ => first + self.family.chain_length(rest, self.held.points),
+            };
             runs.push(first..last);
             first = last;
         }
@@ -535,9 +544,13 @@ impl<'h> Pass<'h> {
                 resolved &= *coupled != NONE;
             }
         }
+        let (code, index) = match self.family.v3_reports() {
+            true => (Code::LossyCapture, self.joints_written),
+            false => (Code::SkippedDependent, record),
+        };
         if !resolved {
-            self.say(Object::Joint, record, name).report(
-                Code::SkippedDependent,
+            self.say(Object::Joint, index, name).report(
+                code,
                 format_args!(
                     "scene joint {record}, which build_world skipped, names a body or joint not \
                      written (or has no Box2Scene form); not written"

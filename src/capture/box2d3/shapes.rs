@@ -23,23 +23,28 @@ pub(super) fn in_chain(held: &HeldShape) -> bool {
     held.chain != NONE
 }
 
-/// How many of `run`, a body's consecutive segments the adapter marked as one chain,
-/// make its first chain: v3.1's chain whole; of v3.2's loose segments those that
-/// continue the first, up to the one that closes a loop (a loop built beside another of
-/// the same points must not run into it).
-pub(crate) fn chain_length(v3: V3, run: &[HeldShape], points: &[Vec2]) -> usize {
+/// How many of `rest`, a body's held shapes from a chain's first segment on, make that
+/// chain: v3.1's chain object whole (the segments marked with its `chain`); of v3.2's loose
+/// segments those that continue the first, up to the one that closes a loop (a loop built
+/// beside another of the same points must not run into it).
+pub(crate) fn chain_length(v3: V3, rest: &[HeldShape], points: &[Vec2]) -> usize {
+    let chain = rest[0].chain;
+    let marked = rest.iter().take_while(|s| s.chain == chain);
     if v3.chains_are_objects() {
-        return run.len();
+        return marked.count();
     }
-    let Some(head) = segment(&run[0], points) else { return 1 };
+    let mut segments = marked.map(|s| segment(s, points));
+    let Some(Some(head)) = segments.next() else { return 1 };
     let mut cur = head;
     let mut length = 1;
-    while length < run.len() && !(length >= 3 && continues(&cur, &head)) {
-        match segment(&run[length], points) {
-            Some(next) if continues(&cur, &next) => cur = next,
+    for next in segments {
+        match next {
+            Some(next) if !(length >= 3 && continues(&cur, &head)) && continues(&cur, &next) => {
+                cur = next;
+                length += 1;
+            }
             _ => break,
         }
-        length += 1;
     }
     length
 }

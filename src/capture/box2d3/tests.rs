@@ -613,3 +613,47 @@ fn v3_says_what_is_not_written_as_lossy_once_counting_the_joints_written_before(
 
 const UNTURNED_FRAME: Transform =
     Transform { p: Vec2 { x: 0.0, y: 0.0 }, q: Rot { c: 1.0, s: 0.0 } };
+
+/// A joint the build skipped that names a body not held is said as the v3 adapter said it:
+/// lossy-capture, counted among the joints written before it.
+#[test]
+fn v3_says_a_skipped_joint_it_cannot_write_back_as_lossy() {
+    let joints = "<Joint Type=\"Pulley\"><BodyA>0</BodyA><BodyB>1</BodyB><Ratio>1</Ratio></Joint>";
+    let text = format!(
+        "<World Version=\"2\"><Shapes>{}</Shapes><Fixtures>{}</Fixtures><Bodies>{BODIES}</Bodies>\
+         <Joints>{joints}</Joints></World>",
+        BALL.0, BALL.1
+    );
+    let level = crate::load(text.as_bytes(), &Default::default()).unwrap();
+    let plan = plan(Engine::Box2d31, BALL.0, BALL.1, BODIES, joints);
+    assert!(plan.joints().is_empty(), "v3 has no pulley");
+    let bodies = [HeldBody { body: plan.bodies()[0], label: UNLABELLED }];
+    let unlabelled = [crate::capture::Label::default()];
+    let held = crate::capture::Held {
+        engine: Engine::Box2d31,
+        gravity: v(0.0, -10.0),
+        bodies: &bodies,
+        shapes: &[],
+        points: &[],
+        joints: &[],
+        skipped_joints: &[0],
+        body_labels: &unlabelled,
+        fixture_labels: &[],
+        shape_names: &[],
+        shape_others: &[],
+        joint_labels: &[],
+        joint_others: &[],
+    };
+    let captured = crate::capture::capture(&held, Some(&level)).unwrap();
+    assert!(captured.scene.joints().is_empty());
+    let reports = captured.reports();
+    assert_eq!(reports.len(), 1);
+    assert_eq!((reports[0].code, reports[0].index), (Code::LossyCapture as u32, 0));
+    assert_eq!(
+        captured.text(reports[0].message),
+        Some(
+            "scene joint 0, which build_world skipped, names a body or joint not written (or has \
+             no Box2Scene form); not written"
+        )
+    );
+}
