@@ -11,12 +11,12 @@ use crate::scene::{Body, BodyKind, Fixture, Joint, JointKind, NONE, Shape, Shape
 
 /// The records an engine holds once it has made `plan` (nothing stepped): the plan's own,
 /// labelled by nothing.
-struct Engine2 {
-    bodies: Vec<HeldBody>,
-    shapes: Vec<HeldShape>,
-    points: Vec<Vec2>,
-    joints: Vec<HeldJoint>,
-    skipped: Vec<u32>,
+pub(super) struct Engine2 {
+    pub(super) bodies: Vec<HeldBody>,
+    pub(super) shapes: Vec<HeldShape>,
+    pub(super) points: Vec<Vec2>,
+    pub(super) joints: Vec<HeldJoint>,
+    pub(super) skipped: Vec<u32>,
 }
 
 fn unlabelled() -> HeldLabel {
@@ -52,9 +52,13 @@ fn as_held(shape: PlanShape, plan: &crate::plan::Plan) -> PlanShape {
     PlanShape { center: mass.center, ..shape }
 }
 
-/// A joint as the engine holds it: 2.4's distance joint raises its lengths to the linear
-/// slop.
+/// A joint as the engine holds it: a prismatic joint's axis normalised, 2.4's distance
+/// joint's lengths raised to the linear slop.
 fn joint_as_held(joint: PlanJoint) -> PlanJoint {
+    if joint.kind == PlanJointKind::Prismatic as u32 {
+        // b2PrismaticJoint's constructor normalises its axis
+        return PlanJoint { axis: crate::plan::box2d2::math::normalized(joint.axis), ..joint };
+    }
     if joint.kind != PlanJointKind::Distance as u32 {
         return joint;
     }
@@ -62,9 +66,15 @@ fn joint_as_held(joint: PlanJoint) -> PlanJoint {
     PlanJoint { length: joint.length.max(slop), min_length: joint.min_length.max(slop), ..joint }
 }
 
-fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
+pub(super) fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
     let plan = crate::plan::make(scene, &options(engine)).unwrap();
     assert_eq!(plan.reports(), [], "the level is planned whole");
+    read_back(scene, engine)
+}
+
+/// What the engine holds once it has made the plan of `scene`, whatever the plan reports.
+pub(super) fn read_back(scene: &Scene, engine: Engine) -> Engine2 {
+    let plan = crate::plan::make(scene, &options(engine)).unwrap();
     let bodies = plan.bodies().iter().map(|&body| HeldBody { body, label: unlabelled() }).collect();
     let shapes = plan
         .shapes()
@@ -100,7 +110,7 @@ fn held_of(scene: &Scene, engine: Engine) -> Engine2 {
 }
 
 /// The captured scene of what `e` holds, with its labels empty but where `others` says.
-fn capture_of(
+pub(super) fn capture_of(
     e: &Engine2,
     engine: Engine,
     level: Option<&Scene>,
@@ -129,21 +139,21 @@ fn capture_of(
     capture(&held, level).unwrap()
 }
 
-fn messages(c: &Captured) -> Vec<String> {
+pub(super) fn messages(c: &Captured) -> Vec<String> {
     c.reports().iter().map(|r| c.text(r.message).unwrap_or_default().to_owned()).collect()
 }
 
-fn square() -> Shape {
+pub(super) fn square() -> Shape {
     Shape { ..Shape::new(ShapeKind::Polygon) }
 }
 
-fn square_vertices() -> [Vec2; 4] {
+pub(super) fn square_vertices() -> [Vec2; 4] {
     [Vec2::new(1.0, -1.0), Vec2::new(1.0, 1.0), Vec2::new(-1.0, 1.0), Vec2::new(-1.0, -1.0)]
 }
 
 /// A ground and two boxes on one shared shape and fixture, named, with UserData; a wheel
 /// joint of FrequencyHz 4 and DampingRatio 0.7, a revolute joint, and a rope.
-fn level() -> Scene {
+pub(super) fn level() -> Scene {
     let mut b = Builder::new();
     let shape = b.add_shape(&square(), Some("crate"), &square_vertices()).unwrap();
     let data = b.add_user_data(None, Some("System.String"), Some("wood")).unwrap();

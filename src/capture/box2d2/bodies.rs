@@ -191,3 +191,64 @@ fn after_build(
         v
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Builder;
+    use crate::capture::tests::{capture_of, held_of, messages};
+    use crate::plan::Engine;
+    use crate::scene::{Fixture, Shape, ShapeKind};
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    /// A spinning body whose centre of mass is off its origin: the build's mass updates
+    /// kick the velocity by w x (how far the centre moved).
+    #[test]
+    fn the_linear_velocity_is_the_one_the_build_kicks_to_the_held_velocity() {
+        let mut b = Builder::new();
+        let circle = Shape { radius: 0.5, position: v(0.3, -0.2), ..Shape::new(ShapeKind::Circle) };
+        let shape = b.add_shape(&circle, None, &[]).unwrap();
+        let fixture = b.add_fixture(&Fixture { shape, density: 2.0, ..Fixture::default() }, None);
+        let body = Body {
+            position: v(1.0, 2.0),
+            angle: 0.7,
+            angular_velocity: 3.0,
+            ..Body::new(BodyKind::Dynamic)
+        };
+        b.add_body(&body, None, &[fixture.unwrap()]).unwrap();
+        let scene = b.finish();
+        for engine in [Engine::Box2d24, Engine::Box2d23] {
+            let mut held = held_of(&scene, engine);
+            // on the even floats the kicks' sums land on
+            let target = v(5.5, -7.25);
+            held.bodies[0].body.linear_velocity = target;
+            let captured = capture_of(&held, engine, None, &[]);
+            assert_eq!(messages(&captured), Vec::<String>::new());
+            let written = captured.scene.bodies()[0].linear_velocity;
+            assert_ne!(written, target, "{engine:?}: the centre of mass moves the velocity");
+            let version = Version::of(engine).unwrap();
+            let created: Vec<FixtureMass> =
+                held.shapes.iter().map(|s| fixture_mass(version, s, &held.points)).collect();
+            let data = captured.scene.bodies()[0].mass_data;
+            let after = after_build(version, &held.bodies[0], &created, given(&data))(written);
+            assert_eq!(
+                (after.x.to_bits(), after.y.to_bits()),
+                (target.x.to_bits(), target.y.to_bits())
+            );
+        }
+    }
+
+    #[test]
+    fn a_static_body_keeps_its_velocity_as_it_is() {
+        let mut b = Builder::new();
+        let body = Body { linear_velocity: v(1.0, 2.0), ..Body::new(BodyKind::Static) };
+        b.add_body(&body, None, &[]).unwrap();
+        let mut held = held_of(&b.finish(), Engine::Box2d24);
+        held.bodies[0].body.linear_velocity = v(0.25, 0.5);
+        let captured = capture_of(&held, Engine::Box2d24, None, &[]);
+        assert_eq!(captured.scene.bodies()[0].linear_velocity, v(0.25, 0.5));
+    }
+}

@@ -229,20 +229,29 @@ fn distance(
 }
 
 /// A wheel with a limit is the format's Line only without spring and motor, which Line
-/// lacks; with either, it stays a Wheel and loses the limit (reported).
+/// lacks; with either, it stays a Wheel and loses the limit (reported). Without any of
+/// them it is the level's Line where the level has one. 2.3's stand-in spring for none
+/// (`springless_wheel_hertz`, undamped) is none.
 fn wheel(
     j: &PlanJoint,
     springs: &Springs,
     anchored: impl Fn(JointKind) -> Joint,
     say: &mut Say,
 ) -> Joint {
-    let sprung = if springs.version.springs_in_hertz { j.hertz > 0.0 } else { j.stiffness > 0.0 };
-    let line = j.enable_limit && !(sprung || j.enable_motor);
+    let version = springs.version;
+    let stand_in = version.springs_in_hertz
+        && j.hertz == version.springless_wheel_hertz
+        && j.damping_ratio == 0.0;
+    let j = &PlanJoint { hertz: if stand_in { 0.0 } else { j.hertz }, ..*j };
+    let sprung = if version.springs_in_hertz { j.hertz > 0.0 } else { j.stiffness > 0.0 };
+    let level_line = springs.level.is_some_and(|l| l.kind == JointKind::Line as u32);
+    let line = !(sprung || j.enable_motor) && (j.enable_limit || level_line);
     let kind = if line { JointKind::Line } else { JointKind::Wheel };
     let axis = axis_giving(j.axis, say);
     let joint = Joint { local_axis_a: axis, ..anchored(kind) };
     if line {
-        return Joint { enable_limit: true, lower_limit: j.lower, upper_limit: j.upper, ..joint };
+        let (lower_limit, upper_limit) = (j.lower, j.upper);
+        return Joint { enable_limit: j.enable_limit, lower_limit, upper_limit, ..joint };
     }
     let joint = Joint {
         enable_motor: j.enable_motor,

@@ -14,6 +14,9 @@ mod joints;
 mod shapes;
 mod springs;
 
+#[cfg(test)]
+mod tests;
+
 pub(super) use bodies::body;
 pub(super) use joints::joint;
 pub(super) use shapes::{fixture, shape};

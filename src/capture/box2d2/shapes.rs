@@ -109,7 +109,8 @@ fn looped() -> Shape {
 
 /// A chain as the engine holds it, `[ghost, vertices..., ghost]`: a loop where it has
 /// `CreateLoop`'s layout (the first vertex repeated at the end, the ghosts next to the
-/// seam), its vertices once each; else an open chain with its ghosts.
+/// seam, or none: pybox2d's 2.3 leaves them unset), its vertices once each; else an open
+/// chain with its ghosts.
 fn chain(points: &[Vec2]) -> (Shape, Vec<Vec2>) {
     let Some((&prev, rest)) = points.split_first() else {
         return (Shape::new(ShapeKind::Chain), Vec::new());
@@ -118,7 +119,9 @@ fn chain(points: &[Vec2]) -> (Shape, Vec<Vec2>) {
         return (Shape::new(ShapeKind::Chain), Vec::new());
     };
     let n = v.len();
-    if n >= 4 && same_bits(v[n - 1], v[0]) && same_bits(prev, v[n - 2]) && same_bits(next, v[1]) {
+    let unset = ghost(prev).is_none() && ghost(next).is_none();
+    let seam = |n: usize| same_bits(prev, v[n - 2]) && same_bits(next, v[1]);
+    if n >= 4 && same_bits(v[n - 1], v[0]) && (unset || seam(n)) {
         return (looped(), v[..n - 1].to_vec());
     }
     (with_ghosts(Shape::new(ShapeKind::Chain), prev, next), v.to_vec())
