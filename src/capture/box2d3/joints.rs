@@ -38,8 +38,8 @@ pub(crate) fn joint(v3: V3, held: &HeldJoint, say: &mut Say) -> Option<Joint> {
         }
         _ => {
             say.lossy(format_args!(
-                "a joint of a kind this adapter does not know has no Box2Scene form; \
-                     not written"
+                "a joint of a kind this adapter does not know has no Box2Scene form; not \
+                 written"
             ));
             return None;
         }

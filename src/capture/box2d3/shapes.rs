@@ -69,7 +69,13 @@ pub(crate) fn shape(
         say.lossy(format_args!("its points lie outside the held points; not written"));
         return None;
     };
-    let kind = PlanShapeKind::try_from(held.shape.kind).ok()?;
+    let Ok(kind) = PlanShapeKind::try_from(held.shape.kind) else {
+        say.lossy(format_args!(
+            "a shape of kind {} has no Box2Scene form; not written",
+            held.shape.kind
+        ));
+        return None;
+    };
     let shape = match kind {
         PlanShapeKind::Circle => {
             let mut circle = Shape::new(ShapeKind::Circle);
@@ -141,8 +147,8 @@ fn filter(held: &HeldShape, say: &mut Say) -> Filter {
         let (bits, group_bits) = (u32::BITS, i16::BITS);
         say.lossy(format_args!(
             "its filter (category 0x{category:x}, mask 0x{mask:x}, group {group}) has bits \
-                 above the format's {bits} or a group beyond {group_bits} bits; the low {bits} \
-                 bits were written"
+             above the format's {bits} or a group beyond {group_bits} bits; the low {bits} bits \
+             were written"
         ));
     }
     Filter {

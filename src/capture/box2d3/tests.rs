@@ -328,6 +328,11 @@ fn a_rounded_polygon_and_a_filter_beyond_the_formats_bits_are_reported() {
     let (fixture, said) = saying(|say| super::fixture(&all, say));
     assert!(said.is_empty());
     assert_eq!(fixture.filter.group_index, -3);
+    // A kind no plan shape has is not written, and said.
+    let unknown = [HeldShape { shape: PlanShape { kind: 99, ..run[0].shape }, ..run[0] }];
+    let (none, said) = saying(|say| super::shape(V3::V31, &unknown, &points, say));
+    assert!(none.is_none());
+    assert_eq!(said, ["a shape of kind 99 has no Box2Scene form; not written"]);
 }
 
 const BODIES: &str = "<Body Type=\"Static\"/><Body Type=\"Dynamic\">\
