@@ -542,8 +542,11 @@ fn a_capture_of_a_built_world_is_labelled_from_its_level_and_its_scene_taken_onc
         assert_ne!(saved_bodies[1].user_data, NONE);
         assert_eq!(text(slice(view.joints, view.joint_count)[0].name.as_ptr()), "pin");
         b2s_scene_free(saved);
-        let v3 = HeldWorld { engine: box2scene::Engine::Box2d31 as u32, ..world };
-        assert_eq!(b2s_capture_make(&v3, null(), &mut capture, &mut error), Code::InvalidArgument);
+        let unknown = HeldWorld { engine: 99, ..world };
+        assert_eq!(
+            b2s_capture_make(&unknown, null(), &mut capture, &mut error),
+            Code::InvalidArgument
+        );
         assert!(b2s_capture_get_view(null()).is_null());
         b2s_capture_free(null_mut());
         b2s_scene_free(scene);

@@ -25,6 +25,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 mod box2d2;
+mod box2d3;
 mod level;
 mod records;
 mod search;
@@ -32,8 +33,9 @@ mod world;
 
 pub use records::*;
 
-use crate::error::{Code, Error, Position};
+use crate::error::Error;
 use crate::plan::box2d2::Version;
+use crate::plan::box2d3::V3;
 use crate::plan::{Engine, Plan, PlanReport};
 use crate::scene::{Scene, Str, Vec2};
 use world::Family;
@@ -110,17 +112,14 @@ impl Captured {
 
 /// The scene holding what `held` says an engine holds, and the reports of what it cannot
 /// hold exactly; `level`, the scene the world was built from, labels what the host does
-/// not and gives the joints the build skipped back. An engine number whose capture the
-/// library does not make is an error.
+/// not and gives the joints the build skipped back. Every engine's capture is made: the
+/// result is an error only as the builder's checks are.
 pub fn capture(held: &Held<'_>, level: Option<&Scene>) -> Result<Captured, Error> {
-    if let Some(version) = Version::of(held.engine) {
-        return Ok(world::capture(held, level, Family::Box2d2(version)));
-    }
-    Err(Error {
-        code: Code::InvalidArgument,
-        position: Position::default(),
-        message: "capture of engine v3 is made by the v3 adapter".to_owned(),
-    })
+    let family = match Version::of(held.engine) {
+        Some(version) => Family::Box2d2(version),
+        None => Family::Box2d3(V3::of(held.engine).expect("every engine is 2.x or v3")),
+    };
+    Ok(world::capture(held, level, family))
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::Builder;
+use crate::error::Code;
 use crate::plan::{
     PlanJoint, PlanJointKind, PlanOptions, PlanShape, PlanShapeKind, Rot, Transform,
 };
@@ -278,28 +279,6 @@ fn a_gear_whose_joint_was_not_written_is_not_written() {
     let c = capture_of(&e, Engine::Box2d24, Some(&level), &[None, Some("Box2D joint type 99")]);
     assert_eq!(messages(&c)[1], "a joint the gear couples was not written; not written");
     assert_eq!(c.text(c.reports()[1].name), Some("gear"));
-}
-
-#[test]
-fn a_capture_of_engine_v3_is_the_v3_adapter_s() {
-    let e = held_of(&level(), Engine::Box2d24);
-    let held = Held {
-        engine: Engine::Box2d31,
-        gravity: Vec2::ZERO,
-        bodies: &e.bodies,
-        shapes: &[],
-        points: &[],
-        joints: &[],
-        skipped_joints: &[],
-        body_labels: &[],
-        fixture_labels: &[],
-        shape_names: &[],
-        shape_others: &[],
-        joint_labels: &[],
-        joint_others: &[],
-    };
-    let error = capture(&held, None).unwrap_err();
-    assert_eq!(error.code, Code::InvalidArgument);
 }
 
 /// A label the builder refuses (a character XML does not allow in a name) is reported with

@@ -9,11 +9,13 @@ use std::collections::HashMap;
 use std::fmt;
 
 use super::box2d2;
+use super::box2d3;
 use super::level::{Level, is_gear};
 use super::{Captured, Held, HeldBody, HeldJoint, HeldShape, Label};
 use crate::builder::Builder;
 use crate::error::{Code, Error};
 use crate::plan::box2d2::Version;
+use crate::plan::box2d3::V3;
 use crate::plan::{Object, Plan};
 use crate::scene::{Body, Fixture, Joint, NONE, Shape, Vec2};
 
@@ -22,6 +24,8 @@ use crate::scene::{Body, Fixture, Joint, NONE, Shape, Vec2};
 pub(super) enum Family {
     /// Box2D 2.3 or 2.4.
     Box2d2(&'static Version),
+    /// Box2D v3.1 or v3.2.
+    Box2d3(V3),
 }
 
 impl Family {
@@ -35,6 +39,17 @@ impl Family {
     ) -> Option<(Shape, Vec<Vec2>)> {
         match self {
             Family::Box2d2(version) => box2d2::shape(version, &run[0], points, say),
+            Family::Box2d3(v3) => box2d3::shape(v3, run, points, say),
+        }
+    }
+
+    /// How many of `rest`, a body's held shapes from a chain's first segment on, make that
+    /// chain: the ones that share its `chain`, and of v3.2's loose segments those that
+    /// continue one another.
+    fn chain_length(self, rest: &[HeldShape], points: &[Vec2]) -> usize {
+        match self {
+            Family::Box2d2(_) => rest.iter().take_while(|s| s.chain == rest[0].chain).count(),
+            Family::Box2d3(v3) => box2d3::chain_length(v3, rest, points),
         }
     }
 
@@ -42,6 +57,7 @@ impl Family {
     fn fixture(self, held: &HeldShape, say: &mut Say) -> Fixture {
         match self {
             Family::Box2d2(version) => box2d2::fixture(version, held, say),
+            Family::Box2d3(_) => box2d3::fixture(held, say),
         }
     }
 
@@ -57,7 +73,31 @@ impl Family {
     ) -> Body {
         match self {
             Family::Box2d2(version) => box2d2::body(version, held, shapes, points, level, say),
+            Family::Box2d3(v3) => box2d3::body(v3, held, shapes, points),
         }
+    }
+
+    /// What the family says once of all the held bodies, after them (on the world): v3's
+    /// solver turns nearly every body it moves to a rotation no angle gives exactly.
+    fn bodies_done(self, bodies: &[HeldBody], say: &mut Say) {
+        match self {
+            Family::Box2d2(_) => {}
+            Family::Box2d3(_) => box2d3::turned(bodies, say),
+        }
+    }
+
+    /// Whether what is not written is said as the Box2D v3 adapter always said it (its
+    /// tests hold it): all of it `lossy-capture`, a fixture whose shape has no form not
+    /// said again, and a joint's index counting the joints written before it. The 2.x
+    /// adapter's says each with its own code and counts the held joints.
+    fn v3_reports(self) -> bool {
+        matches!(self, Family::Box2d3(_))
+    }
+
+    /// Whether equal shapes and equal fixtures are written once. The Box2D v3 adapter
+    /// always wrote each engine shape as its own shape and fixture (its tests count them).
+    fn writes_equal_once(self) -> bool {
+        matches!(self, Family::Box2d2(_))
     }
 
     /// The scene joint (no bodies, joints, name or UserData) of a held joint between its
@@ -72,6 +112,7 @@ impl Family {
     ) -> Option<Joint> {
         match self {
             Family::Box2d2(version) => box2d2::joint(version, held, a, b, level, say),
+            Family::Box2d3(v3) => box2d3::joint(v3, held, say),
         }
     }
 }
@@ -126,6 +167,7 @@ pub(super) fn capture(
     for index in 0..held.bodies.len() {
         pass.body(index);
     }
+    pass.family.bodies_done(held.bodies, &mut pass.say(Object::World, 0, None));
     for placed in pass.joints_in_order() {
         match placed {
             Placed::Held(index) => pass.joint(index),
@@ -165,6 +207,8 @@ struct Pass<'h> {
     joints: Vec<u32>,
     /// Per level joint, the scene joint written, or NONE.
     level_written: Vec<u32>,
+    /// How many joints are written.
+    joints_written: u32,
 }
 
 fn some_text(text: Option<&str>) -> Option<&str> {
@@ -195,6 +239,7 @@ impl<'h> Pass<'h> {
             bodies: vec![NONE; held.bodies.len()],
             joints: vec![NONE; held.joints.len()],
             level_written: vec![NONE; level.joint_count() as usize],
+            joints_written: 0,
         }
     }
 
@@ -233,10 +278,10 @@ impl<'h> Pass<'h> {
         let name = some_text(held.shape_names.get(index as usize).copied().flatten())
             .or_else(|| some_text(self.level.shape_name(slot)));
         if let Some(other) = held.shape_others.get(index as usize).copied().flatten() {
-            self.say(Object::Shape, index, name).report(
-                Code::UnknownType,
-                format_args!("{other} has no Box2Scene form; not written"),
-            );
+            let code =
+                if self.family.v3_reports() { Code::LossyCapture } else { Code::UnknownType };
+            self.say(Object::Shape, index, name)
+                .report(code, format_args!("{other} has no Box2Scene form; not written"));
             return None;
         }
         // What the family says is kept until the shape is written: an equal shape written
@@ -249,7 +294,9 @@ impl<'h> Pass<'h> {
             return None;
         };
         let key = shape_key(&shape, &vertices, name);
-        if let Some(&found) = self.shapes.get(&key) {
+        if let Some(&found) =
+            self.family.writes_equal_once().then(|| self.shapes.get(&key)).flatten()
+        {
             return Some(found);
         }
         match self.builder.add_shape(&shape, name, &vertices) {
@@ -283,6 +330,9 @@ impl<'h> Pass<'h> {
         let label = self.fixture_label(index);
         let name = some_text(label.name);
         let Some(shape) = shape else {
+            if self.family.v3_reports() {
+                return None;
+            }
             self.say(Object::Fixture, index, name).report(
                 Code::SkippedDependent,
                 format_args!("its shape was not written; not written"),
@@ -292,7 +342,9 @@ impl<'h> Pass<'h> {
         let family = self.family;
         let fixture = family.fixture(&run[0], &mut self.say(Object::Fixture, index, name));
         let key = fixture_key(&fixture, shape, &label);
-        if let Some(&found) = self.fixtures.get(&key) {
+        if let Some(&found) =
+            self.family.writes_equal_once().then(|| self.fixtures.get(&key)).flatten()
+        {
             return Some(found);
         }
         let user_data = self.user_data(&label, Object::Fixture, index);
@@ -330,11 +382,11 @@ impl<'h> Pass<'h> {
         let mut runs = Vec::new();
         let mut first = shapes.start;
         while first < end {
-            let chain = self.held.shapes[first].chain;
-            let mut last = first + 1;
-            while chain != NONE && last < end && self.held.shapes[last].chain == chain {
-                last += 1;
-            }
+            let rest = &self.held.shapes[first..end];
+            let last = match rest[0].chain {
+                NONE => first + 1,
+                _ => first + self.family.chain_length(rest, self.held.points),
+            };
             runs.push(first..last);
             first = last;
         }
@@ -410,12 +462,12 @@ impl<'h> Pass<'h> {
         let joint = &held.joints[index];
         let label = self.joint_label(index);
         let name = some_text(label.name);
-        let i = index as u32;
+        let v3 = self.family.v3_reports();
+        let i = if v3 { self.joints_written } else { index as u32 };
         if let Some(other) = held.joint_others.get(index).copied().flatten() {
-            self.say(Object::Joint, i, name).report(
-                Code::SkippedJoint,
-                format_args!("{other} has no Box2Scene form; not written"),
-            );
+            let code = if v3 { Code::LossyCapture } else { Code::SkippedJoint };
+            self.say(Object::Joint, i, name)
+                .report(code, format_args!("{other} has no Box2Scene form; not written"));
             return;
         }
         let plan = &joint.joint;
@@ -436,10 +488,9 @@ impl<'h> Pass<'h> {
         let body_a = Self::written(&self.bodies, plan.body_a);
         let body_b = Self::written(&self.bodies, plan.body_b);
         if body_a == NONE || body_b == NONE {
-            self.say(Object::Joint, i, name).report(
-                Code::SkippedDependent,
-                format_args!("one of its bodies was not written; not written"),
-            );
+            let code = if v3 { Code::LossyCapture } else { Code::SkippedDependent };
+            self.say(Object::Joint, i, name)
+                .report(code, format_args!("one of its bodies was not written; not written"));
             return;
         }
         let (a, b) = (&held.bodies[plan.body_a as usize], &held.bodies[plan.body_b as usize]);
@@ -453,6 +504,7 @@ impl<'h> Pass<'h> {
         let record = Joint { body_a, body_b, joint_a, joint_b, user_data, ..made };
         match self.builder.add_joint(&record, name) {
             Ok(added) => {
+                self.joints_written += 1;
                 self.joints[index] = added;
                 if let Some(w) = self.level_written.get_mut(plan.joint as usize) {
                     *w = added;
@@ -492,9 +544,13 @@ impl<'h> Pass<'h> {
                 resolved &= *coupled != NONE;
             }
         }
+        let (code, index) = match self.family.v3_reports() {
+            true => (Code::LossyCapture, self.joints_written),
+            false => (Code::SkippedDependent, record),
+        };
         if !resolved {
-            self.say(Object::Joint, record, name).report(
-                Code::SkippedDependent,
+            self.say(Object::Joint, index, name).report(
+                code,
                 format_args!(
                     "scene joint {record}, which build_world skipped, names a body or joint not \
                      written (or has no Box2Scene form); not written"
@@ -504,7 +560,10 @@ impl<'h> Pass<'h> {
         }
         out.user_data = self.user_data(&label, Object::Joint, record);
         match self.builder.add_joint(&out, name) {
-            Ok(added) => self.level_written[record as usize] = added,
+            Ok(added) => {
+                self.joints_written += 1;
+                self.level_written[record as usize] = added;
+            }
             Err(e) => self.refused(&e, Object::Joint, record, name),
         }
     }
@@ -535,4 +594,12 @@ fn fixture_key(f: &Fixture, shape: u32, label: &Label) -> FixtureKey {
         text(label.user_data_value),
     ];
     (key, label)
+}
+
+/// What a family says of one object, for its unit tests: each report's code and message.
+#[cfg(test)]
+pub(crate) fn said<T>(run: impl FnOnce(&mut Say) -> T) -> (T, Vec<(Code, String)>) {
+    let mut said = Vec::new();
+    let out = run(&mut Say { said: &mut said, object: Object::World, index: 0, name: None });
+    (out, said.into_iter().map(|s| (s.code, s.message)).collect())
 }
