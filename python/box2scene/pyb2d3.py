@@ -62,10 +62,11 @@ class Built(Lookups):
     reports: List[Report] = field(default_factory=list)
     fixtures: List[Optional[object]] = field(default_factory=list)
     # What capture needs that pyb2d3 cannot read back: the scene (the level a capture keeps),
-    # and the plan's record of each joint the build made, by id (a v3 id names one object,
-    # never a later one).
+    # and the plan's record of each joint and chain the build made, by id (a v3 id names one
+    # object, never a later one).
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _joints: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
+    _chains: Dict[int, object] = field(default_factory=dict, repr=False, compare=False)
 
     @staticmethod
     def _same(made, wanted) -> bool:
@@ -156,6 +157,7 @@ class _Build:
             chain_def.filter = _filter(shape)
             self.report_chain_sensor(shape, body_index)
             chain = body.create_chain(chain_def)
+            self.built._chains[int(chain.id)] = shape
             self.built.chains[shape.slot] = chain
             return
         d.material = material
@@ -267,7 +269,7 @@ def build_world(scene: Scene, world: b2.World, *, maximum_linear_speed: float = 
 
 
 def _pair(v) -> Tuple[float, float]:
-    return (float(v[0]), float(v[1])) if isinstance(v, tuple) else (float(v.x), float(v.y))
+    return (float(v[0]), float(v[1]))
 
 
 _NONE = 0xFFFFFFFF
@@ -281,6 +283,7 @@ class _Read:
 
     def __init__(self, built: Optional[Built]):
         self.joints = built._joints if built is not None else {}
+        self.chains = built._chains if built is not None else {}
         self.slots: Dict[Tuple[bool, int], int] = {}
         if built is not None:
             for slot, made in enumerate(built.fixtures):
@@ -299,14 +302,18 @@ class _Read:
         )
         return held
 
-    def chain(self, chain: b2.Chain, first) -> List[dict]:
-        """A chain as v3 holds it: its segments, each with its ghosts, marked as one chain."""
-        slot = self.slots.get((True, int(chain.id)), _NONE)
-        held = []
-        for s in chain.get_segments():
-            points = [_pair(s.ghost1), _pair(s.segment.point1), _pair(s.segment.point2), _pair(s.ghost2)]
-            held.append(self.material(first, dict(kind="segment", points=points, chain=int(chain.id) & 0xFFFFFFFF, slot=slot)))
-        return held
+    def chain(self, chain: b2.Chain, first) -> dict:
+        """A chain held whole: pyb2d3 gives its segments without their ghosts, so one the build
+        made is the plan's, and one of the host's has its ghosts unread (NaN)."""
+        plan = self.chains.get(int(chain.id))
+        if plan is not None:
+            held = dict(kind=plan.kind, points=list(plan.points))
+        else:
+            segments = [s.segment for s in chain.get_segments()]
+            points = [_pair(s.point1) for s in segments] + [_pair(segments[-1].point2)]
+            held = dict(kind="chain", points=[(math.nan, math.nan)] + points + [(math.nan, math.nan)])
+        held["slot"] = self.slots.get((True, int(chain.id)), _NONE)
+        return self.material(first, held)
 
     def shape(self, s) -> dict:
         kind = _KINDS.get(s.type)
@@ -331,14 +338,14 @@ class _Read:
                 out.append(self.shape(s))
             elif int(s.parent_chain.id) not in seen:
                 seen.add(int(s.parent_chain.id))
-                out += self.chain(s.parent_chain, s)
+                out.append(self.chain(s.parent_chain, s))
         return out
 
     def body(self, body: b2.Body, record: int, name: Optional[str]) -> dict:
         m = body.mass_data
         return dict(
             body=record,
-            kind=int(body.type),
+            kind=body.type.value,
             name=name,
             position=_pair(body.position),
             rotation=(float(body.rotation.c), float(body.rotation.s)),
@@ -368,7 +375,7 @@ class _Read:
         )
         if plan is not None:  # what pyb2d3 cannot read: as the build gave it
             held.update(collide_connected=plan.collide_connected, reference_angle=plan.reference_angle, axis=plan.axis)
-        elif j.type in (T.REVOLUTE_JOINT, T.PRISMATIC_JOINT, T.WHEEL_JOINT, T.WELD_JOINT):
+        elif _NONE not in (held["body_a"], held["body_b"]) and j.type in (T.REVOLUTE_JOINT, T.PRISMATIC_JOINT, T.WHEEL_JOINT, T.WELD_JOINT):
             held["axis"] = (1.0, 0.0)
             self.reports.append(
                 Report(

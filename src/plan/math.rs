@@ -20,6 +20,12 @@ pub(crate) fn mul_sv(s: f32, v: Vec2) -> Vec2 {
     Vec2::new(s * v.x, s * v.y)
 }
 
+/// `end` continued by one segment away from `inner`: a ghost vertex for an open chain end
+/// that has none (Box2D 2.4's `CreateChain` and v3's chains need both).
+pub(crate) fn extrapolated(end: Vec2, inner: Vec2) -> Vec2 {
+    add(end, sub(end, inner))
+}
+
 pub(crate) fn dot(a: Vec2, b: Vec2) -> f32 {
     a.x * b.x + a.y * b.y
 }

@@ -20,8 +20,14 @@ fn without(say: &mut Say, what: &str) {
 }
 
 /// The scene joint (bodies, joints, name and user data left for the caller) for a held
-/// joint, or `None` where it has no form (reported).
-pub(crate) fn joint(v3: V3, held: &HeldJoint, say: &mut Say) -> Option<Joint> {
+/// joint, given the level's joint it was built from, or `None` where it has no form
+/// (reported).
+pub(crate) fn joint(
+    v3: V3,
+    held: &HeldJoint,
+    level: Option<&Joint>,
+    say: &mut Say,
+) -> Option<Joint> {
     let j = &held.joint;
     let kind = match PlanJointKind::try_from(j.kind) {
         Ok(PlanJointKind::Revolute) => JointKind::Revolute,
@@ -32,7 +38,7 @@ pub(crate) fn joint(v3: V3, held: &HeldJoint, say: &mut Say) -> Option<Joint> {
         Ok(PlanJointKind::Wheel) if j.enable_spring => JointKind::Wheel,
         Ok(PlanJointKind::Wheel) => JointKind::Line,
         Ok(PlanJointKind::Motor | PlanJointKind::Friction) => {
-            let mut joint = if v3.frames() { motor_v32(held, say) } else { motor_v31(held) };
+            let mut joint = if v3.frames() { motor_v32(held, say) } else { motor_v31(held, level) };
             joint.collide_connected = j.collide_connected;
             return Some(joint);
         }
@@ -203,8 +209,10 @@ fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say) {
 }
 
 /// v3.1's motor joint holds Box2D 2.3's fields: Friction where it holds no offset and no
-/// CorrectionFactor (what the build makes of one), else Motor.
-fn motor_v31(held: &HeldJoint) -> Joint {
+/// CorrectionFactor (what the build makes of one), else Motor. It holds no anchors: a
+/// Friction built from the level's keeps the level's, which the build reported it cannot
+/// act at.
+fn motor_v31(held: &HeldJoint, level: Option<&Joint>) -> Joint {
     let j = &held.joint;
     let offset = j.linear_offset;
     let friction =
@@ -215,6 +223,10 @@ fn motor_v31(held: &HeldJoint) -> Joint {
     joint.max_force = j.max_force;
     joint.max_torque = j.max_torque;
     joint.correction_factor = j.correction_factor;
+    if let Some(level) = level.filter(|l| friction && l.kind() == Some(JointKind::Friction)) {
+        joint.local_anchor_a = level.local_anchor_a;
+        joint.local_anchor_b = level.local_anchor_b;
+    }
     joint
 }
 

@@ -5,6 +5,7 @@ use crate::capture::HeldShape;
 use crate::capture::world::Say;
 use crate::plan::PlanShapeKind;
 use crate::plan::box2d3::V3;
+use crate::plan::math::extrapolated;
 use crate::plan::printf::G9;
 use crate::scene::{Filter, Fixture, NONE, Shape, ShapeKind, Vec2};
 
@@ -94,10 +95,8 @@ pub(crate) fn shape(
         }
         PlanShapeKind::Segment => Shape::new(ShapeKind::Edge),
         PlanShapeKind::Chain | PlanShapeKind::Loop => {
-            say.lossy(format_args!(
-                "a chain held whole, where Box2D v3 holds its segments; not written"
-            ));
-            return None;
+            let looped = kind == PlanShapeKind::Loop;
+            return whole_chain(looped, vertices, say).map(|segments| chain(v3, &segments));
         }
     };
     Some((shape, vertices))
@@ -114,6 +113,35 @@ pub(crate) fn fixture(held: &HeldShape, say: &mut Say) -> Fixture {
         filter: filter(held, say),
         ..Fixture::default()
     }
+}
+
+/// The segments of a chain held whole, as the plan gives it (a binding that cannot read a
+/// chain's segments keeps the build's): an open chain's points `[ghost, vertices..., ghost]`,
+/// a loop's its vertices. A ghost the binding could not read (NaN) is extrapolated from its
+/// end, as the plan extrapolates one the file leaves out, and reported.
+fn whole_chain(looped: bool, mut points: Vec<Vec2>, say: &mut Say) -> Option<Vec<[Vec2; 4]>> {
+    let n = points.len();
+    if n < if looped { 3 } else { 4 } {
+        say.lossy(format_args!("a chain of {n} points; not written"));
+        return None;
+    }
+    if looped {
+        let at = |i: usize| points[i % n];
+        return Some((0..n).map(|i| [at(i + n - 1), at(i), at(i + 1), at(i + 2)]).collect());
+    }
+    let unread = [0, n - 1].into_iter().filter(|&i| points[i].x.is_nan() || points[i].y.is_nan());
+    let unread: Vec<usize> = unread.collect();
+    for &i in &unread {
+        let (end, inner) =
+            if i == 0 { (points[1], points[2]) } else { (points[n - 2], points[n - 3]) };
+        points[i] = extrapolated(end, inner);
+    }
+    if !unread.is_empty() {
+        say.lossy(format_args!(
+            "its ghost points were not read: extrapolated from the chain's ends"
+        ));
+    }
+    Some(points.windows(4).map(|w| [w[0], w[1], w[2], w[3]]).collect())
 }
 
 /// The chain (or edge with ghost vertices) that a chain's segments make: a loop when the

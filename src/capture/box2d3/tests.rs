@@ -359,7 +359,7 @@ fn captured(
         .map(|&j| {
             let mut held = held_joint(j);
             hold(&mut held);
-            let (joint, said) = saying(|say| super::joint(v3, &held, say));
+            let (joint, said) = saying(|say| super::joint(v3, &held, None, say));
             (joint.unwrap(), said)
         })
         .collect()
@@ -541,7 +541,7 @@ fn a_revolute_or_prismatic_spring_is_said_and_a_kind_unknown_not_written() {
     let mut held =
         held_joint(PlanJoint { kind: PlanJointKind::Pulley as u32, ..PlanJoint::default() });
     held.joint.kind = 99;
-    let (joint, said) = saying(|say| super::joint(V3::V32, &held, say));
+    let (joint, said) = saying(|say| super::joint(V3::V32, &held, None, say));
     assert!(joint.is_none());
     assert_eq!(
         said,
@@ -661,4 +661,34 @@ fn v3_says_a_skipped_joint_it_cannot_write_back_as_lossy() {
              no Box2Scene form); not written"
         )
     );
+}
+
+/// v3.1 holds a Friction joint as a motor joint without anchors (the build reports that it
+/// acts at the body origins): a capture of the built world writes the level's anchors back,
+/// so that the file builds again as it did.
+#[test]
+fn a_v31_friction_joint_keeps_the_level_s_anchors() {
+    let level = crate::scene::Joint {
+        local_anchor_a: Vec2::new(9.0, 0.25),
+        local_anchor_b: Vec2::new(-1.0, 0.5),
+        max_force: 3.0,
+        max_torque: 1.0,
+        ..crate::scene::Joint::new(JointKind::Friction)
+    };
+    let held = held_joint(PlanJoint {
+        kind: PlanJointKind::Friction as u32,
+        max_force: 3.0,
+        max_torque: 1.0,
+        ..PlanJoint::default()
+    });
+    let (joint, said) = saying(|say| super::joint(V3::V31, &held, Some(&level), say));
+    let joint = joint.unwrap();
+    assert_eq!(said, Vec::<String>::new());
+    assert_eq!(joint.kind(), Some(JointKind::Friction));
+    assert_eq!(
+        (joint.local_anchor_a, joint.local_anchor_b),
+        (level.local_anchor_a, level.local_anchor_b)
+    );
+    let (host, _) = saying(|say| super::joint(V3::V31, &held, None, say));
+    assert_eq!(host.unwrap().local_anchor_a, Vec2::ZERO, "a host's friction joint holds none");
 }
