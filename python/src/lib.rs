@@ -986,16 +986,9 @@ impl NativeBuilder {
     }
 }
 
-/// The widths, in bits, of the scene's filter categories and masks and of its groups.
-#[pyfunction]
-fn filter_widths() -> (usize, usize) {
-    let f = box2scene::Filter::default();
-    (8 * size_of_val(&f.category_bits), 8 * size_of_val(&f.group_index))
-}
-
-/// Single-precision math as the engines' C code does it (the C library's `cosf`, `sinf` and
-/// `atan2f`, which Rust's `f32` methods call), for the builders' values that must match the
-/// C adapters bit for bit.
+/// Single-precision math as the engines' C code does it (the C library's `cosf` and `sinf`,
+/// which Rust's `f32` methods call), for a host's values that must match the C adapters bit
+/// for bit (the reference worlds the tests build by hand).
 #[pyfunction]
 fn cosf(x: f32) -> f32 {
     x.cos()
@@ -1004,22 +997,6 @@ fn cosf(x: f32) -> f32 {
 #[pyfunction]
 fn sinf(x: f32) -> f32 {
     x.sin()
-}
-
-#[pyfunction]
-fn atan2f(y: f32, x: f32) -> f32 {
-    y.atan2(x)
-}
-
-/// The float next to `x` in the direction of `toward` (C's `nextafterf`).
-#[pyfunction]
-fn nextafterf(x: f32, toward: f32) -> f32 {
-    match x.partial_cmp(&toward) {
-        Some(std::cmp::Ordering::Less) => x.next_up(),
-        Some(std::cmp::Ordering::Greater) => x.next_down(),
-        Some(std::cmp::Ordering::Equal) => toward,
-        None => f32::NAN,
-    }
 }
 
 /// The engine version a Python name means.
@@ -1116,11 +1093,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(load_path, m)?)?;
     m.add_function(wrap_pyfunction!(defaults, m)?)?;
-    m.add_function(wrap_pyfunction!(filter_widths, m)?)?;
     m.add_function(wrap_pyfunction!(cosf, m)?)?;
     m.add_function(wrap_pyfunction!(sinf, m)?)?;
-    m.add_function(wrap_pyfunction!(atan2f, m)?)?;
-    m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
     m.add_function(wrap_pyfunction!(make_plan, m)?)?;
     m.add_function(wrap_pyfunction!(world_gravity, m)?)?;

@@ -13,7 +13,7 @@ import pytest
 
 import box2scene
 import box2scene.pyb2d3 as b2s3
-from box2scene._f32 import cosf, sinf
+from box2scene._native import cosf, sinf
 
 from conftest import ROOT, scene_files, scene_id
 from helpers import DT, SceneMaker, codes, f32, finite, growth_over
