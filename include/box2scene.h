@@ -678,6 +678,12 @@ typedef uint32_t b2s_severity;
 typedef struct b2s_builder b2s_builder;
 
 /**
+ * A capture (opaque): the scene made of what a world holds, until taken, and the
+ * reports. Free it with `b2s_capture_free`.
+ */
+typedef struct b2s_capture b2s_capture;
+
+/**
  * A plan (opaque): what one engine version creates for a scene. It needs nothing of the
  * scene once made; free it with `b2s_plan_free`.
  */
@@ -1143,6 +1149,609 @@ typedef struct b2s_joint {
 } b2s_joint;
 
 /**
+ * A rotation, as its cosine and sine (Box2D v3's `b2Rot`).
+ */
+typedef struct b2s_rot {
+  /**
+   * The cosine of the angle.
+   */
+  float c;
+  /**
+   * The sine of the angle.
+   */
+  float s;
+} b2s_rot;
+
+/**
+ * Mass data to give a body after its shapes, in the engine's terms: `inertia` about the
+ * body origin in 2.x (`b2MassData::I`), about the centre of mass in v3
+ * (`rotationalInertia`).
+ */
+typedef struct b2s_plan_mass {
+  /**
+   * kg.
+   */
+  float mass;
+  /**
+   * m, in the body's frame.
+   */
+  struct b2s_vec2 center;
+  /**
+   * kg m^2.
+   */
+  float inertia;
+} b2s_plan_mass;
+
+/**
+ * One body to create, with its shapes and the mass to give it after them.
+ */
+typedef struct b2s_plan_body {
+  /**
+   * The scene body it is made from.
+   */
+  uint32_t body;
+  /**
+   * A `b2s_body_kind`, equal to the engine's body type.
+   */
+  uint32_t kind;
+  /**
+   * m: its origin, placed.
+   */
+  struct b2s_vec2 position;
+  /**
+   * rad: its angle, placed (what 2.x takes).
+   */
+  float angle;
+  /**
+   * Its rotation, placed (what v3 takes: the cosine and sine of the file's angle, turned
+   * by the placement's).
+   */
+  struct b2s_rot rotation;
+  /**
+   * m/s: its origin's velocity, placed.
+   */
+  struct b2s_vec2 linear_velocity;
+  /**
+   * rad/s.
+   */
+  float angular_velocity;
+  /**
+   * 1/s.
+   */
+  float linear_damping;
+  /**
+   * 1/s.
+   */
+  float angular_damping;
+  /**
+   * A multiple of the world's gravity.
+   */
+  float gravity_scale;
+  /**
+   * The name the engine keeps, or NULL where it keeps none (2.x, or a name longer
+   * than it keeps). Owned by the plan.
+   */
+  b2s_str name;
+  /**
+   * Its shapes, in the order to create them: a range of the plan's shapes.
+   */
+  struct b2s_range shapes;
+  /**
+   * The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
+   * the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
+   * dynamic body's mass as the engine holds it once made, given or not (what it
+   * computes from the shapes where `set_mass` is false), predicted bit for bit.
+   */
+  struct b2s_plan_mass mass;
+  /**
+   * m/s: the linear velocity to give it after its mass, where `set_velocity` (v3's
+   * `b2Body_SetMassData` does not keep the origin's velocity, as 2.x's does).
+   */
+  struct b2s_vec2 velocity_after_mass;
+  /**
+   * Whether it may sleep.
+   */
+  bool allow_sleep;
+  /**
+   * Whether it starts awake.
+   */
+  bool awake;
+  /**
+   * Whether its rotation is fixed (2.x and v3.1 `fixedRotation`, v3.2's angular lock).
+   */
+  bool fixed_rotation;
+  /**
+   * Whether it is a bullet.
+   */
+  bool bullet;
+  /**
+   * Whether it is enabled (the file's `Active`).
+   */
+  bool enabled;
+  /**
+   * Whether the executor computes its mass from its shapes once they are made (v3's
+   * `b2Body_ApplyMassFromShapes`), before `set_mass`.
+   */
+  bool apply_mass_from_shapes;
+  /**
+   * Whether the executor gives it `mass` after its shapes.
+   */
+  bool set_mass;
+  /**
+   * Whether the executor gives it `velocity_after_mass` after its mass.
+   */
+  bool set_velocity;
+} b2s_plan_body;
+
+/**
+ * The Name and UserData a host gives an object, or the engine keeps (v3's body name).
+ * All NULL: the object is unlabelled, and a capture of a built world takes the level's.
+ */
+typedef struct b2s_held_label {
+  /**
+   * The name, or NULL.
+   */
+  b2s_str name;
+  /**
+   * The UserData: raw XML, or a type name and value for the editor's form; all NULL for
+   * none.
+   */
+  struct b2s_user_data user_data;
+} b2s_held_label;
+
+/**
+ * One body as the engine holds it. `body` is read as the plan's, but:
+ * - `body.body`: the scene body it was built from, `B2S_NONE` for one of the host's;
+ * - `body.angle` the engine's angle (2.x `GetAngle`), `body.rotation` its transform's
+ *   rotation (2.x `GetTransform().q`, v3 `b2Body_GetRotation`);
+ * - `body.linear_velocity`: as the engine gives it (its centre of mass's);
+ * - `body.mass`: as the engine holds it (2.x `GetMass`, `GetLocalCenter`, `GetInertia`
+ *   about the origin; v3 `b2Body_GetMassData`, its inertia about the centre);
+ * - `body.shapes`: its held shapes, in the order they were created;
+ * - `body.name` is not read (the label is), nor `velocity_after_mass` and the three flags
+ *   of what an executor does.
+ */
+typedef struct b2s_held_body {
+  /**
+   * The body in the plan's terms.
+   */
+  struct b2s_plan_body body;
+  /**
+   * Its Name and UserData.
+   */
+  struct b2s_held_label label;
+} b2s_held_body;
+
+/**
+ * One shape to create on a body: a fixture of the scene on that body.
+ */
+typedef struct b2s_plan_shape {
+  /**
+   * The entry of the scene's fixture ID pool it is made for (a fixture may serve many
+   * bodies): what the executor's result is indexed by.
+   */
+  uint32_t slot;
+  /**
+   * The scene fixture.
+   */
+  uint32_t fixture;
+  /**
+   * The scene shape.
+   */
+  uint32_t shape;
+  /**
+   * A `b2s_plan_shape_kind`.
+   */
+  uint32_t kind;
+  /**
+   * Its points, a range of the plan's point pool (see `b2s_plan_shape_kind`).
+   */
+  struct b2s_range points;
+  /**
+   * m: a circle's centre, in the body's frame; in 2.x a polygon's centroid to keep (the
+   * file's `Centroid`), NaN where the engine keeps its own.
+   */
+  struct b2s_vec2 center;
+  /**
+   * m: a circle's radius.
+   */
+  float radius;
+  /**
+   * kg/m^2.
+   */
+  float density;
+  /**
+   * The friction coefficient.
+   */
+  float friction;
+  /**
+   * The restitution.
+   */
+  float restitution;
+  /**
+   * The collision filter.
+   */
+  struct b2s_filter filter;
+  /**
+   * Whether it is a sensor.
+   */
+  bool is_sensor;
+} b2s_plan_shape;
+
+/**
+ * One shape as the engine holds it. `shape` is read as the plan's, but:
+ * - `shape.slot`: the scene's fixture ID pool entry it was built for, `B2S_NONE` for one of
+ *   the host's; `fixture` and `shape` are not read;
+ * - `shape.kind` and `shape.points` as the plan gives them (a 2.x chain whole, its ghosts
+ *   around it; a loop is the engine's own points, as it holds them), and a v3 chain as its
+ *   segments: each a `SEGMENT` of four points `[ghost, ends, ghost]` with `chain` set;
+ * - `shape.center`: a circle's centre, a 2.x polygon's centroid;
+ * - `shape.radius`: a circle's radius, any other shape's skin (2.x `m_radius`, a v3
+ *   polygon's rounding);
+ * - `shape.filter`: not read (`category_bits`, `mask_bits`, `group_index` are).
+ */
+typedef struct b2s_held_shape {
+  /**
+   * The shape and its fixture's material, in the plan's terms.
+   */
+  struct b2s_plan_shape shape;
+  /**
+   * The filter's category bits, in the engine's width.
+   */
+  uint64_t category_bits;
+  /**
+   * The filter's mask bits.
+   */
+  uint64_t mask_bits;
+  /**
+   * The filter's group.
+   */
+  int32_t group_index;
+  /**
+   * m/s: 2.4's restitution threshold; NaN for an engine that has none.
+   */
+  float restitution_threshold;
+  /**
+   * The v3 chain a segment belongs to (any number the chain's segments share, they stand
+   * one after another), `B2S_NONE` for a shape of no chain.
+   */
+  uint32_t chain;
+  /**
+   * NULL for a shape of the plan's kinds; else what the engine's shape is, for the report
+   * that it has no form ("a capsule"), and `shape` is not read.
+   */
+  b2s_str other;
+  /**
+   * The fixture's Name and UserData.
+   */
+  struct b2s_held_label label;
+  /**
+   * The shape's Name, or NULL.
+   */
+  b2s_str shape_name;
+} b2s_held_shape;
+
+/**
+ * A rigid transform: a rotation about the origin, then a translation (`b2Transform`).
+ */
+typedef struct b2s_transform {
+  /**
+   * m: the translation.
+   */
+  struct b2s_vec2 p;
+  /**
+   * The rotation.
+   */
+  struct b2s_rot q;
+} b2s_transform;
+
+/**
+ * One joint to create, every field its kind's def has in the engine version, in its units.
+ * Fields a kind has not are 0.
+ */
+typedef struct b2s_plan_joint {
+  /**
+   * The scene joint it is made from; `B2S_NONE` for one the plan adds to the one before
+   * it (2.x: a rope holding a pulley's side, from a static body).
+   */
+  uint32_t joint;
+  /**
+   * A `b2s_plan_joint_kind`.
+   */
+  uint32_t kind;
+  /**
+   * The scene body A: the plan's body of that scene index.
+   */
+  uint32_t body_a;
+  /**
+   * The scene body B.
+   */
+  uint32_t body_b;
+  /**
+   * Gear: the plan joints (indices into the plan's joints) it couples.
+   */
+  uint32_t joint_a;
+  /**
+   * Gear: the second.
+   */
+  uint32_t joint_b;
+  /**
+   * m: the anchor on body A, in its frame (2.x and v3.1 `localAnchorA`).
+   */
+  struct b2s_vec2 anchor_a;
+  /**
+   * m: the anchor on body B (`localAnchorB`).
+   */
+  struct b2s_vec2 anchor_b;
+  /**
+   * The unit axis in body A's frame (`localAxisA`).
+   */
+  struct b2s_vec2 axis;
+  /**
+   * rad (`referenceAngle`).
+   */
+  float reference_angle;
+  /**
+   * Body A's local frame (v3.2 `localFrameA`).
+   */
+  struct b2s_transform frame_a;
+  /**
+   * Body B's local frame (v3.2 `localFrameB`).
+   */
+  struct b2s_transform frame_b;
+  /**
+   * m: a pulley's ground anchors, in world terms, placed.
+   */
+  struct b2s_vec2 ground_anchor_a;
+  /**
+   * m.
+   */
+  struct b2s_vec2 ground_anchor_b;
+  /**
+   * m: a pulley's lengths.
+   */
+  float length_a;
+  /**
+   * m.
+   */
+  float length_b;
+  /**
+   * A pulley's or gear's ratio.
+   */
+  float ratio;
+  /**
+   * m or rad: the limits (`lowerAngle`/`lowerTranslation`, ...).
+   */
+  float lower;
+  /**
+   * m or rad.
+   */
+  float upper;
+  /**
+   * m: a distance joint's length (a 2.3 rope's `maxLength`).
+   */
+  float length;
+  /**
+   * m: a distance joint's shortest and longest lengths.
+   */
+  float min_length;
+  /**
+   * m.
+   */
+  float max_length;
+  /**
+   * m/s or rad/s.
+   */
+  float motor_speed;
+  /**
+   * N or N m: the motor's force or torque.
+   */
+  float max_motor;
+  /**
+   * 2.x spring: N/m or N m/rad.
+   */
+  float stiffness;
+  /**
+   * 2.x spring: N s/m or N m s/rad.
+   */
+  float damping;
+  /**
+   * v3 spring: Hz (weld: angular; motor: linear and angular).
+   */
+  float hertz;
+  /**
+   * v3 spring: the damping ratio.
+   */
+  float damping_ratio;
+  /**
+   * m: a motor joint's linear offset (2.x and v3.1).
+   */
+  struct b2s_vec2 linear_offset;
+  /**
+   * rad: its angular offset.
+   */
+  float angular_offset;
+  /**
+   * N: a friction or motor joint's force maximum.
+   */
+  float max_force;
+  /**
+   * N m: its torque maximum.
+   */
+  float max_torque;
+  /**
+   * A motor joint's correction factor.
+   */
+  float correction_factor;
+  /**
+   * Whether the bodies collide.
+   */
+  bool collide_connected;
+  /**
+   * Whether the limit is on.
+   */
+  bool enable_limit;
+  /**
+   * Whether the motor is on.
+   */
+  bool enable_motor;
+  /**
+   * Whether the spring is on (v3).
+   */
+  bool enable_spring;
+} b2s_plan_joint;
+
+/**
+ * One joint as the engine holds it. `joint` is read as the plan's, but:
+ * - `joint.joint`: the scene joint it was built from, `B2S_NONE` for one of the host's;
+ * - `joint.body_a`, `joint.body_b`: held bodies (indices of the capture's bodies),
+ *   `B2S_NONE` for a body not held;
+ * - `joint.joint_a`, `joint.joint_b`: a gear's held joints;
+ * - every field as its getter gives it, the limits and spring flags of every kind too
+ *   (v3: `enable_spring` of a revolute, prismatic, distance and wheel joint; a distance
+ *   joint's `min_length` and `max_length`, `enable_limit` and `enable_motor`), v3.2 motor
+ *   joints' spring maxima in `max_force` and `max_torque`, their hertz and damping ratios
+ *   as `hertz`/`damping_ratio` (angular) and the linear pair here.
+ */
+typedef struct b2s_held_joint {
+  /**
+   * The joint in the plan's terms.
+   */
+  struct b2s_plan_joint joint;
+  /**
+   * Hz: a v3 weld's or v3.2 motor's linear spring.
+   */
+  float linear_hertz;
+  /**
+   * Its damping ratio.
+   */
+  float linear_damping_ratio;
+  /**
+   * m/s: a v3.2 motor joint's driven linear velocity.
+   */
+  struct b2s_vec2 linear_velocity;
+  /**
+   * rad/s: its driven angular velocity.
+   */
+  float angular_velocity;
+  /**
+   * N: its velocity drive's maximum force (a v3.2 motor joint).
+   */
+  float max_velocity_force;
+  /**
+   * N m: its velocity drive's maximum torque.
+   */
+  float max_velocity_torque;
+  /**
+   * NULL for a joint of the plan's kinds; else what the engine's joint is, for the
+   * report that it has no form ("a mouse joint"), and `joint` is not read.
+   */
+  b2s_str other;
+  /**
+   * Its Name and UserData.
+   */
+  struct b2s_held_label label;
+} b2s_held_joint;
+
+/**
+ * What an engine holds of a world, read for a capture: every array in the engine's
+ * creation order (a host's subset of bodies, in its order, where the adapter takes one).
+ */
+typedef struct b2s_held_world {
+  /**
+   * The engine version, a `b2s_engine` number.
+   */
+  uint32_t engine;
+  /**
+   * m/s^2: the world's gravity.
+   */
+  struct b2s_vec2 gravity;
+  /**
+   * The `body_count` bodies.
+   */
+  const struct b2s_held_body *bodies;
+  /**
+   * The `shape_count` shapes, each body's a range.
+   */
+  const struct b2s_held_shape *shapes;
+  /**
+   * The point pool the shapes' `points` ranges index.
+   */
+  const struct b2s_vec2 *points;
+  /**
+   * The `joint_count` joints.
+   */
+  const struct b2s_held_joint *joints;
+  /**
+   * The scene joints the build skipped (the engine could not hold them), in the scene's
+   * order: a capture of a built world writes them back where the file had them.
+   */
+  const uint32_t *skipped_joints;
+  /**
+   * Number of items in `bodies`.
+   */
+  uint32_t body_count;
+  /**
+   * Number of items in `shapes`.
+   */
+  uint32_t shape_count;
+  /**
+   * Number of items in `points`.
+   */
+  uint32_t point_count;
+  /**
+   * Number of items in `joints`.
+   */
+  uint32_t joint_count;
+  /**
+   * Number of items in `skipped_joints`.
+   */
+  uint32_t skipped_count;
+} b2s_held_world;
+
+/**
+ * Something of the scene the engine version cannot hold, or holds only approximately.
+ */
+typedef struct b2s_plan_report {
+  /**
+   * A `b2s_code`: `B2S_CODE_BEYOND_BOX2D_RANGE`, `B2S_CODE_SKIPPED_JOINT`, ...
+   */
+  uint32_t code;
+  /**
+   * "shape", "fixture", "body", "joint" or "world" (static storage).
+   */
+  b2s_str object;
+  /**
+   * The object's index in the scene's array of its kind.
+   */
+  uint32_t index;
+  /**
+   * The object's Name, or NULL. Owned by the plan.
+   */
+  b2s_str name;
+  /**
+   * What happened, for a level designer. Owned by the plan.
+   */
+  b2s_str message;
+} b2s_plan_report;
+
+/**
+ * A capture's reports: what the scene could not hold exactly or did not write, in the
+ * order met, each `index` counting the held objects of its kind (a joint the build
+ * skipped: its index in the level's joints).
+ */
+typedef struct b2s_capture_view {
+  /**
+   * The `report_count` reports.
+   */
+  const struct b2s_plan_report *reports;
+  /**
+   * Number of items in `reports`.
+   */
+  uint32_t report_count;
+} b2s_capture_view;
+
+/**
  * How to load: strictness and the limits of the input. Exceeding a limit is error
  * `limit-exceeded`, whose message names the limit.
  */
@@ -1463,34 +2072,6 @@ typedef struct b2s_working_range {
 } b2s_working_range;
 
 /**
- * A rotation, as its cosine and sine (Box2D v3's `b2Rot`).
- */
-typedef struct b2s_rot {
-  /**
-   * The cosine of the angle.
-   */
-  float c;
-  /**
-   * The sine of the angle.
-   */
-  float s;
-} b2s_rot;
-
-/**
- * A rigid transform: a rotation about the origin, then a translation (`b2Transform`).
- */
-typedef struct b2s_transform {
-  /**
-   * m: the translation.
-   */
-  struct b2s_vec2 p;
-  /**
-   * The rotation.
-   */
-  struct b2s_rot q;
-} b2s_transform;
-
-/**
  * What a plan is made for: the engine version, where the scene is placed, and the world
  * it is built into (its settings, as the host made them).
  */
@@ -1520,365 +2101,6 @@ typedef struct b2s_plan_options {
    */
   uint32_t name_bytes;
 } b2s_plan_options;
-
-/**
- * Mass data to give a body after its shapes, in the engine's terms: `inertia` about the
- * body origin in 2.x (`b2MassData::I`), about the centre of mass in v3
- * (`rotationalInertia`).
- */
-typedef struct b2s_plan_mass {
-  /**
-   * kg.
-   */
-  float mass;
-  /**
-   * m, in the body's frame.
-   */
-  struct b2s_vec2 center;
-  /**
-   * kg m^2.
-   */
-  float inertia;
-} b2s_plan_mass;
-
-/**
- * One body to create, with its shapes and the mass to give it after them.
- */
-typedef struct b2s_plan_body {
-  /**
-   * The scene body it is made from.
-   */
-  uint32_t body;
-  /**
-   * A `b2s_body_kind`, equal to the engine's body type.
-   */
-  uint32_t kind;
-  /**
-   * m: its origin, placed.
-   */
-  struct b2s_vec2 position;
-  /**
-   * rad: its angle, placed (what 2.x takes).
-   */
-  float angle;
-  /**
-   * Its rotation, placed (what v3 takes: the cosine and sine of the file's angle, turned
-   * by the placement's).
-   */
-  struct b2s_rot rotation;
-  /**
-   * m/s: its origin's velocity, placed.
-   */
-  struct b2s_vec2 linear_velocity;
-  /**
-   * rad/s.
-   */
-  float angular_velocity;
-  /**
-   * 1/s.
-   */
-  float linear_damping;
-  /**
-   * 1/s.
-   */
-  float angular_damping;
-  /**
-   * A multiple of the world's gravity.
-   */
-  float gravity_scale;
-  /**
-   * The name the engine keeps, or NULL where it keeps none (2.x, or a name longer
-   * than it keeps). Owned by the plan.
-   */
-  b2s_str name;
-  /**
-   * Its shapes, in the order to create them: a range of the plan's shapes.
-   */
-  struct b2s_range shapes;
-  /**
-   * The mass to give it after its shapes, where `set_mass`. In 2.x, where not, the mass
-   * the engine computes from its shapes (what `b2Body::GetMassData` gives). For v3, a
-   * dynamic body's mass as the engine holds it once made, given or not (what it
-   * computes from the shapes where `set_mass` is false), predicted bit for bit.
-   */
-  struct b2s_plan_mass mass;
-  /**
-   * m/s: the linear velocity to give it after its mass, where `set_velocity` (v3's
-   * `b2Body_SetMassData` does not keep the origin's velocity, as 2.x's does).
-   */
-  struct b2s_vec2 velocity_after_mass;
-  /**
-   * Whether it may sleep.
-   */
-  bool allow_sleep;
-  /**
-   * Whether it starts awake.
-   */
-  bool awake;
-  /**
-   * Whether its rotation is fixed (2.x and v3.1 `fixedRotation`, v3.2's angular lock).
-   */
-  bool fixed_rotation;
-  /**
-   * Whether it is a bullet.
-   */
-  bool bullet;
-  /**
-   * Whether it is enabled (the file's `Active`).
-   */
-  bool enabled;
-  /**
-   * Whether the executor computes its mass from its shapes once they are made (v3's
-   * `b2Body_ApplyMassFromShapes`), before `set_mass`.
-   */
-  bool apply_mass_from_shapes;
-  /**
-   * Whether the executor gives it `mass` after its shapes.
-   */
-  bool set_mass;
-  /**
-   * Whether the executor gives it `velocity_after_mass` after its mass.
-   */
-  bool set_velocity;
-} b2s_plan_body;
-
-/**
- * One shape to create on a body: a fixture of the scene on that body.
- */
-typedef struct b2s_plan_shape {
-  /**
-   * The entry of the scene's fixture ID pool it is made for (a fixture may serve many
-   * bodies): what the executor's result is indexed by.
-   */
-  uint32_t slot;
-  /**
-   * The scene fixture.
-   */
-  uint32_t fixture;
-  /**
-   * The scene shape.
-   */
-  uint32_t shape;
-  /**
-   * A `b2s_plan_shape_kind`.
-   */
-  uint32_t kind;
-  /**
-   * Its points, a range of the plan's point pool (see `b2s_plan_shape_kind`).
-   */
-  struct b2s_range points;
-  /**
-   * m: a circle's centre, in the body's frame; in 2.x a polygon's centroid to keep (the
-   * file's `Centroid`), NaN where the engine keeps its own.
-   */
-  struct b2s_vec2 center;
-  /**
-   * m: a circle's radius.
-   */
-  float radius;
-  /**
-   * kg/m^2.
-   */
-  float density;
-  /**
-   * The friction coefficient.
-   */
-  float friction;
-  /**
-   * The restitution.
-   */
-  float restitution;
-  /**
-   * The collision filter.
-   */
-  struct b2s_filter filter;
-  /**
-   * Whether it is a sensor.
-   */
-  bool is_sensor;
-} b2s_plan_shape;
-
-/**
- * One joint to create, every field its kind's def has in the engine version, in its units.
- * Fields a kind has not are 0.
- */
-typedef struct b2s_plan_joint {
-  /**
-   * The scene joint it is made from; `B2S_NONE` for one the plan adds to the one before
-   * it (2.x: a rope holding a pulley's side, from a static body).
-   */
-  uint32_t joint;
-  /**
-   * A `b2s_plan_joint_kind`.
-   */
-  uint32_t kind;
-  /**
-   * The scene body A: the plan's body of that scene index.
-   */
-  uint32_t body_a;
-  /**
-   * The scene body B.
-   */
-  uint32_t body_b;
-  /**
-   * Gear: the plan joints (indices into the plan's joints) it couples.
-   */
-  uint32_t joint_a;
-  /**
-   * Gear: the second.
-   */
-  uint32_t joint_b;
-  /**
-   * m: the anchor on body A, in its frame (2.x and v3.1 `localAnchorA`).
-   */
-  struct b2s_vec2 anchor_a;
-  /**
-   * m: the anchor on body B (`localAnchorB`).
-   */
-  struct b2s_vec2 anchor_b;
-  /**
-   * The unit axis in body A's frame (`localAxisA`).
-   */
-  struct b2s_vec2 axis;
-  /**
-   * rad (`referenceAngle`).
-   */
-  float reference_angle;
-  /**
-   * Body A's local frame (v3.2 `localFrameA`).
-   */
-  struct b2s_transform frame_a;
-  /**
-   * Body B's local frame (v3.2 `localFrameB`).
-   */
-  struct b2s_transform frame_b;
-  /**
-   * m: a pulley's ground anchors, in world terms, placed.
-   */
-  struct b2s_vec2 ground_anchor_a;
-  /**
-   * m.
-   */
-  struct b2s_vec2 ground_anchor_b;
-  /**
-   * m: a pulley's lengths.
-   */
-  float length_a;
-  /**
-   * m.
-   */
-  float length_b;
-  /**
-   * A pulley's or gear's ratio.
-   */
-  float ratio;
-  /**
-   * m or rad: the limits (`lowerAngle`/`lowerTranslation`, ...).
-   */
-  float lower;
-  /**
-   * m or rad.
-   */
-  float upper;
-  /**
-   * m: a distance joint's length (a 2.3 rope's `maxLength`).
-   */
-  float length;
-  /**
-   * m: a distance joint's shortest and longest lengths.
-   */
-  float min_length;
-  /**
-   * m.
-   */
-  float max_length;
-  /**
-   * m/s or rad/s.
-   */
-  float motor_speed;
-  /**
-   * N or N m: the motor's force or torque.
-   */
-  float max_motor;
-  /**
-   * 2.x spring: N/m or N m/rad.
-   */
-  float stiffness;
-  /**
-   * 2.x spring: N s/m or N m s/rad.
-   */
-  float damping;
-  /**
-   * v3 spring: Hz (weld: angular; motor: linear and angular).
-   */
-  float hertz;
-  /**
-   * v3 spring: the damping ratio.
-   */
-  float damping_ratio;
-  /**
-   * m: a motor joint's linear offset (2.x and v3.1).
-   */
-  struct b2s_vec2 linear_offset;
-  /**
-   * rad: its angular offset.
-   */
-  float angular_offset;
-  /**
-   * N: a friction or motor joint's force maximum.
-   */
-  float max_force;
-  /**
-   * N m: its torque maximum.
-   */
-  float max_torque;
-  /**
-   * A motor joint's correction factor.
-   */
-  float correction_factor;
-  /**
-   * Whether the bodies collide.
-   */
-  bool collide_connected;
-  /**
-   * Whether the limit is on.
-   */
-  bool enable_limit;
-  /**
-   * Whether the motor is on.
-   */
-  bool enable_motor;
-  /**
-   * Whether the spring is on (v3).
-   */
-  bool enable_spring;
-} b2s_plan_joint;
-
-/**
- * Something of the scene the engine version cannot hold, or holds only approximately.
- */
-typedef struct b2s_plan_report {
-  /**
-   * A `b2s_code`: `B2S_CODE_BEYOND_BOX2D_RANGE`, `B2S_CODE_SKIPPED_JOINT`, ...
-   */
-  uint32_t code;
-  /**
-   * "shape", "fixture", "body", "joint" or "world" (static storage).
-   */
-  b2s_str object;
-  /**
-   * The object's index in the scene's array of its kind.
-   */
-  uint32_t index;
-  /**
-   * The object's Name, or NULL. Owned by the plan.
-   */
-  b2s_str name;
-  /**
-   * What happened, for a level designer. Owned by the plan.
-   */
-  b2s_str message;
-} b2s_plan_report;
 
 /**
  * A read-only view of a plan: a pointer and a count per array. Valid until the plan is
@@ -2151,6 +2373,52 @@ b2s_code b2s_body_default(b2s_body_kind kind, struct b2s_body *out);
  * `out` is NULL or writable.
  */
 b2s_code b2s_joint_default(b2s_joint_kind kind, struct b2s_joint *out);
+
+/**
+ * Makes the scene of what `world` holds and the reports of what it cannot hold exactly.
+ * `level` is the scene the world was built from, or NULL: given, the held records that
+ * name its records (`body.body`, `shape.slot`, `joint.joint`) take its Names and UserData
+ * where they carry none, its joints are written in its order and the ones the build
+ * skipped (`skipped_joints`) written back as it has them. On success returns
+ * `B2S_CODE_OK` and stores a new capture in `*out_capture`; free it with
+ * `b2s_capture_free`. An engine number whose capture the library does not make, or a text
+ * that is not UTF-8, fails with `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there,
+ * returns the error's code and, when `error` is not NULL, fills it. Thread-safe.
+ *
+ * # Safety
+ * `world` is NULL or valid, each array holding its count of records and each text NULL or
+ * NUL-terminated; `level` NULL or a live scene; `out_capture` NULL or writable; `error`
+ * NULL or writable.
+ */
+b2s_code b2s_capture_make(const struct b2s_held_world *world,
+                          const struct b2s_scene *level,
+                          struct b2s_capture **out_capture,
+                          struct b2s_error *error);
+
+/**
+ * The capture's reports. NULL for a NULL capture. Valid until the capture is freed.
+ *
+ * # Safety
+ * `capture` is NULL or a live capture.
+ */
+const struct b2s_capture_view *b2s_capture_get_view(const struct b2s_capture *capture);
+
+/**
+ * The captured scene, once: the caller owns it (`b2s_scene_free`). NULL for a NULL
+ * capture or one whose scene was taken.
+ *
+ * # Safety
+ * `capture` is NULL or a live capture.
+ */
+struct b2s_scene *b2s_capture_take_scene(struct b2s_capture *capture);
+
+/**
+ * Frees a capture, its reports and its scene unless taken. NULL is ignored.
+ *
+ * # Safety
+ * `capture` is NULL or a capture from `b2s_capture_make` that was not freed yet.
+ */
+void b2s_capture_free(struct b2s_capture *capture);
 
 /**
  * The library's version, `"MAJOR.MINOR.PATCH"` (the same as `B2S_VERSION_STRING` of the

@@ -459,3 +459,96 @@ fn a_worlds_gravity_is_the_files_where_the_engine_holds_it() {
         b2s_scene_free(strong);
     }
 }
+
+fn unlabelled() -> box2scene::capture::HeldLabel {
+    box2scene::capture::HeldLabel {
+        name: Str::NULL,
+        user_data: UserData { raw: Str::NULL, type_name: Str::NULL, value: Str::NULL },
+    }
+}
+
+#[test]
+fn a_capture_of_a_built_world_is_labelled_from_its_level_and_its_scene_taken_once() {
+    use box2scene::capture::{HeldBody, HeldJoint, HeldShape, HeldWorld};
+    let (scene, code, _) = load_text(SCENE);
+    assert_eq!(code, Code::Ok);
+    let engine = box2scene::Engine::Box2d24 as u32;
+    let mut plan = null_mut();
+    let mut capture = null_mut();
+    let mut error = no_error();
+    unsafe {
+        assert_eq!(b2s_plan_make(scene, &plan_options(engine), &mut plan, &mut error), Code::Ok);
+        // what Box2D 2.4 holds once it has made the plan, unlabelled
+        let view = &*b2s_plan_get_view(plan);
+        let bodies: Vec<HeldBody> = slice(view.bodies, view.body_count)
+            .iter()
+            .map(|&body| HeldBody { body, label: unlabelled() })
+            .collect();
+        let shapes: Vec<HeldShape> = slice(view.shapes, view.shape_count)
+            .iter()
+            .map(|&shape| HeldShape {
+                shape,
+                category_bits: 1,
+                mask_bits: 0xFFFF,
+                group_index: 0,
+                restitution_threshold: 1.0,
+                chain: NONE,
+                other: Str::NULL,
+                label: unlabelled(),
+                shape_name: Str::NULL,
+            })
+            .collect();
+        let joints: Vec<HeldJoint> = slice(view.joints, view.joint_count)
+            .iter()
+            .map(|&joint| HeldJoint {
+                joint,
+                linear_hertz: 0.0,
+                linear_damping_ratio: 0.0,
+                linear_velocity: Vec2 { x: 0.0, y: 0.0 },
+                angular_velocity: 0.0,
+                max_velocity_force: 0.0,
+                max_velocity_torque: 0.0,
+                other: Str::NULL,
+                label: unlabelled(),
+            })
+            .collect();
+        let world = HeldWorld {
+            engine,
+            gravity: Vec2 { x: 0.0, y: -10.0 },
+            bodies: bodies.as_ptr(),
+            shapes: shapes.as_ptr(),
+            points: view.points,
+            joints: joints.as_ptr(),
+            skipped_joints: null(),
+            body_count: view.body_count,
+            shape_count: view.shape_count,
+            point_count: view.point_count,
+            joint_count: view.joint_count,
+            skipped_count: 0,
+        };
+        assert_eq!(b2s_capture_make(null(), scene, &mut capture, &mut error), Code::NullArgument);
+        assert!(capture.is_null());
+        assert_eq!(b2s_capture_make(&world, scene, &mut capture, &mut error), Code::Ok);
+        b2s_plan_free(plan);
+        let reports = &*b2s_capture_get_view(capture);
+        assert_eq!(reports.report_count, 0);
+        let saved = b2s_capture_take_scene(capture);
+        assert!(b2s_capture_take_scene(capture).is_null(), "a capture's scene is taken once");
+        b2s_capture_free(capture);
+        let view = &*b2s_scene_get_view(saved);
+        let saved_bodies = slice(view.bodies, view.body_count);
+        assert_eq!(text(saved_bodies[0].name.as_ptr()), "ground");
+        assert_eq!(text(saved_bodies[1].name.as_ptr()), "ball");
+        assert_ne!(saved_bodies[1].user_data, NONE);
+        assert_eq!(text(slice(view.joints, view.joint_count)[0].name.as_ptr()), "pin");
+        b2s_scene_free(saved);
+        let unknown = HeldWorld { engine: 99, ..world };
+        assert_eq!(
+            b2s_capture_make(&unknown, null(), &mut capture, &mut error),
+            Code::InvalidArgument
+        );
+        assert!(b2s_capture_get_view(null()).is_null());
+        b2s_capture_free(null_mut());
+        b2s_scene_free(scene);
+    }
+}

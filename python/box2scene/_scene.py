@@ -196,6 +196,10 @@ class Scene:
         """The index of the first body named ``name``, or None."""
         return next((i for i, b in enumerate(self.bodies) if b.name == name), None)
 
+    def find_fixture(self, name: str) -> Optional[int]:
+        """The index of the first fixture named ``name``, or None."""
+        return next((i for i, f in enumerate(self.fixtures) if f.name == name), None)
+
     def find_joint(self, name: str) -> Optional[int]:
         """The index of the first joint named ``name``, or None."""
         return next((i for i, j in enumerate(self.joints) if j.name == name), None)

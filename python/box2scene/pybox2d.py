@@ -33,10 +33,9 @@ import Box2D as B
 
 from . import _native
 from ._error import Error
-from ._f32 import F, f32, search_ulps
-from ._records import Body, Fixture, Joint, Shape
+from ._lookup import Lookups
 from ._report import Report
-from ._scene import Builder, Scene
+from ._scene import Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
@@ -44,7 +43,7 @@ ENGINE = "box2d-2.3"
 
 
 @dataclass
-class Built:
+class Built(Lookups):
     """What :func:`build_world` created, index for index with the scene: ``bodies[i]`` for
     body ``i``, ``fixtures[k]`` for the fixture at slot ``k`` of the scene's
     ``fixture_ids``, ``joints[j]`` for joint ``j``; None where nothing was created
@@ -55,11 +54,20 @@ class Built:
     joints: List[Optional[B.b2Joint]]
     reports: List[Report] = field(default_factory=list)
     # What capture needs: the scene (what 2.3's bindings cannot read back, and the names),
-    # and the userData the build gives its fixtures and joints, which tells them from ones
-    # the host makes later at their freed addresses (Box2D reuses them). One object a build, since
+    # and the userData the build gives its bodies, fixtures and joints, which tells them from
+    # ones the host makes later at their freed addresses (Box2D reuses them). One object a build, since
     # pybox2d never releases a joint's userData when its world goes.
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _mark: object = field(default_factory=object, repr=False, compare=False)
+    # The plan's record of each joint built, index for index with ``joints`` (what pybox2d
+    # has no getter for), and the scene joints each built gear couples.
+    _plans: List[object] = field(default_factory=list, repr=False, compare=False)
+    _coupled: Dict[int, Tuple[int, int]] = field(default_factory=dict, repr=False, compare=False)
+
+    def _same(self, made, wanted) -> bool:
+        """pybox2d wraps one Box2D object in many Python objects: its address and the
+        build's mark tell them apart (Box2D gives a freed address to a later object)."""
+        return int(made.this) == int(wanted.this) and wanted.userData is self._mark
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
@@ -148,10 +156,12 @@ class _Build:
         reports = [Report(*r) for r in plan.reports]
         slots = [None] * plan.slot_count
         self.built = Built([None] * plan.body_count, slots, [None] * plan.joint_count, reports, scene)
+        self.built._plans = [None] * plan.joint_count
         # One pybox2d shape per scene shape, which Box2D clones into each of its fixtures.
         self.shapes: Dict[int, object] = {}
         # Index for index with the plan's joints: what a gear couples.
         self.made: List[B.b2Joint] = []
+        self.plans: List[object] = []
 
     def make_fixture(self, shape, body: B.b2Body) -> None:
         made = self.shapes.get(shape.shape)
@@ -187,6 +197,7 @@ class _Build:
                 bullet=body.bullet,
                 fixedRotation=body.fixed_rotation,
                 active=body.enabled,
+                userData=self.built._mark,
             )
         )
         for shape in body.shapes:
@@ -207,6 +218,10 @@ class _Build:
         self.made.append(created)
         if j.joint < len(self.built.joints):  # not a rope the plan adds to a pulley's side
             self.built.joints[j.joint] = created
+            self.built._plans[j.joint] = j
+        if j.kind == "gear":
+            self.built._coupled[j.joint] = (self.plans[j.joint_a].joint, self.plans[j.joint_b].joint)
+        self.plans.append(j)
 
 
 def build_world(scene: Scene, world: B.b2World) -> Built:
@@ -226,321 +241,186 @@ def build_world(scene: Scene, world: B.b2World) -> Built:
     return b.built
 
 
-def _shift(body: B.b2Body, w: float):
-    """w x (centre of mass - origin), as Box2D computes it in floats."""
-    xf = body.transform
-    c, s = F(xf.q.c), F(xf.q.s)
-    lx, ly = F(body.localCenter[0]), F(body.localCenter[1])
-    px, py = F(xf.position[0]), F(xf.position[1])
-    cx = (c * lx - s * ly) + px
-    cy = (s * lx + c * ly) + py
-    return (-F(w) * (cy - py), F(w) * (cx - px))
+# ---- capture: pybox2d's getters read into the library's held records
 
-
-def _origin_velocity(body: B.b2Body, velocity, w: float):
-    """The origin velocity whose centre velocity, as the build gives it, is ``velocity``."""
-    shift = _shift(body, w)
-    out = []
-    for target, delta in zip(velocity, shift):
-        _, before = search_ulps(f32(target - float(delta)), lambda x, t=target, d=delta: float(F(x) + d) == t)
-        out.append(before)
-    return tuple(out)
-
-
-def _computed_mass(body: B.b2Body):
-    """The mass data Box2D 2.3's ResetMassData gives ``body`` from its fixtures, as
-    GetMassData reports it (inertia about the origin), operation for operation."""
-    mass, cx, cy, inertia = F(0), F(0), F(0), F(0)
-    for f in body.fixtures:
-        if f.density == 0:
-            continue
-        m = f.massData
-        mass += F(m.mass)
-        cx = cx + F(m.mass) * F(m.center[0])
-        cy = cy + F(m.mass) * F(m.center[1])
-        inertia += F(m.I)
-    if mass > 0:
-        inverse = F(1) / mass
-        cx, cy = inverse * cx, inverse * cy
-    else:
-        mass = F(1)
-    dot = cx * cx + cy * cy
-    if inertia > 0 and not body.fixedRotation:
-        inertia -= mass * dot
-    else:
-        inertia = F(0)
-    return float(mass), (float(cx), float(cy)), float(inertia + mass * dot)
-
-
-# ---- capture
-
-_JOINT_CLASSES = [
-    ("revolute", B.b2RevoluteJoint),
-    ("prismatic", B.b2PrismaticJoint),
-    ("distance", B.b2DistanceJoint),
-    ("rope", B.b2RopeJoint),
-    ("wheel", B.b2WheelJoint),
-    ("weld", B.b2WeldJoint),
-    ("friction", B.b2FrictionJoint),
-    ("motor", B.b2MotorJoint),
-    ("pulley", B.b2PulleyJoint),
-    ("gear", B.b2GearJoint),
-]
-_JOINT_FIELDS = [f for f in Joint.__dataclass_fields__ if f not in ("kind", "name", "body_a", "body_b", "joint_a", "joint_b", "user_data")]
-
-
-def _anchors():
-    return [("local_anchor_a", lambda j: j.GetLocalAnchorA()), ("local_anchor_b", lambda j: j.GetLocalAnchorB())]
-
-
-# What can change in a live joint, read back where pybox2d has a getter; the rest is what
-# the builder gave the joint (and its defaults for a joint it did not build).
-_LIVE = {
-    "revolute": _anchors() + [
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("enable_limit", lambda j: bool(j.limitEnabled)),
-        ("lower_limit", lambda j: float(j.lowerLimit)),
-        ("upper_limit", lambda j: float(j.upperLimit)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
-    ],
-    "prismatic": _anchors() + [
-        ("local_axis_a", lambda j: j.GetLocalAxisA()),
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("enable_limit", lambda j: bool(j.limitEnabled)),
-        ("lower_limit", lambda j: float(j.lowerLimit)),
-        ("upper_limit", lambda j: float(j.upperLimit)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_force", lambda j: float(j.maxMotorForce)),
-    ],
-    "distance": _anchors() + [
-        ("length", lambda j: float(j.length)),
-        ("frequency_hz", lambda j: float(j.frequency)),
-        ("damping_ratio", lambda j: float(j.dampingRatio)),
-    ],
-    "rope": _anchors() + [("max_length", lambda j: float(j.maxLength))],
-    "wheel": _anchors() + [
-        ("local_axis_a", lambda j: j.GetLocalAxisA()),
-        ("frequency_hz", lambda j: float(j.springFrequencyHz)),
-        ("damping_ratio", lambda j: float(j.springDampingRatio)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
-    ],
-    "line": _anchors() + [("local_axis_a", lambda j: j.GetLocalAxisA())],
-    "weld": _anchors() + [
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("frequency_hz", lambda j: float(j.GetFrequency())),
-        ("damping_ratio", lambda j: float(j.GetDampingRatio())),
-    ],
-    "friction": _anchors() + [
-        ("max_force", lambda j: float(j.maxForce)),
-        ("max_torque", lambda j: float(j.maxTorque)),
-    ],
-    "motor": [
-        ("linear_offset", lambda j: j.linearOffset),
-        ("angular_offset", lambda j: float(j.angularOffset)),
-        ("max_force", lambda j: float(j.maxForce)),
-        ("max_torque", lambda j: float(j.maxTorque)),
-        ("correction_factor", lambda j: float(j.GetCorrectionFactor())),
-    ],
-    "pulley": _anchors() + [
-        ("ground_anchor_a", lambda j: j.groundAnchorA),
-        ("ground_anchor_b", lambda j: j.groundAnchorB),
-        ("length_a", lambda j: float(j.lengthA)),
-        ("length_b", lambda j: float(j.lengthB)),
-        ("ratio", lambda j: float(j.ratio)),
-    ],
-    "gear": [("ratio", lambda j: float(j.ratio))],
-}
+_NONE = 0xFFFFFFFF
+_NAN = (math.nan, math.nan)
 
 
 def _vec(v) -> Tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-class _Capture:
-    def __init__(self, world: B.b2World, built: Optional[Built], bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]]):
-        self.world = world
-        self.scene = built._scene if built is not None else None
-        names = list(names) if names is not None else [None] * len(bodies)
-        if len(names) != len(bodies):
-            raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
-        self.bodies: List[B.b2Body] = []
-        self.names: List[Optional[str]] = []
-        # The scene's joint for each joint the build made that still lives, by its key.
-        self.built_joints: Dict[int, Joint] = {}
-        self.scene_joints: Dict[int, int] = {}
-        self.fixture_names: Dict[int, Optional[str]] = {}
-        self.mark = built._mark if built is not None else None
-        self.builder = Builder()
-        self.reports: List[Report] = []
-        if built is not None:
-            self.take_built(built)
-        self.bodies += list(bodies)
-        self.names += names
-        self.index_of: Dict[int, int] = {}
-        for i, body in enumerate(self.bodies):
-            key = int(body.this)
-            if key in self.index_of:
-                raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[key]} and {i} are the same body")
-            self.index_of[key] = i
-        self.joint_indices: Dict[int, int] = {}
+def _held_shape(s) -> dict:
+    """A shape as Box2D 2.3 holds it: an edge's and a chain's ghost vertices each NaN where
+    it has none."""
+    t = s.type
+    if t == B.b2Shape.e_circle:
+        return dict(kind="circle", center=_vec(s.pos), radius=float(s.radius))
+    if t == B.b2Shape.e_polygon:
+        return dict(kind="polygon", points=[_vec(v) for v in s.vertices], center=_vec(s.centroid), radius=float(s.radius))
+    if t == B.b2Shape.e_edge:
+        ends = [_vec(s.vertex1), _vec(s.vertex2)]
+        if not (s.hasVertex0 or s.hasVertex3):
+            return dict(kind="segment", points=ends, radius=float(s.radius))
+        ghosts = (_vec(s.vertex0) if s.hasVertex0 else _NAN, _vec(s.vertex3) if s.hasVertex3 else _NAN)
+        return dict(kind="segment", points=[ghosts[0]] + ends + [ghosts[1]], radius=float(s.radius))
+    prev = _vec(s.m_prevVertex) if s.m_hasPrevVertex else _NAN
+    after = _vec(s.m_nextVertex) if s.m_hasNextVertex else _NAN
+    return dict(kind="chain", points=[prev] + [_vec(v) for v in s.vertices] + [after], radius=float(s.radius))
 
-    def take_built(self, built: Built) -> None:
-        """The bodies the build made that the world still holds, with their scene names; and
-        the joints it made that the world holds: a joint at a built joint's address without
-        the userData the build gave it is the host's, made after the build's was destroyed."""
-        live = {int(b.this) for b in self.world.bodies}
-        for body, record in zip(built.bodies, self.scene.bodies):
-            if body is not None and int(body.this) in live:
-                self.bodies.append(body)
-                self.names.append(record.name)
-        for fixture, index in zip(built.fixtures, self.scene.fixture_ids):
-            if fixture is not None:
-                self.fixture_names[int(fixture.this)] = self.scene.fixtures[index].name
-        live_joints = {_key(j): j for j in self.world.joints}
-        for index, joint in enumerate(built.joints):
-            if joint is None or _key(joint) not in live_joints:
-                continue
-            record = self.scene.joints[index]
-            if live_joints[_key(joint)].userData is built._mark:
-                self.built_joints[_key(joint)] = record
-                self.scene_joints[index] = _key(joint)
-            else:
-                self.report(
-                    "lossy-capture",
-                    "joint",
-                    index,
-                    record.name,
-                    f"the joint built for scene joint {index} was destroyed, or its userData replaced: the joint at its address is taken as the host's, saved only when given in joints",
-                )
 
-    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
-        self.reports.append(Report(code, obj, index, name, message))
-
-    def capture_shape(self, s) -> Shape:
-        t = s.type
-        if t == B.b2Shape.e_circle:
-            return Shape.new("circle", radius=float(s.radius), position=_vec(s.pos))
-        if t == B.b2Shape.e_polygon:
-            return Shape.new("polygon", vertices=tuple(_vec(v) for v in s.vertices), centroid=_vec(s.centroid))
-        if t == B.b2Shape.e_edge:
-            return Shape.new(
-                "edge",
-                vertices=(_vec(s.vertex1), _vec(s.vertex2)),
-                prev_vertex=_vec(s.vertex0) if s.hasVertex0 else None,
-                next_vertex=_vec(s.vertex3) if s.hasVertex3 else None,
-            )
-        vertices = [_vec(v) for v in s.vertices]
-        loop = len(vertices) > 3 and vertices[0] == vertices[-1] and not s.m_hasPrevVertex and not s.m_hasNextVertex
-        if loop:
-            return Shape.new("chain", vertices=tuple(vertices[:-1]), is_loop=True)
-        return Shape.new(
-            "chain",
-            vertices=tuple(vertices),
-            prev_vertex=_vec(s.m_prevVertex) if s.m_hasPrevVertex else None,
-            next_vertex=_vec(s.m_nextVertex) if s.m_hasNextVertex else None,
+def _body(body: B.b2Body, record: int, name: Optional[str], slots: Dict[int, int], mark: object) -> dict:
+    shapes = []
+    for f in body.fixtures:  # pybox2d lists them in the order they were created
+        data = f.filterData
+        held = _held_shape(f.shape)
+        held.update(
+            slot=slots.get(int(f.this), _NONE) if f.userData is mark else _NONE,
+            density=float(f.density),
+            friction=float(f.friction),
+            restitution=float(f.restitution),
+            is_sensor=bool(f.sensor),
+            category_bits=int(data.categoryBits),
+            mask_bits=int(data.maskBits),
+            group_index=int(data.groupIndex),
         )
+        shapes.append(held)
+    xf = body.transform
+    m = body.massData
+    return dict(
+        body=record,
+        kind=int(body.type),
+        name=name,
+        position=_vec(body.position),
+        angle=float(body.angle),
+        rotation=(float(xf.q.c), float(xf.q.s)),
+        linear_velocity=_vec(body.linearVelocity),
+        angular_velocity=float(body.angularVelocity),
+        linear_damping=float(body.linearDamping),
+        angular_damping=float(body.angularDamping),
+        gravity_scale=float(body.gravityScale),
+        mass=float(m.mass),
+        center=_vec(m.center),
+        inertia=float(m.I),
+        allow_sleep=bool(body.sleepingAllowed),
+        awake=bool(body.awake),
+        bullet=bool(body.bullet),
+        fixed_rotation=bool(body.fixedRotation),
+        enabled=bool(body.active),
+        shapes=shapes,
+    )
 
-    def capture_body(self, index: int) -> None:
-        body = self.bodies[index]
-        fixtures = []
-        for f in body.fixtures:  # pybox2d lists them in the order they were created
-            shape = self.builder.add_shape(self.capture_shape(f.shape))
-            data = f.filterData
-            fixtures.append(
-                self.builder.add_fixture(
-                    Fixture.new(
-                        shape,
-                        density=float(f.density),
-                        friction=float(f.friction),
-                        restitution=float(f.restitution),
-                        is_sensor=bool(f.sensor),
-                        category_bits=int(data.categoryBits),
-                        mask_bits=int(data.maskBits),
-                        group_index=int(data.groupIndex),
-                        name=self.fixture_names.get(int(f.this)) if f.userData is self.mark else None,
+
+def _anchors():
+    return [("anchor_a", lambda j: _vec(j.GetLocalAnchorA())), ("anchor_b", lambda j: _vec(j.GetLocalAnchorB()))]
+
+
+def _limits():
+    return [("enable_limit", lambda j: bool(j.limitEnabled)), ("lower", lambda j: float(j.lowerLimit)), ("upper", lambda j: float(j.upperLimit))]
+
+
+def _motor(maximum):
+    return [("enable_motor", lambda j: bool(j.motorEnabled)), ("motor_speed", lambda j: float(j.motorSpeed)), ("max_motor", maximum)]
+
+
+# Each joint class as the plan's kind, and the fields pybox2d reads of it: a field it has no
+# getter for is the build's (the plan's record), or of a joint the host made, reported.
+_JOINTS = [
+    (B.b2RevoluteJoint, "revolute", _anchors() + [("reference_angle", lambda j: float(j.GetReferenceAngle()))] + _limits() + _motor(lambda j: float(j.GetMaxMotorTorque()))),
+    (B.b2PrismaticJoint, "prismatic", _anchors() + [("axis", lambda j: _vec(j.GetLocalAxisA())), ("reference_angle", lambda j: float(j.GetReferenceAngle()))] + _limits() + _motor(lambda j: float(j.maxMotorForce))),
+    (B.b2DistanceJoint, "distance", _anchors() + [("length", lambda j: float(j.length)), ("hertz", lambda j: float(j.frequency)), ("damping_ratio", lambda j: float(j.dampingRatio))]),
+    (B.b2RopeJoint, "rope", _anchors() + [("length", lambda j: float(j.maxLength))]),
+    (B.b2WheelJoint, "wheel", _anchors() + [("axis", lambda j: _vec(j.GetLocalAxisA())), ("hertz", lambda j: float(j.springFrequencyHz)), ("damping_ratio", lambda j: float(j.springDampingRatio))] + _motor(lambda j: float(j.GetMaxMotorTorque()))),
+    (B.b2WeldJoint, "weld", _anchors() + [("reference_angle", lambda j: float(j.GetReferenceAngle())), ("hertz", lambda j: float(j.GetFrequency())), ("damping_ratio", lambda j: float(j.GetDampingRatio()))]),
+    (B.b2FrictionJoint, "friction", _anchors() + [("max_force", lambda j: float(j.maxForce)), ("max_torque", lambda j: float(j.maxTorque))]),
+    (
+        B.b2MotorJoint,
+        "motor",
+        [
+            ("linear_offset", lambda j: _vec(j.linearOffset)),
+            ("angular_offset", lambda j: float(j.angularOffset)),
+            ("max_force", lambda j: float(j.maxForce)),
+            ("max_torque", lambda j: float(j.maxTorque)),
+            ("correction_factor", lambda j: float(j.GetCorrectionFactor())),
+        ],
+    ),
+    (
+        B.b2PulleyJoint,
+        "pulley",
+        _anchors()
+        + [
+            ("ground_anchor_a", lambda j: _vec(j.groundAnchorA)),
+            ("ground_anchor_b", lambda j: _vec(j.groundAnchorB)),
+            ("length_a", lambda j: float(j.lengthA)),
+            ("length_b", lambda j: float(j.lengthB)),
+            ("ratio", lambda j: float(j.ratio)),
+        ],
+    ),
+    (B.b2GearJoint, "gear", [("ratio", lambda j: float(j.ratio))]),
+]
+
+
+class _Read:
+    """A world as pybox2d holds it, in the library's held records (dicts named as their
+    fields)."""
+
+    def __init__(self, world: B.b2World, built: Optional[Built]):
+        self.reports: List[Report] = []
+        self.mark = built._mark if built is not None else None
+        self.slots = {int(f.this): k for k, f in enumerate(built.fixtures) if f is not None} if built is not None else {}
+        # the joints the build made that the world still holds, by address, with their
+        # scene joint: one at a built joint's address without the build's mark is the host's
+        self.made: Dict[int, int] = {}
+        if built is None:
+            return
+        live = {_key(j): j for j in world.joints}
+        for index, joint in enumerate(built.joints):
+            if joint is None or _key(joint) not in live:
+                continue
+            if live[_key(joint)].userData is built._mark:
+                self.made[_key(joint)] = index
+            else:
+                self.reports.append(
+                    Report(
+                        "lossy-capture",
+                        "joint",
+                        index,
+                        built._scene.joints[index].name,
+                        f"the joint built for scene joint {index} was destroyed, or its userData replaced: the joint at its address is taken as the host's, saved only when given in joints",
                     )
                 )
-            )
-        kind = {B.b2_staticBody: "static", B.b2_kinematicBody: "kinematic", B.b2_dynamicBody: "dynamic"}[body.type]
-        changes = dict(
-            position=_vec(body.position),
-            angle=float(body.angle),
-            linear_velocity=_vec(body.linearVelocity),
-            angular_velocity=float(body.angularVelocity),
-            linear_damping=float(body.linearDamping),
-            angular_damping=float(body.angularDamping),
-            gravity_scale=float(body.gravityScale),
-            allow_sleep=bool(body.sleepingAllowed),
-            awake=bool(body.awake),
-            bullet=bool(body.bullet),
-            fixed_rotation=bool(body.fixedRotation),
-            active=bool(body.active),
-            fixtures=tuple(fixtures),
+
+    def joint(self, j, index: int, index_of: Dict[int, int], built: Optional[Built], held_of: Dict[int, int]) -> dict:
+        record = self.made.get(_key(j))
+        plan = built._plans[record] if record is not None else None
+        held = dict(
+            joint=record if record is not None else _NONE,
+            body_a=index_of.get(int(j.bodyA.this), _NONE),
+            body_b=index_of.get(int(j.bodyB.this), _NONE),
+            collide_connected=bool(j.collideConnected),
         )
-        if kind == "dynamic":
-            changes["linear_velocity"] = _origin_velocity(body, changes["linear_velocity"], changes["angular_velocity"])
-            actual = body.massData
-            if (float(actual.mass), _vec(actual.center), float(actual.I)) != _computed_mass(body):
-                changes.update(mass=float(actual.mass), center=_vec(actual.center), inertia=float(actual.I))
-        self.builder.add_body(Body.new(kind, name=self.names[index], **changes))
-
-    def capture_joints(self, joints: Sequence[B.b2Joint]) -> None:
-        """The build's joints in the order it made them (a gear after the joints it couples),
-        then the host's."""
-        by_key = {_key(j): j for j in self.world.joints}
-        made = sorted(self.scene_joints.items(), key=lambda item: self.scene.joints[item[0]].kind == "gear")
-        for _, key in made:
-            self.capture_joint(by_key[key])
-        for joint in joints:
-            if _key(joint) not in self.joint_indices:
-                self.capture_joint(joint)
-
-    def capture_joint(self, j) -> None:
-        index = len(self.joint_indices)
-        a = self.index_of.get(int(j.bodyA.this))
-        b = self.index_of.get(int(j.bodyB.this))
-        if a is None or b is None:
-            self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body not saved; not written")
-            return
-        kind = next((k for k, cls in _JOINT_CLASSES if isinstance(j, cls)), None)
-        if kind is None:
-            self.report("lossy-capture", "joint", index, None, "a mouse joint has no Box2Scene form; not written")
-            return
-        built = self.built_joints.get(_key(j))
-        if built is not None:
-            kind = built.kind
-            changes = {f: getattr(built, f) for f in _JOINT_FIELDS}
-        else:
-            changes = {f: getattr(Joint.new(kind, 0, 1), f) for f in _JOINT_FIELDS}
+        found = next(((kind, fields) for cls, kind, fields in _JOINTS if isinstance(j, cls)), None)
+        if found is None:
+            held["other"] = "a mouse joint"
+            return held
+        kind, fields = found
+        held["kind"] = kind
         unread = []
-        for field_name, read in _LIVE[kind]:
+        for name, read in fields:
             try:
-                value = read(j)
+                held[name] = read(j)
             except AttributeError:
-                unread.append(field_name)
-                continue
-            changes[field_name] = tuple(map(float, value)) if isinstance(value, B.b2Vec2) else value
-        if built is not None and kind in ("line", "wheel") and built.frequency_hz == 0.0:
-            # the plan's stand-in spring for none
-            changes.update(frequency_hz=0.0, damping_ratio=built.damping_ratio)
-        if built is None and unread:
-            self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
-        if kind == "gear":
-            coupled = (built.joint_a, built.joint_b) if built is not None else ()
-            targets = [self.joint_indices.get(self.scene_joints.get(k, -1)) for k in coupled]
-            if len(targets) != 2 or None in targets:
-                self.report("lossy-capture", "joint", index, None, "the joints this gear couples were not written (or box2scene did not build it); not written")
-                return
-            changes.update(joint_a=targets[0], joint_b=targets[1])
-        changes["collide_connected"] = bool(j.collideConnected)
-        changes["name"] = built.name if built is not None else None
-        self.builder.add_joint(Joint.new(kind, a, b, **changes))
-        self.joint_indices[_key(j)] = index
+                if plan is not None:
+                    held[name] = getattr(plan, name)
+                else:
+                    unread.append(name)
+        if unread:
+            self.reports.append(Report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults"))
+        if kind == "gear":  # pybox2d cannot read what a gear couples: the build's, if it made it
+            a, b = built._coupled[record] if plan is not None else (_NONE, _NONE)
+            held.update(joint_a=held_of.get(a, _NONE), joint_b=held_of.get(b, _NONE))
+        return held
 
 
 def capture_world(
@@ -550,15 +430,33 @@ def capture_world(
     joints: Sequence[B.b2Joint] = (),
     names: Optional[Sequence[Optional[str]]] = None,
 ) -> Tuple[Scene, List[Report]]:
-    """A scene of what ``built`` made that the world still holds (with the scene's names),
-    then of the host's own ``bodies`` (with their fixtures; Box2D 2.3's bodies have no
-    names, so ``names`` gives body ``i`` of them its own) and ``joints``, with the world's
-    gravity; and the reports of what has no Box2Scene form. Written and loaded, it builds
-    a world that moves like this one. Raises :class:`box2scene.Error` when a body is given
-    twice."""
-    c = _Capture(world, built, bodies, names)
-    c.builder.set_gravity(_vec(world.gravity))
-    for i in range(len(c.bodies)):
-        c.capture_body(i)
-    c.capture_joints(joints)
-    return c.builder.finish(), c.reports
+    """A scene of what ``built`` made that the world still holds (in the scene's order, with
+    its names and UserData, the joints Box2D 2.3 could not hold written back where the file
+    had them), then of the host's own ``bodies`` (with their fixtures; Box2D 2.3's bodies
+    have no names, so ``names`` gives body ``i`` of them its own) and ``joints``, with the
+    world's gravity; and the reports of what has no Box2Scene form. The library makes the
+    scene of what pybox2d holds, as it does for the C++ adapter. Raises
+    :class:`box2scene.Error` when a body is given twice."""
+    if names is not None and len(names) != len(bodies):
+        raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
+    read = _Read(world, built)
+    mark = built._mark if built is not None else None
+    live = {int(b.this) for b in world.bodies if b.userData is mark}
+    made = [(b, i) for i, b in enumerate(built.bodies) if b is not None and int(b.this) in live] if built is not None else []
+    given = [(b, _NONE) for b in bodies]
+    labels = [None] * len(made) + (list(names) if names is not None else [None] * len(bodies))
+    index_of: Dict[int, int] = {}
+    for i, (body, _) in enumerate(made + given):
+        if int(body.this) in index_of:
+            raise Error("invalid-argument", 0, 0, 0, f"bodies {index_of[int(body.this)]} and {i} are the same body")
+        index_of[int(body.this)] = i
+    held_bodies = [_body(b, record, label, read.slots, read.mark) for (b, record), label in zip(made + given, labels)]
+    by_key = {_key(j): j for j in world.joints}
+    ordered = [by_key[key] for key, _ in sorted(read.made.items(), key=lambda item: item[1])]
+    ordered += [j for j in joints if _key(j) not in read.made]
+    held_of = {record: k for k, record in enumerate(sorted(read.made.values()))}
+    held_joints = [read.joint(j, k, index_of, built, held_of) for k, j in enumerate(ordered)]
+    skipped = [i for i, j in enumerate(built.joints) if j is None] if built is not None else []
+    level = built._scene._native if built is not None else None
+    native, reports = _native.capture(ENGINE, _vec(world.gravity), held_bodies, held_joints, skipped, level)
+    return Scene(native), read.reports + [Report(*r) for r in reports]

@@ -14,6 +14,7 @@ use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
+mod capture;
 mod plan;
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
@@ -985,16 +986,9 @@ impl NativeBuilder {
     }
 }
 
-/// The widths, in bits, of the scene's filter categories and masks and of its groups.
-#[pyfunction]
-fn filter_widths() -> (usize, usize) {
-    let f = box2scene::Filter::default();
-    (8 * size_of_val(&f.category_bits), 8 * size_of_val(&f.group_index))
-}
-
-/// Single-precision math as the engines' C code does it (the C library's `cosf`, `sinf` and
-/// `atan2f`, which Rust's `f32` methods call), for the builders' values that must match the
-/// C adapters bit for bit.
+/// Single-precision math as the engines' C code does it (the C library's `cosf` and `sinf`,
+/// which Rust's `f32` methods call), for a host's values that must match the C adapters bit
+/// for bit (the reference worlds the tests build by hand).
 #[pyfunction]
 fn cosf(x: f32) -> f32 {
     x.cos()
@@ -1003,22 +997,6 @@ fn cosf(x: f32) -> f32 {
 #[pyfunction]
 fn sinf(x: f32) -> f32 {
     x.sin()
-}
-
-#[pyfunction]
-fn atan2f(y: f32, x: f32) -> f32 {
-    y.atan2(x)
-}
-
-/// The float next to `x` in the direction of `toward` (C's `nextafterf`).
-#[pyfunction]
-fn nextafterf(x: f32, toward: f32) -> f32 {
-    match x.partial_cmp(&toward) {
-        Some(std::cmp::Ordering::Less) => x.next_up(),
-        Some(std::cmp::Ordering::Greater) => x.next_down(),
-        Some(std::cmp::Ordering::Equal) => toward,
-        None => f32::NAN,
-    }
 }
 
 /// The engine version a Python name means.
@@ -1073,6 +1051,34 @@ fn make_plan(
     plan::make(py, &scene.scene, &options)
 }
 
+/// The scene the library makes of what a builder read from its `engine` world (the held
+/// records as dicts, `box2scene.pyb2d3` and `box2scene.pybox2d`), labelled from `level`, the
+/// scene it was built from, where given; and the reports as (code, object, index, name,
+/// message) tuples.
+#[pyfunction]
+#[pyo3(name = "capture", signature = (engine, gravity, bodies, joints, skipped_joints, level=None))]
+fn capture_held(
+    py: Python<'_>,
+    engine: &str,
+    gravity: (f32, f32),
+    bodies: &Bound<'_, PyList>,
+    joints: &Bound<'_, PyList>,
+    skipped_joints: Vec<u32>,
+    level: Option<&NativeScene>,
+) -> PyResult<(NativeScene, Vec<plan::ReportTuple>)> {
+    let level = level.map(|l| &l.scene);
+    let (scene, reports) = capture::capture(
+        py,
+        engine_named(engine)?,
+        gravity,
+        bodies,
+        joints,
+        skipped_joints,
+        level,
+    )?;
+    Ok((NativeScene { scene }, reports))
+}
+
 /// The scene's gravity where `engine` holds it (within its working range), else None.
 #[pyfunction]
 fn world_gravity(scene: &NativeScene, engine: &str) -> PyResult<Option<(f32, f32)>> {
@@ -1087,14 +1093,12 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(load_bytes, m)?)?;
     m.add_function(wrap_pyfunction!(load_path, m)?)?;
     m.add_function(wrap_pyfunction!(defaults, m)?)?;
-    m.add_function(wrap_pyfunction!(filter_widths, m)?)?;
     m.add_function(wrap_pyfunction!(cosf, m)?)?;
     m.add_function(wrap_pyfunction!(sinf, m)?)?;
-    m.add_function(wrap_pyfunction!(atan2f, m)?)?;
-    m.add_function(wrap_pyfunction!(nextafterf, m)?)?;
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
     m.add_function(wrap_pyfunction!(make_plan, m)?)?;
     m.add_function(wrap_pyfunction!(world_gravity, m)?)?;
+    m.add_function(wrap_pyfunction!(capture_held, m)?)?;
     m.add_class::<plan::NativePlan>()?;
     m.add_class::<plan::NativePlanBody>()?;
     m.add_class::<plan::NativePlanShape>()?;

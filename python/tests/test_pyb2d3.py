@@ -13,7 +13,7 @@ import pytest
 
 import box2scene
 import box2scene.pyb2d3 as b2s3
-from box2scene._f32 import cosf, sinf
+from box2scene._native import cosf, sinf
 
 from conftest import ROOT, scene_files, scene_id
 from helpers import DT, SceneMaker, codes, f32, finite, growth_over
@@ -325,11 +325,11 @@ def test_a_captured_world_writes_and_loads_to_the_same_world(showcase):
     captured, reports = b2s3.capture_world(world, built)
     assert reports == []
     assert [b.name for b in captured.bodies] == [b.name for b in scene.bodies]
-    made = [j.name for j, created in zip(scene.joints, built.joints) if created is not None]
-    assert [j.name for j in captured.joints] == made
+    # the joints v3 cannot hold are written back where the file has them
+    assert [j.name for j in captured.joints] == [j.name for j in scene.joints]
     again = box2scene.load(captured.to_xml().encode(), strict=True)
     world2, built2 = build(again)
-    assert built2.reports == []
+    assert built2.reports == built.reports
     for n in (0, 1, 300):
         step(world, n)
         step(world2, n)

@@ -340,3 +340,48 @@ def test_the_plans_masses_are_pybox2ds_to_the_bit(path):
             assert (held.mass, tuple(held.center)) == (planned.mass, planned.center), planned.body
         else:
             assert (held.mass, tuple(held.center), held.I) == (planned.mass, planned.center, planned.inertia), planned.body
+
+
+def test_lookups_reach_the_engine_objects_and_back(showcase):
+    scene = box2scene.load(showcase)
+    world, built = build(scene)
+    i, j = scene.find_body("BridgePostLeft"), scene.find_joint("BridgeLink1")
+    assert built.find_body("BridgePostLeft") is built.bodies[i]
+    assert built.find_joint("BridgeLink1") is built.joints[j]
+    assert built.find_body("Nobody") is None and built.find_fixture("Nothing") is None
+    assert built.body_index(world.bodies[i]) == i  # another Python object of the same body
+    assert built.joint_index(built.joints[j]) == j
+    assert all(built.fixture_slot(f) == k for k, f in enumerate(built.fixtures) if f is not None)
+
+
+def test_a_body_made_at_a_destroyed_built_bodys_address_is_the_hosts():
+    """Box2D 2.3 gives a new body the address of the one destroyed before it: a capture and
+    the lookups take it as the host's, never as the built body's."""
+    m, (a, b) = _balls(0.5, ("dynamic", (0.0, 0.0), {}), ("dynamic", (3.0, 0.0), {}))
+    world, built = build(m.finish())
+    old = built.bodies[1]
+    address = int(old.this)
+    world.DestroyBody(old)
+    mine = world.CreateBody(B.b2BodyDef(type=B.b2_dynamicBody, position=(7.0, 0.0)))
+    assert int(mine.this) == address  # the case under test: Box2D reused the address
+    assert built.body_index(mine) is None
+    saved, _ = b2s2.capture_world(world, built)
+    assert [b.position for b in saved.bodies] == [(0.0, 0.0)]
+    saved, _ = b2s2.capture_world(world, built, bodies=[mine])
+    assert [b.position for b in saved.bodies] == [(0.0, 0.0), (7.0, 0.0)]
+
+
+def test_a_capture_of_a_built_world_writes_a_skipped_joint_back_in_its_place_with_the_levels_names():
+    """The build leaves out a joint 7 m from satisfied; the capture writes it back as the
+    file has it, so that the named joint after it keeps its index, and every record its
+    Name, with no host code."""
+    m, (a, b, c) = _balls(0.5, ("static", (0.0, 0.0), {}), ("dynamic", (7.0, 0.0), {}), ("dynamic", (-3.0, 0.0), {}))
+    m.joint("revolute", a, b, name="Far", local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    m.joint("revolute", a, c, name="Near", local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    scene = m.finish()
+    world, built = build(scene)
+    assert built.joints[0] is None
+    saved, reports = b2s2.capture_world(world, built)
+    assert reports == []
+    assert [(j.name, j.body_a, j.body_b) for j in saved.joints] == [("Far", 0, 1), ("Near", 0, 2)]
+    assert saved.joints[0] == scene.joints[0]

@@ -1,6 +1,7 @@
 //! The C API: every export, each inside one panic boundary (`guard`), one submodule a
 //! concern (`load`: loading and the scene's view; `write`: writing and drawing, and the
-//! texts they hand out; `build`: the builder and the records' defaults; `library`: its
+//! texts they hand out; `build`: the builder and the records' defaults; `capture`: a live world's records
+//! turned into a scene; `library`: its
 //! version and the codes' names; `plan`: what each engine version can be given), which the header lists in that order of their names
 //! (cbindgen's). This module holds what they share: the error record, the panic boundary,
 //! the checks of arguments. This is the only part of the crate with `unsafe`.
@@ -17,12 +18,14 @@ use crate::error::{Code, Error, Position};
 use crate::scene::{Scene, Str};
 
 mod build;
+mod capture;
 mod library;
 mod load;
 mod plan;
 mod write;
 
 pub use build::*;
+pub use capture::*;
 pub use library::*;
 pub use load::*;
 pub use plan::*;

@@ -169,7 +169,7 @@ impl Plan {
 
     /// Reports what the engine cannot hold about one object; `message` is formatted only
     /// here, once the report is certain.
-    pub(super) fn report(
+    pub(crate) fn report(
         &mut self,
         code: Code,
         object: Object,

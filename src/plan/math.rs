@@ -20,6 +20,12 @@ pub(crate) fn mul_sv(s: f32, v: Vec2) -> Vec2 {
     Vec2::new(s * v.x, s * v.y)
 }
 
+/// `end` continued by one segment away from `inner`: a ghost vertex for an open chain end
+/// that has none (Box2D 2.4's `CreateChain` and v3's chains need both).
+pub(crate) fn extrapolated(end: Vec2, inner: Vec2) -> Vec2 {
+    add(end, sub(end, inner))
+}
+
 pub(crate) fn dot(a: Vec2, b: Vec2) -> f32 {
     a.x * b.x + a.y * b.y
 }
@@ -27,6 +33,12 @@ pub(crate) fn dot(a: Vec2, b: Vec2) -> f32 {
 /// The 2D cross product of two vectors (`b2Cross(a, b)`).
 pub(crate) fn cross(a: Vec2, b: Vec2) -> f32 {
     a.x * b.y - a.y * b.x
+}
+
+/// A scalar crossed with a vector, `s x v` (2.x `b2Cross(s, v)`, v3 `b2CrossSV`): what a
+/// turning at `s` gives a point at `v` from the axis.
+pub(crate) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
+    Vec2::new(-s * v.y, s * v.x)
 }
 
 pub(crate) fn length(v: Vec2) -> f32 {

@@ -13,14 +13,14 @@
 // Box2D writes them.
 #![allow(clippy::neg_cmp_op_on_partial_ord, clippy::excessive_precision, clippy::approx_constant)]
 
-mod box2d2;
-mod box2d3;
+pub(crate) mod box2d2;
+pub(crate) mod box2d3;
 mod check;
 mod container;
 mod gravity;
 mod make;
-mod math;
-mod printf;
+pub(crate) mod math;
+pub(crate) mod printf;
 mod range;
 mod records;
 

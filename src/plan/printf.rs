@@ -13,6 +13,10 @@ pub struct G(pub f32);
 #[derive(Clone, Copy, Debug)]
 pub struct G9(pub f32);
 
+/// A double spelled as `%.3g` (a magnitude a report only sketches).
+#[derive(Clone, Copy, Debug)]
+pub struct G3(pub f64);
+
 /// A value spelled as `%f`.
 #[derive(Clone, Copy, Debug)]
 pub struct F(pub f32);
@@ -26,6 +30,12 @@ impl fmt::Display for G {
 impl fmt::Display for G9 {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&general(f64::from(self.0), 9))
+    }
+}
+
+impl fmt::Display for G3 {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&general(self.0, 3))
     }
 }
 
@@ -108,6 +118,20 @@ mod tests {
             (f32::NAN, "nan"),
         ] {
             assert_eq!(G9(value).to_string(), text, "{value}");
+        }
+    }
+
+    #[test]
+    fn three_digits_of_a_double_as_printf_writes_them() {
+        for (value, text) in [
+            (0.000123456, "0.000123"),
+            (1.5e-8, "1.5e-08"),
+            (0.1, "0.1"),
+            (3.14159, "3.14"),
+            (0.0, "0"),
+            (1234.0, "1.23e+03"),
+        ] {
+            assert_eq!(G3(value).to_string(), text, "{value}");
         }
     }
 

@@ -5,7 +5,7 @@ use super::body::Body;
 use super::body_mass::{
     FixtureMass, about_origin, central_inertia_positive, inertia_centred, reset_mass, set_mass,
 };
-use super::math::{mul_sv, rotate, rotation, sub, transform};
+use super::math::{add, cross_sv, mul_sv, rotate, rotation, sub, transform};
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::check::Check;
@@ -290,9 +290,9 @@ fn mass_data_consistent(mass: PlanMass, body: &SceneBody) -> bool {
 /// The velocity of a created body's centre of mass whose origin moves at `origin` turning
 /// at `w` (`v + w x (c - p)`, as 2.x's `SetMassData` moves it), what the executor gives it
 /// once its mass is final.
-fn center_velocity(body: Body, origin: Vec2, w: f32) -> Vec2 {
+pub(crate) fn center_velocity(body: Body, origin: Vec2, w: f32) -> Vec2 {
     let arm = sub(transform(body.frame, body.mass.center), body.frame.p);
-    Vec2::new(origin.x + -w * arm.y, origin.y + w * arm.x)
+    add(origin, cross_sv(w, arm))
 }
 
 /// `mass` (from the fixtures, inertia about the centre) as the MassData leaves it.

@@ -1,7 +1,9 @@
 //! Box2D 2.x's vector arithmetic (`b2_math.h`) where it is its own: the rest is the plan's
 //! shared `math.rs`, which this module hands on.
 
-pub(crate) use crate::plan::math::{add, cross, dot, length, mul_sv, rotate, rotation, sub};
+pub(crate) use crate::plan::math::{
+    add, cross, cross_sv, dot, length, mul_sv, rotate, rotation, sub,
+};
 use crate::plan::records::{Rot, Transform};
 use crate::scene::Vec2;
 

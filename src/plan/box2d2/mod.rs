@@ -3,18 +3,18 @@
 //! spring's stiffness, where a joint starts) is the engine's to the bit, and the mapping of
 //! a scene onto its definitions.
 
-mod bodies;
-mod body;
-mod body_mass;
+pub(crate) mod bodies;
+pub(crate) mod body;
+pub(crate) mod body_mass;
 mod joint_checks;
 mod joints;
 mod made;
-mod math;
-mod polygon;
-mod shape_mass;
+pub(crate) mod math;
+pub(crate) mod polygon;
+pub(crate) mod shape_mass;
 mod shapes;
-mod stiffness;
-mod version;
+pub(crate) mod stiffness;
+pub(crate) mod version;
 mod world;
 
 pub(crate) use version::Version;

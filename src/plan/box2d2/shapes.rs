@@ -2,12 +2,12 @@
 //! every fixture that uses it (as the engine clones one shape into each fixture).
 
 use super::made::Made;
-use super::math::{add, sub};
 use super::shape_mass::MassShape;
 use super::world::Mapper;
 use crate::error::Code;
 use crate::plan::check::Check;
 use crate::plan::container::Object;
+use crate::plan::math::extrapolated;
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::rules::{MAX_POLYGON_VERTICES, polygon_hull};
 use crate::scene::{Filter, Fixture, Shape, ShapeKind, Str, Vec2};
@@ -23,12 +23,6 @@ struct Geometry {
     center: Vec2,
     radius: f32,
     mass: MassShape,
-}
-
-/// `end` continued by one segment away from `inner`: a ghost vertex for an open chain end
-/// the file left without one (Box2D 2.4's `CreateChain` needs both).
-fn extrapolated(end: Vec2, inner: Vec2) -> Vec2 {
-    add(end, sub(end, inner))
 }
 
 impl Mapper<'_> {

@@ -36,7 +36,7 @@ pub(crate) fn linear(hertz: f32, ratio: f32, mass_a: f32, mass_b: f32) -> Spring
 
 /// Box2D 2.2's soft weld: the angular mass 1/(1/IA + 1/IB) from the inertias about the
 /// centres of mass (`b2AngularStiffness` takes those about the origins).
-pub(super) fn weld_spring(joint: &Joint, a: Body, b: Body) -> Spring {
+pub(crate) fn weld_spring(joint: &Joint, a: Body, b: Body) -> Spring {
     let inverse = a.inverse_central_inertia() + b.inverse_central_inertia();
     spring(if inverse > 0.0 { 1.0 / inverse } else { 0.0 }, joint.frequency_hz, joint.damping_ratio)
 }
@@ -44,7 +44,7 @@ pub(super) fn weld_spring(joint: &Joint, a: Body, b: Body) -> Spring {
 /// Box2D 2.2's wheel spring: the effective mass along the axis as the joint starts,
 /// 1/(1/mA + 1/mB + sAx^2/IA + sBx^2/IB), as 2.2's InitVelocityConstraints computes it
 /// (`b2LinearStiffness` takes mA mB/(mA + mB)).
-pub(super) fn wheel_spring(joint: &Joint, a: Body, b: Body) -> Spring {
+pub(crate) fn wheel_spring(joint: &Joint, a: Body, b: Body) -> Spring {
     if !(joint.frequency_hz > 0.0) {
         return Spring::default();
     }

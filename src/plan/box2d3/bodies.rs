@@ -11,7 +11,7 @@ use crate::plan::container::Object;
 use crate::plan::printf::{G, G9};
 use crate::plan::range::PI;
 use crate::plan::records::{PlanBody, PlanMass, Transform};
-use crate::scene::{Body, BodyKind, Range, Str};
+use crate::scene::{Body, BodyKind, Range, Str, Vec2};
 
 impl Mapper<'_> {
     pub(super) fn make_body(&mut self, index: u32) {
@@ -285,11 +285,17 @@ impl Mapper<'_> {
             return;
         }
         let transform = Transform { p: planned.position, q: planned.rotation };
-        let center = transform_point(transform, m.center);
-        let spin = cross_sv(planned.angular_velocity, sub(center, transform.p));
         planned.set_velocity = true;
-        planned.velocity_after_mass = add(planned.linear_velocity, spin);
+        planned.velocity_after_mass =
+            center_velocity(transform, m.center, planned.angular_velocity, planned.linear_velocity);
     }
+}
+
+/// The velocity of a body's centre of mass (`center`, in its frame) as v3 computes it from
+/// its origin's: `v + w x (R center)`.
+pub(crate) fn center_velocity(transform: Transform, center: Vec2, w: f32, v: Vec2) -> Vec2 {
+    let center = transform_point(transform, center);
+    add(v, cross_sv(w, sub(center, transform.p)))
 }
 
 #[cfg(test)]

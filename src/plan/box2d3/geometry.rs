@@ -9,7 +9,7 @@ use crate::scene::Vec2;
 
 /// A shape's or a body's mass as Box2D v3 holds it (`b2MassData`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(super) struct Mass {
+pub(crate) struct Mass {
     /// kg.
     pub mass: f32,
     /// m, in the body's frame.
@@ -48,7 +48,7 @@ pub(super) fn hull_area(hull: &[Vec2]) -> f32 {
 }
 
 /// `b2ComputePolygonMass` of a polygon of radius 0 made of a hull of three points or more.
-pub(super) fn polygon_mass(v3: V3, vertices: &[Vec2], density: f32) -> Mass {
+pub(crate) fn polygon_mass(v3: V3, vertices: &[Vec2], density: f32) -> Mass {
     let mut center = vec2(0.0, 0.0);
     let mut area = 0.0f32;
     let mut inertia = 0.0f32;
@@ -80,7 +80,7 @@ pub(super) fn polygon_mass(v3: V3, vertices: &[Vec2], density: f32) -> Mass {
 }
 
 /// `b2ComputeCircleMass`.
-pub(super) fn circle_mass(v3: V3, center: Vec2, radius: f32, density: f32) -> Mass {
+pub(crate) fn circle_mass(v3: V3, center: Vec2, radius: f32, density: f32) -> Mass {
     let rr = radius * radius;
     let mass = density * PI * rr;
     let inertia = if v3.inertia_about_origin() {

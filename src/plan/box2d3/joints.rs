@@ -12,11 +12,11 @@ use crate::scene::{BodyKind, Joint, JointKind, Str};
 
 /// s^-1: the step rate v3.2's motor joint springs assume when they stand in for Box2D
 /// 2.x's CorrectionFactor (a share of the error removed each step).
-const MOTOR_STEP_RATE: f32 = 60.0;
-const TWO_PI: f32 = 6.28318530718;
+pub(crate) const MOTOR_STEP_RATE: f32 = 60.0;
+pub(crate) const TWO_PI: f32 = 6.28318530718;
 
 /// The spring frequency that stands in for a CorrectionFactor in v3.2.
-pub(super) fn motor_hertz(correction_factor: f32) -> f32 {
+pub(crate) fn motor_hertz(correction_factor: f32) -> f32 {
     correction_factor * MOTOR_STEP_RATE / TWO_PI
 }
 
@@ -74,6 +74,27 @@ enum Form {
 
 fn frame(p: crate::scene::Vec2, q: Rot) -> Transform {
     Transform { p, q }
+}
+
+impl Form {
+    fn of(kind: JointKind) -> Form {
+        match kind {
+            JointKind::Revolute => Form::Revolute,
+            JointKind::Weld => Form::Weld,
+            JointKind::Prismatic => Form::Prismatic,
+            JointKind::Line | JointKind::Wheel => Form::Axis,
+            _ => Form::Anchors,
+        }
+    }
+}
+
+/// The frames (v3.2) or anchor fields (v3.1) the plan gives the def of a scene joint of
+/// its kind (a capture searches the joint whose frames are the ones an engine holds).
+pub(crate) fn planned_frames(v3: V3, joint: &Joint) -> PlanJoint {
+    let mut out = PlanJoint::default();
+    let form = joint.kind().map_or(Form::Anchors, Form::of);
+    set_frames(v3, &mut out, &Frames::of(joint), form);
+    out
 }
 
 /// The frames (v3.2) or anchor fields (v3.1) of a def.

@@ -12,7 +12,7 @@ use crate::scene::Body;
 
 /// A shape's mass, with the density it was made at (a shape of density 0 adds nothing).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct ShapeMass {
+pub(crate) struct ShapeMass {
     pub mass: Mass,
     pub density: f32,
 }
@@ -20,7 +20,7 @@ pub(super) struct ShapeMass {
 /// The mass the version gives a dynamic body with these shapes (in creation order; the
 /// engine walks a body's shapes newest first), and whether its inertia about the centre of
 /// mass stays positive (v3.1 asserts that it does; v3.2's sum cannot go negative).
-pub(super) fn from_shapes(v3: V3, shapes: &[ShapeMass], fixed_rotation: bool) -> (Mass, bool) {
+pub(crate) fn from_shapes(v3: V3, shapes: &[ShapeMass], fixed_rotation: bool) -> (Mass, bool) {
     let mut body = Mass::default();
     let mut center = ZERO;
     let counted = || shapes.iter().rev().filter(|s| s.density != 0.0);
@@ -71,7 +71,7 @@ fn positive(mass: f32) -> f32 {
 /// A dynamic body's final mass, as Box2D 2.x's `SetMassData` makes it: from its shapes,
 /// then what its MassData gives, a mass of 0 counted as 1 kg. The file's inertia is about
 /// the body origin, v3's about the centre of mass; a rotation that is fixed has none.
-pub(super) fn final_mass(computed: Mass, body: &Body) -> Mass {
+pub(crate) fn final_mass(computed: Mass, body: &Body) -> Mass {
     let given_data = &body.mass_data;
     let mut out = Mass { mass: positive(computed.mass), ..computed };
     if !given(body) {

@@ -1,7 +1,8 @@
 //! Box2D v3's vector arithmetic (`math_functions.h`) where it is its own: the rest is the
 //! plan's shared `math.rs`, which this module hands on.
 
-pub(super) use crate::plan::math::{add, cross, dot, length, mul_sv, rotate, rotation, sub};
+pub(super) use crate::plan::math::{add, cross, cross_sv, length, mul_sv, rotate, sub};
+pub(crate) use crate::plan::math::{dot, rotation};
 use crate::plan::{Rot, Transform};
 use crate::scene::Vec2;
 
@@ -10,11 +11,6 @@ pub(super) const IDENTITY: Rot = Rot { c: 1.0, s: 0.0 };
 
 pub(super) fn vec2(x: f32, y: f32) -> Vec2 {
     Vec2 { x, y }
-}
-
-/// `b2CrossSV`: the scalar `s` (an angular velocity) crossed with `v`.
-pub(super) fn cross_sv(s: f32, v: Vec2) -> Vec2 {
-    vec2(-s * v.y, s * v.x)
 }
 
 /// `b2MulAdd`: `a + s * b`.
@@ -37,7 +33,7 @@ pub(super) fn distance_squared(a: Vec2, b: Vec2) -> f32 {
 }
 
 /// `b2Normalize`: the unit vector, or zero for a vector shorter than `FLT_EPSILON`.
-pub(super) fn normalize(v: Vec2) -> Vec2 {
+pub(crate) fn normalize(v: Vec2) -> Vec2 {
     let length = (v.x * v.x + v.y * v.y).sqrt();
     if length < f32::EPSILON {
         return ZERO;

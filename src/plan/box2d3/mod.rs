@@ -4,13 +4,13 @@
 //! hold, in the order the executor always made them: the world, the shapes, the bodies with
 //! their fixtures, then the joints (whose checks need every body's final mass).
 
-mod bodies;
-mod geometry;
+pub(crate) mod bodies;
+pub(crate) mod geometry;
 mod hull;
 mod joint_checks;
-mod joints;
-mod mass;
-mod math;
+pub(crate) mod joints;
+pub(crate) mod mass;
+pub(crate) mod math;
 mod shapes;
 #[cfg(test)]
 mod test_support;
@@ -21,7 +21,7 @@ use std::fmt;
 use self::geometry::Mass;
 use self::math::transform_point;
 use self::shapes::Geometry;
-pub(super) use self::version::V3;
+pub(crate) use self::version::V3;
 use super::container::{Object, Plan};
 use super::gravity::gravity_fits;
 use super::printf::{G, G9};

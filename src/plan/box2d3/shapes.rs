@@ -4,10 +4,11 @@
 use super::Mapper;
 use super::geometry::{Mass, circle_mass, hull_area, polygon_centroid, polygon_mass};
 use super::hull::{MAX_POLYGON_VERTICES, compute_hull};
-use super::math::{ZERO, add, distance, distance_squared, lerp, sub};
+use super::math::{ZERO, distance, distance_squared, lerp};
 use crate::error::Code;
 use crate::plan::check::Check;
 use crate::plan::container::Object;
+use crate::plan::math::extrapolated;
 use crate::plan::printf::{G, G9};
 use crate::plan::records::{PlanShape, PlanShapeKind};
 use crate::scene::{Fixture, Range, Shape, ShapeKind, Vec2};
@@ -386,12 +387,6 @@ fn vertex_count_fits(shape: &Shape, count: usize) -> bool {
         Ok(ShapeKind::Chain) => count >= if shape.is_loop { 3 } else { 2 },
         _ => true,
     }
-}
-
-/// `end` continued by one segment away from `inner`: a ghost vertex v3 needs where the file
-/// gives none.
-fn extrapolated(end: Vec2, inner: Vec2) -> Vec2 {
-    add(end, sub(end, inner))
 }
 
 #[cfg(test)]

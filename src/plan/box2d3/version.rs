@@ -5,13 +5,13 @@ use crate::plan::{Engine, WorkingRange};
 
 /// A Box2D v3 version.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(in crate::plan) enum V3 {
+pub(crate) enum V3 {
     V31,
     V32,
 }
 
 impl V3 {
-    pub(in crate::plan) fn of(engine: Engine) -> Option<V3> {
+    pub(crate) fn of(engine: Engine) -> Option<V3> {
         match engine {
             Engine::Box2d31 => Some(V3::V31),
             Engine::Box2d32 => Some(V3::V32),
@@ -27,7 +27,7 @@ impl V3 {
     }
 
     /// The engine as reports name it.
-    pub(super) fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             V3::V31 => "Box2D v3",
             V3::V32 => "Box2D v3.2",
@@ -66,7 +66,7 @@ impl V3 {
     }
 
     /// Whether joints take local frames (v3.2), not anchors, an axis and a reference angle.
-    pub(super) fn frames(self) -> bool {
+    pub(crate) fn frames(self) -> bool {
         self == V3::V32
     }
 }

@@ -79,13 +79,14 @@ inline void PlanExecutor::run(Built& built) {
     }
 }
 
-/// The reports of a plan, as a Built holds them.
-inline void copy_reports(const b2s_plan_view& plan, Built& built) {
-    built.reports.reserve(plan.report_count);
-    for (uint32_t i = 0; i < plan.report_count; ++i) {
-        const b2s_plan_report& r = plan.reports[i];
-        built.reports.push_back(Report{static_cast<b2s_code>(r.code), r.object, r.index,
-                                       text_of(r.name), text_of(r.message)});
+/// The library's reports (a plan's, a capture's), as the adapter's own.
+inline void append_reports(const b2s_plan_report* from, uint32_t count,
+                           std::vector<Report>& reports) {
+    reports.reserve(reports.size() + count);
+    for (uint32_t i = 0; i < count; ++i) {
+        const b2s_plan_report& r = from[i];
+        reports.push_back(Report{static_cast<b2s_code>(r.code), r.object, r.index,
+                                 text_of(r.name), text_of(r.message)});
     }
 }
 
@@ -130,7 +131,7 @@ inline Built build_world_at(const b2s_scene* scene, b2World& world,
         built.joints.assign(view->joint_count, nullptr);
         detail::PlanExecutor(view_of_plan, world, view->shape_count).run(built);
     }
-    detail::copy_reports(view_of_plan, built);
+    detail::append_reports(view_of_plan.reports, view_of_plan.report_count, built.reports);
     return built;
 }
 

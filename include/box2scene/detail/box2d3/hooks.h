@@ -14,17 +14,15 @@
  *               b2s3_built_t the public report, reports and built types
  *   bodies      B2S3_NAME_BYTES the body name bytes the build keeps (0: the working
  *               range's); how a def takes a pose and a fixed rotation; how a body gives back
- *               its origin, centre of mass and fixed rotation; a shape's mass, and a body's
- *               mass summed from its shapes as the version sums it (for a capture)
+ *               its origin and fixed rotation
  *   chains      the built result's store of chains (allocate, free) and one chain made of a
  *               plan's points with a shape def's material
  *   joints      B2S3_JOINT_BASE(def) the fields every joint def has; the frames of each
  *               kind from a plan joint (anchors, axis, reference angle or local frames); the
  *               motor joint and the friction joint's stand-in from a plan joint
- *   capture     B2S3_LOSS_SIZE the bytes of a loss; B2S3_LONE_SEGMENT_KIND what one chain
- *               segment is written as; B2S3_HAS_MOUSE_JOINT whether the version has one;
- *               the chains among a body's shapes; a joint's frames and motor read back; the
- *               shape a fixture slot holds
+ *   capture     a joint's frames and motor joint read as the engine holds them (the library
+ *               inverts them), what a joint of a kind without a form is; the shape a fixture
+ *               slot holds
  */
 #ifndef BOX2SCENE_BOX2D3_HOOKS_H
 #define BOX2SCENE_BOX2D3_HOOKS_H
@@ -38,20 +36,13 @@
     !defined(B2S3_PRISMATIC_FRAMES) || !defined(B2S3_AXIS_FRAMES)
 #error "a Box2D v3 version header defines B2S3_JOINT_BASE and the frames of each joint kind"
 #endif
-#if !defined(B2S3_LOSS_SIZE) || !defined(B2S3_LONE_SEGMENT_KIND) || !defined(B2S3_HAS_MOUSE_JOINT)
-#error "a Box2D v3 version header defines B2S3_LOSS_SIZE, B2S3_LONE_SEGMENT_KIND and B2S3_HAS_MOUSE_JOINT"
-#endif
 
 /* ---- bodies */
 
 static void b2s3_set_pose(b2BodyDef* def, b2Vec2 position, b2Rot rotation);
 static b2Vec2 b2s3_body_position(b2BodyId body);
-static b2Vec2 b2s3_local_center(b2BodyId body);
 static void b2s3_lock_rotation(b2BodyDef* def, bool fixed);
 static bool b2s3_rotation_locked(b2BodyId body);
-static b2MassData b2s3_shape_mass(b2ShapeId shape);
-static b2MassData b2s3_mass_from_shapes(const b2MassData* shapes, const float* densities,
-                                        size_t count, bool fixed_rotation, bool* inertia_kept);
 
 /* ---- chains */
 
@@ -68,12 +59,9 @@ static void b2s3_friction_def(b2MotorJointDef* def, const b2s_plan_joint* joint)
 
 /* ---- capture */
 
-static bool b2s3_chains_of(b2s3_chains* chains, const b2ShapeId* shapes, int count);
-static void b2s3_chains_free(b2s3_chains* chains);
-static int b2s3_chain_at(b2s3_chains* chains, const b2ShapeId* shapes, int i, int count,
-                         const b2ShapeId** segments);
-static int b2s3_frames_of(b2JointId id, b2s_joint* joint, char losses[2][B2S3_LOSS_SIZE]);
-static const char* b2s3_motor_of(b2JointId id, b2s_joint* joint);
+static void b2s3_read_frames(b2JointId id, b2s_plan_joint* joint);
+static void b2s3_read_motor(b2JointId id, b2s_held_joint* held);
+static const char* b2s3_joint_without_form(b2JointId id);
 static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot);
 static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape);
 

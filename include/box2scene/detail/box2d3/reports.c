@@ -60,19 +60,6 @@ static void b2s3_add_report(b2s3_list* list, b2s_code code, const char* object, 
     reports->count += 1;
 }
 
-static void b2s3_report(b2s3_list* list, b2s_code code, const char* object, uint32_t index,
-                        const char* name, const char* format, ...) {
-    char message[512];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(message, sizeof message, format, args);
-    va_end(args);
-    b2s3_add_report(list, code, object, index, name, message);
-}
-
-/* A report of a build or a capture: both keep their list as `list`. */
-#define B2S3_REPORT(owner, ...) b2s3_report(&(owner)->list, __VA_ARGS__)
-
 void B2S3_API(reports_free)(b2s3_reports_t* reports) {
     if (reports == NULL) {
         return;
@@ -88,13 +75,6 @@ void B2S3_API(reports_free)(b2s3_reports_t* reports) {
 
 /* ---- what the build and the capture share */
 
-/* Box2D 2.x, which the format's files were made for, gives a dynamic body without mass
- * 1 kg; v3 would leave it at 0, unmoved by gravity (the plan gives such a body 1 kg; a
- * capture reads it back). */
-static float b2s3_positive(float mass) {
-    return mass > 0.0f ? mass : 1.0f;
-}
-
 static b2Vec2 b2s3_to_b2(b2s_vec2 v) {
     b2Vec2 out = {v.x, v.y};
     return out;
@@ -103,8 +83,4 @@ static b2Vec2 b2s3_to_b2(b2s_vec2 v) {
 static b2s_vec2 b2s3_to_b2s(b2Vec2 v) {
     b2s_vec2 out = {v.x, v.y};
     return out;
-}
-
-static bool b2s3_same_point(b2Vec2 a, b2Vec2 b) {
-    return a.x == b.x && a.y == b.y;
 }
