@@ -14,7 +14,7 @@ use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
-mod capture;
+mod held;
 mod plan;
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
@@ -1067,15 +1067,8 @@ fn capture_held(
     level: Option<&NativeScene>,
 ) -> PyResult<(NativeScene, Vec<plan::ReportTuple>)> {
     let level = level.map(|l| &l.scene);
-    let (scene, reports) = capture::capture(
-        py,
-        engine_named(engine)?,
-        gravity,
-        bodies,
-        joints,
-        skipped_joints,
-        level,
-    )?;
+    let (scene, reports) =
+        held::capture(py, engine_named(engine)?, gravity, bodies, joints, skipped_joints, level)?;
     Ok((NativeScene { scene }, reports))
 }
 
