@@ -162,3 +162,12 @@ def make_plan(
     max_linear_speed: float = ...,
     placement: Tuple[Vec2, Vec2] = ...,
 ) -> NativePlan: ...
+
+def capture(
+    engine: str,
+    gravity: Vec2,
+    bodies: Sequence[Dict[str, Any]],
+    joints: Sequence[Dict[str, Any]],
+    skipped: Sequence[int] = ...,
+    level: Optional[NativeScene] = ...,
+) -> Tuple[NativeScene, List[Tuple[str, str, int, Optional[str], str]]]: ...

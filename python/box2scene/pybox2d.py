@@ -33,10 +33,8 @@ import Box2D as B
 
 from . import _native
 from ._error import Error
-from ._f32 import F, f32, search_ulps
-from ._records import Body, Fixture, Joint, Shape
 from ._report import Report
-from ._scene import Builder, Scene
+from ._scene import Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
@@ -54,12 +52,14 @@ class Built:
     fixtures: List[Optional[B.b2Fixture]]
     joints: List[Optional[B.b2Joint]]
     reports: List[Report] = field(default_factory=list)
-    # What capture needs: the scene (what 2.3's bindings cannot read back, and the names),
-    # and the userData the build gives its fixtures and joints, which tells them from ones
-    # the host makes later at their freed addresses (Box2D reuses them). One object a build, since
-    # pybox2d never releases a joint's userData when its world goes.
+    # What capture needs: the scene (the level's names, order and skipped joints), the plan
+    # (what the build gave a joint that 2.3's bindings cannot read back), and the userData
+    # the build gives its fixtures and joints, which tells them from ones the host makes
+    # later at their freed addresses (Box2D reuses them). One object a build, since pybox2d
+    # never releases a joint's userData when its world goes.
     _scene: Optional[Scene] = field(default=None, repr=False, compare=False)
     _mark: object = field(default_factory=object, repr=False, compare=False)
+    _plan: object = field(default=None, repr=False, compare=False)
 
 
 def scene_gravity(scene: Scene, fallback: Tuple[float, float] = (0.0, -10.0)) -> Tuple[float, float]:
@@ -147,7 +147,7 @@ class _Build:
         self.world = world
         reports = [Report(*r) for r in plan.reports]
         slots = [None] * plan.slot_count
-        self.built = Built([None] * plan.body_count, slots, [None] * plan.joint_count, reports, scene)
+        self.built = Built([None] * plan.body_count, slots, [None] * plan.joint_count, reports, scene, _plan=plan)
         # One pybox2d shape per scene shape, which Box2D clones into each of its fixtures.
         self.shapes: Dict[int, object] = {}
         # Index for index with the plan's joints: what a gear couples.
@@ -226,53 +226,11 @@ def build_world(scene: Scene, world: B.b2World) -> Built:
     return b.built
 
 
-def _shift(body: B.b2Body, w: float):
-    """w x (centre of mass - origin), as Box2D computes it in floats."""
-    xf = body.transform
-    c, s = F(xf.q.c), F(xf.q.s)
-    lx, ly = F(body.localCenter[0]), F(body.localCenter[1])
-    px, py = F(xf.position[0]), F(xf.position[1])
-    cx = (c * lx - s * ly) + px
-    cy = (s * lx + c * ly) + py
-    return (-F(w) * (cy - py), F(w) * (cx - px))
+# ---- capture: the world read through pybox2d's getters into the held records (the plan's
+# own, read back), which the library turns into a scene and the reports
 
-
-def _origin_velocity(body: B.b2Body, velocity, w: float):
-    """The origin velocity whose centre velocity, as the build gives it, is ``velocity``."""
-    shift = _shift(body, w)
-    out = []
-    for target, delta in zip(velocity, shift):
-        _, before = search_ulps(f32(target - float(delta)), lambda x, t=target, d=delta: float(F(x) + d) == t)
-        out.append(before)
-    return tuple(out)
-
-
-def _computed_mass(body: B.b2Body):
-    """The mass data Box2D 2.3's ResetMassData gives ``body`` from its fixtures, as
-    GetMassData reports it (inertia about the origin), operation for operation."""
-    mass, cx, cy, inertia = F(0), F(0), F(0), F(0)
-    for f in body.fixtures:
-        if f.density == 0:
-            continue
-        m = f.massData
-        mass += F(m.mass)
-        cx = cx + F(m.mass) * F(m.center[0])
-        cy = cy + F(m.mass) * F(m.center[1])
-        inertia += F(m.I)
-    if mass > 0:
-        inverse = F(1) / mass
-        cx, cy = inverse * cx, inverse * cy
-    else:
-        mass = F(1)
-    dot = cx * cx + cy * cy
-    if inertia > 0 and not body.fixedRotation:
-        inertia -= mass * dot
-    else:
-        inertia = F(0)
-    return float(mass), (float(cx), float(cy)), float(inertia + mass * dot)
-
-
-# ---- capture
+_NONE = 0xFFFFFFFF
+_NAN = (math.nan, math.nan)
 
 _JOINT_CLASSES = [
     ("revolute", B.b2RevoluteJoint),
@@ -286,261 +244,241 @@ _JOINT_CLASSES = [
     ("pulley", B.b2PulleyJoint),
     ("gear", B.b2GearJoint),
 ]
-_JOINT_FIELDS = [f for f in Joint.__dataclass_fields__ if f not in ("kind", "name", "body_a", "body_b", "joint_a", "joint_b", "user_data")]
-
-
-def _anchors():
-    return [("local_anchor_a", lambda j: j.GetLocalAnchorA()), ("local_anchor_b", lambda j: j.GetLocalAnchorB())]
-
-
-# What can change in a live joint, read back where pybox2d has a getter; the rest is what
-# the builder gave the joint (and its defaults for a joint it did not build).
-_LIVE = {
-    "revolute": _anchors() + [
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("enable_limit", lambda j: bool(j.limitEnabled)),
-        ("lower_limit", lambda j: float(j.lowerLimit)),
-        ("upper_limit", lambda j: float(j.upperLimit)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
-    ],
-    "prismatic": _anchors() + [
-        ("local_axis_a", lambda j: j.GetLocalAxisA()),
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("enable_limit", lambda j: bool(j.limitEnabled)),
-        ("lower_limit", lambda j: float(j.lowerLimit)),
-        ("upper_limit", lambda j: float(j.upperLimit)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_force", lambda j: float(j.maxMotorForce)),
-    ],
-    "distance": _anchors() + [
-        ("length", lambda j: float(j.length)),
-        ("frequency_hz", lambda j: float(j.frequency)),
-        ("damping_ratio", lambda j: float(j.dampingRatio)),
-    ],
-    "rope": _anchors() + [("max_length", lambda j: float(j.maxLength))],
-    "wheel": _anchors() + [
-        ("local_axis_a", lambda j: j.GetLocalAxisA()),
-        ("frequency_hz", lambda j: float(j.springFrequencyHz)),
-        ("damping_ratio", lambda j: float(j.springDampingRatio)),
-        ("enable_motor", lambda j: bool(j.motorEnabled)),
-        ("motor_speed", lambda j: float(j.motorSpeed)),
-        ("max_motor_torque", lambda j: float(j.GetMaxMotorTorque())),
-    ],
-    "line": _anchors() + [("local_axis_a", lambda j: j.GetLocalAxisA())],
-    "weld": _anchors() + [
-        ("reference_angle", lambda j: float(j.GetReferenceAngle())),
-        ("frequency_hz", lambda j: float(j.GetFrequency())),
-        ("damping_ratio", lambda j: float(j.GetDampingRatio())),
-    ],
-    "friction": _anchors() + [
-        ("max_force", lambda j: float(j.maxForce)),
-        ("max_torque", lambda j: float(j.maxTorque)),
-    ],
-    "motor": [
-        ("linear_offset", lambda j: j.linearOffset),
-        ("angular_offset", lambda j: float(j.angularOffset)),
-        ("max_force", lambda j: float(j.maxForce)),
-        ("max_torque", lambda j: float(j.maxTorque)),
-        ("correction_factor", lambda j: float(j.GetCorrectionFactor())),
-    ],
-    "pulley": _anchors() + [
-        ("ground_anchor_a", lambda j: j.groundAnchorA),
-        ("ground_anchor_b", lambda j: j.groundAnchorB),
-        ("length_a", lambda j: float(j.lengthA)),
-        ("length_b", lambda j: float(j.lengthB)),
-        ("ratio", lambda j: float(j.ratio)),
-    ],
-    "gear": [("ratio", lambda j: float(j.ratio))],
-}
 
 
 def _vec(v) -> Tuple[float, float]:
     return (float(v[0]), float(v[1]))
 
 
-class _Capture:
+def _anchors():
+    return [("anchor_a", lambda j: j.GetLocalAnchorA()), ("anchor_b", lambda j: j.GetLocalAnchorB())]
+
+
+def _limit_and_motor(max_motor):
+    return [
+        ("reference_angle", lambda j: j.GetReferenceAngle()),
+        ("enable_limit", lambda j: j.limitEnabled),
+        ("lower", lambda j: j.lowerLimit),
+        ("upper", lambda j: j.upperLimit),
+        ("enable_motor", lambda j: j.motorEnabled),
+        ("motor_speed", lambda j: j.motorSpeed),
+        ("max_motor", max_motor),
+    ]
+
+
+# What each kind holds, read through pybox2d's getters into the plan's joint fields (a
+# rope's maximum is the plan's length, as its def takes it).
+_HELD = {
+    "revolute": _anchors() + _limit_and_motor(lambda j: j.GetMaxMotorTorque()),
+    "prismatic": _anchors() + [("axis", lambda j: j.GetLocalAxisA())] + _limit_and_motor(lambda j: j.maxMotorForce),
+    "distance": _anchors() + [("length", lambda j: j.length), ("hertz", lambda j: j.frequency), ("damping_ratio", lambda j: j.dampingRatio)],
+    "rope": _anchors() + [("length", lambda j: j.maxLength)],
+    "wheel": _anchors()
+    + [
+        ("axis", lambda j: j.GetLocalAxisA()),
+        ("hertz", lambda j: j.springFrequencyHz),
+        ("damping_ratio", lambda j: j.springDampingRatio),
+        ("enable_motor", lambda j: j.motorEnabled),
+        ("motor_speed", lambda j: j.motorSpeed),
+        ("max_motor", lambda j: j.GetMaxMotorTorque()),
+    ],
+    "weld": _anchors() + [("reference_angle", lambda j: j.GetReferenceAngle()), ("hertz", lambda j: j.GetFrequency()), ("damping_ratio", lambda j: j.GetDampingRatio())],
+    "friction": _anchors() + [("max_force", lambda j: j.maxForce), ("max_torque", lambda j: j.maxTorque)],
+    "motor": [
+        ("linear_offset", lambda j: j.linearOffset),
+        ("angular_offset", lambda j: j.angularOffset),
+        ("max_force", lambda j: j.maxForce),
+        ("max_torque", lambda j: j.maxTorque),
+        ("correction_factor", lambda j: j.GetCorrectionFactor()),
+    ],
+    "pulley": _anchors()
+    + [
+        ("ground_anchor_a", lambda j: j.groundAnchorA),
+        ("ground_anchor_b", lambda j: j.groundAnchorB),
+        ("length_a", lambda j: j.lengthA),
+        ("length_b", lambda j: j.lengthB),
+        ("ratio", lambda j: j.ratio),
+    ],
+    "gear": [("ratio", lambda j: j.ratio)],
+}
+
+_PAIRS = ("anchor_a", "anchor_b", "axis", "ground_anchor_a", "ground_anchor_b", "linear_offset")
+_FLAGS = ("collide_connected", "enable_limit", "enable_motor")
+
+
+def _joint_defaults() -> Dict[str, object]:
+    held: Dict[str, object] = {f: (0.0, 0.0) for f in _PAIRS}
+    held.update({f: False for f in _FLAGS})
+    for f in ("reference_angle", "length_a", "length_b", "ratio", "lower", "upper", "length", "min_length", "max_length", "motor_speed", "max_motor", "stiffness", "damping", "hertz", "damping_ratio", "angular_offset", "max_force", "max_torque", "correction_factor"):
+        held[f] = 0.0
+    held.update(joint=_NONE, joint_a=_NONE, joint_b=_NONE, name=None, other=None)
+    return held
+
+
+def _ghost(given: bool, vertex) -> Tuple[float, float]:
+    """A ghost vertex as the plan gives it to Box2D 2.3: NaN where the shape has none."""
+    return _vec(vertex) if given else _NAN
+
+
+def _held_shape(s) -> Dict[str, object]:
+    """The shape's kind, points, centre and skin in the plan's terms."""
+    t = s.type
+    if t == B.b2Shape.e_circle:
+        return dict(kind="circle", points=[], center=_vec(s.pos), radius=float(s.radius))
+    held = dict(center=(0.0, 0.0), radius=float(s.radius))
+    if t == B.b2Shape.e_polygon:
+        return dict(held, kind="polygon", points=[_vec(v) for v in s.vertices], center=_vec(s.centroid))
+    if t == B.b2Shape.e_edge:
+        ends = [_vec(s.vertex1), _vec(s.vertex2)]
+        if s.hasVertex0 or s.hasVertex3:
+            ends = [_ghost(s.hasVertex0, s.vertex0)] + ends + [_ghost(s.hasVertex3, s.vertex3)]
+        return dict(held, kind="segment", points=ends)
+    if t == B.b2Shape.e_chain:
+        vertices = [_vec(v) for v in s.vertices]
+        ghosts = _ghost(s.m_hasPrevVertex, s.m_prevVertex), _ghost(s.m_hasNextVertex, s.m_nextVertex)
+        return dict(held, kind="chain", points=[ghosts[0]] + vertices + [ghosts[1]])
+    return dict(held, kind="other", points=[], other=f"Box2D shape type {t}")
+
+
+class _Reader:
+    """What ``capture_world`` saves, read into the held records: the bodies the build made
+    that the world still holds, then the host's ``bodies``; the build's joints the world
+    still holds (a joint at a built joint's address without the build's userData is the
+    host's), then the host's ``joints``."""
+
     def __init__(self, world: B.b2World, built: Optional[Built], bodies: Sequence[B.b2Body], names: Optional[Sequence[Optional[str]]]):
-        self.world = world
-        self.scene = built._scene if built is not None else None
         names = list(names) if names is not None else [None] * len(bodies)
         if len(names) != len(bodies):
             raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
-        self.bodies: List[B.b2Body] = []
-        self.names: List[Optional[str]] = []
-        # The scene's joint for each joint the build made that still lives, by its key.
-        self.built_joints: Dict[int, Joint] = {}
-        self.scene_joints: Dict[int, int] = {}
-        self.fixture_names: Dict[int, Optional[str]] = {}
+        self.built = built
         self.mark = built._mark if built is not None else None
-        self.builder = Builder()
         self.reports: List[Report] = []
+        # (body, its scene index or _NONE, the host's name)
+        saved: List[Tuple[B.b2Body, int, Optional[str]]] = []
+        self.slots: Dict[int, int] = {}
+        self.plan_joints: Dict[int, object] = {}
         if built is not None:
-            self.take_built(built)
-        self.bodies += list(bodies)
-        self.names += names
+            live = {int(b.this) for b in world.bodies}
+            saved += [(b, i, None) for i, b in enumerate(built.bodies) if b is not None and int(b.this) in live]
+            self.slots = {int(f.this): slot for slot, f in enumerate(built.fixtures) if f is not None}
+            self.plan_joints = {j.joint: j for j in built._plan.joints if j.joint < len(built.joints)}
+        saved += [(b, _NONE, name) for b, name in zip(bodies, names)]
         self.index_of: Dict[int, int] = {}
-        for i, body in enumerate(self.bodies):
+        for i, (body, _, _) in enumerate(saved):
             key = int(body.this)
             if key in self.index_of:
                 raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[key]} and {i} are the same body")
             self.index_of[key] = i
-        self.joint_indices: Dict[int, int] = {}
+        self.bodies = [self.held_body(*entry) for entry in saved]
+        self.joints: List[Dict[str, object]] = []
+        self.joint_of: Dict[int, int] = {}
 
-    def take_built(self, built: Built) -> None:
-        """The bodies the build made that the world still holds, with their scene names; and
-        the joints it made that the world holds: a joint at a built joint's address without
-        the userData the build gave it is the host's, made after the build's was destroyed."""
-        live = {int(b.this) for b in self.world.bodies}
-        for body, record in zip(built.bodies, self.scene.bodies):
-            if body is not None and int(body.this) in live:
-                self.bodies.append(body)
-                self.names.append(record.name)
-        for fixture, index in zip(built.fixtures, self.scene.fixture_ids):
-            if fixture is not None:
-                self.fixture_names[int(fixture.this)] = self.scene.fixtures[index].name
-        live_joints = {_key(j): j for j in self.world.joints}
-        for index, joint in enumerate(built.joints):
-            if joint is None or _key(joint) not in live_joints:
-                continue
-            record = self.scene.joints[index]
-            if live_joints[_key(joint)].userData is built._mark:
-                self.built_joints[_key(joint)] = record
-                self.scene_joints[index] = _key(joint)
-            else:
-                self.report(
-                    "lossy-capture",
-                    "joint",
-                    index,
-                    record.name,
-                    f"the joint built for scene joint {index} was destroyed, or its userData replaced: the joint at its address is taken as the host's, saved only when given in joints",
-                )
-
-    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
-        self.reports.append(Report(code, obj, index, name, message))
-
-    def capture_shape(self, s) -> Shape:
-        t = s.type
-        if t == B.b2Shape.e_circle:
-            return Shape.new("circle", radius=float(s.radius), position=_vec(s.pos))
-        if t == B.b2Shape.e_polygon:
-            return Shape.new("polygon", vertices=tuple(_vec(v) for v in s.vertices), centroid=_vec(s.centroid))
-        if t == B.b2Shape.e_edge:
-            return Shape.new(
-                "edge",
-                vertices=(_vec(s.vertex1), _vec(s.vertex2)),
-                prev_vertex=_vec(s.vertex0) if s.hasVertex0 else None,
-                next_vertex=_vec(s.vertex3) if s.hasVertex3 else None,
-            )
-        vertices = [_vec(v) for v in s.vertices]
-        loop = len(vertices) > 3 and vertices[0] == vertices[-1] and not s.m_hasPrevVertex and not s.m_hasNextVertex
-        if loop:
-            return Shape.new("chain", vertices=tuple(vertices[:-1]), is_loop=True)
-        return Shape.new(
-            "chain",
-            vertices=tuple(vertices),
-            prev_vertex=_vec(s.m_prevVertex) if s.m_hasPrevVertex else None,
-            next_vertex=_vec(s.m_nextVertex) if s.m_hasNextVertex else None,
+    def held_fixture(self, f) -> Dict[str, object]:
+        data = f.filterData
+        built = f.userData is self.mark and self.mark is not None
+        held = dict(
+            slot=self.slots.get(int(f.this), _NONE) if built else _NONE,
+            density=float(f.density),
+            friction=float(f.friction),
+            restitution=float(f.restitution),
+            is_sensor=bool(f.sensor),
+            category_bits=int(data.categoryBits),
+            mask_bits=int(data.maskBits),
+            group_index=int(data.groupIndex),
+            restitution_threshold=math.nan,  # Box2D 2.3 has none
+            name=None,
+            shape_name=None,
+            other=None,
         )
+        held.update(_held_shape(f.shape))
+        return held
 
-    def capture_body(self, index: int) -> None:
-        body = self.bodies[index]
-        fixtures = []
-        for f in body.fixtures:  # pybox2d lists them in the order they were created
-            shape = self.builder.add_shape(self.capture_shape(f.shape))
-            data = f.filterData
-            fixtures.append(
-                self.builder.add_fixture(
-                    Fixture.new(
-                        shape,
-                        density=float(f.density),
-                        friction=float(f.friction),
-                        restitution=float(f.restitution),
-                        is_sensor=bool(f.sensor),
-                        category_bits=int(data.categoryBits),
-                        mask_bits=int(data.maskBits),
-                        group_index=int(data.groupIndex),
-                        name=self.fixture_names.get(int(f.this)) if f.userData is self.mark else None,
-                    )
-                )
-            )
-        kind = {B.b2_staticBody: "static", B.b2_kinematicBody: "kinematic", B.b2_dynamicBody: "dynamic"}[body.type]
-        changes = dict(
+    def held_body(self, body: B.b2Body, index: int, name: Optional[str]) -> Dict[str, object]:
+        mass = body.massData
+        q = body.transform.q
+        return dict(
+            body=index,
+            kind=int(body.type),
             position=_vec(body.position),
             angle=float(body.angle),
+            rotation=(float(q.c), float(q.s)),
             linear_velocity=_vec(body.linearVelocity),
             angular_velocity=float(body.angularVelocity),
             linear_damping=float(body.linearDamping),
             angular_damping=float(body.angularDamping),
             gravity_scale=float(body.gravityScale),
+            mass=float(mass.mass),
+            center=_vec(mass.center),
+            inertia=float(mass.I),
             allow_sleep=bool(body.sleepingAllowed),
             awake=bool(body.awake),
-            bullet=bool(body.bullet),
             fixed_rotation=bool(body.fixedRotation),
-            active=bool(body.active),
-            fixtures=tuple(fixtures),
+            bullet=bool(body.bullet),
+            enabled=bool(body.active),
+            name=name,
+            # pybox2d lists a body's fixtures in the order they were created
+            shapes=[self.held_fixture(f) for f in body.fixtures],
         )
-        if kind == "dynamic":
-            changes["linear_velocity"] = _origin_velocity(body, changes["linear_velocity"], changes["angular_velocity"])
-            actual = body.massData
-            if (float(actual.mass), _vec(actual.center), float(actual.I)) != _computed_mass(body):
-                changes.update(mass=float(actual.mass), center=_vec(actual.center), inertia=float(actual.I))
-        self.builder.add_body(Body.new(kind, name=self.names[index], **changes))
 
-    def capture_joints(self, joints: Sequence[B.b2Joint]) -> None:
-        """The build's joints in the order it made them (a gear after the joints it couples),
-        then the host's."""
-        by_key = {_key(j): j for j in self.world.joints}
-        made = sorted(self.scene_joints.items(), key=lambda item: self.scene.joints[item[0]].kind == "gear")
-        for _, key in made:
-            self.capture_joint(by_key[key])
-        for joint in joints:
-            if _key(joint) not in self.joint_indices:
-                self.capture_joint(joint)
-
-    def capture_joint(self, j) -> None:
-        index = len(self.joint_indices)
-        a = self.index_of.get(int(j.bodyA.this))
-        b = self.index_of.get(int(j.bodyB.this))
-        if a is None or b is None:
-            self.report("lossy-capture", "joint", index, None, f"it connects body {b if a is None else a} to a body not saved; not written")
-            return
-        kind = next((k for k, cls in _JOINT_CLASSES if isinstance(j, cls)), None)
-        if kind is None:
-            self.report("lossy-capture", "joint", index, None, "a mouse joint has no Box2Scene form; not written")
-            return
-        built = self.built_joints.get(_key(j))
+    def read_joints(self, world: B.b2World, joints: Sequence[B.b2Joint]) -> List[int]:
+        """The joints to save, read; returns the scene joints the build skipped."""
+        built = self.built
+        skipped: List[int] = []
         if built is not None:
-            kind = built.kind
-            changes = {f: getattr(built, f) for f in _JOINT_FIELDS}
-        else:
-            changes = {f: getattr(Joint.new(kind, 0, 1), f) for f in _JOINT_FIELDS}
+            live = {_key(j): j for j in world.joints}
+            made = []
+            for index, joint in enumerate(built.joints):
+                if joint is None:
+                    skipped.append(index)
+                elif _key(joint) in live and live[_key(joint)].userData is built._mark:
+                    made.append((index, live[_key(joint)]))
+                elif _key(joint) in live:
+                    self.reports.append(Report("lossy-capture", "joint", index, built._scene.joints[index].name, f"the joint built for scene joint {index} was destroyed, or its userData replaced: the joint at its address is taken as the host's, saved only when given in joints"))
+            # in the order the build made them: a gear after every other joint
+            for index, joint in sorted(made, key=lambda m: isinstance(m[1], B.b2GearJoint)):
+                self.read_joint(joint, index)
+        for joint in joints:
+            if _key(joint) not in self.joint_of:
+                self.read_joint(joint, _NONE)
+        return skipped
+
+    def read_joint(self, j, index: int) -> None:
+        held = _joint_defaults()
+        held.update(joint=index, body_a=self.index_of.get(int(j.bodyA.this), _NONE), body_b=self.index_of.get(int(j.bodyB.this), _NONE))
+        held["collide_connected"] = bool(j.collideConnected)
+        kind = next((k for k, cls in _JOINT_CLASSES if isinstance(j, cls)), None)
+        self.joint_of[_key(j)] = len(self.joints)
+        self.joints.append(held)
+        if kind is None:
+            held.update(kind="other", other="a mouse joint (a host's drag)" if isinstance(j, B.b2MouseJoint) else f"Box2D joint type {j.type}")
+            return
+        held["kind"] = kind
+        planned = self.plan_joints.get(index)
         unread = []
-        for field_name, read in _LIVE[kind]:
+        for field_name, read in _HELD[kind]:
             try:
                 value = read(j)
             except AttributeError:
-                unread.append(field_name)
+                # what the build gave a joint it made; a host's keeps the def's default
+                if planned is not None:
+                    held[field_name] = getattr(planned, field_name)
+                else:
+                    unread.append(field_name)
                 continue
-            changes[field_name] = tuple(map(float, value)) if isinstance(value, B.b2Vec2) else value
-        if built is not None and kind in ("line", "wheel") and built.frequency_hz == 0.0:
-            # the plan's stand-in spring for none
-            changes.update(frequency_hz=0.0, damping_ratio=built.damping_ratio)
-        if built is None and unread:
-            self.report("lossy-capture", "joint", index, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults")
-        if kind == "gear":
-            coupled = (built.joint_a, built.joint_b) if built is not None else ()
-            targets = [self.joint_indices.get(self.scene_joints.get(k, -1)) for k in coupled]
-            if len(targets) != 2 or None in targets:
-                self.report("lossy-capture", "joint", index, None, "the joints this gear couples were not written (or box2scene did not build it); not written")
-                return
-            changes.update(joint_a=targets[0], joint_b=targets[1])
-        changes["collide_connected"] = bool(j.collideConnected)
-        changes["name"] = built.name if built is not None else None
-        self.builder.add_joint(Joint.new(kind, a, b, **changes))
-        self.joint_indices[_key(j)] = index
+            held[field_name] = _vec(value) if field_name in _PAIRS else bool(value) if field_name in _FLAGS else float(value)
+        if unread:
+            self.reports.append(Report("lossy-capture", "joint", len(self.joints) - 1, None, f"pybox2d cannot read {', '.join(unread)} of a joint box2scene did not build: written at their defaults"))
+        if kind == "gear" and planned is not None:
+            # the joints the level's gear couples, as the build made them
+            record = self.built._scene.joints[index]
+            held["joint_a"] = self.held_joint(record.joint_a)
+            held["joint_b"] = self.held_joint(record.joint_b)
+
+    def held_joint(self, scene_index: Optional[int]) -> int:
+        """The held index of the joint the build made for scene joint ``scene_index``."""
+        if scene_index is None or scene_index >= len(self.built.joints) or self.built.joints[scene_index] is None:
+            return _NONE
+        return self.joint_of.get(_key(self.built.joints[scene_index]), _NONE)
 
 
 def capture_world(
@@ -550,15 +488,15 @@ def capture_world(
     joints: Sequence[B.b2Joint] = (),
     names: Optional[Sequence[Optional[str]]] = None,
 ) -> Tuple[Scene, List[Report]]:
-    """A scene of what ``built`` made that the world still holds (with the scene's names),
-    then of the host's own ``bodies`` (with their fixtures; Box2D 2.3's bodies have no
-    names, so ``names`` gives body ``i`` of them its own) and ``joints``, with the world's
-    gravity; and the reports of what has no Box2Scene form. Written and loaded, it builds
-    a world that moves like this one. Raises :class:`box2scene.Error` when a body is given
-    twice."""
-    c = _Capture(world, built, bodies, names)
-    c.builder.set_gravity(_vec(world.gravity))
-    for i in range(len(c.bodies)):
-        c.capture_body(i)
-    c.capture_joints(joints)
-    return c.builder.finish(), c.reports
+    """A scene of what ``built`` made that the world still holds (with the scene's names and
+    UserData, its joints in the scene's order, the ones the build skipped written back as
+    the file has them), then of the host's own ``bodies`` (with their fixtures; Box2D 2.3's
+    bodies have no names, so ``names`` gives body ``i`` of them its own) and ``joints``,
+    with the world's gravity; and the reports of what the format cannot hold exactly or has
+    no form for. Written and loaded, it builds a world that moves like this one. Raises
+    :class:`box2scene.Error` when a body is given twice."""
+    reader = _Reader(world, built, bodies, names)
+    skipped = reader.read_joints(world, joints)
+    level = built._scene._native if built is not None else None
+    native, said = _native.capture(ENGINE, _vec(world.gravity), reader.bodies, reader.joints, skipped, level)
+    return Scene(native), reader.reports + [Report(*r) for r in said]

@@ -14,6 +14,7 @@ use pyo3::exceptions::{PyKeyError, PyOverflowError, PyRuntimeError, PyValueError
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
+mod held;
 mod plan;
 
 const SHAPE_KINDS: [(&str, ShapeKind); 4] = [
@@ -1080,6 +1081,27 @@ fn world_gravity(scene: &NativeScene, engine: &str) -> PyResult<Option<(f32, f32
     Ok(gravity.map(|g| (g.x, g.y)))
 }
 
+/// The scene of what a builder read of a live world of `engine` (dicts in the plan's terms:
+/// each body with its shapes, the joints, the scene joints the build skipped), labelled from
+/// `level`, the scene the world was built from; and the reports as
+/// (code, object, index, name, message) tuples.
+#[pyfunction]
+#[pyo3(signature = (engine, gravity, bodies, joints, skipped=Vec::new(), level=None))]
+fn capture(
+    py: Python<'_>,
+    engine: &str,
+    gravity: (f32, f32),
+    bodies: Vec<held::BodyIn>,
+    joints: Vec<held::JointIn>,
+    skipped: Vec<u32>,
+    level: Option<&NativeScene>,
+) -> PyResult<(NativeScene, Vec<plan::ReportTuple>)> {
+    let level = level.map(|l| &l.scene);
+    let captured =
+        held::capture(engine_named(engine)?, gravity, &bodies, &joints, &skipped, level)?;
+    captured.map(|(scene, reports)| (NativeScene { scene }, reports)).map_err(|e| error(py, e))
+}
+
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<NativeScene>()?;
@@ -1095,6 +1117,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(working_range, m)?)?;
     m.add_function(wrap_pyfunction!(make_plan, m)?)?;
     m.add_function(wrap_pyfunction!(world_gravity, m)?)?;
+    m.add_function(wrap_pyfunction!(capture, m)?)?;
     m.add_class::<plan::NativePlan>()?;
     m.add_class::<plan::NativePlanBody>()?;
     m.add_class::<plan::NativePlanShape>()?;

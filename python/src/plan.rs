@@ -1,5 +1,6 @@
 //! The library's plan of a scene for one engine version, as Python objects: every body (with
-//! its shapes), joint and report in the order the builders create them. The Python builders
+//! its shapes), joint and report in the order the builders create them (a report also as a
+//! capture gives it). The Python builders
 //! carry it out through their engine's own calls; every conversion, check and predicted
 //! mass stays the library's.
 
@@ -276,9 +277,9 @@ fn object_name(plan_object: box2scene::Str) -> &'static str {
         .unwrap_or("world")
 }
 
-type ReportTuple = (&'static str, &'static str, u32, Option<String>, String);
+pub type ReportTuple = (&'static str, &'static str, u32, Option<String>, String);
 
-fn reports(plan: &Plan) -> Vec<ReportTuple> {
+pub fn reports(plan: &Plan) -> Vec<ReportTuple> {
     plan.reports()
         .iter()
         .map(|r| {

@@ -340,3 +340,19 @@ def test_the_plans_masses_are_pybox2ds_to_the_bit(path):
             assert (held.mass, tuple(held.center)) == (planned.mass, planned.center), planned.body
         else:
             assert (held.mass, tuple(held.center), held.I) == (planned.mass, planned.center, planned.inertia), planned.body
+
+
+def test_a_capture_of_a_built_world_writes_a_skipped_joint_back_in_its_place_with_the_levels_names():
+    """The build leaves out a joint 7 m from satisfied; the capture writes it back as the
+    file has it, so that the named joint after it keeps its index, and every record its
+    Name, with no host code."""
+    m, (a, b, c) = _balls(0.5, ("static", (0.0, 0.0), {}), ("dynamic", (7.0, 0.0), {}), ("dynamic", (-3.0, 0.0), {}))
+    m.joint("revolute", a, b, name="Far", local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    m.joint("revolute", a, c, name="Near", local_anchor_a=(0.0, 0.0), local_anchor_b=(0.0, 0.0))
+    scene = m.finish()
+    world, built = build(scene)
+    assert built.joints[0] is None
+    saved, reports = b2s2.capture_world(world, built)
+    assert reports == []
+    assert [(j.name, j.body_a, j.body_b) for j in saved.joints] == [("Far", 0, 1), ("Near", 0, 2)]
+    assert saved.joints[0] == scene.joints[0]

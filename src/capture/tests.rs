@@ -280,3 +280,44 @@ fn a_gear_whose_joint_was_not_written_is_not_written() {
     assert_eq!(messages(&c)[1], "a joint the gear couples was not written; not written");
     assert_eq!(c.text(c.reports()[1].name), Some("gear"));
 }
+
+/// A label the builder refuses (a character XML does not allow in a name) is reported with
+/// the builder's code; the body is not written, nor the joints on it.
+#[test]
+fn a_record_the_builder_refuses_is_reported_and_what_needs_it_is_not_written() {
+    let level = level();
+    let e = held_of(&level, Engine::Box2d24);
+    let mut body_labels = vec![Label::default(); e.bodies.len()];
+    body_labels[1] = Label { name: Some("bad\u{1}name"), ..Label::default() };
+    let none = |n: usize| vec![Label::default(); n];
+    let held = Held {
+        engine: Engine::Box2d24,
+        gravity: Vec2::new(0.0, -10.0),
+        bodies: &e.bodies,
+        shapes: &e.shapes,
+        points: &e.points,
+        joints: &e.joints,
+        skipped_joints: &[],
+        body_labels: &body_labels,
+        fixture_labels: &none(e.shapes.len()),
+        shape_names: &[],
+        shape_others: &[],
+        joint_labels: &none(e.joints.len()),
+        joint_others: &[],
+    };
+    let c = capture(&held, None).unwrap();
+    let first = c.reports()[0];
+    // what the builder says of a second body of that name
+    let mut builder = crate::Builder::new();
+    builder.add_body(&Body::new(BodyKind::Static), None, &[]).unwrap();
+    let refusal =
+        builder.add_body(&Body::new(BodyKind::Static), Some("bad\u{1}name"), &[]).unwrap_err();
+    assert_eq!((first.code, first.index), (refusal.code as u32, 1));
+    assert_eq!(c.text(first.message), Some(format!("{}; not written", refusal.message).as_str()));
+    assert_eq!(c.scene.bodies().len(), 2);
+    let dependent = messages(&c)
+        .iter()
+        .filter(|m| *m == "one of its bodies was not written; not written")
+        .count();
+    assert_eq!(dependent, 3, "every joint is on the chassis");
+}

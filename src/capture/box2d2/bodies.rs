@@ -11,7 +11,7 @@ use crate::plan::box2d2::body::Body as BuiltBody;
 use crate::plan::box2d2::body_mass::{
     FixtureMass, about_origin, central_inertia_positive, reset_mass, set_mass,
 };
-use crate::plan::box2d2::math::{add, cross_sv, dot, sub, transform};
+use crate::plan::box2d2::math::{add, cross_sv, sub, transform};
 use crate::plan::box2d2::shape_mass::MassShape;
 use crate::plan::printf::G9;
 use crate::plan::{PlanMass, PlanShapeKind, Transform};
@@ -111,7 +111,9 @@ fn mass_data(
         return out; // SetMassData with GetMassData's inertia after the fixtures does
     }
     out.inertia_given = true;
-    out.inertia = if same_bits(inertia, 0.0 + mass * dot(center, center)) { 0.0 } else { inertia };
+    // no inertia given, as GetMassData gives it back
+    let none = about_origin(written(0.0)).inertia;
+    out.inertia = if same_bits(inertia, none) { 0.0 } else { inertia };
     if !same_bits(after(out.inertia), inertia) || !accepted(out.inertia) {
         say.lossy(format_args!(
             "its MassData Inertia {} does not come back exactly through Box2D's SetMassData",
