@@ -35,10 +35,9 @@ import pyb2d3 as b2
 
 from . import _native
 from ._error import Error
-from ._f32 import F, angle_of, f32, search_ulps
-from ._records import Body, Fixture, Joint, Shape
+from ._f32 import f32
 from ._report import Report
-from ._scene import Builder, Scene
+from ._scene import Scene
 
 __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "scene_gravity"]
 
@@ -46,8 +45,6 @@ __all__ = ["Built", "Report", "build_world", "capture_world", "create_world", "s
 ENGINE = "box2d-3.1"
 # The maximum linear speed of the world a plan for v3.1 needs (the C adapter's world def).
 WORLD_MAX_LINEAR_SPEED = _native.working_range(ENGINE)["world_max_linear_speed"]
-# v3's B2_PI (3.14159265359f) is the float nearest pi.
-PI = f32(math.pi)
 
 
 @dataclass
@@ -125,7 +122,6 @@ class _Build:
         reports = [Report(*r) for r in plan.reports]
         slots = [None] * plan.slot_count
         self.built = Built([None] * plan.body_count, slots, list(slots), [None] * plan.joint_count, reports, _scene=scene)
-        self.rotations: Dict[int, Tuple[float, float]] = {}
 
     def report_chain_sensor(self, shape, body: int) -> None:
         """pyb2d3's chain def has no ``enableSensorEvents``: the scene's sensors do not see
@@ -179,7 +175,6 @@ class _Build:
     def make_body(self, body) -> None:
         created = self.world.create_body_from_def(_body_def(body))
         self.built.bodies[body.body] = created
-        self.rotations[body.body] = body.rotation
         for shape in body.shapes:
             self.make_shape(shape, body.body, created)
         if body.apply_mass_from_shapes:
@@ -247,9 +242,6 @@ class _Build:
             d = b2.MotorJointDef()
             d.linear_offset, d.angular_offset = j.linear_offset, j.angular_offset
             d.max_force, d.max_torque, d.correction_factor = j.max_force, j.max_torque, j.correction_factor
-            if kind == "motor":
-                # The plan turned the offset by body A's rotation: a capture turns it back.
-                record["linear_offset_frame"] = self.rotations[j.body_a]
             create = self.world.create_motor_joint
         d.body_a, d.body_b, d.collide_connected = a, b, j.collide_connected
         created = create(d)
@@ -273,457 +265,238 @@ def build_world(scene: Scene, world: b2.World, *, maximum_linear_speed: float = 
     return b.built
 
 
-# ---- what capture computes as v3 does, operation for operation
+# ---- capture: the world read through pyb2d3's getters into the held records (the plan's
+# own, read back), which the library turns into a scene and the reports
+
+_NONE = 0xFFFFFFFF
+_KINDS = {b2.BodyType.STATIC: 0, b2.BodyType.KINEMATIC: 1, b2.BodyType.DYNAMIC: 2}
+_PAIRS = ("anchor_a", "anchor_b", "axis", "ground_anchor_a", "ground_anchor_b", "linear_offset")
+_FLAGS = ("collide_connected", "enable_limit", "enable_motor", "enable_spring")
 
 
-def _sub(a, b):
-    return (F(a[0]) - F(b[0]), F(a[1]) - F(b[1]))
-
-
-def _dot(a, b):
-    return F(a[0]) * F(b[0]) + F(a[1]) * F(b[1])
-
-
-def _cross(a, b):
-    return F(a[0]) * F(b[1]) - F(a[1]) * F(b[0])
-
-
-def _rotate(c, s, v):
-    x, y = F(v[0]), F(v[1])
-    return (float(F(c) * x - F(s) * y), float(F(s) * x + F(c) * y))
-
-
-def _transform_point(p, c, s, v):
-    r = _rotate(c, s, v)
-    return (float(F(r[0]) + F(p[0])), float(F(r[1]) + F(p[1])))
-
-
-def _polygon_mass(vertices, density: float):
-    """b2ComputePolygonMass of a polygon of radius 0: (mass, center, inertia about the origin)."""
-    r = vertices[0]
-    inv3 = F(1.0) / F(3.0)
-    cx, cy, area, inertia = F(0), F(0), F(0), F(0)
-    for i in range(1, len(vertices) - 1):
-        e1 = _sub(vertices[i], r)
-        e2 = _sub(vertices[i + 1], r)
-        d = _cross(e1, e2)
-        triangle = F(0.5) * d
-        area += triangle
-        w = triangle * inv3
-        cx = cx + w * (e1[0] + e2[0])
-        cy = cy + w * (e1[1] + e2[1])
-        intx2 = e1[0] * e1[0] + e2[0] * e1[0] + e2[0] * e2[0]
-        inty2 = e1[1] * e1[1] + e2[1] * e1[1] + e2[1] * e2[1]
-        inertia += (F(0.25) * inv3 * d) * (intx2 + inty2)
-    mass = F(density) * area
-    inverse = F(1.0) / area
-    cx *= inverse
-    cy *= inverse
-    center = (F(r[0]) + cx, F(r[1]) + cy)
-    inertia = F(density) * inertia
-    inertia += mass * (_dot(center, center) - _dot((cx, cy), (cx, cy)))
-    return mass, center, inertia
-
-
-def _circle_mass(center, radius: float, density: float):
-    rr = F(radius) * F(radius)
-    mass = F(density) * F(PI) * rr
-    return mass, (F(center[0]), F(center[1])), mass * (F(0.5) * rr + _dot(center, center))
-
-
-def _mass_from_shapes(masses, fixed_rotation: bool):
-    """The mass v3 gives a dynamic body with these (density, (mass, center, inertia)) shapes,
-    newest first as b2Body_ApplyMassFromShapes walks them; and whether v3 keeps a positive
-    centred inertia (it asserts otherwise)."""
-    mass, cx, cy, inertia = F(0), F(0), F(0), F(0)
-    for density, (m, c, i) in reversed(masses):
-        if density == 0.0:
-            continue
-        mass += m
-        cx = cx + m * c[0]
-        cy = cy + m * c[1]
-        inertia += i
-    if mass > 0:
-        inverse = F(1.0) / mass
-        cx, cy = inverse * cx, inverse * cy
-    kept = True
-    if inertia > 0 and not fixed_rotation:
-        inertia -= mass * _dot((cx, cy), (cx, cy))
-        kept = bool(inertia > 0)
-    else:
-        inertia = F(0)
-    return (mass, (cx, cy), inertia), kept
-
-
-
-
-def _positive_mass(m):
-    """Box2D 2.x gives a dynamic body without mass 1 kg; v3 would leave it at 0."""
-    return m if m[0] > 0 else (F(1.0), m[1], m[2])
+def _vec(v) -> Tuple[float, float]:
+    return (float(v.x), float(v.y))
 
 
 def _extrapolated(end, inner):
-    return (float(F(end[0]) + (F(end[0]) - F(inner[0]))), float(F(end[1]) + (F(end[1]) - F(inner[1]))))
+    """A ghost point pyb2d3 cannot read: the end segment continued one length."""
+    return (float(f32(end[0] + (end[0] - inner[0]))), float(f32(end[1] + (end[1] - inner[1]))))
 
 
+def _joint_defaults() -> Dict[str, object]:
+    held: Dict[str, object] = {f: (0.0, 0.0) for f in _PAIRS}
+    held.update({f: False for f in _FLAGS})
+    for f in ("reference_angle", "length_a", "length_b", "ratio", "lower", "upper", "length", "min_length", "max_length", "motor_speed", "max_motor", "stiffness", "damping", "hertz", "damping_ratio", "angular_offset", "max_force", "max_torque", "correction_factor", "linear_hertz", "linear_damping_ratio"):
+        held[f] = 0.0
+    held.update(joint=_NONE, joint_a=_NONE, joint_b=_NONE, name=None, other=None)
+    return held
 
-def _local_center(body: b2.Body):
-    c = body.local_center_of_mass()
-    return (float(c.x), float(c.y))
+
+def _limit_and_motor(j, max_motor: float) -> Dict[str, object]:
+    return dict(
+        enable_spring=bool(j.spring_enabled),
+        enable_limit=bool(j.limit_enabled),
+        lower=float(j.lower_limit),
+        upper=float(j.upper_limit),
+        enable_motor=bool(j.motor_enabled),
+        motor_speed=float(j.motor_speed),
+        max_motor=max_motor,
+    )
 
 
+def _held_joint_fields(j) -> Optional[Tuple[str, Dict[str, object]]]:
+    """The plan's kind and the fields a joint holds that pyb2d3 reads back; None for a kind
+    the format has no form for."""
+    T = b2.JointType
+    t = j.type
+    anchors = dict(anchor_a=_vec(j.local_anchor_a), anchor_b=_vec(j.local_anchor_b))
+    if t == T.REVOLUTE_JOINT:
+        return "revolute", dict(anchors, **_limit_and_motor(j, float(j.max_motor_torque)))
+    if t == T.PRISMATIC_JOINT:
+        return "prismatic", dict(anchors, **_limit_and_motor(j, float(j.max_motor_force)))
+    if t == T.DISTANCE_JOINT:
+        return "distance", dict(
+            anchors,
+            length=float(j.length),
+            enable_spring=bool(j.spring_enabled),
+            hertz=float(j.spring_hertz),
+            damping_ratio=float(j.spring_damping_ratio),
+            enable_limit=bool(j.limit_enabled),
+            min_length=float(j.min_length),
+            max_length=float(j.max_length),
+            enable_motor=bool(j.motor_enabled),
+        )
+    if t == T.WHEEL_JOINT:
+        fields = _limit_and_motor(j, float(j.max_motor_torque))
+        return "wheel", dict(anchors, hertz=float(j.spring_hertz), damping_ratio=float(j.spring_damping_ratio), **fields)
+    if t == T.WELD_JOINT:
+        return "weld", dict(
+            anchors,
+            hertz=float(j.angular_hertz),
+            damping_ratio=float(j.angular_damping_ratio),
+            linear_hertz=float(j.linear_hertz),
+            linear_damping_ratio=float(j.linear_damping_ratio),
+        )
+    if t == T.MOTOR_JOINT:
+        return "motor", dict(
+            linear_offset=_vec(j.linear_offset),
+            angular_offset=float(j.angular_offset),
+            max_force=float(j.max_force),
+            max_torque=float(j.max_torque),
+            correction_factor=float(j.correction_factor),
+        )
+    return None
 
-# ---- capture
 
+class _Reader:
+    """What ``capture_world`` saves, read into the held records: the bodies the build made
+    that the world still holds, then the host's ``bodies``; the build's joints the world
+    still holds, then the host's ``joints``. What pyb2d3 cannot read back is what the build
+    gave (kept on the :class:`Built`), or for the host's own objects the defaults, reported."""
 
-class _Capture:
     def __init__(self, world: b2.World, built: Optional[Built], bodies: Sequence[b2.Body], names: Optional[Sequence[Optional[str]]]):
-        self.world = world
         if names is not None and len(names) != len(bodies):
             raise Error("invalid-argument", 0, 0, 0, f"{len(names)} names for {len(bodies)} bodies")
-        self.joint_records = built._joints if built is not None else {}
-        self.chain_records = built._chains if built is not None else {}
-        # The scene name of each fixture the build made, by whether it is a chain and its id
-        # (shapes and chains number apart).
-        self.fixture_names: Dict[Tuple[bool, int], Optional[str]] = {}
+        self.reports: List[Report] = []
+        self.records = built._joints if built is not None else {}
+        self.chains = built._chains if built is not None else {}
+        # The fixture slot of each shape and chain the build made (their ids number apart).
+        self.slots: Dict[Tuple[bool, int], int] = {}
+        saved: List[Tuple[b2.Body, int, Optional[str]]] = []
         if built is not None:
-            for made, index in zip(built.fixtures, built._scene.fixture_ids):
+            for slot, made in enumerate(built.fixtures):
                 if made is not None:
-                    self.fixture_names[(isinstance(made, b2.Chain), int(made.id))] = built._scene.fixtures[index].name
-        made = [(b, r.name) for b, r in zip(built.bodies, built._scene.bodies) if b is not None and b.is_valid] if built is not None else []
-        given = list(zip(bodies, names if names is not None else [b.name or None for b in bodies]))
-        self.bodies = [b for b, _ in made + given]
-        self.names = [n for _, n in made + given]
+                    self.slots[(isinstance(made, b2.Chain), int(made.id))] = slot
+            saved += [(b, i, None) for i, b in enumerate(built.bodies) if b is not None and b.is_valid]
+        given = names if names is not None else [b.name or None for b in bodies]
+        saved += [(b, _NONE, name) for b, name in zip(bodies, given)]
         self.index_of: Dict[int, int] = {}
-        for i, body in enumerate(self.bodies):
+        for i, (body, _, _) in enumerate(saved):
             if int(body.id) in self.index_of:
                 raise Error("invalid-argument", 0, 0, 0, f"bodies {self.index_of[int(body.id)]} and {i} are the same body")
             self.index_of[int(body.id)] = i
-        self.builder = Builder()
-        self.reports: List[Report] = []
         self.shape_count = 0
-        self.fixture_count = 0
-        self.joint_count = 0
-        self.bits, self.group_bits = _native.filter_widths()
+        self.bodies = [self.held_body(*entry) for entry in saved]
+        self.joints: List[Dict[str, object]] = []
 
-    def report(self, code: str, obj: str, index: int, name: Optional[str], message: str) -> None:
-        self.reports.append(Report(code, obj, index, name, message))
-
-    def filter_of(self, f) -> Tuple[int, int, int]:
-        bits, group_bits = self.bits, self.group_bits
-        low = (1 << bits) - 1
-        high_mask = f.mask_bits >> bits
-        group_low, group_high = -(1 << (group_bits - 1)), (1 << (group_bits - 1)) - 1
-        exact = (
-            f.category_bits >> bits == 0
-            and high_mask in (0, (1 << (64 - bits)) - 1)
-            and group_low <= f.group_index <= group_high
-        )
-        if not exact:
-            self.report(
-                "lossy-capture",
-                "fixture",
-                self.fixture_count,
-                None,
-                f"its filter (category 0x{f.category_bits:x}, mask 0x{f.mask_bits:x}, group {f.group_index}) has bits above the format's {bits} or a group beyond {group_bits} bits; the low {bits} bits were written",
-            )
-        group = min(max(f.group_index, group_low), group_high)
-        return f.category_bits & low, f.mask_bits & low, group
-
-    def add_fixture(self, shape: Shape, source, density: float, is_sensor: bool, name: Optional[str]) -> int:
-        shape_index = self.builder.add_shape(shape)
+    def held_material(self, s, slot: int) -> Dict[str, object]:
+        f = s.filter
         self.shape_count += 1
-        category, mask, group = self.filter_of(source.filter)
-        fixture = Fixture.new(
-            shape_index,
-            density=density,
-            friction=float(source.friction),
-            restitution=float(source.restitution),
-            is_sensor=is_sensor,
-            category_bits=category,
-            mask_bits=mask,
-            group_index=group,
-            name=name,
+        return dict(
+            slot=slot,
+            center=(0.0, 0.0),
+            radius=0.0,
+            density=float(s.density),
+            friction=float(s.friction),
+            restitution=float(s.restitution),
+            is_sensor=bool(s.is_sensor),
+            category_bits=int(f.category_bits),
+            mask_bits=int(f.mask_bits),
+            group_index=int(f.group_index),
+            restitution_threshold=math.nan,  # v3.1 has none
+            name=None,
+            shape_name=None,
+            other=None,
         )
-        index = self.builder.add_fixture(fixture)
-        self.fixture_count += 1
-        return index
 
-    def capture_chain(self, chain: b2.Chain, first) -> int:
-        recorded = self.chain_records.get(int(chain.id))
+    def held_chain(self, chain: b2.Chain, first) -> Dict[str, object]:
+        """A chain whole, as the plan gave it: pyb2d3 reads no ghost points, so a chain the
+        build did not make has its ghosts extrapolated (reported)."""
+        held = self.held_material(first, self.slots.get((True, int(chain.id)), _NONE))
+        held.update(density=0.0, is_sensor=False)
+        recorded = self.chains.get(int(chain.id))
         if recorded is not None:
             points, loop = recorded
         else:
             segments = [s.segment for s in chain.get_segments()]
-            points = [(float(s.point1.x), float(s.point1.y)) for s in segments]
-            tail = segments[-1]
-            end = (float(tail.point2.x), float(tail.point2.y))
+            points = [_vec(s.point1) for s in segments]
+            end = _vec(segments[-1].point2)
             loop = end == points[0]
             if not loop:
                 points = [_extrapolated(points[0], points[1])] + points + [end, _extrapolated(end, points[-1])]
-            self.report(
-                "lossy-capture",
-                "shape",
-                self.shape_count,
-                None,
-                "pyb2d3 cannot read a chain's ghost points: those of a chain box2scene did not build were extrapolated",
-            )
-        if loop:
-            shape = Shape.new("chain", vertices=tuple(points), is_loop=True)
-        else:
-            shape = Shape.new("chain", vertices=tuple(points[1:-1]), prev_vertex=points[0], next_vertex=points[-1])
-        return self.add_fixture(shape, first, 0.0, False, self.fixture_names.get((True, int(chain.id))))
+            self.reports.append(Report("lossy-capture", "shape", self.shape_count - 1, None, "pyb2d3 cannot read a chain's ghost points: those of a chain box2scene did not build were extrapolated"))
+        held.update(kind="loop" if loop else "chain", points=[tuple(p) for p in points])
+        return held
 
-    def capture_shape(self, s) -> Optional[int]:
+    def held_shape(self, s) -> Dict[str, object]:
+        held = self.held_material(s, self.slots.get((False, int(s.id)), _NONE))
         kind = s.type
         if kind == b2.ShapeType.circle:
             c = s.circle
-            shape = Shape.new("circle", radius=float(c.radius), position=(float(c.center.x), float(c.center.y)))
+            held.update(kind="circle", points=[], center=_vec(c.center), radius=float(c.radius))
         elif kind == b2.ShapeType.polygon:
             p = s.polygon
-            vertices = tuple(tuple(map(float, v)) for v in p.vertices[: p.count])
-            if p.radius > 0:
-                self.report("lossy-capture", "shape", self.shape_count, None, f"a rounded polygon (radius {p.radius:.9g} m): written without its rounding")
-            shape = Shape.new("polygon", vertices=vertices)
+            held.update(kind="polygon", points=[tuple(map(float, v)) for v in p.vertices[: p.count]], radius=float(p.radius))
         elif kind == b2.ShapeType.segment:
-            seg = s.segment
-            shape = Shape.new("edge", vertices=((float(seg.point1.x), float(seg.point1.y)), (float(seg.point2.x), float(seg.point2.y))))
+            held.update(kind="segment", points=[_vec(s.segment.point1), _vec(s.segment.point2)])
         else:
-            self.report("lossy-capture", "shape", self.shape_count, None, "a capsule has no Box2Scene form; not written")
-            return None
-        return self.add_fixture(shape, s, float(s.density), bool(s.is_sensor), self.fixture_names.get((False, int(s.id))))
+            held.update(kind="other", points=[], other="a capsule")
+        return held
 
-    def capture_fixtures(self, body: b2.Body):
-        """The fixtures of one body in the order its shapes were created (a chain where its
-        first segment stands), with the mass its shapes give."""
-        shapes = sorted(body.shapes, key=lambda s: int(s.id) & 0xFFFFFFFF)
-        fixtures, masses, chains_seen = [], [], set()
-        for s in shapes:
-            if s.type == b2.ShapeType.chain_segment:
-                chain = s.parent_chain
-                if int(chain.id) in chains_seen:
-                    continue
-                chains_seen.add(int(chain.id))
-                fixtures.append(self.capture_chain(chain, s))
-                continue
-            index = self.capture_shape(s)
-            if index is None:
-                continue
-            fixtures.append(index)
-            density = float(s.density)
-            if s.type == b2.ShapeType.circle:
-                c = s.circle
-                masses.append((density, _circle_mass((c.center.x, c.center.y), c.radius, density)))
-            elif s.type == b2.ShapeType.polygon:
-                p = s.polygon
-                masses.append((density, _polygon_mass([tuple(v) for v in p.vertices[: p.count]], density)))
-            else:
-                masses.append((density, (F(0), (F(0), F(0)), F(0))))
-        computed, _ = _mass_from_shapes(masses, body.fixed_rotation)
-        return fixtures, computed
+    def held_shapes(self, body: b2.Body) -> List[Dict[str, object]]:
+        """A body's shapes in the order they were created, a chain where its first segment
+        stands."""
+        shapes, chains_seen = [], set()
+        for s in sorted(body.shapes, key=lambda s: int(s.id) & 0xFFFFFFFF):
+            if s.type != b2.ShapeType.chain_segment:
+                shapes.append(self.held_shape(s))
+            elif int(s.parent_chain.id) not in chains_seen:
+                chains_seen.add(int(s.parent_chain.id))
+                shapes.append(self.held_chain(s.parent_chain, s))
+        return shapes
 
-    def capture_body(self, index: int) -> None:
-        body = self.bodies[index]
-        fixtures, computed = self.capture_fixtures(body)
-        kind = {b2.BodyType.STATIC: "static", b2.BodyType.KINEMATIC: "kinematic", b2.BodyType.DYNAMIC: "dynamic"}[body.type]
+    def held_body(self, body: b2.Body, index: int, name: Optional[str]) -> Dict[str, object]:
+        mass = body.mass_data
         q = body.rotation
-        exact, angle = angle_of(float(q.c), float(q.s))
-        name = self.names[index]
-        if not exact:
-            self.report("lossy-capture", "body", index, name, f"no angle has exactly its rotation's cosine and sine; the nearest, {angle:.9g} rad, was written")
-        w = float(body.angular_velocity)
-        v = (float(body.linear_velocity.x), float(body.linear_velocity.y))
-        if kind == "dynamic":
-            v = _origin_velocity(body, v, w)
-        changes = dict(
-            name=name,
-            position=(float(body.position.x), float(body.position.y)),
-            angle=angle,
-            linear_velocity=v,
-            angular_velocity=w,
+        return dict(
+            body=index,
+            kind=_KINDS[body.type],
+            position=_vec(body.position),
+            angle=0.0,  # v3 holds a rotation
+            rotation=(float(q.c), float(q.s)),
+            linear_velocity=_vec(body.linear_velocity),
+            angular_velocity=float(body.angular_velocity),
             linear_damping=float(body.linear_damping),
             angular_damping=float(body.angular_damping),
             gravity_scale=float(body.gravity_scale),
+            mass=float(mass.mass),
+            center=_vec(mass.center),
+            inertia=float(mass.rotational_inertia),
             allow_sleep=bool(body.enabled_sleep),
             awake=bool(body.awake),
-            bullet=bool(body.bullet),
             fixed_rotation=bool(body.fixed_rotation),
-            active=bool(body.enabled),
-            fixtures=tuple(fixtures),
+            bullet=bool(body.bullet),
+            enabled=bool(body.enabled),
+            name=name,
+            shapes=self.held_shapes(body),
         )
-        if kind == "dynamic":
-            actual = body.mass_data
-            center = (float(actual.center.x), float(actual.center.y))
-            mine = _positive_mass(computed)
-            same = (
-                float(mine[0]) == float(actual.mass)
-                and (float(mine[1][0]), float(mine[1][1])) == center
-                and float(mine[2]) == float(actual.rotational_inertia)
-            )
-            if not same:
-                changes.update(mass=float(actual.mass), center=center, inertia=_origin_inertia(float(actual.rotational_inertia), float(actual.mass), center))
-        self.builder.add_body(Body.new(kind, **changes))
 
-    def capture_joint(self, joint) -> None:
-        a = self.index_of.get(int(joint.body_a.id))
-        b = self.index_of.get(int(joint.body_b.id))
-        if a is None or b is None:
-            self.report(
-                "lossy-capture",
-                "joint",
-                self.joint_count,
-                None,
-                f"it connects body {b if a is None else a} to a body the host did not name; not written",
-            )
-            return
-        record = self.joint_records.get(int(joint.id))
-        if record is None:
-            self.report(
-                "lossy-capture",
-                "joint",
-                self.joint_count,
-                None,
-                "pyb2d3 cannot read a joint's collide_connected, reference angle or axis: box2scene did not build this joint, so they were written at their defaults",
-            )
-            record = {}
-        fields = self.joint_fields(joint, record)
+    def read_joints(self, built: Optional[Built], joints: Sequence[b2.Joint]) -> None:
+        """The build's joints the world still holds, then the host's."""
+        read = set()
+        for index, joint in enumerate(built.joints if built is not None else ()):
+            if joint is not None and joint.is_valid:
+                self.read_joint(joint, index)
+                read.add(int(joint.id))
+        for joint in sorted((j for j in joints if j is not None and int(j.id) not in read), key=lambda j: int(j.id) & 0xFFFFFFFF):
+            self.read_joint(joint, _NONE)
+
+    def read_joint(self, j, index: int) -> None:
+        held = _joint_defaults()
+        held.update(joint=index, body_a=self.index_of.get(int(j.body_a.id), _NONE), body_b=self.index_of.get(int(j.body_b.id), _NONE))
+        self.joints.append(held)
+        fields = _held_joint_fields(j)
         if fields is None:
+            held.update(kind="other", other="a mouse joint" if j.type == b2.JointType.MOUSE_JOINT else "a filter joint")
             return
-        kind, changes = fields
-        changes["collide_connected"] = record.get("collide_connected", False)
-        changes["name"] = record.get("name")
-        self.builder.add_joint(Joint.new(kind, a, b, **changes))
-        self.joint_count += 1
-
-    def lossy(self, what: str) -> None:
-        self.report("lossy-capture", "joint", self.joint_count, None, f"{what} has no Box2Scene form; written without it")
-
-    def joint_fields(self, j, record: dict):
-        t = j.type
-        T = b2.JointType
-        anchors = {
-            "local_anchor_a": (float(j.local_anchor_a.x), float(j.local_anchor_a.y)),
-            "local_anchor_b": (float(j.local_anchor_b.x), float(j.local_anchor_b.y)),
-        }
-        if t == T.REVOLUTE_JOINT:
-            if j.spring_enabled:
-                self.lossy("a revolute joint's spring")
-            return "revolute", dict(
-                anchors,
-                reference_angle=record.get("reference_angle", 0.0),
-                enable_limit=bool(j.limit_enabled),
-                lower_limit=float(j.lower_limit),
-                upper_limit=float(j.upper_limit),
-                enable_motor=bool(j.motor_enabled),
-                motor_speed=float(j.motor_speed),
-                max_motor_torque=float(j.max_motor_torque),
-            )
-        if t == T.PRISMATIC_JOINT:
-            if j.spring_enabled:
-                self.lossy("a prismatic joint's spring")
-            return "prismatic", dict(
-                anchors,
-                local_axis_a=record.get("local_axis_a", (1.0, 0.0)),
-                reference_angle=record.get("reference_angle", 0.0),
-                enable_limit=bool(j.limit_enabled),
-                lower_limit=float(j.lower_limit),
-                upper_limit=float(j.upper_limit),
-                enable_motor=bool(j.motor_enabled),
-                motor_speed=float(j.motor_speed),
-                max_motor_force=float(j.max_motor_force),
-            )
-        if t == T.DISTANCE_JOINT:
-            if j.motor_enabled:
-                self.lossy("a distance joint's motor")
-            if j.spring_enabled and float(j.spring_hertz) == 0.0:
-                if not j.limit_enabled:
-                    self.lossy("a slack distance joint without its length limit")
-                return "rope", dict(anchors, max_length=float(j.max_length))
-            changes = dict(anchors, length=float(j.length))
-            if j.spring_enabled:
-                changes.update(frequency_hz=float(j.spring_hertz), damping_ratio=float(j.spring_damping_ratio))
-            if j.limit_enabled:
-                self.lossy("a distance joint's length range")
-            return "distance", changes
-        if t == T.WHEEL_JOINT:
-            axis = record.get("local_axis_a", (1.0, 0.0))
-            if j.spring_enabled:
-                if j.limit_enabled:
-                    self.lossy("a wheel joint's limit beside its spring")
-                return "wheel", dict(
-                    anchors,
-                    local_axis_a=axis,
-                    frequency_hz=float(j.spring_hertz),
-                    damping_ratio=float(j.spring_damping_ratio),
-                    enable_motor=bool(j.motor_enabled),
-                    motor_speed=float(j.motor_speed),
-                    max_motor_torque=float(j.max_motor_torque),
-                )
-            if j.motor_enabled:
-                self.lossy("a springless wheel joint's rotation motor")
-            return "line", dict(
-                anchors,
-                local_axis_a=axis,
-                enable_limit=bool(j.limit_enabled),
-                lower_limit=float(j.lower_limit),
-                upper_limit=float(j.upper_limit),
-            )
-        if t == T.WELD_JOINT:
-            if float(j.linear_hertz) != 0.0:
-                self.lossy("a weld joint's linear spring")
-            return "weld", dict(
-                anchors,
-                reference_angle=record.get("reference_angle", 0.0),
-                frequency_hz=float(j.angular_hertz),
-                damping_ratio=float(j.angular_damping_ratio),
-            )
-        if t == T.MOTOR_JOINT:
-            offset = (float(j.linear_offset.x), float(j.linear_offset.y))
-            angular = float(j.angular_offset)
-            factor = float(j.correction_factor)
-            if factor == 0.0 and offset == (0.0, 0.0) and angular == 0.0:
-                kind = "friction"
-            else:
-                kind = "motor"
-                frame = record.get("linear_offset_frame")
-                if frame is not None:
-                    offset = _unrotated(frame, offset)
-            return kind, dict(
-                linear_offset=offset,
-                angular_offset=angular,
-                max_force=float(j.max_force),
-                max_torque=float(j.max_torque),
-                correction_factor=factor,
-            )
-        name = "mouse" if t == T.MOUSE_JOINT else "filter"
-        self.report("lossy-capture", "joint", self.joint_count, None, f"a {name} joint has no Box2Scene form; not written")
-        return None
-
-
-def _unrotated(frame, offset):
-    """The offset in body A's frame that the build turned into ``offset`` (exact for the
-    unturned frame, where the turn is the identity)."""
-    c, s = frame
-    return _rotate(c, -s, offset)
-
-
-def _origin_velocity(body: b2.Body, velocity, w: float):
-    """The velocity of a body's origin that the build turns back into its centre's."""
-    t = body.transform
-    center = _transform_point((t.p.x, t.p.y), t.q.c, t.q.s, _local_center(body))
-    shift = (float(-F(w) * (F(center[1]) - F(t.p.y))), float(F(w) * (F(center[0]) - F(t.p.x))))
-    out = []
-    for target, delta in zip(velocity, shift):
-        _, before = search_ulps(f32(target - delta), lambda x, t=target, d=delta: float(F(x) + F(d)) == t)
-        out.append(before)
-    return tuple(out)
-
-
-def _origin_inertia(central: float, mass: float, center) -> float:
-    """The inertia about the origin that the build turns back into ``central``."""
-    shift = F(mass) * _dot(center, center)
-    _, origin = search_ulps(float(F(central) + shift), lambda x: float(F(x) - shift) == central)
-    return origin
+        held["kind"], read = fields
+        held.update(read)
+        record = self.records.get(int(j.id))
+        written = held["body_a"] != _NONE and held["body_b"] != _NONE
+        if record is None and written:
+            self.reports.append(Report("lossy-capture", "joint", len(self.joints) - 1, None, "pyb2d3 cannot read a joint's collide_connected, reference angle or axis: box2scene did not build this joint, so they were written at their defaults"))
+        record = record or {}
+        held.update(collide_connected=record.get("collide_connected", False), reference_angle=record.get("reference_angle", 0.0), axis=record.get("local_axis_a", (1.0, 0.0)))
 
 
 def capture_world(
@@ -733,20 +506,14 @@ def capture_world(
     joints: Sequence[b2.Joint] = (),
     names: Optional[Sequence[Optional[str]]] = None,
 ) -> Tuple[Scene, List[Report]]:
-    """A scene of what ``built`` made that the world still holds (with the scene's names),
-    then of the host's own ``bodies`` (their shapes with them; named by ``names``, or else
-    by their Box2D names) and those of its ``joints`` whose two bodies are saved, with the
-    world's gravity; and the reports of what has no Box2Scene form. Written and loaded, it
-    builds a world that evolves bit for bit like this one. Raises :class:`box2scene.Error`
-    when a body is given twice."""
-    c = _Capture(world, built, bodies, names)
-    g = world.gravity
-    c.builder.set_gravity((float(g.x), float(g.y)))
-    for i in range(len(c.bodies)):
-        c.capture_body(i)
-    made = [j for j in built.joints if j is not None and j.is_valid] if built is not None else []
-    written = {int(j.id) for j in made}
-    host = sorted((j for j in joints if j is not None and int(j.id) not in written), key=lambda j: int(j.id) & 0xFFFFFFFF)
-    for joint in made + host:
-        c.capture_joint(joint)
-    return c.builder.finish(), c.reports
+    """A scene of what ``built`` made that the world still holds (with the scene's names and
+    UserData, its joints in the scene's order), then of the host's own ``bodies`` (their shapes with them; named by
+    ``names``, or else by their Box2D names) and those of its ``joints`` whose two bodies
+    are saved, with the world's gravity; and the reports of what the format cannot hold
+    exactly or has no form for. Written and loaded, it builds a world that evolves bit for
+    bit like this one. Raises :class:`box2scene.Error` when a body is given twice."""
+    reader = _Reader(world, built, bodies, names)
+    reader.read_joints(built, joints)
+    level = built._scene._native if built is not None else None
+    native, said = _native.capture(ENGINE, _vec(world.gravity), reader.bodies, reader.joints, [], level)
+    return Scene(native), reader.reports + [Report(*r) for r in said]

@@ -108,6 +108,15 @@ pub struct JointIn {
     collide_connected: bool,
     enable_limit: bool,
     enable_motor: bool,
+    /// Whether a v3 joint's spring is on (a v3 builder's; a 2.x one gives none).
+    #[pyo3(default)]
+    enable_spring: bool,
+    /// Hz: a v3 weld joint's linear spring.
+    #[pyo3(default)]
+    linear_hertz: f32,
+    /// Its damping ratio.
+    #[pyo3(default)]
+    linear_damping_ratio: f32,
     name: Option<String>,
     other: Option<String>,
 }
@@ -250,10 +259,11 @@ fn joint(j: &JointIn) -> PyResult<HeldJoint> {
             collide_connected: j.collide_connected,
             enable_limit: j.enable_limit,
             enable_motor: j.enable_motor,
+            enable_spring: j.enable_spring,
             ..PlanJoint::default()
         },
-        linear_hertz: 0.0,
-        linear_damping_ratio: 0.0,
+        linear_hertz: j.linear_hertz,
+        linear_damping_ratio: j.linear_damping_ratio,
         linear_velocity: Vec2::ZERO,
         angular_velocity: 0.0,
         max_velocity_force: 0.0,

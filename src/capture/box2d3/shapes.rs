@@ -93,14 +93,35 @@ pub(crate) fn shape(
             Shape::new(ShapeKind::Polygon)
         }
         PlanShapeKind::Segment => Shape::new(ShapeKind::Edge),
-        PlanShapeKind::Chain | PlanShapeKind::Loop => {
-            say.lossy(format_args!(
-                "a chain held whole, where Box2D v3 holds its segments; not written"
-            ));
-            return None;
-        }
+        PlanShapeKind::Chain | PlanShapeKind::Loop => return whole_chain(kind, vertices, say),
     };
     Some((shape, vertices))
+}
+
+/// A chain held whole, as the plan gives one (by a reader that cannot read its segments'
+/// ghosts): open, `[ghost, vertices..., ghost]`, or a loop's vertices.
+fn whole_chain(
+    kind: PlanShapeKind,
+    mut points: Vec<Vec2>,
+    say: &mut Say,
+) -> Option<(Shape, Vec<Vec2>)> {
+    let mut shape = Shape::new(ShapeKind::Chain);
+    if kind == PlanShapeKind::Loop {
+        shape.is_loop = true;
+        return Some((shape, points));
+    }
+    if points.len() < 4 {
+        say.lossy(format_args!(
+            "an open chain of {} points, where one has 4 or more; not written",
+            points.len()
+        ));
+        return None;
+    }
+    shape.has_next_vertex = true;
+    shape.next_vertex = points.pop().unwrap_or_default();
+    shape.has_prev_vertex = true;
+    shape.prev_vertex = points.remove(0);
+    Some((shape, points))
 }
 
 /// The fixture (its shape left for the caller) that carries the shape of `run`: the
