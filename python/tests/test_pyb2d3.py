@@ -336,6 +336,21 @@ def test_a_captured_world_writes_and_loads_to_the_same_world(showcase):
         assert [state(b) for b in bodies] == [state(b) for b in built2.bodies]
 
 
+def test_a_capture_of_a_world_that_ran_says_its_turned_bodies_once(showcase):
+    """After 10 s the solver has turned nearly every moving body to a rotation no float angle
+    gives: one report on the world counts them, none on the bodies (a capture said one a body)."""
+    scene = box2scene.load(showcase)
+    world, built = build(scene)
+    step(world, 600)
+    saved, reports = b2s3.capture_world(world, built)
+    assert [r.object for r in reports if r.object == "body"] == []
+    turned = [r for r in reports if r.object == "world"]
+    assert codes(turned) == [("lossy-capture", "world", 0)]
+    count = int(turned[0].message.split("turns bodies: ")[1].split(" ")[0])
+    assert count >= 10
+    assert len(saved.bodies) == len(scene.bodies)
+
+
 def test_a_capture_reports_what_has_no_form():
     world = pyb2d3.World(gravity=(0.0, -10.0))
     body = world.create_body(type=pyb2d3.BodyType.DYNAMIC)

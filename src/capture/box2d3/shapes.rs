@@ -121,8 +121,10 @@ pub(crate) fn fixture(held: &HeldShape, say: &mut Say) -> Fixture {
 /// end, as the plan extrapolates one the file leaves out, and reported.
 fn whole_chain(looped: bool, mut points: Vec<Vec2>, say: &mut Say) -> Option<Vec<[Vec2; 4]>> {
     let n = points.len();
-    if n < if looped { 3 } else { 4 } {
-        say.lossy(format_args!("a chain of {n} points; not written"));
+    let least = if looped { 3 } else { 4 };
+    if n < least {
+        let what = if looped { "a loop" } else { "an open chain" };
+        say.lossy(format_args!("{what} of {n} points, where one has {least} or more; not written"));
         return None;
     }
     if looped {

@@ -692,3 +692,32 @@ fn a_v31_friction_joint_keeps_the_level_s_anchors() {
     let (host, _) = saying(|say| super::joint(V3::V31, &held, None, say));
     assert_eq!(host.unwrap().local_anchor_a, Vec2::ZERO, "a host's friction joint holds none");
 }
+
+/// A reader that cannot read a chain's segments' ghosts gives the chain whole, as the plan
+/// gave it: open with its ghosts, or a loop.
+#[test]
+fn a_chain_held_whole_is_the_plans_chain() {
+    let open = [v(-1.0, 1.0), v(0.0, 0.0), v(1.0, 0.0), v(2.0, 0.5), v(3.0, 1.0)];
+    let mut points = open.to_vec();
+    points.extend([v(0.0, 0.0), v(2.0, 0.0), v(0.0, 2.0)]);
+    let mut chain = segment(&mut Vec::new(), [v(0.0, 0.0); 4], NONE);
+    chain.shape.kind = PlanShapeKind::Chain as u32;
+    chain.shape.points = Range { first: 0, count: 5 };
+    let ((shape, vertices), said) =
+        saying(|say| super::shape(V3::V31, &[chain], &points, say).unwrap());
+    assert!(said.is_empty());
+    assert!(!shape.is_loop && shape.has_prev_vertex && shape.has_next_vertex);
+    assert_eq!((shape.prev_vertex, shape.next_vertex), (open[0], open[4]));
+    assert_eq!(vertices, open[1..4]);
+    let mut ring = chain;
+    ring.shape.kind = PlanShapeKind::Loop as u32;
+    ring.shape.points = Range { first: 5, count: 3 };
+    let ((shape, vertices), _) =
+        saying(|say| super::shape(V3::V31, &[ring], &points, say).unwrap());
+    assert!(shape.is_loop && shape.kind == ShapeKind::Chain as u32);
+    assert_eq!(vertices, points[5..]);
+    chain.shape.points = Range { first: 0, count: 3 };
+    let (none, said) = saying(|say| super::shape(V3::V31, &[chain], &points, say));
+    assert!(none.is_none());
+    assert_eq!(said, ["an open chain of 3 points, where one has 4 or more; not written"]);
+}
