@@ -2381,7 +2381,7 @@ b2s_code b2s_joint_default(b2s_joint_kind kind, struct b2s_joint *out);
  * where they carry none, its joints are written in its order and the ones the build
  * skipped (`skipped_joints`) written back as it has them. On success returns
  * `B2S_CODE_OK` and stores a new capture in `*out_capture`; free it with
- * `b2s_capture_free`. An engine number whose capture the library does not make, or a text
+ * `b2s_capture_free`. An engine number that names no engine version, or a text
  * that is not UTF-8, fails with `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there,
  * returns the error's code and, when `error` is not NULL, fills it. Thread-safe.
  *
@@ -2538,8 +2538,7 @@ const struct b2s_working_range *b2s_engine_working_range(uint32_t engine);
  * success returns `B2S_CODE_OK` and stores a new plan in `*out_plan`; free it with
  * `b2s_plan_free`. A placement the engine cannot take is no failure: the plan then holds
  * only its report and its view's `placed` is false. An engine number that names no
- * version, or one whose mapping the library does not make yet, fails with
- * `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there, returns the error's code and,
+ * version fails with `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there, returns the error's code and,
  * when `error` is not NULL, fills it. Thread-safe.
  *
  * # Safety

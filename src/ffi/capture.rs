@@ -73,7 +73,7 @@ unsafe fn held_label<'a>(label: &HeldLabel, what: &str) -> Result<Label<'a>, Err
 /// where they carry none, its joints are written in its order and the ones the build
 /// skipped (`skipped_joints`) written back as it has them. On success returns
 /// `B2S_CODE_OK` and stores a new capture in `*out_capture`; free it with
-/// `b2s_capture_free`. An engine number whose capture the library does not make, or a text
+/// `b2s_capture_free`. An engine number that names no engine version, or a text
 /// that is not UTF-8, fails with `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there,
 /// returns the error's code and, when `error` is not NULL, fills it. Thread-safe.
 ///

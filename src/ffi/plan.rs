@@ -36,8 +36,7 @@ unsafe impl Sync for PlanHandle {}
 /// success returns `B2S_CODE_OK` and stores a new plan in `*out_plan`; free it with
 /// `b2s_plan_free`. A placement the engine cannot take is no failure: the plan then holds
 /// only its report and its view's `placed` is false. An engine number that names no
-/// version, or one whose mapping the library does not make yet, fails with
-/// `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there, returns the error's code and,
+/// version fails with `B2S_CODE_INVALID_ARGUMENT`. On failure stores NULL there, returns the error's code and,
 /// when `error` is not NULL, fills it. Thread-safe.
 ///
 /// # Safety
