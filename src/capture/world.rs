@@ -112,7 +112,7 @@ impl Family {
     ) -> Option<Joint> {
         match self {
             Family::Box2d2(version) => box2d2::joint(version, held, a, b, level, say),
-            Family::Box2d3(v3) => box2d3::joint(v3, held, level, say),
+            Family::Box2d3(v3) => box2d3::joint(v3, held, a, level, say),
         }
     }
 }

@@ -3,11 +3,12 @@
 //! frames), the motor joint read back as Friction or Motor, and what has no form.
 
 use super::bodies::angle_of;
-use crate::capture::HeldJoint;
 use crate::capture::search::{nearest, nearest_pair};
 use crate::capture::world::Say;
+use crate::capture::{HeldBody, HeldJoint};
 use crate::plan::box2d3::V3;
 use crate::plan::box2d3::joints::{MOTOR_STEP_RATE, TWO_PI, motor_hertz, planned_frames};
+use crate::plan::math::rotate;
 use crate::plan::printf::G9;
 use crate::plan::{PlanJointKind, Rot};
 use crate::scene::{Joint, JointKind, Vec2};
@@ -25,6 +26,7 @@ fn without(say: &mut Say, what: &str) {
 pub(crate) fn joint(
     v3: V3,
     held: &HeldJoint,
+    a: &HeldBody,
     level: Option<&Joint>,
     say: &mut Say,
 ) -> Option<Joint> {
@@ -38,7 +40,10 @@ pub(crate) fn joint(
         Ok(PlanJointKind::Wheel) if j.enable_spring => JointKind::Wheel,
         Ok(PlanJointKind::Wheel) => JointKind::Line,
         Ok(PlanJointKind::Motor | PlanJointKind::Friction) => {
-            let mut joint = if v3.frames() { motor_v32(held, say) } else { motor_v31(held, level) };
+            let mut joint = match v3.frames() {
+                true => motor_v32(held, say),
+                false => motor_v31(held, a.body.rotation, level, say),
+            };
             joint.collide_connected = j.collide_connected;
             return Some(joint);
         }
@@ -211,14 +216,16 @@ fn frames_v32(held: &HeldJoint, joint: &mut Joint, say: &mut Say) {
 /// v3.1's motor joint holds Box2D 2.3's fields: Friction where it holds no offset and no
 /// CorrectionFactor (what the build makes of one), else Motor. It holds no anchors: a
 /// Friction built from the level's keeps the level's, which the build reported it cannot
-/// act at.
-fn motor_v31(held: &HeldJoint, level: Option<&Joint>) -> Joint {
+/// act at. It holds a Motor's LinearOffset in world axes, where the build turned the
+/// file's by body A's rotation `q_a`: turned back, the level's own where it still gives
+/// what is held.
+fn motor_v31(held: &HeldJoint, q_a: Rot, level: Option<&Joint>, say: &mut Say) -> Joint {
     let j = &held.joint;
     let offset = j.linear_offset;
     let friction =
         j.correction_factor == 0.0 && offset.x == 0.0 && offset.y == 0.0 && j.angular_offset == 0.0;
     let mut joint = Joint::new(if friction { JointKind::Friction } else { JointKind::Motor });
-    joint.linear_offset = offset;
+    joint.linear_offset = if friction { offset } else { offset_in_a(offset, q_a, level, say) };
     joint.angular_offset = j.angular_offset;
     joint.max_force = j.max_force;
     joint.max_torque = j.max_torque;
@@ -228,6 +235,29 @@ fn motor_v31(held: &HeldJoint, level: Option<&Joint>) -> Joint {
         joint.local_anchor_b = level.local_anchor_b;
     }
     joint
+}
+
+/// The LinearOffset in body A's frame that, turned by `q_a` as the build turns it, gives
+/// `held`: the level's where it does, else the one searched (reported where none does).
+fn offset_in_a(held: Vec2, q_a: Rot, level: Option<&Joint>, say: &mut Say) -> Vec2 {
+    let gives = |offset: Vec2| {
+        let turned = rotate(q_a, offset);
+        turned.x.to_bits() == held.x.to_bits() && turned.y.to_bits() == held.y.to_bits()
+    };
+    let level = level.filter(|l| l.kind() == Some(JointKind::Motor)).map(|l| l.linear_offset);
+    if let Some(offset) = level.filter(|&o| gives(o)) {
+        return offset;
+    }
+    let back = rotate(Rot { c: q_a.c, s: -q_a.s }, held);
+    nearest_pair(back, gives).unwrap_or_else(|nearest| {
+        say.lossy(format_args!(
+            "no LinearOffset turned by body A's rotation gives its offset ({}, {}) exactly; the \
+             nearest was written",
+            G9(held.x),
+            G9(held.y)
+        ));
+        nearest
+    })
 }
 
 /// v3.2's motor joint: Friction where it drives no velocity and has no springs, its frames

@@ -104,6 +104,11 @@ fn an_angle_whose_rotation_is_the_held_one_and_one_report_for_those_none_gives()
     assert!(none.is_empty());
 }
 
+/// A static body A that has not turned.
+fn unturned() -> HeldBody {
+    HeldBody { body: static_body(), label: UNLABELLED }
+}
+
 fn static_body() -> PlanBody {
     PlanBody {
         body: NONE,
@@ -359,7 +364,7 @@ fn captured(
         .map(|&j| {
             let mut held = held_joint(j);
             hold(&mut held);
-            let (joint, said) = saying(|say| super::joint(v3, &held, None, say));
+            let (joint, said) = saying(|say| super::joint(v3, &held, &unturned(), None, say));
             (joint.unwrap(), said)
         })
         .collect()
@@ -541,7 +546,7 @@ fn a_revolute_or_prismatic_spring_is_said_and_a_kind_unknown_not_written() {
     let mut held =
         held_joint(PlanJoint { kind: PlanJointKind::Pulley as u32, ..PlanJoint::default() });
     held.joint.kind = 99;
-    let (joint, said) = saying(|say| super::joint(V3::V32, &held, None, say));
+    let (joint, said) = saying(|say| super::joint(V3::V32, &held, &unturned(), None, say));
     assert!(joint.is_none());
     assert_eq!(
         said,
@@ -681,7 +686,7 @@ fn a_v31_friction_joint_keeps_the_level_s_anchors() {
         max_torque: 1.0,
         ..PlanJoint::default()
     });
-    let (joint, said) = saying(|say| super::joint(V3::V31, &held, Some(&level), say));
+    let (joint, said) = saying(|say| super::joint(V3::V31, &held, &unturned(), Some(&level), say));
     let joint = joint.unwrap();
     assert_eq!(said, Vec::<String>::new());
     assert_eq!(joint.kind(), Some(JointKind::Friction));
@@ -689,7 +694,7 @@ fn a_v31_friction_joint_keeps_the_level_s_anchors() {
         (joint.local_anchor_a, joint.local_anchor_b),
         (level.local_anchor_a, level.local_anchor_b)
     );
-    let (host, _) = saying(|say| super::joint(V3::V31, &held, None, say));
+    let (host, _) = saying(|say| super::joint(V3::V31, &held, &unturned(), None, say));
     assert_eq!(host.unwrap().local_anchor_a, Vec2::ZERO, "a host's friction joint holds none");
 }
 
@@ -720,4 +725,32 @@ fn a_chain_held_whole_is_the_plans_chain() {
     let (none, said) = saying(|say| super::shape(V3::V31, &[chain], &points, say));
     assert!(none.is_none());
     assert_eq!(said, ["an open chain of 3 points, where one has 4 or more; not written"]);
+}
+
+/// v3.1 holds a Motor's LinearOffset in world axes, the file's turned by body A's rotation as
+/// the build makes the joint: the capture turns it back, the level's own where it gives the
+/// held bits.
+#[test]
+fn a_v31_motor_offset_is_turned_back_into_body_a_s_frame() {
+    let q = rotation(0.7);
+    let a = HeldBody { body: PlanBody { rotation: q, ..static_body() }, label: UNLABELLED };
+    let level = crate::scene::Joint {
+        linear_offset: v(1.5, -0.25),
+        correction_factor: 0.3,
+        ..crate::scene::Joint::new(JointKind::Motor)
+    };
+    let held = held_joint(PlanJoint {
+        kind: PlanJointKind::Motor as u32,
+        linear_offset: crate::plan::math::rotate(q, level.linear_offset),
+        correction_factor: 0.3,
+        ..PlanJoint::default()
+    });
+    let (joint, said) = saying(|say| super::joint(V3::V31, &held, &a, Some(&level), say));
+    assert_eq!(said, Vec::<String>::new());
+    assert_eq!(joint.unwrap().linear_offset, level.linear_offset);
+    let (host, said) = saying(|say| super::joint(V3::V31, &held, &a, None, say));
+    let offset = host.unwrap().linear_offset;
+    assert_eq!(said, Vec::<String>::new(), "a host's offset is searched");
+    assert_eq!(crate::plan::math::rotate(q, offset), held.joint.linear_offset);
+    assert!((offset.x - 1.5).abs() < 1e-5 && (offset.y + 0.25).abs() < 1e-5, "{offset:?}");
 }
