@@ -4,7 +4,7 @@
 // Box2D 2.4's CreateFixture alone would recompute a body's mass from all its fixtures each
 // time, so the one-body scene also checks that the mass the adapter has Box2D compute once
 // is, bit for bit, what Box2D's ResetMassData gives over those fixtures. capture_world of
-// that body must grow linearly too.
+// that body must grow linearly too, and so must capture_world of a built level.
 #include <box2d/box2d.h>
 #include <box2scene.h>
 #include <box2scene/box2d.hpp>
@@ -123,6 +123,37 @@ static int capture_of_one_body() {
     return 0;
 }
 
+/// capture_world of a built level (given the scene and what the build made, so that every
+/// record keeps its place and names): each engine object's scene record is found by hashing,
+/// not by a walk over what the build made.
+static int capture_of_a_built_level() {
+    for (b2s_scene* (*make)(uint32_t) : {growth_many_bodies, growth_many_joints}) {
+        double times[2] = {0.0, 0.0};
+        const uint32_t sizes[2] = {GROWTH_SMALL, GROWTH_LARGE};
+        for (int i = 0; i < 2; ++i) {
+            ScenePtr scene(make(sizes[i]));
+            ENSURE(scene != nullptr);
+            b2World world(b2Vec2(0.0f, -10.0f));
+            box2scene::Built built = box2scene::build_world(scene.get(), world);
+            ENSURE(built.reports.empty());
+            times[i] = DBL_MAX;
+            for (int run = 0; run < GROWTH_RUNS; ++run) {
+                std::vector<box2scene::Report> reports;
+                double start = growth_clock();
+                ScenePtr captured(box2scene::capture_world(world, built, scene.get(), reports));
+                times[i] = std::min(times[i], growth_clock() - start);
+                ENSURE(captured != nullptr && reports.empty());
+                const b2s_scene_view& view = view_of(captured);
+                const b2s_scene_view& level = view_of(scene);
+                ENSURE_EQ(view.body_count, level.body_count);
+                ENSURE_EQ(view.joint_count, level.joint_count);
+            }
+        }
+        ENSURE(growth_linear("capture of a built level", times[0], times[1]));
+    }
+    return 0;
+}
+
 static int many_bodies() {
     ENSURE(grows_linearly("bodies", growth_many_bodies,
                           [](const box2scene::Built& built, uint32_t count) {
@@ -151,6 +182,7 @@ int main() {
     int failed = 0;
     failed += RUN_TEST(fixtures_on_one_body);
     failed += RUN_TEST(capture_of_one_body);
+    failed += RUN_TEST(capture_of_a_built_level);
     failed += RUN_TEST(many_bodies);
     failed += RUN_TEST(many_joints);
     return failed;

@@ -49,7 +49,13 @@ class WorldReader {
 public:
     /// `built`: what build_world made of the level the capture is given, or nullptr.
     WorldReader(b2World& world, const Namer& namer, const Built* built)
-        : world_(world), namer_(namer), built_(built) {}
+        : world_(world), namer_(namer), built_(built) {
+        if (built_ != nullptr) {
+            index_made(built_->bodies, made_bodies_);
+            index_made(built_->fixtures, made_fixtures_);
+            index_made(built_->joints, made_joints_);
+        }
+    }
 
     b2s_held_world read() {
         for (b2Body* body : creation_order(world_.GetBodyList())) {
@@ -87,6 +93,26 @@ public:
     }
 
 private:
+    /// Where each object build_world made stands in what it made (its scene record, or its
+    /// fixture slot), found by hashing: one walk over what it made, not one an object.
+    template <class T>
+    static void index_made(const std::vector<T*>& made,
+                           std::unordered_map<const T*, uint32_t>& at) {
+        at.reserve(made.size());
+        for (uint32_t i = 0; i < made.size(); ++i) {
+            if (made[i] != nullptr) {
+                at.emplace(made[i], i);
+            }
+        }
+    }
+
+    /// The scene record `object` was made from, or B2S_NONE (the host's).
+    template <class T>
+    static uint32_t made_at(const std::unordered_map<const T*, uint32_t>& at, const T* object) {
+        auto found = at.find(object);
+        return found != at.end() ? found->second : B2S_NONE;
+    }
+
     /// A text the records point at, kept until the capture is made; NULL for none.
     b2s_str keep(const std::string& text) {
         if (text.empty()) {
@@ -105,7 +131,7 @@ private:
     void read_body(b2Body& body) {
         b2s_held_body held{};
         b2s_plan_body& b = held.body;
-        b.body = built_ != nullptr ? body_index(*built_, &body) : B2S_NONE;
+        b.body = made_at(made_bodies_, &body);
         b.kind = static_cast<uint32_t>(body.GetType());
         b.position = to_b2s(body.GetPosition());
         b.angle = body.GetAngle();
@@ -183,7 +209,7 @@ private:
     void read_fixture(b2Fixture& fixture) {
         b2s_held_shape held{};
         b2s_plan_shape& s = held.shape;
-        s.slot = built_ != nullptr ? fixture_slot(*built_, &fixture) : B2S_NONE;
+        s.slot = made_at(made_fixtures_, &fixture);
         s.fixture = B2S_NONE;
         s.shape = B2S_NONE;
         read_shape(*fixture.GetShape(), held);
@@ -215,7 +241,7 @@ private:
     void read_joint(b2Joint& joint) {
         b2s_held_joint held{};
         b2s_plan_joint& j = held.joint;
-        j.joint = built_ != nullptr ? joint_index(*built_, &joint) : B2S_NONE;
+        j.joint = made_at(made_joints_, &joint);
         j.body_a = held_body(joint.GetBodyA());
         j.body_b = held_body(joint.GetBodyB());
         j.joint_a = j.joint_b = B2S_NONE;
@@ -352,6 +378,9 @@ private:
     std::deque<std::string> texts_; // a deque keeps each text where it is as it grows
     std::unordered_map<const b2Body*, uint32_t> body_index_;
     std::unordered_map<const b2Joint*, uint32_t> joint_index_;
+    std::unordered_map<const b2Body*, uint32_t> made_bodies_;
+    std::unordered_map<const b2Fixture*, uint32_t> made_fixtures_;
+    std::unordered_map<const b2Joint*, uint32_t> made_joints_;
 };
 
 /// The scene of what `world` holds, labelled from `scene` (what build_world made `built`
