@@ -257,10 +257,11 @@ static bool chains_captured(const b2s_scene_view* view, const v3_built* built,
 }
 
 /* The fastest of GROWTH_RUNS captures of every body of `scene` built (once, as `built`
- * expects) into a new world, or a negative time when the build or a capture is not as
- * expected. */
+ * expects) into a new world, given the level when `of_the_level` (each record's scene
+ * record found from what the build made), or a negative time when the build or a capture
+ * is not as expected. */
 static double fastest_capture(const b2s_scene* scene, uint32_t count, built_check* built,
-                              captured_check* captured) {
+                              captured_check* captured, bool of_the_level) {
     v3_world world = build_v3(scene);
     if (world.built == NULL || world.built->reports.count != 0 ||
         !built(world.built, count)) {
@@ -277,9 +278,12 @@ static double fastest_capture(const b2s_scene* scene, uint32_t count, built_chec
         v3_reports reports;
         b2s_error error;
         double start = growth_clock();
-        b2s_code code = V3_ADAPTER(capture_world)(world.id, world.built->bodies,
-                                                 world.built->body_count, &capture, &reports,
-                                                 &error);
+        b2s_code code =
+            of_the_level
+                ? V3_ADAPTER(capture_built)(world.id, world.built, scene, &capture, &reports,
+                                            &error)
+                : V3_ADAPTER(capture_world)(world.id, world.built->bodies,
+                                            world.built->body_count, &capture, &reports, &error);
         double time = growth_clock() - start;
         if (code != B2S_CODE_OK) {
             fprintf(stderr, "the capture of %u failed: %s\n", (unsigned)count, error.message);
@@ -308,6 +312,7 @@ typedef struct growth_case {
     b2s_scene* (*make)(uint32_t count);
     built_check* built;
     captured_check* captured; /* NULL: the build is timed; else the capture */
+    bool of_the_level;        /* the capture is given the scene and what the build made */
 } growth_case;
 
 /* Times `test`'s scene at both sizes: whether every run is as expected and the larger
@@ -322,7 +327,8 @@ static bool grows_linearly(const growth_case* test) {
         }
         times[i] = test->captured == NULL
                        ? fastest_build(scene, sizes[i], test->built)
-                       : fastest_capture(scene, sizes[i], test->built, test->captured);
+                       : fastest_capture(scene, sizes[i], test->built, test->captured,
+                                         test->of_the_level);
         b2s_scene_free(scene);
         if (times[i] < 0.0) {
             return false;
@@ -332,55 +338,67 @@ static bool grows_linearly(const growth_case* test) {
 }
 
 static int shapes_on_one_body(void) {
-    const growth_case test = {"shapes on one body", growth_one_body, one_body_built, NULL};
+    const growth_case test = {"shapes on one body", growth_one_body, one_body_built, NULL, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int many_bodies(void) {
-    const growth_case test = {"bodies", growth_many_bodies, bodies_built, NULL};
+    const growth_case test = {"bodies", growth_many_bodies, bodies_built, NULL, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int many_joints(void) {
-    const growth_case test = {"joints", growth_many_joints, joints_built, NULL};
+    const growth_case test = {"joints", growth_many_joints, joints_built, NULL, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int capture_of_shapes_on_one_body(void) {
     const growth_case test = {"capture: shapes on one body", growth_one_body, one_body_built,
-                              one_body_captured};
+                              one_body_captured, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int capture_of_bodies(void) {
     const growth_case test = {"capture: bodies", growth_many_bodies, bodies_built,
-                              bodies_captured};
+                              bodies_captured, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int capture_of_joints(void) {
     const growth_case test = {"capture: joints", growth_many_joints, joints_built,
-                              joints_captured};
+                              joints_captured, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int capture_of_joints_among_as_many_bodies(void) {
     const growth_case test = {"capture: joints among as many bodies", growth_joined_bodies,
-                              joints_built, joints_captured};
+                              joints_built, joints_captured, false};
     ENSURE(grows_linearly(&test));
     return 0;
 }
 
 static int capture_of_chains_on_one_body(void) {
     const growth_case test = {"capture: chains on one body", growth_chains, chains_built,
-                              chains_captured};
+                              chains_captured, false};
     ENSURE(grows_linearly(&test));
+    return 0;
+}
+
+/* A capture of a built level finds the fixture slot of each shape once: a body of many
+ * shapes, and one of many chains, take no walk over the body's slots a shape. */
+static int capture_of_a_built_level(void) {
+    const growth_case shapes = {"capture of the level: shapes on one body", growth_one_body,
+                                one_body_built, one_body_captured, true};
+    ENSURE(grows_linearly(&shapes));
+    const growth_case chains = {"capture of the level: chains on one body", growth_chains,
+                                chains_built, chains_captured, true};
+    ENSURE(grows_linearly(&chains));
     return 0;
 }
 
@@ -395,5 +413,6 @@ int main(void) {
     failed += RUN_TEST(capture_of_joints);
     failed += RUN_TEST(capture_of_joints_among_as_many_bodies);
     failed += RUN_TEST(capture_of_chains_on_one_body);
+    failed += RUN_TEST(capture_of_a_built_level);
     return failed;
 }

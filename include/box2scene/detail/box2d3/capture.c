@@ -20,12 +20,21 @@ typedef struct b2s3_level_joint {
     uint32_t record;
 } b2s3_level_joint;
 
+/* A shape the build made and the fixture slot it was made for. */
+typedef struct b2s3_level_shape {
+    b2ShapeId id;
+    uint32_t slot;
+} b2s3_level_shape;
+
 /* What a capture of a built world reads the scene's indices from: what the build made,
- * the scene, the scene body of each captured body, and the built joints sorted by id. */
+ * the scene, the scene body of each captured body, and the built shapes and joints sorted
+ * by id. */
 typedef struct b2s3_level {
     const b2s3_built_t* built;
     const b2s_scene_view* view;
     const uint32_t* body_records;
+    b2s3_level_shape* shapes;
+    uint32_t shape_count;
     b2s3_level_joint* joints;
     uint32_t joint_count;
 } b2s3_level;
@@ -73,6 +82,11 @@ static int b2s3_level_joint_order(const void* a, const void* b) {
     return B2S3_ID_ORDER(x, y);
 }
 
+static int b2s3_level_shape_order(const void* a, const void* b) {
+    b2ShapeId x = ((const b2s3_level_shape*)a)->id, y = ((const b2s3_level_shape*)b)->id;
+    return B2S3_ID_ORDER(x, y);
+}
+
 static int b2s3_shape_by_index(const void* a, const void* b) {
     int32_t x = ((const b2ShapeId*)a)->index1, y = ((const b2ShapeId*)b)->index1;
     return (x > y) - (x < y);
@@ -93,18 +107,15 @@ static uint32_t b2s3_held_index(const b2s3_reader* r, b2BodyId body) {
 
 /* ---- shapes */
 
-/* The fixture slot of the level's body `record` that `shape` was built for, or B2S_NONE. */
-static uint32_t b2s3_slot_of(const b2s3_level* level, uint32_t record, b2ShapeId shape) {
+/* The fixture slot that `shape` was built for, or B2S_NONE. */
+static uint32_t b2s3_slot_of(const b2s3_level* level, b2ShapeId shape) {
     if (level == NULL) {
         return B2S_NONE;
     }
-    b2s_range slots = level->view->bodies[record].fixtures;
-    for (uint32_t slot = slots.first; slot < slots.first + slots.count; ++slot) {
-        if (b2s3_slot_holds(level->built, slot, shape)) {
-            return slot;
-        }
-    }
-    return B2S_NONE;
+    b2s3_level_shape key = {shape, 0};
+    const b2s3_level_shape* found = (const b2s3_level_shape*)bsearch(
+        &key, level->shapes, level->shape_count, sizeof key, b2s3_level_shape_order);
+    return found != NULL ? found->slot : B2S_NONE;
 }
 
 static b2s_held_shape* b2s3_add_shape(b2s3_reader* r, b2ShapeId id, uint32_t kind,
@@ -188,14 +199,14 @@ static void b2s3_read_shape(b2s3_reader* r, b2ShapeId id, uint32_t slot) {
 }
 
 /* A body's shapes, in the order they were created (a chain's segments together). */
-static void b2s3_read_shapes(b2s3_reader* r, b2BodyId body, uint32_t record) {
+static void b2s3_read_shapes(b2s3_reader* r, b2BodyId body) {
     int capacity = b2Body_GetShapeCount(body);
     b2ShapeId* segments = r->ids + capacity;
     int count = b2Body_GetShapes(body, r->ids, capacity);
     qsort(r->ids, (size_t)count, sizeof(b2ShapeId), b2s3_shape_by_index);
     for (int i = 0; i < count; ++i) {
         b2ShapeId id = r->ids[i];
-        uint32_t slot = b2s3_slot_of(r->level, record, id);
+        uint32_t slot = b2s3_slot_of(r->level, id);
         if (b2Shape_GetType(id) != b2_chainSegmentShape) {
             b2s3_read_shape(r, id, slot);
             continue;
@@ -239,7 +250,7 @@ static void b2s3_read_body(b2s3_reader* r, b2BodyId id, uint32_t index) {
     const char* name = b2Body_GetName(id);
     held->label.name = name != NULL && name[0] != '\0' ? name : NULL;
     body->shapes.first = r->shape_count;
-    b2s3_read_shapes(r, id, record);
+    b2s3_read_shapes(r, id);
     body->shapes.count = r->shape_count - body->shapes.first;
 }
 
@@ -541,6 +552,36 @@ static void b2s3_level_of(const b2s3_built_t* built, b2s3_level* level, b2BodyId
     qsort(level->joints, level->joint_count, sizeof(b2s3_level_joint), b2s3_level_joint_order);
 }
 
+/* Every shape the build made with its fixture slot (a chain's segments each), sorted by id,
+ * so that a shape's slot is a binary search and not a pass over its body's slots; false
+ * when memory runs out. */
+static bool b2s3_level_shapes(const b2s3_built_t* built, b2s3_level* level) {
+    size_t total = 0;
+    int widest = 0;
+    for (uint32_t slot = 0; slot < built->fixture_count; ++slot) {
+        int count = b2s3_slot_shapes(built, slot, NULL, 0);
+        total += (size_t)count;
+        widest = count > widest ? count : widest;
+    }
+    level->shapes = (b2s3_level_shape*)malloc((total + 1u) * sizeof(b2s3_level_shape));
+    b2ShapeId* ids = (b2ShapeId*)malloc(((size_t)widest + 1u) * sizeof(b2ShapeId));
+    if (level->shapes == NULL || ids == NULL) {
+        free(ids);
+        return false;
+    }
+    level->shape_count = 0;
+    for (uint32_t slot = 0; slot < built->fixture_count; ++slot) {
+        int count = b2s3_slot_shapes(built, slot, ids, widest);
+        for (int k = 0; k < count; ++k) {
+            b2s3_level_shape entry = {ids[k], slot};
+            level->shapes[level->shape_count++] = entry;
+        }
+    }
+    free(ids);
+    qsort(level->shapes, level->shape_count, sizeof(b2s3_level_shape), b2s3_level_shape_order);
+    return true;
+}
+
 b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
                                  const b2s_scene* scene, b2s_scene** out_scene,
                                  b2s3_reports_t* reports, b2s_error* error) {
@@ -560,17 +601,19 @@ b2s_code B2S3_API(capture_built)(b2WorldId world, const b2s3_built_t* built,
     }
     b2BodyId* bodies = (b2BodyId*)malloc((built->body_count + 1u) * sizeof(b2BodyId));
     uint32_t* records = (uint32_t*)malloc((built->body_count + 1u) * sizeof(uint32_t));
-    b2s3_level level = {built, view, NULL, NULL, 0};
+    b2s3_level level = {built, view, NULL, NULL, 0, NULL, 0};
     level.joints =
         (b2s3_level_joint*)malloc((built->joint_count + 1u) * sizeof(b2s3_level_joint));
     b2s_code code;
-    if (bodies == NULL || records == NULL || level.joints == NULL) {
+    if (bodies == NULL || records == NULL || level.joints == NULL ||
+        !b2s3_level_shapes(built, &level)) {
         code = b2s3_capture_error(error, B2S_CODE_INTERNAL, "out of memory");
     } else {
         uint32_t count = 0;
         b2s3_level_of(built, &level, bodies, records, &count);
         code = b2s3_capture_run(world, bodies, count, &level, scene, out_scene, reports, error);
     }
+    free(level.shapes);
     free(level.joints);
     free(records);
     free(bodies);

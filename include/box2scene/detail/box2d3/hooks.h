@@ -22,7 +22,7 @@
  *               motor joint and the friction joint's stand-in from a plan joint
  *   capture     a joint's frames and motor joint read as the engine holds them (the library
  *               inverts them), what a joint of a kind without a form is; the shape a fixture
- *               slot holds
+ *               slot holds, and every shape it holds (a chain's segments)
  */
 #ifndef BOX2SCENE_BOX2D3_HOOKS_H
 #define BOX2SCENE_BOX2D3_HOOKS_H
@@ -64,5 +64,7 @@ static void b2s3_read_motor(b2JointId id, b2s_held_joint* held);
 static const char* b2s3_joint_without_form(b2JointId id);
 static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot);
 static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape);
+static int b2s3_slot_shapes(const b2s3_built_t* built, uint32_t slot, b2ShapeId* out,
+                            int capacity);
 
 #endif /* BOX2SCENE_BOX2D3_HOOKS_H */

@@ -171,6 +171,21 @@ static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot) {
     return shape;
 }
 
+/* The shapes of fixture slot `slot` (its shape, or its chain's segments), up to `capacity`
+ * of them into `out`: how many it holds. */
+static int b2s3_slot_shapes(const b2s3_built_t* built, uint32_t slot, b2ShapeId* out,
+                            int capacity) {
+    b2ChainId chain = built->chains[slot];
+    if (B2_IS_NON_NULL(built->shapes[slot]) || B2_IS_NULL(chain) || !b2Chain_IsValid(chain)) {
+        if (capacity > 0) {
+            out[0] = built->shapes[slot];
+        }
+        return B2_IS_NON_NULL(built->shapes[slot]) ? 1 : 0;
+    }
+    int count = b2Chain_GetSegmentCount(chain);
+    return capacity >= count ? b2Chain_GetSegments(chain, out, capacity) : count;
+}
+
 /* Whether `shape`, a live shape, is fixture slot `slot`'s or one of its chain's segments. */
 static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape) {
     if (B2_ID_EQUALS(built->shapes[slot], shape)) {

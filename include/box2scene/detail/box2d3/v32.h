@@ -230,6 +230,23 @@ static b2ShapeId b2s3_slot_shape(const b2s3_built_t* built, uint32_t slot) {
     return built->shapes[slot];
 }
 
+/* The shapes of fixture slot `slot` (its shape, or its chain's segments), up to `capacity`
+ * of them into `out`: how many it holds. */
+static int b2s3_slot_shapes(const b2s3_built_t* built, uint32_t slot, b2ShapeId* out,
+                            int capacity) {
+    b2s_range segments = built->segments[slot];
+    if (segments.count == 0) {
+        if (capacity > 0) {
+            out[0] = built->shapes[slot];
+        }
+        return B2_IS_NON_NULL(built->shapes[slot]) ? 1 : 0;
+    }
+    for (uint32_t i = 0; i < segments.count && (int)i < capacity; ++i) {
+        out[i] = built->segment_pool[segments.first + i];
+    }
+    return (int)segments.count;
+}
+
 /* Whether `shape` is fixture slot `slot`'s or one of its chain's segments. */
 static bool b2s3_slot_holds(const b2s3_built_t* built, uint32_t slot, b2ShapeId shape) {
     if (B2_ID_EQUALS(built->shapes[slot], shape)) {
