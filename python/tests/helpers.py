@@ -86,3 +86,8 @@ def fidelity_scene(root: str, name: str) -> str:
 
     start = header.index('{"%s",' % name) + len(name) + 4
     return text(header[start : header.index('</World>"}', start) + len('</World>"')])
+
+
+def labels(scene, records):
+    """Each record's Name and the raw XML of its UserData (None where it has none)."""
+    return [(r.name, None if r.user_data is None else scene.user_data[r.user_data].raw) for r in records]

@@ -16,7 +16,7 @@ import box2scene.pyb2d3 as b2s3
 from box2scene._native import cosf, sinf
 
 from conftest import ROOT, scene_files, scene_id
-from helpers import DT, SceneMaker, codes, f32, finite, growth_over
+from helpers import DT, SceneMaker, codes, f32, finite, growth_over, labels
 
 
 def build(scene):
@@ -457,3 +457,16 @@ def test_a_capture_keeps_the_scene_names_of_fixtures():
     assert reports == []
     assert [b.name for b in saved.bodies] == ["Floor", "Puck"]
     assert [saved.fixtures[b.fixtures[0]].name for b in saved.bodies] == ["Ground", "Ball"]
+
+
+def test_a_capture_keeps_the_levels_names_and_user_data():
+    """Every body, fixture and joint the build made is saved with its scene Name and
+    UserData, with no host code; the joints v3 cannot hold are written back as the file has
+    them (the capture had kept names alone, and only of what v3 holds)."""
+    scene = box2scene.load(os.path.join(ROOT, "tests", "fixtures", "scenes", "every-v1-field.xml"))
+    world, built = build(scene)
+    saved, _ = b2s3.capture_world(world, built)
+    assert any(data is not None for _, data in labels(scene, scene.joints))
+    assert labels(saved, saved.bodies) == labels(scene, scene.bodies)
+    assert labels(saved, saved.joints) == labels(scene, scene.joints)
+    assert set(labels(saved, saved.fixtures)) == set(labels(scene, scene.fixtures))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 
 import Box2D as B
 import pytest
@@ -10,8 +11,8 @@ import pytest
 import box2scene
 import box2scene.pybox2d as b2s2
 
-from conftest import scene_files, scene_id
-from helpers import DT, SceneMaker, codes, f32, finite, growth_over
+from conftest import ROOT, scene_files, scene_id
+from helpers import DT, SceneMaker, codes, f32, finite, growth_over, labels
 
 
 def build(scene):
@@ -385,3 +386,15 @@ def test_a_capture_of_a_built_world_writes_a_skipped_joint_back_in_its_place_wit
     assert reports == []
     assert [(j.name, j.body_a, j.body_b) for j in saved.joints] == [("Far", 0, 1), ("Near", 0, 2)]
     assert saved.joints[0] == scene.joints[0]
+
+
+def test_a_capture_keeps_the_levels_names_and_user_data():
+    """Every body, fixture and joint the build made is saved with its scene Name and
+    UserData, with no host code (the capture had kept names alone)."""
+    scene = box2scene.load(os.path.join(ROOT, "tests", "fixtures", "scenes", "every-v1-field.xml"))
+    world, built = build(scene)
+    saved, _ = b2s2.capture_world(world, built)
+    assert any(data is not None for _, data in labels(scene, scene.bodies))
+    assert labels(saved, saved.bodies) == labels(scene, scene.bodies)
+    assert labels(saved, saved.joints) == labels(scene, scene.joints)
+    assert set(labels(saved, saved.fixtures)) == set(labels(scene, scene.fixtures))
