@@ -434,6 +434,45 @@ static int a_prismatic_20_m_past_its_limit_on_a_pinned_ball_is_refused(void) {
     return 0;
 }
 
+/* 0.3 m balls, body A pinned at the origin, body B 50 m along the axis of a wheel joint with
+ * the format's spring (2 Hz, 0.7), anchored at their centres: satisfied. */
+static void wheel_50_m_along_its_axis_by_hand(b2WorldId world) {
+    b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.3f);
+    b2BodyId b = ball_by_hand(world, (b2Vec2){50.0f, 0.0f}, 0.3f);
+    pin_by_hand(world, a);
+    b2WheelJointDef def = b2DefaultWheelJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = b;
+    def.localAxisA = (b2Vec2){1.0f, 0.0f};
+    def.enableSpring = true;
+    def.hertz = 2.0f;
+    def.dampingRatio = 0.7f;
+    b2CreateWheelJoint(world, &def);
+}
+
+/* One of the issue's levels that v3.1 dies of (SIGILL) when built by hand: a satisfied wheel
+ * joint with body B 50 m along its axis from a pinned 0.3 m ball. v3's wheel solver turns
+ * body A about body B's anchor (wheel_joint.c: b2Cross(d + rA, axis)), 236 radii of
+ * gyration out: the lever a prismatic joint's axis gives body A. The adapter built it; it
+ * leaves it out now, and what it builds holds. */
+static int a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused(void) {
+    ENSURE(dies_by_hand(wheel_50_m_along_its_axis_by_hand));
+    b2s_scene* scene = pinned_pair(
+        0.3f, "50 0",
+        "<Joint Type='Wheel'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>0 0</LocalAnchorA>"
+        "<LocalAnchorB>0 0</LocalAnchorB><LocalAxisA>1 0</LocalAxisA></Joint>");
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NON_NULL(w.built->joints[0]));
+    ENSURE(B2_IS_NULL(w.built->joints[1]));
+    ENSURE_EQ(w.built->reports.count, 1);
+    ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, 1, "as body A's lever"));
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
@@ -448,5 +487,6 @@ int main(void) {
     failed += RUN_TEST(a_line_joint_between_small_bodies_far_off_its_axis_is_refused);
     failed += RUN_TEST(a_fixed_rotation_body_keeps_turning_at_its_angular_velocity);
     failed += RUN_TEST(a_prismatic_20_m_past_its_limit_on_a_pinned_ball_is_refused);
+    failed += RUN_TEST(a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused);
     return failed;
 }

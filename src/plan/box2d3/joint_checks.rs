@@ -177,8 +177,16 @@ impl Mapper<'_> {
             self.check_anchor(c, "LocalAnchorA", a, joint.local_anchor_a, lever_a);
             let lever_b = self.lever(joint, a, lever);
             self.check_anchor(c, "LocalAnchorB", b, joint.local_anchor_b, lever_b);
-            if r.prismatic_lever_to_b && kind == Some(JointKind::Prismatic) {
-                // Its axis reaches body B's anchor: that is body A's lever too.
+            // Its axis reaches body B's anchor: that is body A's lever too. v3's line and
+            // wheel joints turn body A about it as well (`wheel_joint.c`: the cross product
+            // of d + rA with the axis): a wheel 50 m along its axis from a pinned 0.3 m ball
+            // made v3.1 assert.
+            let axis_reaches_b = match kind {
+                Some(JointKind::Prismatic) => r.prismatic_lever_to_b,
+                Some(JointKind::Line | JointKind::Wheel) => true,
+                _ => false,
+            };
+            if axis_reaches_b {
                 let b_anchor = transform_point(self.body(b).transform, joint.local_anchor_b);
                 let local = inv_transform_point(self.body(a).transform, b_anchor);
                 self.check_anchor(c, "LocalAnchorB, as body A's lever", a, local, lever);
@@ -403,6 +411,28 @@ mod tests {
              apart), and it starts violated by 3 m across its axis between two dynamic bodies, \
              beyond 4 radii of gyration (1.41421354 m); joint not created"
         );
+    }
+
+    #[test]
+    fn a_wheel_far_along_its_axis_is_body_as_lever() {
+        // The ground's anchor lies on the axis through ball 1's centre, 30 m along it: 84.9
+        // radii of gyration of the 0.5 m ball (beyond 75); 20 m: 56.6 (within).
+        let along = |x: &str| {
+            let fields = format!(
+                "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>{x} 0</LocalAnchorB>\
+                 <LocalAxisA>1 0</LocalAxisA>"
+            );
+            joint("Wheel", 1, 0, &fields)
+        };
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &along("31"));
+            assert!(plan.joints().is_empty());
+            let (code, _, index, message) = messages(&plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 0));
+            assert!(message.starts_with("LocalAnchorB, as body A's lever: "), "{message}");
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &along("21"));
+            assert_eq!(plan.joints().len(), 1);
+        }
     }
 
     #[test]
