@@ -292,7 +292,11 @@ impl Mapper<'_> {
             ));
             return;
         }
-        if wheel || !(violation > r.max_pulled_violation) {
+        if wheel {
+            self.check_second_rail(index, joint, across, check);
+            return;
+        }
+        if !(violation > r.max_pulled_violation) {
             return;
         }
         let bodies = [joint.body_a, joint.body_b];
@@ -315,6 +319,34 @@ impl Mapper<'_> {
             if self.dynamic_mass(body).is_some() {
                 self.pulled[body as usize] = index + 1;
             }
+        }
+    }
+
+    /// A dynamic body A on two line or wheel joints to bodies that do not turn (rails) holds
+    /// while both start on their axes; once either starts violated across its axis, v3.1
+    /// and v3.2 assert (0.1 m balls from 0.3 m, 0.2 m balls from 0.5 m; a single such joint
+    /// holds 20 m off). The first is planned, a later one is not.
+    fn check_second_rail(&mut self, index: u32, joint: &Joint, across: f32, check: &mut Check) {
+        let (a, b) = (joint.body_a, joint.body_b);
+        let b_turns = self.dynamic_mass(b).is_some_and(|m| m.inertia > 0.0);
+        if self.dynamic_mass(a).is_none() || b_turns {
+            return;
+        }
+        let Some((first, first_across)) = self.railed[a as usize] else {
+            self.railed[a as usize] = Some((index, across));
+            return;
+        };
+        let slop = self.range.linear_slop;
+        if across > slop || first_across > slop {
+            check.fail(format_args!(
+                "body {a} already runs on joint {first}, a line or wheel joint to a body that \
+                 does not turn: a second such joint lies beyond {}'s working range unless both \
+                 start on their axes (this one starts {} m off it, joint {first} {} m; its \
+                 solver asserts)",
+                self.v3.name(),
+                G9(across),
+                G9(first_across)
+            ));
         }
     }
 }
@@ -432,6 +464,42 @@ mod tests {
             assert!(message.starts_with("LocalAnchorB, as body A's lever: "), "{message}");
             let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &along("21"));
             assert_eq!(plan.joints().len(), 1);
+        }
+    }
+
+    #[test]
+    fn a_second_rail_is_refused_once_either_starts_off_its_axis() {
+        // Ball 1 runs on two wheel joints to the ground: along x through its centre, and
+        // along y through the ground's anchor, which lies `off` m from the ball across y.
+        let rails = |off: &str| {
+            joint("Wheel", 1, 0, "<LocalAnchorB>1 0</LocalAnchorB><LocalAxisA>1 0</LocalAxisA>")
+                + &joint(
+                    "Wheel",
+                    1,
+                    0,
+                    &format!("<LocalAnchorB>{off} 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA>"),
+                )
+        };
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rails("1.3"));
+            assert_eq!(plan.joints().len(), 1);
+            assert_eq!(plan.joints()[0].joint, 0);
+            let (code, _, index, message) = messages(&plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 1));
+            assert!(
+                message.starts_with(
+                    "body 1 already runs on joint 0, a line or wheel joint to a body that does \
+                     not turn: a second such joint lies beyond"
+                ),
+                "{message}"
+            );
+            assert!(
+                message.contains("(this one starts 0.299999952 m off it, joint 0 0 m;"),
+                "{message}"
+            );
+            // Both on their axes: both are built.
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rails("1"));
+            assert_eq!(plan.joints().len(), 2);
         }
     }
 
