@@ -12,6 +12,8 @@
 #include "box2d32_support.h"
 
 #include <box2d/constants.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #define STEPS 600
 
@@ -304,6 +306,100 @@ static int a_fixed_rotation_spin_is_reported_lossy(void) {
     return 0;
 }
 
+/* A 0.2 m ball of density 1 at `position`, made through v3.2's own calls. */
+static b2BodyId ball_by_hand(b2WorldId world, b2Vec2 position) {
+    b2BodyDef def = b2DefaultBodyDef();
+    def.type = b2_dynamicBody;
+    def.position = b2ToPos(position);
+    b2BodyId body = b2CreateBody(world, &def);
+    b2ShapeDef shape = b2DefaultShapeDef();
+    shape.density = 1.0f;
+    b2Circle circle = {{0.0f, 0.0f}, 0.2f};
+    b2CreateCircleShape(body, &shape, &circle);
+    return body;
+}
+
+/* A wheel joint with the format's spring (2 Hz, 0.7) from `body` (its body A, anchored at its
+ * centre) to `ground`, anchored there at `anchor`, along `axis`, as the plan makes it. */
+static void wheel_to_ground_by_hand(b2WorldId world, b2BodyId body, b2BodyId ground,
+                                    b2Vec2 anchor, b2Rot axis) {
+    b2WheelJointDef def = b2DefaultWheelJointDef();
+    def.base.bodyIdA = body;
+    def.base.bodyIdB = ground;
+    def.base.localFrameA.q = axis;
+    def.base.localFrameB.p = anchor;
+    def.enableSpring = true;
+    def.hertz = 2.0f;
+    def.dampingRatio = 0.7f;
+    b2CreateWheelJoint(world, &def);
+}
+
+/* The issue's level, by hand, in a child (v3.2's assertion ends the process): a 0.2 m ball
+ * on two wheel joints to the static ground, one along x and one along y, each starting
+ * 0.5 m off its axis, and welded (satisfied) to a second ball. Whether the child died. */
+static bool weld_and_two_violated_wheels_die_by_hand(void) {
+    fflush(NULL);
+    pid_t child = fork();
+    if (child == 0) {
+        b2WorldDef world_def = b2DefaultWorldDef();
+        world_def.maximumLinearSpeed =
+            b2s_engine_working_range(B2S_ENGINE_BOX2D32)->world_max_linear_speed;
+        b2WorldId world = b2CreateWorld(&world_def);
+        b2BodyDef ground_def = b2DefaultBodyDef();
+        b2BodyId ground = b2CreateBody(world, &ground_def);
+        b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f});
+        b2BodyId b = ball_by_hand(world, (b2Vec2){1.0f, 0.0f});
+        wheel_to_ground_by_hand(world, a, ground, (b2Vec2){0.0f, 0.5f}, (b2Rot){1.0f, 0.0f});
+        wheel_to_ground_by_hand(world, a, ground, (b2Vec2){0.5f, 0.0f}, (b2Rot){0.0f, 1.0f});
+        b2WeldJointDef weld = b2DefaultWeldJointDef();
+        weld.base.bodyIdA = a;
+        weld.base.bodyIdB = b;
+        weld.base.localFrameA.p = (b2Vec2){0.5f, 0.0f};
+        weld.base.localFrameB.p = (b2Vec2){-0.5f, 0.0f};
+        b2CreateWeldJoint(world, &weld);
+        for (int step = 0; step < STEPS; ++step) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status);
+}
+
+/* The weld with two violated wheels to the ground (issue 41): v3.2 dies of it built by hand
+ * (SIGILL, b2IsValidVec2 in weld_joint.c), and so it did through the adapter. A body on two
+ * line or wheel joints to bodies that do not turn holds only while both start on their
+ * axes: the second wheel is left out, and the weld and the first wheel hold. */
+static int a_weld_with_two_violated_wheels_to_the_ground_keeps_one_wheel(void) {
+    ENSURE(weld_and_two_violated_wheels_die_by_hand());
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+        "<Radius>0.2</Radius><Position>0 0</Position></Shape></Shapes>"
+        "<Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>"
+        "<Bodies><Body Type='Static'/><Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures>"
+        "</Body><Body Type='Dynamic'><Position>1 0</Position><Fixtures><ID>0</ID></Fixtures>"
+        "</Body></Bodies><Joints>"
+        "<Joint Type='Wheel'><BodyA>1</BodyA><BodyB>0</BodyB><LocalAnchorA>0 0</LocalAnchorA>"
+        "<LocalAnchorB>0 0.5</LocalAnchorB><LocalAxisA>1 0</LocalAxisA></Joint>"
+        "<Joint Type='Wheel'><BodyA>1</BodyA><BodyB>0</BodyB><LocalAnchorA>0 0</LocalAnchorA>"
+        "<LocalAnchorB>0.5 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA></Joint>"
+        "<Joint Type='Weld'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>0.5 0</LocalAnchorA>"
+        "<LocalAnchorB>-0.5 0</LocalAnchorB></Joint></Joints></World>");
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE_EQ(world.built->reports.count, 1);
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 1), 1);
+    ENSURE(strstr(world.built->reports.items[0].message, "already runs on joint 0") != NULL);
+    ENSURE(!B2_IS_NULL(world.built->joints[0]));
+    ENSURE(B2_IS_NULL(world.built->joints[1]));
+    ENSURE(!B2_IS_NULL(world.built->joints[2]));
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 /* The engine facts of v3.2's table are v3.2's own constants (box2d/constants.h and
  * math_functions.h, at one length unit per metre), to the bit. */
 static int the_tables_engine_facts_are_v32s_constants(void) {
@@ -327,5 +423,6 @@ int main(void) {
     failed += RUN_TEST(a_prismatic_lever_177_radii_along_its_axis_is_refused);
     failed += RUN_TEST(a_fixed_rotation_spin_is_reported_lossy);
     failed += RUN_TEST(the_tables_engine_facts_are_v32s_constants);
+    failed += RUN_TEST(a_weld_with_two_violated_wheels_to_the_ground_keeps_one_wheel);
     return failed;
 }

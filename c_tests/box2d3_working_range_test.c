@@ -6,6 +6,9 @@
  */
 #include "box2d3_support.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 static const char* const TRIANGLES =
     "<World Version=\"2\"><Gravity>0 -10</Gravity>"
     "<Shapes><Shape Type=\"Polygon\"><Vertices><Vertex>-0.5 -0.288675</Vertex>"
@@ -329,6 +332,147 @@ static int a_wheel_to_a_body_that_cannot_turn_has_the_short_lever(void) {
     return 0;
 }
 
+/* ---- the v3.1 levels, built by hand through v3.1's own calls */
+
+/* A ball of `radius` m, density 1, at `position`. */
+static b2BodyId ball_by_hand(b2WorldId world, b2Vec2 position, float radius) {
+    b2BodyDef def = b2DefaultBodyDef();
+    def.type = b2_dynamicBody;
+    def.position = position;
+    b2BodyId body = b2CreateBody(world, &def);
+    b2ShapeDef shape = b2DefaultShapeDef();
+    shape.density = 1.0f;
+    b2Circle circle = {{0.0f, 0.0f}, radius};
+    b2CreateCircleShape(body, &shape, &circle);
+    return body;
+}
+
+/* `body` pinned to a static ground at its centre by a revolute joint, as the plan makes it. */
+static void pin_by_hand(b2WorldId world, b2BodyId body) {
+    b2BodyDef def = b2DefaultBodyDef();
+    b2BodyId ground = b2CreateBody(world, &def);
+    b2RevoluteJointDef pin = b2DefaultRevoluteJointDef();
+    pin.bodyIdA = ground;
+    pin.bodyIdB = body;
+    pin.localAnchorA = b2Body_GetPosition(body);
+    b2CreateRevoluteJoint(world, &pin);
+}
+
+/* Whether a world `build` makes by hand (in a world as the adapter's world def makes it)
+ * ends its process within 600 steps: an assertion of v3, run in a child. */
+static bool dies_by_hand(void (*build)(b2WorldId world)) {
+    fflush(NULL);
+    pid_t child = fork();
+    if (child == 0) {
+        b2WorldDef def = b2DefaultWorldDef();
+        def.maximumLinearSpeed = b2s_engine_working_range(B2S_ENGINE_BOX2D31)->world_max_linear_speed;
+        b2WorldId world = b2CreateWorld(&def);
+        build(world);
+        for (int i = 0; i < 600; ++i) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status);
+}
+
+/* Two 0.1 m balls, body A pinned at the origin, body B 20 m along the axis of a prismatic
+ * joint whose limit holds it within 1 m: 19 m from satisfied. */
+static void prismatic_20_m_past_its_limit_by_hand(b2WorldId world) {
+    b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.1f);
+    b2BodyId b = ball_by_hand(world, (b2Vec2){20.0f, 0.0f}, 0.1f);
+    pin_by_hand(world, a);
+    b2PrismaticJointDef def = b2DefaultPrismaticJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = b;
+    def.localAxisA = (b2Vec2){1.0f, 0.0f};
+    def.enableLimit = true;
+    def.lowerTranslation = -1.0f;
+    def.upperTranslation = 1.0f;
+    b2CreatePrismaticJoint(world, &def);
+}
+
+/* Two balls of `radius` m on joint 1, body A (1) pinned to the ground (0) by joint 0, body B
+ * (2) at `position`; `joint` is the second joint's XML, between bodies 1 and 2. */
+static b2s_scene* pinned_pair(float radius, const char* position, const char* joint) {
+    static char xml[2048];
+    snprintf(xml, sizeof xml,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+             "<Radius>%.9g</Radius><Position>0 0</Position></Shape></Shapes>"
+             "<Fixtures><Fixture><Shape>0</Shape><Density>1</Density></Fixture></Fixtures>"
+             "<Bodies><Body Type='Static'/><Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures>"
+             "</Body><Body Type='Dynamic'><Position>%s</Position><Fixtures><ID>0</ID>"
+             "</Fixtures></Body></Bodies><Joints><Joint Type='Revolute'><BodyA>0</BodyA>"
+             "<BodyB>1</BodyB><LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>"
+             "</Joint>%s</Joints></World>",
+             (double)radius, position, joint);
+    return load_text(xml);
+}
+
+/* One of the issue's levels that v3.1 dies of (SIGILL) when built by hand: a prismatic joint
+ * 19 m past its limit on a pinned 0.1 m ball. The adapter leaves the prismatic joint out,
+ * and what it builds holds. */
+static int a_prismatic_20_m_past_its_limit_on_a_pinned_ball_is_refused(void) {
+    ENSURE(dies_by_hand(prismatic_20_m_past_its_limit_by_hand));
+    b2s_scene* scene = pinned_pair(
+        0.1f, "20 0",
+        "<Joint Type='Prismatic'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>0 0</LocalAnchorA>"
+        "<LocalAnchorB>0 0</LocalAnchorB><LocalAxisA>1 0</LocalAxisA><EnableLimit>true"
+        "</EnableLimit><LowerTranslation>-1</LowerTranslation><UpperTranslation>1"
+        "</UpperTranslation></Joint>");
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NON_NULL(w.built->joints[0]));
+    ENSURE(B2_IS_NULL(w.built->joints[1]));
+    ENSURE_EQ(w.built->reports.count, 1);
+    ENSURE_EQ(count_reports(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 1), 1);
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+/* 0.3 m balls, body A pinned at the origin, body B 50 m along the axis of a wheel joint with
+ * the format's spring (2 Hz, 0.7), anchored at their centres: satisfied. */
+static void wheel_50_m_along_its_axis_by_hand(b2WorldId world) {
+    b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.3f);
+    b2BodyId b = ball_by_hand(world, (b2Vec2){50.0f, 0.0f}, 0.3f);
+    pin_by_hand(world, a);
+    b2WheelJointDef def = b2DefaultWheelJointDef();
+    def.bodyIdA = a;
+    def.bodyIdB = b;
+    def.localAxisA = (b2Vec2){1.0f, 0.0f};
+    def.enableSpring = true;
+    def.hertz = 2.0f;
+    def.dampingRatio = 0.7f;
+    b2CreateWheelJoint(world, &def);
+}
+
+/* One of the issue's levels that v3.1 dies of (SIGILL) when built by hand: a satisfied wheel
+ * joint with body B 50 m along its axis from a pinned 0.3 m ball. v3's wheel solver turns
+ * body A about body B's anchor (wheel_joint.c: b2Cross(d + rA, axis)), 236 radii of
+ * gyration out: the lever a prismatic joint's axis gives body A. The adapter built it; it
+ * leaves it out now, and what it builds holds. */
+static int a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused(void) {
+    ENSURE(dies_by_hand(wheel_50_m_along_its_axis_by_hand));
+    b2s_scene* scene = pinned_pair(
+        0.3f, "50 0",
+        "<Joint Type='Wheel'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>0 0</LocalAnchorA>"
+        "<LocalAnchorB>0 0</LocalAnchorB><LocalAxisA>1 0</LocalAxisA></Joint>");
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NON_NULL(w.built->joints[0]));
+    ENSURE(B2_IS_NULL(w.built->joints[1]));
+    ENSURE_EQ(w.built->reports.count, 1);
+    ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, 1, "as body A's lever"));
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
@@ -342,5 +486,7 @@ int main(void) {
     failed += RUN_TEST(a_wheel_to_a_body_that_cannot_turn_has_the_short_lever);
     failed += RUN_TEST(a_line_joint_between_small_bodies_far_off_its_axis_is_refused);
     failed += RUN_TEST(a_fixed_rotation_body_keeps_turning_at_its_angular_velocity);
+    failed += RUN_TEST(a_prismatic_20_m_past_its_limit_on_a_pinned_ball_is_refused);
+    failed += RUN_TEST(a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused);
     return failed;
 }

@@ -177,8 +177,16 @@ impl Mapper<'_> {
             self.check_anchor(c, "LocalAnchorA", a, joint.local_anchor_a, lever_a);
             let lever_b = self.lever(joint, a, lever);
             self.check_anchor(c, "LocalAnchorB", b, joint.local_anchor_b, lever_b);
-            if r.prismatic_lever_to_b && kind == Some(JointKind::Prismatic) {
-                // Its axis reaches body B's anchor: that is body A's lever too.
+            // Its axis reaches body B's anchor: that is body A's lever too. v3's line and
+            // wheel joints turn body A about it as well (`wheel_joint.c`: the cross product
+            // of d + rA with the axis): a wheel 50 m along its axis from a pinned 0.3 m ball
+            // made v3.1 assert.
+            let axis_reaches_b = match kind {
+                Some(JointKind::Prismatic) => r.prismatic_lever_to_b,
+                Some(JointKind::Line | JointKind::Wheel) => true,
+                _ => false,
+            };
+            if axis_reaches_b {
                 let b_anchor = transform_point(self.body(b).transform, joint.local_anchor_b);
                 let local = inv_transform_point(self.body(a).transform, b_anchor);
                 self.check_anchor(c, "LocalAnchorB, as body A's lever", a, local, lever);
@@ -284,7 +292,11 @@ impl Mapper<'_> {
             ));
             return;
         }
-        if wheel || !(violation > r.max_pulled_violation) {
+        if wheel {
+            self.check_second_rail(index, joint, across, check);
+            return;
+        }
+        if !(violation > r.max_pulled_violation) {
             return;
         }
         let bodies = [joint.body_a, joint.body_b];
@@ -307,6 +319,34 @@ impl Mapper<'_> {
             if self.dynamic_mass(body).is_some() {
                 self.pulled[body as usize] = index + 1;
             }
+        }
+    }
+
+    /// A dynamic body A on two line or wheel joints to bodies that do not turn (rails) holds
+    /// while both start on their axes; once either starts violated across its axis, v3.1
+    /// and v3.2 assert (0.1 m balls from 0.3 m, 0.2 m balls from 0.5 m; a single such joint
+    /// holds 20 m off). The first is planned, a later one is not.
+    fn check_second_rail(&mut self, index: u32, joint: &Joint, across: f32, check: &mut Check) {
+        let (a, b) = (joint.body_a, joint.body_b);
+        let b_turns = self.dynamic_mass(b).is_some_and(|m| m.inertia > 0.0);
+        if self.dynamic_mass(a).is_none() || b_turns {
+            return;
+        }
+        let Some((first, first_across)) = self.railed[a as usize] else {
+            self.railed[a as usize] = Some((index, across));
+            return;
+        };
+        let slop = self.range.linear_slop;
+        if across > slop || first_across > slop {
+            check.fail(format_args!(
+                "body {a} already runs on joint {first}, a line or wheel joint to a body that \
+                 does not turn: a second such joint lies beyond {}'s working range unless both \
+                 start on their axes (this one starts {} m off it, joint {first} {} m; its \
+                 solver asserts)",
+                self.v3.name(),
+                G9(across),
+                G9(first_across)
+            ));
         }
     }
 }
@@ -403,6 +443,64 @@ mod tests {
              apart), and it starts violated by 3 m across its axis between two dynamic bodies, \
              beyond 4 radii of gyration (1.41421354 m); joint not created"
         );
+    }
+
+    #[test]
+    fn a_wheel_far_along_its_axis_is_body_as_lever() {
+        // The ground's anchor lies on the axis through ball 1's centre, 30 m along it: 84.9
+        // radii of gyration of the 0.5 m ball (beyond 75); 20 m: 56.6 (within).
+        let along = |x: &str| {
+            let fields = format!(
+                "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>{x} 0</LocalAnchorB>\
+                 <LocalAxisA>1 0</LocalAxisA>"
+            );
+            joint("Wheel", 1, 0, &fields)
+        };
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &along("31"));
+            assert!(plan.joints().is_empty());
+            let (code, _, index, message) = messages(&plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 0));
+            assert!(message.starts_with("LocalAnchorB, as body A's lever: "), "{message}");
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &along("21"));
+            assert_eq!(plan.joints().len(), 1);
+        }
+    }
+
+    #[test]
+    fn a_second_rail_is_refused_once_either_starts_off_its_axis() {
+        // Ball 1 runs on two wheel joints to the ground: along x through its centre, and
+        // along y through the ground's anchor, which lies `off` m from the ball across y.
+        let rails = |off: &str| {
+            joint("Wheel", 1, 0, "<LocalAnchorB>1 0</LocalAnchorB><LocalAxisA>1 0</LocalAxisA>")
+                + &joint(
+                    "Wheel",
+                    1,
+                    0,
+                    &format!("<LocalAnchorB>{off} 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA>"),
+                )
+        };
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rails("1.3"));
+            assert_eq!(plan.joints().len(), 1);
+            assert_eq!(plan.joints()[0].joint, 0);
+            let (code, _, index, message) = messages(&plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 1));
+            assert!(
+                message.starts_with(
+                    "body 1 already runs on joint 0, a line or wheel joint to a body that does \
+                     not turn: a second such joint lies beyond"
+                ),
+                "{message}"
+            );
+            assert!(
+                message.contains("(this one starts 0.299999952 m off it, joint 0 0 m;"),
+                "{message}"
+            );
+            // Both on their axes: both are built.
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rails("1"));
+            assert_eq!(plan.joints().len(), 2);
+        }
     }
 
     #[test]

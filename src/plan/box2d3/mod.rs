@@ -54,6 +54,9 @@ struct Mapper<'a> {
     created: Vec<Option<Created>>,
     /// Per scene body: 1 + the joint that starts it pulled far from satisfied, or 0.
     pulled: Vec<u32>,
+    /// Per scene body: the first line or wheel joint planned from it (as body A) to a body
+    /// that does not turn, and how far (m) its anchors start apart across its axis.
+    railed: Vec<Option<(u32, f32)>>,
 }
 
 /// The plan of `scene` for a v3 version.
@@ -71,6 +74,7 @@ pub(super) fn plan(scene: &Scene, options: &PlanOptions, v3: V3) -> Plan {
         geometries: vec![None; scene.shapes().len()],
         created: vec![None; scene.bodies().len()],
         pulled: vec![0; scene.bodies().len()],
+        railed: vec![None; scene.bodies().len()],
     };
     if !m.placement_valid() {
         let t = options.placement;
