@@ -86,9 +86,38 @@ pub(crate) fn xml_trimmed_span(bytes: &[u8]) -> (usize, usize) {
 
 /// ASCII letters, digits, `_`, `:`, `-` and `.`: the names of attributes read without
 /// quick-xml.
-pub(crate) fn is_plain_name_byte(b: u8) -> bool {
+pub(crate) const fn is_plain_name_byte(b: u8) -> bool {
     b.is_ascii_alphanumeric() || matches!(b, b'_' | b':' | b'-' | b'.')
 }
+
+/// How many bytes at the start of `text` are [`is_plain_name_byte`]: one look-up a byte
+/// rather than its five comparisons.
+#[inline(always)]
+pub(crate) fn plain_name_len(text: &[u8]) -> usize {
+    const PLAIN: [bool; 256] = {
+        let mut plain = [false; 256];
+        let mut b = 0;
+        while b < 256 {
+            plain[b] = is_plain_name_byte(b as u8);
+            b += 1;
+        }
+        plain
+    };
+    text.iter().position(|&b| !PLAIN[usize::from(b)]).unwrap_or(text.len())
+}
+
+/// The bytes that end the value of an attribute read without quick-xml: either quote, and
+/// what it leaves to quick-xml (`&`, `<`, a tab or a line break, which it normalises).
+pub(crate) const ENDS_PLAIN_VALUE: [bool; 256] = {
+    let mut ends = [false; 256];
+    let stops = *b"\"'&<\t\n\r";
+    let mut k = 0;
+    while k < stops.len() {
+        ends[stops[k] as usize] = true;
+        k += 1;
+    }
+    ends
+};
 
 /// The bytes that end a name in the usual tags: white space (and the control characters,
 /// which no name has), `/`, `>` and quotes.

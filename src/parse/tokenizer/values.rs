@@ -11,7 +11,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{first_non_char, is_plain_name_byte, plain_trimmed, space_len};
+use crate::bytes::{ENDS_PLAIN_VALUE, first_non_char, plain_name_len, plain_trimmed, space_len};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -391,9 +391,9 @@ impl<'a> Tokenizer<'a> {
 
 /// The attributes of the usual tag, whose `content` (what follows its `<`) has its name
 /// of `name_len` bytes and then `name="value"` pairs (or single quotes) after white space,
-/// with plain names, values with no reference, `<` or line break, and no name twice (in
-/// any case, found by [`first_repeated`]). None for anything else: quick-xml reads that,
-/// and tells what is malformed.
+/// with plain names, values with no reference, `<`, line break or other quote, and no
+/// name twice (in any case, found by [`first_repeated`]). None for anything else:
+/// quick-xml reads that, and tells what is malformed.
 pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Attrs<'_>> {
     let bytes = content.as_bytes();
     let mut attrs = Attrs::default();
@@ -405,14 +405,13 @@ pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Opt
         if i == bytes.len() {
             return first_repeated(&attrs).is_none().then_some(attrs);
         }
-        let key_len = bytes[i..].iter().position(|&b| !is_plain_name_byte(b))?;
+        let key_len = plain_name_len(&bytes[i..]);
         let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
         let [b'=', quote @ (b'"' | b'\''), value @ ..] = after else {
             return None;
         };
-        let len = value
-            .iter()
-            .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
+        // The other quote ends it too: quick-xml reads a value that holds one.
+        let len = value.iter().position(|&b| ENDS_PLAIN_VALUE[usize::from(b)])?;
         if space == 0 || key_len == 0 || value[len] != *quote {
             return None;
         }
