@@ -8,9 +8,10 @@
 //! stops or marks what it saw, and the reader reports the problem.
 //!
 //! It marks every piece of markup ([`Mark`]: a tag, an end tag, a comment, CDATA, a
-//! processing instruction, from its `<` to its last byte), in order. The reader walks them
-//! through an [`Index`], which scans a chunk of the text ahead of it at a time: it looks
-//! for no delimiter of markup itself.
+//! processing instruction, from its `<` to its last byte), in order. The reader asks an
+//! [`Index`] for the mark of the markup it stands at when it is not the usual markup it
+//! reads itself (a short tag, a value and its end tag): the index scans from there, a
+//! little text at a time, and the scan costs nothing where the reader needs no mark.
 #![forbid(unsafe_code)]
 
 use crate::bytes::{BLOCK, block_masks};
@@ -157,11 +158,13 @@ impl Scanner {
     }
 }
 
-/// How much text an [`Index`] scans ahead of the reader at a time.
-const CHUNK: usize = 16 << 10;
+/// How much text an [`Index`] scans at first when the reader asks for a mark: a block,
+/// twice as much each time the markup it cuts does not end in it.
+const CHUNK: usize = BLOCK;
 
-/// The scan of the text a reader reads, a chunk ahead of it: the marks of its markup, in
-/// order, which the reader takes one by one as it reads each.
+/// The scan of the text a reader reads, from where the reader asks for a mark: the marks
+/// of its markup from there, in order, which the reader takes as it reads each, passing
+/// those of the markup it read itself.
 pub(crate) struct Index {
     scanner: Scanner,
     /// The next mark the reader takes, in the scanner's list.
@@ -179,28 +182,35 @@ impl Index {
         self.scanner.at
     }
 
-    /// The next mark of the text at hand, `text`, which starts at offset `base`: scans on
-    /// when the marks found are all taken. None when the text at hand holds no more (the
-    /// end of its next markup is not in it).
+    /// The first mark from offset `at` on, where the reading stands between markup, in the
+    /// text at hand, `text`, which starts at offset `base`: the marks before `at` are
+    /// those of markup the reader read itself. Scans on when the marks found are all
+    /// passed. None when the text at hand holds no more (the end of its next markup is not
+    /// in it).
     #[inline(always)]
-    pub fn next(&mut self, text: &[u8], base: usize) -> Option<Mark> {
-        match self.scanner.marks.list.get(self.next) {
-            Some(&mark) => Some(mark),
-            None => self.scan_on(text, base),
+    pub fn next(&mut self, at: usize, text: &[u8], base: usize) -> Option<Mark> {
+        while let Some(&mark) = self.scanner.marks.list.get(self.next) {
+            if mark.at >= at {
+                return Some(mark);
+            }
+            self.next += 1;
+        }
+        self.catch_up(at);
+        self.scan_on(text, base)
+    }
+
+    /// The reading stands at `at`, between markup, having read what lies before it
+    /// itself: a scan that stands behind it starts again there, in text, with no mark.
+    #[inline(always)]
+    pub fn catch_up(&mut self, at: usize) {
+        if self.scanner.at < at {
+            (self.scanner, self.next) = (Scanner::new(at), 0);
         }
     }
 
     /// Takes the next mark, which the reader has read past.
     #[inline(always)]
     pub fn take(&mut self) {
-        self.next += 1;
-    }
-
-    /// Takes the next mark, that of the markup at `at`, read without it.
-    #[inline(always)]
-    pub fn pass(&mut self, at: usize, text: &[u8], base: usize) {
-        let mark = self.next(text, base);
-        debug_assert_eq!(mark.map(|mark| mark.at), Some(at), "the reader passes the markup marked");
         self.next += 1;
     }
 
@@ -216,20 +226,22 @@ impl Index {
     fn scan_on(&mut self, text: &[u8], base: usize) -> Option<Mark> {
         self.scanner.marks.list.clear();
         self.next = 0;
+        let mut size = CHUNK;
         loop {
             let from = self.scanner.at;
             let rest = &text[from - base..];
-            let chunk = &rest[..rest.len().min(CHUNK)];
+            let chunk = &rest[..rest.len().min(size)];
             self.scanner.scan(chunk, from);
             if let Some(&mark) = self.scanner.marks.list.first() {
                 return Some(mark);
             }
-            if self.scanner.at == from || chunk.len() == rest.len() {
-                if self.scanner.at == from && chunk.len() < rest.len() {
-                    // Markup longer than a chunk: the rest of the text at hand is scanned.
-                    self.scanner.scan(rest, from);
-                }
-                return self.scanner.marks.list.first().copied();
+            if chunk.len() == rest.len() {
+                return None;
+            }
+            if self.scanner.at == from {
+                // Markup longer than the chunk: a longer one, so that however long it is,
+                // it is scanned a few times over at most.
+                size *= 2;
             }
         }
     }

@@ -211,15 +211,14 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let at = self.lex.pos;
-        let mark = self.lex.index.next(self.window.text(), self.window.base())?;
-        let len = mark.at - at;
         let rest = self.rest(at);
+        // The value ends at the next markup, as the scan would mark it.
+        let len = memchr::memchr(b'<', rest)?;
         if len as u64 > self.options.max_text_bytes {
             return None;
         }
         let (start, end) = plain_trimmed(rest, len)?;
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        self.lex.index.take();
         self.lex.pos = at + len + end_tag;
         self.lex.open.pop();
         // `<X></X>` has its value at its tag.
