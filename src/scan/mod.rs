@@ -75,6 +75,13 @@ impl Scanner {
         Scanner { at, mode: Mode::Text, marks: Marks::default() }
     }
 
+    /// Scans on from offset `at`, between markup, with no mark: the list keeps its memory.
+    fn restart(&mut self, at: usize) {
+        (self.at, self.mode) = (at, Mode::Text);
+        self.marks.list.clear();
+        self.marks.open = None;
+    }
+
     /// Scans `text`, which starts at offset `base`, where the scan stands. Markup that
     /// `text` cuts is left for the next call, with more text.
     pub fn scan(&mut self, text: &[u8], base: usize) {
@@ -159,7 +166,7 @@ impl Scanner {
 }
 
 /// How much text an [`Index`] scans at first when the reader asks for a mark: a block,
-/// twice as much each time the markup it cuts does not end in it.
+/// twice as much each time it finds none, so that long text or markup costs a few calls.
 const CHUNK: usize = BLOCK;
 
 /// The scan of the text a reader reads, from where the reader asks for a mark: the marks
@@ -204,7 +211,8 @@ impl Index {
     #[inline(always)]
     pub fn catch_up(&mut self, at: usize) {
         if self.scanner.at < at {
-            (self.scanner, self.next) = (Scanner::new(at), 0);
+            self.scanner.restart(at);
+            self.next = 0;
         }
     }
 
@@ -238,11 +246,7 @@ impl Index {
             if chunk.len() == rest.len() {
                 return None;
             }
-            if self.scanner.at == from {
-                // Markup longer than the chunk: a longer one, so that however long it is,
-                // it is scanned a few times over at most.
-                size *= 2;
-            }
+            size *= 2;
         }
     }
 }

@@ -11,7 +11,9 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{ENDS_PLAIN_VALUE, first_non_char, plain_name_len, plain_trimmed, space_len};
+use crate::bytes::{
+    ENDS_PLAIN_VALUE, first_lt, first_non_char, plain_name_len, plain_trimmed, space_len,
+};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -213,7 +215,7 @@ impl<'a> Tokenizer<'a> {
         let at = self.lex.pos;
         let rest = self.rest(at);
         // The value ends at the next markup, as the scan would mark it.
-        let len = memchr::memchr(b'<', rest)?;
+        let len = first_lt(rest)?;
         if len as u64 > self.options.max_text_bytes {
             return None;
         }
