@@ -10,8 +10,8 @@
 //! It marks every piece of markup ([`Mark`]: a tag, an end tag, a comment, CDATA, a
 //! processing instruction, from its `<` to its last byte), in order. The reader asks an
 //! [`Index`] for the mark of the markup it stands at when it is not the usual markup it
-//! reads itself (a short tag, a value and its end tag): the index scans from there, a
-//! little text at a time, and the scan costs nothing where the reader needs no mark.
+//! reads itself (a short tag, a value and its end tag): the index scans from there up to
+//! the first mark, and the scan costs nothing where the reader needs no mark.
 #![forbid(unsafe_code)]
 
 use crate::bytes::{BLOCK, block_masks};
@@ -103,14 +103,14 @@ impl Scanner {
     }
 
     /// Text and tags up to other markup; true when the text at hand is too short to go on
-    /// (markup it cuts).
+    /// (markup it cuts), or a tag is marked.
     fn text(&mut self, rest: &[u8]) -> bool {
         match tags(rest, self.at, &mut self.marks.list) {
             Stop::End => {
                 self.at += rest.len();
                 false
             }
-            Stop::Cut(at) => {
+            Stop::Cut(at) | Stop::Marked(at) => {
                 self.at = at;
                 true
             }
@@ -251,16 +251,18 @@ impl Index {
     }
 }
 
-/// Where [`tags`] stopped: at the end of the text, at markup the text cuts, or after the
-/// start of other markup (its `<`, where the scan goes on, and the mode it goes on in).
+/// Where [`tags`] stopped: at the end of the text, at markup the text cuts, after the tag
+/// it marked (where the scan goes on), or after the start of other markup (its `<`, where
+/// the scan goes on, and the mode it goes on in).
 enum Stop {
     End,
     Cut(usize),
+    Marked(usize),
     Markup(usize, usize, Mode),
 }
 
-/// The tags of `rest`, text that starts at offset `start`, up to other markup, every tag
-/// and end tag marked on `marks`.
+/// The first tag of `rest`, text that starts at offset `start`, marked on `marks`, or the
+/// other markup before it: the reader asks for one mark at a time.
 /// A block's masks of `<`, `>` and each quote give each tag: its end is the first `>` after
 /// its `<` outside quoted values (see [`tag_end_in`]); a tag the block does not end is
 /// followed into the next blocks, inside a quoted value or not. The byte after a `<` tells
@@ -281,17 +283,13 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
             }
         };
         let masks = block_masks(block, [b'<', b'>', b'"', b'\'']);
-        let mut lts = masks[0];
         let mut ended = |i: usize, gt: usize| {
             marks.push(Mark { at: start + i, end: start + gt, stops: false });
+            Stop::Marked(start + gt + 1)
         };
         if let Some((i, quoted)) = open {
             match tag_end_in(u64::MAX, quoted, masks) {
-                Ok(end) => {
-                    ended(i, from + end);
-                    lts &= above(end);
-                    open = None;
-                }
+                Ok(end) => return ended(i, from + end),
                 Err(quoted) => {
                     open = Some((i, quoted));
                     from += BLOCK;
@@ -299,8 +297,8 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
                 }
             }
         }
-        while lts != 0 {
-            let bit = lts.trailing_zeros() as usize;
+        if masks[0] != 0 {
+            let bit = masks[0].trailing_zeros() as usize;
             let i = from + bit;
             let Some(&next) = rest.get(i + 1) else {
                 return Stop::Cut(start + i);
@@ -320,14 +318,8 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
                 false => tag_end_in(after, Quoted::No, masks),
             };
             match end {
-                Ok(end) => {
-                    ended(i, from + end);
-                    lts &= above(end);
-                }
-                Err(quoted) => {
-                    open = Some((i, quoted));
-                    break;
-                }
+                Ok(end) => return ended(i, from + end),
+                Err(quoted) => open = Some((i, quoted)),
             }
         }
         from += BLOCK;
