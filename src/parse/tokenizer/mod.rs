@@ -29,9 +29,11 @@ use crate::options::LoadOptions;
 use crate::scan::Mark;
 use crate::text::{self};
 
+mod findings;
 mod keeping;
 mod lexer;
 mod pieces;
+mod reading;
 mod values;
 mod window;
 

@@ -28,17 +28,6 @@ impl<'a> Tokenizer<'a> {
         trim_xml(self.text_of(t)).is_empty()
     }
 
-    #[cold]
-    pub fn limit<E: From<Problem>>(&self, at: usize, name: &str, value: u64) -> E {
-        problem(
-            Code::LimitExceeded,
-            at,
-            format!(
-                "the file exceeds a load limit here ({name} = {value}); raise it in the load options if the file is trusted"
-            ),
-        )
-    }
-
     pub(super) fn check_declared_encoding(&self, decl: &BytesDecl, at: usize) -> Parsed<()> {
         let Some(Ok(declared)) = decl.encoding() else {
             return Ok(());
