@@ -2,15 +2,14 @@
 //! over a streamed file). It enforces the limits, counts lines as it goes, and hands whole
 //! elements, values and attributes to the reader; it builds nothing.
 //!
-//! The usual markup it reads itself, without the scan stage: tags with short names, values
-//! up to the `<` of their end tag, and that end tag. For the rest it asks the scan stage
-//! ([`Index`](crate::scan::Index)) for the mark of the markup it stands at: where a tag
-//! with attributes, a comment, CDATA or a processing instruction ends, and where text ends,
-//! is that mark; it looks for no other delimiter. Tags with plain `name="value"`
-//! attributes are read here too. Anything
-//! else goes to quick-xml: its attribute iterator reads and checks the other attributes, its
-//! reference and declaration types resolve entities and read the XML declaration, and its
-//! errors are the messages.
+//! The usual markup it reads itself, without the scan stage: tags with short names, tags
+//! whose attributes are plain `name="value"` pairs, values up to the `<` of their end tag,
+//! and that end tag. For the rest it asks the scan stage ([`Index`](crate::scan::Index))
+//! for the mark of the markup it stands at: where another tag, a comment, CDATA or a
+//! processing instruction ends, and where text ends, is that mark; it looks for no other
+//! delimiter. Anything else goes to quick-xml: its attribute iterator reads and checks the
+//! other attributes, its reference and declaration types resolve entities and read the XML
+//! declaration, and its errors are the messages.
 //! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
 //! again; the text here was checked once by its source, and slices of it at ASCII markup
 //! are text by construction.
@@ -40,8 +39,8 @@ mod window;
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, short_name_len, space_len};
 pub(crate) use keeping::Keeping;
 use lexer::Lexer;
-use values::resolve_text;
 pub(super) use values::verbatim;
+use values::{plain_tag_end, resolve_text};
 use window::Window;
 
 #[cfg(test)]
@@ -416,7 +415,11 @@ impl<'a> Tokenizer<'a> {
         let tag = match self.short_tag(at) {
             Some(tag) => tag,
             None => {
-                let end = self.tag_end(at)?;
+                // Plain attributes are read past without the scan, as the scan reads them.
+                let end = match plain_tag_end(self.rest(at)) {
+                    Some(len) => self.within_text_limit(at, at + len)?,
+                    None => self.tag_end(at)?,
+                };
                 self.lex.pos = end + 1;
                 let content = self.window.slice(at + 1, end);
                 let (content, empty) = match content.strip_suffix('/') {

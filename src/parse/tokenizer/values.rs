@@ -12,7 +12,7 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
 use crate::bytes::{
-    ENDS_PLAIN_VALUE, first_lt, first_non_char, plain_name_len, plain_trimmed, space_len,
+    ENDS_NAME, ENDS_PLAIN_VALUE, first_lt, first_non_char, plain_name_len, plain_trimmed, space_len,
 };
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
@@ -395,19 +395,46 @@ pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Opt
         if i == bytes.len() {
             return first_repeated(&attrs).is_none().then_some(attrs);
         }
-        let key_len = plain_name_len(&bytes[i..]);
-        let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
-        let [b'=', quote @ (b'"' | b'\''), value @ ..] = after else {
-            return None;
-        };
-        // The other quote ends it too: quick-xml reads a value that holds one.
-        let len = value.iter().position(|&b| ENDS_PLAIN_VALUE[usize::from(b)])?;
-        if space == 0 || key_len == 0 || value[len] != *quote {
-            return None;
-        }
-        let start = i + key_len + 2;
+        let (key_len, start, len) = plain_pair(bytes, i).filter(|_| space > 0)?;
+        let key = &content[i..i + key_len];
         let value = Cow::Borrowed(&content[start..start + len]);
         attrs.push(Attr { key, value, at: at + 1 + start });
+        i = start + len + 1;
+    }
+}
+
+/// The plain `name="value"` (or single quotes) at `i` of a tag's `bytes` (see
+/// [`plain_attributes`]): the length of its name, and where its value starts and how long
+/// it is (its closing quote just after). None for anything else.
+#[inline(always)]
+fn plain_pair(bytes: &[u8], i: usize) -> Option<(usize, usize, usize)> {
+    let key_len = plain_name_len(&bytes[i..]);
+    let [b'=', quote @ (b'"' | b'\''), value @ ..] = &bytes[i + key_len..] else {
+        return None;
+    };
+    // The other quote ends it too: quick-xml reads a value that holds one.
+    let len = value.iter().position(|&b| ENDS_PLAIN_VALUE[usize::from(b)])?;
+    (key_len > 0 && value[len] == *quote).then_some((key_len, i + key_len + 2, len))
+}
+
+/// Where the start tag at the start of `text` ends, the offset of its `>`, when its
+/// attributes are plain (see [`plain_attributes`]): its name holds no quote, and each
+/// value is quoted as the scan stage sees it, so this `>` is the first outside quoted
+/// values, the one the scan would mark. None for any other tag, or when the text at hand
+/// ends first.
+#[inline]
+pub(super) fn plain_tag_end(text: &[u8]) -> Option<usize> {
+    let mut i = 1 + text.get(1..)?.iter().position(|&b| ENDS_NAME[usize::from(b)])?;
+    loop {
+        let space = space_len(&text[i..]);
+        i += space;
+        match text[i..] {
+            [b'>', ..] => return Some(i),
+            [b'/', b'>', ..] => return Some(i + 1),
+            _ if space == 0 => return None,
+            _ => {}
+        }
+        let (_, start, len) = plain_pair(text, i)?;
         i = start + len + 1;
     }
 }
