@@ -173,3 +173,23 @@ fn plain_trimmed_agrees_with_is_plain_and_trimmed_span() {
         }
     }
 }
+
+/// Texts of every length up to past 32 bytes with a `<` or none, anywhere: the first is
+/// where a look at one byte at a time finds it.
+#[test]
+fn first_lt_finds_the_first_lt() {
+    let pieces: [&[u8]; 5] = [b" ", b"a", b"<", b"\xC3\xA9", b">"];
+    let mut random = crate::Xorshift(0x9E37_79B9_7F4A_7C15);
+    for len in 0..40 {
+        for _ in 0..500 {
+            let mut text = Vec::new();
+            while text.len() < len {
+                // Mostly spaces and letters, now and then anything.
+                let kinds = if random.below(4) == 0 { pieces.len() } else { 2 };
+                text.extend_from_slice(pieces[random.below(kinds)]);
+            }
+            let expected = text.iter().position(|&b| b == b'<');
+            assert_eq!(first_lt(&text), expected, "{text:?}");
+        }
+    }
+}

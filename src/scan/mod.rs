@@ -8,9 +8,10 @@
 //! stops or marks what it saw, and the reader reports the problem.
 //!
 //! It marks every piece of markup ([`Mark`]: a tag, an end tag, a comment, CDATA, a
-//! processing instruction, from its `<` to its last byte), in order. The reader walks them
-//! through an [`Index`], which scans a chunk of the text ahead of it at a time: it looks
-//! for no delimiter of markup itself.
+//! processing instruction, from its `<` to its last byte), in order. The reader asks an
+//! [`Index`] for the mark of the markup it stands at when it is not the usual markup it
+//! reads itself (a short tag, a value and its end tag): the index scans from there up to
+//! the first mark, and the scan costs nothing where the reader needs no mark.
 #![forbid(unsafe_code)]
 
 use crate::bytes::{BLOCK, block_masks};
@@ -74,6 +75,13 @@ impl Scanner {
         Scanner { at, mode: Mode::Text, marks: Marks::default() }
     }
 
+    /// Scans on from offset `at`, between markup, with no mark: the list keeps its memory.
+    fn restart(&mut self, at: usize) {
+        (self.at, self.mode) = (at, Mode::Text);
+        self.marks.list.clear();
+        self.marks.open = None;
+    }
+
     /// Scans `text`, which starts at offset `base`, where the scan stands. Markup that
     /// `text` cuts is left for the next call, with more text.
     pub fn scan(&mut self, text: &[u8], base: usize) {
@@ -95,14 +103,14 @@ impl Scanner {
     }
 
     /// Text and tags up to other markup; true when the text at hand is too short to go on
-    /// (markup it cuts).
+    /// (markup it cuts), or a tag is marked.
     fn text(&mut self, rest: &[u8]) -> bool {
         match tags(rest, self.at, &mut self.marks.list) {
             Stop::End => {
                 self.at += rest.len();
                 false
             }
-            Stop::Cut(at) => {
+            Stop::Cut(at) | Stop::Marked(at) => {
                 self.at = at;
                 true
             }
@@ -157,11 +165,13 @@ impl Scanner {
     }
 }
 
-/// How much text an [`Index`] scans ahead of the reader at a time.
-const CHUNK: usize = 16 << 10;
+/// How much text an [`Index`] scans at first when the reader asks for a mark: a block,
+/// twice as much each time it finds none, so that long text or markup costs a few calls.
+const CHUNK: usize = BLOCK;
 
-/// The scan of the text a reader reads, a chunk ahead of it: the marks of its markup, in
-/// order, which the reader takes one by one as it reads each.
+/// The scan of the text a reader reads, from where the reader asks for a mark: the marks
+/// of its markup from there, in order, which the reader takes as it reads each, passing
+/// those of the markup it read itself.
 pub(crate) struct Index {
     scanner: Scanner,
     /// The next mark the reader takes, in the scanner's list.
@@ -179,28 +189,36 @@ impl Index {
         self.scanner.at
     }
 
-    /// The next mark of the text at hand, `text`, which starts at offset `base`: scans on
-    /// when the marks found are all taken. None when the text at hand holds no more (the
-    /// end of its next markup is not in it).
+    /// The first mark from offset `at` on, where the reading stands between markup, in the
+    /// text at hand, `text`, which starts at offset `base`: the marks before `at` are
+    /// those of markup the reader read itself. Scans on when the marks found are all
+    /// passed. None when the text at hand holds no more (the end of its next markup is not
+    /// in it).
     #[inline(always)]
-    pub fn next(&mut self, text: &[u8], base: usize) -> Option<Mark> {
-        match self.scanner.marks.list.get(self.next) {
-            Some(&mark) => Some(mark),
-            None => self.scan_on(text, base),
+    pub fn next(&mut self, at: usize, text: &[u8], base: usize) -> Option<Mark> {
+        while let Some(&mark) = self.scanner.marks.list.get(self.next) {
+            if mark.at >= at {
+                return Some(mark);
+            }
+            self.next += 1;
+        }
+        self.catch_up(at);
+        self.scan_on(text, base)
+    }
+
+    /// The reading stands at `at`, between markup, having read what lies before it
+    /// itself: a scan that stands behind it starts again there, in text, with no mark.
+    #[inline(always)]
+    pub fn catch_up(&mut self, at: usize) {
+        if self.scanner.at < at {
+            self.scanner.restart(at);
+            self.next = 0;
         }
     }
 
     /// Takes the next mark, which the reader has read past.
     #[inline(always)]
     pub fn take(&mut self) {
-        self.next += 1;
-    }
-
-    /// Takes the next mark, that of the markup at `at`, read without it.
-    #[inline(always)]
-    pub fn pass(&mut self, at: usize, text: &[u8], base: usize) {
-        let mark = self.next(text, base);
-        debug_assert_eq!(mark.map(|mark| mark.at), Some(at), "the reader passes the markup marked");
         self.next += 1;
     }
 
@@ -216,35 +234,35 @@ impl Index {
     fn scan_on(&mut self, text: &[u8], base: usize) -> Option<Mark> {
         self.scanner.marks.list.clear();
         self.next = 0;
+        let mut size = CHUNK;
         loop {
             let from = self.scanner.at;
             let rest = &text[from - base..];
-            let chunk = &rest[..rest.len().min(CHUNK)];
+            let chunk = &rest[..rest.len().min(size)];
             self.scanner.scan(chunk, from);
             if let Some(&mark) = self.scanner.marks.list.first() {
                 return Some(mark);
             }
-            if self.scanner.at == from || chunk.len() == rest.len() {
-                if self.scanner.at == from && chunk.len() < rest.len() {
-                    // Markup longer than a chunk: the rest of the text at hand is scanned.
-                    self.scanner.scan(rest, from);
-                }
-                return self.scanner.marks.list.first().copied();
+            if chunk.len() == rest.len() {
+                return None;
             }
+            size *= 2;
         }
     }
 }
 
-/// Where [`tags`] stopped: at the end of the text, at markup the text cuts, or after the
-/// start of other markup (its `<`, where the scan goes on, and the mode it goes on in).
+/// Where [`tags`] stopped: at the end of the text, at markup the text cuts, after the tag
+/// it marked (where the scan goes on), or after the start of other markup (its `<`, where
+/// the scan goes on, and the mode it goes on in).
 enum Stop {
     End,
     Cut(usize),
+    Marked(usize),
     Markup(usize, usize, Mode),
 }
 
-/// The tags of `rest`, text that starts at offset `start`, up to other markup, every tag
-/// and end tag marked on `marks`.
+/// The first tag of `rest`, text that starts at offset `start`, marked on `marks`, or the
+/// other markup before it: the reader asks for one mark at a time.
 /// A block's masks of `<`, `>` and each quote give each tag: its end is the first `>` after
 /// its `<` outside quoted values (see [`tag_end_in`]); a tag the block does not end is
 /// followed into the next blocks, inside a quoted value or not. The byte after a `<` tells
@@ -265,17 +283,13 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
             }
         };
         let masks = block_masks(block, [b'<', b'>', b'"', b'\'']);
-        let mut lts = masks[0];
         let mut ended = |i: usize, gt: usize| {
             marks.push(Mark { at: start + i, end: start + gt, stops: false });
+            Stop::Marked(start + gt + 1)
         };
         if let Some((i, quoted)) = open {
             match tag_end_in(u64::MAX, quoted, masks) {
-                Ok(end) => {
-                    ended(i, from + end);
-                    lts &= above(end);
-                    open = None;
-                }
+                Ok(end) => return ended(i, from + end),
                 Err(quoted) => {
                     open = Some((i, quoted));
                     from += BLOCK;
@@ -283,8 +297,8 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
                 }
             }
         }
-        while lts != 0 {
-            let bit = lts.trailing_zeros() as usize;
+        if masks[0] != 0 {
+            let bit = masks[0].trailing_zeros() as usize;
             let i = from + bit;
             let Some(&next) = rest.get(i + 1) else {
                 return Stop::Cut(start + i);
@@ -304,14 +318,8 @@ fn tags(rest: &[u8], start: usize, marks: &mut Vec<Mark>) -> Stop {
                 false => tag_end_in(after, Quoted::No, masks),
             };
             match end {
-                Ok(end) => {
-                    ended(i, from + end);
-                    lts &= above(end);
-                }
-                Err(quoted) => {
-                    open = Some((i, quoted));
-                    break;
-                }
+                Ok(end) => return ended(i, from + end),
+                Err(quoted) => open = Some((i, quoted)),
             }
         }
         from += BLOCK;

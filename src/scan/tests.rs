@@ -128,7 +128,8 @@ fn indexed(text: &[u8], start: usize, window: usize) -> Vec<Mark> {
     let mut index = Index::new(start);
     let (mut marks, mut end) = (vec![], (start + window).min(text.len()));
     loop {
-        match index.next(&text[..end], 0) {
+        let at = marks.last().map_or(start, |mark: &Mark| mark.at + 1);
+        match index.next(at, &text[..end], 0) {
             Some(mark) => {
                 marks.push(mark);
                 index.take();
@@ -137,6 +138,39 @@ fn indexed(text: &[u8], start: usize, window: usize) -> Vec<Mark> {
             None => end = (end + window).min(text.len()),
         }
     }
+}
+
+/// Asks an index over `text`, whose marks are `expected`, for the mark at the start of each
+/// of them in turn, passing some at random as the reader passes the markup it reads itself,
+/// the text at hand growing by `window` bytes whenever the index has no mark in it: each
+/// mark asked for and the one given.
+fn asked_past(
+    text: &[u8],
+    expected: &[Mark],
+    window: usize,
+    random: &mut Xorshift,
+) -> Vec<(Mark, Option<Mark>)> {
+    let mut index = Index::new(0);
+    let (mut given, mut end, mut k) = (vec![], window.min(text.len()), random.below(3));
+    while let Some(&wanted) = expected.get(k) {
+        // The reader has read up to the markup it asks for: that much is at hand.
+        while end < wanted.at {
+            end = (end + window).min(text.len());
+        }
+        match index.next(wanted.at, &text[..end], 0) {
+            Some(mark) => {
+                given.push((wanted, Some(mark)));
+                index.take();
+                k += 1 + random.below(3);
+            }
+            None if end == text.len() => {
+                given.push((wanted, None));
+                break;
+            }
+            None => end = (end + window).min(text.len()),
+        }
+    }
+    given
 }
 
 /// Texts made at random of tags, text and markup, broken or not: the marks the reader walks,
@@ -184,6 +218,17 @@ fn the_index_marks_what_a_byte_at_a_time_reading_finds() {
                 "round {round}, windows of {window}: {}",
                 String::from_utf8_lossy(&text)
             );
+        }
+        // The reader reads the usual markup itself and asks for the marks of the rest.
+        for window in [text.len().max(1), 13, 64] {
+            for (wanted, given) in asked_past(&text, &expected, window, &mut random) {
+                assert_eq!(
+                    given,
+                    Some(wanted),
+                    "round {round}, windows of {window}: {}",
+                    String::from_utf8_lossy(&text)
+                );
+            }
         }
         // An index that starts at an item, as a piece's reader does, marks what follows.
         if let Some(item) = expected.iter().skip(3).find(|m| text[m.at + 1].is_ascii_alphabetic()) {

@@ -1,5 +1,5 @@
 //! The lexer's own state: where the reading of markup into nodes stands in the text, the
-//! elements open there, and the scan's marks of the markup ahead. The tokenizer reads the
+//! elements open there, and the scan of the markup it does not read itself. The tokenizer reads the
 //! nodes through it over the window, keeping at hand what [`Keeping`](super::Keeping) says.
 
 use super::super::names::Name;
@@ -18,8 +18,8 @@ pub(super) struct Lexer {
     pub open: Vec<(Name, usize)>,
     /// The elements read so far, for `max_elements`.
     pub elements: u64,
-    /// The markup ahead, as the scan stage finds it: the reading takes each piece's mark as
-    /// it reads it, and looks for no delimiter itself.
+    /// The scan of the markup the reading does not read itself: asked for the mark of the
+    /// markup the reading stands at, it scans from there.
     pub index: Index,
 }
 

@@ -2,13 +2,14 @@
 //! over a streamed file). It enforces the limits, counts lines as it goes, and hands whole
 //! elements, values and attributes to the reader; it builds nothing.
 //!
-//! It walks the marks of the scan stage ([`Index`](crate::scan::Index)): where a tag, a
-//! comment, CDATA or a processing instruction ends, and where text ends, is the next mark,
-//! taken as the markup is read; it looks for no delimiter itself. The usual markup is read here: tags with short
-//! names and plain `name="value"` attributes, values followed by their end tag. Anything
-//! else goes to quick-xml: its attribute iterator reads and checks the other attributes, its
-//! reference and declaration types resolve entities and read the XML declaration, and its
-//! errors are the messages.
+//! The usual markup it reads itself, without the scan stage: tags with short names, tags
+//! whose attributes are plain `name="value"` pairs, values up to the `<` of their end tag,
+//! and that end tag. For the rest it asks the scan stage ([`Index`](crate::scan::Index))
+//! for the mark of the markup it stands at: where another tag, a comment, CDATA or a
+//! processing instruction ends, and where text ends, is that mark; it looks for no other
+//! delimiter. Anything else goes to quick-xml: its attribute iterator reads and checks the
+//! other attributes, its reference and declaration types resolve entities and read the XML
+//! declaration, and its errors are the messages.
 //! The loop is ours because quick-xml 0.42's `Reader` checks every event's bytes as UTF-8
 //! again; the text here was checked once by its source, and slices of it at ASCII markup
 //! are text by construction.
@@ -27,17 +28,19 @@ use crate::options::LoadOptions;
 use crate::scan::Mark;
 use crate::text::{self};
 
+mod findings;
 mod keeping;
 mod lexer;
 mod pieces;
+mod reading;
 mod values;
 mod window;
 
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, short_name_len, space_len};
 pub(crate) use keeping::Keeping;
 use lexer::Lexer;
-use values::resolve_text;
 pub(super) use values::verbatim;
+use values::{plain_tag_end, resolve_text};
 use window::Window;
 
 #[cfg(test)]
@@ -257,6 +260,8 @@ impl<'a> Tokenizer<'a> {
     /// Reads more text, keeping what the current node and the last one need. Ok(false)
     /// at the end of the text; the problem that ends the text early, when that is why.
     fn more(&mut self) -> Parsed<bool> {
+        // The scan need not keep what the reading read itself.
+        self.lex.index.catch_up(self.lex.pos);
         let needed = self.lex.first_needed();
         let keep = self.kept.first().map_or(needed, |kept| kept.min(needed));
         // The scan goes on from where it stands.
@@ -270,7 +275,7 @@ impl<'a> Tokenizer<'a> {
     /// its closing delimiter of `overlap + 1` bytes.
     fn mark(&mut self, at: usize, skip: usize, overlap: usize) -> Parsed<Option<Mark>> {
         loop {
-            if let Some(mark) = self.lex.index.next(self.window.text(), self.window.base()) {
+            if let Some(mark) = self.lex.index.next(at, self.window.text(), self.window.base()) {
                 debug_assert_eq!(mark.at, at, "the reading is at the markup marked next");
                 return Ok(Some(mark));
             }
@@ -279,13 +284,6 @@ impl<'a> Tokenizer<'a> {
                 return Ok(None);
             }
         }
-    }
-
-    /// Takes the index's next mark, that of the markup at `at`, which the reading passed
-    /// without it (a tag it read whole in the text at hand).
-    #[inline(always)]
-    fn passed(&mut self, at: usize) {
-        self.lex.index.pass(at, self.window.text(), self.window.base());
     }
 
     /// `end`, unless the node from `start` to it is longer than `max_text_bytes`. Every node
@@ -325,11 +323,6 @@ impl<'a> Tokenizer<'a> {
             if self.lex.outside_items() {
                 (self.lex.last, self.lex.started) = (self.lex.pos, self.lex.pos);
             }
-            // The scan passes the white space too (it holds no mark), so that it need not
-            // stay at hand for the scan either.
-            let (text, base) = (self.window.text(), self.window.base());
-            let mark = self.lex.index.next(text, base);
-            debug_assert!(mark.is_none(), "white space holds no markup");
             if !self.more()? {
                 break;
             }
@@ -378,7 +371,7 @@ impl<'a> Tokenizer<'a> {
     fn text_node(&mut self, at: usize) -> Parsed<Node> {
         let end = loop {
             let (text, base) = (self.window.text(), self.window.base());
-            if let Some(mark) = self.lex.index.next(text, base) {
+            if let Some(mark) = self.lex.index.next(at, text, base) {
                 break mark.at;
             }
             if let Some(start) = self.lex.index.next_start(text, base) {
@@ -422,7 +415,11 @@ impl<'a> Tokenizer<'a> {
         let tag = match self.short_tag(at) {
             Some(tag) => tag,
             None => {
-                let end = self.tag_end(at)?;
+                // Plain attributes are read past without the scan, as the scan reads them.
+                let end = match plain_tag_end(self.rest(at)) {
+                    Some(len) => self.within_text_limit(at, at + len)?,
+                    None => self.tag_end(at)?,
+                };
                 self.lex.pos = end + 1;
                 let content = self.window.slice(at + 1, end);
                 let (content, empty) = match content.strip_suffix('/') {
@@ -458,7 +455,6 @@ impl<'a> Tokenizer<'a> {
         let Some(len) = self.usual_end_tag_len(self.rest(at)) else {
             return false;
         };
-        self.passed(at);
         self.lex.pos = at + len;
         self.lex.open.pop();
         true
@@ -516,7 +512,6 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let name = Name::from_head(head.first_chunk()?, len);
-        self.passed(at);
         self.lex.pos = at + 2 + len + usize::from(empty);
         Some(Tag { name, content: None, at, empty })
     }

@@ -1,4 +1,4 @@
-use super::values::plain_attributes;
+use super::values::{plain_attributes, plain_tag_end};
 use super::{Attr, Name, Source, Tag, Tokenizer};
 use crate::options::LoadOptions;
 
@@ -131,4 +131,49 @@ fn plain_attributes_agree_with_quick_xml() {
         }
     }
     assert!(tried > 200, "only {tried} contents were plain");
+}
+
+/// Start tags made at random of names, white space, attributes with either quote, `>`,
+/// `/` and quotes where they belong or not, whole or cut short: where the reader finds the
+/// end of one with plain attributes is where the scan stage marks it, and any it cannot
+/// tell is left to the scan.
+#[test]
+fn a_plain_tag_ends_where_the_scan_marks_it() {
+    let pieces = [
+        "Body",
+        "a\"b",
+        " ",
+        "\t",
+        "\n",
+        "Type=\"Dynamic\"",
+        "k='v>w'",
+        "x=\"it's\"",
+        "y='a\"b'",
+        "=",
+        "\"",
+        "'",
+        ">",
+        "/",
+        "/>",
+        "<",
+        "&amp;",
+        "é",
+    ];
+    let mut random = crate::Xorshift(0x5851_F42D_4C95_7F2D);
+    let mut plain = 0;
+    for _ in 0..20_000 {
+        let mut text = String::from("<");
+        for _ in 0..1 + random.below(8) {
+            text.push_str(pieces[random.below(pieces.len())]);
+        }
+        if random.below(2) == 0 {
+            text.push('>');
+        }
+        let marked = crate::scan::Index::new(0).next(0, text.as_bytes(), 0).map(|m| m.end);
+        if let Some(end) = plain_tag_end(text.as_bytes()) {
+            assert_eq!(Some(end), marked, "{text:?}");
+            plain += 1;
+        }
+    }
+    assert!(plain > 1_000, "only {plain} tags were plain");
 }

@@ -11,7 +11,9 @@ use quick_xml::events::{BytesDecl, BytesRef, BytesStart};
 
 use super::super::shorten;
 use super::{Attr, Attrs, Node, Resolved, Tag, Text, Tokenizer, Value, malformed};
-use crate::bytes::{first_non_char, is_plain_name_byte, plain_trimmed, space_len};
+use crate::bytes::{
+    ENDS_NAME, ENDS_PLAIN_VALUE, first_lt, first_non_char, plain_name_len, plain_trimmed, space_len,
+};
 use crate::error::{Code, Finding, Parsed, Problem, problem};
 use crate::input::Encoding;
 use crate::text::{trim_xml, trim_xml_at};
@@ -24,17 +26,6 @@ impl<'a> Tokenizer<'a> {
 
     pub fn is_blank(&self, t: &Text) -> bool {
         trim_xml(self.text_of(t)).is_empty()
-    }
-
-    #[cold]
-    pub fn limit<E: From<Problem>>(&self, at: usize, name: &str, value: u64) -> E {
-        problem(
-            Code::LimitExceeded,
-            at,
-            format!(
-                "the file exceeds a load limit here ({name} = {value}); raise it in the load options if the file is trusted"
-            ),
-        )
     }
 
     pub(super) fn check_declared_encoding(&self, decl: &BytesDecl, at: usize) -> Parsed<()> {
@@ -211,15 +202,14 @@ impl<'a> Tokenizer<'a> {
             return None;
         }
         let at = self.lex.pos;
-        let mark = self.lex.index.next(self.window.text(), self.window.base())?;
-        let len = mark.at - at;
         let rest = self.rest(at);
+        // The value ends at the next markup, as the scan would mark it.
+        let len = first_lt(rest)?;
         if len as u64 > self.options.max_text_bytes {
             return None;
         }
         let (start, end) = plain_trimmed(rest, len)?;
         let end_tag = self.usual_end_tag_len(&rest[len..])?;
-        self.lex.index.take();
         self.lex.pos = at + len + end_tag;
         self.lex.open.pop();
         // `<X></X>` has its value at its tag.
@@ -391,9 +381,9 @@ impl<'a> Tokenizer<'a> {
 
 /// The attributes of the usual tag, whose `content` (what follows its `<`) has its name
 /// of `name_len` bytes and then `name="value"` pairs (or single quotes) after white space,
-/// with plain names, values with no reference, `<` or line break, and no name twice (in
-/// any case, found by [`first_repeated`]). None for anything else: quick-xml reads that,
-/// and tells what is malformed.
+/// with plain names, values with no reference, `<`, line break or other quote, and no
+/// name twice (in any case, found by [`first_repeated`]). None for anything else:
+/// quick-xml reads that, and tells what is malformed.
 pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Option<Attrs<'_>> {
     let bytes = content.as_bytes();
     let mut attrs = Attrs::default();
@@ -405,20 +395,46 @@ pub(super) fn plain_attributes(content: &str, name_len: usize, at: usize) -> Opt
         if i == bytes.len() {
             return first_repeated(&attrs).is_none().then_some(attrs);
         }
-        let key_len = bytes[i..].iter().position(|&b| !is_plain_name_byte(b))?;
-        let (key, after) = (&content[i..i + key_len], &bytes[i + key_len..]);
-        let [b'=', quote @ (b'"' | b'\''), value @ ..] = after else {
-            return None;
-        };
-        let len = value
-            .iter()
-            .position(|b| matches!(b, b'&' | b'<' | b'\t' | b'\n' | b'\r') || b == quote)?;
-        if space == 0 || key_len == 0 || value[len] != *quote {
-            return None;
-        }
-        let start = i + key_len + 2;
+        let (key_len, start, len) = plain_pair(bytes, i).filter(|_| space > 0)?;
+        let key = &content[i..i + key_len];
         let value = Cow::Borrowed(&content[start..start + len]);
         attrs.push(Attr { key, value, at: at + 1 + start });
+        i = start + len + 1;
+    }
+}
+
+/// The plain `name="value"` (or single quotes) at `i` of a tag's `bytes` (see
+/// [`plain_attributes`]): the length of its name, and where its value starts and how long
+/// it is (its closing quote just after). None for anything else.
+#[inline(always)]
+fn plain_pair(bytes: &[u8], i: usize) -> Option<(usize, usize, usize)> {
+    let key_len = plain_name_len(&bytes[i..]);
+    let [b'=', quote @ (b'"' | b'\''), value @ ..] = &bytes[i + key_len..] else {
+        return None;
+    };
+    // The other quote ends it too: quick-xml reads a value that holds one.
+    let len = value.iter().position(|&b| ENDS_PLAIN_VALUE[usize::from(b)])?;
+    (key_len > 0 && value[len] == *quote).then_some((key_len, i + key_len + 2, len))
+}
+
+/// Where the start tag at the start of `text` ends, the offset of its `>`, when its
+/// attributes are plain (see [`plain_attributes`]): its name holds no quote, and each
+/// value is quoted as the scan stage sees it, so this `>` is the first outside quoted
+/// values, the one the scan would mark. None for any other tag, or when the text at hand
+/// ends first.
+#[inline]
+pub(super) fn plain_tag_end(text: &[u8]) -> Option<usize> {
+    let mut i = 1 + text.get(1..)?.iter().position(|&b| ENDS_NAME[usize::from(b)])?;
+    loop {
+        let space = space_len(&text[i..]);
+        i += space;
+        match text[i..] {
+            [b'>', ..] => return Some(i),
+            [b'/', b'>', ..] => return Some(i + 1),
+            _ if space == 0 => return None,
+            _ => {}
+        }
+        let (_, start, len) = plain_pair(text, i)?;
         i = start + len + 1;
     }
 }
