@@ -137,8 +137,8 @@ pub struct WorkingRange {
     /// joint's axis reaches it).
     pub prismatic_lever_to_b: bool,
     /// Radii of gyration of the joint's smaller dynamic body: how far a distance joint (a rod
-    /// or a rope) may act on a dynamic body that a revolute or weld joint holds to a body
-    /// that does not move (static or kinematic).
+    /// or a rope) between two dynamic bodies may act on one that a revolute or weld joint
+    /// holds to a body that does not move (static or kinematic).
     pub max_lever_pinned_distance: f32,
 }
 
