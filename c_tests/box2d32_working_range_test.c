@@ -306,15 +306,15 @@ static int a_fixed_rotation_spin_is_reported_lossy(void) {
     return 0;
 }
 
-/* A 0.2 m ball of density 1 at `position`, made through v3.2's own calls. */
-static b2BodyId ball_by_hand(b2WorldId world, b2Vec2 position) {
+/* A ball of `radius` m, density 1, at `position`, made through v3.2's own calls. */
+static b2BodyId ball_by_hand(b2WorldId world, b2Vec2 position, float radius) {
     b2BodyDef def = b2DefaultBodyDef();
     def.type = b2_dynamicBody;
     def.position = b2ToPos(position);
     b2BodyId body = b2CreateBody(world, &def);
     b2ShapeDef shape = b2DefaultShapeDef();
     shape.density = 1.0f;
-    b2Circle circle = {{0.0f, 0.0f}, 0.2f};
+    b2Circle circle = {{0.0f, 0.0f}, radius};
     b2CreateCircleShape(body, &shape, &circle);
     return body;
 }
@@ -347,8 +347,8 @@ static bool weld_and_two_violated_wheels_die_by_hand(void) {
         b2WorldId world = b2CreateWorld(&world_def);
         b2BodyDef ground_def = b2DefaultBodyDef();
         b2BodyId ground = b2CreateBody(world, &ground_def);
-        b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f});
-        b2BodyId b = ball_by_hand(world, (b2Vec2){1.0f, 0.0f});
+        b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.2f);
+        b2BodyId b = ball_by_hand(world, (b2Vec2){1.0f, 0.0f}, 0.2f);
         wheel_to_ground_by_hand(world, a, ground, (b2Vec2){0.0f, 0.5f}, (b2Rot){1.0f, 0.0f});
         wheel_to_ground_by_hand(world, a, ground, (b2Vec2){0.5f, 0.0f}, (b2Rot){0.0f, 1.0f});
         b2WeldJointDef weld = b2DefaultWeldJointDef();
@@ -411,6 +411,112 @@ static int the_tables_engine_facts_are_v32s_constants(void) {
     return 0;
 }
 
+/* A 0.3 m ball at the origin (pinned to a static ground at its centre by a revolute joint,
+ * or free) and a 1 m ball hanging 10 m below a point 10 m out on it, on a satisfied rope
+ * 10 m long anchored there and at the 1 m ball's centre, as the plan makes a rope: v3.2's
+ * distance joint with its spring on at 0 Hz and its upper limit at the length. Whether the
+ * world dies within STEPS steps, in a child: an assertion, or a ball beyond 1e4 m or NaN. */
+static bool rope_10_m_out_dies_by_hand(bool pinned) {
+    fflush(NULL);
+    pid_t child = fork();
+    if (child == 0) {
+        b2WorldDef world_def = b2DefaultWorldDef();
+        world_def.maximumLinearSpeed =
+            b2s_engine_working_range(B2S_ENGINE_BOX2D32)->world_max_linear_speed;
+        b2WorldId world = b2CreateWorld(&world_def);
+        b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.3f);
+        b2BodyId b = ball_by_hand(world, (b2Vec2){10.0f, -10.0f}, 1.0f);
+        if (pinned) {
+            b2BodyDef ground_def = b2DefaultBodyDef();
+            b2BodyId ground = b2CreateBody(world, &ground_def);
+            b2RevoluteJointDef pin = b2DefaultRevoluteJointDef();
+            pin.base.bodyIdA = ground;
+            pin.base.bodyIdB = a;
+            b2CreateRevoluteJoint(world, &pin);
+        }
+        b2DistanceJointDef rope = b2DefaultDistanceJointDef();
+        rope.base.bodyIdA = a;
+        rope.base.bodyIdB = b;
+        rope.base.localFrameA.p = (b2Vec2){10.0f, 0.0f};
+        rope.length = 10.0f;
+        rope.enableSpring = true;
+        rope.hertz = 0.0f;
+        rope.enableLimit = true;
+        rope.minLength = 0.0f;
+        rope.maxLength = 10.0f;
+        b2CreateDistanceJoint(world, &rope);
+        for (int step = 0; step < STEPS; ++step) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+            b2BodyId bodies[2] = {a, b};
+            for (int k = 0; k < 2; ++k) {
+                b2Vec2 p = v3_position(bodies[k]);
+                if (!(fabsf(p.x) <= 1e4f && fabsf(p.y) <= 1e4f)) {
+                    _exit(1);
+                }
+            }
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status) || WEXITSTATUS(status) != 0;
+}
+
+/* The same level as a file: joint 0 the rope, joint 1 the pin where `pinned`. */
+static b2s_scene* rope_10_m_out(bool pinned) {
+    static char xml[2048];
+    snprintf(xml, sizeof xml,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+             "<Radius>0.3</Radius><Position>0 0</Position></Shape><Shape Type='Circle'>"
+             "<Radius>1</Radius><Position>0 0</Position></Shape></Shapes><Fixtures><Fixture>"
+             "<Shape>0</Shape><Density>1</Density></Fixture><Fixture><Shape>1</Shape>"
+             "<Density>1</Density></Fixture></Fixtures><Bodies><Body Type='Static'/>"
+             "<Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body><Body Type='Dynamic'>"
+             "<Position>10 -10</Position><Fixtures><ID>1</ID></Fixtures></Body></Bodies>"
+             "<Joints><Joint Type='Rope'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>10 0"
+             "</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB><MaxLength>10</MaxLength></Joint>"
+             "%s</Joints></World>",
+             pinned ? "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0 0"
+                      "</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB></Joint>"
+                    : "");
+    return load_text(xml);
+}
+
+/* The issue's case no bound covered, in v3.2: a satisfied rope 10 m out on a pinned 0.3 m
+ * ball carrying a 1 m ball (47 radii of gyration, within the 75 of every joint) makes v3.2
+ * assert built by hand (b2IsValidVec2), and the adapter built it. The rope is left out
+ * (max_lever_pinned_distance) and the pinned ball holds. */
+static int a_rope_10_m_out_on_a_pinned_ball_is_refused(void) {
+    ENSURE(rope_10_m_out_dies_by_hand(true));
+    b2s_scene* scene = rope_10_m_out(true);
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE(B2_IS_NULL(world.built->joints[0]));
+    ENSURE(!B2_IS_NULL(world.built->joints[1]));
+    ENSURE_EQ(world.built->reports.count, 1);
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1);
+    ENSURE(strstr(world.built->reports.items[0].message,
+                  "which a revolute or weld joint holds to a body that does not move") != NULL);
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+/* The same rope on the same ball left free holds by hand, and the adapter builds it. */
+static int a_rope_10_m_out_on_a_free_ball_is_built_and_holds(void) {
+    ENSURE(!rope_10_m_out_dies_by_hand(false));
+    b2s_scene* scene = rope_10_m_out(false);
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE(!B2_IS_NULL(world.built->joints[0]));
+    ENSURE_EQ(world.built->reports.count, 0);
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
@@ -424,5 +530,7 @@ int main(void) {
     failed += RUN_TEST(a_fixed_rotation_spin_is_reported_lossy);
     failed += RUN_TEST(the_tables_engine_facts_are_v32s_constants);
     failed += RUN_TEST(a_weld_with_two_violated_wheels_to_the_ground_keeps_one_wheel);
+    failed += RUN_TEST(a_rope_10_m_out_on_a_pinned_ball_is_refused);
+    failed += RUN_TEST(a_rope_10_m_out_on_a_free_ball_is_built_and_holds);
     return failed;
 }

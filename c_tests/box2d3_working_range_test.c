@@ -473,6 +473,106 @@ static int a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused(void) {
     return 0;
 }
 
+/* A 0.3 m ball at the origin (pinned to a static ground at its centre by a revolute joint,
+ * or free) and a 1 m ball hanging 10 m below a point 10 m out on it, on a satisfied rope
+ * 10 m long anchored there and at the 1 m ball's centre, as the plan makes a rope: v3.1's
+ * distance joint with its spring on at 0 Hz and its upper limit at the length. Whether the
+ * world dies within 600 steps, in a child: an assertion, or a ball beyond 1e4 m or NaN. */
+static bool rope_10_m_out_dies_by_hand(bool pinned) {
+    fflush(NULL);
+    pid_t child = fork();
+    if (child == 0) {
+        b2WorldDef def = b2DefaultWorldDef();
+        def.maximumLinearSpeed = b2s_engine_working_range(B2S_ENGINE_BOX2D31)->world_max_linear_speed;
+        b2WorldId world = b2CreateWorld(&def);
+        b2BodyId a = ball_by_hand(world, (b2Vec2){0.0f, 0.0f}, 0.3f);
+        b2BodyId b = ball_by_hand(world, (b2Vec2){10.0f, -10.0f}, 1.0f);
+        if (pinned) {
+            pin_by_hand(world, a);
+        }
+        b2DistanceJointDef rope = b2DefaultDistanceJointDef();
+        rope.bodyIdA = a;
+        rope.bodyIdB = b;
+        rope.localAnchorA = (b2Vec2){10.0f, 0.0f};
+        rope.length = 10.0f;
+        rope.enableSpring = true;
+        rope.hertz = 0.0f;
+        rope.enableLimit = true;
+        rope.minLength = 0.0f;
+        rope.maxLength = 10.0f;
+        b2CreateDistanceJoint(world, &rope);
+        for (int i = 0; i < 600; ++i) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+            b2BodyId bodies[2] = {a, b};
+            for (int k = 0; k < 2; ++k) {
+                b2Vec2 p = b2Body_GetPosition(bodies[k]);
+                if (!(fabsf(p.x) <= 1e4f && fabsf(p.y) <= 1e4f)) {
+                    _exit(1);
+                }
+            }
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status) || WEXITSTATUS(status) != 0;
+}
+
+/* The same level as a file: joint 0 the rope, joint 1 the pin where `pinned`. */
+static b2s_scene* rope_10_m_out(bool pinned) {
+    static char xml[2048];
+    snprintf(xml, sizeof xml,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+             "<Radius>0.3</Radius><Position>0 0</Position></Shape><Shape Type='Circle'>"
+             "<Radius>1</Radius><Position>0 0</Position></Shape></Shapes><Fixtures><Fixture>"
+             "<Shape>0</Shape><Density>1</Density></Fixture><Fixture><Shape>1</Shape>"
+             "<Density>1</Density></Fixture></Fixtures><Bodies><Body Type='Static'/>"
+             "<Body Type='Dynamic'><Fixtures><ID>0</ID></Fixtures></Body><Body Type='Dynamic'>"
+             "<Position>10 -10</Position><Fixtures><ID>1</ID></Fixtures></Body></Bodies>"
+             "<Joints><Joint Type='Rope'><BodyA>1</BodyA><BodyB>2</BodyB><LocalAnchorA>10 0"
+             "</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB><MaxLength>10</MaxLength></Joint>"
+             "%s</Joints></World>",
+             pinned ? "<Joint Type='Revolute'><BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0 0"
+                      "</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB></Joint>"
+                    : "");
+    return load_text(xml);
+}
+
+/* The issue's case no bound covered: a satisfied rope 10 m out on a pinned 0.3 m ball (47
+ * radii of gyration, within the 75 of every joint) throws the balls off in v3.1 built by
+ * hand, and the adapter built it. A distance joint on a body a revolute or weld joint holds
+ * to the ground now has its own bound (max_lever_pinned_distance): the rope is left out and
+ * the pinned ball holds. */
+static int a_rope_10_m_out_on_a_pinned_ball_is_refused(void) {
+    ENSURE(rope_10_m_out_dies_by_hand(true));
+    b2s_scene* scene = rope_10_m_out(true);
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NULL(w.built->joints[0]));
+    ENSURE(B2_IS_NON_NULL(w.built->joints[1]));
+    ENSURE_EQ(w.built->reports.count, 1);
+    ENSURE(report_says(&w.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, 0,
+                       "which a revolute or weld joint holds to a body that does not move"));
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
+/* The same rope on the same ball left free holds by hand, and the adapter builds it. */
+static int a_rope_10_m_out_on_a_free_ball_is_built_and_holds(void) {
+    ENSURE(!rope_10_m_out_dies_by_hand(false));
+    b2s_scene* scene = rope_10_m_out(false);
+    ENSURE(scene != NULL);
+    v3_world w = build_v3(scene);
+    ENSURE(B2_IS_NON_NULL(w.built->joints[0]));
+    ENSURE_EQ(w.built->reports.count, 0);
+    ENSURE(finite_for_600_steps(&w));
+    free_v3(&w);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_joint_that_starts_violated_is_left_out);
@@ -488,5 +588,7 @@ int main(void) {
     failed += RUN_TEST(a_fixed_rotation_body_keeps_turning_at_its_angular_velocity);
     failed += RUN_TEST(a_prismatic_20_m_past_its_limit_on_a_pinned_ball_is_refused);
     failed += RUN_TEST(a_wheel_50_m_along_its_axis_from_a_pinned_ball_is_refused);
+    failed += RUN_TEST(a_rope_10_m_out_on_a_pinned_ball_is_refused);
+    failed += RUN_TEST(a_rope_10_m_out_on_a_free_ball_is_built_and_holds);
     return failed;
 }

@@ -2069,6 +2069,12 @@ typedef struct b2s_working_range {
    * joint's axis reaches it).
    */
   bool prismatic_lever_to_b;
+  /**
+   * Radii of gyration of the joint's smaller dynamic body: how far a distance joint (a rod
+   * or a rope) between two dynamic bodies may act on one that a revolute or weld joint
+   * holds to a body that does not move (static or kinematic).
+   */
+  float max_lever_pinned_distance;
 } b2s_working_range;
 
 /**

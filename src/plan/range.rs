@@ -136,12 +136,16 @@ pub struct WorkingRange {
     /// Whether a prismatic joint's lever on body A is measured to body B's anchor too (the
     /// joint's axis reaches it).
     pub prismatic_lever_to_b: bool,
+    /// Radii of gyration of the joint's smaller dynamic body: how far a distance joint (a rod
+    /// or a rope) between two dynamic bodies may act on one that a revolute or weld joint
+    /// holds to a body that does not move (static or kinematic).
+    pub max_lever_pinned_distance: f32,
 }
 
 impl WorkingRange {
     /// Every numeric bound by its field's name, in the order of the fields (for the Python
     /// extension and the docs' table).
-    pub fn bounds(&self) -> [(&'static str, f32); 30] {
+    pub fn bounds(&self) -> [(&'static str, f32); 31] {
         [
             ("max_length", self.max_length),
             ("max_angle", self.max_angle),
@@ -173,11 +177,13 @@ impl WorkingRange {
             ("linear_slop", self.linear_slop),
             ("max_revolute_limit", self.max_revolute_limit),
             ("centroid_tolerance", self.centroid_tolerance),
+            ("max_lever_pinned_distance", self.max_lever_pinned_distance),
         ]
     }
 }
 
-/// The ABI is pinned: 30 floats, a count and two flags, also asserted on the C++ side.
+/// The ABI is pinned: 30 floats, a count, two flags and a float added since, also asserted
+/// on the C++ side.
 const _: () = {
     use std::mem::{offset_of, size_of};
     assert!(offset_of!(WorkingRange, max_violation) == 88);
@@ -188,7 +194,8 @@ const _: () = {
     assert!(offset_of!(WorkingRange, name_bytes) == 120);
     assert!(offset_of!(WorkingRange, friction_at_anchors) == 124);
     assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 125);
-    assert!(size_of::<WorkingRange>() == 128);
+    assert!(offset_of!(WorkingRange, max_lever_pinned_distance) == 128);
+    assert!(size_of::<WorkingRange>() == 132);
 };
 
 /// No bound.
@@ -236,6 +243,7 @@ const BOX2D_24: WorkingRange = WorkingRange {
     name_bytes: 0,
     friction_at_anchors: true,
     prismatic_lever_to_b: true,
+    max_lever_pinned_distance: NONE,
 };
 
 /// Box2D 2.3 as pybox2d holds it: 2.4's solver, whose measurements it shares.
@@ -251,6 +259,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
     max_violation: 0.5,
     min_stiffness: 0.0,
     max_lever_fixed_wheel: 5.0,
+    max_lever_pinned_distance: 2.5,
     max_wheel_violation: 0.5,
     max_wheel_violation_gyrations: 4.0,
     max_joint_acceleration: 1e5,
@@ -270,6 +279,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
 const BOX2D_32: WorkingRange = WorkingRange {
     max_violation: 4.0,
     max_wheel_violation: NONE,
+    max_lever_pinned_distance: 7.0,
     name_bytes: 10,
     friction_at_anchors: true,
     ..BOX2D_31

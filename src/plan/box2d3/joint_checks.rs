@@ -98,6 +98,64 @@ impl Mapper<'_> {
         if is_wheel(joint) && !turns { self.range.max_lever_fixed_wheel } else { lever }
     }
 
+    /// Marks every created dynamic body that a revolute or weld joint of the scene holds to
+    /// a created body that does not move (static or kinematic), whether or not that joint
+    /// is planned: the file means it pinned, and a distance joint's check must know it
+    /// before the pin's own turn comes.
+    pub(super) fn find_pinned(&mut self) {
+        let created = |b: u32| self.created.get(b as usize).is_some_and(Option::is_some);
+        let moves = |b: u32| self.body(b).kind == BodyKind::Dynamic as u32;
+        let pins = self.scene.joints().iter().filter(|joint| {
+            matches!(kind_of(joint), Some(JointKind::Revolute | JointKind::Weld))
+                && joint.body_a != joint.body_b
+                && created(joint.body_a)
+                && created(joint.body_b)
+        });
+        let pinned: Vec<u32> = pins
+            .flat_map(|joint| [(joint.body_a, joint.body_b), (joint.body_b, joint.body_a)])
+            .filter(|&(body, other)| moves(body) && !moves(other))
+            .map(|(body, _)| body)
+            .collect();
+        for body in pinned {
+            self.pinned[body as usize] = true;
+        }
+    }
+
+    /// A distance joint (a rod or a rope) by which a pinned body carries another dynamic
+    /// body: its lever on the pinned one, in radii of gyration of the smaller of the two,
+    /// within `max_lever_pinned_distance`. Built by hand, v3 throws such a pair off or
+    /// asserts far nearer than the levers of the same joint on a free body; to a body that
+    /// does not move, the same joint holds on a pinned body as far out as it was measured
+    /// (`docs/working-range.md`).
+    fn check_pinned_distance(&self, check: &mut Check, joint: &Joint) {
+        let bound = self.range.max_lever_pinned_distance;
+        let (a, b) = (joint.body_a, joint.body_b);
+        let (Some(mass_a), Some(mass_b)) = (self.dynamic_mass(a), self.dynamic_mass(b)) else {
+            return;
+        };
+        let smallest = gyration(&mass_a).min(gyration(&mass_b));
+        let anchors =
+            [("LocalAnchorA", a, joint.local_anchor_a), ("LocalAnchorB", b, joint.local_anchor_b)];
+        for ((field, body, anchor), mass) in anchors.into_iter().zip([mass_a, mass_b]) {
+            if !self.pinned[body as usize] {
+                continue;
+            }
+            let lever = distance(anchor, mass.center) / smallest;
+            if !(lever <= bound) {
+                check.fail(format_args!(
+                    "{field}: the joint acts {} radii of gyration (of its smaller dynamic body) \
+                     from the centre of mass of body {body}, which a revolute or weld joint holds \
+                     to a body that does not move: a distance joint that far out on such a body \
+                     lies beyond {}'s working range (at most {})",
+                    G(lever),
+                    self.v3.name(),
+                    G(bound)
+                ));
+                return;
+            }
+        }
+    }
+
     pub(super) fn joint_check(&self, joint: &Joint) -> Check {
         let (v3, r) = (self.v3, self.range);
         let length = r.max_length;
@@ -190,6 +248,9 @@ impl Mapper<'_> {
                 let b_anchor = transform_point(self.body(b).transform, joint.local_anchor_b);
                 let local = inv_transform_point(self.body(a).transform, b_anchor);
                 self.check_anchor(c, "LocalAnchorB, as body A's lever", a, local, lever);
+            }
+            if c.passed() && matches!(kind, Some(JointKind::Distance | JointKind::Rope)) {
+                self.check_pinned_distance(c, joint);
             }
         }
         if c.passed() {
@@ -500,6 +561,61 @@ mod tests {
             // Both on their axes: both are built.
             let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rails("1"));
             assert_eq!(plan.joints().len(), 2);
+        }
+    }
+
+    #[test]
+    fn a_rope_far_out_on_a_pinned_ball_is_refused() {
+        // Rope 0 hangs ball 2 from ball 1, anchored `x` m from ball 1's centre (radius of
+        // gyration 0.354 m); joint 1, after it, pins ball 1 to the ground.
+        let rope = |x: &str| {
+            joint(
+                "Rope",
+                1,
+                2,
+                &format!(
+                    "<LocalAnchorA>{x} 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB><MaxLength>3</MaxLength>"
+                ),
+            )
+        };
+        let pin = |kind: &str| {
+            joint(kind, 0, 1, "<LocalAnchorA>1 0</LocalAnchorA><LocalAnchorB>0 0</LocalAnchorB>")
+        };
+        for kind in ["Revolute", "Weld"] {
+            // 2.83 radii: beyond v3.1's 2.5, within v3.2's 7.
+            let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &(rope("1") + &pin(kind)));
+            assert_eq!(plan.joints().len(), 1);
+            assert_eq!(plan.joints()[0].joint, 1);
+            let (code, _, index, message) = messages(&plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 0));
+            assert_eq!(
+                message,
+                "LocalAnchorA: the joint acts 2.82843 radii of gyration (of its smaller dynamic \
+                 body) from the centre of mass of body 1, which a revolute or weld joint holds to \
+                 a body that does not move: a distance joint that far out on such a body lies \
+                 beyond Box2D v3's working range (at most 2.5); joint not created"
+            );
+            let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &(rope("1") + &pin(kind)));
+            assert_eq!(plan.joints().len(), 2);
+            let plan =
+                plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &(rope("0.8") + &pin(kind)));
+            assert_eq!(plan.joints().len(), 2);
+        }
+        // The same rope on the free ball is built, up to the lever every joint has (75); so
+        // is a rope from the ground to the pinned ball, which carries no other body on it.
+        let to_ground = joint(
+            "Rope",
+            0,
+            1,
+            "<LocalAnchorA>2 0</LocalAnchorA><LocalAnchorB>1 0</LocalAnchorB><MaxLength>3</MaxLength>",
+        );
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &rope("1"));
+            assert_eq!(plan.joints().len(), 1);
+            assert!(plan.reports().is_empty());
+            let plan = plan_of(engine, BALL.0, BALL.1, BODIES, &(to_ground.clone() + &pin("Weld")));
+            assert_eq!(plan.joints().len(), 2);
+            assert!(plan.reports().is_empty());
         }
     }
 

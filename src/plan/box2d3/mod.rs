@@ -57,6 +57,9 @@ struct Mapper<'a> {
     /// Per scene body: the first line or wheel joint planned from it (as body A) to a body
     /// that does not turn, and how far (m) its anchors start apart across its axis.
     railed: Vec<Option<(u32, f32)>>,
+    /// Per scene body: whether it is a dynamic body that a revolute or weld joint of the
+    /// scene holds to a body that does not move.
+    pinned: Vec<bool>,
 }
 
 /// The plan of `scene` for a v3 version.
@@ -75,6 +78,7 @@ pub(super) fn plan(scene: &Scene, options: &PlanOptions, v3: V3) -> Plan {
         created: vec![None; scene.bodies().len()],
         pulled: vec![0; scene.bodies().len()],
         railed: vec![None; scene.bodies().len()],
+        pinned: vec![false; scene.bodies().len()],
     };
     if !m.placement_valid() {
         let t = options.placement;
@@ -103,6 +107,7 @@ pub(super) fn plan(scene: &Scene, options: &PlanOptions, v3: V3) -> Plan {
     for index in 0..scene.bodies().len() {
         m.make_body(index as u32);
     }
+    m.find_pinned();
     for index in 0..scene.joints().len() {
         m.make_joint(index as u32);
     }
