@@ -1,6 +1,7 @@
 // build_world takes time linear in fixtures, bodies and joints: each scene of
-// growth_scenes.h is built at 4 000 and 16 000 objects, the fastest of several runs of each
-// counts, and the larger must take less than 8 times as long (a quadratic build takes 16).
+// growth_scenes.h is built at 2 000 and 32 000 objects, the fastest of several runs of each
+// counts, and the larger must take less than 64 times as long (a linear build takes 16,
+// a quadratic one 256).
 // Box2D 2.4's CreateFixture alone would recompute a body's mass from all its fixtures each
 // time, so the one-body scene also checks that the mass the adapter has Box2D compute once
 // is, bit for bit, what Box2D's ResetMassData gives over those fixtures. capture_world of

@@ -1,7 +1,8 @@
 /*
  * V3_ADAPTER(build_world) takes time linear in shapes, bodies and joints: each scene of
- * growth_scenes.h is built at 4 000 and 16 000 objects, the fastest of several runs of each
- * counts, and the larger must take less than 8 times as long (a quadratic build takes 16).
+ * growth_scenes.h is built at 2 000 and 32 000 objects, the fastest of several runs of each
+ * counts, and the larger must take less than 64 times as long (a linear build takes 16,
+ * a quadratic one 256).
  * The adapter creates a body's shapes without updating its mass and has v3 compute it once;
  * the one-body scene checks that mass, bit for bit, against v3's sum over those shapes.
  *
