@@ -321,3 +321,48 @@ fn kept_text_is_written_alike_from_a_path_and_from_memory() {
     }
     std::fs::remove_file(&file).unwrap();
 }
+
+/// The attributes of a start tag are read where the tag is written, from the text at hand:
+/// wherever a window ends inside the start tag of an object (a shape, a fixture, a body, a
+/// joint) with attributes, plain, quoted either way, with a reference, unknown, a load from
+/// a path reads them as one from memory does: the same scene, the same warnings at the same
+/// lines and columns, and the unknown ones written back alike.
+#[test]
+fn attributes_of_a_tag_across_a_window_end_read_the_same_from_a_path() {
+    let objects = "<Shapes>\n<Shape Type=\"Circle\" Name=\"round\" Colour=\"r&amp;d\"><Radius>0.5</Radius><Position>0 0</Position></Shape>\
+         <Shape Type='Polygon' Tint='blue'><Vertices><Vertex>0 0</Vertex><Vertex>1 0</Vertex>\
+         <Vertex>0 1</Vertex></Vertices></Shape></Shapes>\n<Fixtures><Fixture Note=\"f\">\
+         <Shape>0</Shape><Density>1</Density></Fixture><Fixture><Shape>1</Shape></Fixture></Fixtures>\n\
+         <Bodies><Body Type=\"Dynamic\" Label=\"b &#x3C; c\"><Fixtures><ID>0</ID></Fixtures></Body>\
+         <Body\n Type = 'Static'><Fixtures><ID>1</ID></Fixtures></Body></Bodies>\n\
+         <Joints><Joint Type=\"Rope\" Spring=\"no\"><BodyA>0</BodyA><BodyB>1</BodyB></Joint></Joints>\n";
+    let scene = |pad: usize| {
+        format!("<World Version=\"2\"><!--{}-->\n{objects}</World>\n", "p".repeat(pad))
+    };
+    let at = scene(0).find(objects).unwrap();
+    // Each byte of the objects: inside a start tag with attributes, and inside an object
+    // whose start tag was read before the window ended.
+    let bytes = at..at + objects.len();
+    let file = std::env::temp_dir().join(format!("box2scene-attrs-{}.xml", std::process::id()));
+    let options = LoadOptions::default();
+    let read = |scene: box2scene::Scene| {
+        let warnings: Vec<_> = (scene.diagnostics().iter())
+            .map(|d| (d.code, d.line, d.column, scene.text(d.message).unwrap().to_string()))
+            .collect();
+        let written = scene.to_xml(&box2scene::WriteOptions::default()).unwrap();
+        (scene.to_json(), warnings, written)
+    };
+    for byte in bytes {
+        // The first window ends at byte CHUNK: here.
+        let xml = scene(CHUNK - byte);
+        std::fs::write(&file, &xml).unwrap();
+        let from_memory = read(load(xml.as_bytes(), &options).unwrap());
+        let from_path = read(load_path(&file, &options).unwrap());
+        let unknown = from_memory.1.iter().filter(|w| w.0 == Code::UnknownElement as u32);
+        assert_eq!(unknown.count(), 5, "every unknown attribute is warned about");
+        assert!(from_memory.2.contains(" Colour=\"r&amp;d\""), "{}", from_memory.2);
+        assert!(from_memory.2.contains(" Label=\"b &#x3C; c\""), "{}", from_memory.2);
+        assert!(from_path == from_memory, "the window ends at byte {byte} of the file");
+    }
+    std::fs::remove_file(&file).unwrap();
+}

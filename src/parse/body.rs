@@ -1,6 +1,6 @@
 //! `<Body Type="...">`: state, flags, mass override and fixture IDs.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, attributes, elements};
 use crate::arena::Pair;
 use crate::error::{Code, Parsed, problem};
 use crate::scene::{Body, BodyKind, MassData, Object, Range};
@@ -111,8 +111,7 @@ impl<'a> Reader<'a> {
     fn bindings(&mut self, tag: &Tag) -> Parsed<()> {
         let body = self.arena.scene.bodies.len() as u32;
         self.items(tag, "Pair", |p, pair| {
-            let attrs = p.tok.attributes(pair)?;
-            p.unknown_attributes(pair, &attrs, &["FixtureId", "ShapeId"])?;
+            let attrs = attributes!(p, pair, &["FixtureId", "ShapeId"]);
             let id = |name: &str| match attrs.iter().find(|a| a.is(name)) {
                 Some(attr) => p.tok.attribute(pair, attr, crate::text::id),
                 None => Err(problem(
@@ -129,10 +128,9 @@ impl<'a> Reader<'a> {
     }
 
     fn body_type(&mut self, tag: &Tag) -> Parsed<BodyKind> {
-        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] =
             if self.arena.id_is_informational() { &["Type", "Id"] } else { &["Type"] };
-        self.unknown_attributes(tag, &attrs, known)?;
+        let attrs = attributes!(self, tag, known);
         self.arena.origins.signs.ids |= known.len() > 1 && attrs.iter().any(|a| a.is("id"));
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(

@@ -1,6 +1,6 @@
 //! `<Fixture>`: a shape ID, material and filtering.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, attributes, elements};
 use crate::error::Parsed;
 use crate::scene::{Filter, Fixture, Object};
 use crate::text;
@@ -26,9 +26,8 @@ elements! {
 impl<'a> Reader<'a> {
     pub(super) fn fixture(&mut self, tag: &Tag) -> Parsed<()> {
         self.begin_object(Object::Fixture(self.arena.scene.fixtures.len() as u32));
-        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.id_is_informational() { &["Id"] } else { &[] };
-        self.unknown_attributes(tag, &attrs, known)?;
+        let attrs = attributes!(self, tag, known);
         self.arena.origins.signs.ids |= !known.is_empty() && attrs.iter().any(|a| a.is("id"));
         let mut fixture = Fixture::default();
         let mut name_str = None;

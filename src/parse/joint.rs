@@ -1,7 +1,8 @@
 //! `<Joint Type="...">`: the common fields, then the kind-specific ones, which the model's
 //! table of joint elements says each kind has, where they go and what they may hold.
 
-use super::{Element as _, Reader, Seen, Tag, elements};
+use super::names::Name;
+use super::{Element as _, Reader, Seen, Tag, attributes, elements};
 use crate::arena::JointOrigin;
 use crate::error::{Code, Parsed, problem};
 use crate::rules;
@@ -282,8 +283,7 @@ impl<'a> Reader<'a> {
     }
 
     fn joint_type(&mut self, tag: &Tag) -> Parsed<JointKind> {
-        let attrs = self.tok.attributes(tag)?;
-        self.unknown_attributes(tag, &attrs, &["Type"])?;
+        let attrs = attributes!(self, tag, &["Type"]);
         let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
             return Err(problem(Code::MissingAttribute, tag.at, "<Joint> has no Type attribute"));
         };
@@ -303,13 +303,16 @@ impl<'a> Reader<'a> {
                 ),
             ));
         };
+        // The Type as written, copied in place (a known one is short): the warnings below
+        // take the reader, whose text the attributes borrow.
+        let (at, value) = (ty.at, Name::new(value));
         if joints::VERSION_2_KINDS.contains(kind) {
-            self.newer_construct(ty.at, format_args!("a {value} joint"))?;
+            self.newer_construct(at, format_args!("a {value} joint"))?;
         }
         if kind == JointKind::Unsupported {
             self.warn(
                 Code::FarseerOnlyJoint,
-                ty.at,
+                at,
                 || format!("{value} joints exist only in Farseer and have no Box2D equivalent: kept (so joint indices stay stable) but not simulated"),
             )?;
         }

@@ -28,7 +28,7 @@ use crate::place::Placer;
 use crate::rules;
 use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
-use tokenizer::{Attr, Node, Tag, Text, Tokenizer, verbatim};
+use tokenizer::{Attr, Node, Tag, Text, Tokenizer};
 
 /// Reads the whole document into an arena, in pieces on two threads when [`split`] finds
 /// the text worth it. What it finds is placed at its line and column as it reads, or by the
@@ -238,15 +238,24 @@ impl<'a> Reader<'a> {
 
     /// Warns about every attribute of `tag` except those named in `known` (in any case), with
     /// the nearest known name as a hint, and keeps them for the start tag of the object
-    /// being read.
-    pub fn unknown_attributes(&mut self, tag: &Tag, attrs: &[Attr], known: &[&str]) -> Parsed<()> {
-        for attr in attrs.iter().filter(|a| !known.iter().any(|k| a.is(k))) {
-            self.warn(Code::UnknownElement, attr.at, || {
-                let hint = did_you_mean(attr.key, known);
-                format!("unknown attribute {} on <{}> ignored{hint}", attr.key, tag.name())
+    /// being read. Called by the `attributes!` macro when there are some: their names and
+    /// text are copied, as the warnings take the reader.
+    #[cold]
+    pub fn unknown_attributes(&mut self, tag: &Tag, known: &[&str]) -> Parsed<()> {
+        let keeping = self.keeping();
+        let unknown: Vec<_> = (self.tok.attributes(tag)?.iter())
+            .filter(|attr| !is_known(attr, known))
+            .map(|attr| {
+                (attr.key.to_owned(), attr.at, keeping.then(|| self.tok.verbatim(tag, attr)))
+            })
+            .collect();
+        for (key, at, written) in unknown {
+            self.warn(Code::UnknownElement, at, || {
+                let hint = did_you_mean(&key, known);
+                format!("unknown attribute {key} on <{}> ignored{hint}", tag.name())
             })?;
-            if self.keeping() {
-                self.keep_str(KeptAt::Attribute, &verbatim(tag, attr));
+            if let Some(written) = written {
+                self.keep_str(KeptAt::Attribute, &written);
             }
         }
         Ok(())
@@ -459,6 +468,31 @@ impl<'a> Reader<'a> {
         }
         Ok(())
     }
+}
+
+/// The attributes of `$tag` (see [`Tokenizer::attributes`]), read by the reader `$reader`
+/// after a warning about each not named in `$known` (see [`Reader::unknown_attributes`]).
+/// A macro, not a method: the attributes borrow the text at hand from the tokenizer, and
+/// the warnings take the whole reader. When there are some to warn about, which is rare,
+/// the attributes are read again after the warnings.
+macro_rules! attributes {
+    ($reader:expr, $tag:expr, $known:expr) => {{
+        let (tag, known): (_, &[&str]) = ($tag, $known);
+        let attrs = $reader.tok.attributes(tag)?;
+        match attrs.iter().all(|attr| super::is_known(attr, known)) {
+            true => attrs,
+            false => {
+                $reader.unknown_attributes(tag, known)?;
+                $reader.tok.attributes(tag)?
+            }
+        }
+    }};
+}
+use attributes;
+
+/// Whether `attr` is named in `known`, in any case.
+fn is_known(attr: &Attr, known: &[&str]) -> bool {
+    known.iter().any(|k| attr.is(k))
 }
 
 /// " (did you mean NEAR?)" for the one of `known` nearest `name` in spelling

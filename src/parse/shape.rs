@@ -1,6 +1,7 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::names::Name;
+use super::{Element, Reader, Seen, Tag, attributes, elements};
 use crate::error::{Code, Parsed, problem};
 use crate::rules;
 use crate::scene::{Object, PoolStr, Range, Shape, ShapeKind, Vec2};
@@ -133,33 +134,38 @@ impl<'a> Reader<'a> {
     /// The shape's `Type` (and `Name` attribute, which some writers use; and in Version 3,
     /// the `Density` of the fixtures made with it).
     fn shape_type(&mut self, tag: &Tag) -> Parsed<(Shape, Option<PoolStr>)> {
-        let attrs = self.tok.attributes(tag)?;
         let known: &[&str] = if self.arena.farseer_layout() {
             &["Type", "Name", "Density"]
         } else {
             &["Type", "Name"]
         };
-        self.unknown_attributes(tag, &attrs, known)?;
+        let attrs = attributes!(self, tag, known);
         let density =
-            match attrs.iter().find(|a| a.is("density")).filter(|_| self.arena.farseer_layout()) {
-                Some(attr) => {
-                    let checked = self
-                        .tok
-                        .attribute(tag, attr, crate::text::float)
-                        .and_then(|(d, at)| rules::not_negative("the shape's Density", d, at));
-                    self.recovered(checked, 0.0)?
-                }
-                None => 0.0,
-            };
+            attrs.iter().find(|a| a.is("density")).filter(|_| self.arena.farseer_layout());
+        let density = density.map(|attr| {
+            (self.tok.attribute(tag, attr, crate::text::float))
+                .and_then(|(d, at)| rules::not_negative("the shape's Density", d, at))
+        });
+        // What the rest needs of the attributes, taken before the reader goes on, as the
+        // attributes borrow its text: the Type as written, copied in place (a known one is
+        // short), and the name, pooled.
+        let ty = attrs.iter().find(|a| a.is("type"));
+        let ty = ty.map(|ty| (ty.at, Name::new(super::trim_xml(&ty.value))));
+        let name = attrs.iter().find(|a| a.is("name"));
+        let name = name.map(|name| self.arena.scene.add_str(super::trim_xml(&name.value)));
+        let density = match density {
+            Some(checked) => self.recovered(checked, 0.0)?,
+            None => 0.0,
+        };
         self.arena.origins.shape_densities.push(density);
-        let Some(ty) = attrs.iter().find(|a| a.is("type")) else {
+        let Some((at, value)) = ty else {
             return Err(problem(
                 Code::MissingAttribute,
                 tag.at,
                 "<Shape> has no Type attribute (Circle, Polygon, Edge or Chain)",
             ));
         };
-        let value = super::trim_xml(&ty.value);
+        let value = value.as_str();
         let (kind, is_loop) = match super::lowercase(value, &mut [0; 16]) {
             b"circle" => (ShapeKind::Circle, false),
             b"polygon" => (ShapeKind::Polygon, false),
@@ -169,7 +175,7 @@ impl<'a> Reader<'a> {
             _ => {
                 return Err(problem(
                     Code::UnknownType,
-                    ty.at,
+                    at,
                     format!(
                         "unknown shape Type \"{}\"{}: expected Circle, Polygon, Edge or Chain",
                         super::shorten(value),
@@ -179,12 +185,10 @@ impl<'a> Reader<'a> {
             }
         };
         if matches!(kind, ShapeKind::Edge | ShapeKind::Chain) {
-            self.newer_construct(ty.at, format_args!("a {value} shape"))?;
+            self.newer_construct(at, format_args!("a {value} shape"))?;
         }
         let mut shape = Shape::new(kind);
         shape.is_loop = is_loop;
-        let name = attrs.iter().find(|a| a.is("name"));
-        let name = name.map(|name| self.arena.scene.add_str(super::trim_xml(&name.value)));
         Ok((shape, name))
     }
 

@@ -1,6 +1,6 @@
 //! The root: `<World Version="N">`, its gravity and its four containers.
 
-use super::{Element, Reader, Seen, Tag, elements};
+use super::{Element, Reader, Seen, Tag, attributes, elements};
 use crate::arena::Arena;
 use crate::containers::Container;
 use crate::error::{Code, Finding, Parsed, problem};
@@ -161,8 +161,7 @@ impl<'a> Reader<'a> {
     }
 
     pub(super) fn read_version(&mut self, root: &Tag) -> Parsed<()> {
-        let attrs = self.tok.attributes(root)?;
-        self.unknown_attributes(root, &attrs, &["Version"])?;
+        let attrs = attributes!(self, root, &["Version"]);
         let Some(version) = attrs.iter().find(|a| a.is("version")) else {
             return self.warn(Code::LegacyUnversioned, root.at, || {
                 "the file has no Version: read as a legacy (2010) editor file, whose joints \

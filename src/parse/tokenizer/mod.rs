@@ -39,7 +39,6 @@ mod window;
 use crate::bytes::{ENDS_NAME, is_plain, is_xml_space_byte, short_name_len, space_len};
 pub(crate) use keeping::Keeping;
 use lexer::Lexer;
-pub(super) use values::verbatim;
 use values::{plain_tag_end, resolve_text};
 use window::Window;
 
@@ -51,12 +50,15 @@ fn malformed<E: From<Problem>>(at: usize, e: impl Into<quick_xml::Error>) -> E {
     problem(Code::MalformedXml, at, format!("malformed XML: {}", e.into()))
 }
 
-/// A start tag (`<Name ...>` or `<Name .../>`) and where it begins. It owns what it needs,
-/// so it outlives the text window it was read from.
+/// A start tag (`<Name ...>` or `<Name .../>`) and where it begins. Its name is copied;
+/// its attributes are read where they are written (see [`Tokenizer::attributes`]), while
+/// the text at hand holds them: right after the tag, or while the object it opens is open
+/// (see [`Lexer::first_needed`]).
 pub(super) struct Tag {
     pub name: Name,
-    /// What lies between `<` and `>` (or `/>`), when the tag has more than its name.
-    content: Option<Box<str>>,
+    /// Offset just past what lies between `<` and `>` (or `/>`): its name, then its
+    /// attributes when it has more than its name.
+    end: usize,
     /// Offset of its `<`.
     pub at: usize,
     /// `<Name/>`: it has no children and no text.
@@ -67,17 +69,24 @@ impl Tag {
     /// A start tag with its name alone, open: as a reading that goes on from inside the
     /// element assumes it.
     pub fn item(name: Name, at: usize) -> Tag {
-        Tag { name, content: None, at, empty: false }
+        Tag { end: at + 1 + name.len(), name, at, empty: false }
     }
 
     /// A tag that names no element, for a reader's loop to read its children into (see
     /// [`Tokenizer::child`]).
     pub fn slot() -> Tag {
-        Tag { name: Name::Short(0, [0; SHORT]), content: None, at: 0, empty: true }
+        Tag { name: Name::Short(0, [0; SHORT]), end: 1, at: 0, empty: true }
     }
 
     pub fn name(&self) -> &str {
         self.name.as_str()
+    }
+
+    /// Where what lies between `<` and `>` (or `/>`) starts and ends, when the tag has
+    /// more than its name.
+    fn content(&self) -> Option<(usize, usize)> {
+        let from = self.at + 1;
+        (self.end > from + self.name.len()).then_some((from, self.end))
     }
 
     /// Names compare case-insensitively (spec section 2).
@@ -427,9 +436,8 @@ impl<'a> Tokenizer<'a> {
                     None => (content, false),
                 };
                 let name_len = content.bytes().position(is_xml_space_byte).unwrap_or(content.len());
-                let name = &content[..name_len];
-                let content = (content.len() > name_len).then(|| content.into());
-                Tag { name: Name::new(name), content, at, empty }
+                let name = Name::new(&content[..name_len]);
+                Tag { name, end: at + 1 + content.len(), at, empty }
             }
         };
         self.opened(&tag)?;
@@ -513,7 +521,7 @@ impl<'a> Tokenizer<'a> {
         }
         let name = Name::from_head(head.first_chunk()?, len);
         self.lex.pos = at + 2 + len + usize::from(empty);
-        Some(Tag { name, content: None, at, empty })
+        Some(Tag { name, end: at + 1 + len, at, empty })
     }
 
     fn end_tag(&mut self, at: usize) -> Parsed<Node> {

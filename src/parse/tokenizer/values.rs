@@ -259,18 +259,54 @@ impl<'a> Tokenizer<'a> {
     ) -> Parsed<(T, usize)> {
         let (lead, value) = trim_xml_at(&attr.value);
         match convert(value) {
-            Ok(v) => Ok((v, written_at(tag, attr, lead))),
+            Ok(v) => Ok((v, self.written_at(tag, attr, lead))),
             Err(e) => Err(Box::new(Finding::at(
                 e.code,
-                e.at.map_offset(|at| written_at(tag, attr, lead + at)),
+                e.at.map_offset(|at| self.written_at(tag, attr, lead + at)),
                 format!("<{} {}>: {}", tag.name(), attr.key, e.message),
             ))),
         }
     }
 
-    /// The attributes of `tag`, unescaped, each with the offset of its value.
-    pub fn attributes<'t>(&self, tag: &'t Tag) -> Parsed<Attrs<'t>> {
-        let Some(content) = tag.content.as_deref() else {
+    /// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
+    pub fn verbatim(&self, tag: &Tag, attr: &Attr) -> String {
+        let (quote, value) = self.written_value(tag, attr);
+        format!(" {}={quote}{value}{quote}", attr.key)
+    }
+
+    /// The quote around the value of an attribute of `tag`, and the value as written.
+    fn written_value(&self, tag: &Tag, attr: &Attr) -> (char, &str) {
+        let content = self.content(tag).unwrap_or_default();
+        let value = (attr.at - tag.at - 1).min(content.len());
+        let quote = content[..value].chars().next_back().unwrap_or('"');
+        let len = content[value..].find(quote).unwrap_or(content.len() - value);
+        (quote, &content[value..value + len])
+    }
+
+    /// Where the character at `offset` of an attribute's value is written. A value unlike
+    /// what is written (references resolved, white space normalised) is resolved again to
+    /// tell, as only a message needs it: its bytes line up with the resolved text's.
+    fn written_at(&self, tag: &Tag, attr: &Attr, offset: usize) -> usize {
+        if let Cow::Borrowed(_) = attr.value {
+            return attr.at + offset;
+        }
+        match resolve_text(self.written_value(tag, attr).1, attr.at) {
+            Ok(resolved) => resolved.written_at(attr.at, offset),
+            Err(_) => attr.at + offset,
+        }
+    }
+
+    /// What lies between the `<` and `>` of `tag` when it has more than its name, where it
+    /// is written: read right after the tag, while the text at hand holds it.
+    fn content(&self, tag: &Tag) -> Option<&str> {
+        let (from, to) = tag.content()?;
+        Some(self.window.slice(from, to))
+    }
+
+    /// The attributes of `tag`, unescaped, each with the offset of its value, read where
+    /// they are written: the usual one or two allocate nothing.
+    pub fn attributes(&self, tag: &Tag) -> Parsed<Attrs<'_>> {
+        let Some(content) = self.content(tag) else {
             return Ok(Attrs::default());
         };
         let attrs = match plain_attributes(content, tag.name.len(), tag.at) {
@@ -295,7 +331,7 @@ impl<'a> Tokenizer<'a> {
     /// (inside UserData or an ignored element), are well-formed: the writer writes them
     /// back. Names differing in case are distinct there, as in any XML.
     pub fn check_attributes(&self, tag: &Tag) -> Parsed<()> {
-        let Some(content) = tag.content.as_deref() else {
+        let Some(content) = self.content(tag) else {
             return Ok(());
         };
         if plain_attributes(content, tag.name.len(), tag.at).is_none() {
@@ -305,9 +341,9 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// The attributes of `tag`, whose `content` is not as plain as most, read by quick-xml.
-    pub(super) fn xml_attributes<'t>(&self, tag: &'t Tag, content: &'t str) -> Parsed<Attrs<'t>> {
+    pub(super) fn xml_attributes<'t>(&self, tag: &Tag, content: &'t str) -> Parsed<Attrs<'t>> {
         // quick-xml's attributes borrow its BytesStart; the same text, borrowed from the
-        // tag, is found by its offset in `content` (which counts from after `<`).
+        // text at hand, is found by its offset in `content` (which counts from after `<`).
         let within = |piece: &str| {
             let from = piece.as_ptr().addr().checked_sub(content.as_ptr().addr())?;
             Some((from, content.get(from..from + piece.len())?))
@@ -469,34 +505,6 @@ impl Hash for Caseless<'_> {
             state.write_u8(b.to_ascii_lowercase());
         }
         state.write_usize(self.0.len());
-    }
-}
-
-/// An attribute of `tag` as written (` key="value"`, its value's references unresolved).
-pub(crate) fn verbatim(tag: &Tag, attr: &Attr) -> String {
-    let (quote, value) = written_value(tag, attr);
-    format!(" {}={quote}{value}{quote}", attr.key)
-}
-
-/// The quote around the value of an attribute of `tag`, and the value as written.
-fn written_value<'t>(tag: &'t Tag, attr: &Attr) -> (char, &'t str) {
-    let content = tag.content.as_deref().unwrap_or_default();
-    let value = (attr.at - tag.at - 1).min(content.len());
-    let quote = content[..value].chars().next_back().unwrap_or('"');
-    let len = content[value..].find(quote).unwrap_or(content.len() - value);
-    (quote, &content[value..value + len])
-}
-
-/// Where the character at `offset` of an attribute's value is written. A value unlike what
-/// is written (references resolved, white space normalised) is resolved again to tell, as
-/// only a message needs it: its bytes line up with the resolved text's.
-fn written_at(tag: &Tag, attr: &Attr, offset: usize) -> usize {
-    if let Cow::Borrowed(_) = attr.value {
-        return attr.at + offset;
-    }
-    match resolve_text(written_value(tag, attr).1, attr.at) {
-        Ok(resolved) => resolved.written_at(attr.at, offset),
-        Err(_) => attr.at + offset,
     }
 }
 

@@ -40,9 +40,17 @@ impl<'a> Window<'a> {
         self.source.end()
     }
 
-    /// The text from `from` to `to`, which is at hand.
+    /// The text from `from` to `to`, which is at hand: the reading keeps what it looks at
+    /// again (see [`Lexer::first_needed`](super::Lexer::first_needed) and
+    /// [`Keeping`](super::Keeping)).
     #[inline]
     pub fn slice(&self, from: usize, to: usize) -> &str {
+        debug_assert!(
+            self.base() <= from && from <= to && to <= self.end(),
+            "{from}..{to} is not at hand ({}..{})",
+            self.base(),
+            self.end()
+        );
         self.source.slice(from, to)
     }
 
