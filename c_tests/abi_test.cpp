@@ -59,7 +59,7 @@ PIN_AT(b2s_fixture, filter, 24);
 PIN_AT(b2s_fixture, is_sensor, 36);
 PIN_AT(b2s_fixture, user_data, 40);
 
-PIN_SIZE(b2s_working_range, 132);
+PIN_SIZE(b2s_working_range, 136);
 PIN_AT(b2s_working_range, max_length, 0);
 PIN_AT(b2s_working_range, max_violation, 88);
 PIN_AT(b2s_working_range, world_max_linear_speed, 104);
@@ -70,6 +70,7 @@ PIN_AT(b2s_working_range, name_bytes, 120);
 PIN_AT(b2s_working_range, friction_at_anchors, 124);
 PIN_AT(b2s_working_range, prismatic_lever_to_b, 125);
 PIN_AT(b2s_working_range, max_lever_pinned_distance, 128);
+PIN_AT(b2s_working_range, max_lever_violated_wheel, 132);
 
 PIN_SIZE(b2s_mass_data, 20);
 PIN_AT(b2s_mass_data, mass, 0);

@@ -517,6 +517,56 @@ static int a_rope_10_m_out_on_a_free_ball_is_built_and_holds(void) {
     return 0;
 }
 
+/* A static ground at the origin and a 0.5 m ball whose centre starts 1.5 m below the x axis
+ * of a line joint anchored at the ground's origin and the ball's centre: v3.2's wheel joint
+ * without its spring, built by hand in this process; where the ball ends after STEPS steps. */
+static b2Vec2 line_to_the_ground_1_5_m_off_by_hand(void) {
+    b2WorldDef world_def = b2DefaultWorldDef();
+    world_def.maximumLinearSpeed =
+        b2s_engine_working_range(B2S_ENGINE_BOX2D32)->world_max_linear_speed;
+    b2WorldId world = b2CreateWorld(&world_def);
+    b2BodyDef ground_def = b2DefaultBodyDef();
+    b2BodyId ground = b2CreateBody(world, &ground_def);
+    b2BodyId ball = ball_by_hand(world, (b2Vec2){0.0f, -1.5f}, 0.5f);
+    b2WheelJointDef line = b2DefaultWheelJointDef();
+    line.base.bodyIdA = ground;
+    line.base.bodyIdB = ball;
+    line.enableSpring = false;
+    b2CreateWheelJoint(world, &line);
+    for (int step = 0; step < STEPS; ++step) {
+        b2World_Step(world, TIME_STEP, SUB_STEPS);
+    }
+    b2Vec2 end = v3_position(ball);
+    b2DestroyWorld(world);
+    return end;
+}
+
+/* The level v3.1's adapter refused (a line joint to a static body 1.5 m off its axis):
+ * v3.2's never bounded it, and v3.2 too pulls the ball back onto the axis, through the
+ * adapter as by hand. */
+static int a_line_joint_to_the_ground_1_5_m_off_its_axis_is_built_and_holds(void) {
+    b2Vec2 by_hand = line_to_the_ground_1_5_m_off_by_hand();
+    ENSURE(fabsf(by_hand.y) < 1e-3f);
+    b2s_scene* scene = load_text(
+        "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+        "<Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes><Fixtures><Fixture>"
+        "<Shape>0</Shape><Density>1</Density></Fixture></Fixtures><Bodies><Body Type='Static'/>"
+        "<Body Type='Dynamic'><Position>0 -1.5</Position><Fixtures><ID>0</ID></Fixtures></Body>"
+        "</Bodies><Joints><Joint Type='Line'><BodyA>0</BodyA><BodyB>1</BodyB></Joint></Joints>"
+        "</World>");
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE(!B2_IS_NULL(world.built->joints[0]));
+    ENSURE_EQ(world.built->reports.count, 0);
+    ENSURE(finite_for_steps(&world));
+    b2Vec2 built = v3_position(world.built->bodies[1]);
+    ENSURE_NEAR(built.x, by_hand.x, 1e-4);
+    ENSURE_NEAR(built.y, by_hand.y, 1e-4);
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
@@ -532,5 +582,6 @@ int main(void) {
     failed += RUN_TEST(a_weld_with_two_violated_wheels_to_the_ground_keeps_one_wheel);
     failed += RUN_TEST(a_rope_10_m_out_on_a_pinned_ball_is_refused);
     failed += RUN_TEST(a_rope_10_m_out_on_a_free_ball_is_built_and_holds);
+    failed += RUN_TEST(a_line_joint_to_the_ground_1_5_m_off_its_axis_is_built_and_holds);
     return failed;
 }

@@ -2014,7 +2014,9 @@ typedef struct b2s_working_range {
    */
   float max_violation;
   /**
-   * m: how far from satisfied a line or wheel joint may start.
+   * m: how far from satisfied a line or wheel joint may start that turns a body as it
+   * pulls it onto its axis: one whose body A is dynamic (the axis turns with it), or one
+   * that acts on a dynamic body B beyond `max_lever_violated_wheel`.
    */
   float max_wheel_violation;
   /**
@@ -2075,6 +2077,13 @@ typedef struct b2s_working_range {
    * holds to a body that does not move (static or kinematic).
    */
   float max_lever_pinned_distance;
+  /**
+   * Radii of gyration of body B: how far from its centre of mass a line or wheel joint on
+   * a body A that does not move (static or kinematic) may act on a dynamic body B and start
+   * further than `max_wheel_violation` from satisfied (nearer, such a joint is not bounded
+   * by it). `FLT_MAX` where the version needs no such bound.
+   */
+  float max_lever_violated_wheel;
 } b2s_working_range;
 
 /**

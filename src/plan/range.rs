@@ -100,7 +100,9 @@ pub struct WorkingRange {
     /// m: how far from satisfied any joint but a line or wheel joint may start, whatever
     /// else acts on its bodies.
     pub max_violation: f32,
-    /// m: how far from satisfied a line or wheel joint may start.
+    /// m: how far from satisfied a line or wheel joint may start that turns a body as it
+    /// pulls it onto its axis: one whose body A is dynamic (the axis turns with it), or one
+    /// that acts on a dynamic body B beyond `max_lever_violated_wheel`.
     pub max_wheel_violation: f32,
     /// Radii of gyration of the smaller body: how far apart across its axis the anchors of
     /// a line or wheel joint between two dynamic bodies may start.
@@ -140,12 +142,17 @@ pub struct WorkingRange {
     /// or a rope) between two dynamic bodies may act on one that a revolute or weld joint
     /// holds to a body that does not move (static or kinematic).
     pub max_lever_pinned_distance: f32,
+    /// Radii of gyration of body B: how far from its centre of mass a line or wheel joint on
+    /// a body A that does not move (static or kinematic) may act on a dynamic body B and start
+    /// further than `max_wheel_violation` from satisfied (nearer, such a joint is not bounded
+    /// by it). `FLT_MAX` where the version needs no such bound.
+    pub max_lever_violated_wheel: f32,
 }
 
 impl WorkingRange {
     /// Every numeric bound by its field's name, in the order of the fields (for the Python
     /// extension and the docs' table).
-    pub fn bounds(&self) -> [(&'static str, f32); 31] {
+    pub fn bounds(&self) -> [(&'static str, f32); 32] {
         [
             ("max_length", self.max_length),
             ("max_angle", self.max_angle),
@@ -178,11 +185,12 @@ impl WorkingRange {
             ("max_revolute_limit", self.max_revolute_limit),
             ("centroid_tolerance", self.centroid_tolerance),
             ("max_lever_pinned_distance", self.max_lever_pinned_distance),
+            ("max_lever_violated_wheel", self.max_lever_violated_wheel),
         ]
     }
 }
 
-/// The ABI is pinned: 30 floats, a count, two flags and a float added since, also asserted
+/// The ABI is pinned: 30 floats, a count, two flags and two floats added since, also asserted
 /// on the C++ side.
 const _: () = {
     use std::mem::{offset_of, size_of};
@@ -195,7 +203,8 @@ const _: () = {
     assert!(offset_of!(WorkingRange, friction_at_anchors) == 124);
     assert!(offset_of!(WorkingRange, prismatic_lever_to_b) == 125);
     assert!(offset_of!(WorkingRange, max_lever_pinned_distance) == 128);
-    assert!(size_of::<WorkingRange>() == 132);
+    assert!(offset_of!(WorkingRange, max_lever_violated_wheel) == 132);
+    assert!(size_of::<WorkingRange>() == 136);
 };
 
 /// No bound.
@@ -244,6 +253,7 @@ const BOX2D_24: WorkingRange = WorkingRange {
     friction_at_anchors: true,
     prismatic_lever_to_b: true,
     max_lever_pinned_distance: NONE,
+    max_lever_violated_wheel: NONE,
 };
 
 /// Box2D 2.3 as pybox2d holds it: 2.4's solver, whose measurements it shares.
@@ -261,6 +271,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
     max_lever_fixed_wheel: 5.0,
     max_lever_pinned_distance: 2.5,
     max_wheel_violation: 0.5,
+    max_lever_violated_wheel: 2.0,
     max_wheel_violation_gyrations: 4.0,
     max_joint_acceleration: 1e5,
     world_max_linear_speed: 1.5e3,
@@ -279,6 +290,7 @@ const BOX2D_31: WorkingRange = WorkingRange {
 const BOX2D_32: WorkingRange = WorkingRange {
     max_violation: 4.0,
     max_wheel_violation: NONE,
+    max_lever_violated_wheel: NONE,
     max_lever_pinned_distance: 7.0,
     name_bytes: 10,
     friction_at_anchors: true,

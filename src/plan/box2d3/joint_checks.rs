@@ -290,16 +290,31 @@ impl Mapper<'_> {
         }
     }
 
-    /// What the working-range sweeps and the levels that asserted measured of joints that
-    /// start violated: a line or wheel joint too far from satisfied, or whose anchors start
-    /// too many radii of gyration apart across its axis between two dynamic bodies, flings
-    /// its bodies off; a joint of another kind too far from satisfied makes the solver
-    /// assert once anything else acts on its bodies; where the version has a bound only for
-    /// a body pulled by two such joints, the first is planned and the later ones are not.
+    /// Whether a line or wheel joint turns a body as it pulls body B onto its axis: the axis
+    /// turns with a dynamic body A; on a body A that does not move, body B turns about an
+    /// anchor further than `max_lever_violated_wheel` radii of gyration from its centre of
+    /// mass. Built by hand, v3.1 pulls body B back from 50 m when neither turns.
+    fn wheel_turns_a_body(&self, joint: &Joint) -> bool {
+        if self.dynamic_mass(joint.body_a).is_some() {
+            return true;
+        }
+        let Some(mass) = self.dynamic_mass(joint.body_b) else { return false };
+        let bound = self.range.max_lever_violated_wheel * gyration(&mass);
+        !(distance(joint.local_anchor_b, mass.center) <= bound)
+    }
+
+    /// What the working-range sweeps, the levels that asserted and the joints built by hand
+    /// measured of joints that start violated: a line or wheel joint that turns a body too
+    /// far from satisfied, or whose anchors start too many radii of gyration apart across its
+    /// axis between two dynamic bodies, flings its bodies off; a joint of another kind too
+    /// far from satisfied makes the solver assert once anything else acts on its bodies;
+    /// where the version has a bound only for a body pulled by two such joints, the first is
+    /// planned and the later ones are not.
     pub(super) fn check_violation(&mut self, index: u32, joint: &Joint, check: &mut Check) {
         let (v3, r) = (self.v3, self.range);
         let (violation, across) = self.starting_violation(joint);
         let wheel = is_wheel(joint);
+        let turns = wheel && self.wheel_turns_a_body(joint);
         // Between two dynamic bodies, the bound of the pair in radii of gyration, where
         // the joint starts beyond it.
         let thrown = match (self.dynamic_mass(joint.body_a), self.dynamic_mass(joint.body_b)) {
@@ -309,7 +324,7 @@ impl Mapper<'_> {
             }
             _ => None,
         };
-        if wheel && violation > r.max_wheel_violation {
+        if turns && violation > r.max_wheel_violation {
             // Where the pair's bound is passed too, the report names it as well.
             let also = thrown.map_or(String::new(), |bound| {
                 format!(
@@ -321,10 +336,12 @@ impl Mapper<'_> {
                 )
             });
             check.fail(format_args!(
-                "it starts {} m from satisfied: a line or wheel joint further than {} m from \
-                 satisfied lies beyond {}'s working range (its solver flings the bodies \
-                 apart){also}",
+                "it starts {} m from satisfied: a line or wheel joint that turns a body (a \
+                 dynamic body A, or body B about an anchor beyond {} radii of gyration) further \
+                 than {} m from satisfied lies beyond {}'s working range (its solver flings \
+                 the bodies apart){also}",
                 G9(violation),
+                G(r.max_lever_violated_wheel),
                 G(r.max_wheel_violation),
                 v3.name()
             ));
@@ -470,23 +487,72 @@ mod tests {
 
     #[test]
     fn a_wheel_far_from_satisfied_across_its_axis_is_refused_in_v31() {
-        // Ball 1 lies 1 m from the ground's anchor, across a vertical axis.
-        let across = joint("Wheel", 0, 1, "<LocalAxisA>0 1</LocalAxisA>");
+        // The ground's anchor lies 1 m from ball 1, body A, across its vertical axis.
+        let across = joint("Wheel", 1, 0, "<LocalAxisA>0 1</LocalAxisA>");
         let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &across);
         assert!(plan.joints().is_empty());
         assert_eq!(
             messages(&plan)[0].3,
-            "it starts 1 m from satisfied: a line or wheel joint further than 0.5 m from \
-             satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
+            "it starts 1 m from satisfied: a line or wheel joint that turns a body (a dynamic \
+             body A, or body B about an anchor beyond 2 radii of gyration) further than 0.5 m \
+             from satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
              apart); joint not created"
         );
         // Along its axis, a wheel is satisfied wherever it starts.
-        let along = joint("Wheel", 0, 1, "<LocalAxisA>1 0</LocalAxisA>");
+        let along = joint("Wheel", 1, 0, "<LocalAxisA>1 0</LocalAxisA>");
         let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &along);
         assert_eq!(plan.joints().len(), 1);
         // v3.2 refuses it only between two dynamic bodies, in radii of gyration.
         let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &across);
         assert_eq!(plan.joints().len(), 1);
+    }
+
+    #[test]
+    fn a_line_or_wheel_joint_far_off_the_axis_of_a_body_that_does_not_move_is_built() {
+        // Ball 1 starts `off` m across the vertical axis through the origin of body 0, body A,
+        // static or kinematic, the joint anchored `lever` m from the ball's centre (its radius
+        // of gyration is 0.354 m): measured by hand, v3.1 pulls it back onto the axis from
+        // 50 m while the anchor lies within 2.4 radii of gyration, and from 2.5 radii throws
+        // some balls off (carrying another ball on a revolute joint).
+        let scene = |kind: &str, joint_kind: &str, off: f32, lever: &str| {
+            let bodies = format!(
+                "<Body Type=\"{kind}\"/><Body Type=\"Dynamic\"><Position>{} 0</Position>\
+                 <Fixtures><ID>0</ID></Fixtures></Body>",
+                off - lever.parse::<f32>().unwrap()
+            );
+            let fields =
+                format!("<LocalAnchorB>{lever} 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA>");
+            (bodies, joint(joint_kind, 0, 1, &fields))
+        };
+        for engine in [Engine::Box2d31, Engine::Box2d32] {
+            for kind in ["Static", "Kinematic"] {
+                for joint_kind in ["Line", "Wheel"] {
+                    for (off, lever) in [(1.5, "0"), (20.0, "0"), (1.5, "0.7")] {
+                        let (bodies, joints) = scene(kind, joint_kind, off, lever);
+                        let plan = plan_of(engine, BALL.0, BALL.1, &bodies, &joints);
+                        assert_eq!(plan.joints().len(), 1, "{engine:?} {kind} {joint_kind} {off}");
+                        assert!(plan.reports().is_empty(), "{:?}", messages(&plan));
+                    }
+                }
+            }
+        }
+        let refused = |plan: &crate::plan::Plan| {
+            assert!(plan.joints().is_empty());
+            let (code, _, index, message) = messages(plan)[0];
+            assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 0));
+            let words = "it starts 1.5 m from satisfied: a line or wheel joint that turns a body";
+            assert!(message.starts_with(words), "{message}");
+        };
+        // Anchored 0.75 m from the ball's centre (2.12 radii), the ball turns about it: the
+        // 0.5 m of a line or wheel joint that turns a body holds in v3.1, not in v3.2.
+        let (bodies, far) = scene("Static", "Wheel", 1.5, "0.75");
+        refused(&plan_of(Engine::Box2d31, BALL.0, BALL.1, &bodies, &far));
+        assert_eq!(plan_of(Engine::Box2d32, BALL.0, BALL.1, &bodies, &far).joints().len(), 1);
+        // With the ball as body A, its axis turns with it: v3.1 throws it off from 3 radii of
+        // gyration across the axis.
+        let (bodies, _) = scene("Static", "Line", 1.5, "0");
+        let ball_first = joint("Line", 1, 0, "<LocalAxisA>0 1</LocalAxisA>");
+        refused(&plan_of(Engine::Box2d31, BALL.0, BALL.1, &bodies, &ball_first));
     }
 
     #[test]
@@ -499,8 +565,9 @@ mod tests {
         assert!(plan.joints().is_empty());
         assert_eq!(
             messages(&plan)[0].3,
-            "it starts 3 m from satisfied: a line or wheel joint further than 0.5 m from \
-             satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
+            "it starts 3 m from satisfied: a line or wheel joint that turns a body (a dynamic \
+             body A, or body B about an anchor beyond 2 radii of gyration) further than 0.5 m \
+             from satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
              apart), and it starts violated by 3 m across its axis between two dynamic bodies, \
              beyond 4 radii of gyration (1.41421354 m); joint not created"
         );
