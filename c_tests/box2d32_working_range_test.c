@@ -567,6 +567,81 @@ static int a_line_joint_to_the_ground_1_5_m_off_its_axis_is_built_and_holds(void
     return 0;
 }
 
+/* A 0.5 m ball, body A of a line joint along x limited to +-1 m, anchored on its rim, (0.5, 0),
+ * and at the static ground's origin, the ball's anchor 8 radii of gyration (2.83 m) below the
+ * axis. Built by hand in a child: whether v3.2 dies within STEPS steps (an assertion, or the
+ * ball beyond 1e4 m or NaN). */
+static float ball_8_radii_below(void) {
+    return 8.0f * (0.5f / sqrtf(2.0f));
+}
+
+static bool limited_line_from_a_ball_8_radii_off_dies_by_hand(void) {
+    fflush(NULL);
+    pid_t child = fork();
+    if (child == 0) {
+        b2WorldDef world_def = b2DefaultWorldDef();
+        world_def.maximumLinearSpeed =
+            b2s_engine_working_range(B2S_ENGINE_BOX2D32)->world_max_linear_speed;
+        b2WorldId world = b2CreateWorld(&world_def);
+        b2BodyDef ground_def = b2DefaultBodyDef();
+        b2BodyId ground = b2CreateBody(world, &ground_def);
+        b2BodyId ball = ball_by_hand(world, (b2Vec2){-0.5f, -ball_8_radii_below()}, 0.5f);
+        b2WheelJointDef line = b2DefaultWheelJointDef();
+        line.base.bodyIdA = ball;
+        line.base.bodyIdB = ground;
+        line.base.localFrameA.p = (b2Vec2){0.5f, 0.0f};
+        line.enableSpring = false;
+        line.enableLimit = true;
+        line.lowerTranslation = -1.0f;
+        line.upperTranslation = 1.0f;
+        b2CreateWheelJoint(world, &line);
+        for (int step = 0; step < STEPS; ++step) {
+            b2World_Step(world, TIME_STEP, SUB_STEPS);
+            b2Vec2 p = v3_position(ball);
+            if (!(fabsf(p.x) <= 1e4f && fabsf(p.y) <= 1e4f)) {
+                _exit(1);
+            }
+        }
+        _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status) || WEXITSTATUS(status) != 0;
+}
+
+/* With its body A dynamic, the axis of a line joint turns with it, on a body that does not
+ * move as between two dynamic bodies: v3.2 threw such a body A off from 6 radii of gyration
+ * across the axis (docs/working-range.md), and the adapter built it however far. The range's
+ * max_wheel_violation_gyrations (4) now counts body A's radii there too. */
+static int a_limited_line_joint_from_a_ball_to_the_ground_8_radii_off_its_axis_is_refused(void) {
+    ENSURE(limited_line_from_a_ball_8_radii_off_dies_by_hand());
+    static char xml[1024];
+    snprintf(xml, sizeof xml,
+             "<World Version='2'><Gravity>0 -10</Gravity><Shapes><Shape Type='Circle'>"
+             "<Radius>0.5</Radius><Position>0 0</Position></Shape></Shapes><Fixtures><Fixture>"
+             "<Shape>0</Shape><Density>1</Density></Fixture></Fixtures><Bodies>"
+             "<Body Type='Dynamic'><Position>-0.5 %.9g</Position><Fixtures><ID>0</ID>"
+             "</Fixtures></Body><Body Type='Static'/></Bodies><Joints><Joint Type='Line'>"
+             "<BodyA>0</BodyA><BodyB>1</BodyB><LocalAnchorA>0.5 0</LocalAnchorA>"
+             "<LocalAxisA>1 0</LocalAxisA><EnableLimit>true</EnableLimit>"
+             "<LowerTranslation>-1</LowerTranslation><UpperTranslation>1</UpperTranslation>"
+             "</Joint></Joints></World>",
+             (double)-ball_8_radii_below());
+    b2s_scene* scene = load_text(xml);
+    ENSURE(scene != NULL);
+    v3_world world = build_v3(scene);
+    ENSURE(B2_IS_NULL(world.built->joints[0]));
+    ENSURE_EQ(world.built->reports.count, 1);
+    ENSURE_EQ(count_reports(&world.built->reports, B2S_CODE_BEYOND_BOX2D_RANGE, "joint", 0), 1);
+    ENSURE(strstr(world.built->reports.items[0].message,
+                  "across its axis from a dynamic body A to a body that does not move, beyond "
+                  "Box2D v3.2's working range (at most 4 radii of gyration") != NULL);
+    ENSURE(finite_for_steps(&world));
+    free_v3(&world);
+    b2s_scene_free(scene);
+    return 0;
+}
+
 int main(void) {
     int failed = 0;
     failed += RUN_TEST(line_and_wheel_joints_within_the_range_are_built_and_hold);
@@ -583,5 +658,6 @@ int main(void) {
     failed += RUN_TEST(a_rope_10_m_out_on_a_pinned_ball_is_refused);
     failed += RUN_TEST(a_rope_10_m_out_on_a_free_ball_is_built_and_holds);
     failed += RUN_TEST(a_line_joint_to_the_ground_1_5_m_off_its_axis_is_built_and_holds);
+    failed += RUN_TEST(a_limited_line_joint_from_a_ball_to_the_ground_8_radii_off_its_axis_is_refused);
     return failed;
 }

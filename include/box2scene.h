@@ -2020,8 +2020,10 @@ typedef struct b2s_working_range {
    */
   float max_wheel_violation;
   /**
-   * Radii of gyration of the smaller body: how far apart across its axis the anchors of
-   * a line or wheel joint between two dynamic bodies may start.
+   * Radii of gyration: how far apart across its axis the anchors of a line or wheel joint
+   * whose body A is dynamic may start (the axis turns with body A), counted in radii of
+   * the smaller dynamic body: of the smaller of the two where body B is dynamic too, of
+   * body A where body B does not move.
    */
   float max_wheel_violation_gyrations;
   /**

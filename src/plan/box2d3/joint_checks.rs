@@ -305,8 +305,9 @@ impl Mapper<'_> {
 
     /// What the working-range sweeps, the levels that asserted and the joints built by hand
     /// measured of joints that start violated: a line or wheel joint that turns a body too
-    /// far from satisfied, or whose anchors start too many radii of gyration apart across its
-    /// axis between two dynamic bodies, flings its bodies off; a joint of another kind too
+    /// far from satisfied, or whose anchors start too many radii of gyration apart across an
+    /// axis that turns with its dynamic body A (to another dynamic body or to one that does
+    /// not move), flings its bodies off; a joint of another kind too
     /// far from satisfied makes the solver assert once anything else acts on its bodies;
     /// where the version has a bound only for a body pulled by two such joints, the first is
     /// planned and the later ones are not.
@@ -315,21 +316,29 @@ impl Mapper<'_> {
         let (violation, across) = self.starting_violation(joint);
         let wheel = is_wheel(joint);
         let turns = wheel && self.wheel_turns_a_body(joint);
-        // Between two dynamic bodies, the bound of the pair in radii of gyration, where
-        // the joint starts beyond it.
-        let thrown = match (self.dynamic_mass(joint.body_a), self.dynamic_mass(joint.body_b)) {
-            (Some(a), Some(b)) if wheel => {
-                let bound = r.max_wheel_violation_gyrations * gyration(&a).min(gyration(&b));
+        // Where body A is dynamic, its axis turns with it: the bound in radii of gyration of
+        // its smaller dynamic body (body A's own where body B does not move), where the joint
+        // starts beyond it.
+        let mass_b = self.dynamic_mass(joint.body_b);
+        let thrown = match self.dynamic_mass(joint.body_a) {
+            Some(a) if wheel => {
+                let smaller = mass_b.map_or(gyration(&a), |b| gyration(&a).min(gyration(&b)));
+                let bound = r.max_wheel_violation_gyrations * smaller;
                 (across > r.linear_slop && !(across <= bound)).then_some(bound)
             }
             _ => None,
+        };
+        let between = if mass_b.is_some() {
+            "between two dynamic bodies"
+        } else {
+            "from a dynamic body A to a body that does not move"
         };
         if turns && violation > r.max_wheel_violation {
             // Where the pair's bound is passed too, the report names it as well.
             let also = thrown.map_or(String::new(), |bound| {
                 format!(
-                    ", and it starts violated by {} m across its axis between two dynamic \
-                     bodies, beyond {} radii of gyration ({} m)",
+                    ", and it starts violated by {} m across its axis {between}, beyond {} \
+                     radii of gyration ({} m)",
                     G9(across),
                     G(r.max_wheel_violation_gyrations),
                     G9(bound)
@@ -349,9 +358,8 @@ impl Mapper<'_> {
         }
         if let Some(bound) = thrown {
             check.fail(format_args!(
-                "it starts violated by {} m across its axis between two dynamic bodies, \
-                 beyond {}'s working range (at most {} radii of gyration, {} m), where its \
-                 solver throws them off",
+                "it starts violated by {} m across its axis {between}, beyond {}'s working \
+                 range (at most {} radii of gyration, {} m), where its solver throws them off",
                 G9(across),
                 v3.name(),
                 G(r.max_wheel_violation_gyrations),
@@ -487,13 +495,15 @@ mod tests {
 
     #[test]
     fn a_wheel_far_from_satisfied_across_its_axis_is_refused_in_v31() {
-        // The ground's anchor lies 1 m from ball 1, body A, across its vertical axis.
-        let across = joint("Wheel", 1, 0, "<LocalAxisA>0 1</LocalAxisA>");
+        // The ground's anchor lies 0.75 m from ball 1, body A, across its vertical axis (2.12
+        // radii of gyration, within the 2.4 of a dynamic body A).
+        let across =
+            joint("Wheel", 1, 0, "<LocalAnchorB>0.25 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA>");
         let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &across);
         assert!(plan.joints().is_empty());
         assert_eq!(
             messages(&plan)[0].3,
-            "it starts 1 m from satisfied: a line or wheel joint that turns a body (a dynamic \
+            "it starts 0.75 m from satisfied: a line or wheel joint that turns a body (a dynamic \
              body A, or body B about an anchor beyond 2 radii of gyration) further than 0.5 m \
              from satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
              apart); joint not created"
@@ -502,7 +512,7 @@ mod tests {
         let along = joint("Wheel", 1, 0, "<LocalAxisA>1 0</LocalAxisA>");
         let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &along);
         assert_eq!(plan.joints().len(), 1);
-        // v3.2 refuses it only between two dynamic bodies, in radii of gyration.
+        // v3.2 has no such 0.5 m, only its bound in radii of gyration (4).
         let plan = plan_of(Engine::Box2d32, BALL.0, BALL.1, BODIES, &across);
         assert_eq!(plan.joints().len(), 1);
     }
@@ -555,10 +565,119 @@ mod tests {
         refused(&plan_of(Engine::Box2d31, BALL.0, BALL.1, &bodies, &ball_first));
     }
 
+    /// A 0.1 m ball (radius of gyration 0.0707 m) as shape 0, fixture 0 of density 1.
+    const SMALL_BALL: (&str, &str) = (
+        "<Shape Type=\"Circle\"><Radius>0.1</Radius><Position>0 0</Position></Shape>",
+        "<Fixture><Shape>0</Shape><Density>1</Density></Fixture>",
+    );
+
+    #[test]
+    fn a_line_or_wheel_joint_on_a_dynamic_body_a_is_bounded_in_its_radii_of_gyration() {
+        // Body 0 is `other` at the origin, body 1 a 0.1 m ball `off` m below it; a line joint
+        // along x between their origins, the ball body A: `off` m across an axis that turns
+        // with the ball, within the 0.5 m of a line joint that turns a body. Built by hand,
+        // v3.1 throws such a ball off from 2.8 radii of gyration (2.45 for a 3 cm body), v3.2
+        // from 6.
+        let scene = |other: &str, off: f32| {
+            let bodies = format!(
+                "<Body Type=\"{other}\"><Fixtures>{}</Fixtures></Body><Body Type=\"Dynamic\">\
+                 <Position>0 {}</Position><Fixtures><ID>0</ID></Fixtures></Body>",
+                if other == "Dynamic" { "<ID>0</ID>" } else { "" },
+                -off
+            );
+            (bodies, joint("Line", 1, 0, "<LocalAxisA>1 0</LocalAxisA>"))
+        };
+        let planned = |engine, (bodies, joints): (String, String)| {
+            plan_of(engine, SMALL_BALL.0, SMALL_BALL.1, &bodies, &joints)
+        };
+        for other in ["Static", "Kinematic"] {
+            // 3.54 radii: beyond v3.1's 2.4, within v3.2's 4.
+            let plan = planned(Engine::Box2d31, scene(other, 0.25));
+            assert!(plan.joints().is_empty());
+            assert_eq!(
+                messages(&plan),
+                [(
+                    Code::BeyondBox2dRange as u32,
+                    "joint",
+                    0,
+                    "it starts violated by 0.25 m across its axis from a dynamic body A to a body \
+                     that does not move, beyond Box2D v3's working range (at most 2.4 radii of \
+                     gyration, 0.169705644 m), where its solver throws them off; joint not created"
+                )]
+            );
+            assert_eq!(planned(Engine::Box2d32, scene(other, 0.25)).joints().len(), 1);
+            // 4.95 radii: beyond v3.2's 4 too.
+            assert!(planned(Engine::Box2d32, scene(other, 0.35)).joints().is_empty());
+            // 2.26 radii: built in both.
+            for engine in [Engine::Box2d31, Engine::Box2d32] {
+                let plan = planned(engine, scene(other, 0.16));
+                assert_eq!(plan.joints().len(), 1);
+                assert!(plan.reports().is_empty(), "{:?}", messages(&plan));
+            }
+        }
+        // Two such balls, 3 radii apart across the axis: v3.1 threw some pairs off from 2.9.
+        let plan = planned(Engine::Box2d31, scene("Dynamic", 0.212132));
+        assert!(plan.joints().is_empty());
+        let (code, _, index, message) = messages(&plan)[0];
+        assert_eq!((code, index), (Code::BeyondBox2dRange as u32, 0));
+        assert!(
+            message.starts_with(
+                "it starts violated by 0.212132007 m across its axis between two dynamic bodies"
+            ),
+            "{message}"
+        );
+        assert_eq!(planned(Engine::Box2d32, scene("Dynamic", 0.212132)).joints().len(), 1);
+        // The ground as body A: its axis does not turn, and v3.1 pulls the ball back from 50 m.
+        let (bodies, _) = scene("Static", 0.25);
+        let ground_first = joint("Line", 0, 1, "<LocalAxisA>1 0</LocalAxisA>");
+        let plan = plan_of(Engine::Box2d31, SMALL_BALL.0, SMALL_BALL.1, &bodies, &ground_first);
+        assert_eq!(plan.joints().len(), 1);
+    }
+
+    #[test]
+    fn a_line_or_wheel_joint_far_out_on_its_ball_to_the_ground_is_refused_from_3_radii_in_v31() {
+        // The ground's anchor at the origin, on a vertical axis; ball 1's anchor `lever` m out
+        // along x from its centre (radius of gyration 0.354 m), `off` m across the axis. Built
+        // by hand, v3.1 threw balls and boxes anchored 3.5 radii out off from 0.25 m across,
+        // and held every one anchored up to 3 radii out within 0.5 m.
+        let scene = |off: f32, lever: f32| {
+            let bodies = format!(
+                "<Body Type=\"Static\"/><Body Type=\"Dynamic\"><Position>{} 0</Position>\
+                 <Fixtures><ID>0</ID></Fixtures></Body>",
+                off - lever
+            );
+            let fields =
+                format!("<LocalAnchorB>{lever} 0</LocalAnchorB><LocalAxisA>0 1</LocalAxisA>");
+            (bodies, joint("Wheel", 0, 1, &fields))
+        };
+        let planned = |engine, (bodies, joints): (String, String)| {
+            plan_of(engine, BALL.0, BALL.1, &bodies, &joints)
+        };
+        // Satisfied, 4 radii out: beyond v3.1's 3, within v3.2's 5.
+        let plan = planned(Engine::Box2d31, scene(0.0, 1.41421354));
+        assert!(plan.joints().is_empty());
+        assert_eq!(
+            messages(&plan)[0].3,
+            "LocalAnchorB: the joint acts 4 radii of gyration from the centre of mass of body 1, \
+             beyond Box2D v3's working range (at most 3); joint not created"
+        );
+        assert_eq!(planned(Engine::Box2d32, scene(0.0, 1.41421354)).joints().len(), 1);
+        // 2.83 radii out: built satisfied and 0.5 m off; 1 m off, the 0.5 m of a joint that
+        // turns a body refuses it.
+        for off in [0.0, 0.5] {
+            let plan = planned(Engine::Box2d31, scene(off, 1.0));
+            assert_eq!(plan.joints().len(), 1);
+            assert!(plan.reports().is_empty(), "{:?}", messages(&plan));
+        }
+        let plan = planned(Engine::Box2d31, scene(1.0, 1.0));
+        assert!(plan.joints().is_empty());
+        assert!(messages(&plan)[0].3.starts_with("it starts 1 m from satisfied: a line or wheel"));
+    }
+
     #[test]
     fn a_wheel_far_from_satisfied_between_two_dynamic_bodies_names_both_bounds() {
         // Ball 2's anchor lies 3 m off a vertical axis through ball 1: beyond the 0.5 m of
-        // any wheel and the pair's 4 radii of gyration.
+        // any wheel and the pair's 2.4 radii of gyration.
         let anchors = "<LocalAnchorA>0 0</LocalAnchorA><LocalAnchorB>-2 0</LocalAnchorB>";
         let across = joint("Wheel", 1, 2, &format!("{anchors}<LocalAxisA>0 1</LocalAxisA>"));
         let plan = plan_of(Engine::Box2d31, BALL.0, BALL.1, BODIES, &across);
@@ -569,7 +688,7 @@ mod tests {
              body A, or body B about an anchor beyond 2 radii of gyration) further than 0.5 m \
              from satisfied lies beyond Box2D v3's working range (its solver flings the bodies \
              apart), and it starts violated by 3 m across its axis between two dynamic bodies, \
-             beyond 4 radii of gyration (1.41421354 m); joint not created"
+             beyond 2.4 radii of gyration (0.848528147 m); joint not created"
         );
     }
 
