@@ -238,7 +238,7 @@ void report(const Subject& s) {
     const char* path = s.path;
     char* text = nullptr;
     size_t written = 0;
-    b2s_write_memory(s.loaded, nullptr, &text, &written, nullptr);
+    b2s_write_memory(s.loaded, &kOwnForm, &text, &written, nullptr);
     b2s_text_free(text);
     b2World world(box2scene::scene_gravity(s.loaded, b2Vec2(0, -10)));
     box2scene::Built built = box2scene::build_world(s.loaded, world);
