@@ -13,8 +13,8 @@
 
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
 use crate::holds::{escape, needs_version_2, writable_text};
+use crate::markup::{USER_DATA_DEPTH, user_data_fragment};
 use crate::options::LoadOptions;
-use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::rules;
 use crate::scene::joints;
 use crate::scene::{

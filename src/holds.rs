@@ -6,8 +6,8 @@
 
 use crate::bytes::first_non_char;
 use crate::error::{Code, Error, Finding, Parsed, Position, Problem, problem};
+use crate::markup::{USER_DATA_DEPTH, user_data_fragment};
 use crate::options::LoadOptions;
-use crate::parse::{USER_DATA_DEPTH, user_data_fragment};
 use crate::scene::Object;
 use crate::scene::joints::{VERSION_2_KINDS, has_version_2_value};
 use crate::scene::{Body, Joint, JointKind, NONE};

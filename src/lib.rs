@@ -31,6 +31,7 @@ pub mod ffi;
 mod holds;
 mod input;
 mod load;
+mod markup;
 mod options;
 mod output;
 mod parse;

@@ -1,10 +1,10 @@
 //! `<Joint Type="...">`: the common fields, then the kind-specific ones, which the model's
 //! table of joint elements says each kind has, where they go and what they may hold.
 
-use super::names::Name;
 use super::{Element as _, Reader, Seen, Tag, attributes, elements};
 use crate::arena::JointOrigin;
 use crate::error::{Code, Parsed, problem};
+use crate::markup::Name;
 use crate::rules;
 use crate::scene::joints::{self, Element, Slot, Value};
 use crate::scene::{Joint, JointKind, KeptAt, NONE, Object};

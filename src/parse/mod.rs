@@ -11,24 +11,20 @@ mod joint;
 mod names;
 mod shape;
 mod split;
-mod tokenizer;
 mod user_data;
 mod world;
 
 use names::{Element, elements};
-pub(crate) use user_data::{USER_DATA_DEPTH, user_data_fragment};
-
-use std::borrow::Cow;
 
 use crate::arena::Arena;
 use crate::error::{Code, Finding, Parsed, Problem, Spot};
 use crate::input::Source;
+use crate::markup::{Attr, Node, Tag, Text, Tokenizer, shorten};
 use crate::options::LoadOptions;
 use crate::place::Placer;
 use crate::rules;
 use crate::scene::{Kept, KeptAt, KeptText, Object, PoolStr, Span};
 use crate::text::{self, trim_xml};
-use tokenizer::{Attr, Node, Tag, Text, Tokenizer};
 
 /// Reads the whole document into an arena, in pieces on two threads when [`split`] finds
 /// the text worth it. What it finds is placed at its line and column as it reads, or by the
@@ -311,9 +307,9 @@ impl<'a> Reader<'a> {
     /// Keeps the file's text from `from` to `to` for the writer at `place` in `object`
     /// (unless it is not [`Reader::keeping`]): with the piece before it when that is at
     /// the same place, was kept from the file, and only white space lies between them,
-    /// which the tokenizer holds at hand from where that piece ends (see
-    /// [`Keeping::hold`](tokenizer::Keeping::hold)), so that a load from a path joins what
-    /// one from memory joins.
+    /// which the tokenizer holds at hand from where that piece ends (see the markup
+    /// tokenizer's `Keeping::hold`), so that a load from a path joins what one from memory
+    /// joins.
     fn keep(&mut self, object: Object, place: KeptAt, from: usize, to: usize) {
         if !self.keeping() {
             return;
@@ -450,7 +446,7 @@ impl<'a> Reader<'a> {
         item: &str,
         mut each: impl FnMut(&mut Self, &Tag) -> Parsed<()>,
     ) -> Parsed<()> {
-        let key = names::key(item);
+        let key = crate::markup::key(item);
         let mut child = Tag::slot();
         while self.tok.child(container, &mut child)? {
             if child.name.key() != key {
@@ -514,12 +510,4 @@ pub(crate) fn lowercase<'b>(word: &'b str, buffer: &'b mut [u8; 16]) -> &'b [u8]
     bytes.copy_from_slice(word.as_bytes());
     bytes.make_ascii_lowercase();
     bytes
-}
-
-/// At most 40 characters of `text`, for messages.
-pub(crate) fn shorten(text: &str) -> Cow<'_, str> {
-    match text.char_indices().nth(40) {
-        Some((cut, _)) => Cow::Owned(format!("{}...", &text[..cut])),
-        None => Cow::Borrowed(text),
-    }
 }

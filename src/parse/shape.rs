@@ -1,8 +1,8 @@
 //! `<Shape Type="...">`: circles, polygons, and the Version 2 edges and chains.
 
-use super::names::Name;
 use super::{Element, Reader, Seen, Tag, attributes, elements};
 use crate::error::{Code, Parsed, problem};
+use crate::markup::Name;
 use crate::rules;
 use crate::scene::{Object, PoolStr, Range, Shape, ShapeKind, Vec2};
 

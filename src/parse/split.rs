@@ -24,7 +24,7 @@
 
 use std::sync::{Mutex, PoisonError, mpsc};
 
-use super::names::{Element as _, Name};
+use super::names::Element as _;
 use super::world::{WorldChild, end_world};
 use super::{Read, Reader, Seen, Tag, Tokenizer, read_whole};
 use crate::arena::Arena;
@@ -32,6 +32,7 @@ use crate::bytes::{ENDS_NAME, is_xml_space_byte};
 use crate::containers::Container;
 use crate::error::Position;
 use crate::input::{Shared, Source};
+use crate::markup::Name;
 use crate::options::LoadOptions;
 use crate::place::Placer;
 

@@ -2,7 +2,7 @@
 //! elements open there, and the scan of the markup it does not read itself. The tokenizer reads the
 //! nodes through it over the window, keeping at hand what [`Keeping`](super::Keeping) says.
 
-use super::super::names::Name;
+use super::super::name::Name;
 use crate::scan::Index;
 
 pub(super) struct Lexer {

@@ -21,7 +21,7 @@ use quick_xml::errors::{IllFormedError, SyntaxError};
 use quick_xml::events::{BytesDecl, BytesStart};
 use quick_xml::parser::{ElementParser, Parser as _};
 
-use super::names::{Name, SHORT};
+use super::name::{Name, SHORT};
 use crate::error::{Code, Parsed, Problem, problem};
 use crate::input::Source;
 use crate::options::LoadOptions;
@@ -54,7 +54,7 @@ fn malformed<E: From<Problem>>(at: usize, e: impl Into<quick_xml::Error>) -> E {
 /// its attributes are read where they are written (see [`Tokenizer::attributes`]), while
 /// the text at hand holds them: right after the tag, or while the object it opens is open
 /// (see [`Lexer::first_needed`]).
-pub(super) struct Tag {
+pub(crate) struct Tag {
     pub name: Name,
     /// Offset just past what lies between `<` and `>` (or `/>`): its name, then its
     /// attributes when it has more than its name.
@@ -92,13 +92,13 @@ impl Tag {
     /// Names compare case-insensitively (spec section 2).
     #[inline]
     pub fn is(&self, name: &str) -> bool {
-        self.name.key() == super::names::key(name)
+        self.name.key() == super::name::key(name)
     }
 }
 
 /// A piece of text: a range of the decoded text, or its resolved form when it held
 /// references or carriage returns. Read it with [`Tokenizer::text_of`] before the next node.
-pub(super) struct Text {
+pub(crate) struct Text {
     pub at: usize,
     end: usize,
     resolved: Option<Resolved>,
@@ -167,7 +167,7 @@ impl Resolved {
 
 /// The trimmed text of a value element and the offset of its first character. Read it
 /// with [`Tokenizer::text_of`] before the next node.
-pub(super) struct Value {
+pub(crate) struct Value {
     pub text: Text,
     pub at: usize,
 }
@@ -175,7 +175,7 @@ pub(super) struct Value {
 /// An attribute of a [`Tag`], borrowed from it: lowercase comparisons go through
 /// [`Attr::is`].
 #[derive(Default)]
-pub(super) struct Attr<'t> {
+pub(crate) struct Attr<'t> {
     pub key: &'t str,
     pub value: Cow<'t, str>,
     pub at: usize,
@@ -196,7 +196,7 @@ const IN_PLACE: usize = 2;
 /// The attributes of a tag, read as a slice: the usual one or two held in place, so that
 /// reading them allocates nothing; more in a vector.
 #[derive(Default)]
-pub(super) struct Attrs<'t> {
+pub(crate) struct Attrs<'t> {
     in_place: [Attr<'t>; IN_PLACE],
     len: usize,
     more: Vec<Attr<'t>>,
@@ -227,7 +227,7 @@ impl<'t> std::ops::Deref for Attrs<'t> {
     }
 }
 
-pub(super) enum Node {
+pub(crate) enum Node {
     Open(Tag),
     Text(Text),
     /// An end tag, at the offset of its `<`.
@@ -237,7 +237,7 @@ pub(super) enum Node {
 
 /// The reader of markup, made of its three parts: the window of the text at hand, the
 /// lexer's state that turns the markup into nodes, and what is kept at hand for the reader.
-pub(super) struct Tokenizer<'a> {
+pub(crate) struct Tokenizer<'a> {
     /// The text at hand.
     window: Window<'a>,
     /// Where the reading stands, the open elements, the marks ahead.

@@ -1,7 +1,7 @@
 //! Where a text that is a piece of the file starts and ends, for the reader of a piece:
 //! where it starts reading, and where its reading ends before an item.
 
-use super::super::names::Name;
+use super::super::name::Name;
 use super::{Lexer, Tokenizer};
 use crate::error::{Position, Spot};
 use crate::place::Cursor;
