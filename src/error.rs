@@ -345,7 +345,7 @@ impl fmt::Display for Code {
 /// Past it, one last `warnings-truncated` warning counts the rest.
 pub const MAX_WARNINGS: usize = 1000;
 
-/// The most errors a load that goes on past errors records ([`crate::check`]); the next one
+/// The most errors a load that goes on past errors records ([`crate::check()`]); the next one
 /// ends it, as a markup error does.
 pub(crate) const MAX_ERRORS: usize = 100;
 

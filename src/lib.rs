@@ -89,22 +89,22 @@ pub fn load_reader(
     load::load_stream(reader, name.as_ref(), options)
 }
 
-/// Checks the bytes of a file as [`load`] loads them, but goes on past the errors it can,
+/// Checks the bytes of a file as [`load()`] loads them, but goes on past the errors it can,
 /// as a compiler does, to report every one: a value that does not convert or is out of
 /// range is read as its type's zero, an ID that names nothing is reported with every other,
 /// and the load stops only at what leaves nothing to read on from (a markup error, a limit,
 /// a missing element or attribute) or after a hundred errors. The scene, when there is no
-/// error, is the one [`load`] gives. Reads on one thread.
+/// error, is the one [`load()`] gives. Reads on one thread.
 pub fn check(bytes: &[u8], options: &LoadOptions) -> Checked {
     load::check(bytes, options)
 }
 
-/// [`check`] for a file already open, read as [`load_file`] reads it.
+/// [`check()`] for a file already open, read as [`load_file`] reads it.
 pub fn check_file(file: File, name: impl AsRef<Path>, options: &LoadOptions) -> Checked {
     load::check_file(file, name.as_ref(), options)
 }
 
-/// [`check`] for a stream, read as [`load_reader`] reads it.
+/// [`check()`] for a stream, read as [`load_reader`] reads it.
 pub fn check_reader(reader: impl Read, name: impl AsRef<Path>, options: &LoadOptions) -> Checked {
     load::check_stream(reader, name.as_ref(), options)
 }

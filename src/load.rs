@@ -38,7 +38,7 @@ pub fn load_stream(stream: impl Read, name: &Path, options: &LoadOptions) -> Res
 }
 
 /// What a load that goes on past the errors it can found: the scene when there was no
-/// error, else every error (see [`crate::check`]).
+/// error, else every error (see [`crate::check()`]).
 #[derive(Debug)]
 pub struct Checked {
     /// The scene, when the file has no error. A check writes nothing, so it keeps none of

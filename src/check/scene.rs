@@ -7,7 +7,7 @@ use crate::error::{Code, Finding, Parsed};
 use crate::rules::{LINEAR_SLOP, zero_density};
 use crate::scene::{Body, Joint, JointKind, Vec2};
 
-/// Warns about every dynamic body that breaks the [`zero_density`](crate::rules::zero_density) rule.
+/// Warns about every dynamic body that breaks the [`crate::rules::zero_density`] rule.
 pub(crate) fn dynamic_bodies_without_mass(arena: &mut Arena) -> Parsed<()> {
     let Arena { scene: s, origins, findings, .. } = arena;
     for (i, (b, at)) in s.bodies.iter().zip(origins.bodies.iter()).enumerate() {

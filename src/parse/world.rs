@@ -25,7 +25,7 @@ impl WorldChild {
 
 impl<'a> Reader<'a> {
     /// The document from its start to `</World>`: prolog and world. `seen` gets the world's
-    /// elements read; [`Reader::end_world`] and [`Reader::epilog`] end the reading.
+    /// elements read; [`end_world`] and [`Reader::epilog`] end the reading.
     pub(super) fn document(&mut self, seen: &mut Seen) -> Parsed<()> {
         let root = self.root()?;
         self.place_comments(Object::World, KeptAt::Before);

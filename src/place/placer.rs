@@ -5,7 +5,7 @@ use crate::error::{Finding, Spot};
 use crate::input::Source;
 
 /// Places the findings a read left for later: those in a text that stayed whole in memory
-/// (see [`Tokenizer::place`]), counting lines over it once, in the order of the findings.
+/// (see [`Tokenizer::place`](crate::markup::Tokenizer::place)), counting lines over it once, in the order of the findings.
 pub(crate) struct Placer<'a> {
     whole: Option<Source<'a>>,
 }

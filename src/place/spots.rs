@@ -4,7 +4,7 @@
 use crate::error::{Position, Spot};
 
 /// A [`Spot`] in 8 bytes, as the step to it from the spot before it: how many lines on,
-/// its column, how many bytes on (see [`crate::arena::Spots`]). Or, for a spot no step
+/// its column, how many bytes on (see [`Spots`]). Or, for a spot no step
 /// holds, the mark that it is kept aside, with its index there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Step {

@@ -38,7 +38,7 @@ impl Object {
 }
 
 /// Every body, shape and joint one engine version creates for a scene, and the reports of
-/// what it cannot hold. Made by [`make`](super::make); read through its slices or, from C,
+/// what it cannot hold. Made by [`make`](super::make()); read through its slices or, from C,
 /// its [`PlanView`].
 #[derive(Debug, Default)]
 pub struct Plan {

@@ -17,7 +17,7 @@ impl<'a> Tokenizer<'a> {
     }
 
     /// Whether the reading stands where a piece of the text ends before an item (see
-    /// [`Source::ends_early`]): at the end of its text, directly in an element of the root,
+    /// [`Source::ends_early`](crate::input::Source::ends_early)): at the end of its text, directly in an element of the root,
     /// with nothing read waiting for the reader (text kept verbatim, comments, which would
     /// go with the item). There the reading of the piece ends, as the reading of a whole
     /// file would go on to the item.
